@@ -1,0 +1,71 @@
+// hmira/algorithms/orientation/flip_normals.hpp
+// Reverses the orientation of every face, so every normal points the other way (thesis 5.2).
+// A face-vertex model reverses each face's vertex list; a halfedge model reverses every loop
+// and re-points targets, so that its connectivity stays consistent. Either way the winding
+// really changes: flipping twice gives back the same mesh.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "../../concepts.hpp"
+
+namespace hmira {
+
+/// A mesh whose faces can be flipped: face by face (face_reversible_mesh), or as a whole by
+/// re-linking halfedges (halfedge_mutable_mesh with halfedge_index_mesh and vertex_index_mesh).
+template <class M, class T = default_traits<M>>
+concept flip_normals_mesh = face_reversible_mesh<M, T> ||
+    (halfedge_mutable_mesh<M, T> && halfedge_index_mesh<M, T> && vertex_index_mesh<M, T>);
+
+/// Reverses the winding of every face. Returns the number of faces flipped.
+/// Complexity: O(sum of face degrees) = O(E_all).
+/// Face-vertex models: each face's vertex order is reversed (starting vertex kept last).
+/// Halfedge models: each halfedge's direction is reversed (next <-> prev, target <-> source);
+/// faces keep their halfedges, vertices get an outgoing halfedge again (a boundary one on the
+/// boundary), inner rings stay attached.
+template <class M, class T = default_traits<M>>
+    requires flip_normals_mesh<M, T>
+std::size_t flip_normals(M& mesh) {
+    if constexpr (face_reversible_mesh<M, T>) {
+        std::size_t n = 0;
+        for (auto f : T::faces(mesh)) {
+            T::reverse_face(mesh, f);
+            ++n;
+        }
+        return n;
+    } else {
+        using H = typename T::halfedge_handle;
+        const std::size_t nh = T::halfedge_index_bound(mesh);
+        std::vector<H> old_prev(nh), old_source(nh);
+        std::vector<H> all;
+        all.reserve(nh);
+        for (H h : T::halfedges(mesh)) {
+            const auto i = T::halfedge_index(mesh, h);
+            old_prev[i] = T::prev(mesh, h);
+            all.push_back(h);
+        }
+        std::vector<typename T::vertex_handle> source(nh);
+        for (H h : all) source[T::halfedge_index(mesh, h)] = T::target(mesh, T::opposite(mesh, h));
+        // New outgoing halfedge per vertex, from the old connectivity.
+        std::vector<std::pair<typename T::vertex_handle, H>> out;
+        out.reserve(T::vertex_count(mesh));
+        for (auto v : T::vertices(mesh)) {
+            const H h = T::vertex_halfedge(mesh, v);
+            if (h == T::null_halfedge()) continue;
+            // A boundary vertex's outgoing halfedge must stay a boundary one: the boundary
+            // halfedge that entered v now leaves it.
+            const bool boundary = T::face(mesh, h) == T::null_face();
+            out.emplace_back(v, boundary ? old_prev[T::halfedge_index(mesh, h)] : T::opposite(mesh, h));
+        }
+        for (H h : all) {
+            const auto i = T::halfedge_index(mesh, h);
+            T::set_target(mesh, h, source[i]);
+            T::set_next(mesh, h, old_prev[i]);
+        }
+        for (const auto& [v, h] : out) T::set_vertex_halfedge(mesh, v, h);
+        return T::face_count(mesh);
+    }
+}
+
+}  // namespace hmira

@@ -1,0 +1,97 @@
+// hmira/meshes/detail/element_range.hpp
+// The ranges hmira's meshes hand out: all live elements of a kind, and loops that follow a
+// step function (around a face, around a vertex). They hold a pointer to the mesh, never to a
+// temporary, so they stay valid while the mesh's connectivity is unchanged.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <iterator>
+#include <ranges>
+
+namespace hmira::detail {
+
+/// Handles [0, bound) skipping those flagged deleted (deleted may be null: none deleted).
+template <class Handle>
+class element_range : public std::ranges::view_interface<element_range<Handle>> {
+public:
+    class iterator {
+    public:
+        using value_type = Handle;
+        using difference_type = std::ptrdiff_t;
+        using iterator_concept = std::forward_iterator_tag;
+
+        iterator() = default;
+        iterator(std::uint32_t i, std::uint32_t bound, const std::uint8_t* deleted)
+            : i_(i), bound_(bound), deleted_(deleted) { skip(); }
+
+        Handle operator*() const noexcept { return Handle(i_); }
+        iterator& operator++() noexcept { ++i_; skip(); return *this; }
+        iterator operator++(int) noexcept { auto t = *this; ++*this; return t; }
+        friend bool operator==(const iterator& a, const iterator& b) noexcept { return a.i_ == b.i_; }
+
+    private:
+        void skip() noexcept {
+            if (deleted_)
+                while (i_ < bound_ && deleted_[i_]) ++i_;
+        }
+        std::uint32_t i_ = 0, bound_ = 0;
+        const std::uint8_t* deleted_ = nullptr;
+    };
+
+    element_range() = default;
+    element_range(std::uint32_t bound, const std::uint8_t* deleted) : bound_(bound), deleted_(deleted) {}
+    iterator begin() const { return iterator(0, bound_, deleted_); }
+    iterator end() const { return iterator(bound_, bound_, nullptr); }
+
+private:
+    std::uint32_t bound_ = 0;
+    const std::uint8_t* deleted_ = nullptr;
+};
+
+/// A closed loop: starts at `start`, steps with Policy::step(mesh, h) until back at start, and
+/// yields Policy::value(mesh, h). An empty loop if start is null. A guard stops after
+/// `max_steps` so that corrupt connectivity cannot hang a query.
+template <class Mesh, class Cursor, class Policy>
+class loop_range : public std::ranges::view_interface<loop_range<Mesh, Cursor, Policy>> {
+public:
+    class iterator {
+    public:
+        using value_type = std::remove_cvref_t<decltype(Policy::value(std::declval<const Mesh&>(), Cursor{}))>;
+        using difference_type = std::ptrdiff_t;
+        using iterator_concept = std::forward_iterator_tag;
+
+        iterator() = default;
+        iterator(const Mesh* m, Cursor start, Cursor cur, std::uint32_t lap)
+            : m_(m), start_(start), cur_(cur), lap_(lap) {}
+
+        value_type operator*() const { return Policy::value(*m_, cur_); }
+        iterator& operator++() {
+            cur_ = Policy::step(*m_, cur_);
+            if (cur_ == start_ || ++steps_ > max_steps) { cur_ = start_; ++lap_; }
+            return *this;
+        }
+        iterator operator++(int) { auto t = *this; ++*this; return t; }
+        friend bool operator==(const iterator& a, const iterator& b) noexcept {
+            return a.cur_ == b.cur_ && a.lap_ == b.lap_;
+        }
+        Cursor cursor() const noexcept { return cur_; }
+
+    private:
+        static constexpr std::uint32_t max_steps = 1u << 30;
+        const Mesh* m_ = nullptr;
+        Cursor start_{}, cur_{};
+        std::uint32_t lap_ = 0, steps_ = 0;
+    };
+
+    loop_range() = default;
+    loop_range(const Mesh& m, Cursor start) : m_(&m), start_(start) {}
+    iterator begin() const { return iterator(m_, start_, start_, start_ == Cursor{} ? 1u : 0u); }
+    iterator end() const { return iterator(m_, start_, start_, 1u); }
+
+private:
+    const Mesh* m_ = nullptr;
+    Cursor start_{};
+};
+
+}  // namespace hmira::detail

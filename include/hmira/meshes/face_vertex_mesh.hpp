@@ -1,0 +1,247 @@
+// hmira/meshes/face_vertex_mesh.hpp
+// The face-vertex mesh of thesis 1.2.1: positions plus, for each face, its ordered vertices,
+// and nothing else. It is the cheapest model to build and the one adapters exist for: it has
+// no adjacency, so a neighbourhood query costs a scan of all faces (thesis 4.1).
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "../concepts.hpp"
+#include "../core/result.hpp"
+#include "../core/vec3.hpp"
+#include "../traits.hpp"
+#include "detail/element_range.hpp"
+#include "handles.hpp"
+#include "properties.hpp"
+
+namespace hmira {
+
+/// Old-to-new index maps reported by garbage collection. An entry is the element's new index,
+/// or UINT32_MAX if the element was deleted. A map is empty for a kind the mesh does not have.
+struct index_remap {
+    std::vector<std::uint32_t> vertices, edges, halfedges, faces;
+};
+
+/// Indexed polygons (thesis 1.2.1).
+///
+/// Native costs, in the thesis's terms:
+///  - add vertex O(1); add face O(V_consistF) (checks handles and repeated vertices);
+///  - face -> vertices O(V_consistF), reverse a face O(V_consistF);
+///  - remove face O(1) (marked, reclaimed by collect_garbage);
+///  - remove vertex O(F_all x V_face): it must scan all faces for the ones that use it;
+///  - no adjacency: vertex neighbours, edges and face neighbours come from adapters.
+/// Handles stay valid until collect_garbage(), which renumbers and reports the mapping.
+/// Concurrency: const queries may run in parallel; any mutation needs exclusive access.
+template <class Scalar = double>
+class basic_face_vertex_mesh {
+public:
+    using scalar = Scalar;
+    using point = vec3<Scalar>;
+
+    // ----- element counts and ranges -------------------------------------------------------
+    std::size_t vertex_count() const noexcept { return positions_.size() - deleted_vertices_; }
+    std::size_t face_count() const noexcept { return face_begin_.size() - 1 - deleted_faces_; }
+    std::size_t vertex_index_bound() const noexcept { return positions_.size(); }
+    std::size_t face_index_bound() const noexcept { return face_begin_.size() - 1; }
+
+    detail::element_range<vertex_handle> vertices() const {
+        return {static_cast<std::uint32_t>(positions_.size()), deleted_vertices_ ? vertex_deleted_.data() : nullptr};
+    }
+    detail::element_range<face_handle> faces() const {
+        return {static_cast<std::uint32_t>(face_index_bound()), deleted_faces_ ? face_deleted_.data() : nullptr};
+    }
+
+    bool is_valid(vertex_handle v) const noexcept { return v.index < positions_.size() && !vertex_deleted_[v.index]; }
+    bool is_valid(face_handle f) const noexcept { return f.index < face_index_bound() && !face_deleted_[f.index]; }
+
+    // ----- geometry --------------------------------------------------------------------------
+    const point& position(vertex_handle v) const { return positions_[v.index]; }
+    void set_position(vertex_handle v, const point& p) { positions_[v.index] = p; }
+    /// Positions indexed by vertex index (deleted vertices included until garbage collection).
+    std::span<const point> positions() const noexcept { return positions_; }
+
+    // ----- connectivity ----------------------------------------------------------------------
+    /// The face's vertices in winding order: a view into the mesh, valid until the next
+    /// add_face, remove or collect_garbage.
+    std::span<const vertex_handle> face_vertices(face_handle f) const {
+        return {corners_.data() + face_begin_[f.index], corners_.data() + face_begin_[f.index + 1]};
+    }
+
+    // ----- mutation --------------------------------------------------------------------------
+    vertex_handle add_vertex(const point& p) {
+        positions_.push_back(p);
+        vertex_deleted_.push_back(0);
+        vertex_props_.push_back();
+        ++changes_;
+        return vertex_handle(positions_.size() - 1);
+    }
+
+    /// Adds a polygon. Fails, leaving the mesh unchanged, on fewer than 3 vertices, an invalid
+    /// or deleted vertex, or a vertex repeated within the face.
+    result<face_handle> add_face(std::span<const vertex_handle> vs) {
+        if (vs.size() < 3)
+            return fail(errc::degenerate_face, "add_face: a face needs at least 3 vertices, got " +
+                                                   std::to_string(vs.size()));
+        for (std::size_t i = 0; i < vs.size(); ++i) {
+            if (!is_valid(vs[i]))
+                return fail(errc::invalid_handle, "add_face: corner " + std::to_string(i) + " names vertex " +
+                                                      std::to_string(static_cast<long long>(vs[i].index)) +
+                                                      ", which does not exist", static_cast<long long>(vs[i].index));
+            for (std::size_t j = 0; j < i; ++j)
+                if (vs[j] == vs[i])
+                    return fail(errc::degenerate_face, "add_face: vertex " + std::to_string(vs[i].index) +
+                                                           " appears twice in the face", vs[i].index);
+        }
+        corners_.insert(corners_.end(), vs.begin(), vs.end());
+        face_begin_.push_back(static_cast<std::uint32_t>(corners_.size()));
+        face_deleted_.push_back(0);
+        face_props_.push_back();
+        ++changes_;
+        return face_handle(face_index_bound() - 1);
+    }
+    result<face_handle> add_face(std::initializer_list<vertex_handle> vs) {
+        return add_face(std::span<const vertex_handle>(vs.begin(), vs.size()));
+    }
+
+    /// Reverses the winding of one face, O(V_consistF).
+    void reverse_face(face_handle f) {
+        std::reverse(corners_.begin() + face_begin_[f.index], corners_.begin() + face_begin_[f.index + 1]);
+        ++changes_;
+    }
+
+    /// Removes a face; its vertices stay. O(1).
+    result<void> remove_face(face_handle f) {
+        if (!is_valid(f))
+            return fail(errc::invalid_handle, "remove_face: face " + std::to_string(f.index) + " does not exist", f.index);
+        face_deleted_[f.index] = 1;
+        ++deleted_faces_;
+        ++changes_;
+        return {};
+    }
+
+    /// Removes a vertex and every face that uses it. O(F_all x V_face): this model keeps no
+    /// vertex -> face links.
+    result<void> remove_vertex(vertex_handle v) {
+        if (!is_valid(v))
+            return fail(errc::invalid_handle, "remove_vertex: vertex " + std::to_string(v.index) + " does not exist", v.index);
+        for (auto f : faces()) {
+            auto fv = face_vertices(f);
+            if (std::find(fv.begin(), fv.end(), v) != fv.end()) {
+                face_deleted_[f.index] = 1;
+                ++deleted_faces_;
+            }
+        }
+        vertex_deleted_[v.index] = 1;
+        ++deleted_vertices_;
+        ++changes_;
+        return {};
+    }
+
+    bool has_garbage() const noexcept { return deleted_vertices_ + deleted_faces_ > 0; }
+
+    /// Drops deleted elements and renumbers the rest in their old order; properties follow.
+    /// Returns the old -> new index maps. Invalidates all handles and views.
+    index_remap collect_garbage() {
+        index_remap map;
+        map.vertices.assign(positions_.size(), UINT32_MAX);
+        std::uint32_t nv = 0;
+        for (std::size_t i = 0; i < positions_.size(); ++i)
+            if (!vertex_deleted_[i]) {
+                map.vertices[i] = nv;
+                positions_[nv++] = positions_[i];
+            }
+        positions_.resize(nv);
+        vertex_deleted_.assign(nv, 0);
+        map.faces.assign(face_index_bound(), UINT32_MAX);
+        std::vector<vertex_handle> corners;
+        std::vector<std::uint32_t> begin{0};
+        std::uint32_t nf = 0;
+        for (std::size_t f = 0; f + 1 < face_begin_.size(); ++f) {
+            if (face_deleted_[f]) continue;
+            map.faces[f] = nf++;
+            for (auto k = face_begin_[f]; k < face_begin_[f + 1]; ++k)
+                corners.push_back(vertex_handle(map.vertices[corners_[k].index]));
+            begin.push_back(static_cast<std::uint32_t>(corners.size()));
+        }
+        corners_ = std::move(corners);
+        face_begin_ = std::move(begin);
+        face_deleted_.assign(nf, 0);
+        vertex_props_.compact(map.vertices, nv);
+        face_props_.compact(map.faces, nf);
+        deleted_vertices_ = deleted_faces_ = 0;
+        ++changes_;
+        return map;
+    }
+
+    void reserve(std::size_t vertices, std::size_t faces, std::size_t corners) {
+        positions_.reserve(vertices);
+        vertex_deleted_.reserve(vertices);
+        face_begin_.reserve(faces + 1);
+        face_deleted_.reserve(faces);
+        corners_.reserve(corners);
+    }
+
+    void clear() { *this = basic_face_vertex_mesh(); }
+
+    // ----- properties ------------------------------------------------------------------------
+    template <class T>
+    property<vertex_handle, T> add_vertex_property(std::string_view name, T init = T{}) { return vertex_props_.template add<T>(name, std::move(init)); }
+    template <class T>
+    std::optional<property<vertex_handle, T>> get_vertex_property(std::string_view name) const { return vertex_props_.template find<T>(name); }
+    bool remove_vertex_property(std::string_view name) { return vertex_props_.remove(name); }
+    template <class T>
+    property<face_handle, T> add_face_property(std::string_view name, T init = T{}) { return face_props_.template add<T>(name, std::move(init)); }
+    template <class T>
+    std::optional<property<face_handle, T>> get_face_property(std::string_view name) const { return face_props_.template find<T>(name); }
+    bool remove_face_property(std::string_view name) { return face_props_.remove(name); }
+
+    /// Grows on every change of connectivity or of the element set.
+    std::uint64_t change_count() const noexcept { return changes_; }
+
+private:
+    std::vector<point> positions_;
+    std::vector<std::uint8_t> vertex_deleted_;
+    std::vector<vertex_handle> corners_;
+    std::vector<std::uint32_t> face_begin_{0};
+    std::vector<std::uint8_t> face_deleted_;
+    std::size_t deleted_vertices_ = 0, deleted_faces_ = 0;
+    property_registry<vertex_handle> vertex_props_;
+    property_registry<face_handle> face_props_;
+    std::uint64_t changes_ = 0;
+};
+
+using face_vertex_mesh = basic_face_vertex_mesh<double>;
+
+/// Native traits: everything face-vertex can do at its thesis cost, nothing more.
+template <class Scalar>
+struct mesh_traits<basic_face_vertex_mesh<Scalar>> {
+    using mesh = basic_face_vertex_mesh<Scalar>;
+    using vertex_handle = hmira::vertex_handle;
+    using face_handle = hmira::face_handle;
+    using scalar = Scalar;
+
+    static auto vertices(const mesh& m) { return m.vertices(); }
+    static auto faces(const mesh& m) { return m.faces(); }
+    static std::size_t vertex_count(const mesh& m) { return m.vertex_count(); }
+    static std::size_t face_count(const mesh& m) { return m.face_count(); }
+    static std::size_t vertex_index(const mesh&, vertex_handle v) { return v.index; }
+    static std::size_t vertex_index_bound(const mesh& m) { return m.vertex_index_bound(); }
+    static std::size_t face_index(const mesh&, face_handle f) { return f.index; }
+    static std::size_t face_index_bound(const mesh& m) { return m.face_index_bound(); }
+    static auto face_vertices(const mesh& m, face_handle f) { return m.face_vertices(f); }
+    static const vec3<Scalar>& position(const mesh& m, vertex_handle v) { return m.position(v); }
+    static void set_position(mesh& m, vertex_handle v, const vec3<Scalar>& p) { m.set_position(v, p); }
+    static vertex_handle add_vertex(mesh& m, const vec3<Scalar>& p) { return m.add_vertex(p); }
+    static result<face_handle> add_face(mesh& m, std::span<const vertex_handle> vs) { return m.add_face(vs); }
+    static void reverse_face(mesh& m, face_handle f) { m.reverse_face(f); }
+    static result<void> remove_face(mesh& m, face_handle f) { return m.remove_face(f); }
+    static result<void> remove_vertex(mesh& m, vertex_handle v) { return m.remove_vertex(v); }
+    static std::uint64_t change_count(const mesh& m) { return m.change_count(); }
+};
+
+}  // namespace hmira

@@ -1,0 +1,604 @@
+// hmira/meshes/halfedge_mesh.hpp
+// The half-edge mesh of thesis 1.2.3: polygonal faces, open boundaries, and faces with inner
+// rings (holes), so that Mantyla's ring operators have somewhere to live. Every local query of
+// the thesis's table 4.3 runs at its efficient cost here.
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "../concepts.hpp"
+#include "../core/result.hpp"
+#include "../core/vec3.hpp"
+#include "../traits.hpp"
+#include "detail/element_range.hpp"
+#include "face_vertex_mesh.hpp"  // index_remap
+#include "handles.hpp"
+#include "properties.hpp"
+
+namespace hmira {
+
+/// Halfedge mesh with inner rings.
+///
+/// Layout: the two halfedges of edge e are 2e and 2e+1, so opposite(h) is h ^ 1 and costs
+/// nothing. Each halfedge stores target, face (null on the boundary), next and prev. A vertex
+/// stores one outgoing halfedge, a boundary one whenever the vertex is on the boundary. A face
+/// stores one halfedge of its outer loop and a list of inner rings (one halfedge per ring; the
+/// ring's halfedges have the face as their face).
+///
+/// Native costs (thesis ch. 4): add vertex O(1); add face O(V_adjacentV) per corner (finds
+/// existing edges and re-links boundary fans, so no non-manifold vertex or edge can appear);
+/// next/prev/opposite/target/face O(1); face -> vertices O(V_consistF); vertex -> vertices,
+/// edges, faces O(V_adjacentV); face -> faces O(F_adjacentF).
+///
+/// Deletion marks elements; collect_garbage() compacts and reports the old -> new maps.
+/// Handles stay valid until then. Const queries may run concurrently; mutations need
+/// exclusive access. Mutation at the raw level (set_next, new_edge, erase_*) keeps nothing
+/// consistent by itself: it is the layer the Euler operators are written on.
+template <class Scalar = double>
+class basic_halfedge_mesh {
+public:
+    using scalar = Scalar;
+    using point = vec3<Scalar>;
+
+    // ----- counts and ranges -----------------------------------------------------------------
+    std::size_t vertex_count() const noexcept { return positions_.size() - deleted_vertices_; }
+    std::size_t edge_count() const noexcept { return edge_deleted_.size() - deleted_edges_; }
+    std::size_t halfedge_count() const noexcept { return 2 * edge_count(); }
+    std::size_t face_count() const noexcept { return faces_.size() - deleted_faces_; }
+    std::size_t vertex_index_bound() const noexcept { return positions_.size(); }
+    std::size_t edge_index_bound() const noexcept { return edge_deleted_.size(); }
+    std::size_t halfedge_index_bound() const noexcept { return halfedges_.size(); }
+    std::size_t face_index_bound() const noexcept { return faces_.size(); }
+
+    detail::element_range<vertex_handle> vertices() const {
+        return {static_cast<std::uint32_t>(positions_.size()), deleted_vertices_ ? vertex_deleted_.data() : nullptr};
+    }
+    detail::element_range<edge_handle> edges() const {
+        return {static_cast<std::uint32_t>(edge_deleted_.size()), deleted_edges_ ? edge_deleted_.data() : nullptr};
+    }
+    detail::element_range<face_handle> faces() const {
+        return {static_cast<std::uint32_t>(faces_.size()), deleted_faces_ ? face_deleted_.data() : nullptr};
+    }
+    /// All live halfedges.
+    auto halfedges() const {
+        return std::views::iota(std::uint32_t{0}, static_cast<std::uint32_t>(halfedges_.size())) |
+               std::views::filter([this](std::uint32_t i) { return !edge_deleted_[i >> 1]; }) |
+               std::views::transform([](std::uint32_t i) { return halfedge_handle(i); });
+    }
+
+    bool is_valid(vertex_handle v) const noexcept { return v.index < positions_.size() && !vertex_deleted_[v.index]; }
+    bool is_valid(face_handle f) const noexcept { return f.index < faces_.size() && !face_deleted_[f.index]; }
+    bool is_valid(edge_handle e) const noexcept { return e.index < edge_deleted_.size() && !edge_deleted_[e.index]; }
+    bool is_valid(halfedge_handle h) const noexcept { return h.index < halfedges_.size() && !edge_deleted_[h.index >> 1]; }
+
+    // ----- navigation, all O(1) ---------------------------------------------------------------
+    halfedge_handle next(halfedge_handle h) const { return halfedges_[h.index].next; }
+    halfedge_handle prev(halfedge_handle h) const { return halfedges_[h.index].prev; }
+    static constexpr halfedge_handle opposite(halfedge_handle h) noexcept { return halfedge_handle(h.index ^ 1u); }
+    vertex_handle target(halfedge_handle h) const { return halfedges_[h.index].target; }
+    vertex_handle source(halfedge_handle h) const { return halfedges_[h.index ^ 1u].target; }
+    face_handle face(halfedge_handle h) const { return halfedges_[h.index].face; }
+    static constexpr edge_handle edge(halfedge_handle h) noexcept { return edge_handle(h.index >> 1); }
+    static constexpr halfedge_handle edge_halfedge(edge_handle e, unsigned i = 0) noexcept { return halfedge_handle(2 * e.index + i); }
+    halfedge_handle vertex_halfedge(vertex_handle v) const { return vertex_out_[v.index]; }
+    halfedge_handle face_halfedge(face_handle f) const { return faces_[f.index].outer; }
+    bool is_boundary(halfedge_handle h) const { return face(h).is_null(); }
+    bool is_boundary(edge_handle e) const { return is_boundary(edge_halfedge(e, 0)) || is_boundary(edge_halfedge(e, 1)); }
+    /// A vertex is on the boundary when its stored outgoing halfedge is (kept so by add_face),
+    /// or when it is isolated.
+    bool is_boundary(vertex_handle v) const {
+        const auto h = vertex_out_[v.index];
+        return h.is_null() || is_boundary(h);
+    }
+    bool is_isolated(vertex_handle v) const { return vertex_out_[v.index].is_null(); }
+    std::array<vertex_handle, 2> edge_vertices(edge_handle e) const {
+        return {target(edge_halfedge(e, 1)), target(edge_halfedge(e, 0))};
+    }
+
+    // ----- circulators ----------------------------------------------------------------------------
+    struct loop_step {
+        static halfedge_handle step(const basic_halfedge_mesh& m, halfedge_handle h) { return m.next(h); }
+        static halfedge_handle value(const basic_halfedge_mesh&, halfedge_handle h) { return h; }
+    };
+    struct loop_vertex_step : loop_step {
+        static vertex_handle value(const basic_halfedge_mesh& m, halfedge_handle h) { return m.target(h); }
+    };
+    struct outgoing_step {
+        static halfedge_handle step(const basic_halfedge_mesh& m, halfedge_handle h) { return m.next(opposite(h)); }
+        static halfedge_handle value(const basic_halfedge_mesh&, halfedge_handle h) { return h; }
+    };
+    struct outgoing_target_step : outgoing_step {
+        static vertex_handle value(const basic_halfedge_mesh& m, halfedge_handle h) { return m.target(h); }
+    };
+    struct outgoing_edge_step : outgoing_step {
+        static edge_handle value(const basic_halfedge_mesh&, halfedge_handle h) { return edge(h); }
+    };
+    template <class Policy>
+    using loop = detail::loop_range<basic_halfedge_mesh, halfedge_handle, Policy>;
+
+    /// Halfedges of the loop through h (a face's outer loop, an inner ring, or a boundary loop).
+    loop<loop_step> loop_halfedges(halfedge_handle h) const { return {*this, h}; }
+    /// The outer loop's vertices in winding order, starting at the first vertex given to add_face.
+    loop<loop_vertex_step> face_vertices(face_handle f) const { return {*this, face_halfedge(f)}; }
+    loop<loop_step> face_halfedges(face_handle f) const { return {*this, face_halfedge(f)}; }
+    /// Outgoing halfedges of v, O(V_adjacentV).
+    loop<outgoing_step> outgoing_halfedges(vertex_handle v) const { return {*this, vertex_halfedge(v)}; }
+    loop<outgoing_target_step> adjacent_vertices(vertex_handle v) const { return {*this, vertex_halfedge(v)}; }
+    loop<outgoing_edge_step> vertex_edges(vertex_handle v) const { return {*this, vertex_halfedge(v)}; }
+    /// Faces around v (boundary gaps skipped), O(F_adjacentV).
+    auto vertex_faces(vertex_handle v) const {
+        return outgoing_halfedges(v) | std::views::filter([this](halfedge_handle h) { return !is_boundary(h); }) |
+               std::views::transform([this](halfedge_handle h) { return face(h); });
+    }
+    /// Faces across the edges of f's outer loop and inner rings, O(F_adjacentF).
+    std::vector<face_handle> adjacent_faces(face_handle f) const {
+        std::vector<face_handle> out;
+        auto collect = [&](halfedge_handle start) {
+            for (auto h : loop_halfedges(start)) {
+                const auto g = face(opposite(h));
+                if (!g.is_null()) out.push_back(g);
+            }
+        };
+        collect(face_halfedge(f));
+        for (auto r : inner_rings(f)) collect(r);
+        return out;
+    }
+    std::size_t valence(vertex_handle v) const { return static_cast<std::size_t>(std::ranges::distance(outgoing_halfedges(v))); }
+
+    /// Finds the halfedge from a to b, or null. O(V_adjacentV).
+    halfedge_handle find_halfedge(vertex_handle a, vertex_handle b) const {
+        for (auto h : outgoing_halfedges(a))
+            if (target(h) == b) return h;
+        return {};
+    }
+
+    // ----- inner rings ---------------------------------------------------------------------------
+    /// One halfedge of each inner ring of f.
+    std::span<const halfedge_handle> inner_rings(face_handle f) const {
+        const auto r = faces_[f.index].rings;
+        if (r == no_rings) return {};
+        return ring_lists_[r];
+    }
+    bool has_inner_rings(face_handle f) const { return faces_[f.index].rings != no_rings && !ring_lists_[faces_[f.index].rings].empty(); }
+    /// Registers the loop through h as an inner ring of f (raw: does not set the loop's faces).
+    void add_inner_ring(face_handle f, halfedge_handle h) {
+        auto& r = faces_[f.index].rings;
+        if (r == no_rings) {
+            r = static_cast<std::uint32_t>(ring_lists_.size());
+            ring_lists_.emplace_back();
+        }
+        ring_lists_[r].push_back(h);
+        ++changes_;
+    }
+    /// Unregisters the inner ring of f that contains h; returns whether one was found. O(ring size).
+    bool remove_inner_ring(face_handle f, halfedge_handle h) {
+        const auto r = faces_[f.index].rings;
+        if (r == no_rings) return false;
+        auto& list = ring_lists_[r];
+        for (auto it = list.begin(); it != list.end(); ++it)
+            for (auto g : loop_halfedges(*it))
+                if (g == h) {
+                    list.erase(it);
+                    ++changes_;
+                    return true;
+                }
+        return false;
+    }
+    /// Re-points the stored halfedge of the ring containing `old_h` to `new_h`.
+    void set_inner_ring_halfedge(face_handle f, halfedge_handle old_h, halfedge_handle new_h) {
+        const auto r = faces_[f.index].rings;
+        if (r == no_rings) return;
+        for (auto& h : ring_lists_[r])
+            if (h == old_h) h = new_h;
+    }
+
+    // ----- geometry ------------------------------------------------------------------------------
+    const point& position(vertex_handle v) const { return positions_[v.index]; }
+    void set_position(vertex_handle v, const point& p) { positions_[v.index] = p; }
+    std::span<const point> positions() const noexcept { return positions_; }
+
+    // ----- building ------------------------------------------------------------------------------
+    vertex_handle add_vertex(const point& p) {
+        positions_.push_back(p);
+        vertex_out_.push_back({});
+        vertex_deleted_.push_back(0);
+        vertex_props_.push_back();
+        ++changes_;
+        return vertex_handle(positions_.size() - 1);
+    }
+
+    result<face_handle> add_face(std::initializer_list<vertex_handle> vs) {
+        return add_face(std::span<const vertex_handle>(vs.begin(), vs.size()));
+    }
+
+    /// Adds a polygon, linking it to the faces already present. Fails, with the mesh unchanged,
+    /// when the face has fewer than 3 or repeated vertices, names a missing vertex, would give
+    /// an edge a third face (or a face on the wrong side: orientation conflict), or would make a
+    /// vertex non-manifold. O(sum of V_adjacentV over its corners).
+    result<face_handle> add_face(std::span<const vertex_handle> vs) {
+        const std::size_t n = vs.size();
+        if (n < 3)
+            return fail(errc::degenerate_face, "add_face: a face needs at least 3 vertices, got " + std::to_string(n));
+        scratch_halfedges_.assign(n, {});
+        scratch_new_.assign(n, 0);
+        for (std::size_t i = 0; i < n; ++i) {
+            if (!is_valid(vs[i]))
+                return fail(errc::invalid_handle,
+                            "add_face: corner " + std::to_string(i) + " names vertex " +
+                                std::to_string(static_cast<long long>(vs[i].index)) + ", which does not exist",
+                            static_cast<long long>(vs[i].index));
+            for (std::size_t j = 0; j < i; ++j)
+                if (vs[j] == vs[i])
+                    return fail(errc::degenerate_face, "add_face: vertex " + std::to_string(vs[i].index) +
+                                                           " appears twice in the face", vs[i].index);
+        }
+        for (std::size_t i = 0; i < n; ++i) {
+            if (!is_boundary(vs[i]))
+                return fail(errc::non_manifold, "add_face: vertex " + std::to_string(vs[i].index) +
+                                                    " is interior (surrounded by faces); a face there would be non-manifold",
+                            vs[i].index);
+            const auto h = find_halfedge(vs[i], vs[(i + 1) % n]);
+            if (!h.is_null() && !is_boundary(h)) {
+                const bool reversed = is_boundary(opposite(h));
+                return fail(reversed ? errc::orientation_conflict : errc::non_manifold,
+                            "add_face: edge " + std::to_string(vs[i].index) + "->" + std::to_string(vs[(i + 1) % n].index) +
+                                (reversed ? " is already used in this direction by face " + std::to_string(face(h).index) +
+                                                " (the new face is wound against its neighbour)"
+                                          : " already has two faces"),
+                            vs[i].index);
+            }
+            scratch_halfedges_[i] = h;
+            scratch_new_[i] = h.is_null();
+        }
+        // A vertex between two existing edges must be able to re-link its boundary fans; check
+        // first so that a failure changes nothing.
+        for (std::size_t i = 0; i < n; ++i) {
+            const std::size_t ii = (i + 1) % n;
+            if (scratch_new_[i] || scratch_new_[ii]) continue;
+            const auto inner_prev = scratch_halfedges_[i], inner_next = scratch_halfedges_[ii];
+            if (next(inner_prev) == inner_next) continue;
+            if (find_free_gap(inner_prev, inner_next).is_null())
+                return fail(errc::non_manifold, "add_face: vertex " + std::to_string(vs[ii].index) +
+                                                    " has no free boundary gap to move its fans to", vs[ii].index);
+        }
+        // Re-link: move the boundary patch between inner_prev and inner_next elsewhere so the
+        // two become consecutive.
+        for (std::size_t i = 0; i < n; ++i) {
+            const std::size_t ii = (i + 1) % n;
+            if (scratch_new_[i] || scratch_new_[ii]) continue;
+            const auto inner_prev = scratch_halfedges_[i], inner_next = scratch_halfedges_[ii];
+            if (next(inner_prev) == inner_next) continue;
+            const auto boundary_prev = find_free_gap(inner_prev, inner_next);
+            const auto boundary_next = next(boundary_prev);
+            const auto patch_start = next(inner_prev), patch_end = prev(inner_next);
+            link(boundary_prev, patch_start);
+            link(patch_end, boundary_next);
+            link(inner_prev, inner_next);
+        }
+        for (std::size_t i = 0; i < n; ++i)
+            if (scratch_new_[i]) scratch_halfedges_[i] = new_edge(vs[i], vs[(i + 1) % n]);
+
+        const auto f = new_face();
+        faces_[f.index].outer = scratch_halfedges_[n - 1];
+
+        // Compute the new next links from the state before this face, then apply them.
+        scratch_links_.clear();
+        for (std::size_t i = 0; i < n; ++i) {
+            const std::size_t ii = (i + 1) % n;
+            const auto v = vs[ii];
+            const auto inner_prev = scratch_halfedges_[i], inner_next = scratch_halfedges_[ii];
+            const unsigned kind = (scratch_new_[i] ? 1u : 0u) | (scratch_new_[ii] ? 2u : 0u);
+            if (kind != 0) {
+                const auto outer_prev = opposite(inner_next), outer_next = opposite(inner_prev);
+                switch (kind) {
+                    case 1: {  // prev new, next old
+                        const auto boundary_prev = prev(inner_next);
+                        scratch_links_.push_back({boundary_prev, outer_next});
+                        vertex_out_[v.index] = outer_next;
+                        break;
+                    }
+                    case 2: {  // prev old, next new
+                        const auto boundary_next = next(inner_prev);
+                        scratch_links_.push_back({outer_prev, boundary_next});
+                        vertex_out_[v.index] = boundary_next;
+                        break;
+                    }
+                    default: {  // both new
+                        if (vertex_out_[v.index].is_null()) {
+                            vertex_out_[v.index] = outer_next;
+                            scratch_links_.push_back({outer_prev, outer_next});
+                        } else {
+                            const auto boundary_next = vertex_out_[v.index];
+                            const auto boundary_prev = prev(boundary_next);
+                            scratch_links_.push_back({boundary_prev, outer_next});
+                            scratch_links_.push_back({outer_prev, boundary_next});
+                        }
+                    }
+                }
+                scratch_links_.push_back({inner_prev, inner_next});
+            }
+            halfedges_[inner_prev.index].face = f;
+        }
+        for (const auto& [a, b] : scratch_links_) link(a, b);
+        for (std::size_t i = 0; i < n; ++i) adjust_outgoing_halfedge(vs[i]);
+        return f;
+    }
+
+    /// Makes the stored outgoing halfedge of v a boundary one if v has any. O(V_adjacentV).
+    void adjust_outgoing_halfedge(vertex_handle v) {
+        const auto start = vertex_out_[v.index];
+        if (start.is_null()) return;
+        for (auto h : outgoing_halfedges(v))
+            if (is_boundary(h)) {
+                vertex_out_[v.index] = h;
+                return;
+            }
+    }
+
+    // ----- raw mutation (the layer Euler operators use; keeps nothing consistent) ------------------
+    void set_next(halfedge_handle h, halfedge_handle n) { link(h, n); ++changes_; }
+    void set_target(halfedge_handle h, vertex_handle v) { halfedges_[h.index].target = v; ++changes_; }
+    void set_face(halfedge_handle h, face_handle f) { halfedges_[h.index].face = f; ++changes_; }
+    void set_vertex_halfedge(vertex_handle v, halfedge_handle h) { vertex_out_[v.index] = h; ++changes_; }
+    void set_face_halfedge(face_handle f, halfedge_handle h) { faces_[f.index].outer = h; ++changes_; }
+
+    /// A new edge from a to b; returns the halfedge a->b. next/prev/face are unset (null face).
+    halfedge_handle new_edge(vertex_handle a, vertex_handle b) {
+        const auto h = halfedge_handle(halfedges_.size());
+        halfedges_.push_back({b, {}, {}, {}});
+        halfedges_.push_back({a, {}, {}, {}});
+        edge_deleted_.push_back(0);
+        edge_props_.push_back();
+        halfedge_props_.push_back();
+        halfedge_props_.push_back();
+        ++changes_;
+        return h;
+    }
+    face_handle new_face() {
+        faces_.push_back({});
+        face_deleted_.push_back(0);
+        face_props_.push_back();
+        ++changes_;
+        return face_handle(faces_.size() - 1);
+    }
+    void erase_edge(edge_handle e) {
+        if (!edge_deleted_[e.index]) { edge_deleted_[e.index] = 1; ++deleted_edges_; ++changes_; }
+    }
+    void erase_face(face_handle f) {
+        if (!face_deleted_[f.index]) {
+            face_deleted_[f.index] = 1;
+            ++deleted_faces_;
+            ++changes_;
+            if (faces_[f.index].rings != no_rings) ring_lists_[faces_[f.index].rings].clear();
+        }
+    }
+    void erase_vertex(vertex_handle v) {
+        if (!vertex_deleted_[v.index]) { vertex_deleted_[v.index] = 1; ++deleted_vertices_; ++changes_; }
+    }
+
+    bool has_garbage() const noexcept { return deleted_vertices_ + deleted_edges_ + deleted_faces_ > 0; }
+
+    /// Drops deleted elements, renumbers the rest in their old order, rewrites every reference,
+    /// and compacts the properties. Returns the old -> new maps. Invalidates handles and views.
+    /// O(V_all + E_all + F_all).
+    index_remap collect_garbage() {
+        index_remap map;
+        auto make_map = [](const std::vector<std::uint8_t>& deleted, std::vector<std::uint32_t>& out) {
+            out.assign(deleted.size(), UINT32_MAX);
+            std::uint32_t k = 0;
+            for (std::size_t i = 0; i < deleted.size(); ++i)
+                if (!deleted[i]) out[i] = k++;
+            return k;
+        };
+        const auto nv = make_map(vertex_deleted_, map.vertices);
+        const auto ne = make_map(edge_deleted_, map.edges);
+        const auto nf = make_map(face_deleted_, map.faces);
+        map.halfedges.assign(halfedges_.size(), UINT32_MAX);
+        for (std::size_t h = 0; h < halfedges_.size(); ++h)
+            if (map.edges[h >> 1] != UINT32_MAX) map.halfedges[h] = 2 * map.edges[h >> 1] + (h & 1u);
+        auto mv = [&](vertex_handle v) { return v.is_null() || v.index >= map.vertices.size() ? vertex_handle{} : vertex_handle(map.vertices[v.index]); };
+        auto mh = [&](halfedge_handle h) { return h.is_null() || h.index >= map.halfedges.size() ? halfedge_handle{} : halfedge_handle(map.halfedges[h.index]); };
+        auto mf = [&](face_handle f) { return f.is_null() || f.index >= map.faces.size() ? face_handle{} : face_handle(map.faces[f.index]); };
+
+        for (std::size_t v = 0; v < positions_.size(); ++v)
+            if (map.vertices[v] != UINT32_MAX) {
+                positions_[map.vertices[v]] = positions_[v];
+                vertex_out_[map.vertices[v]] = mh(vertex_out_[v]);
+            }
+        positions_.resize(nv);
+        vertex_out_.resize(nv);
+        vertex_deleted_.assign(nv, 0);
+        for (std::size_t h = 0; h < halfedges_.size(); ++h)
+            if (map.halfedges[h] != UINT32_MAX) {
+                const auto rec = halfedges_[h];
+                halfedges_[map.halfedges[h]] = {mv(rec.target), mf(rec.face), mh(rec.next), mh(rec.prev)};
+            }
+        halfedges_.resize(2 * static_cast<std::size_t>(ne));
+        edge_deleted_.assign(ne, 0);
+        std::vector<std::vector<halfedge_handle>> rings;
+        for (std::size_t f = 0; f < faces_.size(); ++f)
+            if (map.faces[f] != UINT32_MAX) {
+                auto rec = faces_[f];
+                rec.outer = mh(rec.outer);
+                if (rec.rings != no_rings) {
+                    auto list = std::move(ring_lists_[rec.rings]);
+                    for (auto& h : list) h = mh(h);
+                    if (list.empty()) {
+                        rec.rings = no_rings;
+                    } else {
+                        rec.rings = static_cast<std::uint32_t>(rings.size());
+                        rings.push_back(std::move(list));
+                    }
+                }
+                faces_[map.faces[f]] = rec;
+            }
+        faces_.resize(nf);
+        face_deleted_.assign(nf, 0);
+        ring_lists_ = std::move(rings);
+        vertex_props_.compact(map.vertices, nv);
+        edge_props_.compact(map.edges, ne);
+        halfedge_props_.compact(map.halfedges, 2 * static_cast<std::size_t>(ne));
+        face_props_.compact(map.faces, nf);
+        deleted_vertices_ = deleted_edges_ = deleted_faces_ = 0;
+        ++changes_;
+        return map;
+    }
+
+    void reserve(std::size_t vertices, std::size_t edges, std::size_t faces) {
+        positions_.reserve(vertices);
+        vertex_out_.reserve(vertices);
+        vertex_deleted_.reserve(vertices);
+        halfedges_.reserve(2 * edges);
+        edge_deleted_.reserve(edges);
+        faces_.reserve(faces);
+        face_deleted_.reserve(faces);
+    }
+    void clear() { *this = basic_halfedge_mesh(); }
+
+    // ----- properties ------------------------------------------------------------------------------
+    template <class T>
+    property<vertex_handle, T> add_vertex_property(std::string_view name, T init = T{}) { return vertex_props_.template add<T>(name, std::move(init)); }
+    template <class T>
+    std::optional<property<vertex_handle, T>> get_vertex_property(std::string_view name) const { return vertex_props_.template find<T>(name); }
+    bool remove_vertex_property(std::string_view name) { return vertex_props_.remove(name); }
+    template <class T>
+    property<edge_handle, T> add_edge_property(std::string_view name, T init = T{}) { return edge_props_.template add<T>(name, std::move(init)); }
+    template <class T>
+    std::optional<property<edge_handle, T>> get_edge_property(std::string_view name) const { return edge_props_.template find<T>(name); }
+    bool remove_edge_property(std::string_view name) { return edge_props_.remove(name); }
+    template <class T>
+    property<halfedge_handle, T> add_halfedge_property(std::string_view name, T init = T{}) { return halfedge_props_.template add<T>(name, std::move(init)); }
+    template <class T>
+    std::optional<property<halfedge_handle, T>> get_halfedge_property(std::string_view name) const { return halfedge_props_.template find<T>(name); }
+    bool remove_halfedge_property(std::string_view name) { return halfedge_props_.remove(name); }
+    template <class T>
+    property<face_handle, T> add_face_property(std::string_view name, T init = T{}) { return face_props_.template add<T>(name, std::move(init)); }
+    template <class T>
+    std::optional<property<face_handle, T>> get_face_property(std::string_view name) const { return face_props_.template find<T>(name); }
+    bool remove_face_property(std::string_view name) { return face_props_.remove(name); }
+
+    std::uint64_t change_count() const noexcept { return changes_; }
+
+private:
+    static constexpr std::uint32_t no_rings = UINT32_MAX;
+    struct halfedge_record {
+        vertex_handle target;
+        face_handle face;
+        halfedge_handle next, prev;
+    };
+    struct face_record {
+        halfedge_handle outer;
+        std::uint32_t rings = no_rings;
+    };
+
+    void link(halfedge_handle a, halfedge_handle b) {
+        halfedges_[a.index].next = b;
+        halfedges_[b.index].prev = a;
+    }
+
+    /// For re-linking at the vertex between inner_prev (in) and inner_next (out): a boundary
+    /// halfedge entering that vertex, other than inner_prev and outside the patch, or null.
+    halfedge_handle find_free_gap(halfedge_handle inner_prev, halfedge_handle inner_next) const {
+        auto h = opposite(inner_next);
+        const auto start = h;
+        do {
+            h = opposite(next(h));
+            if (is_boundary(h) && h != inner_prev) return h;
+        } while (h != start);
+        return {};
+    }
+
+    std::vector<point> positions_;
+    std::vector<halfedge_handle> vertex_out_;
+    std::vector<std::uint8_t> vertex_deleted_;
+    std::vector<halfedge_record> halfedges_;
+    std::vector<std::uint8_t> edge_deleted_;
+    std::vector<face_record> faces_;
+    std::vector<std::uint8_t> face_deleted_;
+    std::vector<std::vector<halfedge_handle>> ring_lists_;
+    std::size_t deleted_vertices_ = 0, deleted_edges_ = 0, deleted_faces_ = 0;
+    property_registry<vertex_handle> vertex_props_;
+    property_registry<edge_handle> edge_props_;
+    property_registry<halfedge_handle> halfedge_props_;
+    property_registry<face_handle> face_props_;
+    std::uint64_t changes_ = 0;
+    // Reused by add_face so that building a mesh does not allocate per face.
+    std::vector<halfedge_handle> scratch_halfedges_;
+    std::vector<std::uint8_t> scratch_new_;
+    std::vector<std::pair<halfedge_handle, halfedge_handle>> scratch_links_;
+};
+
+using halfedge_mesh = basic_halfedge_mesh<double>;
+
+/// Native traits: halfedge navigation, inner rings and raw mutation, all at thesis cost.
+template <class Scalar>
+struct mesh_traits<basic_halfedge_mesh<Scalar>> {
+    using mesh = basic_halfedge_mesh<Scalar>;
+    using vertex_handle = hmira::vertex_handle;
+    using face_handle = hmira::face_handle;
+    using edge_handle = hmira::edge_handle;
+    using halfedge_handle = hmira::halfedge_handle;
+    using scalar = Scalar;
+
+    static auto vertices(const mesh& m) { return m.vertices(); }
+    static auto faces(const mesh& m) { return m.faces(); }
+    static auto edges(const mesh& m) { return m.edges(); }
+    static auto halfedges(const mesh& m) { return m.halfedges(); }
+    static std::size_t vertex_count(const mesh& m) { return m.vertex_count(); }
+    static std::size_t face_count(const mesh& m) { return m.face_count(); }
+    static std::size_t edge_count(const mesh& m) { return m.edge_count(); }
+    static std::size_t vertex_index(const mesh&, vertex_handle v) { return v.index; }
+    static std::size_t vertex_index_bound(const mesh& m) { return m.vertex_index_bound(); }
+    static std::size_t face_index(const mesh&, face_handle f) { return f.index; }
+    static std::size_t face_index_bound(const mesh& m) { return m.face_index_bound(); }
+    static std::size_t edge_index(const mesh&, edge_handle e) { return e.index; }
+    static std::size_t edge_index_bound(const mesh& m) { return m.edge_index_bound(); }
+    static std::size_t halfedge_index(const mesh&, halfedge_handle h) { return h.index; }
+    static std::size_t halfedge_index_bound(const mesh& m) { return m.halfedge_index_bound(); }
+
+    static auto face_vertices(const mesh& m, face_handle f) { return m.face_vertices(f); }
+    static auto adjacent_vertices(const mesh& m, vertex_handle v) { return m.adjacent_vertices(v); }
+    static auto vertex_faces(const mesh& m, vertex_handle v) { return m.vertex_faces(v); }
+    static auto vertex_edges(const mesh& m, vertex_handle v) { return m.vertex_edges(v); }
+    static auto adjacent_faces(const mesh& m, face_handle f) { return m.adjacent_faces(f); }
+    static auto edge_vertices(const mesh& m, edge_handle e) { return m.edge_vertices(e); }
+    static auto inner_rings(const mesh& m, face_handle f) { return m.inner_rings(f); }
+
+    static halfedge_handle next(const mesh& m, halfedge_handle h) { return m.next(h); }
+    static halfedge_handle prev(const mesh& m, halfedge_handle h) { return m.prev(h); }
+    static halfedge_handle opposite(const mesh&, halfedge_handle h) { return mesh::opposite(h); }
+    static vertex_handle target(const mesh& m, halfedge_handle h) { return m.target(h); }
+    static face_handle face(const mesh& m, halfedge_handle h) { return m.face(h); }
+    static edge_handle edge(const mesh&, halfedge_handle h) { return mesh::edge(h); }
+    static halfedge_handle edge_halfedge(const mesh&, edge_handle e) { return mesh::edge_halfedge(e); }
+    static halfedge_handle vertex_halfedge(const mesh& m, vertex_handle v) { return m.vertex_halfedge(v); }
+    static halfedge_handle face_halfedge(const mesh& m, face_handle f) { return m.face_halfedge(f); }
+    static constexpr face_handle null_face() { return {}; }
+    static constexpr halfedge_handle null_halfedge() { return {}; }
+
+    static const vec3<Scalar>& position(const mesh& m, vertex_handle v) { return m.position(v); }
+    static void set_position(mesh& m, vertex_handle v, const vec3<Scalar>& p) { m.set_position(v, p); }
+    static vertex_handle add_vertex(mesh& m, const vec3<Scalar>& p) { return m.add_vertex(p); }
+    static result<face_handle> add_face(mesh& m, std::span<const vertex_handle> vs) { return m.add_face(vs); }
+
+    static void set_next(mesh& m, halfedge_handle h, halfedge_handle n) { m.set_next(h, n); }
+    static void set_target(mesh& m, halfedge_handle h, vertex_handle v) { m.set_target(h, v); }
+    static void set_face(mesh& m, halfedge_handle h, face_handle f) { m.set_face(h, f); }
+    static void set_vertex_halfedge(mesh& m, vertex_handle v, halfedge_handle h) { m.set_vertex_halfedge(v, h); }
+    static void set_face_halfedge(mesh& m, face_handle f, halfedge_handle h) { m.set_face_halfedge(f, h); }
+    static halfedge_handle new_edge(mesh& m, vertex_handle a, vertex_handle b) { return m.new_edge(a, b); }
+    static face_handle new_face(mesh& m) { return m.new_face(); }
+    static void erase_edge(mesh& m, edge_handle e) { m.erase_edge(e); }
+    static void erase_face(mesh& m, face_handle f) { m.erase_face(f); }
+    static void erase_vertex(mesh& m, vertex_handle v) { m.erase_vertex(v); }
+    static void add_inner_ring(mesh& m, face_handle f, halfedge_handle h) { m.add_inner_ring(f, h); }
+    static void remove_inner_ring(mesh& m, face_handle f, halfedge_handle h) { m.remove_inner_ring(f, h); }
+    static std::uint64_t change_count(const mesh& m) { return m.change_count(); }
+};
+
+}  // namespace hmira

@@ -1,0 +1,44 @@
+// hmira/meshes/handles.hpp
+// Typed index handles shared by hmira's own meshes. A handle is a 32-bit index with a type, so
+// a face handle cannot be passed where a vertex is expected. The default handle is null.
+#pragma once
+
+#include <compare>
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <limits>
+
+namespace hmira {
+
+template <class Tag>
+struct index_handle {
+    static constexpr std::uint32_t null_index = std::numeric_limits<std::uint32_t>::max();
+    std::uint32_t index = null_index;
+
+    constexpr index_handle() = default;
+    constexpr explicit index_handle(std::uint32_t i) noexcept : index(i) {}
+    constexpr explicit index_handle(std::size_t i) noexcept : index(static_cast<std::uint32_t>(i)) {}
+    constexpr explicit index_handle(int i) noexcept : index(static_cast<std::uint32_t>(i)) {}
+
+    constexpr bool is_null() const noexcept { return index == null_index; }
+    constexpr explicit operator bool() const noexcept { return index != null_index; }
+    friend constexpr auto operator<=>(index_handle, index_handle) = default;
+};
+
+struct vertex_tag {};
+struct face_tag {};
+struct edge_tag {};
+struct halfedge_tag {};
+
+using vertex_handle = index_handle<vertex_tag>;
+using face_handle = index_handle<face_tag>;
+using edge_handle = index_handle<edge_tag>;
+using halfedge_handle = index_handle<halfedge_tag>;
+
+}  // namespace hmira
+
+template <class Tag>
+struct std::hash<hmira::index_handle<Tag>> {
+    std::size_t operator()(hmira::index_handle<Tag> h) const noexcept { return std::hash<std::uint32_t>{}(h.index); }
+};
