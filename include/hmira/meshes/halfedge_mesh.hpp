@@ -220,6 +220,9 @@ public:
     /// when the face has fewer than 3 or repeated vertices, names a missing vertex, would give
     /// an edge a third face (or a face on the wrong side: orientation conflict), or would make a
     /// vertex non-manifold. O(sum of V_adjacentV over its corners).
+    /// Faces may arrive in any order: a face may touch a vertex in a fan of its own, separated
+    /// from the vertex's other fans by boundary gaps (a pinch that validate() reports as a
+    /// non-manifold vertex until the faces between the fans are added).
     result<face_handle> add_face(std::span<const vertex_handle> vs) {
         const std::size_t n = vs.size();
         if (n < 3)
@@ -501,14 +504,16 @@ private:
         halfedges_[b.index].prev = a;
     }
 
-    /// For re-linking at the vertex between inner_prev (in) and inner_next (out): a boundary
-    /// halfedge entering that vertex, other than inner_prev and outside the patch, or null.
+    /// For re-linking at the vertex between inner_prev (in) and inner_next (out): the boundary
+    /// halfedge that closes inner_next's fan on its far side, where the patch can move; null if
+    /// that is inner_prev itself (the new face would close the fan into a disk while other fans
+    /// still touch the vertex: non-manifold).
     halfedge_handle find_free_gap(halfedge_handle inner_prev, halfedge_handle inner_next) const {
         auto h = opposite(inner_next);
         const auto start = h;
         do {
             h = opposite(next(h));
-            if (is_boundary(h) && h != inner_prev) return h;
+            if (is_boundary(h)) return h == inner_prev ? halfedge_handle{} : h;
         } while (h != start);
         return {};
     }

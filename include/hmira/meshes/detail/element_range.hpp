@@ -95,3 +95,9 @@ private:
 };
 
 }  // namespace hmira::detail
+
+// Both ranges only refer to the mesh, so iterators obtained from a temporary range stay valid.
+template <class Handle>
+inline constexpr bool std::ranges::enable_borrowed_range<hmira::detail::element_range<Handle>> = true;
+template <class Mesh, class Cursor, class Policy>
+inline constexpr bool std::ranges::enable_borrowed_range<hmira::detail::loop_range<Mesh, Cursor, Policy>> = true;

@@ -1,0 +1,528 @@
+// hmira/meshes/winged_edge_mesh.hpp
+// The winged-edge mesh of thesis 1.2.2 (Baumgart): one record per edge holding its two
+// vertices, its two faces and its four wing edges; a vertex and a face each keep one edge.
+// Its traits also present halfedge navigation, a halfedge being an (edge, side) pair, so the
+// Euler operators and every halfedge algorithm run on it unchanged.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <initializer_list>
+#include <ranges>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "../concepts.hpp"
+#include "../core/result.hpp"
+#include "../core/vec3.hpp"
+#include "../traits.hpp"
+#include "detail/element_range.hpp"
+#include "face_vertex_mesh.hpp"  // index_remap
+#include "handles.hpp"
+#include "properties.hpp"
+
+namespace hmira {
+
+/// Winged-edge mesh (thesis 1.2.2).
+///
+/// Layout: edge e runs from `vertex[0]` to `vertex[1]`. Side 0 of the edge is the face
+/// `face[0]` that runs it forwards (vertex[0] -> vertex[1]), side 1 the face `face[1]` that runs
+/// it backwards; a null face is the boundary. The four wings are the edges that come before and
+/// after e in the loop of each side: `prev_wing[s]`, `next_wing[s]`. The thesis asks which face
+/// is "first" and which vertex is "first" (1.2.2); here the edge's direction answers both, and
+/// each wing reference also records, in its lowest bit, which side of the wing edge continues
+/// the loop. Baumgart's original recovers that bit by comparing vertices at every step; storing
+/// it costs no memory (the index has room) and keeps navigation O(1) and unambiguous even in
+/// the middle of raw mutation, while the vertices are being rewritten.
+///
+/// A halfedge is the pair (edge e, side s) with index 2e + s: it runs vertex[s] -> vertex[1-s]
+/// and lies in face[s]. A vertex keeps one edge it touches (as an outgoing (edge, side), a
+/// boundary one when the vertex is on the boundary); a face keeps one edge of its loop.
+///
+/// Native costs (thesis ch. 4): add vertex O(1); add face O(V_adjacentV) per corner (checks
+/// manifoldness and orientation like halfedge_mesh); edge -> vertices, edge -> faces, wing
+/// edges O(1); face -> vertices/edges O(V_consistF); vertex -> vertices/edges/faces
+/// O(V_adjacentV); face -> faces O(F_adjacentF). No inner rings: faces are simple loops.
+///
+/// Deletion marks elements; collect_garbage() compacts them. Handles stay valid until then.
+/// Const queries may run concurrently; mutations need exclusive access. The raw mutation
+/// (set_next, new_edge, erase_*) keeps nothing consistent by itself, as in halfedge_mesh.
+template <class Scalar = double>
+class basic_winged_edge_mesh {
+public:
+    using scalar = Scalar;
+    using point = vec3<Scalar>;
+
+    /// One winged edge. Wing references are halfedge indices 2e' + s' (edge e', side s').
+    struct edge_record {
+        std::array<vertex_handle, 2> vertex;        ///< from, to
+        std::array<face_handle, 2> face;            ///< forward side, backward side (null: boundary)
+        std::array<halfedge_handle, 2> next_wing;   ///< the wing after e in face[s]'s loop
+        std::array<halfedge_handle, 2> prev_wing;   ///< the wing before e in face[s]'s loop
+    };
+
+    // ----- counts and ranges -----------------------------------------------------------------
+    std::size_t vertex_count() const noexcept { return positions_.size() - deleted_vertices_; }
+    std::size_t edge_count() const noexcept { return edges_.size() - deleted_edges_; }
+    std::size_t halfedge_count() const noexcept { return 2 * edge_count(); }
+    std::size_t face_count() const noexcept { return face_edge_.size() - deleted_faces_; }
+    std::size_t vertex_index_bound() const noexcept { return positions_.size(); }
+    std::size_t edge_index_bound() const noexcept { return edges_.size(); }
+    std::size_t halfedge_index_bound() const noexcept { return 2 * edges_.size(); }
+    std::size_t face_index_bound() const noexcept { return face_edge_.size(); }
+
+    detail::element_range<vertex_handle> vertices() const {
+        return {static_cast<std::uint32_t>(positions_.size()), deleted_vertices_ ? vertex_deleted_.data() : nullptr};
+    }
+    detail::element_range<edge_handle> edges() const {
+        return {static_cast<std::uint32_t>(edges_.size()), deleted_edges_ ? edge_deleted_.data() : nullptr};
+    }
+    detail::element_range<face_handle> faces() const {
+        return {static_cast<std::uint32_t>(face_edge_.size()), deleted_faces_ ? face_deleted_.data() : nullptr};
+    }
+    /// Both sides of every live edge.
+    auto halfedges() const {
+        return std::views::iota(std::uint32_t{0}, static_cast<std::uint32_t>(2 * edges_.size())) |
+               std::views::filter([this](std::uint32_t i) { return !edge_deleted_[i >> 1]; }) |
+               std::views::transform([](std::uint32_t i) { return halfedge_handle(i); });
+    }
+
+    bool is_valid(vertex_handle v) const noexcept { return v.index < positions_.size() && !vertex_deleted_[v.index]; }
+    bool is_valid(face_handle f) const noexcept { return f.index < face_edge_.size() && !face_deleted_[f.index]; }
+    bool is_valid(edge_handle e) const noexcept { return e.index < edges_.size() && !edge_deleted_[e.index]; }
+    bool is_valid(halfedge_handle h) const noexcept { return (h.index >> 1) < edges_.size() && !edge_deleted_[h.index >> 1]; }
+
+    // ----- the winged-edge records, O(1) -----------------------------------------------------
+    const edge_record& record(edge_handle e) const { return edges_[e.index]; }
+    /// The two faces the edge separates (its wings' faces): forward side, backward side.
+    std::array<face_handle, 2> edge_faces(edge_handle e) const { return edges_[e.index].face; }
+    std::array<vertex_handle, 2> edge_vertices(edge_handle e) const { return edges_[e.index].vertex; }
+    /// The edge this vertex keeps, and the one this face keeps.
+    edge_handle vertex_edge(vertex_handle v) const { return vertex_out_[v.index].is_null() ? edge_handle{} : edge(vertex_out_[v.index]); }
+    edge_handle face_edge(face_handle f) const { return edge(face_edge_[f.index]); }
+
+    // ----- halfedge view of the records, all O(1) ---------------------------------------------
+    static constexpr edge_handle edge(halfedge_handle h) noexcept { return edge_handle(h.index >> 1); }
+    static constexpr unsigned side(halfedge_handle h) noexcept { return h.index & 1u; }
+    static constexpr halfedge_handle opposite(halfedge_handle h) noexcept { return halfedge_handle(h.index ^ 1u); }
+    static constexpr halfedge_handle edge_halfedge(edge_handle e, unsigned s = 0) noexcept { return halfedge_handle(2 * e.index + s); }
+    halfedge_handle next(halfedge_handle h) const { return edges_[h.index >> 1].next_wing[h.index & 1u]; }
+    halfedge_handle prev(halfedge_handle h) const { return edges_[h.index >> 1].prev_wing[h.index & 1u]; }
+    vertex_handle target(halfedge_handle h) const { return edges_[h.index >> 1].vertex[1u - (h.index & 1u)]; }
+    vertex_handle source(halfedge_handle h) const { return edges_[h.index >> 1].vertex[h.index & 1u]; }
+    face_handle face(halfedge_handle h) const { return edges_[h.index >> 1].face[h.index & 1u]; }
+    halfedge_handle vertex_halfedge(vertex_handle v) const { return vertex_out_[v.index]; }
+    halfedge_handle face_halfedge(face_handle f) const { return face_edge_[f.index]; }
+    bool is_boundary(halfedge_handle h) const { return face(h).is_null(); }
+    bool is_boundary(edge_handle e) const { return edges_[e.index].face[0].is_null() || edges_[e.index].face[1].is_null(); }
+    bool is_boundary(vertex_handle v) const {
+        const auto h = vertex_out_[v.index];
+        return h.is_null() || is_boundary(h);
+    }
+    bool is_isolated(vertex_handle v) const { return vertex_out_[v.index].is_null(); }
+
+    // ----- circulators -----------------------------------------------------------------------
+    struct loop_step {
+        static halfedge_handle step(const basic_winged_edge_mesh& m, halfedge_handle h) { return m.next(h); }
+        static halfedge_handle value(const basic_winged_edge_mesh&, halfedge_handle h) { return h; }
+    };
+    struct loop_vertex_step : loop_step {
+        static vertex_handle value(const basic_winged_edge_mesh& m, halfedge_handle h) { return m.target(h); }
+    };
+    struct loop_edge_step : loop_step {
+        static edge_handle value(const basic_winged_edge_mesh&, halfedge_handle h) { return edge(h); }
+    };
+    struct outgoing_step {
+        static halfedge_handle step(const basic_winged_edge_mesh& m, halfedge_handle h) { return m.next(opposite(h)); }
+        static halfedge_handle value(const basic_winged_edge_mesh&, halfedge_handle h) { return h; }
+    };
+    struct outgoing_target_step : outgoing_step {
+        static vertex_handle value(const basic_winged_edge_mesh& m, halfedge_handle h) { return m.target(h); }
+    };
+    struct outgoing_edge_step : outgoing_step {
+        static edge_handle value(const basic_winged_edge_mesh&, halfedge_handle h) { return edge(h); }
+    };
+    template <class Policy>
+    using loop = detail::loop_range<basic_winged_edge_mesh, halfedge_handle, Policy>;
+
+    loop<loop_step> loop_halfedges(halfedge_handle h) const { return {*this, h}; }
+    /// The face's vertices in winding order, starting at the first vertex given to add_face.
+    loop<loop_vertex_step> face_vertices(face_handle f) const { return {*this, face_halfedge(f)}; }
+    /// The face's edges in winding order. O(E_consistF).
+    loop<loop_edge_step> face_edges(face_handle f) const { return {*this, face_halfedge(f)}; }
+    loop<loop_step> face_halfedges(face_handle f) const { return {*this, face_halfedge(f)}; }
+    loop<outgoing_step> outgoing_halfedges(vertex_handle v) const { return {*this, vertex_halfedge(v)}; }
+    loop<outgoing_target_step> adjacent_vertices(vertex_handle v) const { return {*this, vertex_halfedge(v)}; }
+    loop<outgoing_edge_step> vertex_edges(vertex_handle v) const { return {*this, vertex_halfedge(v)}; }
+    /// Faces around v (boundary gaps skipped), O(F_adjacentV).
+    auto vertex_faces(vertex_handle v) const {
+        return outgoing_halfedges(v) | std::views::filter([this](halfedge_handle h) { return !is_boundary(h); }) |
+               std::views::transform([this](halfedge_handle h) { return face(h); });
+    }
+    /// Faces across f's edges (the other wing of each edge), O(F_adjacentF).
+    auto adjacent_faces(face_handle f) const {
+        return face_halfedges(f) | std::views::filter([this](halfedge_handle h) { return !is_boundary(opposite(h)); }) |
+               std::views::transform([this](halfedge_handle h) { return face(opposite(h)); });
+    }
+    std::size_t valence(vertex_handle v) const { return static_cast<std::size_t>(std::ranges::distance(outgoing_halfedges(v))); }
+
+    /// The side of an edge running from a to b, or null. O(V_adjacentV).
+    halfedge_handle find_halfedge(vertex_handle a, vertex_handle b) const {
+        for (auto h : outgoing_halfedges(a))
+            if (target(h) == b) return h;
+        return {};
+    }
+
+    // ----- geometry --------------------------------------------------------------------------
+    const point& position(vertex_handle v) const { return positions_[v.index]; }
+    void set_position(vertex_handle v, const point& p) { positions_[v.index] = p; }
+    std::span<const point> positions() const noexcept { return positions_; }
+
+    // ----- building --------------------------------------------------------------------------
+    vertex_handle add_vertex(const point& p) {
+        positions_.push_back(p);
+        vertex_out_.push_back({});
+        vertex_deleted_.push_back(0);
+        vertex_props_.push_back();
+        ++changes_;
+        return vertex_handle(positions_.size() - 1);
+    }
+
+    result<face_handle> add_face(std::initializer_list<vertex_handle> vs) {
+        return add_face(std::span<const vertex_handle>(vs.begin(), vs.size()));
+    }
+
+    /// Adds a polygon, sharing the edges it has with faces already present. Fails, with the
+    /// mesh unchanged, when the face has fewer than 3 or repeated vertices, names a missing
+    /// vertex, would give an edge a third face or a face on the wrong side (orientation
+    /// conflict), or would make a vertex non-manifold. O(sum of V_adjacentV over its corners).
+    result<face_handle> add_face(std::span<const vertex_handle> vs) {
+        const std::size_t n = vs.size();
+        if (n < 3)
+            return fail(errc::degenerate_face, "add_face: a face needs at least 3 vertices, got " + std::to_string(n));
+        for (std::size_t i = 0; i < n; ++i) {
+            if (!is_valid(vs[i]))
+                return fail(errc::invalid_handle,
+                            "add_face: corner " + std::to_string(i) + " names vertex " +
+                                std::to_string(static_cast<long long>(vs[i].index)) + ", which does not exist",
+                            static_cast<long long>(vs[i].index));
+            for (std::size_t j = 0; j < i; ++j)
+                if (vs[j] == vs[i])
+                    return fail(errc::degenerate_face, "add_face: vertex " + std::to_string(vs[i].index) +
+                                                           " appears twice in the face", vs[i].index);
+        }
+        scratch_sides_.assign(n, {});
+        scratch_new_.assign(n, 0);
+        for (std::size_t i = 0; i < n; ++i) {
+            if (!is_boundary(vs[i]))
+                return fail(errc::non_manifold, "add_face: vertex " + std::to_string(vs[i].index) +
+                                                    " is interior (surrounded by faces); a face there would be non-manifold",
+                            vs[i].index);
+            const auto h = find_halfedge(vs[i], vs[(i + 1) % n]);
+            if (!h.is_null() && !is_boundary(h)) {
+                const bool reversed = is_boundary(opposite(h));
+                return fail(reversed ? errc::orientation_conflict : errc::non_manifold,
+                            "add_face: edge " + std::to_string(vs[i].index) + "->" + std::to_string(vs[(i + 1) % n].index) +
+                                (reversed ? " is already used in this direction by face " + std::to_string(face(h).index) +
+                                                " (the new face is wound against its neighbour)"
+                                          : " already has two faces"),
+                            vs[i].index);
+            }
+            scratch_sides_[i] = h;
+            scratch_new_[i] = h.is_null();
+        }
+        // Where two existing edges meet at a corner but are not consecutive, the boundary
+        // between them must move to another gap of the vertex; check it exists before changing anything.
+        for (std::size_t i = 0; i < n; ++i) {
+            const std::size_t ii = (i + 1) % n;
+            if (scratch_new_[i] || scratch_new_[ii]) continue;
+            if (next(scratch_sides_[i]) == scratch_sides_[ii]) continue;
+            if (free_gap(scratch_sides_[i], scratch_sides_[ii]).is_null())
+                return fail(errc::non_manifold, "add_face: vertex " + std::to_string(vs[ii].index) +
+                                                    " has no free boundary gap to move its fans to", vs[ii].index);
+        }
+        for (std::size_t i = 0; i < n; ++i) {
+            const std::size_t ii = (i + 1) % n;
+            if (scratch_new_[i] || scratch_new_[ii]) continue;
+            const auto in = scratch_sides_[i], out = scratch_sides_[ii];
+            if (next(in) == out) continue;
+            const auto gap_prev = free_gap(in, out);
+            const auto gap_next = next(gap_prev);
+            const auto patch_first = next(in), patch_last = prev(out);
+            link(gap_prev, patch_first);
+            link(patch_last, gap_next);
+            link(in, out);
+        }
+        for (std::size_t i = 0; i < n; ++i)
+            if (scratch_new_[i]) scratch_sides_[i] = new_edge(vs[i], vs[(i + 1) % n]);
+
+        const auto f = new_face();
+        face_edge_[f.index] = scratch_sides_[n - 1];
+
+        // New wings computed from the state before this face, applied afterwards.
+        scratch_links_.clear();
+        for (std::size_t i = 0; i < n; ++i) {
+            const std::size_t ii = (i + 1) % n;
+            const auto v = vs[ii];
+            const auto in = scratch_sides_[i], out = scratch_sides_[ii];
+            const bool in_new = scratch_new_[i] != 0, out_new = scratch_new_[ii] != 0;
+            if (in_new || out_new) {
+                const auto outer_in = opposite(out), outer_out = opposite(in);
+                if (in_new && !out_new) {
+                    scratch_links_.push_back({prev(out), outer_out});
+                    vertex_out_[v.index] = outer_out;
+                } else if (!in_new && out_new) {
+                    const auto boundary_next = next(in);
+                    scratch_links_.push_back({outer_in, boundary_next});
+                    vertex_out_[v.index] = boundary_next;
+                } else if (vertex_out_[v.index].is_null()) {
+                    vertex_out_[v.index] = outer_out;
+                    scratch_links_.push_back({outer_in, outer_out});
+                } else {
+                    const auto boundary_next = vertex_out_[v.index];
+                    scratch_links_.push_back({prev(boundary_next), outer_out});
+                    scratch_links_.push_back({outer_in, boundary_next});
+                }
+                scratch_links_.push_back({in, out});
+            }
+            edges_[in.index >> 1].face[in.index & 1u] = f;
+        }
+        for (const auto& [a, b] : scratch_links_) link(a, b);
+        for (std::size_t i = 0; i < n; ++i) adjust_outgoing_halfedge(vs[i]);
+        return f;
+    }
+
+    /// Makes the edge a vertex keeps a boundary one if the vertex has any. O(V_adjacentV).
+    void adjust_outgoing_halfedge(vertex_handle v) {
+        if (vertex_out_[v.index].is_null()) return;
+        for (auto h : outgoing_halfedges(v))
+            if (is_boundary(h)) {
+                vertex_out_[v.index] = h;
+                return;
+            }
+    }
+
+    // ----- raw mutation on the records (the halfedge layer; keeps nothing consistent) ---------
+    void set_next(halfedge_handle h, halfedge_handle n) { link(h, n); ++changes_; }
+    void set_target(halfedge_handle h, vertex_handle v) { edges_[h.index >> 1].vertex[1u - (h.index & 1u)] = v; ++changes_; }
+    void set_face(halfedge_handle h, face_handle f) { edges_[h.index >> 1].face[h.index & 1u] = f; ++changes_; }
+    void set_vertex_halfedge(vertex_handle v, halfedge_handle h) { vertex_out_[v.index] = h; ++changes_; }
+    void set_face_halfedge(face_handle f, halfedge_handle h) { face_edge_[f.index] = h; ++changes_; }
+
+    /// A new edge from a to b; returns its forward side (a -> b). Wings unset, faces null.
+    halfedge_handle new_edge(vertex_handle a, vertex_handle b) {
+        edges_.push_back({{a, b}, {}, {}, {}});
+        edge_deleted_.push_back(0);
+        edge_props_.push_back();
+        ++changes_;
+        return halfedge_handle(2 * (edges_.size() - 1));
+    }
+    face_handle new_face() {
+        face_edge_.push_back({});
+        face_deleted_.push_back(0);
+        face_props_.push_back();
+        ++changes_;
+        return face_handle(face_edge_.size() - 1);
+    }
+    void erase_edge(edge_handle e) {
+        if (!edge_deleted_[e.index]) { edge_deleted_[e.index] = 1; ++deleted_edges_; ++changes_; }
+    }
+    void erase_face(face_handle f) {
+        if (!face_deleted_[f.index]) { face_deleted_[f.index] = 1; ++deleted_faces_; ++changes_; }
+    }
+    void erase_vertex(vertex_handle v) {
+        if (!vertex_deleted_[v.index]) { vertex_deleted_[v.index] = 1; ++deleted_vertices_; ++changes_; }
+    }
+
+    bool has_garbage() const noexcept { return deleted_vertices_ + deleted_edges_ + deleted_faces_ > 0; }
+
+    /// Drops deleted elements, renumbers the rest in their old order, rewrites every reference
+    /// and compacts the properties. Returns the old -> new maps (halfedges: 2e + s). Invalidates
+    /// handles and views. O(V_all + E_all + F_all).
+    index_remap collect_garbage() {
+        index_remap map;
+        auto make_map = [](const std::vector<std::uint8_t>& deleted, std::vector<std::uint32_t>& out) {
+            out.assign(deleted.size(), UINT32_MAX);
+            std::uint32_t k = 0;
+            for (std::size_t i = 0; i < deleted.size(); ++i)
+                if (!deleted[i]) out[i] = k++;
+            return k;
+        };
+        const auto nv = make_map(vertex_deleted_, map.vertices);
+        const auto ne = make_map(edge_deleted_, map.edges);
+        const auto nf = make_map(face_deleted_, map.faces);
+        map.halfedges.assign(2 * edges_.size(), UINT32_MAX);
+        for (std::size_t h = 0; h < map.halfedges.size(); ++h)
+            if (map.edges[h >> 1] != UINT32_MAX) map.halfedges[h] = 2 * map.edges[h >> 1] + (h & 1u);
+        auto mv = [&](vertex_handle v) { return v.is_null() || v.index >= map.vertices.size() ? vertex_handle{} : vertex_handle(map.vertices[v.index]); };
+        auto mh = [&](halfedge_handle h) { return h.is_null() || h.index >= map.halfedges.size() ? halfedge_handle{} : halfedge_handle(map.halfedges[h.index]); };
+        auto mf = [&](face_handle f) { return f.is_null() || f.index >= map.faces.size() ? face_handle{} : face_handle(map.faces[f.index]); };
+        for (std::size_t v = 0; v < positions_.size(); ++v)
+            if (map.vertices[v] != UINT32_MAX) {
+                positions_[map.vertices[v]] = positions_[v];
+                vertex_out_[map.vertices[v]] = mh(vertex_out_[v]);
+            }
+        positions_.resize(nv);
+        vertex_out_.resize(nv);
+        vertex_deleted_.assign(nv, 0);
+        for (std::size_t e = 0; e < edges_.size(); ++e)
+            if (map.edges[e] != UINT32_MAX) {
+                const auto r = edges_[e];
+                edges_[map.edges[e]] = {{mv(r.vertex[0]), mv(r.vertex[1])},
+                                        {mf(r.face[0]), mf(r.face[1])},
+                                        {mh(r.next_wing[0]), mh(r.next_wing[1])},
+                                        {mh(r.prev_wing[0]), mh(r.prev_wing[1])}};
+            }
+        edges_.resize(ne);
+        edge_deleted_.assign(ne, 0);
+        for (std::size_t f = 0; f < face_edge_.size(); ++f)
+            if (map.faces[f] != UINT32_MAX) face_edge_[map.faces[f]] = mh(face_edge_[f]);
+        face_edge_.resize(nf);
+        face_deleted_.assign(nf, 0);
+        vertex_props_.compact(map.vertices, nv);
+        edge_props_.compact(map.edges, ne);
+        face_props_.compact(map.faces, nf);
+        deleted_vertices_ = deleted_edges_ = deleted_faces_ = 0;
+        ++changes_;
+        return map;
+    }
+
+    void reserve(std::size_t vertices, std::size_t edges, std::size_t faces) {
+        positions_.reserve(vertices);
+        vertex_out_.reserve(vertices);
+        vertex_deleted_.reserve(vertices);
+        edges_.reserve(edges);
+        edge_deleted_.reserve(edges);
+        face_edge_.reserve(faces);
+        face_deleted_.reserve(faces);
+    }
+    void clear() { *this = basic_winged_edge_mesh(); }
+
+    // ----- properties ------------------------------------------------------------------------
+    template <class T>
+    property<vertex_handle, T> add_vertex_property(std::string_view name, T init = T{}) { return vertex_props_.template add<T>(name, std::move(init)); }
+    template <class T>
+    std::optional<property<vertex_handle, T>> get_vertex_property(std::string_view name) const { return vertex_props_.template find<T>(name); }
+    bool remove_vertex_property(std::string_view name) { return vertex_props_.remove(name); }
+    template <class T>
+    property<edge_handle, T> add_edge_property(std::string_view name, T init = T{}) { return edge_props_.template add<T>(name, std::move(init)); }
+    template <class T>
+    std::optional<property<edge_handle, T>> get_edge_property(std::string_view name) const { return edge_props_.template find<T>(name); }
+    bool remove_edge_property(std::string_view name) { return edge_props_.remove(name); }
+    template <class T>
+    property<face_handle, T> add_face_property(std::string_view name, T init = T{}) { return face_props_.template add<T>(name, std::move(init)); }
+    template <class T>
+    std::optional<property<face_handle, T>> get_face_property(std::string_view name) const { return face_props_.template find<T>(name); }
+    bool remove_face_property(std::string_view name) { return face_props_.remove(name); }
+
+    /// Grows on every change of connectivity or of the element set.
+    std::uint64_t change_count() const noexcept { return changes_; }
+
+private:
+    // Setting a wing on one side sets the matching back-wing, so next and prev stay inverse.
+    void link(halfedge_handle a, halfedge_handle b) {
+        edges_[a.index >> 1].next_wing[a.index & 1u] = b;
+        edges_[b.index >> 1].prev_wing[b.index & 1u] = a;
+    }
+
+    /// A boundary side entering the corner between `in` and `out` (outside the patch between
+    /// them), to which that patch can move; null if there is none.
+    halfedge_handle free_gap(halfedge_handle in, halfedge_handle out) const {
+        auto h = opposite(out);
+        const auto start = h;
+        do {
+            h = opposite(next(h));
+            if (is_boundary(h) && h != in) return h;
+        } while (h != start);
+        return {};
+    }
+
+    std::vector<point> positions_;
+    std::vector<halfedge_handle> vertex_out_;  // the edge each vertex keeps, as its outgoing side
+    std::vector<std::uint8_t> vertex_deleted_;
+    std::vector<edge_record> edges_;
+    std::vector<std::uint8_t> edge_deleted_;
+    std::vector<halfedge_handle> face_edge_;  // the edge each face keeps, as the side in the face
+    std::vector<std::uint8_t> face_deleted_;
+    std::size_t deleted_vertices_ = 0, deleted_edges_ = 0, deleted_faces_ = 0;
+    property_registry<vertex_handle> vertex_props_;
+    property_registry<edge_handle> edge_props_;
+    property_registry<face_handle> face_props_;
+    std::uint64_t changes_ = 0;
+    // Reused by add_face so that building does not allocate per face.
+    std::vector<halfedge_handle> scratch_sides_;
+    std::vector<std::uint8_t> scratch_new_;
+    std::vector<std::pair<halfedge_handle, halfedge_handle>> scratch_links_;
+};
+
+using winged_edge_mesh = basic_winged_edge_mesh<double>;
+
+/// Native traits: the winged-edge queries at their thesis cost, and the halfedge view
+/// ((edge, side) pairs) with raw mutation, so Euler operators and flip_normals run on it.
+template <class Scalar>
+struct mesh_traits<basic_winged_edge_mesh<Scalar>> {
+    using mesh = basic_winged_edge_mesh<Scalar>;
+    using vertex_handle = hmira::vertex_handle;
+    using face_handle = hmira::face_handle;
+    using edge_handle = hmira::edge_handle;
+    using halfedge_handle = hmira::halfedge_handle;
+    using scalar = Scalar;
+
+    static auto vertices(const mesh& m) { return m.vertices(); }
+    static auto faces(const mesh& m) { return m.faces(); }
+    static auto edges(const mesh& m) { return m.edges(); }
+    static auto halfedges(const mesh& m) { return m.halfedges(); }
+    static std::size_t vertex_count(const mesh& m) { return m.vertex_count(); }
+    static std::size_t face_count(const mesh& m) { return m.face_count(); }
+    static std::size_t edge_count(const mesh& m) { return m.edge_count(); }
+    static std::size_t vertex_index(const mesh&, vertex_handle v) { return v.index; }
+    static std::size_t vertex_index_bound(const mesh& m) { return m.vertex_index_bound(); }
+    static std::size_t face_index(const mesh&, face_handle f) { return f.index; }
+    static std::size_t face_index_bound(const mesh& m) { return m.face_index_bound(); }
+    static std::size_t edge_index(const mesh&, edge_handle e) { return e.index; }
+    static std::size_t edge_index_bound(const mesh& m) { return m.edge_index_bound(); }
+    static std::size_t halfedge_index(const mesh&, halfedge_handle h) { return h.index; }
+    static std::size_t halfedge_index_bound(const mesh& m) { return m.halfedge_index_bound(); }
+
+    static auto face_vertices(const mesh& m, face_handle f) { return m.face_vertices(f); }
+    static auto adjacent_vertices(const mesh& m, vertex_handle v) { return m.adjacent_vertices(v); }
+    static auto vertex_faces(const mesh& m, vertex_handle v) { return m.vertex_faces(v); }
+    static auto vertex_edges(const mesh& m, vertex_handle v) { return m.vertex_edges(v); }
+    static auto adjacent_faces(const mesh& m, face_handle f) { return m.adjacent_faces(f); }
+    static auto edge_vertices(const mesh& m, edge_handle e) { return m.edge_vertices(e); }
+    static auto edge_faces(const mesh& m, edge_handle e) { return m.edge_faces(e); }
+
+    static halfedge_handle next(const mesh& m, halfedge_handle h) { return m.next(h); }
+    static halfedge_handle prev(const mesh& m, halfedge_handle h) { return m.prev(h); }
+    static halfedge_handle opposite(const mesh&, halfedge_handle h) { return mesh::opposite(h); }
+    static vertex_handle target(const mesh& m, halfedge_handle h) { return m.target(h); }
+    static face_handle face(const mesh& m, halfedge_handle h) { return m.face(h); }
+    static edge_handle edge(const mesh&, halfedge_handle h) { return mesh::edge(h); }
+    static halfedge_handle edge_halfedge(const mesh&, edge_handle e) { return mesh::edge_halfedge(e); }
+    static halfedge_handle vertex_halfedge(const mesh& m, vertex_handle v) { return m.vertex_halfedge(v); }
+    static halfedge_handle face_halfedge(const mesh& m, face_handle f) { return m.face_halfedge(f); }
+    static constexpr face_handle null_face() { return {}; }
+    static constexpr halfedge_handle null_halfedge() { return {}; }
+
+    static const vec3<Scalar>& position(const mesh& m, vertex_handle v) { return m.position(v); }
+    static void set_position(mesh& m, vertex_handle v, const vec3<Scalar>& p) { m.set_position(v, p); }
+    static vertex_handle add_vertex(mesh& m, const vec3<Scalar>& p) { return m.add_vertex(p); }
+    static result<face_handle> add_face(mesh& m, std::span<const vertex_handle> vs) { return m.add_face(vs); }
+
+    static void set_next(mesh& m, halfedge_handle h, halfedge_handle n) { m.set_next(h, n); }
+    static void set_target(mesh& m, halfedge_handle h, vertex_handle v) { m.set_target(h, v); }
+    static void set_face(mesh& m, halfedge_handle h, face_handle f) { m.set_face(h, f); }
+    static void set_vertex_halfedge(mesh& m, vertex_handle v, halfedge_handle h) { m.set_vertex_halfedge(v, h); }
+    static void set_face_halfedge(mesh& m, face_handle f, halfedge_handle h) { m.set_face_halfedge(f, h); }
+    static halfedge_handle new_edge(mesh& m, vertex_handle a, vertex_handle b) { return m.new_edge(a, b); }
+    static face_handle new_face(mesh& m) { return m.new_face(); }
+    static void erase_edge(mesh& m, edge_handle e) { m.erase_edge(e); }
+    static void erase_face(mesh& m, face_handle f) { m.erase_face(f); }
+    static void erase_vertex(mesh& m, vertex_handle v) { m.erase_vertex(v); }
+    static std::uint64_t change_count(const mesh& m) { return m.change_count(); }
+};
+
+}  // namespace hmira

@@ -1,0 +1,93 @@
+// The face-vertex mesh: faces refuse bad input unchanged, removal and garbage collection keep
+// the surviving faces and their properties.
+#include <gtest/gtest.h>
+
+#include <hmira/algorithms/generators/platonic_solids.hpp>
+#include <hmira/meshes/face_vertex_mesh.hpp>
+
+#include "support/checks.hpp"
+
+namespace {
+
+using namespace hmira;
+
+TEST(face_vertex_mesh, bad_faces_are_refused_and_change_nothing) {
+    face_vertex_mesh m;
+    const auto a = m.add_vertex({0, 0, 0}), b = m.add_vertex({1, 0, 0}), c = m.add_vertex({0, 1, 0});
+    const auto changes = m.change_count();
+    EXPECT_EQ(m.add_face({a, b}).error().code, errc::degenerate_face);
+    EXPECT_EQ(m.add_face({a, b, a}).error().code, errc::degenerate_face);
+    auto missing = m.add_face({a, b, vertex_handle(17u)});
+    EXPECT_EQ(missing.error().code, errc::invalid_handle);
+    EXPECT_NE(missing.error().message.find("17"), std::string::npos) << "the message must name the vertex";
+    EXPECT_EQ(m.face_count(), 0u);
+    EXPECT_EQ(m.change_count(), changes);
+    EXPECT_TRUE(m.add_face({a, b, c}));
+}
+
+TEST(face_vertex_mesh, removing_a_vertex_removes_exactly_the_faces_that_use_it) {
+    face_vertex_mesh m;
+    ASSERT_TRUE(generate_icosahedron(m));
+    const auto v = vertex_handle(3u);
+    std::size_t using_v = 0;
+    for (auto f : m.faces()) {
+        auto fv = m.face_vertices(f);
+        using_v += std::find(fv.begin(), fv.end(), v) != fv.end();
+    }
+    ASSERT_TRUE(m.remove_vertex(v));
+    EXPECT_EQ(m.face_count(), 20 - using_v);
+    EXPECT_EQ(m.vertex_count(), 11u);
+    for (auto f : m.faces()) {
+        auto fv = m.face_vertices(f);
+        EXPECT_EQ(std::find(fv.begin(), fv.end(), v), fv.end());
+    }
+    EXPECT_FALSE(m.remove_vertex(v)) << "removing twice must fail";
+    EXPECT_TRUE(hmira_test::is_valid(m));
+}
+
+TEST(face_vertex_mesh, collect_garbage_compacts_faces_vertices_and_properties) {
+    face_vertex_mesh m;
+    ASSERT_TRUE(generate_cube(m));
+    auto colour = m.add_face_property<int>("colour");
+    auto weight = m.add_vertex_property<double>("weight");
+    for (auto f : m.faces()) colour[f] = int(f.index) + 100;
+    for (auto v : m.vertices()) weight[v] = double(v.index) / 8;
+    std::vector<std::vector<vec3<double>>> kept_faces;
+    ASSERT_TRUE(m.remove_face(face_handle(2u)));
+    ASSERT_TRUE(m.remove_vertex(vertex_handle(4u)));
+    for (auto f : m.faces()) {
+        std::vector<vec3<double>> loop;
+        for (auto v : m.face_vertices(f)) loop.push_back(m.position(v));
+        kept_faces.push_back(loop);
+    }
+    const auto map = m.collect_garbage();
+    EXPECT_FALSE(m.has_garbage());
+    EXPECT_EQ(m.vertex_count(), 7u);
+    EXPECT_EQ(map.vertices[4], UINT32_MAX);
+    std::size_t k = 0;
+    for (auto f : m.faces()) {
+        std::vector<vec3<double>> loop;
+        for (auto v : m.face_vertices(f)) loop.push_back(m.position(v));
+        EXPECT_EQ(loop, kept_faces[k++]);
+    }
+    for (std::uint32_t old = 0; old < map.faces.size(); ++old)
+        if (map.faces[old] != UINT32_MAX) {
+            EXPECT_EQ(colour[face_handle(map.faces[old])], int(old) + 100);
+        }
+    for (std::uint32_t old = 0; old < map.vertices.size(); ++old)
+        if (map.vertices[old] != UINT32_MAX) {
+            EXPECT_EQ(weight[vertex_handle(map.vertices[old])], double(old) / 8);
+        }
+}
+
+TEST(face_vertex_mesh, reverse_face_reverses_the_vertex_order) {
+    face_vertex_mesh m;
+    const auto a = m.add_vertex({0, 0, 0}), b = m.add_vertex({1, 0, 0}), c = m.add_vertex({0, 1, 0}), d = m.add_vertex({1, 1, 0});
+    auto f = m.add_face({a, b, d, c});
+    ASSERT_TRUE(f);
+    m.reverse_face(*f);
+    auto fv = m.face_vertices(*f);
+    EXPECT_EQ(std::vector<vertex_handle>(fv.begin(), fv.end()), (std::vector<vertex_handle>{c, d, b, a}));
+}
+
+}  // namespace
