@@ -5,7 +5,9 @@
 #include <cmath>
 #include <numbers>
 
+#include <hmira/algorithms/generators/grid.hpp>
 #include <hmira/algorithms/generators/platonic_solids.hpp>
+#include <hmira/algorithms/generators/torus.hpp>
 #include <hmira/algorithms/topology/mesh_topology.hpp>
 
 #include "support/checks.hpp"
@@ -114,6 +116,48 @@ TYPED_TEST(generators, generating_into_a_nonempty_mesh_adds_a_separate_component
     const auto topo = mesh_topology(mesh);
     EXPECT_EQ(topo.components, 2u);
     EXPECT_EQ(topo.euler_characteristic, 4);
+}
+
+TYPED_TEST(generators, torus_is_closed_genus_one_with_rings_times_sides_quads) {
+    using M = TypeParam;
+    if constexpr (polygon_mesh_builder<M>) {
+        for (auto [rings, sides] : std::vector<std::pair<std::size_t, std::size_t>>{{3, 3}, {12, 5}, {40, 17}}) {
+            M mesh;
+            auto made = generate_torus(mesh, {.major_radius = 2, .minor_radius = 0.5, .rings = rings, .sides = sides});
+            ASSERT_TRUE(made);
+            ASSERT_TRUE(hmira_test::is_valid(mesh));
+            const auto topo = mesh_topology(mesh);
+            EXPECT_EQ(topo.vertices, rings * sides);
+            EXPECT_EQ(topo.edges, 2 * rings * sides);
+            EXPECT_EQ(topo.faces, rings * sides);
+            EXPECT_EQ(topo.genus, 1);
+            EXPECT_TRUE(topo.closed());
+            EXPECT_GT(hmira_test::signed_volume(mesh), 0) << "torus must be wound outward";
+        }
+        M mesh;
+        EXPECT_EQ(generate_torus(mesh, {.major_radius = 1, .minor_radius = 2}).error().code, errc::invalid_argument);
+        EXPECT_EQ(generate_torus(mesh, {.rings = 2}).error().code, errc::invalid_argument);
+        EXPECT_EQ(default_traits<M>::vertex_count(mesh), 0u) << "a refused torus must add nothing";
+    }
+}
+
+TYPED_TEST(generators, grid_is_a_disk_with_one_boundary_loop) {
+    using M = TypeParam;
+    for (bool triangles : {true, false}) {
+        if (!triangles && !polygon_mesh_builder<M>) continue;
+        M mesh;
+        auto made = generate_grid(mesh, {.columns = 7, .rows = 4, .triangles = triangles});
+        ASSERT_TRUE(made);
+        ASSERT_TRUE(hmira_test::is_valid(mesh));
+        const auto topo = mesh_topology(mesh);
+        EXPECT_EQ(topo.vertices, 8u * 5u);
+        EXPECT_EQ(topo.faces, triangles ? 56u : 28u);
+        EXPECT_EQ(topo.boundary_loops, 1u);
+        EXPECT_EQ(topo.boundary_edges, 2u * (7 + 4));
+        EXPECT_EQ(topo.euler_characteristic, 1);
+    }
+    M mesh;
+    EXPECT_FALSE(generate_grid(mesh, {.columns = 0}));
 }
 
 // The thesis's appendix-C cube lists face (b, c, g, f), which is wound inward. The library

@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# The README's test command: installs what is missing, then builds and runs the whole suite
+# twice (plain with -Wall -Wextra -Werror, then under AddressSanitizer + UBSan), and builds a
+# small consumer project against the installed package.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+jobs=$(nproc 2>/dev/null || echo 2)
+start=$(date +%s)
+
+bash scripts/install-deps.sh
+bash scripts/test-data.sh build/test-data
+
+common=(-G Ninja -DHMIRA_WERROR=ON -DHMIRA_BUILD_TESTS=ON -DHMIRA_BUILD_APPS=ON -DHMIRA_BUILD_EXAMPLES=ON
+        -DHMIRA_TEST_DATA_DIR="$PWD/build/test-data")
+
+echo "== plain build (Release, -Wall -Wextra -Werror, benchmarks compiled too)"
+cmake -S . -B build/test "${common[@]}" -DCMAKE_BUILD_TYPE=Release -DHMIRA_BUILD_BENCHMARKS=ON >/dev/null
+cmake --build build/test -j"$jobs"
+(cd build/test && ctest --output-on-failure -j"$jobs" --timeout 600)
+echo "plain pass finished after $(( $(date +%s) - start )) s"
+
+echo "== sanitizer build (AddressSanitizer + UndefinedBehaviorSanitizer)"
+cmake -S . -B build/asan "${common[@]}" -DHMIRA_SANITIZE=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+      -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" -DHMIRA_BUILD_BENCHMARKS=OFF >/dev/null
+cmake --build build/asan -j"$jobs"
+(cd build/asan && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+   ctest --output-on-failure -j"$jobs" --timeout 900 -LE compile_fail)
+echo "sanitizer pass finished after $(( $(date +%s) - start )) s"
+
+echo "== install and consume with find_package(hmira CONFIG)"
+rm -rf build/install build/consumer
+cmake --install build/test --prefix build/install >/dev/null
+cmake -S cmake/consumer-test -B build/consumer -G Ninja -DCMAKE_PREFIX_PATH="$PWD/build/install" >/dev/null
+cmake --build build/consumer >/dev/null
+./build/consumer/hmira-consumer
+echo "all passes finished after $(( $(date +%s) - start )) s"
