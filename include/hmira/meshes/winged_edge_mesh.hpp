@@ -199,6 +199,8 @@ public:
     /// mesh unchanged, when the face has fewer than 3 or repeated vertices, names a missing
     /// vertex, would give an edge a third face or a face on the wrong side (orientation
     /// conflict), or would make a vertex non-manifold. O(sum of V_adjacentV over its corners).
+    /// Faces may arrive in any order: a face may touch a vertex in a fan of its own (a pinch
+    /// that validate() reports until the faces between the fans are added).
     result<face_handle> add_face(std::span<const vertex_handle> vs) {
         const std::size_t n = vs.size();
         if (n < 3)
@@ -428,14 +430,15 @@ private:
         edges_[b.index >> 1].prev_wing[b.index & 1u] = a;
     }
 
-    /// A boundary side entering the corner between `in` and `out` (outside the patch between
-    /// them), to which that patch can move; null if there is none.
+    /// The boundary side that closes `out`'s fan on its far side, where the patch between `in`
+    /// and `out` can move; null if that is `in` itself (the new face would close the fan into
+    /// a disk while other fans still touch the vertex: non-manifold).
     halfedge_handle free_gap(halfedge_handle in, halfedge_handle out) const {
         auto h = opposite(out);
         const auto start = h;
         do {
             h = opposite(next(h));
-            if (is_boundary(h) && h != in) return h;
+            if (is_boundary(h)) return h == in ? halfedge_handle{} : h;
         } while (h != start);
         return {};
     }
