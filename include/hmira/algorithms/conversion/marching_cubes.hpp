@@ -1,0 +1,521 @@
+// hmira/algorithms/conversion/marching_cubes.hpp
+// Extracts the iso-surface of a voxel map as a welded, closed, outward-oriented triangle mesh
+// (thesis 2.3.3, 6.2): into any mesh that can add vertices and faces, or as an indexed
+// triangle list. Parallel with oneTBB, with the same output for every thread count.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <span>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+#include "../../concepts.hpp"
+#include "../../core/result.hpp"
+#include "../../core/vec3.hpp"
+#include "../../grids/voxel_grid.hpp"
+#include "detail/marching_cubes_table.hpp"
+#include "detail/parallel.hpp"
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
+namespace hmira {
+
+/// Which side of the iso value is the solid. Scans (CT, MRI) are usually inside above the iso
+/// value; signed distance fields are inside below it.
+enum class iso_inside { below, above };
+
+struct marching_cubes_options {
+    /// The iso value; any finite value.
+    double iso = 0.0;
+    /// Which side of `iso` is inside. Normals point from inside to outside.
+    iso_inside inside = iso_inside::below;
+    /// Also compute per-vertex normals from the field's gradient (central differences).
+    bool normals = false;
+    /// Worker threads (0: all available). The output does not depend on it.
+    unsigned threads = 0;
+};
+
+/// An indexed triangle list: triangle corners index `positions`; `normals` is empty unless
+/// asked for, else one unit normal per position.
+template <class S = float>
+struct indexed_triangles {
+    std::vector<vec3<S>> positions;
+    std::vector<std::array<std::uint32_t, 3>> triangles;
+    std::vector<vec3<S>> normals;
+};
+
+namespace detail::mc {
+
+/// Crossing points keep this fraction of an edge away from its samples, so that a sample equal
+/// to the iso value never makes vertices on different edges coincide.
+inline constexpr double edge_margin = 1.0 / 512;
+
+inline std::uint64_t shr1(const std::uint64_t* a, std::size_t w, std::size_t words) noexcept {
+    return (a[w] >> 1) | (w + 1 < words ? a[w + 1] << 63 : 0);
+}
+inline unsigned bits2(const std::uint64_t* a, std::size_t i) noexcept {
+    const std::size_t w = i >> 6, b = i & 63;
+    if (b != 63) return static_cast<unsigned>((a[w] >> b) & 3u);
+    return static_cast<unsigned>((a[w] >> 63) | ((a[w + 1] & 1u) << 1));
+}
+inline std::uint32_t rank(const std::uint64_t* mask, const std::uint32_t* prefix, std::size_t i) noexcept {
+    const std::size_t w = i >> 6, b = i & 63;
+    return prefix[w] + static_cast<std::uint32_t>(std::popcount(b ? mask[w] & ((std::uint64_t(1) << b) - 1) : 0));
+}
+
+// Packs one row's classification (bit i set: sample i is inside) and reports NaN samples.
+template <class V>
+bool classify_row(const V* row, std::size_t nx, double iso, bool above, std::uint64_t* out) {
+    bool nan = false;
+    const std::size_t words = (nx + 63) / 64;
+    if constexpr (std::is_same_v<V, float>) {
+        // The float threshold that classifies every float exactly as the double iso would.
+        float t = static_cast<float>(iso);
+        if (above && double(t) < iso) t = std::nextafter(t, std::numeric_limits<float>::infinity());
+        if (!above && double(t) > iso) t = std::nextafter(t, -std::numeric_limits<float>::infinity());
+        for (std::size_t w = 0; w < words; ++w) {
+            const float* p = row + w * 64;
+            const std::size_t n = std::min<std::size_t>(64, nx - w * 64);
+            std::uint64_t m = 0;
+            unsigned bad = 0;
+            if (n == 64) {
+#if defined(__SSE2__)
+                // Four compares and one movemask per four samples: this pass reads every
+                // sample, so it sets the pace for sparse surfaces.
+                const __m128 tt = _mm_set1_ps(t);
+                unsigned unordered = 0;
+                for (unsigned b = 0; b < 64; b += 4) {
+                    const __m128 x = _mm_loadu_ps(p + b);
+                    const __m128 c = above ? _mm_cmpge_ps(x, tt) : _mm_cmple_ps(x, tt);
+                    m |= std::uint64_t(unsigned(_mm_movemask_ps(c))) << b;
+                    unordered |= unsigned(_mm_movemask_ps(_mm_cmpunord_ps(x, x)));
+                }
+                bad |= unordered;
+#else
+                if (above)
+                    for (unsigned b = 0; b < 64; ++b) m |= std::uint64_t(p[b] >= t) << b;
+                else
+                    for (unsigned b = 0; b < 64; ++b) m |= std::uint64_t(p[b] <= t) << b;
+                for (unsigned b = 0; b < 64; ++b) bad |= unsigned(p[b] != p[b]);
+#endif
+            } else {
+                for (unsigned b = 0; b < n; ++b) {
+                    m |= std::uint64_t(above ? p[b] >= t : p[b] <= t) << b;
+                    bad |= unsigned(p[b] != p[b]);
+                }
+            }
+            out[w] = m;
+            nan |= bad != 0;
+        }
+    } else {
+        for (std::size_t w = 0; w < words; ++w) {
+            const std::size_t n = std::min<std::size_t>(64, nx - w * 64);
+            std::uint64_t m = 0;
+            for (unsigned b = 0; b < n; ++b) {
+                const double v = static_cast<double>(row[w * 64 + b]);
+                m |= std::uint64_t(above ? v >= iso : v <= iso) << b;
+                nan |= v != v;
+            }
+            out[w] = m;
+        }
+    }
+    return nan;
+}
+
+template <class G>
+class extractor {
+public:
+    extractor(const G& grid, const marching_cubes_options& o) : grid_(grid), opt_(o) {
+        const auto d = grid.dims();
+        nx_ = d[0];
+        ny_ = d[1];
+        nz_ = d[2];
+        words_ = (nx_ + 63) / 64;
+        above_ = o.inside == iso_inside::above;
+        if constexpr (contiguous_voxel_grid<G>) data_ = grid.data();
+    }
+
+    template <class S>
+    result<indexed_triangles<S>> run() {
+        const std::size_t rows = ny_ * nz_;
+        bits_.assign(rows * words_, 0);
+        xcount_.assign(rows, 0);
+        ycount_.assign(rows, 0);
+        zcount_.assign(rows, 0);
+        vbase_.assign(rows + 1, 0);
+        tbase_.assign(rows + 1, 0);
+        const auto& table = mc::table();
+
+        // Pass 1: classify every sample into bit rows.
+        std::vector<std::uint8_t> nan_in_slab(nz_, 0);
+        parallel_chunks(nz_, 1, [&](std::size_t k0, std::size_t k1) {
+            std::vector<double> buffer;
+            for (std::size_t k = k0; k < k1; ++k)
+                for (std::size_t j = 0; j < ny_; ++j) {
+                    std::uint64_t* out = &bits_[(k * ny_ + j) * words_];
+                    bool nan;
+                    if constexpr (contiguous_voxel_grid<G>) {
+                        nan = classify_row(data_ + nx_ * (j + ny_ * k), nx_, opt_.iso, above_, out);
+                    } else {
+                        buffer.resize(nx_);
+                        for (std::size_t i = 0; i < nx_; ++i) buffer[i] = static_cast<double>(grid_.value(i, j, k));
+                        nan = classify_row(buffer.data(), nx_, opt_.iso, above_, out);
+                    }
+                    if (nan) nan_in_slab[k] = 1;
+                }
+        });
+        for (std::size_t k = 0; k < nz_; ++k)
+            if (nan_in_slab[k])
+                return fail(errc::invalid_argument, "marching_cubes: the grid holds NaN samples (first in z-slice " +
+                                                        std::to_string(k) + ")", static_cast<long long>(k));
+
+        // Pass 2: count crossed edges per row (the vertices it owns) and triangles per cube row.
+        parallel_chunks(nz_, 1, [&](std::size_t k0, std::size_t k1) {
+            scratch s(words_);
+            for (std::size_t k = k0; k < k1; ++k)
+                for (std::size_t j = 0; j < ny_; ++j) {
+                    const std::size_t r = k * ny_ + j;
+                    const std::uint64_t* a = row(j, k);
+                    std::uint32_t xc = 0, yc = 0, zc = 0;
+                    for (std::size_t w = 0; w < words_; ++w) {
+                        xc += static_cast<std::uint32_t>(std::popcount((a[w] ^ shr1(a, w, words_)) & x_valid(w)));
+                        if (j + 1 < ny_) yc += static_cast<std::uint32_t>(std::popcount(a[w] ^ row(j + 1, k)[w]));
+                        if (k + 1 < nz_) zc += static_cast<std::uint32_t>(std::popcount(a[w] ^ row(j, k + 1)[w]));
+                    }
+                    xcount_[r] = xc;
+                    ycount_[r] = yc;
+                    zcount_[r] = zc;
+                    std::uint64_t centers = 0;
+                    if (j + 1 < ny_ && k + 1 < nz_) {
+                        std::uint64_t tris = 0;
+                        for_each_active_cube(j, k, s, [&](std::size_t i, unsigned config) {
+                            const auto& e = table.entries[table.first[config] + decide(i, j, k, config)];
+                            tris += e.count;
+                            centers += e.center_loop != 0;
+                        });
+                        tbase_[r + 1] = tris;
+                    }
+                    vbase_[r + 1] = std::uint64_t(xc) + yc + zc + centers;
+                }
+        });
+        for (std::size_t r = 0; r < rows; ++r) {
+            vbase_[r + 1] += vbase_[r];
+            tbase_[r + 1] += tbase_[r];
+        }
+        if (vbase_[rows] > std::numeric_limits<std::uint32_t>::max())
+            return fail(errc::unsupported, "marching_cubes: more than 2^32 - 1 vertices");
+
+        indexed_triangles<S> out;
+        out.positions.resize(vbase_[rows]);
+        out.triangles.resize(tbase_[rows]);
+        if (opt_.normals) out.normals.resize(vbase_[rows]);
+
+        // Pass 3: every row writes its vertices and its cubes' triangles into the slots
+        // counted above, so the output order is the same whatever the schedule.
+        parallel_chunks(nz_, 1, [&](std::size_t k0, std::size_t k1) {
+            scratch s(words_);
+            for (std::size_t k = k0; k < k1; ++k)
+                for (std::size_t j = 0; j < ny_; ++j) {
+                    write_row_vertices(j, k, out);
+                    if (j + 1 < ny_ && k + 1 < nz_) write_cube_row(j, k, s, table, out);
+                }
+        });
+        return out;
+    }
+
+private:
+    struct scratch {
+        explicit scratch(std::size_t words) : active(words), masks(8 * words), prefix(8 * (words + 1)) {}
+        std::vector<std::uint64_t> active, masks;
+        std::vector<std::uint32_t> prefix;
+    };
+
+    const std::uint64_t* row(std::size_t j, std::size_t k) const noexcept { return &bits_[(k * ny_ + j) * words_]; }
+    std::uint64_t x_valid(std::size_t w) const noexcept {
+        // Bits i < nx - 1: x-edges and cubes exist only there.
+        const std::size_t lo = w * 64, n = nx_ - 1;
+        if (n >= lo + 64) return ~std::uint64_t(0);
+        if (n <= lo) return 0;
+        return (std::uint64_t(1) << (n - lo)) - 1;
+    }
+
+    double value(std::size_t i, std::size_t j, std::size_t k) const {
+        if constexpr (contiguous_voxel_grid<G>) return static_cast<double>(data_[i + nx_ * (j + ny_ * k)]);
+        else return static_cast<double>(grid_.value(i, j, k));
+    }
+    // Positive inside, negative outside (0 counts as inside).
+    double inside_value(std::size_t i, std::size_t j, std::size_t k) const {
+        const double v = value(i, j, k);
+        return above_ ? v - opt_.iso : opt_.iso - v;
+    }
+
+    // Calls f(i, config) for every cube of row (j, k) with corners on both sides, in i order.
+    template <class F>
+    void for_each_active_cube(std::size_t j, std::size_t k, scratch& s, const F& f) const {
+        const std::uint64_t *a = row(j, k), *b = row(j + 1, k), *c = row(j, k + 1), *d = row(j + 1, k + 1);
+        for (std::size_t w = 0; w < words_; ++w) {
+            s.active[w] = (a[w] ^ b[w]) | (a[w] ^ c[w]) | (a[w] ^ d[w]);
+        }
+        for (std::size_t w = 0; w < words_; ++w) {
+            std::uint64_t act = (s.active[w] | shr1(s.active.data(), w, words_) | (a[w] ^ shr1(a, w, words_))) & x_valid(w);
+            while (act) {
+                const std::size_t i = w * 64 + static_cast<std::size_t>(std::countr_zero(act));
+                act &= act - 1;
+                const unsigned config = bits2(a, i) | (bits2(b, i) << 2) | (bits2(c, i) << 4) | (bits2(d, i) << 6);
+                f(i, config);
+            }
+        }
+    }
+
+    // The asymptotic decider on each ambiguous face: its inside corners are joined when the
+    // bilinear saddle lies inside, i.e. when in0 * in1 >= out0 * out1 (values signed inside
+    // positive). It reads only the face's four samples, so both cubes sharing it agree.
+    unsigned decide(std::size_t i, std::size_t j, std::size_t k, unsigned config) const {
+        const auto& table = mc::table();
+        const unsigned n = table.ambiguous_count[config];
+        unsigned bits = 0;
+        for (unsigned q = 0; q < n; ++q) {
+            const auto& fc = face_corners[table.ambiguous_faces[config][q]];
+            double in = 1, out = 1;
+            for (int m = 0; m < 4; ++m) {
+                const int c = fc[m];
+                const double v = inside_value(i + (c & 1), j + ((c >> 1) & 1), k + ((c >> 2) & 1));
+                if ((config >> c) & 1) in *= v;
+                else out *= v;
+            }
+            if (in >= out) bits |= 1u << q;
+        }
+        return bits;
+    }
+
+    vec3<double> gradient(std::size_t i, std::size_t j, std::size_t k) const {
+        const auto sp = grid_.spacing();
+        auto diff = [&](std::size_t lo_i, std::size_t lo_j, std::size_t lo_k, std::size_t hi_i, std::size_t hi_j,
+                        std::size_t hi_k, double h) { return (value(hi_i, hi_j, hi_k) - value(lo_i, lo_j, lo_k)) / h; };
+        const std::size_t i0 = i ? i - 1 : i, i1 = i + 1 < nx_ ? i + 1 : i;
+        const std::size_t j0 = j ? j - 1 : j, j1 = j + 1 < ny_ ? j + 1 : j;
+        const std::size_t k0 = k ? k - 1 : k, k1 = k + 1 < nz_ ? k + 1 : k;
+        return {diff(i0, j, k, i1, j, k, sp.x * double(i1 - i0)), diff(i, j0, k, i, j1, k, sp.y * double(j1 - j0)),
+                diff(i, j, k0, i, j, k1, sp.z * double(k1 - k0))};
+    }
+
+    // The crossing on the edge from sample (i, j, k) along `axis`, and the outward gradient
+    // direction there (unnormalised; only computed when asked for).
+    void edge_point(std::size_t i, std::size_t j, std::size_t k, int axis, vec3<double>& pos, vec3<double>* normal) const {
+        std::size_t i1 = i, j1 = j, k1 = k;
+        (axis == 0 ? i1 : axis == 1 ? j1 : k1) += 1;
+        const double v0 = value(i, j, k), v1 = value(i1, j1, k1);
+        double t = (opt_.iso - v0) / (v1 - v0);
+        t = std::clamp(t, edge_margin, 1.0 - edge_margin);
+        const auto o = grid_.origin();
+        const auto sp = grid_.spacing();
+        vec3<double> p{double(i), double(j), double(k)};
+        p[static_cast<std::size_t>(axis)] += t;
+        pos = {o.x + p.x * sp.x, o.y + p.y * sp.y, o.z + p.z * sp.z};
+        if (normal) {
+            vec3<double> g = gradient(i, j, k) * (1 - t) + gradient(i1, j1, k1) * t;
+            *normal = above_ ? -g : g;  // the field grows inward when inside is above: outward is down
+        }
+    }
+
+    template <class S>
+    void store(std::size_t id, const vec3<double>& p, const vec3<double>* n, indexed_triangles<S>& out) const {
+        out.positions[id] = {static_cast<S>(p.x), static_cast<S>(p.y), static_cast<S>(p.z)};
+        if (n) {
+            const auto u = normalized(*n);
+            out.normals[id] = {static_cast<S>(u.x), static_cast<S>(u.y), static_cast<S>(u.z)};
+        }
+    }
+
+    template <class S>
+    void write_vertex(std::size_t id, std::size_t i, std::size_t j, std::size_t k, int axis, indexed_triangles<S>& out) const {
+        vec3<double> p, n;
+        const bool normals = !out.normals.empty();
+        edge_point(i, j, k, axis, p, normals ? &n : nullptr);
+        store(id, p, normals ? &n : nullptr, out);
+    }
+
+    // The extra vertex of a loop that needs one: the mean of the loop's crossings.
+    template <class S>
+    void write_center(std::size_t id, std::size_t i, std::size_t j, std::size_t k, unsigned loop, indexed_triangles<S>& out) const {
+        const bool normals = !out.normals.empty();
+        vec3<double> sum_p{}, sum_n{};
+        double count = 0;
+        for (; loop; loop &= loop - 1) {
+            const int e = std::countr_zero(loop);
+            const int c = edge_corners[e][0];
+            vec3<double> p, n;
+            edge_point(i + (c & 1), j + ((c >> 1) & 1), k + ((c >> 2) & 1), e / 4, p, normals ? &n : nullptr);
+            sum_p += p;
+            if (normals) sum_n += normalized(n);
+            count += 1;
+        }
+        sum_p /= count;
+        store(id, sum_p, normals ? &sum_n : nullptr, out);
+    }
+
+    template <class S>
+    void write_row_vertices(std::size_t j, std::size_t k, indexed_triangles<S>& out) const {
+        const std::size_t r = k * ny_ + j;
+        std::size_t id = vbase_[r];
+        const std::uint64_t* a = row(j, k);
+        auto emit = [&](auto mask_of, int axis) {
+            for (std::size_t w = 0; w < words_; ++w) {
+                std::uint64_t m = mask_of(w);
+                while (m) {
+                    const std::size_t i = w * 64 + static_cast<std::size_t>(std::countr_zero(m));
+                    m &= m - 1;
+                    write_vertex(id++, i, j, k, axis, out);
+                }
+            }
+        };
+        emit([&](std::size_t w) { return (a[w] ^ shr1(a, w, words_)) & x_valid(w); }, 0);
+        if (j + 1 < ny_) emit([&](std::size_t w) { return a[w] ^ row(j + 1, k)[w]; }, 1);
+        if (k + 1 < nz_) emit([&](std::size_t w) { return a[w] ^ row(j, k + 1)[w]; }, 2);
+    }
+
+    template <class S>
+    void write_cube_row(std::size_t j, std::size_t k, scratch& s, const case_table& table, indexed_triangles<S>& out) const {
+        // Crossing masks of the rows around this cube row and their running popcounts: the
+        // rank of an edge in its row's mask is its vertex's offset within the row.
+        const std::size_t ra = k * ny_ + j, rb = ra + 1, rc = ra + ny_, rd = rc + 1;
+        const std::uint64_t *a = row(j, k), *b = row(j + 1, k), *c = row(j, k + 1), *d = row(j + 1, k + 1);
+        std::uint64_t* m = s.masks.data();
+        std::uint32_t* p = s.prefix.data();
+        const std::size_t W = words_;
+        for (std::size_t w = 0; w < W; ++w) {
+            m[0 * W + w] = (a[w] ^ shr1(a, w, W)) & x_valid(w);
+            m[1 * W + w] = (b[w] ^ shr1(b, w, W)) & x_valid(w);
+            m[2 * W + w] = (c[w] ^ shr1(c, w, W)) & x_valid(w);
+            m[3 * W + w] = (d[w] ^ shr1(d, w, W)) & x_valid(w);
+            m[4 * W + w] = a[w] ^ b[w];  // y-edges of row a
+            m[5 * W + w] = c[w] ^ d[w];  // y-edges of row c
+            m[6 * W + w] = a[w] ^ c[w];  // z-edges of row a
+            m[7 * W + w] = b[w] ^ d[w];  // z-edges of row b
+        }
+        for (int q = 0; q < 8; ++q) {
+            p[q * (W + 1)] = 0;
+            for (std::size_t w = 0; w < W; ++w)
+                p[q * (W + 1) + w + 1] = p[q * (W + 1) + w] + static_cast<std::uint32_t>(std::popcount(m[q * W + w]));
+        }
+        const std::uint64_t base[8] = {vbase_[ra],
+                                       vbase_[rb],
+                                       vbase_[rc],
+                                       vbase_[rd],
+                                       vbase_[ra] + xcount_[ra],
+                                       vbase_[rc] + xcount_[rc],
+                                       vbase_[ra] + xcount_[ra] + ycount_[ra],
+                                       vbase_[rb] + xcount_[rb] + ycount_[rb]};
+        // Edge e reads mask edge_mask[e] at i + edge_step[e].
+        static constexpr int edge_mask[12] = {0, 1, 2, 3, 4, 4, 5, 5, 6, 6, 7, 7};
+        static constexpr int edge_step[12] = {0, 0, 0, 0, 0, 1, 0, 1, 0, 1, 0, 1};
+        std::size_t t = tbase_[ra];
+        std::size_t center = vbase_[ra] + xcount_[ra] + ycount_[ra] + zcount_[ra];
+        for_each_active_cube(j, k, s, [&](std::size_t i, unsigned config) {
+            const auto& entry = table.entries[table.first[config] + decide(i, j, k, config)];
+            std::uint32_t id[13];
+            if (entry.center_loop) {
+                id[center_vertex] = static_cast<std::uint32_t>(center);
+                write_center(center++, i, j, k, entry.center_loop, out);
+            }
+            for (unsigned crossed = table.crossed_edges[config]; crossed; crossed &= crossed - 1) {
+                const int e = std::countr_zero(crossed);
+                const int q = edge_mask[e];
+                id[e] = static_cast<std::uint32_t>(base[q] + rank(m + q * W, p + q * (W + 1), i + std::size_t(edge_step[e])));
+            }
+            for (unsigned n = 0; n < entry.count; ++n)
+                out.triangles[t++] = {id[entry.edges[3 * n]], id[entry.edges[3 * n + 1]], id[entry.edges[3 * n + 2]]};
+        });
+    }
+
+    const G& grid_;
+    marching_cubes_options opt_;
+    const typename G::value_type* data_ = nullptr;
+    std::size_t nx_ = 0, ny_ = 0, nz_ = 0, words_ = 0;
+    bool above_ = false;
+    std::vector<std::uint64_t> bits_;
+    std::vector<std::uint32_t> xcount_, ycount_, zcount_;
+    std::vector<std::uint64_t> vbase_, tbase_;
+};
+
+}  // namespace detail::mc
+
+/// Marching cubes into an indexed triangle list with positions of type S.
+///
+/// - One vertex per grid edge whose end samples lie on different sides, shared by the (up to
+///   four) cubes around that edge: the output is welded. Its position interpolates the two
+///   samples linearly, kept at least 1/512 of the edge away from either sample.
+/// - Rule for samples equal to `iso`: such a sample counts as inside. With the 1/512 margin,
+///   no two vertices coincide and no triangle has zero area, even in 8-bit data where many
+///   samples equal the iso value.
+/// - Ambiguous faces are decided by the asymptotic decider, the same way from both sides, so
+///   the output is a closed, oriented 2-manifold whenever no inside sample lies on the grid's
+///   boundary layer. Triangles wind counter-clockwise seen from outside. In the rare cubes
+///   whose contour loop cannot be triangulated without a chord along an ambiguous face (some
+///   decisions of cases 10, 12, 13), the loop is fanned around one extra vertex at its mean.
+/// - Vertex order: rows of samples in (z, y) order, and within a row the crossed x-edges,
+///   then y-edges, then z-edges by increasing x, then the extra vertices of that row's cubes. Triangles follow their cubes in (z, y, x)
+///   order. Identical for every thread count and for builds without TBB.
+///
+/// Complexity: O(N) for N samples, in three passes over z-slabs (classify into bit rows;
+/// count; write), each parallel; the per-sample work is a compare, the per-cube work a few
+/// word operations except on the (few) cubes the surface crosses. Memory: N/8 bytes of bits.
+/// Preconditions: none beyond the errors below.
+/// Errors (invalid_argument): a dimension below 2, spacing not finite and positive, a
+/// non-finite iso value, or NaN samples (naming the first z-slice holding one);
+/// unsupported: more than 2^32 - 1 output vertices.
+template <class S = float, voxel_grid G>
+result<indexed_triangles<S>> marching_cubes_indexed(const G& grid, const marching_cubes_options& options = {}) {
+    if (auto ok = check_grid_geometry(geometry_of(grid), "marching_cubes", 2); !ok) return ok.error();
+    if (!std::isfinite(options.iso))
+        return fail(errc::invalid_argument, "marching_cubes: the iso value must be finite");
+    result<indexed_triangles<S>> out = fail(errc::invalid_argument, "");
+    detail::with_thread_count(options.threads, [&] { out = detail::mc::extractor<G>(grid, options).template run<S>(); });
+    return out;
+}
+
+/// What marching_cubes() added to the mesh: its vertices in creation order, its faces, and
+/// (when asked for) one unit normal per vertex.
+template <class M, class T = default_traits<M>>
+struct marching_cubes_output {
+    std::vector<typename T::vertex_handle> vertices;
+    std::vector<typename T::face_handle> faces;
+    std::vector<vec3<typename T::scalar>> normals;
+};
+
+/// Marching cubes into `mesh`, which may already hold other elements: adds the surface's
+/// vertices and triangles and returns them. Same surface, rules, order and complexity as
+/// marching_cubes_indexed(); adding to the mesh is serial, O(V + F) builder calls.
+/// Errors: those of marching_cubes_indexed(), checked before the mesh is touched; an error
+/// from the mesh's add_face (only a model that refuses valid triangles gives one) is passed
+/// on, with the elements added so far left in place.
+template <class M, class T = default_traits<M>, voxel_grid G>
+    requires mesh_builder<M, T>
+result<marching_cubes_output<M, T>> marching_cubes(M& mesh, const G& grid, const marching_cubes_options& options = {}) {
+    using S = typename T::scalar;
+    auto tri = marching_cubes_indexed<S>(grid, options);
+    if (!tri) return tri.error();
+    marching_cubes_output<M, T> out;
+    out.vertices.reserve(tri->positions.size());
+    out.faces.reserve(tri->triangles.size());
+    for (const auto& p : tri->positions) out.vertices.push_back(T::add_vertex(mesh, p));
+    for (const auto& t : tri->triangles) {
+        const std::array<typename T::vertex_handle, 3> vs{out.vertices[t[0]], out.vertices[t[1]], out.vertices[t[2]]};
+        auto f = T::add_face(mesh, std::span<const typename T::vertex_handle>(vs));
+        if (!f) return f.error();
+        out.faces.push_back(*f);
+    }
+    out.normals = std::move(tri->normals);
+    return out;
+}
+
+}  // namespace hmira

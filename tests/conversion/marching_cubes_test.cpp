@@ -1,0 +1,288 @@
+// Marching cubes: welded, closed, oriented, deterministic output on analytic fields, noise
+// and 8-bit-like volumes.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <numbers>
+#include <random>
+#include <set>
+
+#include <hmira/algorithms/conversion/marching_cubes.hpp>
+#include <hmira/algorithms/topology/mesh_topology.hpp>
+#include <hmira/grids/dense_grid.hpp>
+#include <hmira/grids/implicit_shapes.hpp>
+#include <hmira/grids/sample.hpp>
+#include <hmira/meshes/face_vertex_mesh.hpp>
+#include <hmira/meshes/halfedge_mesh.hpp>
+
+#include "support/checks.hpp"
+
+#if defined(HMIRA_HAS_TBB)
+#include <tbb/global_control.h>
+#endif
+
+namespace {
+
+using hmira::vec3;
+
+#if defined(HMIRA_SANITIZER_BUILD)
+constexpr std::size_t big_n = 40;
+#else
+constexpr std::size_t big_n = 96;
+#endif
+
+double mesh_area(const hmira::face_vertex_mesh& m) {
+    double a = 0;
+    for (auto f : m.faces()) {
+        auto fv = m.face_vertices(f);
+        const auto p = m.position(fv[0]), q = m.position(fv[1]), r = m.position(fv[2]);
+        a += 0.5 * hmira::norm(hmira::cross(q - p, r - p));
+    }
+    return a;
+}
+
+void expect_closed_manifold(const hmira::face_vertex_mesh& m, long long genus, std::size_t components) {
+    EXPECT_TRUE(hmira_test::is_valid(m));
+    const auto t = hmira::mesh_topology(m);
+    EXPECT_TRUE(t.closed()) << t.boundary_edges << " boundary edges, " << t.non_manifold_edges << " non-manifold edges";
+    EXPECT_EQ(t.isolated_vertices, 0u);
+    if (genus >= 0) { EXPECT_EQ(t.genus, genus); }
+    if (components) { EXPECT_EQ(t.components, components); }
+}
+
+TEST(MarchingCubesTable, every_case_closes_and_triangulates) {
+    // Building the table throws if any configuration leaves an open contour or a loop that
+    // cannot be triangulated without a chord along a cube face.
+    const auto& t = hmira::detail::mc::table();
+    EXPECT_EQ(t.entries[t.first[0]].count, 0);
+    EXPECT_EQ(t.entries[t.first[255]].count, 0);
+    for (int c = 1; c < 255; ++c)
+        for (unsigned d = 0; d < (1u << t.ambiguous_count[c]); ++d) EXPECT_GT(t.entries[t.first[c] + d].count, 0) << c;
+}
+
+TEST(MarchingCubes, sphere_is_closed_genus0_with_analytic_volume_and_area) {
+    for (std::size_t n : {16u, 33u, unsigned(big_n)}) {
+        const double r = 0.8;
+        auto grid = hmira::sample_function(hmira::cube_geometry(n, -1, 1), hmira::sphere_field{{0.01, -0.02, 0.03}, r});
+        ASSERT_TRUE(grid);
+        hmira::face_vertex_mesh m;
+        auto out = hmira::marching_cubes(m, *grid);
+        ASSERT_TRUE(out) << out.error().message;
+        expect_closed_manifold(m, 0, 1);
+        const double h = grid->spacing().x;
+        const double vol = hmira_test::signed_volume(m);
+        const double exact_vol = 4.0 / 3.0 * std::numbers::pi * r * r * r;
+        const double exact_area = 4 * std::numbers::pi * r * r;
+        // Interpolated vertices lie within O(h^2) of the sphere; chords cut inside by h^2/(8r).
+        EXPECT_GT(vol, 0) << "normals must point outward";
+        EXPECT_NEAR(vol, exact_vol, exact_area * h * h) << n;
+        EXPECT_NEAR(mesh_area(m), exact_area, exact_area * 2 * h) << n;
+    }
+}
+
+TEST(MarchingCubes, torus_is_closed_genus1) {
+    auto grid = hmira::sample_function(hmira::cube_geometry(big_n, -1.5, 1.5), hmira::torus_field{{0, 0, 0.05}, 1.0, 0.35});
+    ASSERT_TRUE(grid);
+    hmira::face_vertex_mesh m;
+    ASSERT_TRUE(hmira::marching_cubes(m, *grid));
+    expect_closed_manifold(m, 1, 1);
+    const double h = grid->spacing().x;
+    const double exact_vol = 2 * std::numbers::pi * std::numbers::pi * 1.0 * 0.35 * 0.35;
+    const double exact_area = 4 * std::numbers::pi * std::numbers::pi * 1.0 * 0.35;
+    EXPECT_NEAR(hmira_test::signed_volume(m), exact_vol, exact_area * h * h);
+    EXPECT_NEAR(mesh_area(m), exact_area, exact_area * 2 * h);
+}
+
+TEST(MarchingCubes, inside_above_flips_orientation_not_shape) {
+    auto grid = hmira::sample_function(hmira::cube_geometry(24, -1, 1), [](vec3<double> p) { return -(hmira::norm(p) - 0.7); });
+    ASSERT_TRUE(grid);
+    hmira::face_vertex_mesh m;
+    ASSERT_TRUE(hmira::marching_cubes(m, *grid, {.inside = hmira::iso_inside::above}));
+    expect_closed_manifold(m, 0, 1);
+    EXPECT_GT(hmira_test::signed_volume(m), 0);
+}
+
+TEST(MarchingCubes, works_on_halfedge_mesh_builder) {
+    auto grid = hmira::sample_function(hmira::cube_geometry(20, -1, 1), hmira::torus_field{{0, 0, 0}, 0.6, 0.25});
+    ASSERT_TRUE(grid);
+    hmira::halfedge_mesh m;
+    auto out = hmira::marching_cubes(m, *grid);
+    ASSERT_TRUE(out) << out.error().message;
+    EXPECT_TRUE(hmira_test::is_valid(m));
+    const auto t = hmira::mesh_topology(m);
+    EXPECT_TRUE(t.closed());
+    EXPECT_EQ(t.genus, 1);
+}
+
+// Random noise padded with an outside layer: every ambiguous configuration shows up, with
+// every decision, and the surface must still close.
+TEST(MarchingCubes, seeded_noise_fields_are_closed_manifolds) {
+    for (unsigned seed = 1; seed <= 12; ++seed) {
+        std::mt19937 rng(seed);
+        std::uniform_real_distribution<float> u(-1, 1);
+        const std::size_t n = 12 + seed % 5;
+        hmira::dense_grid<float> g({{n, n + 1, n + 2}, {0, 0, 0}, {1, 1, 1}}, 1.0f);
+        for (std::size_t k = 1; k + 1 < n + 2; ++k)
+            for (std::size_t j = 1; j + 1 < n + 1; ++j)
+                for (std::size_t i = 1; i + 1 < n; ++i) g.set(i, j, k, u(rng));
+        for (double iso : {0.0, 0.3, -0.4}) {
+            hmira::face_vertex_mesh m;
+            ASSERT_TRUE(hmira::marching_cubes(m, g, {.iso = iso}));
+            SCOPED_TRACE("seed " + std::to_string(seed) + " iso " + std::to_string(iso));
+            expect_closed_manifold(m, -1, 0);
+            EXPECT_GT(hmira_test::signed_volume(m), 0);
+        }
+    }
+}
+
+// 8-bit-like data: values in {0, 1, 2}, iso 1, so a third of the samples equal the iso value.
+TEST(MarchingCubes, samples_equal_to_iso_give_no_duplicate_vertices_or_zero_area_triangles) {
+    for (unsigned seed = 1; seed <= 6; ++seed) {
+        std::mt19937 rng(seed);
+        const std::size_t n = 14;
+        hmira::dense_grid<std::uint8_t> g({{n, n, n}, {0, 0, 0}, {1, 1, 1}}, 0);
+        for (std::size_t k = 1; k + 1 < n; ++k)
+            for (std::size_t j = 1; j + 1 < n; ++j)
+                for (std::size_t i = 1; i + 1 < n; ++i) g.set(i, j, k, static_cast<std::uint8_t>(rng() % 3));
+        for (auto inside : {hmira::iso_inside::above, hmira::iso_inside::below}) {
+            auto tri = hmira::marching_cubes_indexed<double>(g, {.iso = 1.0, .inside = inside});
+            ASSERT_TRUE(tri);
+            std::set<std::array<double, 3>> seen;
+            for (const auto& p : tri->positions) EXPECT_TRUE(seen.insert({p.x, p.y, p.z}).second) << "duplicate position";
+            for (const auto& t : tri->triangles) {
+                const auto a = tri->positions[t[0]], b = tri->positions[t[1]], c = tri->positions[t[2]];
+                EXPECT_GT(hmira::norm(hmira::cross(b - a, c - a)), 0);
+            }
+            hmira::face_vertex_mesh m;
+            ASSERT_TRUE(hmira::marching_cubes(m, g, {.iso = 1.0, .inside = inside}));
+            expect_closed_manifold(m, -1, 0);  // validate also reports zero-area faces
+            // Above: the solid {v >= 1} floats inside the layer of 0s, positive volume. Below:
+            // the solid {v <= 1} fills the box around pockets of 2s, so the surface bounds
+            // cavities, whose outward normals point into them: negative volume.
+            if (inside == hmira::iso_inside::above) { EXPECT_GT(hmira_test::signed_volume(m), 0); }
+            else { EXPECT_LT(hmira_test::signed_volume(m), 0); }
+        }
+    }
+}
+
+TEST(MarchingCubes, crossing_positions_interpolate_linearly_for_any_iso) {
+    // f = x along a 4-sample axis: the surface f = iso is the plane x = iso exactly.
+    hmira::dense_grid<double> g({{4, 3, 3}, {0, 0, 0}, {1, 1, 1}}, 0.0);
+    for (std::size_t k = 0; k < 3; ++k)
+        for (std::size_t j = 0; j < 3; ++j)
+            for (std::size_t i = 0; i < 4; ++i) g.set(i, j, k, double(i));
+    for (double iso : {0.25, 1.5, 2.9}) {
+        auto tri = hmira::marching_cubes_indexed<double>(g, {.iso = iso});
+        ASSERT_TRUE(tri);
+        ASSERT_FALSE(tri->positions.empty());
+        for (const auto& p : tri->positions) EXPECT_DOUBLE_EQ(p.x, iso);
+    }
+}
+
+TEST(MarchingCubes, gradient_normals_point_outward_and_are_unit) {
+    auto grid = hmira::sample_function(hmira::cube_geometry(32, -1, 1), hmira::sphere_field{{0, 0, 0}, 0.6});
+    ASSERT_TRUE(grid);
+    for (auto inside : {hmira::iso_inside::below, hmira::iso_inside::above}) {
+        hmira::dense_grid<float> g = *grid;
+        if (inside == hmira::iso_inside::above)
+            for (auto& v : g.values()) v = -v;
+        auto tri = hmira::marching_cubes_indexed<double>(g, {.inside = inside, .normals = true});
+        ASSERT_TRUE(tri);
+        ASSERT_EQ(tri->normals.size(), tri->positions.size());
+        for (std::size_t v = 0; v < tri->positions.size(); ++v) {
+            EXPECT_NEAR(hmira::norm(tri->normals[v]), 1.0, 1e-9);
+            EXPECT_GT(hmira::dot(tri->normals[v], hmira::normalized(tri->positions[v])), 0.95);
+        }
+    }
+}
+
+TEST(MarchingCubes, output_is_identical_for_1_2_and_8_threads) {
+    auto grid = hmira::sample_function(hmira::cube_geometry(big_n, -3, 3), hmira::gyroid_field{2.0});
+    ASSERT_TRUE(grid);
+    std::vector<hmira::indexed_triangles<float>> runs;
+    for (unsigned threads : {1u, 2u, 8u}) {
+#if defined(HMIRA_HAS_TBB)
+        tbb::global_control gc(tbb::global_control::max_allowed_parallelism, threads);
+#endif
+        auto tri = hmira::marching_cubes_indexed(*grid, {.normals = true, .threads = threads});
+        ASSERT_TRUE(tri);
+        runs.push_back(std::move(*tri));
+    }
+    ASSERT_FALSE(runs[0].triangles.empty());
+    for (std::size_t r = 1; r < runs.size(); ++r) {
+        EXPECT_TRUE(runs[r].positions == runs[0].positions);
+        EXPECT_TRUE(runs[r].triangles == runs[0].triangles);
+        EXPECT_TRUE(runs[r].normals == runs[0].normals);
+    }
+}
+
+TEST(MarchingCubes, user_vector_is_read_in_place_and_matches_dense_grid) {
+    const hmira::grid_geometry geo = hmira::cube_geometry(20, -1, 1);
+    auto dense = hmira::sample_function(geo, hmira::torus_field{{0, 0, 0}, 0.6, 0.2});
+    ASSERT_TRUE(dense);
+    std::vector<float> mine(dense->values().begin(), dense->values().end());
+    auto view = hmira::make_grid_view(mine, geo);
+    ASSERT_TRUE(view);
+    EXPECT_EQ(view->data(), mine.data());
+    auto a = hmira::marching_cubes_indexed(*dense);
+    auto b = hmira::marching_cubes_indexed(*view);
+    ASSERT_TRUE(a && b);
+    EXPECT_TRUE(a->positions == b->positions);
+    EXPECT_TRUE(a->triangles == b->triangles);
+}
+
+// A grid that offers only value(i, j, k): the generic path must agree with the fast one.
+struct function_grid {
+    using value_type = double;
+    hmira::grid_geometry g;
+    hmira::grid_dims dims() const { return g.dims; }
+    vec3<double> origin() const { return g.origin; }
+    vec3<double> spacing() const { return g.spacing; }
+    double value(std::size_t i, std::size_t j, std::size_t k) const { return hmira::sphere_field{{0, 0, 0}, 0.5}(g.position(i, j, k)); }
+};
+
+TEST(MarchingCubes, generic_grid_without_storage_matches_dense_grid) {
+    function_grid fg{hmira::cube_geometry(18, -1, 1)};
+    auto dense = hmira::sample_function<double>(fg.g, hmira::sphere_field{{0, 0, 0}, 0.5});
+    ASSERT_TRUE(dense);
+    auto a = hmira::marching_cubes_indexed<double>(fg);
+    auto b = hmira::marching_cubes_indexed<double>(*dense);
+    ASSERT_TRUE(a && b);
+    EXPECT_TRUE(a->positions == b->positions);
+    EXPECT_TRUE(a->triangles == b->triangles);
+}
+
+TEST(MarchingCubesBadInput, nan_zero_spacing_and_empty_grids_are_refused_without_touching_the_mesh) {
+    hmira::dense_grid<float> g({{4, 4, 4}, {0, 0, 0}, {1, 1, 1}}, 1.0f);
+    g.set(1, 2, 3, std::numeric_limits<float>::quiet_NaN());
+    hmira::face_vertex_mesh m;
+    auto r = hmira::marching_cubes(m, g);
+    ASSERT_FALSE(r);
+    EXPECT_EQ(r.error().code, hmira::errc::invalid_argument);
+    EXPECT_NE(r.error().message.find("NaN"), std::string::npos);
+    EXPECT_EQ(m.vertex_count(), 0u);
+
+    hmira::dense_grid<float> zero({{4, 4, 4}, {0, 0, 0}, {1, 0, 1}}, 1.0f);
+    auto z = hmira::marching_cubes(m, zero);
+    ASSERT_FALSE(z);
+    EXPECT_NE(z.error().message.find("spacing"), std::string::npos);
+
+    hmira::dense_grid<float> empty({{0, 4, 4}, {0, 0, 0}, {1, 1, 1}});
+    EXPECT_FALSE(hmira::marching_cubes(m, empty));
+    hmira::dense_grid<float> flat({{5, 1, 5}, {0, 0, 0}, {1, 1, 1}});
+    EXPECT_FALSE(hmira::marching_cubes(m, flat));
+    EXPECT_FALSE(hmira::marching_cubes(m, g, {.iso = std::numeric_limits<double>::infinity()}));
+    EXPECT_EQ(m.vertex_count(), 0u);
+    EXPECT_EQ(m.face_count(), 0u);
+}
+
+TEST(MarchingCubes, surface_with_no_crossing_is_empty) {
+    hmira::dense_grid<float> g({{5, 5, 5}, {0, 0, 0}, {1, 1, 1}}, 2.0f);
+    auto tri = hmira::marching_cubes_indexed(g);
+    ASSERT_TRUE(tri);
+    EXPECT_TRUE(tri->positions.empty());
+    EXPECT_TRUE(tri->triangles.empty());
+}
+
+}  // namespace
