@@ -1,0 +1,269 @@
+// Voxelization: conservative surface, parity fill against analytic counts, open meshes,
+// determinism, and the voxelize -> marching cubes round trip on real closed meshes.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <random>
+
+#include <hmira/algorithms/conversion/marching_cubes.hpp>
+#include <hmira/algorithms/conversion/voxelize.hpp>
+#include <hmira/algorithms/topology/mesh_topology.hpp>
+#include <hmira/grids/dense_grid.hpp>
+#include <hmira/grids/implicit_shapes.hpp>
+#include <hmira/grids/sample.hpp>
+#include <hmira/io/off.hpp>
+#include <hmira/meshes/face_vertex_mesh.hpp>
+#include <hmira/meshes/halfedge_mesh.hpp>
+
+#include "support/checks.hpp"
+
+#if defined(HMIRA_HAS_TBB)
+#include <tbb/global_control.h>
+#endif
+
+namespace {
+
+using hmira::vec3;
+
+#if defined(HMIRA_SANITIZER_BUILD)
+constexpr std::size_t real_res = 40;
+#else
+constexpr std::size_t real_res = 96;
+#endif
+
+// A closed triangulated sphere (marching cubes of its distance field; checked closed below).
+hmira::face_vertex_mesh sphere_mesh(double r, std::size_t n = 48) {
+    auto g = hmira::sample_function(hmira::cube_geometry(n, -1, 1), hmira::sphere_field{{0, 0, 0}, r});
+    hmira::face_vertex_mesh m;
+    (void)hmira::marching_cubes(m, *g).value();
+    return m;
+}
+
+hmira::grid_geometry box_geometry(std::size_t n, double half) {
+    const double h = 2 * half / double(n);
+    return {{n, n, n}, {-half + 0.5 * h, -half + 0.5 * h, -half + 0.5 * h}, {h, h, h}};
+}
+
+double area(const hmira::face_vertex_mesh& m) {
+    double a = 0;
+    for (auto f : m.faces()) {
+        auto fv = m.face_vertices(f);
+        for (std::size_t i = 1; i + 1 < fv.size(); ++i)
+            a += 0.5 * hmira::norm(hmira::cross(m.position(fv[i]) - m.position(fv[0]), m.position(fv[i + 1]) - m.position(fv[0])));
+    }
+    return a;
+}
+
+TEST(Voxelize, solid_sphere_matches_analytic_inside_test_outside_the_surface_band) {
+    const double r = 0.7;
+    const auto mesh = sphere_mesh(r, 64);
+    ASSERT_TRUE(hmira::mesh_topology(mesh).closed());
+    for (std::size_t n : {20u, 41u, 64u}) {
+        const auto geo = box_geometry(n, 1.0);
+        auto v = hmira::voxelize(mesh, geo, {.mode = hmira::voxelize_mode::solid});
+        ASSERT_TRUE(v) << v.error().message;
+        EXPECT_TRUE(v->filled);
+        EXPECT_TRUE(v->note.empty());
+        const double h = geo.spacing.x;
+        // The mesh lies within ~h_mc^2 of the sphere; a voxel touching it has its centre within
+        // half a diagonal of it.
+        const double band = std::sqrt(3.0) / 2 * h + 0.01;
+        std::size_t analytic = 0, mismatched = 0;
+        for (std::size_t k = 0; k < n; ++k)
+            for (std::size_t j = 0; j < n; ++j)
+                for (std::size_t i = 0; i < n; ++i) {
+                    const double d = hmira::norm(geo.position(i, j, k)) - r;
+                    const bool set = v->voxels.value(i, j, k);
+                    analytic += d < 0;
+                    if (d < -band && !set) ++mismatched;
+                    if (d > band && set) ++mismatched;
+                }
+        EXPECT_EQ(mismatched, 0u) << n;
+        // And the count is the analytic one up to the band's voxels.
+        const double band_voxels = 4 * std::numbers::pi * r * r * 2 * band / (h * h * h);
+        EXPECT_NEAR(double(v->voxels.count()), double(analytic), band_voxels) << n;
+    }
+}
+
+TEST(Voxelize, surface_mode_marks_a_thin_conservative_shell) {
+    const double r = 0.7;
+    const auto mesh = sphere_mesh(r);
+    const auto geo = box_geometry(32, 1.0);
+    auto v = hmira::voxelize(mesh, geo, {.mode = hmira::voxelize_mode::surface});
+    ASSERT_TRUE(v);
+    EXPECT_FALSE(v->filled);
+    const double h = geo.spacing.x;
+    for (std::size_t k = 0; k < 32; ++k)
+        for (std::size_t j = 0; j < 32; ++j)
+            for (std::size_t i = 0; i < 32; ++i) {
+                const double d = std::abs(hmira::norm(geo.position(i, j, k)) - r);
+                if (d > std::sqrt(3.0) / 2 * h + 0.01) { EXPECT_EQ(v->voxels.value(i, j, k), 0); }
+            }
+    // Conservative: every vertex of the mesh lies in a set voxel.
+    for (auto vh : mesh.vertices()) {
+        const auto p = mesh.position(vh);
+        const auto i = std::size_t(std::lround((p.x - geo.origin.x) / h)), j = std::size_t(std::lround((p.y - geo.origin.y) / h)),
+                   k = std::size_t(std::lround((p.z - geo.origin.z) / h));
+        EXPECT_EQ(v->voxels.value(i, j, k), 1);
+    }
+}
+
+TEST(Voxelize, single_triangle_marks_exactly_the_boxes_it_crosses) {
+    // Compare the separating-axis test against dense point sampling of the triangle: every
+    // voxel containing a sample point must be set, and a set voxel must lie near the triangle.
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> u(0.5, 7.5);
+    for (int trial = 0; trial < 20; ++trial) {
+        hmira::face_vertex_mesh m;
+        auto a = m.add_vertex({u(rng), u(rng), u(rng)}), b = m.add_vertex({u(rng), u(rng), u(rng)}), c = m.add_vertex({u(rng), u(rng), u(rng)});
+        ASSERT_TRUE(m.add_face({a, b, c}));
+        const hmira::grid_geometry geo{{9, 9, 9}, {0, 0, 0}, {1, 1, 1}};
+        auto v = hmira::voxelize(m, geo, {.mode = hmira::voxelize_mode::surface});
+        ASSERT_TRUE(v);
+        const auto pa = m.position(a), pb = m.position(b), pc = m.position(c);
+        for (int s = 0; s <= 200; ++s)
+            for (int t = 0; s + t <= 200; ++t) {
+                const auto p = pa + (pb - pa) * (s / 200.0) + (pc - pa) * (t / 200.0);
+                EXPECT_EQ(v->voxels.value(std::size_t(std::lround(p.x)), std::size_t(std::lround(p.y)), std::size_t(std::lround(p.z))), 1);
+            }
+        // No voxel farther than half a diagonal from the triangle's plane is set.
+        const auto n = hmira::normalized(hmira::cross(pb - pa, pc - pa));
+        for (std::size_t k = 0; k < 9; ++k)
+            for (std::size_t j = 0; j < 9; ++j)
+                for (std::size_t i = 0; i < 9; ++i)
+                    if (v->voxels.value(i, j, k)) { EXPECT_LE(std::abs(hmira::dot(n, vec3<double>{double(i), double(j), double(k)} - pa)), std::sqrt(3.0) / 2 + 1e-9); }
+    }
+}
+
+TEST(Voxelize, open_mesh_in_solid_mode_says_so_and_keeps_the_surface) {
+    auto mesh = sphere_mesh(0.7);
+    ASSERT_TRUE(mesh.remove_face(hmira::face_handle(0)));
+    mesh.collect_garbage();
+    const auto geo = box_geometry(32, 1.0);
+    auto v = hmira::voxelize(mesh, geo);
+    ASSERT_TRUE(v);
+    EXPECT_FALSE(v->filled);
+    EXPECT_NE(v->note.find("not closed"), std::string::npos);
+    auto surface = hmira::voxelize(mesh, geo, {.mode = hmira::voxelize_mode::surface});
+    ASSERT_TRUE(surface);
+    EXPECT_EQ(v->voxels.count(), surface->voxels.count());
+    EXPECT_EQ(v->voxels.value(16, 16, 16), 0);
+
+    auto refused = hmira::voxelize(mesh, geo, {.open_mesh = hmira::open_mesh_fill::fail});
+    ASSERT_FALSE(refused);
+    EXPECT_EQ(refused.error().code, hmira::errc::topology);
+
+    // The winding number sees through the small hole: the ball is filled all the same.
+    auto closed = hmira::voxelize(sphere_mesh(0.7), geo);
+    auto wn = hmira::voxelize(mesh, geo, {.open_mesh = hmira::open_mesh_fill::winding_number});
+    ASSERT_TRUE(wn && closed);
+    EXPECT_TRUE(wn->filled);
+    EXPECT_EQ(wn->voxels.value(16, 16, 16), 1);
+    EXPECT_NEAR(double(wn->voxels.count()), double(closed->voxels.count()), 0.01 * double(closed->voxels.count()));
+}
+
+TEST(Voxelize, output_is_identical_for_1_2_and_8_threads) {
+    const auto mesh = sphere_mesh(0.8, 40);
+    const auto geo = box_geometry(57, 1.0);
+    std::vector<std::vector<std::uint64_t>> runs;
+    for (unsigned threads : {1u, 2u, 8u}) {
+#if defined(HMIRA_HAS_TBB)
+        tbb::global_control gc(tbb::global_control::max_allowed_parallelism, threads);
+#endif
+        auto v = hmira::voxelize(mesh, geo, {.threads = threads});
+        ASSERT_TRUE(v);
+        runs.emplace_back(v->voxels.words().begin(), v->voxels.words().end());
+    }
+    EXPECT_TRUE(runs[1] == runs[0]);
+    EXPECT_TRUE(runs[2] == runs[0]);
+}
+
+TEST(Voxelize, works_on_halfedge_mesh_and_writable_grids) {
+    auto g = hmira::sample_function(hmira::cube_geometry(24, -1, 1), hmira::torus_field{{0, 0, 0}, 0.6, 0.25});
+    hmira::halfedge_mesh he;
+    ASSERT_TRUE(hmira::marching_cubes(he, *g));
+    const auto geo = box_geometry(30, 1.0);
+    auto bits = hmira::voxelize(he, geo);
+    ASSERT_TRUE(bits);
+    EXPECT_TRUE(bits->filled);
+    hmira::dense_grid<float> dense(geo, 7.0f);
+    auto v = hmira::voxelize_into(he, dense);
+    ASSERT_TRUE(v);
+    std::size_t ones = 0;
+    for (float x : dense.values()) {
+        EXPECT_TRUE(x == 0.0f || x == 1.0f);
+        ones += x == 1.0f;
+    }
+    EXPECT_EQ(ones, bits->voxels.count());
+    EXPECT_EQ(bits->voxels.value(15, 15, 15), 0);  // the torus's hole
+}
+
+TEST(VoxelizeBadInput, nan_positions_degenerate_triangles_and_bad_grids_are_refused) {
+    const hmira::grid_geometry geo{{8, 8, 8}, {0, 0, 0}, {1, 1, 1}};
+    hmira::face_vertex_mesh m;
+    auto a = m.add_vertex({1, 1, 1}), b = m.add_vertex({2, 1, 1}), c = m.add_vertex({3, 1, 1});
+    ASSERT_TRUE(m.add_face({a, b, c}));  // collinear: zero area
+    auto deg = hmira::voxelize(m, geo);
+    ASSERT_FALSE(deg);
+    EXPECT_EQ(deg.error().code, hmira::errc::degenerate_face);
+    EXPECT_NE(deg.error().message.find("zero area"), std::string::npos);
+    EXPECT_TRUE(hmira::voxelize(m, geo, {.allow_degenerate = true}));
+
+    hmira::face_vertex_mesh n;
+    auto p = n.add_vertex({1, 1, 1}), q = n.add_vertex({2, std::nan(""), 1}), r = n.add_vertex({1, 3, 1});
+    ASSERT_TRUE(n.add_face({p, q, r}));
+    auto bad = hmira::voxelize(n, geo);
+    ASSERT_FALSE(bad);
+    EXPECT_NE(bad.error().message.find("non-finite"), std::string::npos);
+
+    const auto sphere = sphere_mesh(0.5, 16);
+    EXPECT_FALSE(hmira::voxelize(sphere, hmira::grid_geometry{{8, 0, 8}, {0, 0, 0}, {1, 1, 1}}));
+    auto zero = hmira::voxelize(sphere, hmira::grid_geometry{{8, 8, 8}, {0, 0, 0}, {0, 1, 1}});
+    ASSERT_FALSE(zero);
+    EXPECT_NE(zero.error().message.find("spacing"), std::string::npos);
+    EXPECT_FALSE(hmira::voxel_grid_around(hmira::face_vertex_mesh{}, 32));
+}
+
+std::filesystem::path data_dir() {
+    const char* d = std::getenv("HMIRA_TEST_DATA");
+    return d ? std::filesystem::path(d) : std::filesystem::path();
+}
+
+class RealMesh : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(RealMesh, voxelize_then_marching_cubes_is_closed_with_volume_within_one_voxel_layer) {
+    const auto path = data_dir() / "meshes" / GetParam();
+    if (data_dir().empty() || !std::filesystem::exists(path)) GTEST_SKIP() << "test data not found: " << path;
+    hmira::face_vertex_mesh mesh;
+    ASSERT_TRUE(hmira::io::read_off(mesh, path));
+    const auto topo = hmira::mesh_topology(mesh);
+    ASSERT_TRUE(topo.closed()) << GetParam() << " is expected to be closed";
+    const double volume = std::abs(hmira_test::signed_volume(mesh));
+    auto geo = hmira::voxel_grid_around(mesh, real_res, 2);
+    ASSERT_TRUE(geo);
+    auto vox = hmira::voxelize(mesh, *geo, {.allow_degenerate = true});
+    ASSERT_TRUE(vox) << vox.error().message;
+    ASSERT_TRUE(vox->filled) << vox->note;
+    hmira::face_vertex_mesh back;
+    ASSERT_TRUE(hmira::marching_cubes(back, vox->voxels, {.iso = 0.5, .inside = hmira::iso_inside::above}));
+    EXPECT_TRUE(hmira_test::is_valid(back));
+    const auto t = hmira::mesh_topology(back);
+    EXPECT_TRUE(t.closed());
+    const double h = geo->spacing.x;
+    const double got = hmira_test::signed_volume(back);
+    EXPECT_GT(got, 0);
+    EXPECT_NEAR(got, volume, area(mesh) * h) << "volume off by more than one voxel layer";
+    // Every voxel of a conservative voxelization that holds a vertex is set.
+    for (auto v : mesh.vertices()) {
+        const auto p = mesh.position(v);
+        const auto i = std::size_t(std::lround((p.x - geo->origin.x) / h)), j = std::size_t(std::lround((p.y - geo->origin.y) / h)),
+                   k = std::size_t(std::lround((p.z - geo->origin.z) / h));
+        ASSERT_EQ(vox->voxels.value(i, j, k), 1);
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Closed, RealMesh, ::testing::Values("elephant.off", "fandisk.off"));
+
+}  // namespace
