@@ -250,22 +250,37 @@ result<delaunay_triangles> delaunay_triangulation(const R& points, const delauna
 
     // Number the distinct points by the first input index of each group.
     delaunay_triangles out;
-    std::vector<std::uint32_t> first(n, 0xFFFFFFFFu);  // by canonical rank
-    for (std::size_t r = 0; r < n; ++r) first[canon[r]] = std::min(first[canon[r]], order[r]);
-    std::vector<std::uint32_t> rank_of(n);
-    for (std::size_t r = 0; r < n; ++r) rank_of[order[r]] = static_cast<std::uint32_t>(r);
     std::vector<std::uint32_t> out_id(n, 0xFFFFFFFFu);  // by canonical rank
-    out.input_to_vertex.resize(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        const std::uint32_t c = canon[rank_of[i]];
-        if (first[c] == i) {
-            out_id[c] = static_cast<std::uint32_t>(out.vertex_to_input.size());
-            out.vertex_to_input.push_back(static_cast<std::uint32_t>(i));
+    bool has_duplicates = false;
+    for (std::size_t r = 0; r < n; ++r) has_duplicates |= canon[r] != r;
+    if (!has_duplicates) {
+        // The common case: output vertex i is input point i, and no scattered remapping.
+        out_id = order;
+        out.input_to_vertex.resize(n);
+        out.vertex_to_input.resize(n);
+        out.points.resize(n);
+        for (std::size_t i = 0; i < n; ++i) {
+            out.input_to_vertex[i] = out.vertex_to_input[i] = static_cast<std::uint32_t>(i);
+            out.points[i] = read_point(std::ranges::begin(points)[i]);
         }
-        out.input_to_vertex[i] = out_id[c];
+    } else {
+        std::vector<std::uint32_t> first(n, 0xFFFFFFFFu);  // by canonical rank
+        for (std::size_t r = 0; r < n; ++r) first[canon[r]] = std::min(first[canon[r]], order[r]);
+        std::vector<std::uint32_t> rank_of(n);
+        for (std::size_t r = 0; r < n; ++r) rank_of[order[r]] = static_cast<std::uint32_t>(r);
+        out.input_to_vertex.resize(n);
+        for (std::size_t i = 0; i < n; ++i) {
+            const std::uint32_t c = canon[rank_of[i]];
+            if (first[c] == i) {
+                out_id[c] = static_cast<std::uint32_t>(out.vertex_to_input.size());
+                out.vertex_to_input.push_back(static_cast<std::uint32_t>(i));
+            }
+            out.input_to_vertex[i] = out_id[c];
+        }
+        out.points.resize(out.vertex_to_input.size());
+        for (std::size_t v = 0; v < out.points.size(); ++v)
+            out.points[v] = read_point(std::ranges::begin(points)[out.vertex_to_input[v]]);
     }
-    out.points.resize(out.vertex_to_input.size());
-    for (std::size_t v = 0; v < out.points.size(); ++v) out.points[v] = read_point(std::ranges::begin(points)[out.vertex_to_input[v]]);
 
     // Finite triangles; remember each slot's output index for the Voronoi dual.
     const std::uint32_t slots = tri.triangle_count();

@@ -26,23 +26,23 @@ struct xy {
 // ---------------------------------------------------------------------------------------------
 // Spatial sorting
 
-/// Position of cell (x, y) along the Hilbert curve filling a 2^bits x 2^bits grid.
+/// Position of cell (x, y) along the Hilbert curve filling a 2^bits x 2^bits grid. Branch-free:
+/// the quadrant bits are random for scattered points, so branches would mispredict half the time.
 inline std::uint32_t hilbert_index(std::uint32_t x, std::uint32_t y, int bits) noexcept {
     std::uint32_t d = 0;
-    for (std::uint32_t s = 1u << (bits - 1); s > 0; s >>= 1) {
-        const std::uint32_t rx = (x & s) ? 1u : 0u;
-        const std::uint32_t ry = (y & s) ? 1u : 0u;
-        d += s * s * ((3u * rx) ^ ry);
-        // Rotate the quadrant so that the curve inside it starts and ends where it should.
-        if (ry == 0) {
-            if (rx == 1) {
-                x = s - 1 - (x & (s - 1));
-                y = s - 1 - (y & (s - 1));
-            }
-            const std::uint32_t t = x;
-            x = y;
-            y = t;
-        }
+    for (int i = bits - 1; i >= 0; --i) {
+        const std::uint32_t rx = (x >> i) & 1u;
+        const std::uint32_t ry = (y >> i) & 1u;
+        d = (d << 2) | ((3u * rx) ^ ry);
+        // Rotate the quadrant so that the curve inside it starts and ends where it should:
+        // in the lower-right quadrant reflect (complement the lower bits), in both lower
+        // quadrants swap x and y. Bits at and above i are never read again.
+        const std::uint32_t flip = 0u - (rx & (ry ^ 1u));
+        x ^= flip;
+        y ^= flip;
+        const std::uint32_t swap = (x ^ y) & (0u - (ry ^ 1u));
+        x ^= swap;
+        y ^= swap;
     }
     return d;
 }
