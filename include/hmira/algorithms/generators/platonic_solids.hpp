@@ -42,7 +42,7 @@ result<generated_elements<M, T>> add_solid(M& mesh, std::span<const std::array<d
         const auto q = vec3<double>{p[0], p[1], p[2]} * options.scale + options.center;
         out.vertices.push_back(T::add_vertex(mesh, vec3<S>{static_cast<S>(q.x), static_cast<S>(q.y), static_cast<S>(q.z)}));
     }
-    std::array<typename T::vertex_handle, N> corner{};
+    std::array<typename T::vertex_handle, N> corner;  // not `{}`: some handles (OpenMesh) have an explicit default constructor
     for (const auto& f : faces) {
         for (std::size_t i = 0; i < N; ++i) corner[i] = out.vertices[static_cast<std::size_t>(f[i])];
         auto added = T::add_face(mesh, std::span<const typename T::vertex_handle>(corner));

@@ -1,0 +1,228 @@
+// hmira/interop/cgal.hpp
+// mesh_traits for CGAL::Surface_mesh<Point_3> (CGAL 5.5), so every hmira algorithm runs on the
+// user's Surface_mesh in place: its own indices, its halfedges navigated directly, no copy.
+// Needs CGAL (GPL-3.0-or-later / LGPL-3.0-or-later for the parts used); link hmira::cgal.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <type_traits>
+
+#include <CGAL/Kernel_traits.h>
+#include <CGAL/Surface_mesh.h>
+
+#include "../concepts.hpp"
+#include "../core/result.hpp"
+#include "../core/vec3.hpp"
+#include "../meshes/detail/element_range.hpp"
+#include "../traits.hpp"
+
+namespace hmira {
+
+namespace cgal_detail {
+
+/// Live elements of one kind in index order; elements CGAL marks removed are skipped (only
+/// checked while the mesh has garbage).
+template <class Mesh, class Index>
+class element_range : public std::ranges::view_interface<element_range<Mesh, Index>> {
+public:
+    class iterator {
+    public:
+        using value_type = Index;
+        using difference_type = std::ptrdiff_t;
+        using iterator_concept = std::forward_iterator_tag;
+        iterator() = default;
+        iterator(const Mesh* m, std::size_t i, std::size_t bound, bool skip) : m_(m), i_(i), bound_(bound), skip_(skip) { advance(); }
+        Index operator*() const noexcept { return Index(static_cast<typename Mesh::size_type>(i_)); }
+        iterator& operator++() noexcept { ++i_; advance(); return *this; }
+        iterator operator++(int) noexcept { auto t = *this; ++*this; return t; }
+        friend bool operator==(const iterator& a, const iterator& b) noexcept { return a.i_ == b.i_; }
+    private:
+        void advance() noexcept {
+            if (skip_)
+                while (i_ < bound_ && m_->is_removed(Index(static_cast<typename Mesh::size_type>(i_)))) ++i_;
+        }
+        const Mesh* m_ = nullptr;
+        std::size_t i_ = 0, bound_ = 0;
+        bool skip_ = false;
+    };
+    element_range() = default;
+    element_range(const Mesh& m, std::size_t bound) : m_(&m), bound_(bound), skip_(m.has_garbage()) {}
+    iterator begin() const { return iterator(m_, 0, bound_, skip_); }
+    iterator end() const { return iterator(m_, bound_, bound_, false); }
+private:
+    const Mesh* m_ = nullptr;
+    std::size_t bound_ = 0;
+    bool skip_ = false;
+};
+
+template <class Mesh>
+struct steps {
+    using H = typename Mesh::Halfedge_index;
+    struct loop {
+        static H step(const Mesh& m, H h) { return m.next(h); }
+    };
+    struct loop_halfedge : loop {
+        static H value(const Mesh&, H h) { return h; }
+    };
+    struct loop_vertex : loop {
+        static typename Mesh::Vertex_index value(const Mesh& m, H h) { return m.target(h); }
+    };
+    struct outgoing {
+        static H step(const Mesh& m, H h) { return m.next(m.opposite(h)); }
+    };
+    struct outgoing_halfedge : outgoing {
+        static H value(const Mesh&, H h) { return h; }
+    };
+    struct outgoing_target : outgoing {
+        static typename Mesh::Vertex_index value(const Mesh& m, H h) { return m.target(h); }
+    };
+    struct outgoing_edge : outgoing {
+        static typename Mesh::Edge_index value(const Mesh& m, H h) { return m.edge(h); }
+    };
+};
+
+}  // namespace cgal_detail
+
+/// CGAL::Surface_mesh: halfedge navigation, indices, positions, polygon building and raw
+/// mutation, on the user's object.
+///
+/// Surface_mesh stores an *incoming* halfedge per vertex (a border one on the border); hmira's
+/// vertex_halfedge is outgoing, so it is read as the next border halfedge or the opposite, and
+/// set_vertex_halfedge stores the matching incoming one (keeping CGAL's border convention when
+/// the links already allow it). erase_* call Surface_mesh's remove_*, which marks the element
+/// removed and reuses one of its links for CGAL's free list: read an element before erasing it.
+/// Not change-counted: Surface_mesh keeps no counter and has no mesh-wide property to hold one.
+template <class P>
+struct mesh_traits<CGAL::Surface_mesh<P>> {
+    using mesh = CGAL::Surface_mesh<P>;
+    using vertex_handle = typename mesh::Vertex_index;
+    using face_handle = typename mesh::Face_index;
+    using edge_handle = typename mesh::Edge_index;
+    using halfedge_handle = typename mesh::Halfedge_index;
+    using scalar = std::remove_cvref_t<decltype(std::declval<const P&>().x())>;
+    using VH = vertex_handle;
+    using FH = face_handle;
+    using EH = edge_handle;
+    using HH = halfedge_handle;
+    using S = cgal_detail::steps<mesh>;
+    template <class Policy>
+    using loop = detail::loop_range<mesh, HH, Policy>;
+
+    // ----- whole structure ----------------------------------------------------------------------
+    static cgal_detail::element_range<mesh, VH> vertices(const mesh& m) { return {m, m.num_vertices()}; }
+    static cgal_detail::element_range<mesh, FH> faces(const mesh& m) { return {m, m.num_faces()}; }
+    static cgal_detail::element_range<mesh, EH> edges(const mesh& m) { return {m, m.num_edges()}; }
+    static cgal_detail::element_range<mesh, HH> halfedges(const mesh& m) { return {m, m.num_halfedges()}; }
+    static std::size_t vertex_count(const mesh& m) { return m.number_of_vertices(); }
+    static std::size_t face_count(const mesh& m) { return m.number_of_faces(); }
+    static std::size_t edge_count(const mesh& m) { return m.number_of_edges(); }
+    static std::size_t vertex_index(const mesh&, VH v) { return v.idx(); }
+    static std::size_t vertex_index_bound(const mesh& m) { return m.num_vertices(); }
+    static std::size_t face_index(const mesh&, FH f) { return f.idx(); }
+    static std::size_t face_index_bound(const mesh& m) { return m.num_faces(); }
+    static std::size_t edge_index(const mesh&, EH e) { return e.idx(); }
+    static std::size_t edge_index_bound(const mesh& m) { return m.num_edges(); }
+    static std::size_t halfedge_index(const mesh&, HH h) { return h.idx(); }
+    static std::size_t halfedge_index_bound(const mesh& m) { return m.num_halfedges(); }
+
+    // ----- halfedge navigation, O(1) ------------------------------------------------------------
+    static HH next(const mesh& m, HH h) { return m.next(h); }
+    static HH prev(const mesh& m, HH h) { return m.prev(h); }
+    static HH opposite(const mesh& m, HH h) { return m.opposite(h); }
+    static VH target(const mesh& m, HH h) { return m.target(h); }
+    static FH face(const mesh& m, HH h) { return m.face(h); }
+    static EH edge(const mesh& m, HH h) { return m.edge(h); }
+    static HH edge_halfedge(const mesh& m, EH e) { return m.halfedge(e); }
+    static HH vertex_halfedge(const mesh& m, VH v) {
+        const HH in = m.halfedge(v);
+        if (in == mesh::null_halfedge()) return in;
+        return m.face(in) == mesh::null_face() ? m.next(in) : m.opposite(in);
+    }
+    static HH face_halfedge(const mesh& m, FH f) { return m.halfedge(f); }
+    static FH null_face() { return mesh::null_face(); }
+    static HH null_halfedge() { return mesh::null_halfedge(); }
+
+    // ----- local getters at thesis cost -----------------------------------------------------------
+    static loop<typename S::loop_vertex> face_vertices(const mesh& m, FH f) { return {m, m.halfedge(f)}; }
+    static loop<typename S::outgoing_target> adjacent_vertices(const mesh& m, VH v) { return {m, vertex_halfedge(m, v)}; }
+    static loop<typename S::outgoing_edge> vertex_edges(const mesh& m, VH v) { return {m, vertex_halfedge(m, v)}; }
+    static auto vertex_faces(const mesh& m, VH v) {
+        return loop<typename S::outgoing_halfedge>(m, vertex_halfedge(m, v)) |
+               std::views::filter([&m](HH h) { return m.face(h) != mesh::null_face(); }) |
+               std::views::transform([&m](HH h) { return m.face(h); });
+    }
+    static auto adjacent_faces(const mesh& m, FH f) {
+        return loop<typename S::loop_halfedge>(m, m.halfedge(f)) |
+               std::views::filter([&m](HH h) { return m.face(m.opposite(h)) != mesh::null_face(); }) |
+               std::views::transform([&m](HH h) { return m.face(m.opposite(h)); });
+    }
+    static std::array<VH, 2> edge_vertices(const mesh& m, EH e) { return {m.source(m.halfedge(e)), m.target(m.halfedge(e))}; }
+
+    // ----- geometry ---------------------------------------------------------------------------------
+    static vec3<scalar> position(const mesh& m, VH v) {
+        const auto& p = m.point(v);
+        return {static_cast<scalar>(p.x()), static_cast<scalar>(p.y()), static_cast<scalar>(p.z())};
+    }
+    static void set_position(mesh& m, VH v, const vec3<scalar>& p) { m.point(v) = P(p.x, p.y, p.z); }
+
+    // ----- building ---------------------------------------------------------------------------------
+    static VH add_vertex(mesh& m, const vec3<scalar>& p) { return m.add_vertex(P(p.x, p.y, p.z)); }
+
+    /// CGAL's add_face (CGAL::Euler::add_face), with its failure (a null face) turned into an
+    /// error; handles are checked first so CGAL never sees a bad one.
+    static result<FH> add_face(mesh& m, std::span<const VH> vs) {
+        if (vs.size() < 3)
+            return fail(errc::degenerate_face, "add_face: a face needs at least 3 vertices, got " + std::to_string(vs.size()));
+        for (std::size_t i = 0; i < vs.size(); ++i) {
+            if (vs[i] == VH() || vs[i].idx() >= m.num_vertices() || m.is_removed(vs[i]))
+                return fail(errc::invalid_handle, "add_face: corner " + std::to_string(i) + " names a vertex that does not exist",
+                            static_cast<long long>(vs[i].idx()));
+            for (std::size_t j = 0; j < i; ++j)
+                if (vs[j] == vs[i])
+                    return fail(errc::degenerate_face, "add_face: vertex " + std::to_string(vs[i].idx()) + " appears twice in the face",
+                                static_cast<long long>(vs[i].idx()));
+        }
+        const FH f = m.add_face(vs);
+        if (f == mesh::null_face())
+            return fail(errc::non_manifold, "add_face: CGAL refused the face (it would make an edge or vertex non-manifold, or is wound against a neighbour)");
+        return f;
+    }
+
+    // ----- raw mutation -----------------------------------------------------------------------------
+    static void set_next(mesh& m, HH h, HH n) { m.set_next(h, n); }
+    static void set_target(mesh& m, HH h, VH v) { m.set_target(h, v); }
+    static void set_face(mesh& m, HH h, FH f) { m.set_face(h, f); }
+    static void set_vertex_halfedge(mesh& m, VH v, HH out) {
+        if (out == mesh::null_halfedge()) {
+            m.set_halfedge(v, out);
+            return;
+        }
+        // CGAL's convention for a border vertex: an incoming border halfedge, when the links
+        // already name one; otherwise the incoming opposite, which reads back as `out`.
+        if (m.face(out) == mesh::null_face()) {
+            const HH p = m.prev(out);
+            if (p != mesh::null_halfedge() && p.idx() < m.num_halfedges() && m.next(p) == out && m.face(p) == mesh::null_face()) {
+                m.set_halfedge(v, p);
+                return;
+            }
+        }
+        m.set_halfedge(v, m.opposite(out));
+    }
+    static void set_face_halfedge(mesh& m, FH f, HH h) { m.set_halfedge(f, h); }
+    static HH new_edge(mesh& m, VH a, VH b) {
+        const HH h = m.add_edge(a, b);  // target b
+        m.set_face(h, mesh::null_face());
+        m.set_face(m.opposite(h), mesh::null_face());
+        return h;
+    }
+    static FH new_face(mesh& m) { return m.add_face(); }
+    static void erase_edge(mesh& m, EH e) { if (!m.is_removed(e)) m.remove_edge(e); }
+    static void erase_face(mesh& m, FH f) { if (!m.is_removed(f)) m.remove_face(f); }
+    static void erase_vertex(mesh& m, VH v) { if (!m.is_removed(v)) m.remove_vertex(v); }
+};
+
+}  // namespace hmira
