@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
+#include <cstdlib>
 #include <cmath>
 #include <limits>
 #include <numeric>
@@ -299,6 +301,25 @@ TEST(delaunay, voronoi_vertices_are_circumcentres_and_edges_are_dual) {
         }
     }
     EXPECT_EQ(rays, h);
+}
+
+TEST(delaunay, hilbert_keys_visit_every_cell_once_moving_to_a_neighbour_each_step) {
+    // The spatial sort's curve: a wrong rotation would still sort, only slowly, so check it here.
+    for (int bits : {1, 2, 5, 8}) {
+        const std::uint32_t side = 1u << bits;
+        std::vector<std::array<std::uint32_t, 2>> cell(side * side, {side, side});
+        for (std::uint32_t x = 0; x < side; ++x)
+            for (std::uint32_t y = 0; y < side; ++y) {
+                const auto d = hmira::detail::delaunay::hilbert_index(x, y, bits);
+                ASSERT_LT(d, side * side);
+                ASSERT_EQ(cell[d][0], side) << "index " << d << " used twice";
+                cell[d] = {x, y};
+            }
+        for (std::size_t d = 1; d < cell.size(); ++d) {
+            const int dx = int(cell[d][0]) - int(cell[d - 1][0]), dy = int(cell[d][1]) - int(cell[d - 1][1]);
+            ASSERT_EQ(std::abs(dx) + std::abs(dy), 1) << "bits " << bits << " step " << d;
+        }
+    }
 }
 
 template <class Mesh>

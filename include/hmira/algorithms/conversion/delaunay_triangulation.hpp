@@ -343,7 +343,8 @@ result<delaunay_triangles> delaunay_triangulation(const R& points, const delauna
 /// Complexity: O(n log n) expected plus n add_vertex and ~2n add_face calls on the mesh.
 /// Preconditions: none (everything is checked).
 /// Errors: as the indexed overload, with the mesh unchanged. All-collinear input adds nothing
-/// and returns status all_collinear. If the mesh refuses a face (for example a mesh that
+/// and returns status all_collinear (vertices, faces and hull empty; the mapping still numbers
+/// the distinct points as the indexed overload does). If the mesh refuses a face (for example a mesh that
 /// already holds a conflicting face cannot, since all vertices are new) its error is returned;
 /// the vertices and faces added before it stay.
 template <class M, class T = default_traits<M>, delaunay_point_range R>
