@@ -20,6 +20,7 @@
 #include <hmira/concepts.hpp>
 
 #include "support/checks.hpp"
+#include "support/shapes.hpp"
 
 namespace hmira_test {
 
@@ -190,6 +191,25 @@ typename T::halfedge_handle find_halfedge(const M& m, typename T::vertex_handle 
         h = T::next(m, T::opposite(m, h));
     } while (h != start);
     return T::null_halfedge();
+}
+
+}  // namespace hmira_test
+
+namespace hmira_test {
+
+/// Drops deleted elements with the model's own garbage collection, where it has one.
+template <class M>
+void compact(M& m) {
+    if constexpr (requires { m.collect_garbage(); }) (void)m.collect_garbage();
+    else if constexpr (requires { m.garbage_collection(); }) m.garbage_collection();
+}
+
+/// A mesh in the suites' shapes, built through the traits.
+template <class M>
+M mesh_from(const face_list& g) {
+    M m;
+    EXPECT_TRUE(add_face_list(m, g));
+    return m;
 }
 
 }  // namespace hmira_test
