@@ -343,6 +343,159 @@ public:
             }
     }
 
+    // ----- bulk building ---------------------------------------------------------------------------
+    /// Builds a mesh from an indexed face list in one pass, with the checks add_face makes:
+    /// face i has the vertices corners[face_offsets[i] .. face_offsets[i + 1]) (so
+    /// face_offsets has one entry more than there are faces, starting at 0 and ending at
+    /// corners.size()). Vertex i is at points[i]; unused points become isolated vertices.
+    /// Vertex, face, edge and halfedge numbering: vertices and faces in input order, edges in
+    /// order of their first corner, face_vertices(f) starting at the face's first corner.
+    /// Errors (nothing is built): invalid_argument for inconsistent offsets; degenerate_face
+    /// for fewer than 3 or repeated vertices; invalid_handle for an index >= points.size();
+    /// orientation_conflict when two faces run an edge in the same direction; non_manifold for
+    /// an edge with more than two faces or a vertex whose faces form more than one fan (a
+    /// pinch, which add_face tolerates as an intermediate state but a finished mesh must not have).
+    /// Complexity O(V + C x valence) for C corners, linear in practice; no per-face allocation.
+    static result<basic_halfedge_mesh> from_polygons(std::span<const point> points, std::span<const std::uint32_t> face_offsets,
+                                                     std::span<const std::uint32_t> corners) {
+        using u32 = std::uint32_t;
+        constexpr u32 none = UINT32_MAX;
+        const std::size_t nv = points.size();
+        const std::size_t nf = face_offsets.empty() ? 0 : face_offsets.size() - 1;
+        const std::size_t nc = corners.size();
+        if ((nf == 0 && nc != 0) || (nf > 0 && (face_offsets[0] != 0 || face_offsets[nf] != nc)))
+            return fail(errc::invalid_argument, "from_polygons: face_offsets must start at 0 and end at corners.size()");
+        if (nc >= none / 2 || nv >= none)
+            return fail(errc::invalid_argument, "from_polygons: too many elements for 32-bit indices");
+
+        // Each corner's target (the next corner's vertex), and corners grouped by source vertex.
+        std::vector<u32> target(nc), stamp(nv, none), out_begin(nv + 1, 0);
+        for (std::size_t f = 0; f < nf; ++f) {
+            const u32 b = face_offsets[f], e = face_offsets[f + 1];
+            if (e < b) return fail(errc::invalid_argument, "from_polygons: face_offsets decrease at face " + std::to_string(f), static_cast<long long>(f));
+            if (e - b < 3)
+                return fail(errc::degenerate_face, "from_polygons: face " + std::to_string(f) + " has fewer than 3 vertices", static_cast<long long>(f));
+            for (u32 k = b; k < e; ++k) {
+                const u32 v = corners[k];
+                if (v >= nv)
+                    return fail(errc::invalid_handle, "from_polygons: face " + std::to_string(f) + " names vertex " + std::to_string(v) +
+                                                          ", which does not exist", static_cast<long long>(f));
+                if (stamp[v] == f)
+                    return fail(errc::degenerate_face, "from_polygons: face " + std::to_string(f) + " repeats vertex " + std::to_string(v),
+                                static_cast<long long>(f));
+                stamp[v] = static_cast<u32>(f);
+                target[k] = corners[k + 1 == e ? b : k + 1];
+                ++out_begin[v + 1];
+            }
+        }
+        for (std::size_t v = 0; v < nv; ++v) out_begin[v + 1] += out_begin[v];
+        std::vector<u32> out(nc);
+        {
+            std::vector<u32> cursor(out_begin.begin(), out_begin.end() - 1);
+            for (u32 k = 0; k < nc; ++k) out[cursor[corners[k]]++] = k;
+        }
+        // Twins: the corner running the same edge backwards; the same direction twice is an error.
+        std::vector<u32> twin(nc, none);
+        std::size_t edges = 0;
+        for (u32 k = 0; k < nc; ++k) {
+            const u32 a = corners[k], b = target[k];
+            for (u32 i = out_begin[a]; i < out_begin[a + 1]; ++i)
+                if (out[i] != k && target[out[i]] == b) {
+                    bool reverse = false;
+                    for (u32 j = out_begin[b]; j < out_begin[b + 1]; ++j) reverse |= target[out[j]] == a;
+                    return fail(reverse ? errc::non_manifold : errc::orientation_conflict,
+                                "from_polygons: edge " + std::to_string(a) + "->" + std::to_string(b) +
+                                    (reverse ? " has more than two faces" : " is run in the same direction by two faces (they are wound against each other)"),
+                                static_cast<long long>(a));
+                }
+            for (u32 j = out_begin[b]; j < out_begin[b + 1]; ++j)
+                if (target[out[j]] == a) {
+                    twin[k] = out[j];
+                    break;
+                }
+            edges += (twin[k] == none || twin[k] > k);
+        }
+        // Halfedge of each corner: 2e for the first corner of an edge, 2e + 1 for its twin or
+        // for the boundary halfedge opposite an unpaired corner.
+        basic_halfedge_mesh m;
+        std::vector<u32>& corner_h = out;  // reuse: the grouping is no longer needed after this
+        std::vector<u32> out_count(nv);
+        for (std::size_t v = 0; v < nv; ++v) out_count[v] = out_begin[v + 1] - out_begin[v];
+        {
+            u32 e = 0;
+            for (u32 k = 0; k < nc; ++k) {
+                if (twin[k] != none && twin[k] < k) continue;
+                corner_h[k] = 2 * e;
+                if (twin[k] != none) corner_h[twin[k]] = 2 * e + 1;
+                ++e;
+            }
+        }
+        m.positions_.assign(points.begin(), points.end());
+        m.vertex_out_.assign(nv, halfedge_handle{});
+        m.vertex_deleted_.assign(nv, 0);
+        m.halfedges_.resize(2 * edges);
+        m.edge_deleted_.assign(edges, 0);
+        m.faces_.resize(nf);
+        m.face_deleted_.assign(nf, 0);
+        std::fill(stamp.begin(), stamp.end(), none);  // now: the boundary halfedge leaving each vertex
+        for (std::size_t f = 0; f < nf; ++f) {
+            const u32 b = face_offsets[f], e = face_offsets[f + 1];
+            const face_handle fh(static_cast<u32>(f));
+            for (u32 k = b; k < e; ++k) {
+                const u32 h = corner_h[k];
+                m.halfedges_[h] = {vertex_handle(target[k]), fh, halfedge_handle(corner_h[k + 1 == e ? b : k + 1]),
+                                   halfedge_handle(corner_h[k == b ? e - 1 : k - 1])};
+                if (twin[k] == none) {
+                    const u32 from = target[k];  // the boundary halfedge runs target -> source
+                    if (stamp[from] != none)
+                        return fail(errc::non_manifold, "from_polygons: vertex " + std::to_string(from) +
+                                                            " joins two or more separate fans of faces", static_cast<long long>(from));
+                    stamp[from] = h ^ 1u;
+                    m.halfedges_[h ^ 1u].target = vertex_handle(corners[k]);
+                    ++out_count[from];
+                }
+            }
+            m.faces_[f].outer = halfedge_handle(corner_h[e - 1]);
+        }
+        // Boundary loops: the boundary halfedge entering a vertex continues with the one leaving it.
+        for (std::size_t v = 0; v < nv; ++v)
+            if (stamp[v] != none) {
+                const u32 hb = stamp[v];
+                const u32 to = m.halfedges_[hb].target.index;
+                const u32 nb = stamp[to];
+                if (nb == none)  // cannot happen: boundary halfedges enter and leave a vertex equally often
+                    return fail(errc::non_manifold, "from_polygons: boundary breaks off at vertex " + std::to_string(to), static_cast<long long>(to));
+                m.halfedges_[hb].next = halfedge_handle(nb);
+                m.halfedges_[nb].prev = halfedge_handle(hb);
+                m.vertex_out_[v] = halfedge_handle(hb);
+            }
+        // A vertex with no boundary keeps the halfedge of one of its corners.
+        for (u32 k = 0; k < nc; ++k) {
+            const u32 v = corners[k];
+            if (stamp[v] == none) m.vertex_out_[v] = halfedge_handle(corner_h[k]);
+        }
+        // Every outgoing halfedge of a vertex must lie in the one fan around it.
+        for (std::size_t v = 0; v < nv; ++v) {
+            const auto start = m.vertex_out_[v];
+            if (start.is_null()) continue;
+            u32 around = 0;
+            auto h = start;
+            do {
+                h = m.halfedges_[h.index ^ 1u].next;
+                ++around;
+            } while (h != start && around <= out_count[v]);
+            if (around != out_count[v])
+                return fail(errc::non_manifold, "from_polygons: vertex " + std::to_string(v) + " joins two or more separate fans of faces",
+                            static_cast<long long>(v));
+        }
+        m.vertex_props_.resize(nv);
+        m.edge_props_.resize(edges);
+        m.halfedge_props_.resize(2 * edges);
+        m.face_props_.resize(nf);
+        m.changes_ = 1;
+        return m;
+    }
+
     // ----- raw mutation (the layer Euler operators use; keeps nothing consistent) ------------------
     void set_next(halfedge_handle h, halfedge_handle n) { link(h, n); ++changes_; }
     void set_target(halfedge_handle h, vertex_handle v) { halfedges_[h.index].target = v; ++changes_; }
