@@ -59,6 +59,20 @@ namespace detail::mc {
 /// to the iso value never makes vertices on different edges coincide.
 inline constexpr double edge_margin = 1.0 / 512;
 
+// Bit count without a library call: the x86-64 baseline has no popcnt instruction, and most
+// words here are zero anyway.
+inline std::uint32_t count_bits(std::uint64_t x) noexcept {
+#if defined(__POPCNT__)
+    return static_cast<std::uint32_t>(std::popcount(x));
+#else
+    if (!x) return 0;
+    x = x - ((x >> 1) & 0x5555555555555555ull);
+    x = (x & 0x3333333333333333ull) + ((x >> 2) & 0x3333333333333333ull);
+    x = (x + (x >> 4)) & 0x0f0f0f0f0f0f0f0full;
+    return static_cast<std::uint32_t>((x * 0x0101010101010101ull) >> 56);
+#endif
+}
+
 inline std::uint64_t shr1(const std::uint64_t* a, std::size_t w, std::size_t words) noexcept {
     return (a[w] >> 1) | (w + 1 < words ? a[w + 1] << 63 : 0);
 }
@@ -69,7 +83,7 @@ inline unsigned bits2(const std::uint64_t* a, std::size_t i) noexcept {
 }
 inline std::uint32_t rank(const std::uint64_t* mask, const std::uint32_t* prefix, std::size_t i) noexcept {
     const std::size_t w = i >> 6, b = i & 63;
-    return prefix[w] + static_cast<std::uint32_t>(std::popcount(b ? mask[w] & ((std::uint64_t(1) << b) - 1) : 0));
+    return prefix[w] + (b ? count_bits(mask[w] & ((std::uint64_t(1) << b) - 1)) : 0);
 }
 
 // Packs one row's classification (bit i set: sample i is inside) and reports NaN samples.
@@ -187,9 +201,9 @@ public:
                     const std::uint64_t* a = row(j, k);
                     std::uint32_t xc = 0, yc = 0, zc = 0;
                     for (std::size_t w = 0; w < words_; ++w) {
-                        xc += static_cast<std::uint32_t>(std::popcount((a[w] ^ shr1(a, w, words_)) & x_valid(w)));
-                        if (j + 1 < ny_) yc += static_cast<std::uint32_t>(std::popcount(a[w] ^ row(j + 1, k)[w]));
-                        if (k + 1 < nz_) zc += static_cast<std::uint32_t>(std::popcount(a[w] ^ row(j, k + 1)[w]));
+                        xc += count_bits((a[w] ^ shr1(a, w, words_)) & x_valid(w));
+                        if (j + 1 < ny_) yc += count_bits(a[w] ^ row(j + 1, k)[w]);
+                        if (k + 1 < nz_) zc += count_bits(a[w] ^ row(j, k + 1)[w]);
                     }
                     xcount_[r] = xc;
                     ycount_[r] = yc;
@@ -225,6 +239,7 @@ public:
             scratch s(words_);
             for (std::size_t k = k0; k < k1; ++k)
                 for (std::size_t j = 0; j < ny_; ++j) {
+                    if (j + prefetch_distance < ny_) prefetch_row(j + prefetch_distance, k);
                     write_row_vertices(j, k, out);
                     if (j + 1 < ny_ && k + 1 < nz_) write_cube_row(j, k, s, table, out);
                 }
@@ -234,12 +249,37 @@ public:
 
 private:
     struct scratch {
-        explicit scratch(std::size_t words) : active(words), masks(8 * words), prefix(8 * (words + 1)) {}
-        std::vector<std::uint64_t> active, masks;
+        explicit scratch(std::size_t words) : active(words), cubes(words), masks(8 * words), prefix(8 * (words + 1)) {}
+        std::vector<std::uint64_t> active, cubes, masks;
         std::vector<std::uint32_t> prefix;
     };
 
     const std::uint64_t* row(std::size_t j, std::size_t k) const noexcept { return &bits_[(k * ny_ + j) * words_]; }
+
+    // The samples a row's vertices interpolate are scattered over three sample rows; asking
+    // for them a few rows ahead hides most of the memory latency of the writing pass.
+    static constexpr std::size_t prefetch_distance = 16;
+    void prefetch_row(std::size_t j, std::size_t k) const noexcept {
+        if constexpr (contiguous_voxel_grid<G>) {
+            const std::uint64_t* a = row(j, k);
+            const std::uint64_t* b = j + 1 < ny_ ? row(j + 1, k) : a;
+            const std::uint64_t* c = k + 1 < nz_ ? row(j, k + 1) : a;
+            for (std::size_t w = 0; w < words_; ++w) {
+                std::uint64_t m = (a[w] ^ shr1(a, w, words_)) | (a[w] ^ b[w]) | (a[w] ^ c[w]);
+                // One request per 16 samples (a 64-byte line of floats) is enough.
+                std::uint64_t lines = 0;
+                for (unsigned q = 0; q < 64; q += 16) lines |= ((m >> q) & 0xffff) ? (std::uint64_t(1) << q) : 0;
+                while (lines) {
+                    const std::size_t i = w * 64 + static_cast<std::size_t>(std::countr_zero(lines));
+                    lines &= lines - 1;
+                    const auto* p = data_ + i + nx_ * (j + ny_ * k);
+                    __builtin_prefetch(p);
+                    if (b != a) __builtin_prefetch(p + nx_);
+                    if (c != a) __builtin_prefetch(p + nx_ * ny_);
+                }
+            }
+        }
+    }
     std::uint64_t x_valid(std::size_t w) const noexcept {
         // Bits i < nx - 1: x-edges and cubes exist only there.
         const std::size_t lo = w * 64, n = nx_ - 1;
@@ -261,12 +301,10 @@ private:
     // Calls f(i, config) for every cube of row (j, k) with corners on both sides, in i order.
     template <class F>
     void for_each_active_cube(std::size_t j, std::size_t k, scratch& s, const F& f) const {
+        if (!find_active_cubes(j, k, s)) return;
         const std::uint64_t *a = row(j, k), *b = row(j + 1, k), *c = row(j, k + 1), *d = row(j + 1, k + 1);
         for (std::size_t w = 0; w < words_; ++w) {
-            s.active[w] = (a[w] ^ b[w]) | (a[w] ^ c[w]) | (a[w] ^ d[w]);
-        }
-        for (std::size_t w = 0; w < words_; ++w) {
-            std::uint64_t act = (s.active[w] | shr1(s.active.data(), w, words_) | (a[w] ^ shr1(a, w, words_))) & x_valid(w);
+            std::uint64_t act = s.cubes[w];
             while (act) {
                 const std::size_t i = w * 64 + static_cast<std::size_t>(std::countr_zero(act));
                 act &= act - 1;
@@ -274,6 +312,28 @@ private:
                 f(i, config);
             }
         }
+    }
+
+    // Marks in s.cubes the cubes of row (j, k) with corners on both sides; false if none.
+    bool find_active_cubes(std::size_t j, std::size_t k, scratch& s) const {
+        const std::uint64_t *a = row(j, k), *b = row(j + 1, k), *c = row(j, k + 1), *d = row(j + 1, k + 1);
+        std::uint64_t any = 0;
+        for (std::size_t w = 0; w < words_; ++w) {
+            s.active[w] = (a[w] ^ b[w]) | (a[w] ^ c[w]) | (a[w] ^ d[w]);
+            any |= s.active[w] | (a[w] ^ (a[w] >> 1));
+        }
+        if (!any) {
+            // Nothing differs within words; a flip across a word boundary may remain.
+            bool boundary = false;
+            for (std::size_t w = 0; w + 1 < words_; ++w) boundary |= ((a[w] >> 63) ^ (a[w + 1] & 1)) != 0;
+            if (!boundary) return false;
+        }
+        std::uint64_t found = 0;
+        for (std::size_t w = 0; w < words_; ++w) {
+            s.cubes[w] = (s.active[w] | shr1(s.active.data(), w, words_) | (a[w] ^ shr1(a, w, words_))) & x_valid(w);
+            found |= s.cubes[w];
+        }
+        return found != 0;
     }
 
     // The asymptotic decider on each ambiguous face: its inside corners are joined when the
@@ -387,6 +447,7 @@ private:
     void write_cube_row(std::size_t j, std::size_t k, scratch& s, const case_table& table, indexed_triangles<S>& out) const {
         // Crossing masks of the rows around this cube row and their running popcounts: the
         // rank of an edge in its row's mask is its vertex's offset within the row.
+        if (tbase_[k * ny_ + j + 1] == tbase_[k * ny_ + j]) return;  // no triangles in this cube row
         const std::size_t ra = k * ny_ + j, rb = ra + 1, rc = ra + ny_, rd = rc + 1;
         const std::uint64_t *a = row(j, k), *b = row(j + 1, k), *c = row(j, k + 1), *d = row(j + 1, k + 1);
         std::uint64_t* m = s.masks.data();
@@ -405,7 +466,7 @@ private:
         for (int q = 0; q < 8; ++q) {
             p[q * (W + 1)] = 0;
             for (std::size_t w = 0; w < W; ++w)
-                p[q * (W + 1) + w + 1] = p[q * (W + 1) + w] + static_cast<std::uint32_t>(std::popcount(m[q * W + w]));
+                p[q * (W + 1) + w + 1] = p[q * (W + 1) + w] + count_bits(m[q * W + w]);
         }
         const std::uint64_t base[8] = {vbase_[ra],
                                        vbase_[rb],

@@ -1,0 +1,127 @@
+#!/usr/bin/env python3
+"""Times the peers' marching cubes on the volumes bench_marching_cubes --export wrote, and
+prints one table with hmira's Google Benchmark results (JSON) side by side.
+
+usage: peers.py VOLUME_DIR HMIRA_JSON THREADS...
+Only the extraction is timed (the volume is already in memory, in the peer's own layout)."""
+import json
+import sys
+import time
+
+import numpy as np
+
+
+def load(volume_dir):
+    vols = []
+    with open(f"{volume_dir}/manifest.txt") as f:
+        for line in f:
+            name, nx, ny, nz, iso, inside, tris, welded, closed = line.split()
+            data = np.fromfile(f"{volume_dir}/{name}.raw", dtype="<f4").reshape(int(nz), int(ny), int(nx))
+            vols.append(dict(name=name, dims=(int(nx), int(ny), int(nz)), iso=float(iso), inside=inside,
+                             data=data, hmira_tris=int(tris), hmira_welded=welded, hmira_closed=closed))
+    return vols
+
+
+def best_of(fn, repeat):
+    best, out = float("inf"), None
+    for _ in range(repeat):
+        t0 = time.perf_counter()
+        out = fn()
+        best = min(best, time.perf_counter() - t0)
+    return best * 1000.0, out
+
+
+def mesh_state(verts, faces):
+    """(welded, closed): no two vertices share a position; every edge has exactly two faces."""
+    verts = np.asarray(verts, dtype=np.float64)
+    faces = np.asarray(faces, dtype=np.int64).reshape(-1, 3)
+    welded = len(np.unique(verts, axis=0)) == len(verts)
+    e = np.concatenate([faces[:, [0, 1]], faces[:, [1, 2]], faces[:, [2, 0]]])
+    e.sort(axis=1)
+    _, counts = np.unique(e[:, 0] * (len(verts) + 1) + e[:, 1], return_counts=True)
+    closed = bool(np.all(counts == 2))
+    return ("welded" if welded else "unwelded"), ("closed" if closed else "open")
+
+
+def vtk_image(vol):
+    import vtk
+    from vtk.util import numpy_support
+    img = vtk.vtkImageData()
+    img.SetDimensions(*vol["dims"])
+    arr = numpy_support.numpy_to_vtk(vol["data"].ravel(order="C"), deep=False, array_type=vtk.VTK_FLOAT)
+    img.GetPointData().SetScalars(arr)
+    return img
+
+
+def vtk_run(cls, vol, threads):
+    import vtk
+    from vtk.util import numpy_support
+    vtk.vtkSMPTools.SetBackend("STDThread")
+    vtk.vtkSMPTools.Initialize(threads)
+    img = vtk_image(vol)
+    f = cls()
+    f.SetInputData(img)
+    f.SetValue(0, vol["iso"])
+    f.ComputeNormalsOff()
+    f.ComputeScalarsOff()
+    if hasattr(f, "ComputeGradientsOff"):
+        f.ComputeGradientsOff()
+
+    def run():
+        f.Modified()
+        f.Update()
+        return f.GetOutput()
+    ms, out = best_of(run, 3)
+    pts = numpy_support.vtk_to_numpy(out.GetPoints().GetData()) if out.GetNumberOfPoints() else np.zeros((0, 3))
+    polys = numpy_support.vtk_to_numpy(out.GetPolys().GetConnectivityArray()) if out.GetNumberOfPolys() else np.zeros(0)
+    return ms, out.GetNumberOfPolys(), mesh_state(pts, polys)
+
+
+def skimage_run(vol):
+    from skimage import measure
+    data = np.ascontiguousarray(vol["data"].transpose(2, 1, 0))  # (x, y, z) indexing like the others
+    ms, (v, f, _, _) = best_of(lambda: measure.marching_cubes(data, vol["iso"]), 2)
+    return ms, len(f), mesh_state(v, f)
+
+
+def mcubes_run(vol):
+    import mcubes
+    data = np.ascontiguousarray(vol["data"].transpose(2, 1, 0).astype(np.float64))
+    ms, (v, f) = best_of(lambda: mcubes.marching_cubes(data, vol["iso"]), 2)
+    return ms, len(f), mesh_state(v, f)
+
+
+def main():
+    volume_dir, hmira_json, threads = sys.argv[1], sys.argv[2], [int(t) for t in sys.argv[3:]]
+    with open(hmira_json) as f:
+        hm = {b["name"]: b["real_time"] for b in json.load(f)["benchmarks"] if b.get("run_type", "iteration") == "iteration"}
+    import vtk
+    rows = []
+    for vol in load(volume_dir):
+        for t in threads:
+            h = hm.get(f"hmira_mc/{vol['name']}/{t}/min_time:0.500/real_time")
+            if h is None:
+                h = next((v for k, v in hm.items() if k.startswith(f"hmira_mc/{vol['name']}/{t}/")), float("nan"))
+            peers = [("vtkFlyingEdges3D", vtk_run(vtk.vtkFlyingEdges3D, vol, t)),
+                     ("vtkMarchingCubes", vtk_run(vtk.vtkMarchingCubes, vol, t))]
+            if t == 1:  # single-threaded libraries
+                peers += [("skimage", skimage_run(vol)), ("PyMCubes", mcubes_run(vol))]
+            for peer, (ms, ntris, (welded, closed)) in peers:
+                rows.append((vol["name"], t, h, peer, ms, h / ms, vol["hmira_tris"], ntris, welded, closed,
+                             f"{vol['hmira_welded']}/{vol['hmira_closed']}"))
+            print(f"# done {vol['name']} threads={t}", file=sys.stderr, flush=True)
+    hdr = ("volume", "thr", "hmira ms", "peer", "peer ms", "hmira/peer", "hmira tris", "peer tris", "peer output", "hmira output")
+    print("| " + " | ".join(hdr) + " |")
+    print("|" + "---|" * len(hdr))
+    for (name, t, h, peer, ms, ratio, ht, pt, welded, closed, hstate) in rows:
+        print(f"| {name} | {t} | {h:.1f} | {peer} | {ms:.1f} | {ratio:.2f} | {ht} | {pt} | {welded}/{closed} | {hstate} |")
+    # hmira's own scaling
+    for vol in load(volume_dir):
+        one = hm.get(f"hmira_mc/{vol['name']}/1/min_time:0.500/real_time")
+        two = hm.get(f"hmira_mc/{vol['name']}/2/min_time:0.500/real_time")
+        if one and two:
+            print(f"hmira {vol['name']}: 2 threads / 1 thread = {two / one:.2f}")
+
+
+if __name__ == "__main__":
+    main()
