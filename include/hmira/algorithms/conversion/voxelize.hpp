@@ -251,6 +251,44 @@ result<voxelization> voxelize(const M& mesh, const grid_geometry& grid, const vo
         return a <= b;
     };
 
+    auto set_voxel = [&](long long i, long long j, long long k) {
+        std::atomic_ref<std::uint64_t>(vox.row(std::size_t(j), std::size_t(k))[std::size_t(i) >> 6])
+            .fetch_or(std::uint64_t(1) << (std::size_t(i) & 63), std::memory_order_relaxed);
+    };
+    // The voxels a triangle touches: walk the columns along the normal's dominant axis d; in
+    // each column only the few voxels within the plane's range over the column can touch it.
+    auto surface_voxels = [&](const tri& tr, const vec3<double>& lo, const vec3<double>& hi) {
+        long long r0[3], r1[3];
+        for (std::size_t a = 0; a < 3; ++a)
+            if (!clamp_index(lo[a] - 0.5, hi[a] + 0.5, grid.dims[a], r0[a], r1[a])) return;
+        if (r0[0] == r1[0] && r0[1] == r1[1] && r0[2] == r1[2]) {  // inside one voxel's box
+            set_voxel(r0[0], r0[1], r0[2]);
+            return;
+        }
+        const vec3<double> n = cross(tr.p[1] - tr.p[0], tr.p[2] - tr.p[0]);
+        const std::size_t d = std::abs(n.x) >= std::abs(n.y) ? (std::abs(n.x) >= std::abs(n.z) ? 0 : 2) : (std::abs(n.y) >= std::abs(n.z) ? 1 : 2);
+        const std::size_t u = (d + 1) % 3, v = (d + 2) % 3;
+        const double c = dot(n, tr.p[0]);
+        const double slack = 0.5 * (std::abs(n[u]) + std::abs(n[v])) / std::abs(n[d]);
+        const detail::triangle_box_tester tester(tr.p[0], tr.p[1], tr.p[2], 0.5);
+        long long idx[3];
+        for (long long iu = r0[u]; iu <= r1[u]; ++iu)
+            for (long long iv = r0[v]; iv <= r1[v]; ++iv) {
+                const double w = (c - n[u] * double(iu) - n[v] * double(iv)) / n[d];
+                long long w0, w1;
+                if (!clamp_index(std::max(w - slack, lo[d]) - 0.5, std::min(w + slack, hi[d]) + 0.5, grid.dims[d], w0, w1)) continue;
+                w0 = std::max(w0, r0[d]);
+                w1 = std::min(w1, r1[d]);
+                idx[u] = iu;
+                idx[v] = iv;
+                for (long long iw = w0; iw <= w1; ++iw) {
+                    idx[d] = iw;
+                    if (tester.overlaps({double(idx[0]), double(idx[1]), double(idx[2])}))
+                        set_voxel(idx[0], idx[1], idx[2]);
+                }
+            }
+    };
+
     detail::with_thread_count(options.threads, [&] {
         // Surface voxels and ray crossings, one triangle at a time.
         detail::parallel_chunks(tris.size(), 1024, [&](std::size_t t0, std::size_t t1) {
@@ -262,21 +300,8 @@ result<voxelization> voxelize(const M& mesh, const grid_geometry& grid, const vo
                         lo[a] = std::min(lo[a], tr.p[c][a]);
                         hi[a] = std::max(hi[a], tr.p[c][a]);
                     }
-                long long i0, i1, j0, j1, k0, k1;
-                if (!tr.degenerate && clamp_index(lo.x - 0.5, hi.x + 0.5, nx, i0, i1) &&
-                    clamp_index(lo.y - 0.5, hi.y + 0.5, ny, j0, j1) && clamp_index(lo.z - 0.5, hi.z + 0.5, nz, k0, k1)) {
-                    const bool single = i0 == i1 && j0 == j1 && k0 == k1;
-                    for (long long k = k0; k <= k1; ++k)
-                        for (long long j = j0; j <= j1; ++j) {
-                            std::uint64_t* row = vox.row(std::size_t(j), std::size_t(k));
-                            for (long long i = i0; i <= i1; ++i) {
-                                if (!single && !detail::triangle_box_overlap({double(i), double(j), double(k)}, 0.5, tr.p[0], tr.p[1], tr.p[2]))
-                                    continue;
-                                std::atomic_ref<std::uint64_t>(row[std::size_t(i) >> 6])
-                                    .fetch_or(std::uint64_t(1) << (std::size_t(i) & 63), std::memory_order_relaxed);
-                            }
-                        }
-                }
+                long long j0, j1, k0, k1;
+                if (!tr.degenerate) surface_voxels(tr, lo, hi);
                 if (toggles.empty()) continue;
                 // Rays along x through voxel centres (j, k) inside the triangle's shadow.
                 using detail::vox::point2;

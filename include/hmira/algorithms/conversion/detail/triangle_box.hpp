@@ -38,4 +38,44 @@ inline bool triangle_box_overlap(const vec3<double>& center, double h, vec3<doub
     return true;
 }
 
+/// The same test prepared once per triangle for many boxes of one half-size: the plane and
+/// the nine edge axes with the triangle's projection interval widened by the box's radius on
+/// each, so a box costs ten dot products with its centre.
+class triangle_box_tester {
+public:
+    triangle_box_tester(const vec3<double>& a, const vec3<double>& b, const vec3<double>& c, double h) {
+        const vec3<double> e[3] = {b - a, c - b, a - c};
+        add(cross(e[0], e[1]), a, b, c, h);
+        for (const auto& ed : e) {
+            add({0, -ed.z, ed.y}, a, b, c, h);
+            add({ed.z, 0, -ed.x}, a, b, c, h);
+            add({-ed.y, ed.x, 0}, a, b, c, h);
+        }
+    }
+    /// Whether the closed box of half-size h around `center` meets the triangle (the box
+    /// normals are the caller's: bounding boxes must overlap).
+    bool overlaps(const vec3<double>& center) const noexcept {
+        bool ok = true;
+        for (int q = 0; q < 10; ++q) {
+            const double p = axis_[q].x * center.x + axis_[q].y * center.y + axis_[q].z * center.z;
+            ok &= (p >= lo_[q]) & (p <= hi_[q]);
+        }
+        return ok;
+    }
+
+private:
+    void add(const vec3<double>& u, const vec3<double>& a, const vec3<double>& b, const vec3<double>& c, double h) {
+        const double pa = dot(u, a), pb = dot(u, b), pc = dot(u, c);
+        const double r = h * (std::abs(u.x) + std::abs(u.y) + std::abs(u.z));
+        // Separated when min(p) - centre > r or max(p) - centre < -r.
+        axis_[n_] = u;
+        lo_[n_] = std::min({pa, pb, pc}) - r;
+        hi_[n_] = std::max({pa, pb, pc}) + r;
+        ++n_;
+    }
+    vec3<double> axis_[10];
+    double lo_[10], hi_[10];
+    int n_ = 0;
+};
+
 }  // namespace hmira::detail
