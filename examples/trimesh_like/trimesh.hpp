@@ -15,7 +15,6 @@
 
 #include <hmira/concepts.hpp>
 
-// [struct]
 namespace lab {  // "your" code, written the Trimesh way
 
 struct trimesh {
@@ -85,7 +84,6 @@ private:
 };
 
 }  // namespace lab
-// [struct]
 
 namespace lab::detail {
 

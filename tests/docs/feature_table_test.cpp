@@ -91,10 +91,13 @@ using models = model_list<hmira::face_vertex_mesh, hmira::halfedge_mesh, hmira::
 // `supported` is the claim; `compile` odr-uses the call in a lambda, so when the claim is "yes"
 // the algorithm's body is instantiated for the model here and must compile.
 
-#define HMIRA_ROW(ID, NAME, HEADER, PARAMS, ...)                                                       \
+#define HMIRA_ROW(ID, NAME, HEADER, NEEDS, PARAMS, ...)                                                    \
     struct ID {                                                                                         \
         static constexpr const char* name = NAME;                                                       \
         static constexpr const char* header = HEADER;                                                   \
+        static constexpr const char* needs_name = #NEEDS;                                               \
+        template <class M>                                                                              \
+        static constexpr bool needs = NEEDS<M>;                                                         \
         template <class M, class T = hmira::default_traits<M>>                                          \
         static constexpr bool supported = requires PARAMS { __VA_ARGS__; };                                 \
         template <class M, class T = hmira::default_traits<M>>                                          \
@@ -106,35 +109,35 @@ using models = model_list<hmira::face_vertex_mesh, hmira::halfedge_mesh, hmira::
     }
 
 using points2 = std::vector<std::array<double, 2>>;
-HMIRA_ROW(row_triangle_solids, "generate_tetrahedron, _octahedron, _icosahedron", "algorithms/generators/platonic_solids.hpp",
+HMIRA_ROW(row_triangle_solids, "generate_tetrahedron, _octahedron, _icosahedron", "algorithms/generators/platonic_solids.hpp", hmira::mesh_builder,
           (M & m), hmira::generate_icosahedron<M, T>(m));
-HMIRA_ROW(row_polygon_solids, "generate_cube, _dodecahedron", "algorithms/generators/platonic_solids.hpp", (M & m),
+HMIRA_ROW(row_polygon_solids, "generate_cube, _dodecahedron", "algorithms/generators/platonic_solids.hpp", hmira::polygon_mesh_builder, (M & m),
           hmira::generate_cube<M, T>(m));
-HMIRA_ROW(row_torus, "generate_torus", "algorithms/generators/torus.hpp", (M & m), hmira::generate_torus<M, T>(m));
-HMIRA_ROW(row_grid, "generate_grid", "algorithms/generators/grid.hpp", (M & m), hmira::generate_grid<M, T>(m));
-HMIRA_ROW(row_validate, "validate", "algorithms/validation/validate.hpp", (const M& m), hmira::validate<M, T>(m));
-HMIRA_ROW(row_topology, "mesh_topology, connected_components, edge_census", "algorithms/topology/mesh_topology.hpp",
+HMIRA_ROW(row_torus, "generate_torus", "algorithms/generators/torus.hpp", hmira::polygon_mesh_builder, (M & m), hmira::generate_torus<M, T>(m));
+HMIRA_ROW(row_grid, "generate_grid", "algorithms/generators/grid.hpp", hmira::mesh_builder, (M & m), hmira::generate_grid<M, T>(m));
+HMIRA_ROW(row_validate, "validate", "algorithms/validation/validate.hpp", hmira::validate_mesh, (const M& m), hmira::validate<M, T>(m));
+HMIRA_ROW(row_topology, "mesh_topology, connected_components, edge_census", "algorithms/topology/mesh_topology.hpp", hmira::mesh_topology_mesh,
           (const M& m), hmira::mesh_topology<M, T>(m));
-HMIRA_ROW(row_flip, "flip_normals", "algorithms/orientation/flip_normals.hpp", (M & m), hmira::flip_normals<M, T>(m));
-HMIRA_ROW(row_vertex_normals, "vertex_normals", "algorithms/geometry/vertex_normals.hpp", (const M& m),
+HMIRA_ROW(row_flip, "flip_normals", "algorithms/orientation/flip_normals.hpp", hmira::flip_normals_mesh, (M & m), hmira::flip_normals<M, T>(m));
+HMIRA_ROW(row_vertex_normals, "vertex_normals", "algorithms/geometry/vertex_normals.hpp", hmira::vertex_normals_mesh, (const M& m),
           hmira::vertex_normals<M, T>(m));
-HMIRA_ROW(row_euler, "Euler operators (make/kill vertex, edge-vertex, edge-face)", "algorithms/euler/euler.hpp",
+HMIRA_ROW(row_euler, "Euler operators (make/kill vertex, edge-vertex, edge-face)", "algorithms/euler/euler.hpp", hmira::euler_mutable_mesh,
           (M & m, typename T::halfedge_handle h), hmira::make_edge_face<M, T>(m, h, h));
-HMIRA_ROW(row_euler_ring, "Euler ring operators (make/kill face-ring, edge-ring)", "algorithms/euler/euler.hpp",
+HMIRA_ROW(row_euler_ring, "Euler ring operators (make/kill face-ring, edge-ring)", "algorithms/euler/euler.hpp", hmira::euler_ring_mutable_mesh,
           (M & m, typename T::halfedge_handle h), hmira::make_face_kill_ring<M, T>(m, h));
-HMIRA_ROW(row_marching_cubes, "marching_cubes (into the mesh)", "algorithms/conversion/marching_cubes.hpp",
+HMIRA_ROW(row_marching_cubes, "marching_cubes (into the mesh)", "algorithms/conversion/marching_cubes.hpp", hmira::mesh_builder,
           (M & m, const hmira::dense_grid<float>& g), hmira::marching_cubes<M, T>(m, g));
-HMIRA_ROW(row_voxelize, "voxelize", "algorithms/conversion/voxelize.hpp", (const M& m, const hmira::grid_geometry& g),
+HMIRA_ROW(row_voxelize, "voxelize", "algorithms/conversion/voxelize.hpp", hmira::voxelize_mesh, (const M& m, const hmira::grid_geometry& g),
           hmira::voxelize<M, T>(m, g));
-HMIRA_ROW(row_delaunay, "delaunay_triangulation (into the mesh)", "algorithms/conversion/delaunay_triangulation.hpp",
+HMIRA_ROW(row_delaunay, "delaunay_triangulation (into the mesh)", "algorithms/conversion/delaunay_triangulation.hpp", hmira::mesh_builder,
           (M & m, const points2& p), hmira::delaunay_triangulation<M, T>(m, p));
-HMIRA_ROW(row_read, "read_obj, read_off", "io/obj.hpp, io/off.hpp", (M & m, const std::filesystem::path& p),
+HMIRA_ROW(row_read, "read_obj, read_off", "io/obj.hpp, io/off.hpp", hmira::io::readable_mesh, (M & m, const std::filesystem::path& p),
           hmira::io::read_obj<M, T>(m, p));
-HMIRA_ROW(row_write, "write_obj, write_off", "io/obj.hpp, io/off.hpp", (const M& m, const std::filesystem::path& p),
+HMIRA_ROW(row_write, "write_obj, write_off", "io/obj.hpp, io/off.hpp", hmira::io::writable_mesh, (const M& m, const std::filesystem::path& p),
           hmira::io::write_obj<M, T>(m, p));
-HMIRA_ROW(row_adapt_brute, "adapt_brute_force (adjacency by scanning faces)", "adapters/adapted_mesh.hpp", (M & m),
+HMIRA_ROW(row_adapt_brute, "adapt_brute_force (adjacency by scanning faces)", "adapters/adapted_mesh.hpp", hmira::adapter_source_mesh, (M & m),
           hmira::adapt_brute_force<M, T>(m));
-HMIRA_ROW(row_adapt_indexed, "adapt, adapt_indexed (adjacency from an index)", "adapters/adapted_mesh.hpp", (M & m),
+HMIRA_ROW(row_adapt_indexed, "adapt, adapt_indexed (adjacency from an index)", "adapters/adapted_mesh.hpp", hmira::indexed_adapter_source_mesh, (M & m),
           hmira::adapt_indexed<M, T>(m));
 
 template <class... Rs>
@@ -226,6 +229,21 @@ std::string header_of(const std::string& row) {
     return out;
 }
 
+// The algorithm's concept as a reader would look it up: without the namespace.
+std::string needs_of(const std::string& row) {
+    std::string out;
+    [&]<class... Rs>(row_list<Rs...>) { ((row == Rs::name ? void(out = Rs::needs_name) : void()), ...); }(rows{});
+    return out.substr(out.rfind(':') + 1);
+}
+
+template <class R, class... Ms>
+constexpr bool needs_agree(model_list<Ms...>) {
+    return ((R::template supported<Ms> == R::template needs<Ms>) && ...);
+}
+// Each row's concept is the whole truth about it: the call compiles exactly where it holds.
+static_assert([]<class... Rs>(row_list<Rs...>) { return (needs_agree<Rs>(models{}) && ...); }(rows{}),
+              "a row's `needs` concept disagrees with whether its call compiles");
+
 std::string render() {
     const auto cols = column_titles(models{});
     std::ostringstream s;
@@ -236,18 +254,20 @@ std::string render() {
          "runs it on a small mesh for the models that can be built empty. Every \"no\" is a call that\n"
          "the algorithm's requires clause rejects, with a message naming the missing capability.\n"
          "A \"no\" for face-vertex models is what adapters are for: see the `face_vertex_mesh + adapt()`\n"
-         "column and [docs/own-mesh.md](own-mesh.md). Headers are under `include/hmira/`.\n\n";
+         "column and [docs/own-mesh.md](own-mesh.md). The \"needs\" column is the algorithm's concept\n"
+         "(the test checks that the call compiles exactly where it holds); [docs/concepts.md](concepts.md)\n"
+         "says what each one asks your traits for. Headers are under `include/hmira/`.\n\n";
     auto emit = [&](const char* title, const table& t, const std::vector<std::string>& order, bool with_header) {
         s << "## " << title << "\n\n| |";
-        if (with_header) s << " header |";
+        if (with_header) s << " needs | header |";
         for (const auto& c : cols) s << ' ' << c << " |";
         s << "\n|---|";
-        if (with_header) s << "---|";
+        if (with_header) s << "---|---|";
         for (std::size_t i = 0; i < cols.size(); ++i) s << ":---:|";
         s << '\n';
         for (const auto& r : order) {
             s << "| " << (with_header ? r : "`" + r + "`") << " |";
-            if (with_header) s << " `" << header_of(r) << "` |";
+            if (with_header) s << " `" << needs_of(r) << "` | `" << header_of(r) << "` |";
             for (const auto& c : cols) s << ' ' << t.at(r).at(c) << " |";
             s << '\n';
         }
