@@ -34,7 +34,7 @@ std::string data_dir() {
 // A closed mesh of about two million triangles: the gyroid's solid side cut by a ball, which
 // has many handles, as marching cubes gives it.
 hmira::face_vertex_mesh generated_mesh() {
-    const auto geo = hmira::cube_geometry(330, -1, 1);
+    const auto geo = hmira::cube_geometry(360, -1, 1);
     auto g = hmira::sample_function(geo, [](hmira::vec3<double> p) {
         const double gy = hmira::gyroid_field{3 * std::numbers::pi}(p);
         return std::max(gy, hmira::norm(p) - 0.92);

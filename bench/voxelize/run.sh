@@ -1,0 +1,20 @@
+#!/usr/bin/env bash
+# Solid voxelization, hmira against VTK vtkPolyDataToImageStencil, trimesh voxelized().fill()
+# and Open3D's (surface-only) VoxelGrid, in one run with the same grids and thread counts:
+#   bench/voxelize/run.sh            # builds into build-bench, prints a markdown table
+# trimesh takes minutes on the big cases; HMIRA_BENCH_SKIP_TRIMESH_ABOVE=<triangles x res>
+# skips it above that size (default 30000000: trimesh is skipped for the 2M-triangle mesh).
+set -euo pipefail
+root="$(cd "$(dirname "$0")/../.." && pwd)"
+build="${HMIRA_BENCH_BUILD:-$root/build-bench}"
+py="$root/.venv-bench/bin/python"
+[ -x "$py" ] || { echo "run.sh: $py missing; run scripts/bench-venv.sh" >&2; exit 1; }
+"$root/scripts/test-data.sh" "$root/build/test-data" >/dev/null
+cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DHMIRA_BUILD_BENCHMARKS=ON >/dev/null
+cmake --build "$build" --target bench_voxelize -j2 >/dev/null
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+export HMIRA_TEST_DATA="$root/build/test-data"
+"$build/bench/voxelize/bench_voxelize" --export "$work/meshes"
+"$build/bench/voxelize/bench_voxelize" --benchmark_out="$work/hmira.json" --benchmark_out_format=json >&2
+"$py" "$root/bench/voxelize/peers.py" "$work/meshes" "$work/hmira.json" 1 2
