@@ -245,15 +245,25 @@ result<voxelization> voxelize(const M& mesh, const grid_geometry& grid, const vo
     bit_grid& vox = out.voxels;
     const std::size_t words = vox.words_per_row();
     std::vector<std::uint64_t> toggles(fill && !winding ? words * ny * nz : 0, 0);
-    auto clamp_index = [](double lo, double hi, std::size_t n, long long& a, long long& b) {
-        a = std::max<long long>(0, static_cast<long long>(std::ceil(lo)));
-        b = std::min<long long>(static_cast<long long>(n) - 1, static_cast<long long>(std::floor(hi)));
+    // floor and ceil without a libm call (the x86-64 baseline has no roundsd); the clamp to
+    // +-2^40 keeps the conversion defined for far-away geometry.
+    auto fast_floor = [](double x) {
+        x = std::clamp(x, -1099511627776.0, 1099511627776.0);
+        const auto i = static_cast<long long>(x);
+        return i - (double(i) > x);
+    };
+    auto clamp_index = [&](double lo, double hi, std::size_t n, long long& a, long long& b) {
+        a = std::max<long long>(0, -fast_floor(-lo));
+        b = std::min<long long>(static_cast<long long>(n) - 1, fast_floor(hi));
         return a <= b;
     };
 
     auto set_voxel = [&](long long i, long long j, long long k) {
-        std::atomic_ref<std::uint64_t>(vox.row(std::size_t(j), std::size_t(k))[std::size_t(i) >> 6])
-            .fetch_or(std::uint64_t(1) << (std::size_t(i) & 63), std::memory_order_relaxed);
+        // Neighbouring triangles share most voxels: read first, and pay for the atomic OR only
+        // when the bit is still clear.
+        std::atomic_ref<std::uint64_t> word(vox.row(std::size_t(j), std::size_t(k))[std::size_t(i) >> 6]);
+        const std::uint64_t bit = std::uint64_t(1) << (std::size_t(i) & 63);
+        if (!(word.load(std::memory_order_relaxed) & bit)) word.fetch_or(bit, std::memory_order_relaxed);
     };
     // The voxels a triangle touches: walk the columns along the normal's dominant axis d; in
     // each column only the few voxels within the plane's range over the column can touch it.
@@ -334,7 +344,7 @@ result<voxelization> voxelize(const M& mesh, const grid_geometry& grid, const vo
                             x = (a.x + tr.p[1].x + tr.p[2].x) / 3;  // edge-on in doubles, not in fixed point
                         }
                         // Voxels with centre beyond the crossing change side.
-                        const double first = std::floor(x) + 1;
+                        const double first = double(fast_floor(x)) + 1;
                         if (first >= double(nx)) continue;
                         const std::size_t i = first <= 0 ? 0 : static_cast<std::size_t>(first);
                         std::atomic_ref<std::uint64_t>(toggles[(std::size_t(k) * ny + std::size_t(j)) * words + (i >> 6)])
