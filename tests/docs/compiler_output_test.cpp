@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <string>
 
 #include "doc_support.hpp"
 
@@ -30,6 +31,8 @@ run_result compile(const std::filesystem::path& file, const std::string& extra) 
 }
 
 TEST(compiler_output, the_quoted_compile_error_is_what_gxx_prints_for_the_missing_operation) {
+    // The guide quotes g++ 12, the project's compiler; another compiler words it differently.
+    if (std::string(HMIRA_CXX_ID).rfind("GNU-12.", 0) != 0) GTEST_SKIP() << "the quote is g++ 12's; this is " << HMIRA_CXX_ID;
     int checked = 0;
     for (const auto& b : marked_blocks(source_dir / "docs" / "own-mesh.md")) {
         if (b.kind != "compiler-output") continue;
