@@ -21,6 +21,7 @@ namespace hmira {
 /// mesh first. Only what an algorithm's concept asks for needs to be there.
 template <class Mesh>
 struct mesh_traits {
+    /// Marks the empty primary template; a specialisation has no such member.
     static constexpr bool is_unspecialised_primary_template = true;
 };
 

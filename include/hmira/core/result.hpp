@@ -28,15 +28,17 @@ enum class errc {
 /// The error half of a result: a code, a one-line message that names the element, and the
 /// element index (or -1).
 struct error {
-    errc code = errc::invalid_argument;
-    std::string message;
-    long long element = -1;
+    errc code = errc::invalid_argument;  ///< what kind of failure
+    std::string message;                ///< one line naming what failed and where
+    long long element = -1;             ///< index of the offending element, or -1
 };
 
 /// Thrown by result<T>::value() on an error, and by the few functions documented to throw.
 class hmira_error : public std::runtime_error {
 public:
+    /// Wraps an error value; what() is its message.
     explicit hmira_error(hmira::error e) : std::runtime_error(e.message), error_(std::move(e)) {}
+    /// The error value that was thrown.
     const hmira::error& error() const noexcept { return error_; }
 private:
     hmira::error error_;
@@ -46,12 +48,22 @@ private:
 template <class T>
 class [[nodiscard]] result {
 public:
+    /// A success holding v, or a failure holding e (both implicit, so functions can `return`
+    /// either).
+    ///@{
     result(T v) : data_(std::in_place_index<0>, std::move(v)) {}            // NOLINT: implicit by design
     result(hmira::error e) : data_(std::in_place_index<1>, std::move(e)) {}  // NOLINT
 
+    ///@}
+
+    /// Whether this holds a value.
+    ///@{
     bool has_value() const noexcept { return data_.index() == 0; }
     explicit operator bool() const noexcept { return has_value(); }
+    ///@}
 
+    /// The value; throws hmira_error if this holds an error.
+    ///@{
     T& value() & { check(); return std::get<0>(data_); }
     const T& value() const& { check(); return std::get<0>(data_); }
     T&& value() && { check(); return std::get<0>(std::move(data_)); }
@@ -59,7 +71,9 @@ public:
     const T& operator*() const& { return value(); }
     T* operator->() { return &value(); }
     const T* operator->() const { return &value(); }
+    ///@}
 
+    /// The error. Precondition: !has_value().
     const hmira::error& error() const& { return std::get<1>(data_); }
 
 private:
@@ -73,11 +87,19 @@ private:
 template <>
 class [[nodiscard]] result<void> {
 public:
+    /// Success (default), or a failure holding e.
+    ///@{
     result() = default;
     result(hmira::error e) : error_(std::move(e)), ok_(false) {}  // NOLINT
+    ///@}
+    /// Whether the operation succeeded.
+    ///@{
     bool has_value() const noexcept { return ok_; }
     explicit operator bool() const noexcept { return ok_; }
+    ///@}
+    /// Throws hmira_error if the operation failed.
     void value() const { if (!ok_) throw hmira_error(error_); }
+    /// The error. Precondition: !has_value().
     const hmira::error& error() const& { return error_; }
 private:
     hmira::error error_;

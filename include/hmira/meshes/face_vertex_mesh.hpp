@@ -24,7 +24,10 @@ namespace hmira {
 /// Old-to-new index maps reported by garbage collection. An entry is the element's new index,
 /// or UINT32_MAX if the element was deleted. A map is empty for a kind the mesh does not have.
 struct index_remap {
+    ///@{
+    /// Old index -> new index, per element kind.
     std::vector<std::uint32_t> vertices, edges, halfedges, faces;
+    ///@}
 };
 
 /// Indexed polygons (thesis 1.2.1).
@@ -40,15 +43,20 @@ struct index_remap {
 template <class Scalar = double>
 class basic_face_vertex_mesh {
 public:
-    using scalar = Scalar;
-    using point = vec3<Scalar>;
+    using scalar = Scalar;        ///< coordinate type
+    using point = vec3<Scalar>;   ///< position type
 
-    // ----- element counts and ranges -------------------------------------------------------
+    /// Live element counts, and index bounds (deleted elements included until collected).
+    ///@{
     std::size_t vertex_count() const noexcept { return positions_.size() - deleted_vertices_; }
     std::size_t face_count() const noexcept { return face_begin_.size() - 1 - deleted_faces_; }
     std::size_t vertex_index_bound() const noexcept { return positions_.size(); }
     std::size_t face_index_bound() const noexcept { return face_begin_.size() - 1; }
 
+    ///@}
+
+    /// Ranges over the live elements, in index order. O(1) to make; iterating is O(bound).
+    ///@{
     detail::element_range<vertex_handle> vertices() const {
         return {static_cast<std::uint32_t>(positions_.size()), deleted_vertices_ ? vertex_deleted_.data() : nullptr};
     }
@@ -56,12 +64,20 @@ public:
         return {static_cast<std::uint32_t>(face_index_bound()), deleted_faces_ ? face_deleted_.data() : nullptr};
     }
 
+    ///@}
+
+    /// Whether the handle names a live element. O(1).
+    ///@{
     bool is_valid(vertex_handle v) const noexcept { return v.index < positions_.size() && !vertex_deleted_[v.index]; }
     bool is_valid(face_handle f) const noexcept { return f.index < face_index_bound() && !face_deleted_[f.index]; }
+    ///@}
 
     // ----- geometry --------------------------------------------------------------------------
+    /// Read or move a vertex. O(1).
+    ///@{
     const point& position(vertex_handle v) const { return positions_[v.index]; }
     void set_position(vertex_handle v, const point& p) { positions_[v.index] = p; }
+    ///@}
     /// Positions indexed by vertex index (deleted vertices included until garbage collection).
     std::span<const point> positions() const noexcept { return positions_; }
 
@@ -73,6 +89,7 @@ public:
     }
 
     // ----- mutation --------------------------------------------------------------------------
+    /// Adds an isolated vertex at p. O(1).
     vertex_handle add_vertex(const point& p) {
         positions_.push_back(p);
         vertex_deleted_.push_back(0);
@@ -104,6 +121,7 @@ public:
         ++changes_;
         return face_handle(face_index_bound() - 1);
     }
+    /// add_face() for a braced list of vertices.
     result<face_handle> add_face(std::initializer_list<vertex_handle> vs) {
         return add_face(std::span<const vertex_handle>(vs.begin(), vs.size()));
     }
@@ -142,6 +160,7 @@ public:
         return {};
     }
 
+    /// Whether deleted elements wait for collect_garbage().
     bool has_garbage() const noexcept { return deleted_vertices_ + deleted_faces_ > 0; }
 
     /// Drops deleted elements and renumbers the rest in their old order; properties follow.
@@ -178,6 +197,7 @@ public:
         return map;
     }
 
+    /// Reserves storage for that many vertices, faces and face corners.
     void reserve(std::size_t vertices, std::size_t faces, std::size_t corners) {
         positions_.reserve(vertices);
         vertex_deleted_.reserve(vertices);
@@ -186,9 +206,13 @@ public:
         corners_.reserve(corners);
     }
 
+    /// Removes everything, properties included.
     void clear() { *this = basic_face_vertex_mesh(); }
 
     // ----- properties ------------------------------------------------------------------------
+    /// Per-vertex and per-face user data by name: add (or get the existing one of that name and
+    /// type; invalid if the name has another type), find, remove. See properties.hpp.
+    ///@{
     template <class T>
     property<vertex_handle, T> add_vertex_property(std::string_view name, T init = T{}) { return vertex_props_.template add<T>(name, std::move(init)); }
     template <class T>
@@ -199,6 +223,7 @@ public:
     template <class T>
     std::optional<property<face_handle, T>> get_face_property(std::string_view name) const { return face_props_.template find<T>(name); }
     bool remove_face_property(std::string_view name) { return face_props_.remove(name); }
+    ///@}
 
     /// Grows on every change of connectivity or of the element set.
     std::uint64_t change_count() const noexcept { return changes_; }

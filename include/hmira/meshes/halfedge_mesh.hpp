@@ -42,10 +42,12 @@ namespace hmira {
 template <class Scalar = double>
 class basic_halfedge_mesh {
 public:
-    using scalar = Scalar;
-    using point = vec3<Scalar>;
+    using scalar = Scalar;        ///< coordinate type
+    using point = vec3<Scalar>;   ///< position type
 
     // ----- counts and ranges -----------------------------------------------------------------
+    /// Live element counts, and index bounds (deleted elements included until collected).
+    ///@{
     std::size_t vertex_count() const noexcept { return positions_.size() - deleted_vertices_; }
     std::size_t edge_count() const noexcept { return edge_deleted_.size() - deleted_edges_; }
     std::size_t halfedge_count() const noexcept { return 2 * edge_count(); }
@@ -55,6 +57,10 @@ public:
     std::size_t halfedge_index_bound() const noexcept { return halfedges_.size(); }
     std::size_t face_index_bound() const noexcept { return faces_.size(); }
 
+    ///@}
+
+    /// Ranges over the live elements, in index order. O(1) to make; iterating is O(bound).
+    ///@{
     detail::element_range<vertex_handle> vertices() const {
         return {static_cast<std::uint32_t>(positions_.size()), deleted_vertices_ ? vertex_deleted_.data() : nullptr};
     }
@@ -64,6 +70,7 @@ public:
     detail::element_range<face_handle> faces() const {
         return {static_cast<std::uint32_t>(faces_.size()), deleted_faces_ ? face_deleted_.data() : nullptr};
     }
+    ///@}
     /// All live halfedges.
     auto halfedges() const {
         return std::views::iota(std::uint32_t{0}, static_cast<std::uint32_t>(halfedges_.size())) |
@@ -71,12 +78,22 @@ public:
                std::views::transform([](std::uint32_t i) { return halfedge_handle(i); });
     }
 
+    /// Whether the handle names a live element. O(1).
+    ///@{
     bool is_valid(vertex_handle v) const noexcept { return v.index < positions_.size() && !vertex_deleted_[v.index]; }
     bool is_valid(face_handle f) const noexcept { return f.index < faces_.size() && !face_deleted_[f.index]; }
     bool is_valid(edge_handle e) const noexcept { return e.index < edge_deleted_.size() && !edge_deleted_[e.index]; }
     bool is_valid(halfedge_handle h) const noexcept { return h.index < halfedges_.size() && !edge_deleted_[h.index >> 1]; }
 
+    ///@}
+
     // ----- navigation, all O(1) ---------------------------------------------------------------
+    /// Halfedge navigation (thesis 1.2.3), all O(1): next and previous halfedge in the loop,
+    /// the opposite halfedge (h ^ 1), end and start vertex, face (null on the boundary), edge,
+    /// an edge's halfedge i (0 or 1), a vertex's outgoing halfedge (a boundary one on the
+    /// boundary, null if isolated), a face's outer-loop halfedge, boundary tests, and an
+    /// edge's two vertices.
+    ///@{
     halfedge_handle next(halfedge_handle h) const { return halfedges_[h.index].next; }
     halfedge_handle prev(halfedge_handle h) const { return halfedges_[h.index].prev; }
     static constexpr halfedge_handle opposite(halfedge_handle h) noexcept { return halfedge_handle(h.index ^ 1u); }
@@ -99,8 +116,10 @@ public:
     std::array<vertex_handle, 2> edge_vertices(edge_handle e) const {
         return {target(edge_halfedge(e, 1)), target(edge_halfedge(e, 0))};
     }
+    ///@}
 
     // ----- circulators ----------------------------------------------------------------------------
+    /// \cond INTERNAL
     struct loop_step {
         static halfedge_handle step(const basic_halfedge_mesh& m, halfedge_handle h) { return m.next(h); }
         static halfedge_handle value(const basic_halfedge_mesh&, halfedge_handle h) { return h; }
@@ -120,15 +139,21 @@ public:
     };
     template <class Policy>
     using loop = detail::loop_range<basic_halfedge_mesh, halfedge_handle, Policy>;
+    /// \endcond
 
     /// Halfedges of the loop through h (a face's outer loop, an inner ring, or a boundary loop).
     loop<loop_step> loop_halfedges(halfedge_handle h) const { return {*this, h}; }
     /// The outer loop's vertices in winding order, starting at the first vertex given to add_face.
     loop<loop_vertex_step> face_vertices(face_handle f) const { return {*this, face_halfedge(f)}; }
+    /// The outer loop's halfedges, starting at face_halfedge(f). O(V_consistF).
     loop<loop_step> face_halfedges(face_handle f) const { return {*this, face_halfedge(f)}; }
     /// Outgoing halfedges of v, O(V_adjacentV).
     loop<outgoing_step> outgoing_halfedges(vertex_handle v) const { return {*this, vertex_halfedge(v)}; }
+    /// Neighbour vertices and incident edges of v, around its fan. O(V_adjacentV).
+    ///@{
     loop<outgoing_target_step> adjacent_vertices(vertex_handle v) const { return {*this, vertex_halfedge(v)}; }
+    ///@}
+    /// \copydoc adjacent_vertices
     loop<outgoing_edge_step> vertex_edges(vertex_handle v) const { return {*this, vertex_halfedge(v)}; }
     /// Faces around v (boundary gaps skipped), O(F_adjacentV).
     auto vertex_faces(vertex_handle v) const {
@@ -148,6 +173,7 @@ public:
         for (auto r : inner_rings(f)) collect(r);
         return out;
     }
+    /// Number of edges at v. O(V_adjacentV).
     std::size_t valence(vertex_handle v) const { return static_cast<std::size_t>(std::ranges::distance(outgoing_halfedges(v))); }
 
     /// Finds the halfedge from a to b, or null. O(V_adjacentV).
@@ -164,6 +190,7 @@ public:
         if (r == no_rings) return {};
         return ring_lists_[r];
     }
+    /// Whether f has holes. O(1).
     bool has_inner_rings(face_handle f) const { return faces_[f.index].rings != no_rings && !ring_lists_[faces_[f.index].rings].empty(); }
     /// Registers the loop through h as an inner ring of f (raw: does not set the loop's faces).
     void add_inner_ring(face_handle f, halfedge_handle h) {
@@ -198,11 +225,15 @@ public:
     }
 
     // ----- geometry ------------------------------------------------------------------------------
+    /// Read or move a vertex, O(1); all positions by vertex index.
+    ///@{
     const point& position(vertex_handle v) const { return positions_[v.index]; }
     void set_position(vertex_handle v, const point& p) { positions_[v.index] = p; }
     std::span<const point> positions() const noexcept { return positions_; }
+    ///@}
 
     // ----- building ------------------------------------------------------------------------------
+    /// Adds an isolated vertex at p. O(1).
     vertex_handle add_vertex(const point& p) {
         positions_.push_back(p);
         vertex_out_.push_back({});
@@ -212,6 +243,7 @@ public:
         return vertex_handle(positions_.size() - 1);
     }
 
+    /// add_face() for a braced list of vertices.
     result<face_handle> add_face(std::initializer_list<vertex_handle> vs) {
         return add_face(std::span<const vertex_handle>(vs.begin(), vs.size()));
     }
@@ -497,11 +529,15 @@ public:
     }
 
     // ----- raw mutation (the layer Euler operators use; keeps nothing consistent) ------------------
+    /// Raw setters, O(1): next (and the next's prev), target, face, a vertex's outgoing and a
+    /// face's outer halfedge.
+    ///@{
     void set_next(halfedge_handle h, halfedge_handle n) { link(h, n); ++changes_; }
     void set_target(halfedge_handle h, vertex_handle v) { halfedges_[h.index].target = v; ++changes_; }
     void set_face(halfedge_handle h, face_handle f) { halfedges_[h.index].face = f; ++changes_; }
     void set_vertex_halfedge(vertex_handle v, halfedge_handle h) { vertex_out_[v.index] = h; ++changes_; }
     void set_face_halfedge(face_handle f, halfedge_handle h) { faces_[f.index].outer = h; ++changes_; }
+    ///@}
 
     /// A new edge from a to b; returns the halfedge a->b. next/prev/face are unset (null face).
     halfedge_handle new_edge(vertex_handle a, vertex_handle b) {
@@ -515,6 +551,7 @@ public:
         ++changes_;
         return h;
     }
+    /// A new face with no halfedge and no rings. O(1).
     face_handle new_face() {
         faces_.push_back({});
         face_deleted_.push_back(0);
@@ -522,6 +559,8 @@ public:
         ++changes_;
         return face_handle(faces_.size() - 1);
     }
+    /// Marks an element deleted (raw: nothing is re-linked). O(1).
+    ///@{
     void erase_edge(edge_handle e) {
         if (!edge_deleted_[e.index]) { edge_deleted_[e.index] = 1; ++deleted_edges_; ++changes_; }
     }
@@ -537,6 +576,9 @@ public:
         if (!vertex_deleted_[v.index]) { vertex_deleted_[v.index] = 1; ++deleted_vertices_; ++changes_; }
     }
 
+    ///@}
+
+    /// Whether deleted elements wait for collect_garbage().
     bool has_garbage() const noexcept { return deleted_vertices_ + deleted_edges_ + deleted_faces_ > 0; }
 
     /// Drops deleted elements, renumbers the rest in their old order, rewrites every reference,
@@ -605,6 +647,7 @@ public:
         return map;
     }
 
+    /// Reserves storage for that many vertices, edges and faces.
     void reserve(std::size_t vertices, std::size_t edges, std::size_t faces) {
         positions_.reserve(vertices);
         vertex_out_.reserve(vertices);
@@ -614,9 +657,14 @@ public:
         faces_.reserve(faces);
         face_deleted_.reserve(faces);
     }
+    /// Removes everything, properties included.
     void clear() { *this = basic_halfedge_mesh(); }
 
     // ----- properties ------------------------------------------------------------------------------
+    /// Per-element user data by name for vertices, edges, halfedges and faces: add (or get the
+    /// existing one of that name and type; invalid if the name has another type), find, remove.
+    /// Properties follow garbage collection. See properties.hpp.
+    ///@{
     template <class T>
     property<vertex_handle, T> add_vertex_property(std::string_view name, T init = T{}) { return vertex_props_.template add<T>(name, std::move(init)); }
     template <class T>
@@ -637,7 +685,9 @@ public:
     template <class T>
     std::optional<property<face_handle, T>> get_face_property(std::string_view name) const { return face_props_.template find<T>(name); }
     bool remove_face_property(std::string_view name) { return face_props_.remove(name); }
+    ///@}
 
+    /// Grows on every change of connectivity or of the element set.
     std::uint64_t change_count() const noexcept { return changes_; }
 
 private:

@@ -11,19 +11,26 @@
 
 namespace hmira {
 
+/// A typed 32-bit element index; Tag makes vertex, face, edge and halfedge handles distinct types.
 template <class Tag>
 struct index_handle {
-    static constexpr std::uint32_t null_index = std::numeric_limits<std::uint32_t>::max();
-    std::uint32_t index = null_index;
+    static constexpr std::uint32_t null_index = std::numeric_limits<std::uint32_t>::max();  ///< the null handle's index
+    std::uint32_t index = null_index;  ///< the element's index in its mesh
 
+    /// The null handle by default, or the element with index i.
+    ///@{
     constexpr index_handle() = default;
     constexpr explicit index_handle(std::uint32_t i) noexcept : index(i) {}
     constexpr explicit index_handle(std::size_t i) noexcept : index(static_cast<std::uint32_t>(i)) {}
     constexpr explicit index_handle(int i) noexcept : index(static_cast<std::uint32_t>(i)) {}
 
+    ///@}
+    /// Whether this is the null handle (operator bool is the opposite).
+    ///@{
     constexpr bool is_null() const noexcept { return index == null_index; }
     constexpr explicit operator bool() const noexcept { return index != null_index; }
     friend constexpr auto operator<=>(index_handle, index_handle) = default;
+    ///@}
 };
 
 struct vertex_tag {};

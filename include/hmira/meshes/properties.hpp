@@ -66,16 +66,26 @@ private:
 template <class Handle, class T>
 class property {
 public:
+    /// An invalid property, or one referring to `array` (made by the meshes).
+    ///@{
     property() = default;
     explicit property(detail::property_array<T>* array) : array_(array) {}
+    ///@}
 
+    /// The value of element h.
+    ///@{
     decltype(auto) operator[](Handle h) { return array_->data[h.index]; }
     decltype(auto) operator[](Handle h) const { return std::as_const(array_->data)[h.index]; }
+    ///@}
+    /// Whether this refers to a property array.
     bool valid() const noexcept { return array_ != nullptr; }
+    /// The property's name.
     const std::string& name() const { return array_->name(); }
     /// All values, indexed by element index (deleted elements included until garbage collection).
+    ///@{
     std::vector<T>& values() { return array_->data; }
     const std::vector<T>& values() const { return array_->data; }
+    ///@}
 
 private:
     detail::property_array<T>* array_ = nullptr;
@@ -85,6 +95,8 @@ private:
 template <class Handle>
 class property_registry {
 public:
+    /// Empty; copies clone every array (a copied mesh owns its properties); moves keep them.
+    ///@{
     property_registry() = default;
     property_registry(const property_registry& other) : size_(other.size_) {
         for (const auto& a : other.arrays_) arrays_.push_back(a->clone());
@@ -98,6 +110,7 @@ public:
     }
     property_registry(property_registry&&) noexcept = default;
     property_registry& operator=(property_registry&&) noexcept = default;
+    ///@}
 
     /// Adds a property, or returns the existing one of the same name and type. Returns an
     /// invalid property if the name exists with another type.
@@ -113,6 +126,7 @@ public:
         return property<Handle, T>(raw);
     }
 
+    /// The property of that name and type, if there is one.
     template <class T>
     std::optional<property<Handle, T>> find(std::string_view name) const {
         for (const auto& a : arrays_)
@@ -131,12 +145,16 @@ public:
         return false;
     }
 
+    /// Names of all properties, in creation order.
     std::vector<std::string> names() const {
         std::vector<std::string> out;
         for (const auto& a : arrays_) out.push_back(a->name());
         return out;
     }
 
+    /// Element bookkeeping done by the meshes: one more element, n elements, and compaction
+    /// keeping element i at old_to_new[i] (UINT32_MAX: dropped).
+    ///@{
     void push_back() {
         ++size_;
         for (auto& a : arrays_) a->push_back();
@@ -149,6 +167,8 @@ public:
         size_ = new_size;
         for (auto& a : arrays_) a->compact(old_to_new, new_size);
     }
+    ///@}
+    /// Number of elements each array holds.
     std::size_t size() const noexcept { return size_; }
 
 private:

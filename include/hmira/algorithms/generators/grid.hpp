@@ -10,6 +10,7 @@
 
 namespace hmira {
 
+/// Size and resolution of generate_grid().
 struct grid_options {
     std::size_t columns = 10;         ///< cells along x (>= 1)
     std::size_t rows = 10;            ///< cells along y (>= 1)
@@ -20,8 +21,8 @@ struct grid_options {
 
 /// Adds a grid in the z = origin.z plane, wound towards +z. V = (columns+1)(rows+1),
 /// F = columns*rows (twice that with triangles). Complexity O(V).
-/// Errors (mesh unchanged): zero columns or rows; quads into a triangle-only mesh are a
-/// compile-time error, so use `.triangles = true` there.
+/// Errors (mesh unchanged): zero columns or rows; quads asked of a triangle-only mesh
+/// (errc::unsupported: use `.triangles = true` there).
 template <class M, class T = default_traits<M>>
     requires mesh_builder<M, T>
 result<generated_elements<M, T>> generate_grid(M& mesh, const grid_options& o = {}) {

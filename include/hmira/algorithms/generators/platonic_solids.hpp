@@ -25,8 +25,8 @@ struct solid_options {
 /// What a generator created, in creation order.
 template <class M, class T = default_traits<M>>
 struct generated_elements {
-    std::vector<typename T::vertex_handle> vertices;
-    std::vector<typename T::face_handle> faces;
+    std::vector<typename T::vertex_handle> vertices;  ///< new vertices
+    std::vector<typename T::face_handle> faces;       ///< new faces
 };
 
 namespace detail {

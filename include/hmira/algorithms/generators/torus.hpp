@@ -12,6 +12,7 @@
 
 namespace hmira {
 
+/// Size and resolution of generate_torus().
 struct torus_options {
     double major_radius = 1.0;        ///< distance from the z axis to the tube's centre
     double minor_radius = 0.25;       ///< tube radius; must be below major_radius

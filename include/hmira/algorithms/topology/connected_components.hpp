@@ -18,16 +18,18 @@ concept connected_components_mesh = face_vertex_range_mesh<M, T> && vertex_index
 /// Component labels 0..count-1, indexed by vertex_index / face_index. Deleted elements (gaps
 /// below the index bound) get `no_component`. An isolated vertex is a component of its own.
 struct component_labels {
-    static constexpr std::uint32_t no_component = UINT32_MAX;
-    std::size_t count = 0;
-    std::vector<std::uint32_t> vertex_component;
-    std::vector<std::uint32_t> face_component;
+    static constexpr std::uint32_t no_component = UINT32_MAX;  ///< label of a deleted element
+    std::size_t count = 0;                       ///< number of components
+    std::vector<std::uint32_t> vertex_component;  ///< label per vertex index
+    std::vector<std::uint32_t> face_component;    ///< label per face index
 };
 
 /// Disjoint-set forest over [0, n).
 class union_find {
 public:
+    /// n singleton sets.
     explicit union_find(std::size_t n) : parent_(n), size_(n, 1) { std::iota(parent_.begin(), parent_.end(), std::uint32_t{0}); }
+    /// The representative of x's set (compresses the path on the way).
     std::uint32_t find(std::uint32_t x) {
         while (parent_[x] != x) {
             parent_[x] = parent_[parent_[x]];
@@ -35,6 +37,7 @@ public:
         }
         return x;
     }
+    /// Merges the sets of a and b; false if they were already one.
     bool unite(std::uint32_t a, std::uint32_t b) {
         a = find(a);
         b = find(b);

@@ -15,10 +15,15 @@ namespace hmira {
 
 /// One undirected edge {a, b} (a < b, vertex indices) and how many face sides use a->b and b->a.
 struct census_edge {
+    ///@{
+    /// The end vertices' indices, a < b.
     std::uint32_t a = 0, b = 0;
+    ///@}
     std::uint32_t forward = 0;   ///< face sides running a -> b
     std::uint32_t backward = 0;  ///< face sides running b -> a
+    /// Face sides in either direction.
     std::uint32_t uses() const noexcept { return forward + backward; }
+    /// Exactly one face side: the edge is on the boundary.
     bool is_boundary() const noexcept { return uses() == 1; }
 };
 

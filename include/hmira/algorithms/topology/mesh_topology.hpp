@@ -18,8 +18,12 @@ namespace hmira {
 template <class M, class T = default_traits<M>>
 concept mesh_topology_mesh = connected_components_mesh<M, T>;
 
+/// The counts mesh_topology() reports.
 struct topology_summary {
+    ///@{
+    /// Live vertices, face-list edges, and faces.
     std::size_t vertices = 0, edges = 0, faces = 0;
+    ///@}
     std::size_t components = 0;         ///< connected components, isolated vertices included
     std::size_t isolated_vertices = 0;  ///< vertices used by no face
     std::size_t boundary_edges = 0;     ///< edges with exactly one face side
@@ -29,6 +33,7 @@ struct topology_summary {
     /// Total genus of the surface components, (2C - chi - b) / 2 with isolated vertices left
     /// out; meaningful for orientable manifold meshes (then it is a whole number).
     long long genus = 0;
+    /// No boundary and no non-manifold edge.
     bool closed() const noexcept { return boundary_edges == 0 && non_manifold_edges == 0; }
 };
 

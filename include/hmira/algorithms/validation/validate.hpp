@@ -47,11 +47,12 @@ inline const char* to_string(problem_kind k) {
 /// One problem: its kind, the index of the element concerned (vertex, face or halfedge index
 /// as the message says), and a one-line message naming it.
 struct mesh_problem {
-    problem_kind kind;
-    std::size_t element = 0;
-    std::string message;
+    problem_kind kind;        ///< what is wrong
+    std::size_t element = 0;  ///< index of the element concerned
+    std::string message;      ///< one line naming it
 };
 
+/// What validate() checks.
 struct validate_options {
     /// Accept isolated vertices, wire edges, faces of fewer than 3 sides and repeated vertices
     /// in a face loop: the legal intermediate states of Euler construction.
