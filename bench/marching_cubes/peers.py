@@ -2,10 +2,13 @@
 """Times the peers' marching cubes on the volumes bench_marching_cubes --export wrote, and
 prints one table with hmira's Google Benchmark results (JSON) side by side.
 
-usage: peers.py VOLUME_DIR HMIRA_JSON THREADS...
+usage: peers.py VOLUME_DIR HMIRA_BENCH_BINARY THREADS...
 Only the extraction is timed (the volume is already in memory, in the peer's own layout)."""
 import json
+import os
+import subprocess
 import sys
+import tempfile
 import time
 
 import numpy as np
@@ -20,6 +23,16 @@ def load(volume_dir):
             vols.append(dict(name=name, dims=(int(nx), int(ny), int(nz)), iso=float(iso), inside=inside,
                              data=data, hmira_tris=int(tris), hmira_welded=welded, hmira_closed=closed))
     return vols
+
+
+def hmira_ms(bench, name, threads):
+    """Runs hmira's Google Benchmark for one case right before its peers, so that both sides
+    see the same machine load; returns the real time in ms."""
+    with tempfile.NamedTemporaryFile(suffix=".json") as out:
+        subprocess.run([bench, f"--benchmark_filter=^{name}/{threads}/", f"--benchmark_out={out.name}",
+                        "--benchmark_out_format=json"], check=True, stdout=subprocess.DEVNULL)
+        runs = [b for b in json.load(open(out.name))["benchmarks"] if b.get("run_type", "iteration") == "iteration"]
+    return runs[0]["real_time"] if runs else float("nan")
 
 
 def best_of(fn, repeat):
@@ -92,16 +105,13 @@ def mcubes_run(vol):
 
 
 def main():
-    volume_dir, hmira_json, threads = sys.argv[1], sys.argv[2], [int(t) for t in sys.argv[3:]]
-    with open(hmira_json) as f:
-        hm = {b["name"]: b["real_time"] for b in json.load(f)["benchmarks"] if b.get("run_type", "iteration") == "iteration"}
+    volume_dir, bench, threads = sys.argv[1], sys.argv[2], [int(t) for t in sys.argv[3:]]
+    hm = {}
     import vtk
     rows = []
     for vol in load(volume_dir):
         for t in threads:
-            h = hm.get(f"hmira_mc/{vol['name']}/{t}/min_time:0.500/real_time")
-            if h is None:
-                h = next((v for k, v in hm.items() if k.startswith(f"hmira_mc/{vol['name']}/{t}/")), float("nan"))
+            h = hm[(vol["name"], t)] = hmira_ms(bench, f"hmira_mc/{vol['name']}", t)
             peers = [("vtkFlyingEdges3D", vtk_run(vtk.vtkFlyingEdges3D, vol, t)),
                      ("vtkMarchingCubes", vtk_run(vtk.vtkMarchingCubes, vol, t))]
             if t == 1:  # single-threaded libraries
@@ -117,8 +127,8 @@ def main():
         print(f"| {name} | {t} | {h:.1f} | {peer} | {ms:.1f} | {ratio:.2f} | {ht} | {pt} | {welded}/{closed} | {hstate} |")
     # hmira's own scaling
     for vol in load(volume_dir):
-        one = hm.get(f"hmira_mc/{vol['name']}/1/min_time:0.500/real_time")
-        two = hm.get(f"hmira_mc/{vol['name']}/2/min_time:0.500/real_time")
+        one = hm.get((vol["name"], 1))
+        two = hm.get((vol["name"], 2))
         if one and two:
             print(f"hmira {vol['name']}: 2 threads / 1 thread = {two / one:.2f}")
 

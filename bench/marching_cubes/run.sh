@@ -15,5 +15,4 @@ work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 export HMIRA_TEST_DATA="$root/build/test-data"
 "$build/bench/marching_cubes/bench_marching_cubes" --export "$work/volumes"
-"$build/bench/marching_cubes/bench_marching_cubes" --benchmark_out="$work/hmira.json" --benchmark_out_format=json >&2
-"$py" "$root/bench/marching_cubes/peers.py" "$work/volumes" "$work/hmira.json" 1 2
+"$py" "$root/bench/marching_cubes/peers.py" "$work/volumes" "$build/bench/marching_cubes/bench_marching_cubes" 1 2

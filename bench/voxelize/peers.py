@@ -3,14 +3,26 @@
 (origin, spacing, dimensions) where the peer lets us choose it, and prints one table with
 hmira's Google Benchmark results (JSON) and the filled-voxel counts side by side.
 
-usage: peers.py MESH_DIR HMIRA_JSON THREADS...
+usage: peers.py MESH_DIR HMIRA_BENCH_BINARY THREADS...
 Only the voxelization is timed (meshes are already in memory in the peer's own types)."""
 import json
 import os
+import subprocess
 import sys
+import tempfile
 import time
 
 import numpy as np
+
+
+def hmira_ms(bench, name, threads):
+    """Runs hmira's Google Benchmark for one case right before its peers, so that both sides
+    see the same machine load; returns the real time in ms."""
+    with tempfile.NamedTemporaryFile(suffix=".json") as out:
+        subprocess.run([bench, f"--benchmark_filter=^{name}/{threads}/", f"--benchmark_out={out.name}",
+                        "--benchmark_out_format=json"], check=True, stdout=subprocess.DEVNULL)
+        runs = [b for b in json.load(open(out.name))["benchmarks"] if b.get("run_type", "iteration") == "iteration"]
+    return runs[0]["real_time"] if runs else float("nan")
 
 
 def best_of(fn, repeat):
@@ -91,17 +103,14 @@ def open3d_surface(v, f, r):
 
 
 def main():
-    mesh_dir, hmira_json, threads = sys.argv[1], sys.argv[2], [int(t) for t in sys.argv[3:]]
-    with open(hmira_json) as fh:
-        hm = {b["name"]: b["real_time"] for b in json.load(fh)["benchmarks"] if b.get("run_type", "iteration") == "iteration"}
+    mesh_dir, bench, threads = sys.argv[1], sys.argv[2], [int(t) for t in sys.argv[3:]]
     rows, meshes = load(mesh_dir)
     skip_trimesh = os.environ.get("HMIRA_BENCH_SKIP_TRIMESH_ABOVE", "30000000")
     out = []
     for r in rows:
         v, f = meshes[r["name"]]
         for t in threads:
-            key = next((k for k in hm if k.startswith(f"hmira_voxelize/{r['name']}/{r['res']}/{t}/")), None)
-            h = hm.get(key, float("nan"))
+            h = hmira_ms(bench, f"hmira_voxelize/{r['name']}/{r['res']}", t)
             peers = [("vtkPolyDataToImageStencil", "solid", r["hmira_solid"], vtk_stencil(v, f, r, t))]
             if t == 1:  # single-threaded peers
                 if len(f) * r["res"] <= int(skip_trimesh):

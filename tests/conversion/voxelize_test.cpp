@@ -267,3 +267,33 @@ TEST_P(RealMesh, voxelize_then_marching_cubes_is_closed_with_volume_within_one_v
 INSTANTIATE_TEST_SUITE_P(Closed, RealMesh, ::testing::Values("elephant.off", "fandisk.off"));
 
 }  // namespace
+
+namespace {
+
+// The prepared per-triangle test must agree with the direct separating-axis test.
+TEST(TriangleBox, prepared_test_agrees_with_direct_separating_axis_test) {
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> u(-2, 2);
+    int overlaps = 0, agree = 0, total = 0;
+    for (int trial = 0; trial < 2000; ++trial) {
+        const vec3<double> a{u(rng), u(rng), u(rng)}, b{u(rng), u(rng), u(rng)}, c{u(rng), u(rng), u(rng)};
+        const hmira::detail::triangle_box_tester prepared(a, b, c, 0.5);
+        for (int q = 0; q < 10; ++q) {
+            const vec3<double> center{std::round(u(rng)), std::round(u(rng)), std::round(u(rng))};
+            // Only boxes the bounding boxes allow: the caller checks the box normals.
+            bool bbox = true;
+            for (std::size_t k = 0; k < 3; ++k)
+                bbox &= std::min({a[k], b[k], c[k]}) <= center[k] + 0.5 && std::max({a[k], b[k], c[k]}) >= center[k] - 0.5;
+            if (!bbox) continue;
+            const bool direct = hmira::detail::triangle_box_overlap(center, 0.5, a, b, c);
+            ++total;
+            overlaps += direct;
+            agree += direct == prepared.overlaps(center);
+        }
+    }
+    EXPECT_EQ(agree, total);
+    EXPECT_GT(overlaps, 0);
+    EXPECT_LT(overlaps, total);  // both outcomes occur, so the comparison means something
+}
+
+}  // namespace
