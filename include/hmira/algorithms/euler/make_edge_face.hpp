@@ -4,8 +4,6 @@
 // between them. They are what editing functions (truncate, bevel, extrude) are built from.
 #pragma once
 
-#include <vector>
-
 #include "euler_common.hpp"
 
 namespace hmira {
@@ -113,16 +111,14 @@ result<make_edge_face_result<M, T>> make_edge_face(M& mesh, typename T::halfedge
 /// joins the loop of `halfedge` (the inverse of make_edge_face: pass its result's halfedge).
 ///
 /// The face of `halfedge` survives; it may be null (the boundary), and then the killed face
-/// becomes part of the boundary. The killed face's inner rings move to the surviving face.
-/// E - 1, F - 1.
+/// becomes part of the boundary. E - 1, F - 1.
 ///
 /// Errors (mesh unchanged): errc::invalid_handle; errc::topology when there is no face on
 /// the other side (a boundary or wire edge: nothing to kill), when both sides lie on the
-/// same face (a bridge: removing it splits a loop, which is kill_edge_make_ring), when the
-/// edge lies on an inner ring of the face to kill, or when a face with inner rings would
-/// join the boundary (a boundary cannot hold rings).
+/// same face (a bridge: removing it splits a loop, which is kill_edge_make_ring), or when the
+/// face to kill has inner rings (moving them would make the operator irreversible).
 /// Complexity O(face degree) (the killed face's halfedges are re-pointed), plus
-/// O(V_adjacentV) when the face joins the boundary, and O(ring sizes) for moved rings.
+/// O(V_adjacentV) when the face joins the boundary.
 template <class M, class T = default_traits<M>>
     requires euler_mutable_mesh<M, T>
 result<kill_edge_face_result<M, T>> kill_edge_face(M& mesh, typename T::halfedge_handle halfedge) {
@@ -143,26 +139,14 @@ result<kill_edge_face_result<M, T>> kill_edge_face(M& mesh, typename T::halfedge
                     "kill_edge_face: both sides of the edge lie on " + de::name<M, T>("face", mesh, f) +
                         " (a bridge); removing it would split a loop: use kill_edge_make_ring",
                     de::index_of<M, T>(mesh, h));
-    const bool g_has_rings = de::has_rings<M, T>(mesh, g);
-    if (g_has_rings) {
-        if (f == T::null_face())
-            return fail(errc::topology,
-                        "kill_edge_face: " + de::name<M, T>("face", mesh, g) +
-                            " has inner rings and would join the boundary, which cannot hold rings",
-                        de::index_of<M, T>(mesh, g));
-        const auto fh = T::face_halfedge(mesh, g);
-        bool on_outer = false;
-        auto x = o;
-        do {
-            if (x == fh) { on_outer = true; break; }
-            x = T::next(mesh, x);
-        } while (x != o);
-        if (!on_outer)
-            return fail(errc::topology,
-                        "kill_edge_face: the edge lies on an inner ring of " + de::name<M, T>("face", mesh, g) +
-                            ", not on the outer loop of the face to kill",
-                        de::index_of<M, T>(mesh, g));
-    }
+    // Moving the rings to the surviving face would not be undone by make_edge_face (which
+    // leaves rings with the old face), so the operator refuses instead: kill_edge_face is then
+    // exactly inverted by make_edge_face.
+    if (de::has_rings<M, T>(mesh, g))
+        return fail(errc::topology,
+                    "kill_edge_face: " + de::name<M, T>("face", mesh, g) +
+                        " has inner rings; make them faces (make_face_kill_ring) or join them (make_edge_kill_ring) first",
+                    de::index_of<M, T>(mesh, g));
 
     const auto hp = T::prev(mesh, h), hn = T::next(mesh, h);
     const auto op = T::prev(mesh, o), on = T::next(mesh, o);
@@ -175,21 +159,6 @@ result<kill_edge_face_result<M, T>> kill_edge_face(M& mesh, typename T::halfedge
     if (f != T::null_face()) {
         if (T::face_halfedge(mesh, f) == h) T::set_face_halfedge(mesh, f, hp);
         de::replace_ring_halfedge<M, T>(mesh, f, h, hp);
-        if constexpr (inner_ring_mutable_mesh<M, T>) {
-            if (g_has_rings) {
-                std::vector<typename T::halfedge_handle> rings;
-                for (auto r : T::inner_rings(mesh, g)) rings.push_back(r);
-                for (auto r : rings) {
-                    auto x = r;
-                    do {
-                        T::set_face(mesh, x, f);
-                        x = T::next(mesh, x);
-                    } while (x != r);
-                    T::remove_inner_ring(mesh, g, r);
-                    T::add_inner_ring(mesh, f, r);
-                }
-            }
-        }
     } else {
         // The killed face's vertices are on the boundary now.
         for (auto x = on; x != hn; x = T::next(mesh, x)) {
