@@ -1,0 +1,199 @@
+// bench/euler/euler_bench.cpp: one million makeEF/killEF pairs and one million makeEV/killEV
+// pairs on a 1000 x 1000 quad grid (10^6 faces): hmira on halfedge_mesh, CGAL Surface_mesh's
+// and OpenMesh PolyMesh's native operations, and hmira's generic operators running on CGAL's
+// and OpenMesh's own meshes through the interop traits. Each pair restores the mesh, and the
+// pairs walk the faces in order, so every variant does the same work on the same faces.
+//
+// Native equivalents. makeEF/killEF: CGAL::Euler::split_face / join_face; OpenMesh
+// insert_edge / remove_edge. makeEV/killEV creates and deletes one vertex and one edge; neither
+// library can hang a vertex of degree 1 inside a face with its Euler operations, so the
+// closest pair creating and deleting the same elements is an edge split and its undo:
+// CGAL::Euler::split_edge / join_vertex, OpenMesh split_edge / collapse.
+
+#include <benchmark/benchmark.h>
+
+#include <cstddef>
+#include <vector>
+
+#include <hmira/algorithms/euler/make_edge_face.hpp>
+#include <hmira/algorithms/euler/make_edge_vertex.hpp>
+#include <hmira/meshes/halfedge_mesh.hpp>
+
+#ifdef HMIRA_BENCH_WITH_CGAL
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/Euler_operations.h>
+#include <hmira/interop/cgal.hpp>
+#endif
+#ifdef HMIRA_BENCH_WITH_OPENMESH
+#include <hmira/interop/openmesh.hpp>
+#endif
+
+namespace {
+
+constexpr std::size_t grid_n = 1000;   // grid_n^2 quads
+constexpr std::size_t pairs = 1000000;  // operator pairs per run
+
+/// Builds the grid through the traits (any mesh_builder).
+template <class M, class T = hmira::default_traits<M>>
+void build_grid(M& m) {
+    using S = typename T::scalar;
+    std::vector<typename T::vertex_handle> vs;
+    vs.reserve((grid_n + 1) * (grid_n + 1));
+    for (std::size_t j = 0; j <= grid_n; ++j)
+        for (std::size_t i = 0; i <= grid_n; ++i) vs.push_back(T::add_vertex(m, hmira::vec3<S>{S(i), S(j), S(0)}));
+    auto id = [&](std::size_t i, std::size_t j) { return vs[j * (grid_n + 1) + i]; };
+    for (std::size_t j = 0; j < grid_n; ++j)
+        for (std::size_t i = 0; i < grid_n; ++i) {
+            const typename T::vertex_handle q[4] = {id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)};
+            if (!T::add_face(m, std::span<const typename T::vertex_handle>(q, 4))) throw std::runtime_error("grid face refused");
+        }
+}
+
+/// Per face, the two corners of a diagonal split: h0 and next(next(h0)).
+template <class M, class T = hmira::default_traits<M>>
+std::vector<std::pair<typename T::halfedge_handle, typename T::halfedge_handle>> split_corners(const M& m) {
+    std::vector<std::pair<typename T::halfedge_handle, typename T::halfedge_handle>> out;
+    for (auto f : T::faces(m)) {
+        const auto h0 = T::face_halfedge(m, f);
+        out.push_back({h0, T::next(m, T::next(m, h0))});
+    }
+    return out;
+}
+
+template <class M>
+void report(benchmark::State& state) {
+    state.counters["pairs"] = static_cast<double>(pairs);
+    state.counters["ns_per_pair"] = benchmark::Counter(static_cast<double>(pairs), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+
+// ----- hmira's generic operators, on any model ------------------------------------------------
+
+template <class M>
+void hmira_make_kill_edge_face(benchmark::State& state) {
+    M m;
+    build_grid(m);
+    const auto corners = split_corners(m);
+    for (auto _ : state) {
+        for (std::size_t i = 0; i < pairs; ++i) {
+            const auto& [h0, h1] = corners[i % corners.size()];
+            auto r = hmira::make_edge_face(m, h0, h1);
+            auto k = hmira::kill_edge_face(m, r->halfedge);
+            benchmark::DoNotOptimize(k);
+        }
+    }
+    report<M>(state);
+}
+
+template <class M>
+void hmira_make_kill_edge_vertex(benchmark::State& state) {
+    using T = hmira::default_traits<M>;
+    using S = typename T::scalar;
+    M m;
+    build_grid(m);
+    const auto corners = split_corners(m);
+    const hmira::vec3<S> p{S(0.5), S(0.5), S(0)};
+    for (auto _ : state) {
+        for (std::size_t i = 0; i < pairs; ++i) {
+            auto r = hmira::make_edge_vertex(m, corners[i % corners.size()].first, p);
+            auto k = hmira::kill_edge_vertex(m, r->halfedge);
+            benchmark::DoNotOptimize(k);
+        }
+    }
+    report<M>(state);
+}
+
+BENCHMARK(hmira_make_kill_edge_face<hmira::halfedge_mesh>)->Name("make_kill_edge_face/hmira_halfedge_mesh")->Iterations(1)->Unit(benchmark::kMillisecond);
+BENCHMARK(hmira_make_kill_edge_vertex<hmira::halfedge_mesh>)->Name("make_kill_edge_vertex/hmira_halfedge_mesh")->Iterations(1)->Unit(benchmark::kMillisecond);
+
+#ifdef HMIRA_BENCH_WITH_CGAL
+using cgal_mesh = CGAL::Surface_mesh<CGAL::Simple_cartesian<double>::Point_3>;
+
+void cgal_split_join_face(benchmark::State& state) {
+    cgal_mesh m;
+    build_grid(m);
+    const auto corners = split_corners(m);
+    for (auto _ : state) {
+        for (std::size_t i = 0; i < pairs; ++i) {
+            const auto& [h0, h1] = corners[i % corners.size()];
+            const auto h = CGAL::Euler::split_face(h0, h1, m);
+            benchmark::DoNotOptimize(CGAL::Euler::join_face(h, m));
+        }
+    }
+    report<cgal_mesh>(state);
+}
+
+void cgal_split_edge_join_vertex(benchmark::State& state) {
+    cgal_mesh m;
+    build_grid(m);
+    const auto corners = split_corners(m);
+    for (auto _ : state) {
+        for (std::size_t i = 0; i < pairs; ++i) {
+            const auto h = corners[i % corners.size()].first;
+            const auto hnew = CGAL::Euler::split_edge(h, m);  // next(hnew) == h, source(h) is new
+            benchmark::DoNotOptimize(CGAL::Euler::join_vertex(m.next(hnew), m));
+        }
+    }
+    report<cgal_mesh>(state);
+}
+
+BENCHMARK(cgal_split_join_face)->Name("make_kill_edge_face/cgal_native")->Iterations(1)->Unit(benchmark::kMillisecond);
+BENCHMARK(hmira_make_kill_edge_face<cgal_mesh>)->Name("make_kill_edge_face/hmira_on_cgal")->Iterations(1)->Unit(benchmark::kMillisecond);
+BENCHMARK(cgal_split_edge_join_vertex)->Name("make_kill_edge_vertex/cgal_native")->Iterations(1)->Unit(benchmark::kMillisecond);
+BENCHMARK(hmira_make_kill_edge_vertex<cgal_mesh>)->Name("make_kill_edge_vertex/hmira_on_cgal")->Iterations(1)->Unit(benchmark::kMillisecond);
+#endif
+
+#ifdef HMIRA_BENCH_WITH_OPENMESH
+using om_mesh = OpenMesh::PolyMesh_ArrayKernelT<>;
+
+void prepare_status(om_mesh& m) {
+    m.request_vertex_status();
+    m.request_edge_status();
+    m.request_halfedge_status();
+    m.request_face_status();
+}
+
+void openmesh_insert_remove_edge(benchmark::State& state) {
+    om_mesh m;
+    build_grid(m);
+    prepare_status(m);
+    const auto corners = split_corners(m);
+    for (auto _ : state) {
+        for (std::size_t i = 0; i < pairs; ++i) {
+            const auto& [h0, h1] = corners[i % corners.size()];
+            // insert_edge joins to(prev) and from(next): the same diagonal as make_edge_face(h0, h1).
+            const auto h = m.insert_edge(h0, m.next_halfedge_handle(h1));
+            benchmark::DoNotOptimize(m.remove_edge(m.edge_handle(h)));
+        }
+    }
+    report<om_mesh>(state);
+}
+
+void openmesh_split_edge_collapse(benchmark::State& state) {
+    om_mesh m;
+    build_grid(m);
+    prepare_status(m);
+    const auto corners = split_corners(m);
+    const om_mesh::Point p(0.5f, 0.5f, 0.f);
+    for (auto _ : state) {
+        for (std::size_t i = 0; i < pairs; ++i) {
+            const auto h = corners[i % corners.size()].first;
+            const auto v = m.add_vertex(p);
+            m.split_edge(m.edge_handle(h), v);
+            // Collapse the new vertex into its neighbour along one of its two edges.
+            m.collapse(m.halfedge_handle(v));
+        }
+    }
+    report<om_mesh>(state);
+}
+
+
+BENCHMARK(openmesh_insert_remove_edge)->Name("make_kill_edge_face/openmesh_native")->Iterations(1)->Unit(benchmark::kMillisecond);
+BENCHMARK(hmira_make_kill_edge_face<om_mesh>)->Name("make_kill_edge_face/hmira_on_openmesh")->Iterations(1)->Unit(benchmark::kMillisecond);
+BENCHMARK(openmesh_split_edge_collapse)->Name("make_kill_edge_vertex/openmesh_native")->Iterations(1)->Unit(benchmark::kMillisecond);
+BENCHMARK(hmira_make_kill_edge_vertex<om_mesh>)->Name("make_kill_edge_vertex/hmira_on_openmesh")->Iterations(1)->Unit(benchmark::kMillisecond);
+#endif
+
+}  // namespace
+
+BENCHMARK_MAIN();
