@@ -1,9 +1,13 @@
 // hmira/io/off.hpp
-// Object File Format (OFF): a header, vertex and face counts, positions, then faces as
-// "k i1 ... ik". Colours after a face's indices are accepted and ignored.
+// Object File Format (OFF, with its NOFF / COFF / CNOFF variants): a header, vertex and face
+// counts, positions (with normals and colours in the variants), then faces as "k i1 ... ik".
+// Colours after a face's indices are accepted and ignored.
 #pragma once
 
+#include <algorithm>
+#include <array>
 #include <filesystem>
+#include <sstream>
 #include <string>
 #include <string_view>
 
@@ -12,129 +16,193 @@
 #include "detail/files.hpp"
 #include "detail/polygon_soup.hpp"
 #include "detail/text_format.hpp"
+#include "io_options.hpp"
+#include "obj.hpp"  // detail::append_coordinate
 
 namespace hmira::io {
 
 /// Parses OFF text into a soup. Errors name `name:line`.
-inline result<polygon_soup> parse_off(std::string_view text, const std::string& name) {
+/// Complexity: O(bytes). Errors (errc::parse_error / degenerate_face / unsupported): a missing
+/// or unknown header, counts that do not match the content (too large: "file ends after";
+/// too small: "unexpected content"), non-numbers, indices out of [0, V), faces of fewer than
+/// 3 vertices, binary OFF and 4D/nD variants (unsupported).
+inline result<polygon_soup> parse_off(std::string_view text, const std::string& name, const read_options& options = {}) {
     polygon_soup soup;
-    detail::line_reader lines(text);
-    std::string_view line;
-    auto where = [&] { return name + ":" + std::to_string(lines.line_number()); };
-    // Next line with content, comments stripped.
-    auto content = [&](std::string_view& out) {
-        while (lines.next(out)) {
-            if (const auto hash = out.find('#'); hash != std::string_view::npos) out = out.substr(0, hash);
-            std::string_view probe = out;
-            if (!detail::next_token(probe).empty()) return true;
-        }
-        return false;
-    };
-    if (!content(line)) return fail(errc::parse_error, name + ": empty file, expected an OFF header");
-    std::string_view rest = line;
-    const auto header = detail::next_token(rest);
-    if (header != "OFF")
-        return fail(errc::parse_error, where() + ": expected 'OFF' header, found '" + std::string(header) + "'");
-    std::string_view counts = rest;
-    {
-        std::string_view probe = counts;
-        if (detail::next_token(probe).empty()) {
-            if (!content(line)) return fail(errc::parse_error, where() + ": file ends before the vertex and face counts");
-            counts = line;
-        }
+    detail::text_cursor c(text);
+    detail::progress_ticker ticker(options.progress, text.size());
+    auto where = [&] { return name + ":" + std::to_string(c.line()); };
+    c.skip_space_and_newlines('#');
+    if (c.at_end()) return fail(errc::parse_error, name + ": empty file, expected an OFF header");
+    const auto header = c.token();
+    if (header.size() < 3 || header.substr(header.size() - 3) != "OFF")
+        return fail(errc::parse_error, where() + ": expected an 'OFF' header, found '" + std::string(header.substr(0, 40)) + "'");
+    bool has_normals = false, has_colors = false, has_texture = false;
+    for (char ch : header.substr(0, header.size() - 3)) {
+        if (ch == 'N') has_normals = true;
+        else if (ch == 'C') has_colors = true;
+        else if (ch == 'S' || ch == 'T') has_texture = true;
+        else
+            return fail(errc::unsupported, where() + ": OFF variant '" + std::string(header) + "' is not supported (only [ST][C][N]OFF)");
     }
-    long long nv = 0, nf = 0;
     {
-        const auto a = detail::next_token(counts), b = detail::next_token(counts);
-        if (!detail::parse_long(a, nv) || !detail::parse_long(b, nf) || nv < 0 || nf < 0)
-            return fail(errc::parse_error, where() + ": expected vertex and face counts, found '" + std::string(line) + "'");
+        const auto probe = c.peek_token();
+        if (probe == "BINARY") return fail(errc::unsupported, where() + ": binary OFF is not supported");
     }
-    soup.points.reserve(static_cast<std::size_t>(std::min<long long>(nv, 1 << 24)));
+    c.skip_space_and_newlines('#');
+    long long nv = 0, nf = 0, ne = 0;
+    if (!c.number(nv) || !c.number(nf) || nv < 0 || nf < 0)
+        return fail(errc::parse_error, where() + ": expected vertex and face counts, " + detail::describe_bad_number(c));
+    if (!c.at_line_end('#') && !c.number(ne)) return fail(errc::parse_error, where() + ": edge count: " + detail::describe_bad_number(c));
+    if (nv > static_cast<long long>(UINT32_MAX) - 1) return fail(errc::parse_error, where() + ": vertex count " + std::to_string(nv) + " is too large");
+    // Counts may be absurd in a broken file: reserve no more than the text could hold.
+    soup.points.reserve(static_cast<std::size_t>(std::min<long long>(nv, static_cast<long long>(text.size() / 6 + 1))));
+    soup.face_offsets.reserve(static_cast<std::size_t>(std::min<long long>(nf, static_cast<long long>(text.size() / 8 + 1))) + 1);
+    if (has_normals) soup.attributes.normals.reserve(soup.points.capacity());
+    if (has_colors) soup.attributes.colors.reserve(soup.points.capacity());
+    c.next_line();
     for (long long i = 0; i < nv; ++i) {
-        if (!content(line))
-            return fail(errc::parse_error, name + ": file ends after " + std::to_string(i) + " of " + std::to_string(nv) + " vertices (header count too large, or truncated file)");
-        std::string_view r = line;
+        c.skip_space_and_newlines('#');
+        if (c.at_end())
+            return fail(errc::parse_error, name + ":" + std::to_string(c.line()) + ": file ends after " + std::to_string(i) + " of " + std::to_string(nv) +
+                                               " vertices (header count too large, or truncated file)");
         std::array<double, 3> p{};
-        for (int k = 0; k < 3; ++k) {
-            const auto tok = detail::next_token(r);
-            if (tok.empty()) return fail(errc::parse_error, where() + ": vertex " + std::to_string(i) + " has fewer than 3 coordinates");
-            if (!detail::parse_double(tok, p[static_cast<std::size_t>(k)]))
-                return fail(errc::parse_error, where() + ": '" + std::string(tok) + "' is not a number");
-        }
+        for (auto& x : p)
+            if (!c.number(x)) return fail(errc::parse_error, where() + ": vertex " + std::to_string(i) + ": " + detail::describe_bad_number(c));
         soup.points.push_back(p);
+        if (has_normals) {
+            std::array<float, 3> n{};
+            for (auto& x : n)
+                if (!c.number(x)) return fail(errc::parse_error, where() + ": normal of vertex " + std::to_string(i) + ": " + detail::describe_bad_number(c));
+            soup.attributes.normals.push_back({n[0], n[1], n[2]});
+        }
+        if (has_colors) {
+            std::array<double, 4> col{0, 0, 0, -1};
+            int k = 0;
+            const int wanted = has_texture ? 3 : 4;  // with texture coordinates after, read RGB only
+            for (; k < wanted && !c.at_line_end('#'); ++k)
+                if (!c.number(col[static_cast<std::size_t>(k)]))
+                    return fail(errc::parse_error, where() + ": colour of vertex " + std::to_string(i) + ": " + detail::describe_bad_number(c));
+            if (k < 3) return fail(errc::parse_error, where() + ": vertex " + std::to_string(i) + " has no colour (COFF needs r g b)");
+            // Integer colours run 0..255, float colours 0..1.
+            const bool bytes = std::max({col[0], col[1], col[2], col[3]}) > 1.0;
+            std::array<std::uint8_t, 4> rgba{};
+            for (std::size_t j = 0; j < 4; ++j) {
+                const double x = j == 3 && col[3] < 0 ? (bytes ? 255.0 : 1.0) : col[j];
+                rgba[j] = bytes ? static_cast<std::uint8_t>(std::clamp(x, 0.0, 255.0)) : detail::to_byte(x);
+            }
+            soup.attributes.colors.push_back(rgba);
+        }
+        c.next_line();
+        ticker.tick(c.offset());
     }
     for (long long f = 0; f < nf; ++f) {
-        if (!content(line))
-            return fail(errc::parse_error, name + ": file ends after " + std::to_string(f) + " of " + std::to_string(nf) + " faces (header count too large, or truncated file)");
-        std::string_view r = line;
+        c.skip_space_and_newlines('#');
+        if (c.at_end())
+            return fail(errc::parse_error, name + ":" + std::to_string(c.line()) + ": file ends after " + std::to_string(f) + " of " + std::to_string(nf) +
+                                               " faces (header count too large, or truncated file)");
         long long k = 0;
-        const auto ktok = detail::next_token(r);
-        if (!detail::parse_long(ktok, k)) return fail(errc::parse_error, where() + ": '" + std::string(ktok) + "' is not a vertex count");
+        if (!c.number(k)) return fail(errc::parse_error, where() + ": face " + std::to_string(f) + ": " + detail::describe_bad_number(c) + " (expected a vertex count)");
         if (k < 3) return fail(errc::degenerate_face, where() + ": face " + std::to_string(f) + " has " + std::to_string(k) + " vertices; at least 3 needed");
         for (long long j = 0; j < k; ++j) {
-            const auto tok = detail::next_token(r);
             long long idx = 0;
-            if (tok.empty()) return fail(errc::parse_error, where() + ": face " + std::to_string(f) + " lists fewer than its " + std::to_string(k) + " vertices");
-            if (!detail::parse_long(tok, idx)) return fail(errc::parse_error, where() + ": '" + std::string(tok) + "' is not a vertex index");
+            if (c.at_line_end('#'))
+                return fail(errc::parse_error, where() + ": face " + std::to_string(f) + " lists fewer than its " + std::to_string(k) + " vertices");
+            if (!c.number(idx)) return fail(errc::parse_error, where() + ": face " + std::to_string(f) + ": " + detail::describe_bad_number(c) + " (expected a vertex index)");
             if (idx < 0 || idx >= nv)
-                return fail(errc::parse_error, where() + ": face " + std::to_string(f) + " uses vertex " + std::to_string(idx) + ", out of range [0, " + std::to_string(nv) + ")");
+                return fail(errc::parse_error, where() + ": face " + std::to_string(f) + " uses vertex " + std::to_string(idx) + ", out of range [0, " +
+                                                   std::to_string(nv) + ")");
             soup.indices.push_back(static_cast<std::uint32_t>(idx));
         }
         soup.face_offsets.push_back(static_cast<std::uint32_t>(soup.indices.size()));
+        c.next_line();
+        ticker.tick(c.offset());
     }
-    if (content(line)) return fail(errc::parse_error, where() + ": unexpected content after the last face (header counts too small?)");
+    c.skip_space_and_newlines('#');
+    if (!c.at_end()) return fail(errc::parse_error, where() + ": unexpected content after the last face (header counts too small?)");
+    ticker.finish();
     return soup;
 }
 
 /// Reads an OFF file into `mesh`, replacing its content; on error the mesh is unchanged.
+/// Complexity: O(bytes + mesh insertions).
 template <class M, class T = default_traits<M>>
     requires readable_mesh<M, T>
-result<void> read_off(M& mesh, const std::filesystem::path& path) {
-    auto text = detail::read_file(path);
-    if (!text) return text.error();
-    auto soup = parse_off(*text, path.string());
+result<read_report> read_off(M& mesh, const std::filesystem::path& path, const read_options& options = {}) {
+    auto file = detail::input_file::open(path);
+    if (!file) return file.error();
+    auto soup = parse_off(file->text(), path.string(), options);
     if (!soup) return soup.error();
-    return assign_from_soup<M, T>(mesh, *soup, [&](std::size_t) { return path.string(); });
+    return finish_read<M, T>(mesh, std::move(*soup), path.string(), "off");
 }
 
+/// Writes OFF through `out`: "[C][N]OFF" as the attributes require, colours as 0..255 RGBA.
 template <class M, class T = default_traits<M>>
     requires writable_mesh<M, T>
-std::string format_off(const M& mesh) {
-    std::string out = "OFF\n";
-    detail::append_number(out, std::uint64_t{T::vertex_count(mesh)});
-    out += ' ';
-    detail::append_number(out, std::uint64_t{T::face_count(mesh)});
-    out += " 0\n";
+bool write_off_to(const M& mesh, std::ostream& stream, const write_options& options = {}) {
+    using S = typename T::scalar;
+    detail::chunked_output out(stream);
+    auto& b = out.buffer();
+    const auto attr = detail::find_attributes<M, T>(mesh, options);
+    if (attr.colors) b += 'C';
+    if (attr.normals) b += 'N';
+    b += "OFF\n";
+    detail::append_number(b, std::uint64_t{T::vertex_count(mesh)});
+    b += ' ';
+    detail::append_number(b, std::uint64_t{T::face_count(mesh)});
+    b += " 0\n";
     const auto number = detail::dense_vertex_numbers<M, T>(mesh);
     for (auto v : T::vertices(mesh)) {
-        const auto p = static_cast<vec3<typename T::scalar>>(T::position(mesh, v));
-        detail::append_number(out, static_cast<double>(p.x));
-        out += ' ';
-        detail::append_number(out, static_cast<double>(p.y));
-        out += ' ';
-        detail::append_number(out, static_cast<double>(p.z));
-        out += '\n';
+        const auto p = static_cast<vec3<S>>(T::position(mesh, v));
+        detail::append_coordinate(b, p.x);
+        b += ' ';
+        detail::append_coordinate(b, p.y);
+        b += ' ';
+        detail::append_coordinate(b, p.z);
+        const auto vi = T::vertex_index(mesh, v);
+        if (attr.normals) {
+            for (int k = 0; k < 3; ++k) {
+                b += ' ';
+                detail::append_number(b, attr.normals[vi][static_cast<std::size_t>(k)]);
+            }
+        }
+        if (attr.colors) {
+            for (int k = 0; k < 4; ++k) {
+                b += ' ';
+                detail::append_number(b, std::uint64_t{attr.colors[vi][static_cast<std::size_t>(k)]});
+            }
+        }
+        b += '\n';
+        if (!out.maybe_flush()) return false;
     }
     std::vector<std::uint32_t> loop;
     for (auto f : T::faces(mesh)) {
         loop.clear();
         for (auto v : T::face_vertices(mesh, f)) loop.push_back(number[T::vertex_index(mesh, v)]);
-        detail::append_number(out, std::uint64_t{loop.size()});
+        detail::append_number(b, std::uint64_t{loop.size()});
         for (auto i : loop) {
-            out += ' ';
-            detail::append_number(out, std::uint64_t{i});
+            b += ' ';
+            detail::append_number(b, i);
         }
-        out += '\n';
+        b += '\n';
+        if (!out.maybe_flush()) return false;
     }
-    return out;
+    return out.flush();
 }
 
-/// Writes the mesh as OFF, atomically.
+/// OFF text of the mesh (see write_off_to).
 template <class M, class T = default_traits<M>>
     requires writable_mesh<M, T>
-result<void> write_off(const M& mesh, const std::filesystem::path& path) {
-    const auto text = format_off<M, T>(mesh);
-    return detail::write_file_atomically(path, [&](std::ostream& o) { return static_cast<bool>(o.write(text.data(), static_cast<std::streamsize>(text.size()))); });
+std::string format_off(const M& mesh, const write_options& options = {}) {
+    std::ostringstream s;
+    write_off_to<M, T>(mesh, s, options);
+    return std::move(s).str();
+}
+
+/// Writes the mesh as OFF, atomically. Complexity O(V + C). Errors: errc::io_error.
+template <class M, class T = default_traits<M>>
+    requires writable_mesh<M, T>
+result<void> write_off(const M& mesh, const std::filesystem::path& path, const write_options& options = {}) {
+    return detail::write_file_atomically(path, [&](std::ostream& o) { return write_off_to<M, T>(mesh, o, options); });
 }
 
 }  // namespace hmira::io

@@ -1,0 +1,35 @@
+#!/usr/bin/env bash
+# Builds the parser fuzz targets with clang 14's libFuzzer (+ ASan/UBSan) and runs each for a
+# bounded time on a copy of its committed corpus, so CI stays deterministic in what it keeps.
+# Usage: fuzz/run.sh [seconds per format, default 30] [build folder, default build-fuzz]
+# Needs clang-14 and libclang-rt-14-dev (scripts/install-deps.sh). Exits non-zero on a finding.
+set -euo pipefail
+here="$(cd "$(dirname "$0")" && pwd)"
+root="$(dirname "$here")"
+seconds="${1:-30}"
+out="${2:-$root/build-fuzz}"
+cxx="${CXX_FUZZ:-clang++-14}"
+command -v "$cxx" >/dev/null || { echo "fuzz: $cxx not found (apt install clang-14 libclang-rt-14-dev)" >&2; exit 2; }
+mkdir -p "$out"
+status=0
+for fmt in obj off ply stl; do
+  bin="$out/fuzz_$fmt"
+  if [ ! -x "$bin" ] || [ "$here/fuzz_$fmt.cpp" -nt "$bin" ] || [ -n "$(find "$root/include/hmira/io" "$here/fuzz_io.hpp" -newer "$bin" -print -quit)" ]; then
+    echo "fuzz: building $bin"
+    "$cxx" -std=c++20 -O1 -g -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined \
+      -I"$root/include" "$here/fuzz_$fmt.cpp" -o "$bin"
+  fi
+  work="$out/corpus-$fmt"
+  rm -rf "$work"; mkdir -p "$work" "$out/artifacts-$fmt"
+  cp "$here/corpus/$fmt/"* "$work/"
+  echo "fuzz: $fmt for ${seconds}s"
+  if ! "$bin" -max_total_time="$seconds" -max_len=65536 -rss_limit_mb=2048 -timeout=10 \
+        -artifact_prefix="$out/artifacts-$fmt/" -print_final_stats=1 "$work" > "$out/fuzz_$fmt.log" 2>&1; then
+    echo "fuzz: $fmt FAILED, see $out/fuzz_$fmt.log and $out/artifacts-$fmt/" >&2
+    tail -30 "$out/fuzz_$fmt.log" >&2
+    status=1
+  else
+    grep -E "stat::number_of_executed_units|cov:" "$out/fuzz_$fmt.log" | tail -2 | sed "s/^/fuzz: $fmt: /"
+  fi
+done
+exit $status

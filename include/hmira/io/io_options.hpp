@@ -1,0 +1,66 @@
+// hmira/io/io_options.hpp
+// What the readers return besides the mesh (per-vertex normals and colours, a report) and the
+// options the readers and writers take. Shared by every format, so the CLI and user code can
+// move attributes from any format to any other.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "../core/vec3.hpp"
+
+namespace hmira::io {
+
+/// Per-vertex data that some formats carry. Each vector is either empty (the file had none)
+/// or holds one entry per vertex, indexed by vertex index: for a reader, the order in which
+/// it created the vertices (the file's order); for a writer, T::vertex_index(mesh, v).
+///
+/// Meshes with named properties (hmira's reference meshes, or any mesh with
+/// `add_vertex_property<T>(name)` / `get_vertex_property<T>(name)`) also get them as the
+/// properties "v:normal" (vec3<float>) and "v:color" (std::array<std::uint8_t, 4>, RGBA) on
+/// reading, and writers use those properties when no explicit attributes are given.
+struct mesh_attributes {
+    std::vector<vec3<float>> normals;
+    std::vector<std::array<std::uint8_t, 4>> colors;
+    bool empty() const noexcept { return normals.empty() && colors.empty(); }
+};
+
+/// Called now and then while a reader parses: bytes done and total (for progress bars).
+using progress_callback = std::function<void(std::uint64_t done, std::uint64_t total)>;
+
+struct read_options {
+    /// STL only: weld corners with exactly equal coordinates into one vertex (-0 equals +0).
+    /// Without welding every triangle gets three vertices of its own (a soup).
+    bool weld_stl = true;
+    /// Called every few megabytes of input; leave empty for none.
+    progress_callback progress = {};
+};
+
+/// What a reader did besides filling the mesh.
+struct read_report {
+    std::string format;                 ///< "obj", "off", "ply (binary little endian)", ...
+    mesh_attributes attributes;         ///< normals / colours found in the file
+    std::size_t dropped_triangles = 0;  ///< STL: triangles whose corners welded together
+};
+
+enum class ply_encoding { ascii, binary_little_endian, binary_big_endian };
+enum class stl_encoding { binary, ascii };
+/// Coordinate type in binary PLY: the mesh's own scalar, or forced.
+enum class ply_scalar { mesh, float32, float64 };
+
+struct write_options {
+    ply_encoding ply = ply_encoding::binary_little_endian;
+    ply_scalar ply_coordinates = ply_scalar::mesh;
+    stl_encoding stl = stl_encoding::binary;
+    /// Explicit per-vertex normals / colours to write (null: the mesh's "v:normal" /
+    /// "v:color" properties if it has them). Ignored by formats that cannot hold them (STL).
+    const mesh_attributes* attributes = nullptr;
+    /// Write normals and colours at all (false: geometry and faces only).
+    bool write_attributes = true;
+};
+
+}  // namespace hmira::io

@@ -1,0 +1,116 @@
+// hmira/io/mesh_io.hpp
+// One entry point for every format: read_mesh / write_mesh pick OBJ, OFF, PLY or STL from the
+// file's extension (case-insensitive), and read_soup gives a file's content as indexed arrays
+// without building a mesh.
+#pragma once
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "../concepts.hpp"
+#include "../core/result.hpp"
+#include "detail/files.hpp"
+#include "detail/polygon_soup.hpp"
+#include "io_options.hpp"
+#include "obj.hpp"
+#include "off.hpp"
+#include "ply.hpp"
+#include "stl.hpp"
+
+namespace hmira::io {
+
+enum class file_format { obj, off, ply, stl };
+
+inline const char* to_string(file_format f) {
+    switch (f) {
+        case file_format::obj: return "obj";
+        case file_format::off: return "off";
+        case file_format::ply: return "ply";
+        case file_format::stl: return "stl";
+    }
+    return "?";
+}
+
+/// The format named by the path's extension, or nothing for an unknown extension.
+inline std::optional<file_format> format_from_extension(const std::filesystem::path& path) {
+    std::string ext = path.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
+    if (ext == ".obj") return file_format::obj;
+    if (ext == ".off") return file_format::off;
+    if (ext == ".ply") return file_format::ply;
+    if (ext == ".stl") return file_format::stl;
+    return std::nullopt;
+}
+
+namespace detail {
+inline hmira::error unknown_extension(const std::filesystem::path& path) {
+    return fail(errc::unsupported, path.string() + ": unknown mesh format '" + path.extension().string() + "' (use .obj, .off, .ply or .stl)");
+}
+}  // namespace detail
+
+/// Parses text/bytes of the given format into a soup (what the fuzz targets call).
+/// Complexity O(bytes). Errors: as the format's parse_* function.
+inline result<polygon_soup> parse_soup(std::string_view data, file_format format, const std::string& name, const read_options& options = {}) {
+    switch (format) {
+        case file_format::obj: return parse_obj(data, name, options);
+        case file_format::off: return parse_off(data, name, options);
+        case file_format::ply: return parse_ply(data, name, options);
+        case file_format::stl: {
+            auto s = parse_stl(data, name, options);
+            if (!s) return s.error();
+            return std::move(s->soup);
+        }
+    }
+    return fail(errc::unsupported, name + ": unknown format");
+}
+
+/// Reads a file into indexed arrays, the format chosen by extension. No mesh is built.
+/// Complexity O(bytes). Errors: errc::io_error (missing file, directory), errc::unsupported
+/// (unknown extension) and the parse errors of the format.
+inline result<polygon_soup> read_soup(const std::filesystem::path& path, const read_options& options = {}) {
+    const auto format = format_from_extension(path);
+    if (!format) return detail::unknown_extension(path);
+    auto file = detail::input_file::open(path);
+    if (!file) return file.error();
+    return parse_soup(file->text(), *format, path.string(), options);
+}
+
+/// Reads a mesh file into `mesh` (replacing its content), the format chosen by extension.
+/// On any error the mesh is unchanged. Complexity O(bytes + mesh insertions).
+/// Errors: errc::io_error, errc::unsupported, the format's parse errors, and the mesh's own
+/// add_face errors (for example a non-manifold face in a halfedge mesh), naming the face.
+template <class M, class T = default_traits<M>>
+    requires readable_mesh<M, T>
+result<read_report> read_mesh(M& mesh, const std::filesystem::path& path, const read_options& options = {}) {
+    const auto format = format_from_extension(path);
+    if (!format) return detail::unknown_extension(path);
+    switch (*format) {
+        case file_format::obj: return read_obj<M, T>(mesh, path, options);
+        case file_format::off: return read_off<M, T>(mesh, path, options);
+        case file_format::ply: return read_ply<M, T>(mesh, path, options);
+        case file_format::stl: return read_stl<M, T>(mesh, path, options);
+    }
+    return detail::unknown_extension(path);
+}
+
+/// Writes `mesh` atomically in the format named by the extension: a failure never leaves a
+/// truncated file and never touches an existing one. Complexity O(V + C).
+/// Errors: errc::unsupported (unknown extension), errc::io_error.
+template <class M, class T = default_traits<M>>
+    requires writable_mesh<M, T>
+result<void> write_mesh(const M& mesh, const std::filesystem::path& path, const write_options& options = {}) {
+    const auto format = format_from_extension(path);
+    if (!format) return detail::unknown_extension(path);
+    switch (*format) {
+        case file_format::obj: return write_obj<M, T>(mesh, path, options);
+        case file_format::off: return write_off<M, T>(mesh, path, options);
+        case file_format::ply: return write_ply<M, T>(mesh, path, options);
+        case file_format::stl: return write_stl<M, T>(mesh, path, options);
+    }
+    return detail::unknown_extension(path);
+}
+
+}  // namespace hmira::io
