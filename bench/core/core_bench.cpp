@@ -121,6 +121,9 @@ const face_list& grid_10k() {
 template <class M, class T = hmira::default_traits<M>>
 void build_through_traits(M& m, const face_list& g) {
     using S = typename T::scalar;
+    // Models that can reserve room (OpenMesh, CGAL, winged-edge) do, as their native builds do.
+    if constexpr (requires { T::reserve(m, std::size_t{}, std::size_t{}, std::size_t{}); })
+        T::reserve(m, g.points.size(), g.corners.size() / 2 + g.points.size(), g.faces());
     std::vector<typename T::vertex_handle> vs;
     vs.reserve(g.points.size());
     for (const auto& p : g.points) vs.push_back(T::add_vertex(m, hmira::vec3<S>{S(p.x), S(p.y), S(p.z)}));
@@ -187,16 +190,19 @@ hmira::vec3<double> om_one_ring_native(const om_mesh& m) {
         }
     return s;
 }
-// The same flip as hmira::flip_normals, written against OpenMesh's API.
+// hmira::flip_normals's steps, written against OpenMesh's API: the same loop natively.
 void om_flip_native(om_mesh& m) {
     using HH = OpenMesh::HalfedgeHandle;
     using VH = OpenMesh::VertexHandle;
     const std::size_t nh = m.n_halfedges();
     std::vector<HH> old_prev(nh);
     std::vector<VH> source(nh);
+    std::vector<HH> all;
+    all.reserve(nh);
     for (auto h : m.halfedges()) {
         old_prev[h.idx()] = m.prev_halfedge_handle(h);
         source[h.idx()] = m.from_vertex_handle(h);
+        all.push_back(h);
     }
     std::vector<std::pair<VH, HH>> out;
     out.reserve(m.n_vertices());
@@ -205,7 +211,7 @@ void om_flip_native(om_mesh& m) {
         if (!h.is_valid()) continue;
         out.emplace_back(v, m.is_boundary(h) ? old_prev[h.idx()] : m.opposite_halfedge_handle(h));
     }
-    for (auto h : m.halfedges()) {
+    for (HH h : all) {
         m.set_vertex_handle(h, source[h.idx()]);
         m.set_next_halfedge_handle(h, old_prev[h.idx()]);
     }
@@ -268,16 +274,19 @@ hmira::vec3<double> cgal_one_ring_native(const cgal_mesh& m) {
     }
     return s;
 }
-// The same flip as hmira::flip_normals, written against Surface_mesh's API.
+// hmira::flip_normals's steps, written against Surface_mesh's API: the same loop natively.
 void cgal_flip_native(cgal_mesh& m) {
     using HH = cgal_mesh::Halfedge_index;
     using VH = cgal_mesh::Vertex_index;
     const std::size_t nh = m.num_halfedges();
     std::vector<HH> old_prev(nh);
     std::vector<VH> source(nh);
+    std::vector<HH> all;
+    all.reserve(nh);
     for (auto h : m.halfedges()) {
         old_prev[h.idx()] = m.prev(h);
         source[h.idx()] = m.source(h);
+        all.push_back(h);
     }
     // Surface_mesh keeps an incoming halfedge per vertex; after the flip the old outgoing
     // (its opposite's direction reversed) comes in.
@@ -288,7 +297,7 @@ void cgal_flip_native(cgal_mesh& m) {
         if (h == cgal_mesh::null_halfedge()) continue;
         in.emplace_back(v, m.is_border(h) ? m.next(h) : m.opposite(h));
     }
-    for (auto h : m.halfedges()) {
+    for (HH h : all) {
         m.set_target(h, source[h.idx()]);
         m.set_next(h, old_prev[h.idx()]);
     }
@@ -459,13 +468,16 @@ struct pair_spec {
     std::string workload, mesh, peer, hmira;
     std::function<double()> run_peer, run_hmira;  // each returns seconds for one run
     double target = 0;
+    int repeat = 1;  // set for traversal and flip pairs on the small mesh
 };
 
+// Short workloads (a traversal of the small mesh) run `repeat` times per sample.
+int repeat = 1;
 template <class F>
 double seconds(F&& f) {
     const auto t0 = clock_type::now();
-    f();
-    return std::chrono::duration<double>(clock_type::now() - t0).count();
+    for (int i = 0; i < repeat; ++i) f();
+    return std::chrono::duration<double>(clock_type::now() - t0).count() / repeat;
 }
 
 double median(std::vector<double> v) {
@@ -479,6 +491,8 @@ volatile double sink = 0;
 void run_pairs(int rounds) {
     std::vector<pair_spec> pairs;
     for (const face_list* g : {&real_mesh(), &grid_2m()}) {
+        const int reps = g->faces() < 200000 ? 20 : 1;
+        const std::size_t first = pairs.size();
         const std::string mesh = g->name + " (" + std::to_string(g->faces()) + " F)";
         // Shared prebuilt meshes for the traversal and flip workloads.
         auto he = std::make_shared<hmira::halfedge_mesh>(bulk_halfedge(*g));
@@ -541,10 +555,12 @@ void run_pairs(int rounds) {
                          [cg] { return seconds([&] { CGAL::Polygon_mesh_processing::reverse_face_orientations(*cg); }); },
                          [cg] { return seconds([&] { sink = double(hmira::flip_normals(*cg)); }); }, 0});
 #endif
+        for (std::size_t i = first; i < pairs.size(); ++i) pairs[i].repeat = reps;
     }
     std::printf("%-9s %-22s %-50s %-40s %10s %10s %8s %7s\n", "workload", "mesh", "peer", "hmira", "peer ms", "hmira ms", "ratio", "target");
     for (auto& p : pairs) {
         std::vector<double> tp, th, ratio;
+        repeat = p.workload == "build" ? 1 : p.repeat;
         (void)p.run_peer();  // warm-up
         (void)p.run_hmira();
         for (int r = 0; r < rounds; ++r) {

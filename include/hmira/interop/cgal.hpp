@@ -148,10 +148,16 @@ struct mesh_traits<CGAL::Surface_mesh<P>> {
 
     // ----- local getters at thesis cost -----------------------------------------------------------
     static loop<typename S::loop_vertex> face_vertices(const mesh& m, FH f) { return {m, m.halfedge(f)}; }
-    static loop<typename S::outgoing_target> adjacent_vertices(const mesh& m, VH v) { return {m, vertex_halfedge(m, v)}; }
-    static loop<typename S::outgoing_edge> vertex_edges(const mesh& m, VH v) { return {m, vertex_halfedge(m, v)}; }
+    // A full turn around v may start at any outgoing halfedge: the opposite of the stored
+    // incoming one costs no memory access (vertex_halfedge would read its face).
+    static HH any_outgoing(const mesh& m, VH v) {
+        const HH in = m.halfedge(v);
+        return in == mesh::null_halfedge() ? in : m.opposite(in);
+    }
+    static loop<typename S::outgoing_target> adjacent_vertices(const mesh& m, VH v) { return {m, any_outgoing(m, v)}; }
+    static loop<typename S::outgoing_edge> vertex_edges(const mesh& m, VH v) { return {m, any_outgoing(m, v)}; }
     static auto vertex_faces(const mesh& m, VH v) {
-        return loop<typename S::outgoing_halfedge>(m, vertex_halfedge(m, v)) |
+        return loop<typename S::outgoing_halfedge>(m, any_outgoing(m, v)) |
                std::views::filter([&m](HH h) { return m.face(h) != mesh::null_face(); }) |
                std::views::transform([&m](HH h) { return m.face(h); });
     }
@@ -171,6 +177,11 @@ struct mesh_traits<CGAL::Surface_mesh<P>> {
 
     // ----- building ---------------------------------------------------------------------------------
     static VH add_vertex(mesh& m, const vec3<scalar>& p) { return m.add_vertex(P(p.x, p.y, p.z)); }
+    /// Optional (not a concept requirement): room for this many elements, as Surface_mesh::reserve.
+    static void reserve(mesh& m, std::size_t vertices, std::size_t edges, std::size_t faces) {
+        m.reserve(static_cast<typename mesh::size_type>(vertices), static_cast<typename mesh::size_type>(edges),
+                  static_cast<typename mesh::size_type>(faces));
+    }
 
     /// CGAL's add_face (CGAL::Euler::add_face), with its failure (a null face) turned into an
     /// error; handles are checked first so CGAL never sees a bad one.

@@ -164,6 +164,8 @@ struct traits_base {
 
     // ----- building ----------------------------------------------------------------------------
     static VH add_vertex(Mesh& m, const vec3<scalar>& p) { return m.add_vertex(typename Mesh::Point(p.x, p.y, p.z)); }
+    /// Optional (not a concept requirement): room for this many elements, as OpenMesh's reserve.
+    static void reserve(Mesh& m, std::size_t vertices, std::size_t edges, std::size_t faces) { m.reserve(vertices, edges, faces); }
 
     /// OpenMesh's add_face, with its failure (an invalid handle and a line on omerr) turned
     /// into an error; the handles are checked first so OpenMesh never sees a bad one.

@@ -421,36 +421,45 @@ public:
             }
         }
         for (std::size_t v = 0; v < nv; ++v) out_begin[v + 1] += out_begin[v];
-        std::vector<u32> out(nc);
+        // Corners grouped by source vertex, with their targets beside them so that the twin
+        // search below scans contiguous memory.
+        std::vector<u32> out(nc), out_target(nc);
         {
             std::vector<u32> cursor(out_begin.begin(), out_begin.end() - 1);
-            for (u32 k = 0; k < nc; ++k) out[cursor[corners[k]]++] = k;
+            for (u32 k = 0; k < nc; ++k) {
+                const u32 i = cursor[corners[k]]++;
+                out[i] = k;
+                out_target[i] = target[k];
+            }
         }
         // Twins: the corner running the same edge backwards; the same direction twice is an error.
         std::vector<u32> twin(nc, none);
-        std::size_t edges = 0;
-        for (u32 k = 0; k < nc; ++k) {
-            const u32 a = corners[k], b = target[k];
-            for (u32 i = out_begin[a]; i < out_begin[a + 1]; ++i)
-                if (out[i] != k && target[out[i]] == b) {
-                    bool reverse = false;
-                    for (u32 j = out_begin[b]; j < out_begin[b + 1]; ++j) reverse |= target[out[j]] == a;
-                    return fail(reverse ? errc::non_manifold : errc::orientation_conflict,
-                                "from_polygons: edge " + std::to_string(a) + "->" + std::to_string(b) +
-                                    (reverse ? " has more than two faces" : " is run in the same direction by two faces (they are wound against each other)"),
-                                static_cast<long long>(a));
-                }
-            for (u32 j = out_begin[b]; j < out_begin[b + 1]; ++j)
-                if (target[out[j]] == a) {
-                    twin[k] = out[j];
-                    break;
-                }
-            edges += (twin[k] == none || twin[k] > k);
+        for (std::size_t a = 0; a < nv; ++a) {
+            const u32 rb = out_begin[a], re = out_begin[a + 1];
+            for (u32 i = rb; i < re; ++i) {
+                const u32 b = out_target[i];
+                for (u32 j = i + 1; j < re; ++j)
+                    if (out_target[j] == b) {
+                        bool reverse = false;
+                        for (u32 r = out_begin[b]; r < out_begin[b + 1]; ++r) reverse |= out_target[r] == a;
+                        return fail(reverse ? errc::non_manifold : errc::orientation_conflict,
+                                    "from_polygons: edge " + std::to_string(a) + "->" + std::to_string(b) +
+                                        (reverse ? " has more than two faces" : " is run in the same direction by two faces (they are wound against each other)"),
+                                    static_cast<long long>(a));
+                    }
+                for (u32 r = out_begin[b]; r < out_begin[b + 1]; ++r)
+                    if (out_target[r] == a) {
+                        twin[out[i]] = out[r];
+                        break;
+                    }
+            }
         }
+        std::size_t edges = 0;
+        for (u32 k = 0; k < nc; ++k) edges += (twin[k] == none || twin[k] > k);
         // Halfedge of each corner: 2e for the first corner of an edge, 2e + 1 for its twin or
         // for the boundary halfedge opposite an unpaired corner.
         basic_halfedge_mesh m;
-        std::vector<u32>& corner_h = out;  // reuse: the grouping is no longer needed after this
+        std::vector<u32>& corner_h = out_target;  // reuse: the grouping is no longer needed after this
         std::vector<u32> out_count(nv);
         for (std::size_t v = 0; v < nv; ++v) out_count[v] = out_begin[v + 1] - out_begin[v];
         {

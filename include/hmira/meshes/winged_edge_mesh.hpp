@@ -514,6 +514,8 @@ struct mesh_traits<basic_winged_edge_mesh<Scalar>> {
     static void set_position(mesh& m, vertex_handle v, const vec3<Scalar>& p) { m.set_position(v, p); }
     static vertex_handle add_vertex(mesh& m, const vec3<Scalar>& p) { return m.add_vertex(p); }
     static result<face_handle> add_face(mesh& m, std::span<const vertex_handle> vs) { return m.add_face(vs); }
+    /// Optional (not a concept requirement): room for this many elements.
+    static void reserve(mesh& m, std::size_t vertices, std::size_t edges, std::size_t faces) { m.reserve(vertices, edges, faces); }
 
     static void set_next(mesh& m, halfedge_handle h, halfedge_handle n) { m.set_next(h, n); }
     static void set_target(mesh& m, halfedge_handle h, vertex_handle v) { m.set_target(h, v); }
