@@ -1,0 +1,211 @@
+// hmira/algorithms/editing/detail/editing_common.hpp
+// What truncate, bevel and extrude share: the editing concept, small geometry helpers, and
+// two composite operators built from the Euler operators (split an edge, replace a vertex by a
+// polygon through its neighbours). Not part of the public API.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "../../../concepts.hpp"
+#include "../../../core/result.hpp"
+#include "../../../core/vec3.hpp"
+#include "../../euler/euler.hpp"
+
+namespace hmira {
+
+/// A mesh the editing functions (truncate, bevel, extrude) can change: the Euler operators'
+/// mesh (halfedge navigation and raw halfedge mutation, polygons of any degree, so a
+/// triangles-only model is rejected) with positions, and dense vertex, edge and face indices
+/// for the local scratch sets that selections of several elements need.
+template <class M, class T = default_traits<M>>
+concept editable_mesh = euler_mutable_mesh<M, T> && positioned_mesh<M, T> && vertex_index_mesh<M, T> &&
+                        edge_index_mesh<M, T> && face_index_mesh<M, T> && halfedge_index_mesh<M, T>;
+
+namespace detail::editing {
+
+template <class M, class T>
+using point = vec3<typename T::scalar>;
+
+template <class M, class T>
+vec3<double> pos(const M& m, typename T::vertex_handle v) {
+    const vec3<typename T::scalar> p = T::position(m, v);
+    return {double(p.x), double(p.y), double(p.z)};
+}
+
+template <class M, class T>
+point<M, T> to_point(const vec3<double>& p) {
+    using S = typename T::scalar;
+    return {static_cast<S>(p.x), static_cast<S>(p.y), static_cast<S>(p.z)};
+}
+
+/// A small sorted set of element indices: selections stay local (no array sized by the
+/// whole mesh), at O(k log k) for k selected elements.
+class index_set {
+public:
+    /// Adds i; returns whether it was new.
+    bool insert(std::size_t i) {
+        const auto it = std::lower_bound(items_.begin(), items_.end(), i);
+        if (it != items_.end() && *it == i) return false;
+        items_.insert(it, i);
+        return true;
+    }
+    bool contains(std::size_t i) const { return std::binary_search(items_.begin(), items_.end(), i); }
+    std::size_t size() const { return items_.size(); }
+private:
+    std::vector<std::size_t> items_;
+};
+
+/// The outgoing halfedges of v in rotation order (h -> next(opposite(h))), starting at the
+/// stored one (a boundary halfedge when v is on the boundary). O(V_adjacentV).
+template <class M, class T>
+std::vector<typename T::halfedge_handle> outgoing(const M& m, typename T::vertex_handle v) {
+    std::vector<typename T::halfedge_handle> out;
+    const auto start = T::vertex_halfedge(m, v);
+    if (start == T::null_halfedge()) return out;
+    auto h = start;
+    do {
+        out.push_back(h);
+        h = T::next(m, T::opposite(m, h));
+    } while (h != start && out.size() <= 1u << 20);
+    return out;
+}
+
+/// The same rotation, starting at `first` (an outgoing halfedge of its source).
+template <class M, class T>
+std::vector<typename T::halfedge_handle> outgoing_from(const M& m, typename T::halfedge_handle first) {
+    std::vector<typename T::halfedge_handle> out;
+    auto h = first;
+    do {
+        out.push_back(h);
+        h = T::next(m, T::opposite(m, h));
+    } while (h != first && out.size() <= 1u << 20);
+    return out;
+}
+
+/// Checks that v can have its corner cut: it has edges, and at most one boundary gap (a
+/// vertex with several gaps is non-manifold). `what` names the calling function.
+template <class M, class T>
+result<void> check_corner_vertex(const M& m, typename T::vertex_handle v, const char* what) {
+    namespace de = detail::euler;
+    if (!de::usable<M, T>(m, v))
+        return fail(errc::invalid_handle, std::string(what) + ": " + de::name<M, T>("vertex", m, v) + " does not exist",
+                    de::index_of<M, T>(m, v));
+    const auto hs = outgoing<M, T>(m, v);
+    if (hs.empty())
+        return fail(errc::topology, std::string(what) + ": " + de::name<M, T>("vertex", m, v) + " is isolated; there is no corner to cut",
+                    de::index_of<M, T>(m, v));
+    std::size_t gaps = 0;
+    for (auto h : hs) gaps += T::face(m, h) == T::null_face() ? 1 : 0;
+    if (gaps > 1)
+        return fail(errc::non_manifold,
+                    std::string(what) + ": " + de::name<M, T>("vertex", m, v) + " is non-manifold (" + std::to_string(gaps) +
+                        " boundary gaps); its corner is not one cone",
+                    de::index_of<M, T>(m, v));
+    if (gaps == 1 && hs.size() < 2)
+        return fail(errc::topology, std::string(what) + ": " + de::name<M, T>("vertex", m, v) + " ends a wire edge", de::index_of<M, T>(m, v));
+    if (gaps == 0 && hs.size() < 2)
+        return fail(errc::topology, std::string(what) + ": " + de::name<M, T>("vertex", m, v) + " has degree 1", de::index_of<M, T>(m, v));
+    for (auto h : hs)
+        if (T::target(m, h) == v)
+            return fail(errc::topology, std::string(what) + ": " + de::name<M, T>("vertex", m, v) + " has a loop edge", de::index_of<M, T>(m, v));
+    return {};
+}
+
+/// What split_edge made of the halfedge u -> w.
+template <class M, class T>
+struct split_result {
+    typename T::vertex_handle vertex;         ///< the new vertex x
+    typename T::halfedge_handle first, second;  ///< u -> x and x -> w, on the side of the split halfedge
+};
+
+/// Splits the edge of h (u -> w) at a new vertex placed at p, from Euler operators: makeEV
+/// grows x from u inside face(h), makeEF joins x to w (cutting off the triangle u x w), and
+/// killEF deletes the old edge, merging that triangle into the face on the other side.
+/// V + 1, E + 1, F + 0. The old edge's handles die. O(1), plus O(V_adjacentV) on a boundary.
+/// Precondition: h is a usable halfedge of an edge whose ends differ (never fails then).
+template <class M, class T>
+split_result<M, T> split_edge(M& m, typename T::halfedge_handle h, const vec3<double>& p) {
+    const auto corner = T::prev(m, h);  // into u, in face(h)
+    const auto o = T::opposite(m, h);
+    const auto mev = make_edge_vertex<M, T>(m, corner, to_point<M, T>(p));  // loop: corner -> u->x -> x->u -> h
+    const auto ux = mev->halfedge;
+    const auto mef = make_edge_face<M, T>(m, ux, h);  // new face: h -> w->x -> x->u; old side: u->x -> x->w -> ...
+    const auto xw = mef->halfedge;
+    const auto kef = kill_edge_face<M, T>(m, o);  // keeps face(o), kills the triangle (face of h)
+    (void)kef;
+    return {mev->vertex, ux, xw};
+}
+
+/// Replaces vertex v by a polygon through its neighbours, from Euler operators: the corner of
+/// every face around v is cut off by makeEF (a boundary gap is closed the same way, so that
+/// its cut becomes the new face's one boundary edge), the triangles are merged by killEF on
+/// the spokes, and the last spoke goes with v by killEV. Returns the new face, whose loop
+/// runs through the neighbours in v's rotation order, consistently oriented with the faces
+/// around. A vertex of degree 2 leaves no room for a face: it is dissolved instead (its two
+/// neighbours joined by one edge, which both faces share) and the result is the null face.
+///
+/// Preconditions (checked by the callers): check_corner_vertex(v) holds; the neighbours are
+/// distinct and no two of them are joined by an edge, except across a triangle at v.
+/// V - 1, and for degree d: E + 0, F + 1 (d >= 3), or E - 1, F + 0 (d = 2).
+/// Cost O(d): every face operation touches one triangle.
+template <class M, class T>
+typename T::face_handle replace_vertex_by_polygon(M& m, typename T::vertex_handle v) {
+    auto hs = outgoing<M, T>(m, v);
+    const std::size_t d = hs.size();
+    const bool boundary = T::face(m, hs[0]) == T::null_face();
+    if (boundary) {
+        // The gap lies between hs[d-1] and hs[0]; closing it makes the triangle a[d-1] v a[0].
+        const auto into_last = T::prev(m, T::opposite(m, hs[d - 1]));
+        (void)make_edge_face<M, T>(m, into_last, hs[0]);
+        if (d == 2) {
+            // The one real face keeps the new edge as its boundary side.
+            (void)kill_edge_face<M, T>(m, T::opposite(m, hs[0]));
+            (void)kill_edge_vertex<M, T>(m, T::opposite(m, hs[1]));
+            return T::null_face();
+        }
+    }
+    // Cut the corner of each face around v into a triangle a[i] v a[i+1], unless it is one.
+    for (std::size_t i = 0; i < d; ++i) {
+        const auto in = T::opposite(m, hs[i]);          // a[i] -> v
+        const auto out = hs[(i + 1) % d];                // v -> a[i+1], same face as `in`
+        if (T::next(m, T::next(m, out)) == in) continue;  // already a triangle
+        (void)make_edge_face<M, T>(m, T::prev(m, in), out);
+        if (d == 2) break;  // one triangle, merged into the other face below
+    }
+    if (d == 2) {
+        // hs[1]'s face is the triangle cut above; merge it into the face of hs[0].
+        (void)kill_edge_face<M, T>(m, hs[0]);
+        (void)kill_edge_vertex<M, T>(m, T::opposite(m, hs[1]));
+        return T::null_face();
+    }
+    for (std::size_t i = 0; i + 1 < d; ++i) (void)kill_edge_face<M, T>(m, hs[i]);
+    const auto face = T::face(m, hs[0]);
+    (void)kill_edge_vertex<M, T>(m, T::opposite(m, hs[d - 1]));
+    return face;
+}
+
+/// Newell normal of f (area-weighted, length = twice the area). O(face degree).
+template <class M, class T>
+vec3<double> face_area_vector(const M& m, typename T::face_handle f) {
+    vec3<double> n{};
+    const auto start = T::face_halfedge(m, f);
+    auto h = start;
+    do {
+        const auto a = pos<M, T>(m, T::target(m, T::opposite(m, h)));
+        const auto b = pos<M, T>(m, T::target(m, h));
+        n.x += (a.y - b.y) * (a.z + b.z);
+        n.y += (a.z - b.z) * (a.x + b.x);
+        n.z += (a.x - b.x) * (a.y + b.y);
+        h = T::next(m, h);
+    } while (h != start);
+    return n;
+}
+
+inline bool finite(double x) { return std::isfinite(x); }
+
+}  // namespace detail::editing
+}  // namespace hmira

@@ -1,0 +1,166 @@
+// hmira/algorithms/editing/truncate.hpp
+// Vertex truncation (thesis 2.2): cut the corner at a vertex with a plane through new points on
+// its edges, replacing the vertex by a new face. Works on one vertex, a set, or all vertices
+// (cube -> truncated cube), on every Euler-capable model, built from the Euler operators.
+#pragma once
+
+#include <cstddef>
+#include <ranges>
+#include <string>
+#include <vector>
+
+#include "detail/editing_common.hpp"
+
+namespace hmira {
+
+/// A mesh truncate() can edit: see editable_mesh (Euler operators, positions, indices).
+template <class M, class T = default_traits<M>>
+concept truncatable_mesh = editable_mesh<M, T>;
+
+/// Where the cuts go. Each cut point lies on an edge at `fraction` of the edge's length from
+/// the truncated vertex or, when `distance` > 0, at that absolute distance instead.
+/// On an edge whose other end is truncated by the same call the cut is clamped to half the
+/// edge, so cuts from both ends never cross; at exactly half they meet and share one vertex
+/// (cube at 1/2 -> cuboctahedron). Otherwise it is clamped to the whole edge (at 1 the cut
+/// point lies on the neighbour, joined to it by an edge of length zero).
+struct truncate_options {
+    double fraction = 1.0 / 3.0;  ///< in (0, 1); used when distance is 0
+    double distance = 0.0;        ///< > 0: absolute distance along each edge, overrides fraction
+};
+
+/// What truncating one vertex created.
+template <class M, class T = default_traits<M>>
+struct truncate_result {
+    /// The new face, wound like the faces around it; null for a vertex of degree 2 (the corner
+    /// of a single face at the boundary, or between two faces), which is cut by one edge only.
+    typename T::face_handle face;
+    std::vector<typename T::vertex_handle> vertices;  ///< the cut points, in the new face's order
+};
+
+/// What truncating a set of vertices created.
+template <class M, class T = default_traits<M>>
+struct truncate_set_result {
+    std::vector<typename T::face_handle> faces;       ///< one per vertex, in input order (null: degree 2)
+    std::vector<typename T::vertex_handle> vertices;  ///< every cut point made (a shared one once)
+};
+
+namespace detail::editing {
+
+template <class M, class T>
+result<void> check_truncate_options(const truncate_options& o, const char* what) {
+    if (!(o.distance >= 0) || !finite(o.distance))
+        return fail(errc::invalid_argument, std::string(what) + ": distance must be finite and >= 0 (0 selects fraction)");
+    if (o.distance == 0 && !(o.fraction > 0 && o.fraction < 1))
+        return fail(errc::invalid_argument, std::string(what) + ": fraction must lie in (0, 1), got " + std::to_string(o.fraction));
+    return {};
+}
+
+/// Cut parameter along h (from its source), clamped as truncate_options says.
+template <class M, class T>
+double cut_parameter(const M& m, typename T::halfedge_handle h, const truncate_options& o, bool other_end_cut) {
+    const double len = norm(pos<M, T>(m, T::target(m, h)) - pos<M, T>(m, detail::euler::source<M, T>(m, h)));
+    double t = o.distance > 0 ? (len > 0 ? o.distance / len : 1.0) : o.fraction;
+    const double limit = other_end_cut ? 0.5 : 1.0;
+    return t < limit ? t : limit;
+}
+
+/// Truncates the vertices whose indices are in `selected` (already checked): splits every
+/// edge at their cuts, then replaces each vertex by a polygon through its cut points.
+template <class M, class T>
+truncate_set_result<M, T> truncate_checked(M& m, const std::vector<typename T::vertex_handle>& vs, const index_set& selected,
+                                           const truncate_options& o) {
+    using H = typename T::halfedge_handle;
+    truncate_set_result<M, T> out;
+    // Plan every split before changing anything, from the original geometry.
+    struct cut { H h; double t_from, t_to; bool both; };
+    std::vector<cut> cuts;
+    for (auto v : vs)
+        for (auto h : outgoing<M, T>(m, v)) {
+            const auto w = T::target(m, h);
+            const bool both = selected.contains(T::vertex_index(m, w));
+            if (both && T::vertex_index(m, w) < T::vertex_index(m, v)) continue;  // planned from w
+            const double tv = cut_parameter<M, T>(m, h, o, both);
+            const double tw = both ? cut_parameter<M, T>(m, T::opposite(m, h), o, true) : 0.0;
+            cuts.push_back({h, tv, tw, both});
+        }
+    for (const auto& c : cuts) {
+        const auto a = pos<M, T>(m, detail::euler::source<M, T>(m, c.h));
+        const auto b = pos<M, T>(m, T::target(m, c.h));
+        if (c.both && c.t_from + c.t_to >= 1.0) {  // the cuts meet: one shared point
+            out.vertices.push_back(split_edge<M, T>(m, c.h, lerp(a, b, c.t_from)).vertex);
+            continue;
+        }
+        const auto s = split_edge<M, T>(m, c.h, lerp(a, b, c.t_from));
+        out.vertices.push_back(s.vertex);
+        if (c.both) out.vertices.push_back(split_edge<M, T>(m, s.second, lerp(a, b, 1.0 - c.t_to)).vertex);
+    }
+    for (auto v : vs) out.faces.push_back(replace_vertex_by_polygon<M, T>(m, v));
+    return out;
+}
+
+}  // namespace detail::editing
+
+/// Truncates the vertices in `vertices` (a range of vertex handles; duplicates count once):
+/// each is replaced by a new face through cut points on its edges (see truncate_options for
+/// where they go and what happens where two cuts meet). A vertex of degree d gives a d-gon;
+/// the faces around it gain one vertex each. Per vertex: V + d - 1, E + d, F + 1; a point
+/// shared by two meeting cuts saves one vertex and one edge.
+///
+/// Boundary vertices: the new face closes the corner, with one new boundary edge between the
+/// two cut points on the boundary edges. A vertex of degree 2 has no room for a face: its
+/// corner is cut off by a single new edge (V + 1, E + 1, F + 0).
+///
+/// Complexity O(sum of the degrees of the vertices) = O(V_adjacentV) per vertex, plus
+/// O(k log k) for k vertices. Errors (mesh unchanged): errc::invalid_argument for options out
+/// of range; errc::invalid_handle for a missing vertex; errc::topology for an isolated vertex
+/// or a vertex of degree 1; errc::non_manifold for a vertex with several boundary gaps.
+template <class M, class T = default_traits<M>, class R>
+    requires truncatable_mesh<M, T> && range_of_handles<R, typename T::vertex_handle>
+result<truncate_set_result<M, T>> truncate(M& mesh, const R& vertices, const truncate_options& options = {}) {
+    namespace de = detail::editing;
+    if (auto ok = de::check_truncate_options<M, T>(options, "truncate"); !ok) return ok.error();
+    std::vector<typename T::vertex_handle> vs;
+    de::index_set selected;
+    for (auto v0 : vertices) {
+        const typename T::vertex_handle v = v0;
+        if (auto ok = de::check_corner_vertex<M, T>(mesh, v, "truncate"); !ok) return ok.error();
+        const auto i = T::vertex_index(mesh, v);
+        if (selected.contains(i)) continue;
+        selected.insert(i);
+        vs.push_back(v);
+    }
+    return de::truncate_checked<M, T>(mesh, vs, selected, options);
+}
+
+/// Truncates one vertex of degree d (see the set overload): V + d - 1, E + d, F + 1.
+/// Complexity O(V_adjacentV). Errors as for the set overload; the mesh is unchanged on error.
+template <class M, class T = default_traits<M>>
+    requires truncatable_mesh<M, T>
+result<truncate_result<M, T>> truncate(M& mesh, typename T::vertex_handle vertex, const truncate_options& options = {}) {
+    namespace de = detail::editing;
+    if (auto ok = de::check_truncate_options<M, T>(options, "truncate"); !ok) return ok.error();
+    if (auto ok = de::check_corner_vertex<M, T>(mesh, vertex, "truncate"); !ok) return ok.error();
+    de::index_set selected;
+    selected.insert(T::vertex_index(mesh, vertex));
+    auto r = de::truncate_checked<M, T>(mesh, std::vector<typename T::vertex_handle>{vertex}, selected, options);
+    truncate_result<M, T> out{r.faces[0], {}};
+    if (out.face != T::null_face()) {
+        for (auto v : T::face_vertices(mesh, out.face)) out.vertices.push_back(v);
+    } else {
+        out.vertices = std::move(r.vertices);
+    }
+    return out;
+}
+
+/// Truncates every vertex of the mesh (cube -> truncated cube: 24 V, 36 E, 14 F with 8
+/// triangles and 6 octagons at fraction 1/3; cuboctahedron at 1/2). Isolated vertices are
+/// errors, as in the set overload. Complexity O(V + E) = O(E_all).
+template <class M, class T = default_traits<M>>
+    requires truncatable_mesh<M, T>
+result<truncate_set_result<M, T>> truncate_all(M& mesh, const truncate_options& options = {}) {
+    std::vector<typename T::vertex_handle> vs;
+    for (auto v : T::vertices(mesh)) vs.push_back(v);
+    return truncate<M, T>(mesh, vs, options);
+}
+
+}  // namespace hmira
