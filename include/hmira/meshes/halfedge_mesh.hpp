@@ -400,8 +400,9 @@ public:
         if (nc >= none / 2 || nv >= none)
             return fail(errc::invalid_argument, "from_polygons: too many elements for 32-bit indices");
 
-        // Each corner's target (the next corner's vertex), and corners grouped by source vertex.
-        std::vector<u32> target(nc), stamp(nv, none), out_begin(nv + 1, 0);
+        // Corners counted by source vertex; a corner's target is the next corner's vertex, read
+        // from the face when needed rather than stored (less memory to fault in).
+        std::vector<u32> stamp(nv, none), out_begin(nv + 1, 0);
         for (std::size_t f = 0; f < nf; ++f) {
             const u32 b = face_offsets[f], e = face_offsets[f + 1];
             if (e < b) return fail(errc::invalid_argument, "from_polygons: face_offsets decrease at face " + std::to_string(f), static_cast<long long>(f));
@@ -416,7 +417,6 @@ public:
                     return fail(errc::degenerate_face, "from_polygons: face " + std::to_string(f) + " repeats vertex " + std::to_string(v),
                                 static_cast<long long>(f));
                 stamp[v] = static_cast<u32>(f);
-                target[k] = corners[k + 1 == e ? b : k + 1];
                 ++out_begin[v + 1];
             }
         }
@@ -424,14 +424,16 @@ public:
         // Corners grouped by source vertex, with their targets beside them so that the twin
         // search below scans contiguous memory.
         std::vector<u32> out(nc), out_target(nc);
-        {
-            std::vector<u32> cursor(out_begin.begin(), out_begin.end() - 1);
-            for (u32 k = 0; k < nc; ++k) {
-                const u32 i = cursor[corners[k]]++;
+        for (std::size_t f = 0; f < nf; ++f) {
+            const u32 b = face_offsets[f], e = face_offsets[f + 1];
+            for (u32 k = b; k < e; ++k) {
+                const u32 i = out_begin[corners[k]]++;  // out_begin[v] runs to the end of v's row
                 out[i] = k;
-                out_target[i] = target[k];
+                out_target[i] = corners[k + 1 == e ? b : k + 1];
             }
         }
+        for (std::size_t v = nv; v > 0; --v) out_begin[v] = out_begin[v - 1];  // back to row starts
+        if (nv > 0) out_begin[0] = 0;
         // Twins: the corner running the same edge backwards; the same direction twice is an error.
         std::vector<u32> twin(nc, none);
         for (std::size_t a = 0; a < nv; ++a) {
@@ -460,8 +462,6 @@ public:
         // for the boundary halfedge opposite an unpaired corner.
         basic_halfedge_mesh m;
         std::vector<u32>& corner_h = out_target;  // reuse: the grouping is no longer needed after this
-        std::vector<u32> out_count(nv);
-        for (std::size_t v = 0; v < nv; ++v) out_count[v] = out_begin[v + 1] - out_begin[v];
         {
             u32 e = 0;
             for (u32 k = 0; k < nc; ++k) {
@@ -484,16 +484,16 @@ public:
             const face_handle fh(static_cast<u32>(f));
             for (u32 k = b; k < e; ++k) {
                 const u32 h = corner_h[k];
-                m.halfedges_[h] = {vertex_handle(target[k]), fh, halfedge_handle(corner_h[k + 1 == e ? b : k + 1]),
+                const u32 to = corners[k + 1 == e ? b : k + 1];
+                m.halfedges_[h] = {vertex_handle(to), fh, halfedge_handle(corner_h[k + 1 == e ? b : k + 1]),
                                    halfedge_handle(corner_h[k == b ? e - 1 : k - 1])};
                 if (twin[k] == none) {
-                    const u32 from = target[k];  // the boundary halfedge runs target -> source
+                    const u32 from = to;  // the boundary halfedge runs target -> source
                     if (stamp[from] != none)
                         return fail(errc::non_manifold, "from_polygons: vertex " + std::to_string(from) +
                                                             " joins two or more separate fans of faces", static_cast<long long>(from));
                     stamp[from] = h ^ 1u;
                     m.halfedges_[h ^ 1u].target = vertex_handle(corners[k]);
-                    ++out_count[from];
                 }
             }
             m.faces_[f].outer = halfedge_handle(corner_h[e - 1]);
@@ -519,13 +519,14 @@ public:
         for (std::size_t v = 0; v < nv; ++v) {
             const auto start = m.vertex_out_[v];
             if (start.is_null()) continue;
+            const u32 degree = out_begin[v + 1] - out_begin[v] + (stamp[v] != none ? 1u : 0u);
             u32 around = 0;
             auto h = start;
             do {
                 h = m.halfedges_[h.index ^ 1u].next;
                 ++around;
-            } while (h != start && around <= out_count[v]);
-            if (around != out_count[v])
+            } while (h != start && around <= degree);
+            if (around != degree)
                 return fail(errc::non_manifold, "from_polygons: vertex " + std::to_string(v) + " joins two or more separate fans of faces",
                             static_cast<long long>(v));
         }
