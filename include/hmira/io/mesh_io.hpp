@@ -47,6 +47,9 @@ inline std::optional<file_format> format_from_extension(const std::filesystem::p
 
 namespace detail {
 inline hmira::error unknown_extension(const std::filesystem::path& path) {
+    std::error_code ec;
+    // A folder is an I/O problem whatever its name says.
+    if (std::filesystem::is_directory(path, ec)) return fail(errc::io_error, path.string() + ": is a directory, not a mesh file");
     return fail(errc::unsupported, path.string() + ": unknown mesh format '" + path.extension().string() + "' (use .obj, .off, .ply or .stl)");
 }
 }  // namespace detail
