@@ -28,7 +28,7 @@
 namespace hmira {
 
 /// A point delaunay_triangulation accepts: a vec3<S>-like type with members x, y, z, or a
-/// std::array<S, 2> / std::array<S, 3> (z = 0 for two components).
+/// `std::array` of 2 or 3 scalars (z = 0 for two components).
 template <class P>
 concept delaunay_point =
     requires(const P& p) {
@@ -52,6 +52,7 @@ enum class delaunay_status {
     all_collinear,  ///< all points on one line (at least 3 distinct): no triangles, hull = the 2 ends
 };
 
+/// What delaunay_triangulation computes besides the triangles.
 struct delaunay_options {
     /// Also compute the Voronoi diagram (the dual: one vertex per triangle, one edge per
     /// Delaunay edge).
@@ -65,21 +66,21 @@ struct delaunay_options {
 /// indices). It joins Voronoi vertices from and to (triangle indices), or, for a hull edge,
 /// is the ray from `from` along `direction` (pointing out of the hull) and to == no_vertex.
 struct voronoi_edge {
-    static constexpr std::uint32_t no_vertex = 0xFFFFFFFFu;
-    std::uint32_t site0 = 0, site1 = 0;
-    std::uint32_t from = 0, to = no_vertex;
-    vec3<double> direction{};
+    static constexpr std::uint32_t no_vertex = 0xFFFFFFFFu;  ///< `to` of a ray
+    std::uint32_t site0 = 0, site1 = 0;  ///< the Delaunay edge's end vertices
+    std::uint32_t from = 0, to = no_vertex;  ///< Voronoi vertices (triangle indices)
+    vec3<double> direction{};  ///< a ray's direction (hull edges only)
 };
 
 /// The Voronoi diagram: vertices[i] is the circumcentre of triangle i (z = 0).
 struct voronoi_diagram {
-    std::vector<vec3<double>> vertices;
-    std::vector<voronoi_edge> edges;
+    std::vector<vec3<double>> vertices;  ///< circumcentres, one per triangle
+    std::vector<voronoi_edge> edges;     ///< one per Delaunay edge
 };
 
 /// The triangulation as plain data.
 struct delaunay_triangles {
-    delaunay_status status = delaunay_status::ok;
+    delaunay_status status = delaunay_status::ok;  ///< ok, or all_collinear
     /// The distinct points (duplicates in x, y merged; z from the first input of each group).
     std::vector<vec3<double>> points;
     /// Counter-clockwise triangles (seen from +z) as indices into points.
@@ -98,7 +99,7 @@ struct delaunay_triangles {
 /// What delaunay_triangulation wrote into a mesh.
 template <class Mesh, class Traits = default_traits<Mesh>>
 struct delaunay_mesh_result {
-    delaunay_status status = delaunay_status::ok;
+    delaunay_status status = delaunay_status::ok;  ///< ok, or all_collinear
     /// The new vertices, one per distinct input point, in the order of delaunay_triangles::points.
     std::vector<vertex_handle_t<Mesh, Traits>> vertices;
     /// The new faces, in the order of delaunay_triangles::triangles.
@@ -106,7 +107,9 @@ struct delaunay_mesh_result {
     /// The convex hull as a counter-clockwise loop of new vertices.
     std::vector<vertex_handle_t<Mesh, Traits>> hull;
     /// vertices[i] comes from input point vertex_to_input[i]; input j became vertices[input_to_vertex[j]].
+    ///@{
     std::vector<std::uint32_t> vertex_to_input, input_to_vertex;
+    ///@}
     /// Empty unless options.voronoi; vertex i is dual to faces[i], sites index `vertices`.
     voronoi_diagram voronoi;
 };
