@@ -27,7 +27,7 @@
 
 namespace hmira {
 
-/// A point delaunay_triangulation accepts: a vec3<S>-like type with members x, y, z, or a
+/// A point delaunay_triangulation accepts: a `vec3`-like type with members x, y, z, or a
 /// `std::array` of 2 or 3 scalars (z = 0 for two components).
 template <class P>
 concept delaunay_point =
@@ -67,8 +67,14 @@ struct delaunay_options {
 /// is the ray from `from` along `direction` (pointing out of the hull) and to == no_vertex.
 struct voronoi_edge {
     static constexpr std::uint32_t no_vertex = 0xFFFFFFFFu;  ///< `to` of a ray
-    std::uint32_t site0 = 0, site1 = 0;  ///< the Delaunay edge's end vertices
-    std::uint32_t from = 0, to = no_vertex;  ///< Voronoi vertices (triangle indices)
+    /// The Delaunay edge's end vertices.
+    ///@{
+    std::uint32_t site0 = 0, site1 = 0;
+    ///@}
+    /// The Voronoi vertices joined (triangle indices).
+    ///@{
+    std::uint32_t from = 0, to = no_vertex;
+    ///@}
     vec3<double> direction{};  ///< a ray's direction (hull edges only)
 };
 
