@@ -19,20 +19,24 @@ namespace hmira {
 /// Concurrency: const access may run in parallel; set() must not race on one row word.
 class bit_grid {
 public:
-    using value_type = std::uint8_t;
+    using value_type = std::uint8_t;  ///< what value() returns: 0 or 1
 
+    /// An empty grid (all dimensions 0).
     bit_grid() = default;
+    /// A grid of geometry `g` with every voxel clear.
     explicit bit_grid(const grid_geometry& g)
         : geometry_(g), words_((g.dims[0] + 63) / 64), bits_(words_ * g.dims[1] * g.dims[2], 0) {}
 
-    grid_dims dims() const noexcept { return geometry_.dims; }
-    vec3<double> origin() const noexcept { return geometry_.origin; }
-    vec3<double> spacing() const noexcept { return geometry_.spacing; }
-    const grid_geometry& geometry() const noexcept { return geometry_; }
+    grid_dims dims() const noexcept { return geometry_.dims; }            ///< voxels per axis
+    vec3<double> origin() const noexcept { return geometry_.origin; }     ///< centre of voxel (0, 0, 0)
+    vec3<double> spacing() const noexcept { return geometry_.spacing; }   ///< voxel size along each axis
+    const grid_geometry& geometry() const noexcept { return geometry_; }  ///< dims, origin and spacing
 
+    /// 1 if voxel (i, j, k) is set, else 0; no bounds check.
     value_type value(std::size_t i, std::size_t j, std::size_t k) const noexcept {
         return static_cast<value_type>((row(j, k)[i >> 6] >> (i & 63)) & 1u);
     }
+    /// Sets voxel (i, j, k) when v != 0, clears it otherwise; no bounds check.
     void set(std::size_t i, std::size_t j, std::size_t k, value_type v) noexcept {
         const std::uint64_t bit = std::uint64_t(1) << (i & 63);
         auto& w = row(j, k)[i >> 6];
@@ -46,13 +50,16 @@ public:
         return n;
     }
 
+    /// 64-bit words per row of voxels along x.
     std::size_t words_per_row() const noexcept { return words_; }
+    /// The words of row (j, k): voxel i is bit i % 64 of word i / 64.
     std::uint64_t* row(std::size_t j, std::size_t k) noexcept { return bits_.data() + (k * geometry_.dims[1] + j) * words_; }
+    /// The words of row (j, k), read-only.
     const std::uint64_t* row(std::size_t j, std::size_t k) const noexcept {
         return bits_.data() + (k * geometry_.dims[1] + j) * words_;
     }
-    std::span<const std::uint64_t> words() const noexcept { return bits_; }
-    std::span<std::uint64_t> words() noexcept { return bits_; }
+    std::span<const std::uint64_t> words() const noexcept { return bits_; }  ///< all rows, (z, y) order
+    std::span<std::uint64_t> words() noexcept { return bits_; }              ///< all rows, (z, y) order
 
 private:
     grid_geometry geometry_;

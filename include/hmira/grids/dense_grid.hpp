@@ -22,29 +22,33 @@ namespace hmira {
 template <class T>
 class dense_grid {
 public:
-    using value_type = T;
+    using value_type = T;  ///< the sample type
 
+    /// An empty grid (all dimensions 0).
     dense_grid() = default;
     /// A grid of the given geometry with every sample set to `fill`.
     explicit dense_grid(const grid_geometry& g, T fill = T{})
         : geometry_(g), values_(g.size(), fill) {}
 
-    grid_dims dims() const noexcept { return geometry_.dims; }
-    vec3<double> origin() const noexcept { return geometry_.origin; }
-    vec3<double> spacing() const noexcept { return geometry_.spacing; }
-    const grid_geometry& geometry() const noexcept { return geometry_; }
-    std::size_t size() const noexcept { return values_.size(); }
+    grid_dims dims() const noexcept { return geometry_.dims; }                      ///< samples per axis
+    vec3<double> origin() const noexcept { return geometry_.origin; }               ///< position of sample (0, 0, 0)
+    vec3<double> spacing() const noexcept { return geometry_.spacing; }             ///< distance between samples
+    const grid_geometry& geometry() const noexcept { return geometry_; }            ///< dims, origin and spacing
+    std::size_t size() const noexcept { return values_.size(); }                    ///< number of samples
 
+    /// Offset of sample (i, j, k) in data().
     std::size_t index(std::size_t i, std::size_t j, std::size_t k) const noexcept {
         return i + geometry_.dims[0] * (j + geometry_.dims[1] * k);
     }
+    /// Sample (i, j, k); no bounds check.
     T value(std::size_t i, std::size_t j, std::size_t k) const noexcept { return values_[index(i, j, k)]; }
+    /// Overwrites sample (i, j, k); no bounds check.
     void set(std::size_t i, std::size_t j, std::size_t k, T v) noexcept { values_[index(i, j, k)] = v; }
 
-    const T* data() const noexcept { return values_.data(); }
-    T* data() noexcept { return values_.data(); }
-    std::span<const T> values() const noexcept { return values_; }
-    std::span<T> values() noexcept { return values_; }
+    const T* data() const noexcept { return values_.data(); }      ///< sample (0, 0, 0); x fastest
+    T* data() noexcept { return values_.data(); }                  ///< sample (0, 0, 0); x fastest
+    std::span<const T> values() const noexcept { return values_; } ///< all samples, x fastest
+    std::span<T> values() noexcept { return values_; }             ///< all samples, x fastest
 
 private:
     grid_geometry geometry_;
@@ -56,25 +60,31 @@ private:
 template <class T>
 class grid_view {
 public:
-    using value_type = std::remove_const_t<T>;
+    using value_type = std::remove_const_t<T>;  ///< the sample type, without const
 
+    /// A view of nothing (all dimensions 0).
     grid_view() = default;
+    /// Views `samples` as a grid of geometry `g`; make_grid_view() checks the sizes first.
     grid_view(std::span<T> samples, const grid_geometry& g) : geometry_(g), samples_(samples) {}
 
-    grid_dims dims() const noexcept { return geometry_.dims; }
-    vec3<double> origin() const noexcept { return geometry_.origin; }
-    vec3<double> spacing() const noexcept { return geometry_.spacing; }
-    const grid_geometry& geometry() const noexcept { return geometry_; }
+    grid_dims dims() const noexcept { return geometry_.dims; }            ///< samples per axis
+    vec3<double> origin() const noexcept { return geometry_.origin; }     ///< position of sample (0, 0, 0)
+    vec3<double> spacing() const noexcept { return geometry_.spacing; }   ///< distance between samples
+    const grid_geometry& geometry() const noexcept { return geometry_; }  ///< dims, origin and spacing
 
+    /// Offset of sample (i, j, k) in data().
     std::size_t index(std::size_t i, std::size_t j, std::size_t k) const noexcept {
         return i + geometry_.dims[0] * (j + geometry_.dims[1] * k);
     }
+    /// Sample (i, j, k); no bounds check.
     value_type value(std::size_t i, std::size_t j, std::size_t k) const noexcept { return samples_[index(i, j, k)]; }
+    /// Overwrites sample (i, j, k) in the caller's array (views of non-const T only).
     void set(std::size_t i, std::size_t j, std::size_t k, value_type v) noexcept
         requires(!std::is_const_v<T>)
     {
         samples_[index(i, j, k)] = v;
     }
+    /// The caller's array: sample (0, 0, 0), x fastest.
     const value_type* data() const noexcept { return samples_.data(); }
 
 private:

@@ -46,11 +46,13 @@ concept contiguous_voxel_grid = voxel_grid<G> && requires(const G& g) {
 /// The shape of a grid without its values: what voxelize() is asked to fill, and what a
 /// reader reports.
 struct grid_geometry {
-    grid_dims dims{0, 0, 0};
-    vec3<double> origin{0, 0, 0};
-    vec3<double> spacing{1, 1, 1};
+    grid_dims dims{0, 0, 0};         ///< samples along x, y and z
+    vec3<double> origin{0, 0, 0};    ///< position of sample (0, 0, 0)
+    vec3<double> spacing{1, 1, 1};   ///< distance between neighbouring samples along each axis
 
+    /// Number of samples, dims[0] * dims[1] * dims[2].
     std::size_t size() const noexcept { return dims[0] * dims[1] * dims[2]; }
+    /// Position of sample (i, j, k).
     vec3<double> position(std::size_t i, std::size_t j, std::size_t k) const noexcept {
         return {origin.x + double(i) * spacing.x, origin.y + double(j) * spacing.y, origin.z + double(k) * spacing.z};
     }

@@ -33,6 +33,7 @@ namespace hmira {
 /// value; signed distance fields are inside below it.
 enum class iso_inside { below, above };
 
+/// Options of marching_cubes() and marching_cubes_indexed().
 struct marching_cubes_options {
     /// The iso value; any finite value.
     double iso = 0.0;
@@ -48,9 +49,9 @@ struct marching_cubes_options {
 /// asked for, else one unit normal per position.
 template <class S = float>
 struct indexed_triangles {
-    std::vector<vec3<S>> positions;
-    std::vector<std::array<std::uint32_t, 3>> triangles;
-    std::vector<vec3<S>> normals;
+    std::vector<vec3<S>> positions;                       ///< one per vertex
+    std::vector<std::array<std::uint32_t, 3>> triangles;  ///< vertex indices, counter-clockwise seen from outside
+    std::vector<vec3<S>> normals;                         ///< empty, or one unit normal per vertex
 };
 
 namespace detail::mc {
@@ -548,9 +549,9 @@ result<indexed_triangles<S>> marching_cubes_indexed(const G& grid, const marchin
 /// (when asked for) one unit normal per vertex.
 template <class M, class T = default_traits<M>>
 struct marching_cubes_output {
-    std::vector<typename T::vertex_handle> vertices;
-    std::vector<typename T::face_handle> faces;
-    std::vector<vec3<typename T::scalar>> normals;
+    std::vector<typename T::vertex_handle> vertices;  ///< the new vertices, in creation order
+    std::vector<typename T::face_handle> faces;       ///< the new triangles, in creation order
+    std::vector<vec3<typename T::scalar>> normals;    ///< empty, or one unit normal per new vertex
 };
 
 /// Marching cubes into `mesh`, which may already hold other elements: adds the surface's

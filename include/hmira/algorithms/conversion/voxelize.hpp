@@ -37,9 +37,10 @@ enum class open_mesh_fill {
     fail,            ///< return an error
 };
 
+/// Options of voxelize() and voxelize_into().
 struct voxelize_options {
-    voxelize_mode mode = voxelize_mode::solid;
-    open_mesh_fill open_mesh = open_mesh_fill::surface_only;
+    voxelize_mode mode = voxelize_mode::solid;                ///< surface voxels only, or also the interior
+    open_mesh_fill open_mesh = open_mesh_fill::surface_only;  ///< what solid mode does with a mesh that is not closed
     /// Accept zero-area triangles (all corners collinear) instead of reporting them; they add
     /// no surface voxels of their own. Faces with a repeated vertex are always an error.
     bool allow_degenerate = false;
@@ -49,7 +50,7 @@ struct voxelize_options {
 
 /// The voxels, and how they were made.
 struct voxelization {
-    bit_grid voxels;
+    bit_grid voxels;  ///< the set voxels, on the requested grid
     /// True when the interior was filled (solid mode on a closed mesh, or by winding number).
     bool filled = false;
     /// Empty, or why solid mode did something else than asked (an open mesh).

@@ -61,11 +61,11 @@ inline result<std::string> read_maybe_gzip(const std::filesystem::path& path) {
 
 /// What an INRIMAGE header says, for callers that want more than the samples.
 struct inr_header {
-    grid_geometry geometry;
+    grid_geometry geometry;  ///< dimensions, origin (TX/TY/TZ) and spacing (VX/VY/VZ)
     std::string type;       ///< "float", "unsigned fixed" or "signed fixed"
     unsigned bits = 0;      ///< bits per sample: 8, 16, 32 or 64
-    bool big_endian = false;
-    std::size_t header_bytes = 0;
+    bool big_endian = false;       ///< CPU=sun or sgi
+    std::size_t header_bytes = 0;  ///< offset of the first sample (a multiple of 256)
 };
 
 /// Parses the header of INRIMAGE text `bytes`. Errors: parse_error naming the problem.

@@ -20,6 +20,7 @@
 
 namespace hmira::io {
 
+/// Options of read_raw() and write_raw().
 struct raw_options {
     /// Byte order of multi-byte samples in the file.
     bool big_endian = false;
