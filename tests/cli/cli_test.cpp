@@ -43,7 +43,7 @@ void expect_one_line_error(const run_result& r, const std::string& part) {
     EXPECT_NE(r.err.find(part), std::string::npos) << "'" << part << "' not in: " << r.err;
 }
 
-const std::vector<std::string> subcommands = {"info", "validate", "convert", "generate", "flip"};
+const std::vector<std::string> subcommands = {"info", "validate", "convert", "generate", "flip", "delaunay"};
 
 TEST(cli, every_subcommand_has_help_with_an_example_and_the_common_options) {
     scratch_dir dir;
@@ -194,6 +194,41 @@ TEST(cli, io_failures_exit_3) {
     const auto nowhere = hmira(dir, "generate cube no/such/folder/c.off");
     EXPECT_EQ(nowhere.code, 3);
     expect_one_line_error(nowhere, "does not exist");
+}
+
+TEST(cli, delaunay_triangulates_points_from_xyz_csv_and_ply) {
+    scratch_dir dir;
+    // A square with its centre: the Delaunay triangulation is the 4 triangles around the centre.
+    hmira_test::write_bytes(dir / "p.xyz", "# square\n0 0 1\n2 0 2\n2 2 3\n0 2 4\n1 1 5\n");
+    hmira_test::write_bytes(dir / "p.csv", "x,y,z\n0,0,1\n2,0,2\n2,2,3\n0,2,4\n1,1,5\n");
+    for (const char* in : {"p.xyz", "p.csv"}) {
+        SCOPED_TRACE(in);
+        const auto r = hmira(dir, std::string("delaunay ") + in + " t.off");
+        ASSERT_EQ(r.code, 0) << r.err;
+        hmira::face_vertex_mesh m;
+        ASSERT_TRUE(hmira::io::read_mesh(m, dir / "t.off"));
+        EXPECT_EQ(m.vertex_count(), 5u);
+        EXPECT_EQ(m.face_count(), 4u);
+        for (auto f : m.faces()) {
+            auto fv = m.face_vertices(f);
+            ASSERT_EQ(fv.size(), 3u);
+            const auto a = m.position(fv[0]), b = m.position(fv[1]), c = m.position(fv[2]);
+            EXPECT_GT((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x), 0.0) << "counter-clockwise";
+            bool uses_centre = false;
+            for (auto v : fv) uses_centre |= m.position(v).x == 1.0 && m.position(v).y == 1.0 && m.position(v).z == 5.0;
+            EXPECT_TRUE(uses_centre);
+        }
+    }
+    ASSERT_EQ(hmira(dir, "convert t.off pts.ply").code, 0);
+    const auto from_ply = hmira(dir, "delaunay pts.ply t2.obj");
+    EXPECT_EQ(from_ply.code, 0) << from_ply.err;
+    hmira_test::write_bytes(dir / "bad.xyz", "0 0\n1 zz\n");
+    const auto bad = hmira(dir, "delaunay bad.xyz never.off");
+    EXPECT_EQ(bad.code, 1);
+    expect_one_line_error(bad, "bad.xyz:2");
+    EXPECT_FALSE(std::filesystem::exists(dir / "never.off"));
+    EXPECT_EQ(hmira(dir, "delaunay missing.xyz x.off").code, 3);
+    EXPECT_EQ(hmira(dir, "delaunay p.las x.off").code, 2);
 }
 
 TEST(cli, real_cgal_demo_meshes_are_described) {
