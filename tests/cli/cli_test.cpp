@@ -43,7 +43,7 @@ void expect_one_line_error(const run_result& r, const std::string& part) {
     EXPECT_NE(r.err.find(part), std::string::npos) << "'" << part << "' not in: " << r.err;
 }
 
-const std::vector<std::string> subcommands = {"info", "validate", "convert", "generate", "flip", "delaunay"};
+const std::vector<std::string> subcommands = {"info", "validate", "convert", "generate", "flip", "delaunay", "mc"};
 
 TEST(cli, every_subcommand_has_help_with_an_example_and_the_common_options) {
     scratch_dir dir;
@@ -229,6 +229,23 @@ TEST(cli, delaunay_triangulates_points_from_xyz_csv_and_ply) {
     EXPECT_FALSE(std::filesystem::exists(dir / "never.off"));
     EXPECT_EQ(hmira(dir, "delaunay missing.xyz x.off").code, 3);
     EXPECT_EQ(hmira(dir, "delaunay p.las x.off").code, 2);
+}
+
+TEST(cli, marching_cubes_of_named_shapes_has_their_topology) {
+    scratch_dir dir;
+    ASSERT_EQ(hmira(dir, "mc torus t.off -n 48").code, 0);
+    const auto t = hmira(dir, "info --json t.off");
+    EXPECT_NE(t.out.find("\"genus\": 1,"), std::string::npos) << t.out;
+    EXPECT_NE(t.out.find("\"closed\": true"), std::string::npos) << t.out;
+    ASSERT_EQ(hmira(dir, "mc sphere s.ply -n 40 --normals").code, 0);
+    hmira::face_vertex_mesh s;
+    auto r = hmira::io::read_mesh(s, dir / "s.ply");
+    ASSERT_TRUE(r);
+    EXPECT_EQ(r->attributes.normals.size(), s.vertex_count());
+    EXPECT_NEAR(hmira_test::signed_volume(s), 4.0 / 3.0 * 3.14159265358979, 0.1) << "unit sphere, wound outward";
+    EXPECT_EQ(hmira(dir, "mc cube c.off").code, 2);
+    EXPECT_EQ(hmira(dir, "mc sphere c.off -n 1").code, 2);
+    EXPECT_FALSE(std::filesystem::exists(dir / "c.off"));
 }
 
 TEST(cli, real_cgal_demo_meshes_are_described) {
