@@ -5,7 +5,8 @@ set -euo pipefail
 pkgs=(build-essential cmake ninja-build ccache pkg-config
       libgtest-dev libbenchmark-dev libtbb-dev libcli11-dev zlib1g-dev
       libopenmesh-dev libcgal-dev libcgal-demo
-      python3-venv libusb-1.0-0 doxygen)
+      python3-venv libusb-1.0-0 doxygen
+      clang-14 libclang-rt-14-dev)
 missing=()
 for p in "${pkgs[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "ok installed" || missing+=("$p")
