@@ -123,8 +123,8 @@ bool has_vertex_at(const M& m, std::array<double, 3> p, double eps = tol<M, T>()
 
 /// Fails unless the mesh validates and its Euler characteristic is `chi`.
 template <class M, class T = hmira::default_traits<M>>
-::testing::AssertionResult valid_with_chi(const M& m, long long chi) {
-    auto v = is_valid<M, T>(m);
+::testing::AssertionResult valid_with_chi(const M& m, long long chi, hmira::validate_options options = {}) {
+    auto v = is_valid<M, T>(m, options);
     if (!v) return v;
     const auto c = count<M, T>(m);
     if (c.chi() != chi) return ::testing::AssertionFailure() << "Euler characteristic " << c.chi() << ", expected " << chi << " " << c;
