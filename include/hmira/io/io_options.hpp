@@ -24,14 +24,16 @@ namespace hmira::io {
 /// properties "v:normal" (vec3<float>) and "v:color" (std::array<std::uint8_t, 4>, RGBA) on
 /// reading, and writers use those properties when no explicit attributes are given.
 struct mesh_attributes {
-    std::vector<vec3<float>> normals;
-    std::vector<std::array<std::uint8_t, 4>> colors;
+    std::vector<vec3<float>> normals;                ///< unit normals, or empty
+    std::vector<std::array<std::uint8_t, 4>> colors;  ///< RGBA, 0..255, or empty
+    /// True when the file had neither normals nor colours.
     bool empty() const noexcept { return normals.empty() && colors.empty(); }
 };
 
 /// Called now and then while a reader parses: bytes done and total (for progress bars).
 using progress_callback = std::function<void(std::uint64_t done, std::uint64_t total)>;
 
+/// How the readers read.
 struct read_options {
     /// STL only: weld corners with exactly equal coordinates into one vertex (-0 equals +0).
     /// Without welding every triangle gets three vertices of its own (a soup).
@@ -47,15 +49,29 @@ struct read_report {
     std::size_t dropped_triangles = 0;  ///< STL: triangles whose corners welded together
 };
 
-enum class ply_encoding { ascii, binary_little_endian, binary_big_endian };
-enum class stl_encoding { binary, ascii };
+/// The three PLY encodings.
+enum class ply_encoding {
+    ascii,                 ///< text
+    binary_little_endian,  ///< binary, least significant byte first
+    binary_big_endian,     ///< binary, most significant byte first
+};
+/// The two STL encodings.
+enum class stl_encoding {
+    binary,  ///< 80-byte header, count, 50 bytes per triangle
+    ascii,   ///< solid / facet / vertex text
+};
 /// Coordinate type in binary PLY: the mesh's own scalar, or forced.
-enum class ply_scalar { mesh, float32, float64 };
+enum class ply_scalar {
+    mesh,     ///< float for float meshes, double otherwise
+    float32,  ///< always float
+    float64,  ///< always double
+};
 
+/// How the writers write.
 struct write_options {
-    ply_encoding ply = ply_encoding::binary_little_endian;
-    ply_scalar ply_coordinates = ply_scalar::mesh;
-    stl_encoding stl = stl_encoding::binary;
+    ply_encoding ply = ply_encoding::binary_little_endian;  ///< PLY encoding
+    ply_scalar ply_coordinates = ply_scalar::mesh;          ///< PLY coordinate type (binary and text precision)
+    stl_encoding stl = stl_encoding::binary;                ///< STL encoding
     /// Explicit per-vertex normals / colours to write (null: the mesh's "v:normal" /
     /// "v:color" properties if it has them). Ignored by formats that cannot hold them (STL).
     const mesh_attributes* attributes = nullptr;

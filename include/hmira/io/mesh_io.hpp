@@ -22,8 +22,15 @@
 
 namespace hmira::io {
 
-enum class file_format { obj, off, ply, stl };
+/// The mesh file formats hmira reads and writes.
+enum class file_format {
+    obj,  ///< Wavefront OBJ
+    off,  ///< Object File Format
+    ply,  ///< Stanford PLY
+    stl,  ///< STereoLithography
+};
 
+/// The format's usual extension without the dot.
 inline const char* to_string(file_format f) {
     switch (f) {
         case file_format::obj: return "obj";

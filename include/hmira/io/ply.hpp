@@ -520,7 +520,7 @@ inline result<polygon_soup> parse_ply(std::string_view text, const std::string& 
     return soup;
 }
 
-/// The encoding a PLY text declares, for reports.
+/// Readable name of a PLY encoding, for reports.
 inline const char* to_string(ply_encoding e) {
     switch (e) {
         case ply_encoding::ascii: return "ascii";

@@ -196,8 +196,8 @@ inline result<void> parse_stl_ascii(std::string_view text, const std::string& na
 
 /// What parse_stl found besides the soup.
 struct stl_soup {
-    polygon_soup soup;
-    bool binary = false;
+    polygon_soup soup;   ///< the triangles, welded unless asked otherwise
+    bool binary = false;  ///< the file was binary STL
     std::size_t dropped_triangles = 0;  ///< triangles whose corners welded together
 };
 

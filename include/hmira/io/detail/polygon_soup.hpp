@@ -23,10 +23,11 @@ namespace hmira::io {
 /// attributes the file had. This is what the parse_* functions return: the fastest way to get
 /// a file's content when no mesh is needed.
 struct polygon_soup {
-    std::vector<std::array<double, 3>> points;
+    std::vector<std::array<double, 3>> points;   ///< positions, in file order
     std::vector<std::uint32_t> face_offsets{0};  ///< face i is indices[face_offsets[i] .. face_offsets[i+1])
-    std::vector<std::uint32_t> indices;
+    std::vector<std::uint32_t> indices;          ///< face corners: indices into points
     mesh_attributes attributes;  ///< empty vectors, or one entry per point
+    /// Number of faces.
     std::size_t face_count() const noexcept { return face_offsets.size() - 1; }
 };
 
