@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# Runs every benchmark family side by side with its peers (C++ peers from Debian, Python peers
+# from a venv that scripts/bench-venv.sh creates) and prints each family's ratio table.
+# Usage: bash scripts/bench.sh [family ...]     (default: all of bench/*/run.sh)
+# Families: core euler geometry io marching_cubes voxelize delaunay (those with a run.sh).
+set -uo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/install-deps.sh
+bash scripts/test-data.sh build/test-data >/dev/null
+families=("$@")
+if [ ${#families[@]} -eq 0 ]; then
+  for f in bench/*/run.sh; do families+=("$(basename "$(dirname "$f")")"); done
+fi
+status=0
+for fam in "${families[@]}"; do
+  if [ ! -f "bench/$fam/run.sh" ]; then
+    echo "bench: no bench/$fam/run.sh" >&2
+    status=1
+    continue
+  fi
+  echo "================ $fam ================"
+  bash "bench/$fam/run.sh" || { echo "bench: $fam failed" >&2; status=1; }
+done
+exit $status
