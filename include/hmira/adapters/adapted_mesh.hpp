@@ -95,7 +95,9 @@ struct adapted_edge_types<B, As...> {
 template <class Mesh, class BaseTraits, class... Adapters>
 class adapted_mesh {
 public:
+    /// The user's mesh type, without const.
     using base_mesh = std::remove_const_t<Mesh>;
+    /// The traits that serve whatever no adapter provides.
     using base_traits = BaseTraits;
 
     /// Builds every adapter from the mesh (indexed ones build their index: O(C log C)).
@@ -105,27 +107,39 @@ public:
         requires(sizeof...(Adapters) > 0)
         : mesh_(&m), adapters_(std::move(adapters)...) {}
 
+    /// The user's mesh this adapted_mesh refers to. O(1).
+    ///@{
     Mesh& base() noexcept { return *mesh_; }
     const base_mesh& base() const noexcept { return *mesh_; }
+    ///@}
 
     /// Rebuilds the indexed adapters from the mesh as it is now; views returned before dangle.
     void refresh() {
         std::apply([this](auto&... a) { (a.refresh(std::as_const(*mesh_)), ...); }, adapters_);
     }
 
+    /// The held adapter of type A (ill-formed unless A occurs exactly once in Adapters). O(1).
+    ///@{
     template <class A>
     const A& adapter() const { return std::get<A>(adapters_); }
     template <class A>
     A& adapter() { return std::get<A>(adapters_); }
+    ///@}
 
+    /// Position in Adapters of the first adapter that provides operation Op (a detail::op_*
+    /// tag), or detail::no_provider when none does and the base traits serve it.
     template <class Op>
     static constexpr std::size_t provider = detail::first_provider<Op, base_mesh, BaseTraits, Adapters...>();
+    /// Whether some adapter provides operation Op.
     template <class Op>
     static constexpr bool provides = provider<Op> != detail::no_provider;
+    /// The adapter that provides operation Op. Precondition: `provides<Op>`. O(1).
+    ///@{
     template <class Op>
     const auto& provider_of() const { return std::get<provider<Op>>(adapters_); }
     template <class Op>
     auto& provider_of() { return std::get<provider<Op>>(adapters_); }
+    ///@}
 
 private:
     Mesh* mesh_;

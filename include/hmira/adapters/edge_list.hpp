@@ -18,7 +18,10 @@ namespace hmira {
 /// An edge of a face-list mesh: its end vertices, `a` the one of lower vertex index.
 template <class V>
 struct vertex_pair_edge {
+    /// The end vertices: `a` of lower vertex index, `b` of higher.
+    ///@{
     V a{}, b{};
+    ///@}
     friend bool operator==(const vertex_pair_edge&, const vertex_pair_edge&) = default;
 };
 
@@ -64,14 +67,21 @@ template <class M, class T = default_traits<M>>
     requires adapter_source_mesh<M, T>
 class brute_force_edge_list {
 public:
+    /// The mesh's vertex handle.
     using vertex_handle = typename T::vertex_handle;
+    /// An edge: its two end vertices, lower index first.
     using edge_handle = vertex_pair_edge<vertex_handle>;
     brute_force_edge_list() = default;
+    /// Keeps nothing from the mesh. O(1).
     explicit brute_force_edge_list(const M&) {}
 
+    /// Every distinct edge of m's faces, ordered by (index a, index b). O(C log C) per call.
     std::vector<edge_handle> edges(const M& m) const { return detail::derive_edges<M, T>(m); }
+    /// Number of distinct edges; derives the whole list, O(C log C) per call.
     std::size_t edge_count(const M& m) const { return edges(m).size(); }
+    /// The edge's end vertices, lower index first. O(1).
     std::array<vertex_handle, 2> edge_vertices(const M&, edge_handle e) const { return {e.a, e.b}; }
+    /// Does nothing: there is no index to rebuild.
     void refresh(const M&) {}
 };
 
@@ -82,27 +92,37 @@ template <class M, class T = default_traits<M>>
     requires indexed_adapter_source_mesh<M, T>
 class indexed_edge_list {
 public:
+    /// The mesh's vertex handle.
     using vertex_handle = typename T::vertex_handle;
+    /// An edge: its two end vertices, lower index first.
     using edge_handle = vertex_pair_edge<vertex_handle>;
     indexed_edge_list() = default;
+    /// Builds the edge list of m. O(C log C).
     explicit indexed_edge_list(const M& m) { refresh(m); }
 
+    /// Every distinct edge, ordered by (index a, index b), as a span into the adapter. O(1).
+    /// Throws hmira_error if m changed since the last refresh() or is not the indexed mesh.
     std::span<const edge_handle> edges(const M& m) const {
         stamp_.check(m);
         return edges_;
     }
+    /// Number of distinct edges. O(1). Throws hmira_error on a stale index or another mesh.
     std::size_t edge_count(const M& m) const {
         stamp_.check(m);
         return edges_.size();
     }
+    /// The edge's end vertices, lower index first. O(1); needs no index, so never throws.
     std::array<vertex_handle, 2> edge_vertices(const M&, edge_handle e) const { return {e.a, e.b}; }
 
+    /// Rebuilds the list from m as it is now, O(C log C). Invalidates spans returned before.
     void refresh(const M& m) {
         edges_ = detail::derive_edges<M, T>(m);
         edges_.shrink_to_fit();
         stamp_ = detail::index_stamp<M, T>(m, "indexed_edge_list");
     }
+    /// Whether the list was built from m and m has not changed since. O(1).
     bool is_current(const M& m) const { return stamp_.is_current(m); }
+    /// Bytes held by the list. O(1).
     std::size_t memory_bytes() const { return edges_.capacity() * sizeof(edge_handle); }
 
 private:

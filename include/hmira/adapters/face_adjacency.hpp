@@ -21,11 +21,16 @@ template <class M, class T = default_traits<M>>
     requires adapter_source_mesh<M, T>
 class brute_force_face_adjacency {
 public:
+    /// The mesh's vertex handle.
     using vertex_handle = typename T::vertex_handle;
+    /// The mesh's face handle.
     using face_handle = typename T::face_handle;
     brute_force_face_adjacency() = default;
+    /// Keeps nothing from the mesh. O(1).
     explicit brute_force_face_adjacency(const M&) {}
 
+    /// Faces sharing an edge with f, once per shared edge, in face order. Scans every face:
+    /// O(F_all x V_face x V_consistF) per query.
     std::vector<face_handle> adjacent_faces(const M& m, face_handle f) const {
         std::vector<std::pair<vertex_handle, vertex_handle>> mine;
         detail::for_each_side<M, T>(m, f, [&](vertex_handle a, vertex_handle b) { mine.emplace_back(a, b); });
@@ -39,6 +44,7 @@ public:
         }
         return out;
     }
+    /// Does nothing: there is no index to rebuild.
     void refresh(const M&) {}
 };
 
@@ -49,16 +55,23 @@ template <class M, class T = default_traits<M>>
     requires indexed_adapter_source_mesh<M, T>
 class indexed_face_adjacency {
 public:
+    /// The mesh's face handle.
     using face_handle = typename T::face_handle;
+    /// The mesh's vertex handle.
     using vertex_handle = typename T::vertex_handle;
     indexed_face_adjacency() = default;
+    /// Builds the index of m. O(C log C).
     explicit indexed_face_adjacency(const M& m) { refresh(m); }
 
+    /// Faces sharing an edge with f, once per shared edge, as a span into the index.
+    /// O(F_adjacentF). Throws hmira_error if m changed since the last refresh() or is not the
+    /// indexed mesh.
     std::span<const face_handle> adjacent_faces(const M& m, face_handle f) const {
         stamp_.check(m);
         return rows_.row(T::face_index(m, f));
     }
 
+    /// Rebuilds the index from m as it is now, O(C log C). Invalidates spans returned before.
     void refresh(const M& m) {
         struct side {
             std::uint64_t key;
@@ -85,7 +98,9 @@ public:
         stamp_ = detail::index_stamp<M, T>(m, "indexed_face_adjacency");
     }
 
+    /// Whether the index was built from m and m has not changed since. O(1).
     bool is_current(const M& m) const { return stamp_.is_current(m); }
+    /// Bytes held by the index. O(1).
     std::size_t memory_bytes() const { return rows_.memory_bytes(); }
 
 private:

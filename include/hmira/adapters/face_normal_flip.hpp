@@ -22,13 +22,17 @@ template <class M, class T, class Normals>
     requires face_reversible_mesh<M, T>
 class face_normal_flip {
 public:
+    /// Holds `normals` (moved in); the mesh is not kept.
     face_normal_flip(const M&, Normals normals) : normals_(std::move(normals)) {}
 
+    /// Reverses f's winding with T::reverse_face and negates normals[f]. O(V_consistF).
     void reverse_face(M& m, typename T::face_handle f) {
         T::reverse_face(m, f);
         normals_[f] = -normals_[f];
     }
+    /// Does nothing: there is no index to rebuild.
     void refresh(const M&) {}
+    /// The held normals. O(1).
     Normals& normals() noexcept { return normals_; }
 
 private:

@@ -21,10 +21,14 @@ template <class M, class T = default_traits<M>>
     requires adapter_source_mesh<M, T>
 class brute_force_vertex_adjacency {
 public:
+    /// The mesh's vertex handle.
     using vertex_handle = typename T::vertex_handle;
     brute_force_vertex_adjacency() = default;
+    /// Keeps nothing from the mesh. O(1).
     explicit brute_force_vertex_adjacency(const M&) {}
 
+    /// Vertices sharing an edge with v, each once, ordered by vertex index. Scans every face:
+    /// O(F_all x V_face) per query.
     std::vector<vertex_handle> adjacent_vertices(const M& m, vertex_handle v) const {
         std::vector<vertex_handle> out;
         for (auto f : T::faces(m))
@@ -38,6 +42,7 @@ public:
         out.erase(std::unique(out.begin(), out.end()), out.end());
         return out;
     }
+    /// Does nothing: there is no index to rebuild.
     void refresh(const M&) {}
 };
 
@@ -50,10 +55,15 @@ template <class M, class T = default_traits<M>>
     requires indexed_adapter_source_mesh<M, T>
 class indexed_vertex_adjacency {
 public:
+    /// The mesh's vertex handle.
     using vertex_handle = typename T::vertex_handle;
     indexed_vertex_adjacency() = default;
+    /// Builds the neighbour index of m. O(C log C).
     explicit indexed_vertex_adjacency(const M& m) { refresh(m); }
 
+    /// Vertices sharing an edge with v, each once, ordered by vertex index, as a span into the
+    /// index. O(V_adjacentV). Throws hmira_error if m changed since the last refresh() or is
+    /// not the indexed mesh.
     std::span<const vertex_handle> adjacent_vertices(const M& m, vertex_handle v) const {
         stamp_.check(m);
         return rows_.row(T::vertex_index(m, v));
@@ -87,7 +97,9 @@ public:
         stamp_ = detail::index_stamp<M, T>(m, "indexed_vertex_adjacency");
     }
 
+    /// Whether the index was built from m and m has not changed since. O(1).
     bool is_current(const M& m) const { return stamp_.is_current(m); }
+    /// Bytes held by the index. O(1).
     std::size_t memory_bytes() const { return rows_.memory_bytes(); }
 
 private:

@@ -18,11 +18,16 @@ template <class M, class T = default_traits<M>>
     requires adapter_source_mesh<M, T>
 class brute_force_vertex_face_adjacency {
 public:
+    /// The mesh's vertex handle.
     using vertex_handle = typename T::vertex_handle;
+    /// The mesh's face handle.
     using face_handle = typename T::face_handle;
     brute_force_vertex_face_adjacency() = default;
+    /// Keeps nothing from the mesh. O(1).
     explicit brute_force_vertex_face_adjacency(const M&) {}
 
+    /// The faces that have v as a corner, each once, in face order. Scans every face:
+    /// O(F_all x V_face) per query.
     std::vector<face_handle> vertex_faces(const M& m, vertex_handle v) const {
         std::vector<face_handle> out;
         for (auto f : T::faces(m))
@@ -33,6 +38,7 @@ public:
                 }
         return out;
     }
+    /// Does nothing: there is no index to rebuild.
     void refresh(const M&) {}
 };
 
@@ -44,16 +50,23 @@ template <class M, class T = default_traits<M>>
     requires indexed_adapter_source_mesh<M, T>
 class indexed_vertex_face_adjacency {
 public:
+    /// The mesh's vertex handle.
     using vertex_handle = typename T::vertex_handle;
+    /// The mesh's face handle.
     using face_handle = typename T::face_handle;
     indexed_vertex_face_adjacency() = default;
+    /// Builds the index of m. O(C).
     explicit indexed_vertex_face_adjacency(const M& m) { refresh(m); }
 
+    /// The faces that have v as a corner, once per corner, in face order, as a span into the
+    /// index. O(F_adjacentV). Throws hmira_error if m changed since the last refresh() or is
+    /// not the indexed mesh.
     std::span<const face_handle> vertex_faces(const M& m, vertex_handle v) const {
         stamp_.check(m);
         return rows_.row(T::vertex_index(m, v));
     }
 
+    /// Rebuilds the index from m as it is now, O(C). Invalidates spans returned before.
     void refresh(const M& m) {
         rows_ = detail::build_csr<face_handle>(T::vertex_index_bound(m), [&](auto&& push) {
             for (auto f : T::faces(m))
@@ -62,7 +75,9 @@ public:
         stamp_ = detail::index_stamp<M, T>(m, "indexed_vertex_face_adjacency");
     }
 
+    /// Whether the index was built from m and m has not changed since. O(1).
     bool is_current(const M& m) const { return stamp_.is_current(m); }
+    /// Bytes held by the index. O(1).
     std::size_t memory_bytes() const { return rows_.memory_bytes(); }
 
 private:

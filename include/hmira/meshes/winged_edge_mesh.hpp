@@ -53,7 +53,9 @@ namespace hmira {
 template <class Scalar = double>
 class basic_winged_edge_mesh {
 public:
+    /// The coordinate type.
     using scalar = Scalar;
+    /// A vertex position.
     using point = vec3<Scalar>;
 
     /// One winged edge. Wing references are halfedge indices 2e' + s' (edge e', side s').
@@ -65,15 +67,25 @@ public:
     };
 
     // ----- counts and ranges -----------------------------------------------------------------
+    /// Live element counts (deleted elements not counted; halfedges: two per edge). O(1).
+    ///@{
     std::size_t vertex_count() const noexcept { return positions_.size() - deleted_vertices_; }
     std::size_t edge_count() const noexcept { return edges_.size() - deleted_edges_; }
     std::size_t halfedge_count() const noexcept { return 2 * edge_count(); }
     std::size_t face_count() const noexcept { return face_edge_.size() - deleted_faces_; }
+    ///@}
+    /// Index bounds: one past the largest index, deleted elements included (until
+    /// collect_garbage()). O(1).
+    ///@{
     std::size_t vertex_index_bound() const noexcept { return positions_.size(); }
     std::size_t edge_index_bound() const noexcept { return edges_.size(); }
     std::size_t halfedge_index_bound() const noexcept { return 2 * edges_.size(); }
     std::size_t face_index_bound() const noexcept { return face_edge_.size(); }
+    ///@}
 
+    /// The live vertices, edges and faces in index order, skipping deleted ones. Lazy views;
+    /// iteration O(V_all), O(E_all), O(F_all).
+    ///@{
     detail::element_range<vertex_handle> vertices() const {
         return {static_cast<std::uint32_t>(positions_.size()), deleted_vertices_ ? vertex_deleted_.data() : nullptr};
     }
@@ -83,6 +95,7 @@ public:
     detail::element_range<face_handle> faces() const {
         return {static_cast<std::uint32_t>(face_edge_.size()), deleted_faces_ ? face_deleted_.data() : nullptr};
     }
+    ///@}
     /// Both sides of every live edge.
     auto halfedges() const {
         return std::views::iota(std::uint32_t{0}, static_cast<std::uint32_t>(2 * edges_.size())) |
@@ -90,41 +103,67 @@ public:
                std::views::transform([](std::uint32_t i) { return halfedge_handle(i); });
     }
 
+    /// Whether the handle names an element that exists and is not deleted. O(1).
+    ///@{
     bool is_valid(vertex_handle v) const noexcept { return v.index < positions_.size() && !vertex_deleted_[v.index]; }
     bool is_valid(face_handle f) const noexcept { return f.index < face_edge_.size() && !face_deleted_[f.index]; }
     bool is_valid(edge_handle e) const noexcept { return e.index < edges_.size() && !edge_deleted_[e.index]; }
     bool is_valid(halfedge_handle h) const noexcept { return (h.index >> 1) < edges_.size() && !edge_deleted_[h.index >> 1]; }
+    ///@}
 
     // ----- the winged-edge records, O(1) -----------------------------------------------------
+    /// The raw winged-edge record of e. O(1). Precondition (unchecked): e is valid.
     const edge_record& record(edge_handle e) const { return edges_[e.index]; }
     /// The two faces the edge separates (its wings' faces): forward side, backward side.
     std::array<face_handle, 2> edge_faces(edge_handle e) const { return edges_[e.index].face; }
+    /// The edge's two vertices: from (`vertex[0]`), to (`vertex[1]`). O(1).
     std::array<vertex_handle, 2> edge_vertices(edge_handle e) const { return edges_[e.index].vertex; }
-    /// The edge this vertex keeps, and the one this face keeps.
+    /// The edge this vertex keeps (null if isolated), and the one this face keeps. O(1).
+    ///@{
     edge_handle vertex_edge(vertex_handle v) const { return vertex_out_[v.index].is_null() ? edge_handle{} : edge(vertex_out_[v.index]); }
     edge_handle face_edge(face_handle f) const { return edge(face_edge_[f.index]); }
+    ///@}
 
     // ----- halfedge view of the records, all O(1) ---------------------------------------------
+    // Preconditions (unchecked) for all of these: the handles are valid.
+    /// The edge of halfedge (e, s): e. Pure index arithmetic.
     static constexpr edge_handle edge(halfedge_handle h) noexcept { return edge_handle(h.index >> 1); }
+    /// The side s of halfedge (e, s): 0 runs the edge forwards, 1 backwards.
     static constexpr unsigned side(halfedge_handle h) noexcept { return h.index & 1u; }
+    /// The other side of the same edge: (e, 1 - s).
     static constexpr halfedge_handle opposite(halfedge_handle h) noexcept { return halfedge_handle(h.index ^ 1u); }
+    /// The halfedge (e, s); side 0 (the default) runs vertex[0] -> vertex[1].
     static constexpr halfedge_handle edge_halfedge(edge_handle e, unsigned s = 0) noexcept { return halfedge_handle(2 * e.index + s); }
+    /// The next halfedge in h's loop (the next wing of its side). O(1).
     halfedge_handle next(halfedge_handle h) const { return edges_[h.index >> 1].next_wing[h.index & 1u]; }
+    /// The previous halfedge in h's loop (the previous wing of its side). O(1).
     halfedge_handle prev(halfedge_handle h) const { return edges_[h.index >> 1].prev_wing[h.index & 1u]; }
+    /// The vertex h points to: vertex[1 - s]. O(1).
     vertex_handle target(halfedge_handle h) const { return edges_[h.index >> 1].vertex[1u - (h.index & 1u)]; }
+    /// The vertex h starts from: vertex[s]. O(1).
     vertex_handle source(halfedge_handle h) const { return edges_[h.index >> 1].vertex[h.index & 1u]; }
+    /// The face on h's side, face[s]; null on the boundary. O(1).
     face_handle face(halfedge_handle h) const { return edges_[h.index >> 1].face[h.index & 1u]; }
+    /// The outgoing side of the edge v keeps (a boundary one if v is on the boundary); null
+    /// for an isolated vertex. O(1).
     halfedge_handle vertex_halfedge(vertex_handle v) const { return vertex_out_[v.index]; }
+    /// The side of the edge f keeps that lies in f. O(1).
     halfedge_handle face_halfedge(face_handle f) const { return face_edge_[f.index]; }
+    /// Boundary tests, O(1): a halfedge with no face; an edge with a null face on either
+    /// side; a vertex whose kept edge is a boundary one, or that is isolated.
+    ///@{
     bool is_boundary(halfedge_handle h) const { return face(h).is_null(); }
     bool is_boundary(edge_handle e) const { return edges_[e.index].face[0].is_null() || edges_[e.index].face[1].is_null(); }
     bool is_boundary(vertex_handle v) const {
         const auto h = vertex_out_[v.index];
         return h.is_null() || is_boundary(h);
     }
+    ///@}
+    /// Whether v has no edge. O(1).
     bool is_isolated(vertex_handle v) const { return vertex_out_[v.index].is_null(); }
 
     // ----- circulators -----------------------------------------------------------------------
+    /// \cond INTERNAL
     struct loop_step {
         static halfedge_handle step(const basic_winged_edge_mesh& m, halfedge_handle h) { return m.next(h); }
         static halfedge_handle value(const basic_winged_edge_mesh&, halfedge_handle h) { return h; }
@@ -145,17 +184,26 @@ public:
     struct outgoing_edge_step : outgoing_step {
         static edge_handle value(const basic_winged_edge_mesh&, halfedge_handle h) { return edge(h); }
     };
+    /// \endcond
+    /// A circulator range: from a start halfedge, steps with Policy until it is back at the
+    /// start, yielding Policy's value of each halfedge; empty for a null start.
     template <class Policy>
     using loop = detail::loop_range<basic_winged_edge_mesh, halfedge_handle, Policy>;
 
+    /// The halfedges of h's loop, from h, following next(). O(length of the loop).
     loop<loop_step> loop_halfedges(halfedge_handle h) const { return {*this, h}; }
     /// The face's vertices in winding order, starting at the first vertex given to add_face.
     loop<loop_vertex_step> face_vertices(face_handle f) const { return {*this, face_halfedge(f)}; }
     /// The face's edges in winding order. O(E_consistF).
     loop<loop_edge_step> face_edges(face_handle f) const { return {*this, face_halfedge(f)}; }
+    /// The halfedges of f's loop, from face_halfedge(f). O(V_consistF).
     loop<loop_step> face_halfedges(face_handle f) const { return {*this, face_halfedge(f)}; }
+    /// The halfedges leaving v, from vertex_halfedge(v); empty for an isolated vertex.
+    /// O(V_adjacentV).
     loop<outgoing_step> outgoing_halfedges(vertex_handle v) const { return {*this, vertex_halfedge(v)}; }
+    /// The vertices sharing an edge with v (targets of its outgoing halfedges). O(V_adjacentV).
     loop<outgoing_target_step> adjacent_vertices(vertex_handle v) const { return {*this, vertex_halfedge(v)}; }
+    /// The edges at v, one per outgoing halfedge. O(E_adjacentV).
     loop<outgoing_edge_step> vertex_edges(vertex_handle v) const { return {*this, vertex_halfedge(v)}; }
     /// Faces around v (boundary gaps skipped), O(F_adjacentV).
     auto vertex_faces(vertex_handle v) const {
@@ -167,6 +215,7 @@ public:
         return face_halfedges(f) | std::views::filter([this](halfedge_handle h) { return !is_boundary(opposite(h)); }) |
                std::views::transform([this](halfedge_handle h) { return face(opposite(h)); });
     }
+    /// Number of edges at v (0 if isolated). O(V_adjacentV).
     std::size_t valence(vertex_handle v) const { return static_cast<std::size_t>(std::ranges::distance(outgoing_halfedges(v))); }
 
     /// The side of an edge running from a to b, or null. O(V_adjacentV).
@@ -177,11 +226,15 @@ public:
     }
 
     // ----- geometry --------------------------------------------------------------------------
+    /// The position of v. O(1). Precondition (unchecked): v is valid.
     const point& position(vertex_handle v) const { return positions_[v.index]; }
+    /// Moves v to p; connectivity and change_count() are unaffected. O(1).
     void set_position(vertex_handle v, const point& p) { positions_[v.index] = p; }
+    /// All positions by vertex index, deleted vertices included. O(1).
     std::span<const point> positions() const noexcept { return positions_; }
 
     // ----- building --------------------------------------------------------------------------
+    /// Adds an isolated vertex at p and returns it. O(1) amortised.
     vertex_handle add_vertex(const point& p) {
         positions_.push_back(p);
         vertex_out_.push_back({});
@@ -191,6 +244,7 @@ public:
         return vertex_handle(positions_.size() - 1);
     }
 
+    /// add_face(std::span) for a braced list of vertices, e.g. `m.add_face({a, b, c})`.
     result<face_handle> add_face(std::initializer_list<vertex_handle> vs) {
         return add_face(std::span<const vertex_handle>(vs.begin(), vs.size()));
     }
@@ -308,10 +362,15 @@ public:
     }
 
     // ----- raw mutation on the records (the halfedge layer; keeps nothing consistent) ---------
+    /// Makes n follow h in its loop: sets h's next wing and n's previous wing. O(1).
     void set_next(halfedge_handle h, halfedge_handle n) { link(h, n); ++changes_; }
+    /// Sets the vertex h points to (vertex[1 - s] of its edge). O(1).
     void set_target(halfedge_handle h, vertex_handle v) { edges_[h.index >> 1].vertex[1u - (h.index & 1u)] = v; ++changes_; }
+    /// Sets the face on h's side (null: boundary). O(1).
     void set_face(halfedge_handle h, face_handle f) { edges_[h.index >> 1].face[h.index & 1u] = f; ++changes_; }
+    /// Sets the outgoing halfedge v keeps. O(1).
     void set_vertex_halfedge(vertex_handle v, halfedge_handle h) { vertex_out_[v.index] = h; ++changes_; }
+    /// Sets the halfedge f keeps (one of its loop). O(1).
     void set_face_halfedge(face_handle f, halfedge_handle h) { face_edge_[f.index] = h; ++changes_; }
 
     /// A new edge from a to b; returns its forward side (a -> b). Wings unset, faces null.
@@ -322,6 +381,7 @@ public:
         ++changes_;
         return halfedge_handle(2 * (edges_.size() - 1));
     }
+    /// A new face with no halfedge yet. O(1) amortised.
     face_handle new_face() {
         face_edge_.push_back({});
         face_deleted_.push_back(0);
@@ -329,6 +389,9 @@ public:
         ++changes_;
         return face_handle(face_edge_.size() - 1);
     }
+    /// Marks the element deleted (both sides, for an edge); no-op if already deleted. Does not
+    /// touch the references to it. O(1).
+    ///@{
     void erase_edge(edge_handle e) {
         if (!edge_deleted_[e.index]) { edge_deleted_[e.index] = 1; ++deleted_edges_; ++changes_; }
     }
@@ -338,7 +401,9 @@ public:
     void erase_vertex(vertex_handle v) {
         if (!vertex_deleted_[v.index]) { vertex_deleted_[v.index] = 1; ++deleted_vertices_; ++changes_; }
     }
+    ///@}
 
+    /// Whether some element is marked deleted (collect_garbage() would compact). O(1).
     bool has_garbage() const noexcept { return deleted_vertices_ + deleted_edges_ + deleted_faces_ > 0; }
 
     /// Drops deleted elements, renumbers the rest in their old order, rewrites every reference
@@ -392,6 +457,7 @@ public:
         return map;
     }
 
+    /// Room for this many vertices, edges and faces, so that building does not reallocate.
     void reserve(std::size_t vertices, std::size_t edges, std::size_t faces) {
         positions_.reserve(vertices);
         vertex_out_.reserve(vertices);
@@ -401,9 +467,15 @@ public:
         face_edge_.reserve(faces);
         face_deleted_.reserve(faces);
     }
+    /// Removes every element and property. Invalidates all handles.
     void clear() { *this = basic_winged_edge_mesh(); }
 
     // ----- properties ------------------------------------------------------------------------
+    /// Per-element properties by name. add: a new property with every element at init, or the
+    /// existing one of that name and type (an invalid property if the name has another type).
+    /// get: the property of that name and type, if any. remove: whether one was removed.
+    /// Property arrays grow with new elements and are compacted by collect_garbage().
+    ///@{
     template <class T>
     property<vertex_handle, T> add_vertex_property(std::string_view name, T init = T{}) { return vertex_props_.template add<T>(name, std::move(init)); }
     template <class T>
@@ -419,6 +491,7 @@ public:
     template <class T>
     std::optional<property<face_handle, T>> get_face_property(std::string_view name) const { return face_props_.template find<T>(name); }
     bool remove_face_property(std::string_view name) { return face_props_.remove(name); }
+    ///@}
 
     /// Grows on every change of connectivity or of the element set.
     std::uint64_t change_count() const noexcept { return changes_; }
