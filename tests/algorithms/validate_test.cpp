@@ -161,3 +161,25 @@ TEST(validate, finds_a_wire_edge_except_in_relaxed_mode) {
 }
 
 }  // namespace
+
+#include <hmira/algorithms/euler/make_face_kill_ring.hpp>
+#include <hmira/algorithms/generators/grid.hpp>
+
+namespace {
+
+// A vertex whose faces are joined only through an inner ring (a face turned into a hole of
+// another face by killFmakeR) is manifold: validate must count ring corners in its fans.
+TEST(validate, inner_ring_corners_join_the_fans_of_their_vertices) {
+    hmira::halfedge_mesh m;
+    auto g = hmira::generate_grid(m, {.columns = 2, .rows = 1, .triangles = true});
+    ASSERT_TRUE(g);
+    // Around boundary vertex (1, 0) the fan is faces[0] - faces[3] - faces[2]; the middle one
+    // becomes a ring of faces[0].
+    auto ring = hmira::kill_face_make_ring(m, g->faces[3], g->faces[0]);
+    ASSERT_TRUE(ring) << ring.error().message;
+    EXPECT_TRUE(m.has_inner_rings(g->faces[0]));
+    const auto problems = hmira::validate(m, {.relaxed = true});
+    EXPECT_TRUE(problems.empty()) << hmira_test::describe(problems);
+}
+
+}  // namespace

@@ -272,11 +272,30 @@ std::vector<mesh_problem> validate(const M& mesh, const validate_options& option
                     sink.add(problem_kind::zero_area_face, fi, "face " + std::to_string(fi) + " has zero area");
             }
         }
-        for (std::size_t i = 0; i < loop.size(); ++i) {
-            used[loop[i]] = 1;
-            corner_vertex.push_back(loop[i]);
-            corner_prev.push_back(loop[(i + loop.size() - 1) % loop.size()]);
-            corner_next.push_back(loop[(i + 1) % loop.size()]);
+        auto add_corners = [&](const std::vector<std::uint32_t>& l) {
+            for (std::size_t i = 0; i < l.size(); ++i) {
+                used[l[i]] = 1;
+                corner_vertex.push_back(l[i]);
+                corner_prev.push_back(l[(i + l.size() - 1) % l.size()]);
+                corner_next.push_back(l[(i + 1) % l.size()]);
+            }
+        };
+        add_corners(loop);
+        // A face's inner rings are part of its fan at their vertices: without them a vertex on
+        // a ring would look like a pinch.
+        if constexpr (inner_ring_mesh<M, T>) {
+            for (auto r : T::inner_rings(mesh, f)) {
+                loop.clear();
+                auto h = r;
+                std::size_t guard = 0;
+                do {
+                    const auto vi = static_cast<std::uint32_t>(T::vertex_index(mesh, T::target(mesh, h)));
+                    if (vi >= nv) break;
+                    loop.push_back(vi);
+                    h = T::next(mesh, h);
+                } while (h != r && ++guard <= T::halfedge_index_bound(mesh));
+                add_corners(loop);
+            }
         }
     }
     if (!references_ok) return out;
