@@ -22,7 +22,10 @@ struct make_edge_face_result {
 template <class M, class T = default_traits<M>>
 struct kill_edge_face_result {
     typename T::face_handle face;  ///< the surviving face (null if the killed face joined the boundary)
+    /// The corner halfedges to pass back to make_edge_face.
+    ///@{
     typename T::halfedge_handle h0, h1;
+    ///@}
 };
 
 /// makeEF (MEF): a new edge from target(h0) to target(h1) that splits the loop holding both

@@ -21,7 +21,10 @@ struct remove_options {
 
 /// What a removal took out.
 struct removal_report {
+    /// How many faces, edges and vertices were removed.
+    ///@{
     std::size_t faces = 0, edges = 0, vertices = 0;
+    ///@}
 };
 
 namespace detail::primitives {
