@@ -19,6 +19,9 @@ cmake --build build/test -j"$jobs"
 (cd build/test && ctest --output-on-failure -j"$jobs" --timeout 600)
 echo "plain pass finished after $(( $(date +%s) - start )) s"
 
+echo "== API reference (Doxygen; fails on any undocumented public entity)"
+bash scripts/docs.sh build/docs
+
 echo "== sanitizer build (AddressSanitizer + UndefinedBehaviorSanitizer)"
 cmake -S . -B build/asan "${common[@]}" -DHMIRA_SANITIZE=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo \
       -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" -DHMIRA_BUILD_BENCHMARKS=OFF >/dev/null
