@@ -26,6 +26,7 @@ concept extrudable_mesh = editable_mesh<M, T> && position_mutable_mesh<M, T>;
 /// individual: every face is extruded on its own, along its own normal.
 enum class extrude_mode { region, individual };
 
+/// How extrude() moves the faces.
 struct extrude_options {
     /// How far the faces move; negative pushes them into the solid (a pocket whose walls face
     /// into it). Must be finite and non-zero.

@@ -69,7 +69,13 @@ long long index_of(const M& m, typename T::face_handle f) {
 template <class M, class T, class Handle>
 std::string name(const char* kind, const M& m, Handle h) {
     const auto i = index_of<M, T>(m, h);
-    return std::string(kind) + (i < 0 ? std::string(" (null)") : " " + std::to_string(i));
+    // Appending, not `" " + std::to_string(i)`: that form trips GCC 12's false -Wrestrict
+    // (GCC bug 105329) when inlined at -O3.
+    std::string out(kind);
+    out += ' ';
+    if (i < 0) out += "(null)";
+    else out += std::to_string(i);
+    return out;
 }
 
 /// A handle the operator can work with: not null and, where the model has indices, in range.
