@@ -23,7 +23,7 @@ for fmt in obj off ply stl; do
   rm -rf "$work"; mkdir -p "$work" "$out/artifacts-$fmt"
   cp "$here/corpus/$fmt/"* "$work/"
   echo "fuzz: $fmt for ${seconds}s"
-  if ! "$bin" -max_total_time="$seconds" -max_len=65536 -rss_limit_mb=2048 -timeout=10 \
+  if ! "$bin" -seed="${HMIRA_FUZZ_SEED:-1}" -max_total_time="$seconds" -max_len=65536 -rss_limit_mb=2048 -timeout=10 \
         -artifact_prefix="$out/artifacts-$fmt/" -print_final_stats=1 "$work" > "$out/fuzz_$fmt.log" 2>&1; then
     echo "fuzz: $fmt FAILED, see $out/fuzz_$fmt.log and $out/artifacts-$fmt/" >&2
     tail -30 "$out/fuzz_$fmt.log" >&2

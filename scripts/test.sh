@@ -30,6 +30,9 @@ cmake --build build/asan -j"$jobs"
    ctest --output-on-failure -j"$jobs" --timeout 900 -LE compile_fail)
 echo "sanitizer pass finished after $(( $(date +%s) - start )) s"
 
+echo "== fuzz the mesh parsers (libFuzzer, clang 14, 30 s per format, fixed seed)"
+bash fuzz/run.sh 30 build/fuzz
+
 echo "== install and consume with find_package(hmira CONFIG)"
 rm -rf build/install build/consumer
 cmake --install build/test --prefix build/install >/dev/null
