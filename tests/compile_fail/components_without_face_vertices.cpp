@@ -29,6 +29,11 @@ struct hmira::mesh_traits<my_mesh> {
 #endif
 };
 
+// The control variant states, as an assertion, that the capability was the only thing missing.
+#ifdef HMIRA_SNIPPET_OK
+static_assert(hmira::connected_components_mesh<my_mesh>, "with face_vertices supplied components must accept the mesh");
+#endif
+
 int main() {
     my_mesh m;
     (void)hmira::connected_components(m);

@@ -30,6 +30,11 @@ struct hmira::mesh_traits<my_triangle_mesh> {
     }
 };
 
+// The control variant states, as an assertion, that the capability was the only thing missing.
+#ifdef HMIRA_SNIPPET_OK
+static_assert(hmira::polygon_mesh_builder<my_triangle_mesh>, "without triangles_only the mesh must take polygons");
+#endif
+
 int main() {
     my_triangle_mesh m;
     (void)hmira::generate_tetrahedron(m);  // triangles: fine

@@ -27,6 +27,11 @@ struct hmira::mesh_traits<my_mesh> {
 #endif
 };
 
+// The control variant states, as an assertion, that the capability was the only thing missing.
+#ifdef HMIRA_SNIPPET_OK
+static_assert(hmira::flip_normals_mesh<my_mesh>, "with reverse_face supplied the mesh must be flippable");
+#endif
+
 int main() {
     my_mesh m;
     hmira::flip_normals(m);

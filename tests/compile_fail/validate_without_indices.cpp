@@ -29,6 +29,11 @@ struct hmira::mesh_traits<my_mesh> {
 #endif
 };
 
+// The control variant states, as an assertion, that the capability was the only thing missing.
+#ifdef HMIRA_SNIPPET_OK
+static_assert(hmira::validate_mesh<my_mesh>, "with vertex indices supplied validate must accept the mesh");
+#endif
+
 int main() {
     my_mesh m;
     (void)hmira::validate(m);
