@@ -1,63 +1,75 @@
 // fuzz/fuzz_io.hpp
 // The body of every parser fuzz target, shared with the corpus regression test: parse the
-// bytes; if they parse, build a mesh, write it in the same format and parse that again, which
-// must succeed with the same counts. Returns "" or a description of the violated property.
+// bytes; if they parse, build each of hmira's face_vertex_mesh and halfedge_mesh from them,
+// and for each mesh that takes the soup, check that it holds exactly the soup's faces, write
+// it in the same format and parse that again, which must succeed with the same counts.
+// Returns "" or a description of the violated property.
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
-#include <span>
 #include <string>
 #include <string_view>
-#include <vector>
 
 #include <hmira/io/mesh_io.hpp>
+#include <hmira/meshes/face_vertex_mesh.hpp>
+#include <hmira/meshes/halfedge_mesh.hpp>
 
 namespace hmira_fuzz {
 
-/// A minimal face-vertex mesh local to the fuzzers (it compiles with clang 14, whose ranges
-/// support the reference meshes need more of).
-struct mini_mesh {
-    std::vector<hmira::vec3<double>> points;
-    std::vector<std::vector<std::uint32_t>> faces;
+/// What building one kind of mesh from a soup gave: whether the mesh took it, and the
+/// violated property ("" if none).
+struct mesh_outcome {
+    bool accepted = false;  ///< the mesh took every face of the soup
+    std::string problem;    ///< "" or what went wrong
 };
 
-}  // namespace hmira_fuzz
-
-template <>
-struct hmira::mesh_traits<hmira_fuzz::mini_mesh> {
-    using mesh = hmira_fuzz::mini_mesh;
-    using vertex_handle = std::uint32_t;
-    using face_handle = std::uint32_t;
-    using scalar = double;
-    static std::vector<std::uint32_t> ids(std::size_t n) {
-        std::vector<std::uint32_t> v(n);
-        for (std::size_t i = 0; i < n; ++i) v[i] = static_cast<std::uint32_t>(i);
-        return v;
+/// Builds a Mesh from the soup and checks it against the soup, then writes it in `format` and
+/// reads that back. `kind` names the mesh in the returned problem.
+template <class Mesh>
+mesh_outcome build_and_round_trip(const hmira::io::polygon_soup& soup, hmira::io::file_format format, const std::string& kind) {
+    using namespace hmira;
+    Mesh mesh;
+    auto built = io::assign_from_soup(mesh, soup, [](std::size_t) { return std::string("fuzz"); });
+    if (!built) {
+        // A rejected soup must name the face, on one line, and leave the mesh as it was (empty).
+        const auto& e = built.error();
+        if (e.message.empty() || e.message.find('\n') != std::string::npos)
+            return {false, kind + ": a rejection message that is empty or of several lines: " + e.message};
+        if (e.element < 0 || static_cast<std::size_t>(e.element) >= soup.face_count())
+            return {false, kind + ": a rejection naming no face of the soup: " + e.message};
+        if (mesh.vertex_count() != 0 || mesh.face_count() != 0) return {false, kind + ": a rejected soup changed the mesh"};
+        return {false, ""};
     }
-    static std::vector<std::uint32_t> vertices(const mesh& m) { return ids(m.points.size()); }
-    static std::vector<std::uint32_t> faces(const mesh& m) { return ids(m.faces.size()); }
-    static std::size_t vertex_count(const mesh& m) { return m.points.size(); }
-    static std::size_t face_count(const mesh& m) { return m.faces.size(); }
-    static std::size_t vertex_index(const mesh&, std::uint32_t v) { return v; }
-    static std::size_t vertex_index_bound(const mesh& m) { return m.points.size(); }
-    static const std::vector<std::uint32_t>& face_vertices(const mesh& m, std::uint32_t f) { return m.faces[f]; }
-    static hmira::vec3<double> position(const mesh& m, std::uint32_t v) { return m.points[v]; }
-    static std::uint32_t add_vertex(mesh& m, const hmira::vec3<double>& p) {
-        m.points.push_back(p);
-        return static_cast<std::uint32_t>(m.points.size() - 1);
+    if (mesh.vertex_count() != soup.points.size() || mesh.face_count() != soup.face_count())
+        return {true, kind + ": the mesh's counts differ from the soup's"};
+    // Vertices are added in soup order, so vertex handle i is soup point i, and every face
+    // must list the soup's corners in the soup's order, from its first corner.
+    for (std::size_t f = 0; f < soup.face_count(); ++f) {
+        auto k = soup.face_offsets[f];
+        for (auto v : mesh.face_vertices(face_handle(f))) {
+            if (k == soup.face_offsets[f + 1] || v.index != soup.indices[k])
+                return {true, kind + ": face " + std::to_string(f) + " does not hold the soup's corners"};
+            ++k;
+        }
+        if (k != soup.face_offsets[f + 1]) return {true, kind + ": face " + std::to_string(f) + " lost corners"};
     }
-    static hmira::result<std::uint32_t> add_face(mesh& m, std::span<const std::uint32_t> vs) {
-        for (std::size_t i = 0; i < vs.size(); ++i)
-            for (std::size_t j = 0; j < i; ++j)
-                if (vs[i] == vs[j]) return hmira::fail(hmira::errc::degenerate_face, "repeated vertex");
-        m.faces.emplace_back(vs.begin(), vs.end());
-        return static_cast<std::uint32_t>(m.faces.size() - 1);
+    std::string again;
+    switch (format) {
+        case io::file_format::obj: again = io::format_obj(mesh); break;
+        case io::file_format::off: again = io::format_off(mesh); break;
+        case io::file_format::ply: again = io::format_ply(mesh, {.ply = io::ply_encoding::binary_big_endian}); break;
+        case io::file_format::stl: again = io::format_stl(mesh); break;
     }
-};
+    auto back = io::parse_soup(again, format, "again");
+    if (!back) return {true, kind + ": re-reading what the writer wrote failed: " + back.error().message};
+    // STL stores no shared vertices, so only the other formats keep the counts.
+    if (format != io::file_format::stl && (back->points.size() != soup.points.size() || back->face_count() != soup.face_count()))
+        return {true, kind + ": the round trip changed the counts"};
+    return {true, ""};
+}
 
-namespace hmira_fuzz {
-
+/// The whole property for one input (see the file comment).
 inline std::string one_input(hmira::io::file_format format, const std::uint8_t* data, std::size_t size) {
     using namespace hmira;
     const std::string_view bytes(reinterpret_cast<const char*>(data), size);
@@ -74,19 +86,13 @@ inline std::string one_input(hmira::io::file_format format, const std::uint8_t* 
         if (soup->face_offsets[f + 1] < soup->face_offsets[f] + 3) return "face with fewer than 3 corners accepted";
     if (!soup->attributes.normals.empty() && soup->attributes.normals.size() != soup->points.size()) return "normals not one per vertex";
     if (!soup->attributes.colors.empty() && soup->attributes.colors.size() != soup->points.size()) return "colours not one per vertex";
-    mini_mesh mesh;
-    if (!io::assign_from_soup(mesh, *soup, [](std::size_t) { return std::string("fuzz"); })) return "";
-    std::string again;
-    switch (format) {
-        case io::file_format::obj: again = io::format_obj(mesh); break;
-        case io::file_format::off: again = io::format_off(mesh); break;
-        case io::file_format::ply: again = io::format_ply(mesh, {.ply = io::ply_encoding::binary_big_endian}); break;
-        case io::file_format::stl: again = io::format_stl(mesh); break;
-    }
-    auto back = io::parse_soup(again, format, "again");
-    if (!back) return "re-reading what the writer wrote failed: " + back.error().message;
-    if (format != io::file_format::stl && (back->points.size() != soup->points.size() || back->face_count() != soup->face_count()))
-        return "the round trip changed the counts";
+
+    const auto polygons = build_and_round_trip<face_vertex_mesh>(*soup, format, "face_vertex_mesh");
+    if (!polygons.problem.empty()) return polygons.problem;
+    const auto halfedges = build_and_round_trip<halfedge_mesh>(*soup, format, "halfedge_mesh");
+    if (!halfedges.problem.empty()) return halfedges.problem;
+    // The halfedge mesh refuses everything the face-vertex mesh refuses, and more (non-manifold).
+    if (halfedges.accepted && !polygons.accepted) return "halfedge_mesh took a soup that face_vertex_mesh refused";
     return "";
 }
 

@@ -71,11 +71,9 @@ public:
         return {static_cast<std::uint32_t>(faces_.size()), deleted_faces_ ? face_deleted_.data() : nullptr};
     }
     ///@}
-    /// All live halfedges.
-    auto halfedges() const {
-        return std::views::iota(std::uint32_t{0}, static_cast<std::uint32_t>(halfedges_.size())) |
-               std::views::filter([this](std::uint32_t i) { return !edge_deleted_[i >> 1]; }) |
-               std::views::transform([](std::uint32_t i) { return halfedge_handle(i); });
+    /// All live halfedges (both of each live edge), in index order.
+    detail::element_range<halfedge_handle, 1> halfedges() const {
+        return {static_cast<std::uint32_t>(halfedges_.size()), deleted_edges_ ? edge_deleted_.data() : nullptr};
     }
 
     /// Whether the handle names a live element. O(1).
@@ -137,6 +135,10 @@ public:
     struct outgoing_edge_step : outgoing_step {
         static edge_handle value(const basic_halfedge_mesh&, halfedge_handle h) { return edge(h); }
     };
+    struct outgoing_face_step : outgoing_step {
+        static bool keep(const basic_halfedge_mesh& m, halfedge_handle h) { return !m.is_boundary(h); }
+        static face_handle value(const basic_halfedge_mesh& m, halfedge_handle h) { return m.face(h); }
+    };
     template <class Policy>
     using loop = detail::loop_range<basic_halfedge_mesh, halfedge_handle, Policy>;
     /// \endcond
@@ -156,10 +158,7 @@ public:
     /// \copydoc adjacent_vertices
     loop<outgoing_edge_step> vertex_edges(vertex_handle v) const { return {*this, vertex_halfedge(v)}; }
     /// Faces around v (boundary gaps skipped), O(F_adjacentV).
-    auto vertex_faces(vertex_handle v) const {
-        return outgoing_halfedges(v) | std::views::filter([this](halfedge_handle h) { return !is_boundary(h); }) |
-               std::views::transform([this](halfedge_handle h) { return face(h); });
-    }
+    loop<outgoing_face_step> vertex_faces(vertex_handle v) const { return {*this, vertex_halfedge(v)}; }
     /// Faces across the edges of f's outer loop and inner rings, O(F_adjacentF).
     std::vector<face_handle> adjacent_faces(face_handle f) const {
         std::vector<face_handle> out;

@@ -96,11 +96,9 @@ public:
         return {static_cast<std::uint32_t>(face_edge_.size()), deleted_faces_ ? face_deleted_.data() : nullptr};
     }
     ///@}
-    /// Both sides of every live edge.
-    auto halfedges() const {
-        return std::views::iota(std::uint32_t{0}, static_cast<std::uint32_t>(2 * edges_.size())) |
-               std::views::filter([this](std::uint32_t i) { return !edge_deleted_[i >> 1]; }) |
-               std::views::transform([](std::uint32_t i) { return halfedge_handle(i); });
+    /// Both sides of every live edge, in index order.
+    detail::element_range<halfedge_handle, 1> halfedges() const {
+        return {static_cast<std::uint32_t>(2 * edges_.size()), deleted_edges_ ? edge_deleted_.data() : nullptr};
     }
 
     /// Whether the handle names an element that exists and is not deleted. O(1).
@@ -184,6 +182,14 @@ public:
     struct outgoing_edge_step : outgoing_step {
         static edge_handle value(const basic_winged_edge_mesh&, halfedge_handle h) { return edge(h); }
     };
+    struct outgoing_face_step : outgoing_step {
+        static bool keep(const basic_winged_edge_mesh& m, halfedge_handle h) { return !m.is_boundary(h); }
+        static face_handle value(const basic_winged_edge_mesh& m, halfedge_handle h) { return m.face(h); }
+    };
+    struct loop_across_step : loop_step {
+        static bool keep(const basic_winged_edge_mesh& m, halfedge_handle h) { return !m.is_boundary(opposite(h)); }
+        static face_handle value(const basic_winged_edge_mesh& m, halfedge_handle h) { return m.face(opposite(h)); }
+    };
     /// \endcond
     /// A circulator range: from a start halfedge, steps with Policy until it is back at the
     /// start, yielding Policy's value of each halfedge; empty for a null start.
@@ -206,15 +212,9 @@ public:
     /// The edges at v, one per outgoing halfedge. O(E_adjacentV).
     loop<outgoing_edge_step> vertex_edges(vertex_handle v) const { return {*this, vertex_halfedge(v)}; }
     /// Faces around v (boundary gaps skipped), O(F_adjacentV).
-    auto vertex_faces(vertex_handle v) const {
-        return outgoing_halfedges(v) | std::views::filter([this](halfedge_handle h) { return !is_boundary(h); }) |
-               std::views::transform([this](halfedge_handle h) { return face(h); });
-    }
+    loop<outgoing_face_step> vertex_faces(vertex_handle v) const { return {*this, vertex_halfedge(v)}; }
     /// Faces across f's edges (the other wing of each edge), O(F_adjacentF).
-    auto adjacent_faces(face_handle f) const {
-        return face_halfedges(f) | std::views::filter([this](halfedge_handle h) { return !is_boundary(opposite(h)); }) |
-               std::views::transform([this](halfedge_handle h) { return face(opposite(h)); });
-    }
+    loop<loop_across_step> adjacent_faces(face_handle f) const { return {*this, face_halfedge(f)}; }
     /// Number of edges at v (0 if isolated). O(V_adjacentV).
     std::size_t valence(vertex_handle v) const { return static_cast<std::size_t>(std::ranges::distance(outgoing_halfedges(v))); }
 

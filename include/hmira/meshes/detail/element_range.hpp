@@ -2,18 +2,27 @@
 // The ranges hmira's meshes hand out: all live elements of a kind, and loops that follow a
 // step function (around a face, around a vertex). They hold a pointer to the mesh, never to a
 // temporary, so they stay valid while the mesh's connectivity is unchanged.
+//
+// They derive from std::ranges::view_base, not view_interface: clang 14 with libstdc++ 12
+// substitutes view_interface's constrained members (data(), size()) while the derived class is
+// still incomplete, and rejects every class derived from it. view_base keeps them views (so
+// views::transform/filter take them by value); empty(), operator bool and front() are spelt
+// out below in place of the ones view_interface would add.
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
 #include <iterator>
 #include <ranges>
+#include <type_traits>
+#include <utility>
 
 namespace hmira::detail {
 
-/// Handles [0, bound) skipping those flagged deleted (deleted may be null: none deleted).
-template <class Handle>
-class element_range : public std::ranges::view_interface<element_range<Handle>> {
+/// Handles [0, bound) skipping those whose flag deleted[i >> Shift] is set (deleted may be
+/// null: none deleted). Shift 1 serves halfedges, which share their edge's flag.
+template <class Handle, unsigned Shift = 0>
+class element_range : public std::ranges::view_base {
 public:
     class iterator {
     public:
@@ -33,7 +42,7 @@ public:
     private:
         void skip() noexcept {
             if (deleted_)
-                while (i_ < bound_ && deleted_[i_]) ++i_;
+                while (i_ < bound_ && deleted_[i_ >> Shift]) ++i_;
         }
         std::uint32_t i_ = 0, bound_ = 0;
         const std::uint8_t* deleted_ = nullptr;
@@ -43,17 +52,28 @@ public:
     element_range(std::uint32_t bound, const std::uint8_t* deleted) : bound_(bound), deleted_(deleted) {}
     iterator begin() const { return iterator(0, bound_, deleted_); }
     iterator end() const { return iterator(bound_, bound_, nullptr); }
+    bool empty() const { return begin() == end(); }
+    explicit operator bool() const { return !empty(); }
+    Handle front() const { return *begin(); }
 
 private:
     std::uint32_t bound_ = 0;
     const std::uint8_t* deleted_ = nullptr;
 };
 
+/// Whether a loop policy filters: it has keep(mesh, cursor), and the loop then yields only
+/// the cursors it keeps.
+template <class Policy, class Mesh, class Cursor>
+concept filtering_policy = requires(const Mesh& m, Cursor c) {
+    { Policy::keep(m, c) } -> std::convertible_to<bool>;
+};
+
 /// A closed loop: starts at `start`, steps with Policy::step(mesh, h) until back at start, and
-/// yields Policy::value(mesh, h). An empty loop if start is null. A guard stops after
-/// `max_steps` so that corrupt connectivity cannot hang a query.
+/// yields Policy::value(mesh, h) for each h (only those with Policy::keep(mesh, h), if the
+/// policy has keep). An empty loop if start is null. A guard stops after `max_steps` so that
+/// corrupt connectivity cannot hang a query.
 template <class Mesh, class Cursor, class Policy>
-class loop_range : public std::ranges::view_interface<loop_range<Mesh, Cursor, Policy>> {
+class loop_range : public std::ranges::view_base {
 public:
     class iterator {
     public:
@@ -63,12 +83,16 @@ public:
 
         iterator() = default;
         iterator(const Mesh* m, Cursor start, Cursor cur, std::uint32_t lap)
-            : m_(m), start_(start), cur_(cur), lap_(lap) {}
+            : m_(m), start_(start), cur_(cur), lap_(lap) {
+            if (lap_ == 0 && !kept()) ++*this;
+        }
 
         value_type operator*() const { return Policy::value(*m_, cur_); }
         iterator& operator++() {
-            cur_ = Policy::step(*m_, cur_);
-            if (cur_ == start_ || ++steps_ > max_steps) { cur_ = start_; ++lap_; }
+            do {
+                cur_ = Policy::step(*m_, cur_);
+                if (cur_ == start_ || ++steps_ > max_steps) { cur_ = start_; ++lap_; break; }
+            } while (!kept());
             return *this;
         }
         iterator operator++(int) { auto t = *this; ++*this; return t; }
@@ -78,6 +102,10 @@ public:
         Cursor cursor() const noexcept { return cur_; }
 
     private:
+        bool kept() const {
+            if constexpr (filtering_policy<Policy, Mesh, Cursor>) return Policy::keep(*m_, cur_);
+            else return true;
+        }
         static constexpr std::uint32_t max_steps = 1u << 30;
         const Mesh* m_ = nullptr;
         Cursor start_{}, cur_{};
@@ -88,6 +116,9 @@ public:
     loop_range(const Mesh& m, Cursor start) : m_(&m), start_(start) {}
     iterator begin() const { return iterator(m_, start_, start_, start_ == Cursor{} ? 1u : 0u); }
     iterator end() const { return iterator(m_, start_, start_, 1u); }
+    bool empty() const { return begin() == end(); }
+    explicit operator bool() const { return !empty(); }
+    auto front() const { return *begin(); }
 
 private:
     const Mesh* m_ = nullptr;
@@ -97,7 +128,7 @@ private:
 }  // namespace hmira::detail
 
 // Both ranges only refer to the mesh, so iterators obtained from a temporary range stay valid.
-template <class Handle>
-inline constexpr bool std::ranges::enable_borrowed_range<hmira::detail::element_range<Handle>> = true;
+template <class Handle, unsigned Shift>
+inline constexpr bool std::ranges::enable_borrowed_range<hmira::detail::element_range<Handle, Shift>> = true;
 template <class Mesh, class Cursor, class Policy>
 inline constexpr bool std::ranges::enable_borrowed_range<hmira::detail::loop_range<Mesh, Cursor, Policy>> = true;
