@@ -5,8 +5,10 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
+#include <map>
 #include <numbers>
 #include <ranges>
 #include <string>
@@ -14,6 +16,7 @@
 #include <vector>
 
 #include "detail/editing_common.hpp"
+#include "detail/grid_fill.hpp"
 #include "truncate.hpp"
 
 namespace hmira {
@@ -40,10 +43,11 @@ struct bevel_options {
 /// What a bevel created.
 template <class M, class T = default_traits<M>>
 struct bevel_result {
-    /// The strip faces, `segments` per bevelled edge, edge by edge in input order.
+    /// The strip faces, `segments` per bevelled edge (one for a strip whose two end vertices
+    /// stay), edge by edge in input order, each from its F_L side.
     std::vector<typename T::face_handle> strip_faces;
     /// The patches closing vertices where three or more bevelled edges meet (a triangle at a
-    /// cube corner), and vertex-only mode's faces.
+    /// cube corner; with segments > 1 every face of its grid fill), and vertex-only mode's faces.
     std::vector<typename T::face_handle> vertex_faces;
     std::vector<typename T::vertex_handle> vertices;  ///< every new vertex
     double width = 0;                                 ///< the width used (after clamping)
@@ -52,7 +56,8 @@ struct bevel_result {
 namespace detail::editing {
 
 /// Point t in [0, 1] of the circular arc from a to b tangent to a-c and c-b (a rational
-/// quadratic Bezier with control point c; exact circle when |a - c| = |b - c|).
+/// quadratic Bezier with control point c; exact circle when |a - c| = |b - c|, otherwise a
+/// conic in the plane of a, b, c). Degenerate input (c on a or b) stays finite.
 inline vec3<double> arc_point(const vec3<double>& a, const vec3<double>& c, const vec3<double>& b, double t) {
     const double cosb = dot(normalized(a - c), normalized(b - c));
     const double beta = std::acos(std::clamp(cosb, -1.0, 1.0));
@@ -83,15 +88,41 @@ inline vec3<double> arc_point(const vec3<double>& a, const vec3<double>& c, cons
 ///   strip ends in it: the strip face then has the vertex as a pointed end.
 /// V/E/F: a cube edge with segments = 1 gives V + 2, E + 3, F + 1 (8/12/6 -> 10/15/7).
 ///
-/// segments > 1 needs every end vertex to be removed with a single bevelled edge (degree 3,
-/// as on a cube edge); rounded patches where bevels meet are not built (errc::unsupported).
+/// With segments = n > 1 the flat result above is rounded:
+/// - Every end edge (where a strip meets its end vertex's replacement) is split once into n
+///   segments along a circular arc (arc_point). Its control point is the old end vertex where
+///   two strips share the end edge (two bevelled edges meeting at a degree-3 vertex, or passing
+///   straight through a degree-4 one: the mitre, whose points lie in the plane of both edges),
+///   and otherwise the point of the bevelled edge's line nearest to the end edge's midpoint:
+///   the old vertex on a cube edge's chamfer, and at a cube corner with three bevelled edges a
+///   point that makes the arc a quarter circle of the strip's cylinder.
+/// - Each strip is cut across into n faces, joining the j-th arc points of its two ends; at an
+///   end vertex that stays the cuts fan out from it. A strip whose two end vertices both stay
+///   has no profile to follow and remains one face.
+/// - A patch whose every side is an arc (k >= 3 bevelled edges around a removed vertex, as at a
+///   cube corner) is filled with a grid of quads (grid fill): with m = floor(n / 2), one m x m
+///   quad patch per corner, meeting in a centre vertex (n even), or, for n odd, around a middle
+///   k-gon (a triangle at a cube corner) with a strip of m quads between neighbouring patches.
+///   Inner points come from Coons patches of the sides, then are projected onto the sphere
+///   fitted to the patch's boundary by least squares, when that fit is good (rms distance below
+///   1% of the radius, radius below 10 x the patch's diameter); at a cube corner the boundary
+///   lies exactly on the sphere of radius `width` around the inner corner, so the patch does
+///   too. Otherwise the Coons positions stay.
+/// - A patch with straight sides (the vertex also had a face corner away from the bevel) stays
+///   one face, its sides carrying the arc points: a non-planar polygon (editors' "cutoff"
+///   corner).
+/// All 12 edges of a cube with segments = 4 give a rounded cube: 6 + 48 + 8 x 12 faces.
+/// At the clamp limit new points from both ends of an edge may coincide; the result is still
+/// valid topologically, but faces of zero area can occur there.
 ///
 /// Complexity O(sum of the end vertices' degrees and the touched faces' degrees) per edge =
-/// O(V_adjacentV), plus O(k log k) for k edges. Errors (mesh unchanged): errc::invalid_argument
-/// for options out of range or an empty selection; errc::invalid_handle for a missing edge;
-/// errc::unsupported for a boundary edge, a degenerate corner (collinear edges) or segments > 1
-/// where not supported; errc::topology / errc::non_manifold for end vertices truncate() would
-/// reject.
+/// O(V_adjacentV), plus O(k log k) for k edges, for segments = 1; with n segments add O(n^2)
+/// per strip (cuts found by walking the strip) and O(k n^3) per patch of k sides (every
+/// halfedge of the grid fill is found by walking the current face), for O(k n^2) new elements.
+/// Errors (mesh unchanged): errc::invalid_argument for options out of range or an empty
+/// selection; errc::invalid_handle for a missing edge; errc::unsupported for a boundary edge
+/// (a bevelled edge needs a face on both sides) or a degenerate corner (collinear edges);
+/// errc::topology / errc::non_manifold for end vertices truncate() would reject.
 template <class M, class T = default_traits<M>, class R>
     requires bevelable_mesh<M, T> && range_of_handles<R, typename T::edge_handle>
 result<bevel_result<M, T>> bevel(M& mesh, const R& edges, const bevel_options& options = {}) {
@@ -135,7 +166,6 @@ result<bevel_result<M, T>> bevel(M& mesh, const R& edges, const bevel_options& o
     std::vector<slide> slides;
     std::vector<inner> inners;
     std::vector<bool> removed(touched.size(), true);
-    std::vector<int> bevel_count(touched.size(), 0);
     double limit_ratio = 1e300;  // max width / requested width allowed by clamp_overlap
     auto add_slide = [&](H h, double per_width) {
         for (auto& s : slides)
@@ -150,7 +180,6 @@ result<bevel_result<M, T>> bevel(M& mesh, const R& edges, const bevel_options& o
         std::vector<bool> near(d, false);
         for (std::size_t i = 0; i < d; ++i) {
             const auto a = hs[i], b = hs[(i + 1) % d];
-            if (is_bev(a)) ++bevel_count[k];
             if (T::face(mesh, b) == T::null_face()) continue;  // the boundary gap is no corner
             const bool ba = is_bev(a), bb = is_bev(b);
             if (!ba && !bb) continue;
@@ -185,13 +214,14 @@ result<bevel_result<M, T>> bevel(M& mesh, const R& edges, const bevel_options& o
         }
     }
     const double width = options.clamp_overlap ? std::min(options.width, limit_ratio) : options.width;
-    if (options.segments > 1)
-        for (std::size_t k = 0; k < touched.size(); ++k)
-            if (!removed[k] || bevel_count[k] != 1)
-                return fail(errc::unsupported,
-                            "bevel: segments > 1 needs each end vertex to have one bevelled edge and no edges away from the bevel "
-                            "(degree 3, as on a cube edge); " + du::name<M, T>("vertex", mesh, touched[k]) + " has not",
-                            du::index_of<M, T>(mesh, touched[k]));
+    // Which ends of each bevelled edge stay (the strip then ends in a point there).
+    std::vector<std::array<bool, 2>> end_kept(sel.size());
+    for (std::size_t i = 0; i < sel.size(); ++i)
+        for (int side = 0; side < 2; ++side) {
+            const auto v = side == 0 ? du::source<M, T>(mesh, sel[i]) : T::target(mesh, sel[i]);
+            for (std::size_t k = 0; k < touched.size(); ++k)
+                if (touched[k] == v) end_kept[i][side] = !removed[k];
+        }
 
     // ---- change the mesh (nothing below fails) ----
     bevel_result<M, T> out;
@@ -242,36 +272,131 @@ result<bevel_result<M, T>> bevel(M& mesh, const R& edges, const bevel_options& o
             const auto f = de::replace_vertex_by_polygon<M, T>(mesh, touched[k]);
             if (f != T::null_face()) out.vertex_faces.push_back(f);
         }
-    // 5. Rounded profile: split both end edges along arcs and cut the strip across.
+    // 5. Rounded profiles (segments > 1): split every end edge once along an arc (B), cut each
+    //    strip across (C), and fill each vertex patch bounded by arcs only with a grid (D).
+    if (options.segments == 1) {
+        for (auto qp : strip_side) out.strip_faces.push_back(T::face(mesh, qp));
+        return out;
+    }
+    const auto n = static_cast<std::size_t>(options.segments);
+    struct end_edge {
+        V a, b;                     // the edge's ends, as first met (from a strip's F_L side)
+        vec3<double> v{}, dir{};    // the original end vertex, and the unit edge direction away from it
+        int uses = 0;               // strips ending in this edge (2 at a mitre or pass-through)
+        std::size_t owner = 0;      // the first of them (the edge lies on its loop)
+        std::vector<V> arc;         // a, the arc points, b
+    };
+    struct strip_end {
+        bool pointed = false;  // the end vertex stayed: the strip ends in it
+        V tip{};               // that vertex
+        std::size_t edge = 0;  // else: which end edge
+        bool reversed = false; // the end edge's a is on this strip's F_R side
+    };
+    std::vector<end_edge> end_edges;
+    std::map<std::pair<std::size_t, std::size_t>, std::size_t> end_edge_at;
+    std::vector<std::array<strip_end, 2>> strip_ends(sel.size());
+    std::vector<typename T::face_handle> strip_face(sel.size());
+    auto add_end = [&](std::size_t i, int side, V a, V b) {
+        const auto ia = T::vertex_index(mesh, a), ib = T::vertex_index(mesh, b);
+        const auto key = std::make_pair(std::min(ia, ib), std::max(ia, ib));
+        auto it = end_edge_at.find(key);
+        if (it == end_edge_at.end()) {
+            const auto& here = side == 0 ? ends[i].first : ends[i].second;
+            const auto& there = side == 0 ? ends[i].second : ends[i].first;
+            end_edges.push_back({a, b, here, normalized(there - here), 0, i, {}});
+            it = end_edge_at.emplace(key, end_edges.size() - 1).first;
+        }
+        auto& ee = end_edges[it->second];
+        ++ee.uses;
+        strip_ends[i][side] = {false, V{}, it->second, ee.a != a};
+    };
     for (std::size_t i = 0; i < sel.size(); ++i) {
         const auto qp = strip_side[i];
-        out.strip_faces.push_back(T::face(mesh, qp));
-        if (options.segments == 1) continue;
-        const auto n = static_cast<std::size_t>(options.segments);
-        const auto v_end = T::next(mesh, qp);                    // p -> p'
-        const auto w_end = T::prev(mesh, qp);                    // q' -> q
-        const auto p = T::target(mesh, qp), pp = T::target(mesh, v_end);
-        const auto q = T::target(mesh, w_end), qq = du::source<M, T>(mesh, w_end);
-        const auto [cv, cw] = ends[i];
-        std::vector<H> into_p(n), into_q(n);
-        auto x = v_end;
-        const auto P0 = de::pos<M, T>(mesh, p), P1 = de::pos<M, T>(mesh, pp);
-        const auto Q0 = de::pos<M, T>(mesh, q), Q1 = de::pos<M, T>(mesh, qq);
+        strip_face[i] = T::face(mesh, qp);
+        // The strip's loop: q -> p -> (p', or kept s -> p') -> q' -> (q, or kept t -> q).
+        if (end_kept[i][0]) strip_ends[i][0] = {true, T::target(mesh, T::next(mesh, qp)), 0, false};
+        else add_end(i, 0, T::target(mesh, qp), T::target(mesh, T::next(mesh, qp)));
+        const auto back = T::prev(mesh, qp);
+        if (end_kept[i][1]) strip_ends[i][1] = {true, du::source<M, T>(mesh, back), 0, false};
+        else add_end(i, 1, T::target(mesh, back), du::source<M, T>(mesh, back));
+    }
+    // Vertex patches whose every side is an end edge get a grid; remember their corners now.
+    struct patch { typename T::face_handle face; std::vector<V> corners; };
+    std::vector<patch> patches;
+    for (auto f : out.vertex_faces) {
+        patch pa{f, {}};
+        bool all_arcs = true;
+        const auto start = T::face_halfedge(mesh, f);
+        auto h = start;
+        do {
+            pa.corners.push_back(T::target(mesh, h));
+            const auto a = T::vertex_index(mesh, du::source<M, T>(mesh, h)), b = T::vertex_index(mesh, T::target(mesh, h));
+            if (!end_edge_at.contains(std::make_pair(std::min(a, b), std::max(a, b)))) all_arcs = false;
+            h = T::next(mesh, h);
+        } while (h != start);
+        if (all_arcs && pa.corners.size() >= 3) patches.push_back(std::move(pa));
+    }
+    // B. Split each end edge once. Control point: the end vertex itself where two strips share
+    //    the edge (their tangents meet there: the mitre); else the point of the bevelled edge's
+    //    line nearest to the end edge's midpoint (a quarter circle at a three-edge corner).
+    for (auto& ee : end_edges) {
+        const auto pa = de::pos<M, T>(mesh, ee.a), pb = de::pos<M, T>(mesh, ee.b);
+        const auto ctrl = ee.uses >= 2 ? ee.v : ee.v + ee.dir * dot((pa + pb) / 2.0 - ee.v, ee.dir);
+        const auto f = strip_face[ee.owner];
+        const auto start = T::face_halfedge(mesh, f);
+        auto x = start;
+        while (!((T::target(mesh, x) == ee.a || T::target(mesh, x) == ee.b) &&
+                 (du::source<M, T>(mesh, x) == ee.a || du::source<M, T>(mesh, x) == ee.b)))
+            x = T::next(mesh, x);
+        const bool forward = du::source<M, T>(mesh, x) == ee.a;
+        std::vector<V> arc{du::source<M, T>(mesh, x)};
         for (std::size_t j = 1; j < n; ++j) {
-            const auto s = de::split_edge<M, T>(mesh, x, de::arc_point(P0, cv, P1, double(j) / double(n)));
+            const double t = double(j) / double(n);
+            const auto s = de::split_edge<M, T>(mesh, x, de::arc_point(pa, ctrl, pb, forward ? t : 1 - t));
             out.vertices.push_back(s.vertex);
-            into_p[j] = s.first;
+            arc.push_back(s.vertex);
             x = s.second;
         }
-        x = w_end;
-        for (std::size_t j = n - 1; j >= 1; --j) {
-            const auto s = de::split_edge<M, T>(mesh, x, de::arc_point(Q0, cw, Q1, double(j) / double(n)));
-            out.vertices.push_back(s.vertex);
-            into_q[j] = s.first;
-            x = s.second;
+        arc.push_back(T::target(mesh, x));
+        if (!forward) std::reverse(arc.begin(), arc.end());
+        ee.arc = std::move(arc);
+    }
+    // C. Cut each strip across: the j-th point of one end to the j-th of the other, both counted
+    //    from the F_L side (a fan to the vertex at a pointed end). A strip pointed at both ends
+    //    has no profile to follow and stays one face.
+    for (std::size_t i = 0; i < sel.size(); ++i) {
+        auto c = strip_face[i];
+        out.strip_faces.push_back(c);
+        if (strip_ends[i][0].pointed && strip_ends[i][1].pointed) continue;
+        auto point = [&](int side, std::size_t j) {
+            const auto& se = strip_ends[i][side];
+            if (se.pointed) return se.tip;
+            const auto& arc = end_edges[se.edge].arc;
+            return se.reversed ? arc[n - j] : arc[j];
+        };
+        for (std::size_t j = 1; j < n; ++j) {
+            // makeEF's new face runs forward from the first end's point: the uncut rest.
+            const auto h0 = de::into_vertex<M, T>(mesh, c, point(0, j));
+            const auto h1 = de::into_vertex<M, T>(mesh, c, point(1, j));
+            c = make_edge_face<M, T>(mesh, h0, h1)->face;
+            out.strip_faces.push_back(c);
         }
-        for (std::size_t j = 1; j < n; ++j)
-            out.strip_faces.push_back(make_edge_face<M, T>(mesh, into_p[j], into_q[j])->face);
+    }
+    // D. Grid-fill the vertex patches bounded by arcs only.
+    for (const auto& pa : patches) {
+        const std::size_t k = pa.corners.size();
+        std::vector<std::vector<V>> arcs(k);
+        for (std::size_t s = 0; s < k; ++s) {
+            // Side s runs from corner s - 1 to corner s (the corners were read as targets).
+            const auto from = pa.corners[(s + k - 1) % k];
+            const auto a = T::vertex_index(mesh, from), b = T::vertex_index(mesh, pa.corners[s]);
+            const auto& ee = end_edges[end_edge_at.at(std::make_pair(std::min(a, b), std::max(a, b)))];
+            arcs[s] = ee.arc;
+            if (ee.a != from) std::reverse(arcs[s].begin(), arcs[s].end());
+        }
+        auto g = de::grid_fill<M, T>(mesh, pa.face, arcs);
+        out.vertex_faces.insert(out.vertex_faces.end(), g.faces.begin(), g.faces.end());
+        out.vertices.insert(out.vertices.end(), g.vertices.begin(), g.vertices.end());
     }
     return out;
 }
