@@ -1,8 +1,8 @@
 // hmira/algorithms/editing/extrude.hpp
 // Face extrusion (thesis 2.2): pull a face, or a connected set of faces, out along a direction
-// and join it to where it was by side walls of quads. One face is extruded with the Euler
-// operators alone (makeEV at each corner, makeEF around); a region of several faces also needs
-// its boundary vertices split, which detail::editing::extrude_region does on the halfedge layer.
+// and join it to where it was by side walls of quads, along the outer loop and every inner ring.
+// Built from Euler operators only: one face by makeEV at each corner and makeEF around; a
+// region by the general makeEV (split_vertex) at each outline vertex and makeEF per wall.
 #pragma once
 
 #include <algorithm>
@@ -43,8 +43,13 @@ struct extrude_result {
     /// The extruded faces at their new place: the same face handles as the input (the faces
     /// move; the walls are new).
     std::vector<typename T::face_handle> top_faces;
-    std::vector<typename T::face_handle> side_faces;  ///< the wall quads, one per outline edge
-    std::vector<typename T::vertex_handle> vertices;  ///< the new vertices (the moved outline)
+    /// The wall quads, one per outline edge (per face in individual mode: its outer loop's
+    /// walls, then each inner ring's).
+    std::vector<typename T::face_handle> side_faces;
+    /// The new vertices. Individual mode: the extruded faces' new corners (at the top).
+    /// Region mode: the region keeps its vertices and moves them, so the new vertices are the
+    /// outline's copies left at the old place (the walls' bottom corners).
+    std::vector<typename T::vertex_handle> vertices;
 };
 
 namespace detail::editing {
@@ -54,164 +59,143 @@ result<void> check_extrude_face(const M& m, typename T::face_handle f) {
     namespace de = detail::euler;
     if (!de::usable<M, T>(m, f))
         return fail(errc::invalid_handle, "extrude: " + de::name<M, T>("face", m, f) + " does not exist", de::index_of<M, T>(m, f));
-    if (de::has_rings<M, T>(m, f))
-        return fail(errc::unsupported, "extrude: " + de::name<M, T>("face", m, f) + " has inner rings, which extrusion does not handle",
-                    de::index_of<M, T>(m, f));
     return {};
 }
 
-/// Extrudes one face by the displacement `d` from Euler operators: makeEV grows a new vertex
-/// out of every corner into the face, then makeEF joins consecutive tips, each cutting a side
-/// quad off the face, until the face is the top. V + n, E + 2n, F + n. O(n).
+/// One halfedge of every loop of f: the outer loop, then each inner ring (on models that have
+/// rings). O(rings of f).
+template <class M, class T>
+std::vector<typename T::halfedge_handle> face_loops(const M& m, typename T::face_handle f) {
+    std::vector<typename T::halfedge_handle> out{T::face_halfedge(m, f)};
+    if constexpr (inner_ring_mesh<M, T>)
+        for (auto r : T::inner_rings(m, f)) out.push_back(r);
+    return out;
+}
+
+/// The halfedges of the loop through `start`, in order. O(loop size).
+template <class M, class T>
+std::vector<typename T::halfedge_handle> loop_of(const M& m, typename T::halfedge_handle start) {
+    std::vector<typename T::halfedge_handle> out;
+    auto h = start;
+    do {
+        out.push_back(h);
+        h = T::next(m, h);
+    } while (h != start);
+    return out;
+}
+
+/// Newell vector of f over all its loops: inner rings are wound against the outer loop, so
+/// they subtract their area. O(face degree + ring sizes).
+template <class M, class T>
+vec3<double> area_vector_with_rings(const M& m, typename T::face_handle f) {
+    vec3<double> n{};
+    for (auto start : face_loops<M, T>(m, f))
+        for (auto h : loop_of<M, T>(m, start)) {
+            const auto a = pos<M, T>(m, T::target(m, T::opposite(m, h)));
+            const auto b = pos<M, T>(m, T::target(m, h));
+            n.x += (a.y - b.y) * (a.z + b.z);
+            n.y += (a.z - b.z) * (a.x + b.x);
+            n.z += (a.x - b.x) * (a.y + b.y);
+        }
+    return n;
+}
+
+/// Extrudes one face by the displacement `d` from Euler operators, loop by loop (the outer
+/// loop, then every inner ring): makeEV grows a new vertex out of every corner of the loop
+/// into the face, then makeEF joins consecutive tips, each cutting a side quad off the face,
+/// until the loop runs through the tips only. On a ring the quads face into the hole. For n
+/// corners over all loops: V + n, E + 2n, F + n, rings unchanged. O(n + rings).
 template <class M, class T>
 void extrude_one(M& m, typename T::face_handle f, const vec3<double>& d, extrude_result<M, T>& out) {
     using H = typename T::halfedge_handle;
-    std::vector<H> into;
-    const auto start = T::face_halfedge(m, f);
-    auto h = start;
-    do {
-        into.push_back(h);
-        h = T::next(m, h);
-    } while (h != start);
-    const std::size_t n = into.size();
-    std::vector<H> up(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        const auto r = make_edge_vertex<M, T>(m, into[i], to_point<M, T>(pos<M, T>(m, T::target(m, into[i])) + d));
-        up[i] = r->halfedge;
-        out.vertices.push_back(r->vertex);
-    }
-    H h0 = up[0];
-    for (std::size_t i = 0; i < n; ++i) {
-        const auto r = make_edge_face<M, T>(m, h0, up[(i + 1) % n]);
-        out.side_faces.push_back(r->face);
-        h0 = r->halfedge;
+    // Every loop is read before any change: makeEF re-registers the ring halfedges it cuts off.
+    std::vector<std::vector<H>> loops;
+    for (auto start : face_loops<M, T>(m, f)) loops.push_back(loop_of<M, T>(m, start));
+    for (const auto& into : loops) {
+        const std::size_t n = into.size();
+        std::vector<H> up(n);
+        for (std::size_t i = 0; i < n; ++i) {
+            const auto r = make_edge_vertex<M, T>(m, into[i], to_point<M, T>(pos<M, T>(m, T::target(m, into[i])) + d));
+            up[i] = r->halfedge;
+            out.vertices.push_back(r->vertex);
+        }
+        H h0 = up[0];
+        for (std::size_t i = 0; i < n; ++i) {
+            const auto r = make_edge_face<M, T>(m, h0, up[(i + 1) % n]);
+            out.side_faces.push_back(r->face);
+            h0 = r->halfedge;
+        }
     }
     out.top_faces.push_back(f);
 }
 
-/// Extrudes a connected region of several faces (already checked, `in_region` holds their
-/// indices) by `d`, on the raw halfedge layer: every outline vertex v gets a copy v' that takes
-/// over the region's side of v; each outline edge moves up to the copies, a new edge takes its
-/// place on the outside, and a new vertical edge per outline vertex closes the wall quads.
-/// Inner vertices of the region move by d. O(region size + outline fans).
+/// Extrudes a connected region of several faces (already checked: `in_region` holds their
+/// indices; `outline` the region-side halfedges g = u -> v of every loop, outer or ring, whose
+/// other side is not in the region; no outline vertex pinched) by `d`, from Euler operators.
+/// The region keeps its elements and moves; what stays behind is new:
+///  1. split_vertex (the general makeEV) at every outline vertex v: a new vertex v' at v's place
+///     takes over the edges outside the region, between the outline edge leaving v and the
+///     one arriving; the new edge v -> v' lies in the outside faces on both sides of v (an
+///     edge hanging into the one outside face when v has a single outside corner);
+///  2. makeEF per outline edge, in the outside face across it: from u' to v', cutting off the
+///     wall quad u -> u' -> v' -> v ... wound with the region;
+///  3. the region's vertices (all of them, outline included) move by d.
+/// V + b, E + 2b, F + b for b outline edges. O(R log R) for R corners of the region's faces,
+/// plus the outline vertices' fans.
 template <class M, class T>
 void extrude_region(M& m, const std::vector<typename T::face_handle>& faces, const index_set& in_region,
                     const std::vector<typename T::halfedge_handle>& outline, const vec3<double>& d, extrude_result<M, T>& out) {
     using H = typename T::halfedge_handle;
-    using V = typename T::vertex_handle;
     using F = typename T::face_handle;
     auto in_r = [&](F f) { return f != T::null_face() && in_region.contains(T::face_index(m, f)); };
     const std::size_t k = outline.size();
-    // Outline halfedges g (region side, u -> v), indexed by the halfedge index of their opposite.
-    std::vector<std::pair<std::size_t, std::size_t>> og_index;  // (halfedge index of opposite(g), i)
-    for (std::size_t i = 0; i < k; ++i) og_index.push_back({T::halfedge_index(m, T::opposite(m, outline[i])), i});
-    std::sort(og_index.begin(), og_index.end());
-    auto outline_of_og = [&](H x) -> long long {
-        const auto key = T::halfedge_index(m, x);
-        auto it = std::lower_bound(og_index.begin(), og_index.end(), std::pair<std::size_t, std::size_t>{key, 0});
-        return it != og_index.end() && it->first == key ? static_cast<long long>(it->second) : -1;
-    };
-    // Per outline vertex v = target(g_i): the region halfedges into v that move to the copy.
-    struct corner {
-        V v;
-        std::vector<H> moved_in;
-        H v_out;               // v's outgoing halfedge after the operation
-        bool v_out_moves = false;  // the stored one goes with the region or the wall: replace it
-        H copy_out;            // the copy's outgoing halfedge
-    };
-    std::vector<corner> corners(k);
-    std::vector<H> on(k), op(k);
-    std::vector<F> fout(k);
-    std::vector<vec3<double>> copy_pos(k);
+    // Read phase. For g_i = u -> v: the corners of the split at v, and which outline halfedge
+    // ends at u (its split makes the wall's other vertical edge).
+    std::vector<H> h0(k), h1(k);
+    std::vector<vec3<double>> place(k);
+    std::vector<std::pair<std::size_t, std::size_t>> by_target;  // (vertex index of v, i)
     for (std::size_t i = 0; i < k; ++i) {
         const auto g = outline[i];
-        const auto og = T::opposite(m, g);
-        on[i] = T::next(m, og);
-        op[i] = T::prev(m, og);
-        fout[i] = T::face(m, og);
-        auto& c = corners[i];
-        c.v = T::target(m, g);
-        c.moved_in.push_back(g);
-        auto o = T::next(m, g);
-        c.copy_out = o;
-        for (;;) {
-            c.moved_in.push_back(T::opposite(m, o));
-            if (!in_r(T::face(m, T::opposite(m, o)))) break;
-            o = T::next(m, T::opposite(m, o));
+        // Turn through the region's corners at v to the outline halfedge leaving v.
+        auto x = g;
+        H leaving = T::next(m, x);
+        while (in_r(T::face(m, T::opposite(m, leaving)))) {
+            x = T::opposite(m, leaving);
+            leaving = T::next(m, x);
         }
-        copy_pos[i] = pos<M, T>(m, c.v) + d;
+        h0[i] = T::opposite(m, leaving);               // into v from outside, along the outline edge leaving v
+        h1[i] = T::prev(m, T::opposite(m, g));         // the last outside corner before g
+        place[i] = pos<M, T>(m, T::target(m, g));
+        by_target.push_back({T::vertex_index(m, T::target(m, g)), i});
     }
-    // v's stored outgoing halfedge, read before any change (models may derive it from links).
-    std::vector<H> b_out(k), b_in(k), up(k);
-    std::vector<V> copy(k);
-    for (auto& c : corners) {
-        c.v_out = T::vertex_halfedge(m, c.v);
-        c.v_out_moves = std::find(c.moved_in.begin(), c.moved_in.end(), T::opposite(m, c.v_out)) != c.moved_in.end();
-    }
-    // New elements.
-    for (std::size_t i = 0; i < k; ++i) {
-        const auto g = outline[i];
-        const auto u = T::target(m, T::opposite(m, g)), v = T::target(m, g);
-        b_out[i] = T::new_edge(m, v, u);
-        b_in[i] = T::opposite(m, b_out[i]);
-        copy[i] = T::add_vertex(m, to_point<M, T>(copy_pos[i]));
-        out.vertices.push_back(copy[i]);
-    }
-    for (std::size_t i = 0; i < k; ++i) up[i] = T::new_edge(m, corners[i].v, copy[i]);
-    // Index of the outline halfedge ending at the source of g_i (its wall's left neighbour).
-    std::vector<std::pair<std::size_t, std::size_t>> by_target;
-    for (std::size_t i = 0; i < k; ++i) by_target.push_back({T::vertex_index(m, corners[i].v), i});
     std::sort(by_target.begin(), by_target.end());
-    auto ending_at = [&](V v) {
-        auto it = std::lower_bound(by_target.begin(), by_target.end(), std::pair<std::size_t, std::size_t>{T::vertex_index(m, v), 0});
-        return it->second;
-    };
-    std::vector<std::size_t> left(k);
-    for (std::size_t i = 0; i < k; ++i) left[i] = ending_at(T::target(m, T::opposite(m, outline[i])));
-    // Move the region's side of every outline vertex to its copy.
-    for (std::size_t i = 0; i < k; ++i)
-        for (auto x : corners[i].moved_in) T::set_target(m, x, copy[i]);
-    // Walls: b_in (u -> v), up_v (v -> v'), og (v' -> u'), down_u (u' -> u).
+    std::vector<std::size_t> left(k);  // the outline halfedge that ends at the source of g_i
     for (std::size_t i = 0; i < k; ++i) {
-        const auto og = T::opposite(m, outline[i]);
-        const auto down_u = T::opposite(m, up[left[i]]);
-        const auto w = T::new_face(m);
-        out.side_faces.push_back(w);
-        const H loop[4] = {b_in[i], up[i], og, down_u};
-        for (int j = 0; j < 4; ++j) {
-            T::set_next(m, loop[j], loop[(j + 1) % 4]);
-            T::set_face(m, loop[j], w);
-        }
-        T::set_face_halfedge(m, w, b_in[i]);
+        const auto u = T::vertex_index(m, T::target(m, T::opposite(m, outline[i])));
+        left[i] = std::lower_bound(by_target.begin(), by_target.end(), std::pair<std::size_t, std::size_t>{u, 0})->second;
     }
-    // Outside: b_out (v -> u) takes og's place in its face.
+    // 1. Split every outline vertex; `down[i]` runs from v_i to its copy.
+    std::vector<H> down(k);
     for (std::size_t i = 0; i < k; ++i) {
-        const long long nj = outline_of_og(on[i]);
-        T::set_next(m, b_out[i], nj >= 0 ? b_out[static_cast<std::size_t>(nj)] : on[i]);
-        if (outline_of_og(op[i]) < 0) T::set_next(m, op[i], b_out[i]);
-        T::set_face(m, b_out[i], fout[i]);
-        if (fout[i] != T::null_face() && T::face_halfedge(m, fout[i]) == T::opposite(m, outline[i]))
-            T::set_face_halfedge(m, fout[i], b_out[i]);
+        const auto r = split_vertex<M, T>(m, h0[i], h1[i], to_point<M, T>(place[i]));
+        down[i] = r->halfedge;
+        out.vertices.push_back(r->vertex);
     }
-    // Stored halfedges: the copy is interior. v keeps what it stored unless that went up with
-    // the region; then b_out (v -> u, in the face of the old outside halfedge v -> u, so a
-    // boundary halfedge if that one was) replaces it.
+    // 2. One wall per outline edge: its face's loop reads ... -> v' -> v -> u -> u' -> ...
     for (std::size_t i = 0; i < k; ++i) {
-        auto& c = corners[i];
-        if (c.v_out_moves) c.v_out = b_out[i];
-        T::set_vertex_halfedge(m, copy[i], c.copy_out);
-        T::set_vertex_halfedge(m, c.v, c.v_out);
+        const auto up_v = T::opposite(m, down[i]);  // v' -> v
+        const auto r = make_edge_face<M, T>(m, T::prev(m, up_v), down[left[i]]);
+        out.side_faces.push_back(r->face);
     }
-    // Inner vertices move with the region (the copies are in place already).
+    // 3. Move the region.
     index_set done;
-    for (auto cv : copy) done.insert(T::vertex_index(m, cv));
     for (auto f : faces)
-        for (auto v : T::face_vertices(m, f)) {
-            const auto vi = T::vertex_index(m, v);
-            if (done.contains(vi)) continue;
-            done.insert(vi);
-            T::set_position(m, v, to_point<M, T>(pos<M, T>(m, v) + d));
-        }
+        for (auto start : face_loops<M, T>(m, f))
+            for (auto h : loop_of<M, T>(m, start)) {
+                const auto v = T::target(m, h);
+                if (!done.insert(T::vertex_index(m, v))) continue;
+                T::set_position(m, v, to_point<M, T>(pos<M, T>(m, v) + d));
+            }
     out.top_faces = faces;
 }
 
@@ -226,13 +210,18 @@ void extrude_region(M& m, const std::vector<typename T::face_handle>& faces, con
 /// handles and winding; walls are wound consistently with them, so a closed mesh stays closed
 /// and outward oriented (a positive distance along the outward normal adds volume).
 ///
+/// Faces with inner rings (holes; models with inner_ring_mesh) extrude like any face: the top
+/// keeps its rings, and walls are built along every ring too, facing into the hole (outward
+/// from the solid). There n counts the corners of all loops of the face, and a region's
+/// outline includes the ring loops whose other side is not in the region. The ring count is
+/// unchanged. Models without rings never reach that code.
+///
 /// Complexity: O(n) for a face of degree n; region mode O(R log R) for R corners of the
 /// region's faces (local: nothing outside the region and its outline fans is read).
 /// Errors (mesh unchanged): errc::invalid_argument for a zero, NaN or infinite distance, a
 /// zero direction or a zero normal, an empty selection; errc::invalid_handle for a missing
-/// face; errc::unsupported for a face with inner rings; errc::topology for a region that is
-/// not connected, has no outline (a whole closed component), or touches one of its outline
-/// vertices in two separate fans (pinched).
+/// face; errc::topology for a region that is not connected, has no outline (a whole closed
+/// component), or touches one of its outline vertices in two separate fans (pinched).
 template <class M, class T = default_traits<M>, class R>
     requires extrudable_mesh<M, T> && range_of_handles<R, typename T::face_handle>
 result<extrude_result<M, T>> extrude(M& mesh, const R& faces, const extrude_options& options = {}) {
@@ -262,7 +251,7 @@ result<extrude_result<M, T>> extrude(M& mesh, const R& faces, const extrude_opti
     if (options.mode == extrude_mode::individual || fs.size() == 1) {
         std::vector<vec3<double>> moves;
         for (auto f : fs) {
-            const auto n = de::face_area_vector<M, T>(mesh, f);
+            const auto n = de::area_vector_with_rings<M, T>(mesh, f);
             if (!options.direction && !(norm(n) > 0))
                 return fail(errc::invalid_argument, "extrude: " + detail::euler::name<M, T>("face", mesh, f) + " has zero area, so no normal",
                             static_cast<long long>(T::face_index(mesh, f)));
@@ -284,28 +273,23 @@ result<extrude_result<M, T>> extrude(M& mesh, const R& faces, const extrude_opti
             const F f = stack.back();
             stack.pop_back();
             ++count;
-            const auto start = T::face_halfedge(mesh, f);
-            auto h = start;
-            do {
-                const F g = T::face(mesh, T::opposite(mesh, h));
-                if (in_r(g) && !reached.contains(T::face_index(mesh, g))) {
-                    reached.insert(T::face_index(mesh, g));
-                    stack.push_back(g);
+            for (auto start : de::face_loops<M, T>(mesh, f))
+                for (auto h : de::loop_of<M, T>(mesh, start)) {
+                    const F g = T::face(mesh, T::opposite(mesh, h));
+                    if (in_r(g) && !reached.contains(T::face_index(mesh, g))) {
+                        reached.insert(T::face_index(mesh, g));
+                        stack.push_back(g);
+                    }
                 }
-                h = T::next(mesh, h);
-            } while (h != start);
         }
         if (count != fs.size())
             return fail(errc::topology, "extrude: the faces are not connected through edges; use extrude_mode::individual or extrude each part");
     }
     for (auto f : fs) {
-        area += de::face_area_vector<M, T>(mesh, f);
-        const auto start = T::face_halfedge(mesh, f);
-        auto h = start;
-        do {
-            if (!in_r(T::face(mesh, T::opposite(mesh, h)))) outline.push_back(h);
-            h = T::next(mesh, h);
-        } while (h != start);
+        area += de::area_vector_with_rings<M, T>(mesh, f);
+        for (auto start : de::face_loops<M, T>(mesh, f))
+            for (auto h : de::loop_of<M, T>(mesh, start))
+                if (!in_r(T::face(mesh, T::opposite(mesh, h)))) outline.push_back(h);
     }
     if (outline.empty()) return fail(errc::topology, "extrude: the region is a whole closed component; it has no outline to build walls on");
     {
@@ -325,8 +309,9 @@ result<extrude_result<M, T>> extrude(M& mesh, const R& faces, const extrude_opti
     return out;
 }
 
-/// Extrudes one face of degree n (see the range overload): V + n, E + 2n, F + n, built from
-/// n makeEV and n makeEF. Complexity O(n). Errors as for the range overload.
+/// Extrudes one face with n corners over its outer loop and inner rings (see the range
+/// overload): V + n, E + 2n, F + n, built from n makeEV and n makeEF. Complexity O(n). Errors
+/// as for the range overload.
 template <class M, class T = default_traits<M>>
     requires extrudable_mesh<M, T>
 result<extrude_result<M, T>> extrude(M& mesh, typename T::face_handle face, const extrude_options& options = {}) {
