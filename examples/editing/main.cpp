@@ -1,5 +1,5 @@
 // Applies hmira's editing functions to generated solids and writes each result as an OBJ file
-// that any viewer opens: truncated cube, chamfered cube, rounded cube edge, extruded cube face,
+// that any viewer opens: truncated cube, chamfered cube, rounded cube edge, rounded cube, extruded cube face,
 // extruded region of a box, and a pocket. Usage: editing_example [output directory]
 // g++ 12 at -O3 reports a false -Wrestrict inside std::string concatenation inlined from the
 // Euler operators' error messages (GCC bug 105329); not a real overlap.
@@ -66,6 +66,12 @@ int main(int argc, char** argv) {
     {  // One edge rounded with 6 segments.
         auto m = cube();
         ok &= hmira::bevel(m, *T::edges(m).begin(), {.width = 0.5, .segments = 6}).has_value() && save(m, dir, "rounded_edge_cube");
+    }
+    {  // Every edge rounded with 4 segments: a rounded cube with spherical corner patches.
+        auto m = cube();
+        std::vector<T::edge_handle> es;
+        for (auto e : T::edges(m)) es.push_back(e);
+        ok &= hmira::bevel(m, es, {.width = 0.4, .segments = 4}).has_value() && save(m, dir, "rounded_cube");
     }
     {  // One face pulled out.
         auto m = cube();

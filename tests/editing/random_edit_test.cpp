@@ -1,4 +1,4 @@
-// Randomised (issue 5): seeded random sequences of truncate, bevel and extrude on random closed
+// Randomised (issue 5): seeded random sequences of truncate, bevel (random segments) and extrude on random closed
 // meshes (tori and lattice boxes) stay valid, manifold, closed and of the same genus, and
 // every step has the delta its documentation gives.
 #include <gtest/gtest.h>
@@ -70,13 +70,17 @@ TYPED_TEST(random_edit_test, random_edit_sequences_keep_closed_meshes_valid_and_
                     std::vector<typename T::edge_handle> es;
                     for (auto e : T::edges(m)) es.push_back(e);
                     const auto e = es[rng() % es.size()];
-                    auto r = hmira::bevel(m, e, {.width = 0.02});
+                    const int segments = 1 + (int)(rng() % 6);
+                    auto r = hmira::bevel(m, e, {.width = 0.02, .segments = segments});
                     // Near-collinear corners after earlier edits may be refused; never a broken mesh.
                     if (!r) {
                         EXPECT_EQ(r.error().code, hmira::errc::unsupported) << r.error().message;
                         EXPECT_EQ(count(m), before);
                     } else {
-                        EXPECT_EQ(count(m).f, before.f + 1 + (long long)r->vertex_faces.size());
+                        // No face goes; the strip (segments faces, or one when both ends stay)
+                        // and the vertex patches are new.
+                        EXPECT_EQ(count(m).f, before.f + (long long)(r->strip_faces.size() + r->vertex_faces.size()));
+                        EXPECT_TRUE(r->strip_faces.size() == 1 || r->strip_faces.size() == std::size_t(segments));
                     }
                 }
                 // Topology is checked strictly; geometry is not: a bevel clamped at half an edge
