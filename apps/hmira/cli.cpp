@@ -4,8 +4,10 @@
 
 #include <unistd.h>
 
+#include <charconv>
 #include <cstdio>
 #include <iostream>
+#include <limits>
 
 namespace hmira_cli {
 
@@ -54,6 +56,96 @@ int save(const hmira::face_vertex_mesh& mesh, const std::string& path, const hmi
     auto w = hmira::io::write_mesh(mesh, path, options);
     if (!w) return report(exit_code_for(w.error()), w.error().message);
     return ok;
+}
+
+std::optional<hmira::halfedge_mesh> to_halfedge(const hmira::face_vertex_mesh& mesh, const std::string& path, int& code) {
+    // Dense file order in, dense file order out: from_polygons numbers vertices and faces as given.
+    std::vector<hmira::vec3<double>> points;
+    std::vector<std::uint32_t> offsets{0}, corners;
+    std::vector<std::uint32_t> dense(mesh.vertex_index_bound(), 0);
+    points.reserve(mesh.vertex_count());
+    for (auto v : mesh.vertices()) {
+        dense[v.index] = static_cast<std::uint32_t>(points.size());
+        points.push_back(mesh.position(v));
+    }
+    for (auto f : mesh.faces()) {
+        for (auto v : mesh.face_vertices(f)) corners.push_back(dense[v.index]);
+        offsets.push_back(static_cast<std::uint32_t>(corners.size()));
+    }
+    auto built = hmira::halfedge_mesh::from_polygons(points, offsets, corners);
+    if (!built) {
+        std::string why = built.error().message;
+        if (why.rfind("from_polygons: ", 0) == 0) why = why.substr(15);
+        code = report(invalid_input, path + ": cannot edit this mesh: " + why +
+                                         " (editing needs a manifold, consistently oriented mesh; 'hmira validate' lists the problems)");
+        return std::nullopt;
+    }
+    code = ok;
+    return std::move(*built);
+}
+
+hmira::face_vertex_mesh to_face_vertex(const hmira::halfedge_mesh& mesh) {
+    hmira::face_vertex_mesh out;
+    out.reserve(mesh.vertex_count(), mesh.face_count(), 4 * mesh.face_count());
+    std::vector<hmira::vertex_handle> map(mesh.vertex_index_bound());
+    for (auto v : mesh.vertices()) map[v.index] = out.add_vertex(mesh.position(v));
+    std::vector<hmira::vertex_handle> loop;
+    for (auto f : mesh.faces()) {
+        loop.clear();
+        for (auto v : mesh.face_vertices(f)) loop.push_back(map[v.index]);
+        out.add_face(std::span<const hmira::vertex_handle>(loop)).value();  // a valid halfedge face is a valid polygon
+    }
+    return out;
+}
+
+mesh_counts counts_of(const hmira::halfedge_mesh& mesh) { return {mesh.vertex_count(), mesh.edge_count(), mesh.face_count()}; }
+
+std::string describe_change(const mesh_counts& before, const mesh_counts& after) {
+    auto one = [](const char* what, std::size_t a, std::size_t b) { return std::string(what) + " " + std::to_string(a) + " -> " + std::to_string(b); };
+    return one("V", before.vertices, after.vertices) + ", " + one("E", before.edges, after.edges) + ", " + one("F", before.faces, after.faces);
+}
+
+std::optional<std::array<double, 3>> parse_triple(const std::string& text, bool one_for_all) {
+    std::array<double, 3> v{};
+    const char* p = text.data();
+    const char* end = p + text.size();
+    int n = 0;
+    while (n < 3) {
+        while (p < end && *p == ' ') ++p;
+        if (p < end && *p == '+') ++p;
+        auto r = std::from_chars(p, end, v[static_cast<std::size_t>(n)]);
+        if (r.ec != std::errc() || r.ptr == p) return std::nullopt;
+        p = r.ptr;
+        ++n;
+        while (p < end && *p == ' ') ++p;
+        if (p == end) break;
+        if (*p != ',') return std::nullopt;
+        ++p;
+    }
+    if (p != end) return std::nullopt;
+    if (n == 1 && one_for_all) return std::array<double, 3>{v[0], v[0], v[0]};
+    if (n != 3) return std::nullopt;
+    return v;
+}
+
+bool check_indices(const std::vector<std::size_t>& indices, std::size_t count, const std::string& what, const std::string& option,
+                   const std::string& path, int& code) {
+    for (auto i : indices)
+        if (i >= count) {
+            const std::string range = count == 0 ? "none" : "0.." + std::to_string(count - 1);
+            code = report(usage, option + ": " + what + " " + std::to_string(i) + " does not exist: " + path + " has " + count_of(count, what, what == "vertex" ? "vertices" : what + "s") + " (" +
+                                     range + ", in file order)");
+            return false;
+        }
+    code = ok;
+    return true;
+}
+
+std::string count_of(std::size_t n, const std::string& one, const std::string& many) { return std::to_string(n) + " " + (n == 1 ? one : many); }
+
+progress_bar stage_bar(std::string label, const common_options& o, std::uint64_t size, std::uint64_t min_size) {
+    // update(step, steps) with few steps: the bar's own size gate is replaced by the job's.
+    return progress_bar(std::move(label), o, size >= min_size ? 1 : std::numeric_limits<std::uint64_t>::max());
 }
 
 progress_bar::progress_bar(std::string label, const common_options& o, std::uint64_t min_total)

@@ -6,6 +6,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <array>
 #include <functional>
 #include <optional>
 #include <string>
@@ -13,6 +14,7 @@
 
 #include <hmira/io/mesh_io.hpp>
 #include <hmira/meshes/face_vertex_mesh.hpp>
+#include <hmira/meshes/halfedge_mesh.hpp>
 
 namespace hmira_cli {
 
@@ -62,6 +64,38 @@ std::optional<loaded_mesh> load(const std::string& path, const common_options& o
 /// Writes atomically; prints the error and returns the exit code (ok on success).
 int save(const hmira::face_vertex_mesh& mesh, const std::string& path, const hmira::io::write_options& options, const common_options& o);
 
+// ---- editing subcommands (truncate, bevel, extrude) ----------------------------------------
+
+/// Builds the Euler-capable mesh the editing algorithms need from a loaded face-vertex mesh.
+/// Vertex i and face i of the result are vertex i and face i of `mesh` (the file's order), so
+/// indices given on the command line name the file's elements. A mesh the halfedge mesh cannot
+/// hold (non-manifold edge or vertex, inconsistent orientation, degenerate face) prints a
+/// one-line error naming the element and sets `code` to invalid_input.
+std::optional<hmira::halfedge_mesh> to_halfedge(const hmira::face_vertex_mesh& mesh, const std::string& path, int& code);
+
+/// The live vertices and faces of `mesh`, renumbered densely in index order: vertices that were
+/// in the input keep their relative order and come first, new ones follow.
+hmira::face_vertex_mesh to_face_vertex(const hmira::halfedge_mesh& mesh);
+
+/// Vertex, edge and face counts, to report what an edit created.
+struct mesh_counts {
+    std::size_t vertices = 0, edges = 0, faces = 0;
+};
+mesh_counts counts_of(const hmira::halfedge_mesh& mesh);
+/// "V 8 -> 24, E 12 -> 36, F 6 -> 14".
+std::string describe_change(const mesh_counts& before, const mesh_counts& after);
+
+/// Parses "X,Y,Z" (or one number for all three when `one_for_all`); nullopt if malformed.
+std::optional<std::array<double, 3>> parse_triple(const std::string& text, bool one_for_all = false);
+
+/// Checks file-order indices of `what` ("vertex", "face") against the mesh's count; on failure
+/// prints a usage error naming the option, the index and the valid range, and returns false.
+bool check_indices(const std::vector<std::size_t>& indices, std::size_t count, const std::string& what, const std::string& option,
+                   const std::string& path, int& code);
+
+/// "1 vertex", "3 vertices": `n` and the singular or plural noun.
+std::string count_of(std::size_t n, const std::string& one, const std::string& many);
+
 /// A progress bar on stderr, drawn only when stderr is a terminal, not quiet, and the work is
 /// large enough to be worth watching.
 class progress_bar {
@@ -77,5 +111,9 @@ private:
     bool drawn_ = false;
     std::uint64_t min_total_;
 };
+
+/// A bar for work measured in steps (stages of an edit, slices of a grid) rather than bytes:
+/// drawn only when `size` (faces, voxels) is at least `min_size`, so small jobs stay silent.
+progress_bar stage_bar(std::string label, const common_options& o, std::uint64_t size, std::uint64_t min_size = 200000);
 
 }  // namespace hmira_cli

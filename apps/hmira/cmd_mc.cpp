@@ -1,12 +1,16 @@
 // apps/hmira/cmd_mc.cpp
 // `hmira mc`: marching cubes on a named implicit shape (sphere, torus, gyroid) sampled on an
-// n^3 grid, or on a volume file (.inr), writing the iso-surface as a mesh.
+// n^3 grid, or on a volume file (.inr, .inr.gz, or .raw with its grid given on the command
+// line), writing the iso-surface as a mesh.
+#include <cstdint>
 #include <filesystem>
+#include <variant>
 
 #include <hmira/algorithms/conversion/marching_cubes.hpp>
 #include <hmira/grids/implicit_shapes.hpp>
 #include <hmira/grids/sample.hpp>
 #include <hmira/io/volume/inr.hpp>
+#include <hmira/io/volume/raw.hpp>
 
 #include "cli.hpp"
 
@@ -20,7 +24,77 @@ struct mc_args {
     double iso = 0.0;
     std::string inside = "below";
     bool normals = false;
+    // .raw volumes only
+    std::string dims, type = "float32", spacing, origin, endian = "little";
 };
+
+/// A volume of any sample type read_raw supports; marching cubes runs on it as it is.
+using any_grid = std::variant<hmira::dense_grid<float>, hmira::dense_grid<double>, hmira::dense_grid<std::uint8_t>, hmira::dense_grid<std::int8_t>,
+                              hmira::dense_grid<std::uint16_t>, hmira::dense_grid<std::int16_t>, hmira::dense_grid<std::uint32_t>,
+                              hmira::dense_grid<std::int32_t>>;
+
+bool ends_with_lower(const std::string& s, const std::string& suffix) {
+    if (s.size() < suffix.size()) return false;
+    for (std::size_t i = 0; i < suffix.size(); ++i)
+        if (std::tolower(static_cast<unsigned char>(s[s.size() - suffix.size() + i])) != suffix[i]) return false;
+    return true;
+}
+
+/// The grid of a .raw file from --dims/--spacing/--origin; nullopt after printing a usage error.
+std::optional<hmira::grid_geometry> raw_geometry(const mc_args& a, int& code) {
+    if (a.dims.empty()) {
+        code = report(usage, a.source + ": a .raw volume holds no size: give --dims X,Y,Z (and --type, default float32)");
+        return std::nullopt;
+    }
+    hmira::grid_geometry g;
+    const auto d = parse_triple(a.dims);
+    for (std::size_t k = 0; d && k < 3; ++k) {
+        if (!((*d)[k] >= 1 && (*d)[k] <= 1e6 && (*d)[k] == double(std::size_t((*d)[k])))) {
+            code = report(usage, "--dims " + a.dims + ": expected three whole numbers X,Y,Z, each at least 1");
+            return std::nullopt;
+        }
+        g.dims[k] = static_cast<std::size_t>((*d)[k]);
+    }
+    if (!d) {
+        code = report(usage, "--dims " + a.dims + ": expected three whole numbers X,Y,Z, each at least 1");
+        return std::nullopt;
+    }
+    if (!a.spacing.empty()) {
+        const auto s = parse_triple(a.spacing, true);
+        if (!s || !((*s)[0] > 0 && (*s)[1] > 0 && (*s)[2] > 0)) {
+            code = report(usage, "--spacing " + a.spacing + ": expected one positive number, or three as X,Y,Z");
+            return std::nullopt;
+        }
+        g.spacing = {(*s)[0], (*s)[1], (*s)[2]};
+    }
+    if (!a.origin.empty()) {
+        const auto p = parse_triple(a.origin);
+        if (!p) {
+            code = report(usage, "--origin " + a.origin + ": expected three numbers X,Y,Z");
+            return std::nullopt;
+        }
+        g.origin = {(*p)[0], (*p)[1], (*p)[2]};
+    }
+    code = ok;
+    return g;
+}
+
+hmira::result<any_grid> read_raw_volume(const mc_args& a, const hmira::grid_geometry& g) {
+    const hmira::io::raw_options r{.big_endian = a.endian == "big"};
+    auto as = [&]<class T>(T) -> hmira::result<any_grid> {
+        auto grid = hmira::io::read_raw<T>(a.source, g, r);
+        if (!grid) return grid.error();
+        return any_grid(std::move(*grid));
+    };
+    if (a.type == "uint8") return as(std::uint8_t{});
+    if (a.type == "int8") return as(std::int8_t{});
+    if (a.type == "uint16") return as(std::uint16_t{});
+    if (a.type == "int16") return as(std::int16_t{});
+    if (a.type == "uint32") return as(std::uint32_t{});
+    if (a.type == "int32") return as(std::int32_t{});
+    if (a.type == "float64") return as(double{});
+    return as(float{});
+}
 
 hmira::result<hmira::dense_grid<float>> make_grid(const mc_args& a) {
     if (a.source == "sphere") return hmira::sample_function(hmira::cube_geometry(a.resolution, -1.5, 1.5), hmira::sphere_field{});
@@ -29,19 +103,32 @@ hmira::result<hmira::dense_grid<float>> make_grid(const mc_args& a) {
     const std::filesystem::path p(a.source);
     std::error_code ec;
     if (std::filesystem::is_directory(p, ec)) return hmira::fail(hmira::errc::io_error, a.source + ": is a directory, not a volume file");
-    if (p.extension() == ".inr") return hmira::io::read_inr(p);
-    return hmira::fail(hmira::errc::invalid_argument, a.source + ": not a shape name (sphere, torus, gyroid) nor a .inr volume");
+    if (ends_with_lower(a.source, ".inr") || ends_with_lower(a.source, ".inr.gz")) return hmira::io::read_inr(p);
+    return hmira::fail(hmira::errc::invalid_argument, a.source + ": not a shape name (sphere, torus, gyroid) nor a .inr, .inr.gz or .raw volume");
 }
 
 int run_mc(const mc_args& a, const common_options& o) {
-    auto grid = make_grid(a);
+    const bool raw = ends_with_lower(a.source, ".raw");
+    if (!raw && (!a.dims.empty() || !a.spacing.empty() || !a.origin.empty()))
+        return report(usage, "--dims, --spacing and --origin describe .raw volumes only; " + a.source + " is not one");
+    hmira::result<any_grid> grid = hmira::fail(hmira::errc::invalid_argument, "");
+    if (raw) {
+        int code = ok;
+        const auto g = raw_geometry(a, code);
+        if (!g) return code;
+        grid = read_raw_volume(a, *g);
+    } else if (auto g = make_grid(a)) {
+        grid = any_grid(std::move(*g));
+    } else {
+        grid = g.error();
+    }
     if (!grid) return report(exit_code_for(grid.error()), grid.error().message);
     hmira::face_vertex_mesh m;
     const hmira::marching_cubes_options opt{.iso = a.iso,
                                              .inside = a.inside == "above" ? hmira::iso_inside::above : hmira::iso_inside::below,
                                              .normals = a.normals,
                                              .threads = static_cast<unsigned>(o.threads)};
-    auto r = hmira::marching_cubes(m, *grid, opt);
+    auto r = std::visit([&](const auto& g) { return hmira::marching_cubes(m, g, opt); }, *grid);
     if (!r) return report(exit_code_for(r.error()), r.error().message);
     hmira::io::mesh_attributes attributes;
     for (const auto& n : r->normals) attributes.normals.push_back({float(n.x), float(n.y), float(n.z)});
@@ -53,16 +140,26 @@ int run_mc(const mc_args& a, const common_options& o) {
 }
 
 const bool registered = register_command({
-    "mc", "Marching cubes: an implicit shape (sphere, torus, gyroid) or a .inr volume to a mesh",
+    "mc", "Marching cubes: an implicit shape (sphere, torus, gyroid) or a .inr/.raw volume to a mesh",
     "hmira mc torus torus.ply --resolution 128", 70,
     [](CLI::App& sub) {
         auto a = std::make_shared<mc_args>();
-        sub.add_option("source", a->source, "sphere | torus | gyroid | volume.inr")->required();
+        sub.add_option("source", a->source, "sphere | torus | gyroid | volume.inr | volume.inr.gz | volume.raw")->required();
         sub.add_option("output", a->output, "mesh file to write (.obj .off .ply .stl)")->required();
         sub.add_option("-n,--resolution", a->resolution, "samples per axis for a named shape")->capture_default_str()->check(CLI::Range(2, 2048));
         sub.add_option("--iso", a->iso, "iso value")->capture_default_str();
         sub.add_option("--inside", a->inside, "which side of the iso value is inside")->capture_default_str()->check(CLI::IsMember({"below", "above"}));
         sub.add_flag("--normals", a->normals, "write per-vertex normals from the field's gradient");
+        sub.add_option("--dims", a->dims, ".raw: samples along x, y and z (required for .raw; x varies fastest in the file)")->type_name("X,Y,Z");
+        sub.add_option("--type", a->type, ".raw: sample type")
+            ->capture_default_str()
+            ->check(CLI::IsMember({"uint8", "int8", "uint16", "int16", "uint32", "int32", "float32", "float64"}));
+        sub.add_option("--spacing", a->spacing, ".raw: distance between samples, one for all axes or X,Y,Z (default 1)")->type_name("H|X,Y,Z");
+        sub.add_option("--origin", a->origin, ".raw: position of sample (0, 0, 0) (default 0,0,0)")->type_name("X,Y,Z");
+        sub.add_option("--endian", a->endian, ".raw: byte order of multi-byte samples")->capture_default_str()->check(CLI::IsMember({"little", "big"}));
+        sub.footer("\nA .raw volume (x fastest, no header) needs its grid on the command line, e.g.\n"
+                   "  hmira mc ct.raw ct.ply --dims 256,256,128 --type int16 --spacing 0.5,0.5,1 --iso 300 --inside above\n"
+                   "A .raw volume from 'hmira voxelize' comes with <file>.txt, which gives the exact 'hmira mc' command.\n" + sub.get_footer());
         return [a](const common_options& o) { return run_mc(*a, o); };
     }});
 

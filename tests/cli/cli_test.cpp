@@ -3,8 +3,16 @@
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
+#include <array>
+#include <bit>
+#include <cmath>
+#include <cstdint>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
+#include <map>
+#include <numbers>
+#include <set>
 
 #include <hmira/algorithms/topology/mesh_topology.hpp>
 #include <hmira/io/mesh_io.hpp>
@@ -43,7 +51,7 @@ void expect_one_line_error(const run_result& r, const std::string& part) {
     EXPECT_NE(r.err.find(part), std::string::npos) << "'" << part << "' not in: " << r.err;
 }
 
-const std::vector<std::string> subcommands = {"info", "validate", "convert", "generate", "flip", "delaunay", "mc"};
+const std::vector<std::string> subcommands = {"info", "validate", "convert", "generate", "flip", "delaunay", "mc", "truncate", "bevel", "extrude", "voxelize"};
 
 TEST(cli, every_subcommand_has_help_with_an_example_and_the_common_options) {
     scratch_dir dir;
@@ -263,6 +271,507 @@ TEST(cli, real_cgal_demo_meshes_are_described) {
     EXPECT_EQ(hmira(dir, "convert '" + elephant.string() + "' e.stl").code, 0);
     const auto back = hmira(dir, "info --json e.stl");
     EXPECT_NE(back.out.find("\"vertices\": " + std::to_string(t.vertices) + ","), std::string::npos) << back.out;
+}
+
+// ---- truncate, bevel, extrude, voxelize, mc on .raw ---------------------------------------------
+// Expected counts, positions and volumes below come from the cube's geometry, worked out by
+// hand; the output files are read back with the library's reader and checked here.
+
+hmira::face_vertex_mesh read_back(const std::filesystem::path& p) {
+    hmira::face_vertex_mesh m;
+    auto r = hmira::io::read_mesh(m, p);
+    EXPECT_TRUE(r) << p << ": " << (r ? std::string() : r.error().message);
+    return m;
+}
+
+using point = std::array<double, 3>;
+
+point at(const hmira::face_vertex_mesh& m, std::size_t i) {
+    const auto p = m.position(hmira::vertex_handle(i));
+    return {p.x, p.y, p.z};
+}
+
+bool near(const point& a, const point& b, double eps = 1e-12) {
+    return std::abs(a[0] - b[0]) <= eps && std::abs(a[1] - b[1]) <= eps && std::abs(a[2] - b[2]) <= eps;
+}
+
+/// V, E, F counted here from the face lists (an edge is an unordered pair of vertices).
+struct vef {
+    std::size_t v = 0, e = 0, f = 0;
+    bool operator==(const vef&) const = default;
+};
+std::ostream& operator<<(std::ostream& os, const vef& c) { return os << "V " << c.v << ", E " << c.e << ", F " << c.f; }
+
+vef counts(const hmira::face_vertex_mesh& m) {
+    std::set<std::pair<std::size_t, std::size_t>> edges;
+    for (auto f : m.faces()) {
+        const auto fv = m.face_vertices(f);
+        for (std::size_t i = 0; i < fv.size(); ++i) edges.insert(std::minmax<std::size_t>(fv[i].index, fv[(i + 1) % fv.size()].index));
+    }
+    return {m.vertex_count(), edges.size(), m.face_count()};
+}
+
+/// Closed and consistently oriented: every directed edge is used by one face, its reverse by one.
+::testing::AssertionResult closed_and_oriented(const hmira::face_vertex_mesh& m) {
+    std::map<std::pair<std::size_t, std::size_t>, int> directed;
+    for (auto f : m.faces()) {
+        const auto fv = m.face_vertices(f);
+        for (std::size_t i = 0; i < fv.size(); ++i) ++directed[{fv[i].index, fv[(i + 1) % fv.size()].index}];
+    }
+    for (const auto& [ab, n] : directed) {
+        if (n != 1) return ::testing::AssertionFailure() << "edge " << ab.first << "->" << ab.second << " is run by " << n << " faces";
+        if (!directed.contains({ab.second, ab.first})) return ::testing::AssertionFailure() << "edge " << ab.first << "->" << ab.second << " has no twin";
+    }
+    return ::testing::AssertionSuccess();
+}
+
+/// What every edit must leave: a valid, closed, outward-oriented surface of the same genus
+/// (Euler-Poincare V - E + F = 2 - 2g for one component).
+void expect_sound(const hmira::face_vertex_mesh& m, long long genus = 0) {
+    EXPECT_TRUE(hmira_test::is_valid(m));
+    EXPECT_TRUE(closed_and_oriented(m));
+    const auto c = counts(m);
+    EXPECT_EQ(static_cast<long long>(c.v) - static_cast<long long>(c.e) + static_cast<long long>(c.f), 2 - 2 * genus) << "Euler-Poincare";
+    EXPECT_GT(hmira_test::signed_volume(m), 0.0) << "wound outward";
+}
+
+/// `args` must fail with `code` and a one-line error containing `part`, leave an existing
+/// `output` as it was, and create neither it nor a temporary when it does not exist.
+void expect_refused(const scratch_dir& dir, const std::string& args, int code, const std::string& part, const std::string& output) {
+    SCOPED_TRACE(args);
+    hmira_test::write_bytes(dir / output, "keep");
+    const auto files = dir.files();
+    const auto r = hmira(dir, args);
+    EXPECT_EQ(r.code, code) << r.err;
+    expect_one_line_error(r, part);
+    EXPECT_EQ(hmira_test::read_bytes(dir / output), "keep") << "the existing output was touched";
+    EXPECT_EQ(dir.files(), files) << "a file was left behind";
+    std::filesystem::remove(dir / output);
+    EXPECT_EQ(hmira(dir, args).code, code);
+    EXPECT_FALSE(std::filesystem::exists(dir / output));
+}
+
+std::size_t faces_with(const hmira::face_vertex_mesh& m, std::size_t corners) {
+    std::size_t n = 0;
+    for (auto f : m.faces()) n += m.face_vertices(f).size() == corners ? 1 : 0;
+    return n;
+}
+
+TEST(cli, truncate_all_turns_the_cube_into_the_truncated_cube) {
+    scratch_dir dir;
+    ASSERT_EQ(hmira(dir, "generate cube c.obj").code, 0);
+    const auto r = hmira(dir, "truncate c.obj t.obj --all");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.out.find("c.obj: truncated 8 vertices: V 8 -> 24, E 12 -> 36, F 6 -> 14"), std::string::npos) << r.out;
+    const auto t = read_back(dir / "t.obj");
+    EXPECT_EQ(counts(t), (vef{24, 36, 14}));
+    EXPECT_EQ(faces_with(t, 3), 8u);
+    EXPECT_EQ(faces_with(t, 8), 6u);
+    expect_sound(t);
+    // Every cut point lies on a cube edge, a third of the way (2/3) from a corner.
+    for (auto v : t.vertices()) {
+        const auto p = at(t, v.index);
+        int ones = 0, thirds = 0;
+        for (double x : p) ones += std::abs(std::abs(x) - 1) < 1e-12, thirds += std::abs(std::abs(x) - 1.0 / 3) < 1e-12;
+        EXPECT_TRUE(ones == 2 && thirds == 1) << p[0] << " " << p[1] << " " << p[2];
+    }
+    // Eight corner tetrahedra with legs 2/3 are cut off a cube of volume 8.
+    EXPECT_NEAR(hmira_test::signed_volume(t), 8 - 8 * std::pow(2.0 / 3, 3) / 6, 1e-12);
+
+    ASSERT_EQ(hmira(dir, "truncate c.obj half.obj --all --fraction 0.5 -q").code, 0);
+    const auto half = read_back(dir / "half.obj");
+    EXPECT_EQ(counts(half), (vef{12, 24, 14})) << "cuboctahedron";
+    EXPECT_EQ(faces_with(half, 3), 8u);
+    EXPECT_EQ(faces_with(half, 4), 6u);
+    expect_sound(half);
+    EXPECT_NEAR(hmira_test::signed_volume(half), 20.0 / 3, 1e-12);
+
+    ASSERT_EQ(hmira(dir, "truncate c.obj d.obj --all --distance 0.5 -q").code, 0);
+    const auto d = read_back(dir / "d.obj");
+    EXPECT_EQ(counts(d), (vef{24, 36, 14}));
+    expect_sound(d);
+    EXPECT_NEAR(hmira_test::signed_volume(d), 8 - 8 * std::pow(0.5, 3) / 6, 1e-12);
+}
+
+TEST(cli, truncate_keeps_the_file_vertices_first_and_in_their_order) {
+    scratch_dir dir;
+    ASSERT_EQ(hmira(dir, "generate cube c.off").code, 0);
+    const auto c = read_back(dir / "c.off");
+    for (const auto& cut : {std::vector<std::size_t>{5}, std::vector<std::size_t>{0, 6}, std::vector<std::size_t>{7, 2, 3}}) {
+        std::string args = "truncate c.off t.off";
+        for (auto i : cut) args += " --vertex " + std::to_string(i);
+        SCOPED_TRACE(args);
+        const auto r = hmira(dir, args);
+        ASSERT_EQ(r.code, 0) << r.err;
+        const auto t = read_back(dir / "t.off");
+        // Each corner of degree 3 becomes a triangle: V + 2, E + 3, F + 1.
+        EXPECT_EQ(counts(t), (vef{8 + 2 * cut.size(), 12 + 3 * cut.size(), 6 + cut.size()}));
+        expect_sound(t);
+        std::size_t next = 0;
+        for (std::size_t i = 0; i < 8; ++i) {
+            if (std::find(cut.begin(), cut.end(), i) != cut.end()) continue;
+            EXPECT_TRUE(near(at(t, next), at(c, i))) << "file vertex " << i;
+            ++next;
+        }
+        // Then the cut points: a third of the way from each cut corner to its three neighbours.
+        std::vector<point> expected;
+        for (auto i : cut)
+            for (std::size_t j = 0; j < 8; ++j) {
+                const auto a = at(c, i), b = at(c, j);
+                const double d2 = (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]);
+                if (std::abs(d2 - 4) < 1e-12) expected.push_back({a[0] + (b[0] - a[0]) / 3, a[1] + (b[1] - a[1]) / 3, a[2] + (b[2] - a[2]) / 3});
+            }
+        ASSERT_EQ(t.vertex_count() - next, expected.size());
+        for (std::size_t k = next; k < t.vertex_count(); ++k)
+            EXPECT_TRUE(std::any_of(expected.begin(), expected.end(), [&](const point& e) { return near(e, at(t, k), 1e-12); })) << "new vertex " << k;
+        EXPECT_NEAR(hmira_test::signed_volume(t), 8 - double(cut.size()) * std::pow(2.0 / 3, 3) / 6, 1e-12);
+    }
+}
+
+TEST(cli, bevel_one_cube_edge_is_a_chamfer_named_by_its_end_vertices) {
+    scratch_dir dir;
+    ASSERT_EQ(hmira(dir, "generate cube c.obj").code, 0);
+    const auto c = read_back(dir / "c.obj");
+    // Vertices 0 (-1,-1,-1) and 1 (1,-1,-1) of the generated cube share an edge along x.
+    ASSERT_TRUE(near(at(c, 0), {-1, -1, -1}) && near(at(c, 1), {1, -1, -1}));
+    const double w = 0.25;
+    for (const char* edge : {"0,1", "1,0"}) {
+        SCOPED_TRACE(edge);
+        const auto r = hmira(dir, std::string("bevel c.obj b.obj --width 0.25 --edge ") + edge);
+        ASSERT_EQ(r.code, 0) << r.err;
+        EXPECT_NE(r.out.find("V 8 -> 10, E 12 -> 15, F 6 -> 7"), std::string::npos) << r.out;
+        const auto b = read_back(dir / "b.obj");
+        EXPECT_EQ(counts(b), (vef{10, 15, 7}));
+        expect_sound(b);
+        // Both corners go; the other six file vertices come first, in order.
+        for (std::size_t i = 2; i < 8; ++i) EXPECT_TRUE(near(at(b, i - 2), at(c, i))) << "file vertex " << i;
+        // The new edges run at width w from the old one inside the faces y = -1 and z = -1.
+        const std::vector<point> expected{{-1, -1 + w, -1}, {1, -1 + w, -1}, {-1, -1, -1 + w}, {1, -1, -1 + w}};
+        for (std::size_t k = 6; k < 10; ++k)
+            EXPECT_TRUE(std::any_of(expected.begin(), expected.end(), [&](const point& e) { return near(e, at(b, k)); })) << "new vertex " << k;
+        // A prism of cross-section w^2 / 2 and length 2 is cut away.
+        EXPECT_NEAR(hmira_test::signed_volume(b), 8 - w * w, 1e-12);
+    }
+    // Rounded: an arc of 3 segments removes less than the chamfer, more than the true quarter circle.
+    ASSERT_EQ(hmira(dir, "bevel c.obj r.obj --edge 0,1 --width 0.25 --segments 3 -q").code, 0);
+    const auto round = read_back(dir / "r.obj");
+    expect_sound(round);
+    EXPECT_EQ(round.face_count(), 6u + 3u);
+    const double vr = hmira_test::signed_volume(round);
+    EXPECT_GT(vr, 8 - w * w + 1e-9);
+    EXPECT_LT(vr, 8 - 2 * w * w * (1 - std::numbers::pi / 4) - 1e-9);
+}
+
+TEST(cli, bevel_selects_sharp_edges_by_angle_and_bevels_vertices_like_truncate) {
+    scratch_dir dir;
+    ASSERT_EQ(hmira(dir, "generate cube c.obj").code, 0);
+    // All twelve cube edges are at 90 degrees: a strip per edge, a triangle per corner.
+    for (const char* how : {"--angle 80", "--angle 90", "--all"}) {
+        SCOPED_TRACE(how);
+        const auto r = hmira(dir, std::string("bevel c.obj b.obj --width 0.2 ") + how);
+        ASSERT_EQ(r.code, 0) << r.err;
+        EXPECT_NE(r.out.find("bevelled 12 edges"), std::string::npos) << r.out;
+        const auto b = read_back(dir / "b.obj");
+        EXPECT_EQ(counts(b), (vef{24, 48, 26}));
+        EXPECT_EQ(faces_with(b, 3), 8u);
+        expect_sound(b);
+    }
+    expect_refused(dir, "bevel c.obj b.obj --angle 91", 1, "no edge has a dihedral angle of at least 91 degrees", "b.obj");
+    // The icosahedron's dihedral angle between face normals is 180 - 138.19 = 41.81 degrees.
+    ASSERT_EQ(hmira(dir, "generate icosahedron i.off").code, 0);
+    EXPECT_EQ(hmira(dir, "bevel i.off x.off --angle 42 -q").code, 1);
+    ASSERT_EQ(hmira(dir, "bevel i.off x.off --angle 41 --width 0.05 -q").code, 0);
+    const auto x = read_back(dir / "x.off");
+    expect_sound(x);
+    EXPECT_EQ(x.face_count(), 20u + 30u + 12u) << "a strip per edge, a pentagon per corner";
+    // Vertex-only mode is truncation at the width's distance along each edge.
+    ASSERT_EQ(hmira(dir, "bevel c.obj bv.obj --vertex 0 --vertex 6 --width 0.5 -q").code, 0);
+    ASSERT_EQ(hmira(dir, "truncate c.obj tv.obj --vertex 0,6 --distance 0.5 -q").code, 0);
+    EXPECT_EQ(hmira_test::read_bytes(dir / "bv.obj"), hmira_test::read_bytes(dir / "tv.obj"));
+    ASSERT_EQ(hmira(dir, "bevel c.obj ba.obj --vertices-all --width 0.5 -q").code, 0);
+    const auto ba = read_back(dir / "ba.obj");
+    EXPECT_EQ(counts(ba), (vef{24, 36, 14}));
+    expect_sound(ba);
+    EXPECT_NEAR(hmira_test::signed_volume(ba), 8 - 8 * std::pow(0.5, 3) / 6, 1e-12);
+}
+
+/// Newell's normal of face f, computed here.
+point face_normal(const hmira::face_vertex_mesh& m, std::size_t f) {
+    point n{0, 0, 0};
+    const auto fv = m.face_vertices(hmira::face_handle(f));
+    for (std::size_t i = 0; i < fv.size(); ++i) {
+        const auto a = at(m, fv[i].index), b = at(m, fv[(i + 1) % fv.size()].index);
+        n[0] += (a[1] - b[1]) * (a[2] + b[2]);
+        n[1] += (a[2] - b[2]) * (a[0] + b[0]);
+        n[2] += (a[0] - b[0]) * (a[1] + b[1]);
+    }
+    const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    return {n[0] / len, n[1] / len, n[2] / len};
+}
+
+TEST(cli, extrude_one_face_of_the_unit_cube_doubles_its_volume) {
+    scratch_dir dir;
+    ASSERT_EQ(hmira(dir, "generate cube u.obj --scale 0.5").code, 0);
+    const auto u = read_back(dir / "u.obj");
+    ASSERT_NEAR(hmira_test::signed_volume(u), 1.0, 1e-12);
+    for (std::size_t f = 0; f < 6; ++f) {
+        SCOPED_TRACE("face " + std::to_string(f));
+        const auto r = hmira(dir, "extrude u.obj e.obj --distance 1 --face " + std::to_string(f));
+        ASSERT_EQ(r.code, 0) << r.err;
+        EXPECT_NE(r.out.find("V 8 -> 12, E 12 -> 20, F 6 -> 10"), std::string::npos) << r.out;
+        const auto e = read_back(dir / "e.obj");
+        EXPECT_EQ(counts(e), (vef{12, 20, 10}));
+        expect_sound(e);
+        EXPECT_NEAR(hmira_test::signed_volume(e), 2.0, 1e-12);
+        for (std::size_t i = 0; i < 8; ++i) EXPECT_TRUE(near(at(e, i), at(u, i))) << "file vertex " << i;
+        // The new vertices are the face's corners moved by its outward unit normal.
+        const auto n = face_normal(u, f);
+        for (std::size_t k = 8; k < 12; ++k) {
+            bool found = false;
+            for (auto v : u.face_vertices(hmira::face_handle(f))) {
+                const auto p = at(u, v.index);
+                found |= near(at(e, k), {p[0] + n[0], p[1] + n[1], p[2] + n[2]}, 1e-12);
+            }
+            EXPECT_TRUE(found) << "new vertex " << k;
+        }
+    }
+    // A given direction is normalised; a negative distance makes a pocket.
+    ASSERT_EQ(hmira(dir, "extrude u.obj d.obj --face 0 --distance 0.5 --direction 0,-7,0 -q").code, 0);
+    EXPECT_NEAR(hmira_test::signed_volume(read_back(dir / "d.obj")), 1.5, 1e-12);
+    ASSERT_EQ(hmira(dir, "extrude u.obj p.obj --face 0 --distance -0.25 -q").code, 0);
+    const auto p = read_back(dir / "p.obj");
+    expect_sound(p);
+    EXPECT_NEAR(hmira_test::signed_volume(p), 0.75, 1e-12);
+    // Two neighbouring faces as one region: walls on the 6 outline edges only.
+    ASSERT_EQ(hmira(dir, "extrude u.obj r.obj --face 0,1 -q").code, 0);
+    const auto reg = read_back(dir / "r.obj");
+    EXPECT_EQ(counts(reg), (vef{14, 24, 12}));
+    expect_sound(reg);
+    // Every face on its own: six prisms of volume 1 each on the unit cube.
+    ASSERT_EQ(hmira(dir, "extrude u.obj all.obj --all --mode individual -q").code, 0);
+    const auto all = read_back(dir / "all.obj");
+    EXPECT_EQ(counts(all), (vef{32, 60, 30}));
+    EXPECT_TRUE(hmira_test::is_valid(all));
+    EXPECT_NEAR(hmira_test::signed_volume(all), 7.0, 1e-12);
+    expect_refused(dir, "extrude u.obj x.obj --all", 1, "no outline", "x.obj");
+}
+
+/// Decodes a .binvox file here (header, then (value, count) runs): its dimension and voxels.
+std::pair<std::size_t, std::vector<std::uint8_t>> read_binvox(const std::filesystem::path& p) {
+    const auto bytes = hmira_test::read_bytes(p);
+    const auto data = bytes.find("\ndata\n");
+    EXPECT_NE(data, std::string::npos);
+    const auto dim = bytes.find("dim ");
+    const std::size_t d = std::stoul(bytes.substr(dim + 4));
+    std::vector<std::uint8_t> voxels;
+    for (std::size_t i = data + 6; i + 1 < bytes.size(); i += 2) voxels.insert(voxels.end(), static_cast<unsigned char>(bytes[i + 1]), static_cast<std::uint8_t>(bytes[i]));
+    EXPECT_EQ(voxels.size(), d * d * d);
+    return {d, voxels};
+}
+
+TEST(cli, voxelize_a_cube_sets_the_voxels_its_geometry_predicts) {
+    scratch_dir dir;
+    ASSERT_EQ(hmira(dir, "generate cube c.obj").code, 0);
+    // The cube [-1, 1]^3 at N = 16 voxels of 1/8: every voxel boundary is exact in binary, so
+    // "the box touches the surface" is decided without rounding.
+    const std::size_t n = 16;
+    ASSERT_EQ(hmira(dir, "voxelize c.obj s.raw -n 16 --padding 0 --surface -q").code, 0);
+    const auto raw = hmira_test::read_bytes(dir / "s.raw");
+    ASSERT_EQ(raw.size(), n * n * n);
+    std::size_t set = 0;
+    for (std::size_t k = 0; k < n; ++k)
+        for (std::size_t j = 0; j < n; ++j)
+            for (std::size_t i = 0; i < n; ++i) {
+                const bool shell = i == 0 || j == 0 || k == 0 || i == n - 1 || j == n - 1 || k == n - 1;
+                const char v = raw[i + n * (j + n * k)];
+                EXPECT_EQ(v, shell ? 1 : 0) << i << " " << j << " " << k;
+                set += v == 1;
+            }
+    EXPECT_EQ(set, n * n * n - (n - 2) * (n - 2) * (n - 2));
+    const auto sidecar = hmira_test::read_bytes(dir / "s.raw.txt");
+    for (const char* line : {"dims: 16,16,16\n", "type: uint8\n", "spacing: 0.125,0.125,0.125\n", "origin: -0.9375,-0.9375,-0.9375"})
+        EXPECT_NE(sidecar.find(line), std::string::npos) << line << " not in:\n" << sidecar;
+
+    // Solid, default padding 2: the cube's 16^3 voxels plus the first padding layer, whose
+    // closed boxes touch the cube's faces; the outer layer stays empty.
+    const auto r = hmira(dir, "voxelize c.obj c.binvox --resolution 16");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.out.find("20 x 20 x 20 voxels"), std::string::npos) << r.out;
+    const auto [d, voxels] = read_binvox(dir / "c.binvox");
+    EXPECT_EQ(d, n + 4);
+    EXPECT_EQ(static_cast<std::size_t>(std::count(voxels.begin(), voxels.end(), 1)), (n + 2) * (n + 2) * (n + 2));
+    EXPECT_NE(hmira_test::read_bytes(dir / "c.binvox").find("translate -1.25 -1.25 -1.25\nscale 2.5\n"), std::string::npos);
+
+    ASSERT_EQ(hmira(dir, "voxelize c.obj p0.binvox -n 16 --padding 0 --threads 1 -q").code, 0);
+    const auto [d0, v0] = read_binvox(dir / "p0.binvox");
+    EXPECT_EQ(d0, n);
+    EXPECT_EQ(static_cast<std::size_t>(std::count(v0.begin(), v0.end(), 1)), n * n * n);
+
+    // The sidecar's mc command gives back a closed surface around the voxels.
+    ASSERT_EQ(hmira(dir, "generate icosahedron i.off").code, 0);
+    ASSERT_EQ(hmira(dir, "voxelize i.off i.raw -n 24 -q").code, 0);
+    const auto text = hmira_test::read_bytes(dir / "i.raw.txt");
+    const auto mc = text.find("mc: hmira ");
+    ASSERT_NE(mc, std::string::npos) << text;
+    auto command = text.substr(mc + 10, text.find('\n', mc) - mc - 10);
+    const auto back = hmira(dir, command + " -q");
+    ASSERT_EQ(back.code, 0) << command << ": " << back.err;
+    const auto surface = read_back(dir / "surface.obj");
+    expect_sound(surface);
+
+    expect_refused(dir, "voxelize c.obj c.vox", 2, "unknown voxel format '.vox'", "c.vox");
+    expect_refused(dir, "voxelize c.obj c.raw -n 0", 2, "resolution", "c.raw");
+    expect_refused(dir, "voxelize missing.obj c.raw", 3, "missing.obj", "c.raw");
+}
+
+/// Writes the samples of f(x, y, z) on a grid as raw bytes of type T, little or big endian.
+template <class T, class F>
+void write_raw_volume(const std::filesystem::path& p, std::size_t n, double origin, double h, bool big_endian, F f) {
+    std::string bytes;
+    for (std::size_t k = 0; k < n; ++k)
+        for (std::size_t j = 0; j < n; ++j)
+            for (std::size_t i = 0; i < n; ++i) {
+                const T v = f(origin + h * double(i), origin + h * double(j), origin + h * double(k));
+                char b[sizeof(T)];
+                std::memcpy(b, &v, sizeof(T));
+                if (big_endian != (std::endian::native == std::endian::big)) std::reverse(b, b + sizeof(T));
+                bytes.append(b, sizeof(T));
+            }
+    hmira_test::write_bytes(p, bytes);
+}
+
+TEST(cli, mc_reads_raw_volumes_of_every_sample_type_into_a_closed_sphere) {
+    scratch_dir dir;
+    // A sphere of radius 0.8 sampled on 24^3 points, spacing 0.1, from -1.15.
+    const double r0 = 0.8;
+    auto dist = [&](double x, double y, double z) { return std::sqrt(x * x + y * y + z * z) - r0; };
+    write_raw_volume<float>(dir / "f.raw", 24, -1.15, 0.1, false, [&](double x, double y, double z) { return float(dist(x, y, z)); });
+    write_raw_volume<std::int16_t>(dir / "s.raw", 24, -1.15, 0.1, true,
+                                   [&](double x, double y, double z) { return std::int16_t(std::lround(1000 * dist(x, y, z))); });
+    write_raw_volume<std::uint8_t>(dir / "u.raw", 24, -1.15, 0.1, false, [&](double x, double y, double z) { return std::uint8_t(dist(x, y, z) < 0 ? 200 : 0); });
+    write_raw_volume<double>(dir / "d.raw", 24, -1.15, 0.1, true, [&](double x, double y, double z) { return dist(x, y, z); });
+    const std::string grid = " --dims 24,24,24 --origin -1.15,-1.15,-1.15";
+    for (const std::string& run : {"mc f.raw out.off" + grid + " --spacing 0.1", "mc f.raw out.off" + grid + " --type float32 --spacing 0.1,0.1,0.1",
+                                  "mc s.raw out.off" + grid + " --type int16 --endian big --spacing 0.1",
+                                  "mc d.raw out.off" + grid + " --type float64 --endian big --spacing 0.1"}) {
+        SCOPED_TRACE(run);
+        const auto r = hmira(dir, run);
+        ASSERT_EQ(r.code, 0) << r.err;
+        const auto m = read_back(dir / "out.off");
+        expect_sound(m);
+        EXPECT_NEAR(hmira_test::signed_volume(m), 4.0 / 3 * std::numbers::pi * r0 * r0 * r0, 0.03);
+        for (auto v : m.vertices()) {
+            const auto p = at(m, v.index);
+            EXPECT_NEAR(dist(p[0], p[1], p[2]), 0.0, 0.01);
+        }
+    }
+    // Occupancy bytes: inside is above the iso value.
+    const auto u = hmira(dir, "mc u.raw occ.obj" + grid + " --type uint8 --spacing 0.1 --iso 100 --inside above");
+    ASSERT_EQ(u.code, 0) << u.err;
+    expect_sound(read_back(dir / "occ.obj"));
+
+    expect_refused(dir, "mc f.raw x.off --type float32", 2, "--dims", "x.off");
+    expect_refused(dir, "mc f.raw x.off --dims 24,24", 2, "--dims 24,24", "x.off");
+    expect_refused(dir, "mc f.raw x.off --dims 23,24,24", 1, "f.raw: holds 55296 bytes", "x.off");
+    expect_refused(dir, "mc f.raw x.off --dims 24,24,24 --type complex64", 2, "--type", "x.off");
+    expect_refused(dir, "mc sphere x.off --dims 24,24,24", 2, ".raw volumes only", "x.off");
+    expect_refused(dir, "mc missing.raw x.off --dims 24,24,24", 3, "missing.raw", "x.off");
+}
+
+TEST(cli, editing_refuses_bad_selections_unknown_options_and_non_manifold_input) {
+    scratch_dir dir;
+    ASSERT_EQ(hmira(dir, "generate cube c.obj").code, 0);
+    // Out-of-range indices and edges that do not exist: usage errors naming the index.
+    expect_refused(dir, "truncate c.obj t.obj --vertex 8", 2, "--vertex: vertex 8 does not exist: c.obj has 8 vertices (0..7", "t.obj");
+    expect_refused(dir, "truncate c.obj t.obj --vertex -1", 2, "--vertex", "t.obj");
+    expect_refused(dir, "bevel c.obj t.obj --edge 0,8", 2, "--edge 0,8: vertex 8 does not exist", "t.obj");
+    expect_refused(dir, "bevel c.obj t.obj --edge 0,6", 2, "--edge 0,6: vertices 0 and 6 of c.obj are not joined by an edge", "t.obj");
+    expect_refused(dir, "bevel c.obj t.obj --edge 0-1", 2, "--edge 0-1: expected two vertex indices", "t.obj");
+    expect_refused(dir, "bevel c.obj t.obj --vertex 9", 2, "vertex 9 does not exist", "t.obj");
+    expect_refused(dir, "extrude c.obj t.obj --face 6", 2, "--face: face 6 does not exist: c.obj has 6 faces (0..5", "t.obj");
+    // Unknown options, missing or conflicting selections, values out of range.
+    expect_refused(dir, "truncate c.obj t.obj --all --bogus", 2, "--bogus", "t.obj");
+    expect_refused(dir, "bevel c.obj t.obj --edge 0,1 --frobnicate 3", 2, "--frobnicate", "t.obj");
+    expect_refused(dir, "truncate c.obj t.obj", 2, "--vertex N", "t.obj");
+    expect_refused(dir, "bevel c.obj t.obj", 2, "--edge A,B", "t.obj");
+    expect_refused(dir, "extrude c.obj t.obj", 2, "--face N", "t.obj");
+    expect_refused(dir, "bevel c.obj t.obj --edge 0,1 --all", 2, "excludes", "t.obj");
+    expect_refused(dir, "truncate c.obj t.obj --all --fraction 1", 2, "fraction must lie in (0, 1)", "t.obj");
+    expect_refused(dir, "bevel c.obj t.obj --all --width 0", 2, "--width", "t.obj");
+    expect_refused(dir, "extrude c.obj t.obj --face 0 --direction 1,2", 2, "--direction 1,2", "t.obj");
+    expect_refused(dir, "extrude c.obj t.obj --face 0 --distance 0", 2, "distance must be finite and non-zero", "t.obj");
+    expect_refused(dir, "extrude c.obj t.obj --face 0 --mode sideways", 2, "--mode", "t.obj");
+    // Operations the mesh does not allow: invalid input, the library's reason.
+    hmira_test::write_bytes(dir / "square.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 3\n");
+    expect_refused(dir, "bevel square.off t.off --edge 0,1", 1, "square.off: bevel: edge 0,1 is on the boundary", "t.off");
+    // Three triangles on one edge: the halfedge mesh cannot hold it.
+    hmira_test::write_bytes(dir / "fin.off", "OFF\n5 3 0\n0 0 0\n1 0 0\n0 1 0\n0 -1 0\n0 0 1\n3 0 1 2\n3 1 0 3\n3 0 1 4\n");
+    for (const std::string cmd : {"truncate fin.off t.off --all", "truncate fin.off t.off --vertex 2", "bevel fin.off t.off --edge 0,2",
+                                  "bevel fin.off t.off --vertex 2", "extrude fin.off t.off --face 0"})
+        expect_refused(dir, cmd, 1, "fin.off: cannot edit this mesh: edge 0->1 has more than two faces", "t.off");
+    // Missing input.
+    expect_refused(dir, "truncate nothere.obj t.obj --all", 3, "nothere.obj", "t.obj");
+}
+
+TEST(cli, editing_and_voxelizing_real_cgal_demo_meshes) {
+    const char* data = std::getenv("HMIRA_TEST_DATA");
+    const auto folder = data ? std::filesystem::absolute(std::filesystem::path(data) / "meshes") : std::filesystem::path();
+    if (!data || !std::filesystem::exists(folder / "elephant.off") || !std::filesystem::exists(folder / "fandisk.off"))
+        GTEST_SKIP() << "run scripts/test-data.sh first";
+    const std::string elephant = "'" + (folder / "elephant.off").string() + "'";
+    scratch_dir dir;
+    const auto in = read_back(folder / "elephant.off");
+    const auto before = counts(in);
+    const long long genus = (2 - (static_cast<long long>(before.v) - static_cast<long long>(before.e) + static_cast<long long>(before.f))) / 2;
+    ASSERT_EQ(genus, 3);
+    // Truncate vertex 0, of degree d (counted here): V + d - 1, E + d, F + 1.
+    std::set<std::size_t> neighbours;
+    for (auto f : in.faces()) {
+        const auto fv = in.face_vertices(f);
+        for (std::size_t i = 0; i < fv.size(); ++i)
+            if (fv[i].index == 0) neighbours.insert({fv[(i + 1) % fv.size()].index, fv[(i + fv.size() - 1) % fv.size()].index});
+    }
+    const std::size_t d = neighbours.size();
+    ASSERT_GE(d, 3u);
+    const auto t = hmira(dir, "truncate " + elephant + " t.off --vertex 0");
+    ASSERT_EQ(t.code, 0) << t.err;
+    const auto tm = read_back(dir / "t.off");
+    EXPECT_EQ(counts(tm), (vef{before.v + d - 1, before.e + d, before.f + 1}));
+    expect_sound(tm, genus);
+    for (std::size_t i = 1; i < before.v; ++i)
+        if (!near(at(tm, i - 1), at(in, i))) {
+            ADD_FAILURE() << "file vertex " << i << " moved or was renumbered";
+            break;
+        }
+    // Extrude face 0 (a triangle) by 0.01 along its normal: the volume grows by area x 0.01.
+    const auto e = hmira(dir, "extrude " + elephant + " e.ply --face 0 --distance 0.01");
+    ASSERT_EQ(e.code, 0) << e.err;
+    const auto em = read_back(dir / "e.ply");
+    EXPECT_EQ(counts(em), (vef{before.v + 3, before.e + 6, before.f + 3}));
+    expect_sound(em, genus);
+    const auto fv = in.face_vertices(hmira::face_handle(std::size_t{0}));
+    ASSERT_EQ(fv.size(), 3u);
+    const auto a = at(in, fv[0].index), b = at(in, fv[1].index), c = at(in, fv[2].index);
+    const point ab{b[0] - a[0], b[1] - a[1], b[2] - a[2]}, ac{c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+    const double area = 0.5 * std::sqrt(std::pow(ab[1] * ac[2] - ab[2] * ac[1], 2) + std::pow(ab[2] * ac[0] - ab[0] * ac[2], 2) + std::pow(ab[0] * ac[1] - ab[1] * ac[0], 2));
+    EXPECT_NEAR(hmira_test::signed_volume(em) - hmira_test::signed_volume(in), area * 0.01, 1e-12);
+    // Bevel fandisk's sharp edges: still one closed, valid sphere.
+    const auto bv = hmira(dir, "bevel '" + (folder / "fandisk.off").string() + "' f.obj --angle 60 --width 0.002");
+    ASSERT_EQ(bv.code, 0) << bv.err;
+    const auto fm = read_back(dir / "f.obj");
+    expect_sound(fm, 0);
+    EXPECT_GT(fm.face_count(), 12946u);
+    // Voxelize: the solid holds the surface voxels and more.
+    ASSERT_EQ(hmira(dir, "voxelize " + elephant + " s.binvox -n 64 -q --surface").code, 0);
+    ASSERT_EQ(hmira(dir, "voxelize " + elephant + " v.binvox -n 64 -q").code, 0);
+    const auto [ds, vs] = read_binvox(dir / "s.binvox");
+    const auto [dv, vv] = read_binvox(dir / "v.binvox");
+    ASSERT_EQ(ds, dv);
+    std::size_t surface = 0, solid = 0, lost = 0;
+    for (std::size_t i = 0; i < vs.size(); ++i) surface += vs[i], solid += vv[i], lost += vs[i] && !vv[i];
+    EXPECT_GT(surface, 1000u);
+    EXPECT_GT(solid, surface);
+    EXPECT_EQ(lost, 0u);
 }
 
 }  // namespace

@@ -1,0 +1,198 @@
+// apps/hmira/cmd_bevel.cpp
+// `hmira bevel`: replaces chosen edges (named by their end vertices, all of them, or every edge
+// sharper than an angle) by strips of faces, or, in vertex-only mode, cuts chosen corners.
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+#include <hmira/algorithms/editing/bevel.hpp>
+
+#include "cli.hpp"
+
+namespace {
+
+using namespace hmira_cli;
+
+struct bevel_args {
+    std::string input, output;
+    std::vector<std::string> edges;  ///< "A,B" each
+    bool all = false;
+    double angle = -1;  ///< < 0: not given
+    double width = 0.1;
+    int segments = 1;
+    bool no_clamp = false;
+    std::vector<std::size_t> vertices;
+    bool vertices_all = false;
+};
+
+/// "A,B" -> {A, B}.
+std::optional<std::array<std::size_t, 2>> parse_pair(const std::string& text) {
+    std::array<std::size_t, 2> v{};
+    const char* p = text.data();
+    const char* end = p + text.size();
+    for (std::size_t n = 0; n < 2; ++n) {
+        auto r = std::from_chars(p, end, v[n]);
+        if (r.ec != std::errc() || r.ptr == p) return std::nullopt;
+        p = r.ptr;
+        if (n == 0) {
+            if (p == end || *p != ',') return std::nullopt;
+            ++p;
+        }
+    }
+    if (p != end) return std::nullopt;
+    return v;
+}
+
+/// Newell's normal of f: the area vector, exact for planar polygons, robust for the rest.
+hmira::vec3<double> face_normal(const hmira::halfedge_mesh& m, hmira::face_handle f) {
+    hmira::vec3<double> n{0, 0, 0};
+    std::vector<hmira::vec3<double>> p;
+    for (auto v : m.face_vertices(f)) p.push_back(m.position(v));
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        const auto& a = p[i];
+        const auto& b = p[(i + 1) % p.size()];
+        n.x += (a.y - b.y) * (a.z + b.z);
+        n.y += (a.z - b.z) * (a.x + b.x);
+        n.z += (a.x - b.x) * (a.y + b.y);
+    }
+    return n;
+}
+
+/// The edges to bevel, from the command line; prints the error and sets `code` on failure.
+std::optional<std::vector<hmira::edge_handle>> select_edges(const bevel_args& a, const hmira::halfedge_mesh& m, int& code) {
+    std::vector<hmira::edge_handle> out;
+    if (a.all || a.angle >= 0) {
+        // Only edges between two faces can be bevelled: boundary edges are skipped.
+        const double cos_limit = std::cos(a.angle * std::numbers::pi / 180.0);
+        for (auto e : m.edges()) {
+            if (m.is_boundary(e)) continue;
+            if (a.angle >= 0) {
+                const auto n0 = face_normal(m, m.face(m.edge_halfedge(e, 0)));
+                const auto n1 = face_normal(m, m.face(m.edge_halfedge(e, 1)));
+                const double len = std::sqrt(dot(n0, n0) * dot(n1, n1));
+                // The angle between the normals is at least `angle` when its cosine is at most cos(angle).
+                if (!(len > 0) || dot(n0, n1) / len > cos_limit + 1e-12) continue;
+            }
+            out.push_back(e);
+        }
+        if (out.empty()) {
+            char degrees[32];
+            std::snprintf(degrees, sizeof degrees, "%g", a.angle);
+            code = report(invalid_input, a.input + ": nothing to bevel: " +
+                                             (a.all ? std::string("every edge is on the boundary")
+                                                    : "no edge has a dihedral angle of at least " + std::string(degrees) + " degrees"));
+            return std::nullopt;
+        }
+        code = ok;
+        return out;
+    }
+    for (const auto& text : a.edges) {
+        const auto ends = parse_pair(text);
+        if (!ends) {
+            code = report(usage, "--edge " + text + ": expected two vertex indices A,B (0-based, in file order)");
+            return std::nullopt;
+        }
+        if (!check_indices({(*ends)[0], (*ends)[1]}, m.vertex_count(), "vertex", "--edge " + text, a.input, code)) return std::nullopt;
+        const auto h = m.find_halfedge(hmira::vertex_handle((*ends)[0]), hmira::vertex_handle((*ends)[1]));
+        if (!h) {
+            code = report(usage, "--edge " + text + ": vertices " + std::to_string((*ends)[0]) + " and " + std::to_string((*ends)[1]) + " of " + a.input +
+                                     " are not joined by an edge");
+            return std::nullopt;
+        }
+        out.push_back(m.edge(h));
+    }
+    code = ok;
+    return out;
+}
+
+/// The library names edges by the halfedge mesh's numbering, which the user never sees: say
+/// which vertices the edge joins.
+std::string with_edge_ends(const hmira::error& e, const hmira::halfedge_mesh& m) {
+    const std::string prefix = "bevel: edge " + std::to_string(e.element) + " ";
+    if (e.element < 0 || static_cast<std::size_t>(e.element) >= m.edge_index_bound() || e.message.rfind(prefix, 0) != 0) return e.message;
+    const auto ends = m.edge_vertices(hmira::edge_handle(static_cast<std::size_t>(e.element)));
+    return "bevel: edge " + std::to_string(ends[0].index) + "," + std::to_string(ends[1].index) + " " + e.message.substr(prefix.size());
+}
+
+int run_bevel(const bevel_args& a, const common_options& o) {
+    const bool vertex_mode = !a.vertices.empty() || a.vertices_all;
+    const bool edge_mode = !a.edges.empty() || a.all || a.angle >= 0;
+    if (!vertex_mode && !edge_mode)
+        return report(usage, "bevel: choose edges with --edge A,B, --all or --angle DEG, or vertices with --vertex N or --vertices-all");
+    if (vertex_mode && a.segments != 1) return report(usage, "bevel: vertex-only mode (--vertex, --vertices-all) makes flat cuts only; drop --segments");
+    int code = ok;
+    auto loaded = load(a.input, o, code);
+    if (!loaded) return code;
+    if (!check_indices(a.vertices, loaded->mesh.vertex_count(), "vertex", "--vertex", a.input, code)) return code;
+    mesh_counts before, after;
+    hmira::face_vertex_mesh edited;
+    std::string what;
+    {
+        auto bar = stage_bar("bevelling " + a.input, o, loaded->mesh.face_count());
+        bar.update(0, 3);
+        auto mesh = to_halfedge(loaded->mesh, a.input, code);
+        if (!mesh) return code;
+        before = counts_of(*mesh);
+        bar.update(1, 3);
+        const hmira::bevel_options options{.width = a.width, .segments = a.segments, .clamp_overlap = !a.no_clamp};
+        if (vertex_mode) {
+            std::vector<hmira::vertex_handle> chosen;
+            if (a.vertices_all) {
+                for (auto v : mesh->vertices()) chosen.push_back(v);
+            } else {
+                for (auto i : a.vertices) chosen.emplace_back(i);
+            }
+            auto r = hmira::bevel_vertices(*mesh, chosen, options);
+            if (!r) return report(exit_code_for(r.error()), a.input + ": " + r.error().message);
+            what = "bevelled " + count_of(r->vertex_faces.size(), "vertex", "vertices");
+        } else {
+            auto chosen = select_edges(a, *mesh, code);
+            if (!chosen) return code;
+            auto r = hmira::bevel(*mesh, *chosen, options);
+            if (!r) return report(exit_code_for(r.error()), a.input + ": " + with_edge_ends(r.error(), *mesh));
+            char width[32];
+            std::snprintf(width, sizeof width, "%.6g", r->width);
+            what = "bevelled " + count_of(chosen->size(), "edge", "edges") + " at width " + width;
+        }
+        after = counts_of(*mesh);
+        bar.update(2, 3);
+        edited = to_face_vertex(*mesh);
+    }
+    if (int c = save(edited, a.output, {}, o); c != ok) return c;
+    say(o, a.input + ": " + what + ": " + describe_change(before, after) + " (" + a.output + ")");
+    return ok;
+}
+
+const bool registered = register_command({
+    "bevel", "Bevel chosen edges (by their end vertices, all, or those sharper than an angle) or vertices",
+    "hmira bevel part.obj bevelled.obj --angle 60 --width 0.05 --segments 3", 90,
+    [](CLI::App& sub) {
+        auto a = std::make_shared<bevel_args>();
+        sub.add_option("input", a->input, "mesh file to read (manifold, consistently oriented)")->required();
+        sub.add_option("output", a->output, "mesh file to write: the input's surviving vertices first, in file order, then the new ones")->required();
+        auto* edge = sub.add_option("--edge", a->edges, "bevel the edge between vertices A and B (0-based, in file order; repeatable)")->type_name("A,B");
+        auto* all = sub.add_flag("--all", a->all, "bevel every edge between two faces");
+        auto* angle = sub.add_option("--angle", a->angle, "bevel every edge whose faces' normals differ by at least DEG degrees (sharp edges)")
+                          ->type_name("DEG")
+                          ->check(CLI::Range(0.0, 180.0));
+        sub.add_option("--width", a->width, "distance from the old edge to the new ones, inside each face next to it")
+            ->capture_default_str()
+            ->check(CLI::PositiveNumber);
+        sub.add_option("--segments", a->segments, "faces across each strip: 1 is a flat chamfer, more follow a round arc")
+            ->capture_default_str()
+            ->check(CLI::Range(1, 64));
+        sub.add_flag("--no-clamp", a->no_clamp, "use the width as given even where new vertices would pass each other");
+        auto* vertex = sub.add_option("--vertex", a->vertices, "vertex-only mode: cut the corner at vertex N, at --width along each edge (repeatable)")
+                           ->delimiter(',')
+                           ->check(CLI::NonNegativeNumber);
+        auto* vertices_all = sub.add_flag("--vertices-all", a->vertices_all, "vertex-only mode on every vertex");
+        // Exactly one way to choose what is bevelled.
+        const std::vector<CLI::Option*> ways{edge, all, angle, vertex, vertices_all};
+        for (auto* x : ways)
+            for (auto* y : ways)
+                if (x != y) x->excludes(y);
+        return [a](const common_options& o) { return run_bevel(*a, o); };
+    }});
+
+}  // namespace

@@ -1,0 +1,90 @@
+// apps/hmira/cmd_extrude.cpp
+// `hmira extrude`: pulls chosen faces (or all) out along their normal or a given direction,
+// joining them to where they were by walls of quads.
+#include <cstdio>
+
+#include <hmira/algorithms/editing/extrude.hpp>
+
+#include "cli.hpp"
+
+namespace {
+
+using namespace hmira_cli;
+
+struct extrude_args {
+    std::string input, output;
+    std::vector<std::size_t> faces;
+    bool all = false;
+    double distance = 1.0;
+    std::string direction;  ///< "X,Y,Z", or empty: the normal
+    std::string mode = "region";
+};
+
+int run_extrude(const extrude_args& a, const common_options& o) {
+    if (a.faces.empty() && !a.all) return report(usage, "extrude: choose the faces with --face N (repeatable) or --all");
+    std::optional<hmira::vec3<double>> direction;
+    if (!a.direction.empty()) {
+        const auto d = parse_triple(a.direction);
+        if (!d) return report(usage, "--direction " + a.direction + ": expected three numbers X,Y,Z");
+        direction = hmira::vec3<double>{(*d)[0], (*d)[1], (*d)[2]};
+    }
+    int code = ok;
+    auto loaded = load(a.input, o, code);
+    if (!loaded) return code;
+    if (!check_indices(a.faces, loaded->mesh.face_count(), "face", "--face", a.input, code)) return code;
+    mesh_counts before, after;
+    hmira::face_vertex_mesh edited;
+    std::size_t walls = 0, moved = 0;
+    {
+        auto bar = stage_bar("extruding " + a.input, o, loaded->mesh.face_count());
+        bar.update(0, 3);
+        auto mesh = to_halfedge(loaded->mesh, a.input, code);
+        if (!mesh) return code;
+        before = counts_of(*mesh);
+        bar.update(1, 3);
+        std::vector<hmira::face_handle> chosen;
+        if (a.all) {
+            for (auto f : mesh->faces()) chosen.push_back(f);
+        } else {
+            for (auto i : a.faces) chosen.emplace_back(i);
+        }
+        const hmira::extrude_options options{.distance = a.distance,
+                                             .direction = direction,
+                                             .mode = a.mode == "individual" ? hmira::extrude_mode::individual : hmira::extrude_mode::region};
+        auto r = hmira::extrude(*mesh, chosen, options);
+        if (!r) return report(exit_code_for(r.error()), a.input + ": " + r.error().message);
+        moved = r->top_faces.size();
+        walls = r->side_faces.size();
+        after = counts_of(*mesh);
+        bar.update(2, 3);
+        edited = to_face_vertex(*mesh);
+    }
+    if (int c = save(edited, a.output, {}, o); c != ok) return c;
+    char distance[32];
+    std::snprintf(distance, sizeof distance, "%g", a.distance);
+    say(o, a.input + ": extruded " + count_of(moved, "face", "faces") + " by " + distance + " with " + count_of(walls, "wall", "walls") + ": " +
+               describe_change(before, after) + " (" + a.output + ")");
+    return ok;
+}
+
+const bool registered = register_command({
+    "extrude", "Pull chosen faces (or all) out along their normal or a direction, with walls of quads",
+    "hmira extrude cube.obj tower.obj --face 4 --distance 2", 100,
+    [](CLI::App& sub) {
+        auto a = std::make_shared<extrude_args>();
+        sub.add_option("input", a->input, "mesh file to read (manifold, consistently oriented)")->required();
+        sub.add_option("output", a->output, "mesh file to write: the input's vertices first, in file order, then the new ones")->required();
+        auto* face = sub.add_option("--face", a->faces, "extrude face N (0-based, in the input file's order; repeatable, or N,M,...)")
+                         ->delimiter(',')
+                         ->check(CLI::NonNegativeNumber);
+        auto* all = sub.add_flag("--all", a->all, "extrude every face (use --mode individual on a closed mesh)");
+        face->excludes(all);
+        sub.add_option("--distance", a->distance, "how far to move the faces; negative pushes them in")->capture_default_str();
+        sub.add_option("--direction", a->direction, "move along this direction (normalised) instead of the normal")->type_name("X,Y,Z");
+        sub.add_option("--mode", a->mode, "region: connected faces move as one piece, walls only on the outline; individual: each face on its own")
+            ->capture_default_str()
+            ->check(CLI::IsMember({"region", "individual"}));
+        return [a](const common_options& o) { return run_extrude(*a, o); };
+    }});
+
+}  // namespace

@@ -1,0 +1,123 @@
+// apps/hmira/cmd_voxelize.cpp
+// `hmira voxelize`: the voxels a mesh's surface touches, and for a closed mesh those inside it,
+// on a cubic grid around the mesh, written as .binvox or as .raw bytes with a text sidecar
+// giving the grid (and the `hmira mc` command that reads it back).
+#include <cstdio>
+#include <filesystem>
+#include <sstream>
+
+#include <hmira/algorithms/conversion/voxelize.hpp>
+#include <hmira/io/detail/files.hpp>
+#include <hmira/io/volume/binvox.hpp>
+#include <hmira/io/volume/raw.hpp>
+
+#include "cli.hpp"
+
+namespace {
+
+using namespace hmira_cli;
+
+struct voxelize_args {
+    std::string input, output;
+    std::size_t resolution = 256;
+    /// 2, not 1: voxels whose closed box touches the surface count, so where the surface lies
+    /// on the bounding box the first padding layer is set; the second stays empty, which keeps
+    /// an iso-surface of the voxels (hmira mc) closed.
+    std::size_t padding = 2;
+    bool surface = false;
+    bool fill_open = false;
+};
+
+std::string lower_extension(const std::string& path) {
+    std::string ext = std::filesystem::path(path).extension().string();
+    for (auto& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return ext;
+}
+
+std::string num(double x) {
+    char b[40];
+    std::snprintf(b, sizeof b, "%.17g", x);
+    return b;
+}
+
+/// The sidecar of a .raw volume: the grid it needs to be read back, one "key: value" a line,
+/// and the `hmira mc` command that turns it back into a surface.
+std::string raw_sidecar(const hmira::grid_geometry& g, const std::string& raw_name, std::size_t set) {
+    std::ostringstream s;
+    const std::string dims = std::to_string(g.dims[0]) + "," + std::to_string(g.dims[1]) + "," + std::to_string(g.dims[2]);
+    const std::string spacing = num(g.spacing.x) + "," + num(g.spacing.y) + "," + num(g.spacing.z);
+    const std::string origin = num(g.origin.x) + "," + num(g.origin.y) + "," + num(g.origin.z);
+    s << "# hmira voxelize: the grid of " << raw_name << " (one byte per voxel, 1 = set, x fastest, then y, then z)\n"
+      << "file: " << raw_name << "\ndims: " << dims << "\ntype: uint8\nspacing: " << spacing << "\norigin: " << origin
+      << "  # centre of voxel (0, 0, 0)\nset: " << set << "\nmc: hmira mc " << raw_name << " surface.obj --dims " << dims
+      << " --type uint8 --spacing " << spacing << " --origin " << origin << " --iso 0.5 --inside above\n";
+    return s.str();
+}
+
+int run_voxelize(const voxelize_args& a, const common_options& o) {
+    const std::string ext = lower_extension(a.output);
+    if (ext != ".binvox" && ext != ".raw") return report(usage, a.output + ": unknown voxel format '" + ext + "' (use .binvox or .raw)");
+    int code = ok;
+    auto loaded = load(a.input, o, code);
+    if (!loaded) return code;
+    const auto& mesh = loaded->mesh;
+    auto grid = hmira::voxel_grid_around(mesh, a.resolution, a.padding);
+    if (!grid) return report(exit_code_for(grid.error()), a.input + ": " + grid.error().message);
+    const hmira::voxelize_options options{.mode = a.surface ? hmira::voxelize_mode::surface : hmira::voxelize_mode::solid,
+                                          .open_mesh = a.fill_open ? hmira::open_mesh_fill::winding_number : hmira::open_mesh_fill::surface_only,
+                                          .allow_degenerate = true,
+                                          .threads = static_cast<unsigned>(o.threads)};
+    hmira::result<hmira::voxelization> voxels = hmira::fail(hmira::errc::invalid_argument, "");
+    {
+        auto bar = stage_bar("voxelizing " + a.input, o, grid->size(), std::uint64_t(64) << 20);
+        bar.update(0, 2);
+        voxels = hmira::voxelize(mesh, *grid, options);
+        if (!voxels) return report(exit_code_for(voxels.error()), a.input + ": " + voxels.error().message);
+        bar.update(1, 2);
+        if (ext == ".binvox") {
+            if (auto w = hmira::io::write_binvox(voxels->voxels, a.output); !w) return report(exit_code_for(w.error()), w.error().message);
+        } else {
+            // The sidecar first: if it cannot be written, no raw file appears either.
+            const std::string sidecar = a.output + ".txt";
+            const auto text = raw_sidecar(*grid, std::filesystem::path(a.output).filename().string(), voxels->voxels.count());
+            auto s = hmira::io::detail::write_file_atomically(sidecar, [&](std::ostream& out) { return bool(out << text); });
+            if (!s) return report(exit_code_for(s.error()), s.error().message);
+            if (auto w = hmira::io::write_raw(voxels->voxels, a.output); !w) {
+                std::error_code ec;
+                std::filesystem::remove(sidecar, ec);
+                return report(exit_code_for(w.error()), w.error().message);
+            }
+        }
+    }
+    const auto& g = *grid;
+    char spacing[32];
+    std::snprintf(spacing, sizeof spacing, "%.6g", g.spacing.x);
+    std::string line = a.input + ": " + std::to_string(g.dims[0]) + " x " + std::to_string(g.dims[1]) + " x " + std::to_string(g.dims[2]) +
+                       " voxels of size " + spacing + ", " + std::to_string(voxels->voxels.count()) + " set (" +
+                       (voxels->filled ? "solid" : "surface") + ") -> " + a.output;
+    if (ext == ".raw") line += " (grid in " + a.output + ".txt)";
+    say(o, line);
+    if (!voxels->note.empty()) say(o, "note: " + voxels->note);
+    return ok;
+}
+
+const bool registered = register_command({
+    "voxelize", "Voxelize a mesh (its surface, and the inside of a closed one) to .binvox or .raw",
+    "hmira voxelize bunny.off bunny.binvox --resolution 128", 110,
+    [](CLI::App& sub) {
+        auto a = std::make_shared<voxelize_args>();
+        sub.add_option("input", a->input, "mesh file to read (.obj .off .ply .stl)")->required();
+        sub.add_option("output", a->output,
+                       "voxels to write: .binvox (run-length encoded, a cube), or .raw (one byte per voxel, x fastest) with the grid's dims, "
+                       "spacing and origin written to <output>.txt")
+            ->required();
+        sub.add_option("-n,--resolution", a->resolution, "voxels along the longest side of the bounding box")
+            ->capture_default_str()
+            ->check(CLI::Range(1, 2048));
+        sub.add_option("--padding", a->padding, "voxels added on every side of the bounding box (the outer one of 2 stays empty even where the surface lies on the box)")->capture_default_str()->check(CLI::Range(0, 1024));
+        sub.add_flag("--surface", a->surface, "only the voxels the surface touches (default: solid, also the inside of a closed mesh)");
+        sub.add_flag("--fill-open", a->fill_open, "solid mode on a mesh with holes: fill where the winding number is at least 1/2 (default: surface only, with a note)");
+        return [a](const common_options& o) { return run_voxelize(*a, o); };
+    }});
+
+}  // namespace
