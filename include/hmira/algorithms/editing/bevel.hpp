@@ -283,7 +283,7 @@ result<bevel_result<M, T>> bevel(M& mesh, const R& edges, const bevel_options& o
         V a, b;                     // the edge's ends, as first met (from a strip's F_L side)
         vec3<double> v{}, dir{};    // the original end vertex, and the unit edge direction away from it
         int uses = 0;               // strips ending in this edge (2 at a mitre or pass-through)
-        std::size_t owner = 0;      // the first of them (the edge lies on its loop)
+        H side{};                   // its halfedge in the first such strip (no edge dies before it is split)
         std::vector<V> arc;         // a, the arc points, b
     };
     struct strip_end {
@@ -296,14 +296,14 @@ result<bevel_result<M, T>> bevel(M& mesh, const R& edges, const bevel_options& o
     std::map<std::pair<std::size_t, std::size_t>, std::size_t> end_edge_at;
     std::vector<std::array<strip_end, 2>> strip_ends(sel.size());
     std::vector<typename T::face_handle> strip_face(sel.size());
-    auto add_end = [&](std::size_t i, int side, V a, V b) {
+    auto add_end = [&](std::size_t i, int side, H along, V a, V b) {
         const auto ia = T::vertex_index(mesh, a), ib = T::vertex_index(mesh, b);
         const auto key = std::make_pair(std::min(ia, ib), std::max(ia, ib));
         auto it = end_edge_at.find(key);
         if (it == end_edge_at.end()) {
             const auto& here = side == 0 ? ends[i].first : ends[i].second;
             const auto& there = side == 0 ? ends[i].second : ends[i].first;
-            end_edges.push_back({a, b, here, normalized(there - here), 0, i, {}});
+            end_edges.push_back({a, b, here, normalized(there - here), 0, along, {}});
             it = end_edge_at.emplace(key, end_edges.size() - 1).first;
         }
         auto& ee = end_edges[it->second];
@@ -315,10 +315,10 @@ result<bevel_result<M, T>> bevel(M& mesh, const R& edges, const bevel_options& o
         strip_face[i] = T::face(mesh, qp);
         // The strip's loop: q -> p -> (p', or kept s -> p') -> q' -> (q, or kept t -> q).
         if (end_kept[i][0]) strip_ends[i][0] = {true, T::target(mesh, T::next(mesh, qp)), 0, false};
-        else add_end(i, 0, T::target(mesh, qp), T::target(mesh, T::next(mesh, qp)));
+        else add_end(i, 0, T::next(mesh, qp), T::target(mesh, qp), T::target(mesh, T::next(mesh, qp)));
         const auto back = T::prev(mesh, qp);
         if (end_kept[i][1]) strip_ends[i][1] = {true, du::source<M, T>(mesh, back), 0, false};
-        else add_end(i, 1, T::target(mesh, back), du::source<M, T>(mesh, back));
+        else add_end(i, 1, back, T::target(mesh, back), du::source<M, T>(mesh, back));
     }
     // Vertex patches whose every side is an end edge get a grid; remember their corners now.
     struct patch { typename T::face_handle face; std::vector<V> corners; };
@@ -342,12 +342,7 @@ result<bevel_result<M, T>> bevel(M& mesh, const R& edges, const bevel_options& o
     for (auto& ee : end_edges) {
         const auto pa = de::pos<M, T>(mesh, ee.a), pb = de::pos<M, T>(mesh, ee.b);
         const auto ctrl = ee.uses >= 2 ? ee.v : ee.v + ee.dir * dot((pa + pb) / 2.0 - ee.v, ee.dir);
-        const auto f = strip_face[ee.owner];
-        const auto start = T::face_halfedge(mesh, f);
-        auto x = start;
-        while (!((T::target(mesh, x) == ee.a || T::target(mesh, x) == ee.b) &&
-                 (du::source<M, T>(mesh, x) == ee.a || du::source<M, T>(mesh, x) == ee.b)))
-            x = T::next(mesh, x);
+        auto x = ee.side;
         const bool forward = du::source<M, T>(mesh, x) == ee.a;
         std::vector<V> arc{du::source<M, T>(mesh, x)};
         for (std::size_t j = 1; j < n; ++j) {
