@@ -84,11 +84,21 @@ std::optional<hmira::halfedge_mesh> to_halfedge(const hmira::face_vertex_mesh& m
     return std::move(*built);
 }
 
-hmira::face_vertex_mesh to_face_vertex(const hmira::halfedge_mesh& mesh) {
+hmira::face_vertex_mesh to_face_vertex(const hmira::halfedge_mesh& mesh, std::span<const std::pair<hmira::vertex_handle, hmira::vertex_handle>> exchange) {
     hmira::face_vertex_mesh out;
     out.reserve(mesh.vertex_count(), mesh.face_count(), 4 * mesh.face_count());
+    std::vector<hmira::vertex_handle> order;  // output slot -> mesh vertex
+    std::vector<std::size_t> slot(mesh.vertex_index_bound());
+    for (auto v : mesh.vertices()) {
+        slot[v.index] = order.size();
+        order.push_back(v);
+    }
+    for (const auto& [a, b] : exchange) {
+        std::swap(order[slot[a.index]], order[slot[b.index]]);
+        std::swap(slot[a.index], slot[b.index]);
+    }
     std::vector<hmira::vertex_handle> map(mesh.vertex_index_bound());
-    for (auto v : mesh.vertices()) map[v.index] = out.add_vertex(mesh.position(v));
+    for (auto v : order) map[v.index] = out.add_vertex(mesh.position(v));
     std::vector<hmira::vertex_handle> loop;
     for (auto f : mesh.faces()) {
         loop.clear();

@@ -9,6 +9,8 @@
 #include <array>
 #include <functional>
 #include <optional>
+#include <span>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -74,8 +76,11 @@ int save(const hmira::face_vertex_mesh& mesh, const std::string& path, const hmi
 std::optional<hmira::halfedge_mesh> to_halfedge(const hmira::face_vertex_mesh& mesh, const std::string& path, int& code);
 
 /// The live vertices and faces of `mesh`, renumbered densely in index order: vertices that were
-/// in the input keep their relative order and come first, new ones follow.
-hmira::face_vertex_mesh to_face_vertex(const hmira::halfedge_mesh& mesh);
+/// in the input keep their relative order and come first, new ones follow. Each pair in
+/// `exchange` trades places in that order (an edit that moved a file vertex and left a new one
+/// where it was can so give the file's index back to the one that stayed).
+hmira::face_vertex_mesh to_face_vertex(const hmira::halfedge_mesh& mesh,
+                                       std::span<const std::pair<hmira::vertex_handle, hmira::vertex_handle>> exchange = {});
 
 /// Vertex, edge and face counts, to report what an edit created.
 struct mesh_counts {

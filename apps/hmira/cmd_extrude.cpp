@@ -20,6 +20,37 @@ struct extrude_args {
     std::string mode = "region";
 };
 
+/// Region mode moves the region's own vertices and leaves new ones at the outline's old place
+/// (extruding one face, or individual mode, does the opposite). For the output to keep every
+/// file vertex where the file has it, a file vertex that moved trades its index with the new
+/// vertex left at its old place: on each wall quad (v' -> v -> u -> u'), a new vertex's partner
+/// is its neighbour in the loop that is not new. Inner vertices of a region have no partner:
+/// they move. `original` holds the file's positions by index.
+std::vector<std::pair<hmira::vertex_handle, hmira::vertex_handle>> stayed_behind(const hmira::halfedge_mesh& m,
+                                                                                 const hmira::extrude_result<hmira::halfedge_mesh>& r,
+                                                                                 std::span<const hmira::vec3<double>> original) {
+    std::vector<std::pair<hmira::vertex_handle, hmira::vertex_handle>> pairs;
+    std::vector<char> is_new(m.vertex_index_bound(), 0), paired(m.vertex_index_bound(), 0);
+    for (auto v : r.vertices) is_new[v.index] = 1;
+    for (auto f : r.side_faces) {
+        std::vector<hmira::vertex_handle> loop;
+        for (auto v : m.face_vertices(f)) loop.push_back(v);
+        for (std::size_t i = 0; i < loop.size(); ++i) {
+            const auto v = loop[i];
+            if (!is_new[v.index] || paired[v.index]) continue;
+            for (auto w : {loop[(i + 1) % loop.size()], loop[(i + loop.size() - 1) % loop.size()]}) {
+                if (is_new[w.index] || paired[w.index] || w.index >= original.size()) continue;
+                if (m.position(w) != original[w.index] && m.position(v) == original[w.index]) {
+                    pairs.push_back({v, w});
+                    paired[v.index] = paired[w.index] = 1;
+                }
+                break;
+            }
+        }
+    }
+    return pairs;
+}
+
 int run_extrude(const extrude_args& a, const common_options& o) {
     if (a.faces.empty() && !a.all) return report(usage, "extrude: choose the faces with --face N (repeatable) or --all");
     std::optional<hmira::vec3<double>> direction;
@@ -57,7 +88,7 @@ int run_extrude(const extrude_args& a, const common_options& o) {
         walls = r->side_faces.size();
         after = counts_of(*mesh);
         bar.update(2, 3);
-        edited = to_face_vertex(*mesh);
+        edited = to_face_vertex(*mesh, stayed_behind(*mesh, *r, loaded->mesh.positions()));
     }
     if (int c = save(edited, a.output, {}, o); c != ok) return c;
     char distance[32];

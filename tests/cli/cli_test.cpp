@@ -547,6 +547,22 @@ TEST(cli, extrude_one_face_of_the_unit_cube_doubles_its_volume) {
     const auto reg = read_back(dir / "r.obj");
     EXPECT_EQ(counts(reg), (vef{14, 24, 12}));
     expect_sound(reg);
+    // The file's vertices stay where they were (region mode moves the region's own vertices,
+    // and the tool gives the file's indices to the ones left behind); the 6 outline vertices,
+    // moved by the unit mean normal of the two faces, follow.
+    for (std::size_t i = 0; i < 8; ++i) EXPECT_TRUE(near(at(reg, i), at(u, i))) << "file vertex " << i;
+    const auto n0 = face_normal(u, 0), n1 = face_normal(u, 1);
+    const double len = std::sqrt((n0[0] + n1[0]) * (n0[0] + n1[0]) + (n0[1] + n1[1]) * (n0[1] + n1[1]) + (n0[2] + n1[2]) * (n0[2] + n1[2]));
+    const point mean{(n0[0] + n1[0]) / len, (n0[1] + n1[1]) / len, (n0[2] + n1[2]) / len};
+    std::set<std::size_t> outline;
+    for (std::size_t f : {0, 1})
+        for (auto v : u.face_vertices(hmira::face_handle(f))) outline.insert(v.index);
+    ASSERT_EQ(outline.size(), 6u);
+    for (std::size_t k = 8; k < 14; ++k)
+        EXPECT_TRUE(std::any_of(outline.begin(), outline.end(), [&](std::size_t i) {
+            const auto p = at(u, i);
+            return near(at(reg, k), {p[0] + mean[0], p[1] + mean[1], p[2] + mean[2]}, 1e-12);
+        })) << "new vertex " << k;
     // Every face on its own: six prisms of volume 1 each on the unit cube.
     ASSERT_EQ(hmira(dir, "extrude u.obj all.obj --all --mode individual -q").code, 0);
     const auto all = read_back(dir / "all.obj");
