@@ -358,6 +358,26 @@ TYPED_TEST(extrude_test, a_region_holding_a_ringed_face_gets_walls_along_its_who
     }
 }
 
+TYPED_TEST(extrude_test, a_region_holding_a_ringed_face_and_its_plug_has_no_wall_on_the_ring) {
+    SKIP_UNLESS_RINGS() {
+        using T = hmira::default_traits<TypeParam>;
+        TypeParam m;
+        const auto top = cube_with_ringed_top(m, 0.5);
+        const auto plug = T::face(m, T::opposite(m, *T::inner_rings(m, top).begin()));
+        const auto before = count(m);
+        auto r = hmira::extrude(m, std::vector<typename T::face_handle>{top, plug}, {.distance = 0.5});
+        ASSERT_TRUE(r) << r.error().message;
+        // The ring lies inside the region: the outline is the top's outer loop of 4.
+        EXPECT_EQ(count(m), (counts{before.v + 4, before.e + 8, before.f + 4}));
+        EXPECT_TRUE(valid_with_rings(m, 1));
+        EXPECT_NEAR(volume_with_rings(m), 8.0 + 4 * 0.5, 1e-12);
+        // The ring's vertices moved with the region; none stayed behind.
+        EXPECT_TRUE(has_vertex_at(m, {0.5, 1.5, 0.5}));
+        EXPECT_FALSE(has_vertex_at(m, {0.5, 1.0, 0.5}));
+        EXPECT_TRUE(faces_point_outward(m, {0, 0.25, 0}));
+    }
+}
+
 TYPED_TEST(extrude_test, the_face_inside_a_hole_extrudes_as_a_plug_with_walls_against_the_ring) {
     SKIP_UNLESS_RINGS() {
         using T = hmira::default_traits<TypeParam>;

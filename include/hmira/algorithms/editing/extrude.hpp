@@ -18,7 +18,8 @@
 namespace hmira {
 
 /// A mesh extrude() can edit: an editable_mesh whose positions can be set (region mode moves
-/// the region's inner vertices).
+/// the region's own vertices). Inner rings are not required: faces with rings are handled
+/// where the model has them.
 template <class M, class T = default_traits<M>>
 concept extrudable_mesh = editable_mesh<M, T> && position_mutable_mesh<M, T>;
 
