@@ -16,6 +16,7 @@
 #include "../core/vec3.hpp"
 #include "../traits.hpp"
 #include "detail/element_range.hpp"
+#include "detail/native_traits.hpp"
 #include "handles.hpp"
 #include "properties.hpp"
 
@@ -40,8 +41,10 @@ struct index_remap {
 ///  - no adjacency: vertex neighbours, edges and face neighbours come from adapters.
 /// Handles stay valid until collect_garbage(), which renumbers and reports the mapping.
 /// Concurrency: const queries may run in parallel; any mutation needs exclusive access.
+/// Per-vertex and per-face user data by name: add/get/remove_*_property, from
+/// with_vertex_properties and with_face_properties (properties.hpp).
 template <class Scalar = double>
-class basic_face_vertex_mesh {
+class basic_face_vertex_mesh : public with_vertex_properties, public with_face_properties {
 public:
     using scalar = Scalar;        ///< coordinate type
     using point = vec3<Scalar>;   ///< position type
@@ -209,22 +212,6 @@ public:
     /// Removes everything, properties included.
     void clear() { *this = basic_face_vertex_mesh(); }
 
-    // ----- properties ------------------------------------------------------------------------
-    /// Per-vertex and per-face user data by name: add (or get the existing one of that name and
-    /// type; invalid if the name has another type), find, remove. See properties.hpp.
-    ///@{
-    template <class T>
-    property<vertex_handle, T> add_vertex_property(std::string_view name, T init = T{}) { return vertex_props_.template add<T>(name, std::move(init)); }
-    template <class T>
-    std::optional<property<vertex_handle, T>> get_vertex_property(std::string_view name) const { return vertex_props_.template find<T>(name); }
-    bool remove_vertex_property(std::string_view name) { return vertex_props_.remove(name); }
-    template <class T>
-    property<face_handle, T> add_face_property(std::string_view name, T init = T{}) { return face_props_.template add<T>(name, std::move(init)); }
-    template <class T>
-    std::optional<property<face_handle, T>> get_face_property(std::string_view name) const { return face_props_.template find<T>(name); }
-    bool remove_face_property(std::string_view name) { return face_props_.remove(name); }
-    ///@}
-
     /// Grows on every change of connectivity or of the element set.
     std::uint64_t change_count() const noexcept { return changes_; }
 
@@ -235,8 +222,6 @@ private:
     std::vector<std::uint32_t> face_begin_{0};
     std::vector<std::uint8_t> face_deleted_;
     std::size_t deleted_vertices_ = 0, deleted_faces_ = 0;
-    property_registry<vertex_handle> vertex_props_;
-    property_registry<face_handle> face_props_;
     std::uint64_t changes_ = 0;
 };
 
@@ -244,29 +229,12 @@ using face_vertex_mesh = basic_face_vertex_mesh<double>;
 
 /// Native traits: everything face-vertex can do at its thesis cost, nothing more.
 template <class Scalar>
-struct mesh_traits<basic_face_vertex_mesh<Scalar>> {
+struct mesh_traits<basic_face_vertex_mesh<Scalar>> : detail::native_element_traits<basic_face_vertex_mesh<Scalar>> {
     using mesh = basic_face_vertex_mesh<Scalar>;
-    using vertex_handle = hmira::vertex_handle;
-    using face_handle = hmira::face_handle;
-    using scalar = Scalar;
 
-    static auto vertices(const mesh& m) { return m.vertices(); }
-    static auto faces(const mesh& m) { return m.faces(); }
-    static std::size_t vertex_count(const mesh& m) { return m.vertex_count(); }
-    static std::size_t face_count(const mesh& m) { return m.face_count(); }
-    static std::size_t vertex_index(const mesh&, vertex_handle v) { return v.index; }
-    static std::size_t vertex_index_bound(const mesh& m) { return m.vertex_index_bound(); }
-    static std::size_t face_index(const mesh&, face_handle f) { return f.index; }
-    static std::size_t face_index_bound(const mesh& m) { return m.face_index_bound(); }
-    static auto face_vertices(const mesh& m, face_handle f) { return m.face_vertices(f); }
-    static const vec3<Scalar>& position(const mesh& m, vertex_handle v) { return m.position(v); }
-    static void set_position(mesh& m, vertex_handle v, const vec3<Scalar>& p) { m.set_position(v, p); }
-    static vertex_handle add_vertex(mesh& m, const vec3<Scalar>& p) { return m.add_vertex(p); }
-    static result<face_handle> add_face(mesh& m, std::span<const vertex_handle> vs) { return m.add_face(vs); }
     static void reverse_face(mesh& m, face_handle f) { m.reverse_face(f); }
     static result<void> remove_face(mesh& m, face_handle f) { return m.remove_face(f); }
     static result<void> remove_vertex(mesh& m, vertex_handle v) { return m.remove_vertex(v); }
-    static std::uint64_t change_count(const mesh& m) { return m.change_count(); }
 };
 
 }  // namespace hmira

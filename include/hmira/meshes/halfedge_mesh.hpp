@@ -16,6 +16,7 @@
 #include "../core/vec3.hpp"
 #include "../traits.hpp"
 #include "detail/element_range.hpp"
+#include "detail/native_traits.hpp"
 #include "face_vertex_mesh.hpp"  // index_remap
 #include "handles.hpp"
 #include "properties.hpp"
@@ -39,8 +40,11 @@ namespace hmira {
 /// Handles stay valid until then. Const queries may run concurrently; mutations need
 /// exclusive access. Mutation at the raw level (set_next, new_edge, erase_*) keeps nothing
 /// consistent by itself: it is the layer the Euler operators are written on.
+///
+/// Per-vertex, -edge, -halfedge and -face user data by name: add/get/remove_*_property, from
+/// the with_*_properties bases (properties.hpp); properties follow garbage collection.
 template <class Scalar = double>
-class basic_halfedge_mesh {
+class basic_halfedge_mesh : public with_vertex_properties, public with_edge_properties, public with_halfedge_properties, public with_face_properties {
 public:
     using scalar = Scalar;        ///< coordinate type
     using point = vec3<Scalar>;   ///< position type
@@ -669,33 +673,6 @@ public:
     /// Removes everything, properties included.
     void clear() { *this = basic_halfedge_mesh(); }
 
-    // ----- properties ------------------------------------------------------------------------------
-    /// Per-element user data by name for vertices, edges, halfedges and faces: add (or get the
-    /// existing one of that name and type; invalid if the name has another type), find, remove.
-    /// Properties follow garbage collection. See properties.hpp.
-    ///@{
-    template <class T>
-    property<vertex_handle, T> add_vertex_property(std::string_view name, T init = T{}) { return vertex_props_.template add<T>(name, std::move(init)); }
-    template <class T>
-    std::optional<property<vertex_handle, T>> get_vertex_property(std::string_view name) const { return vertex_props_.template find<T>(name); }
-    bool remove_vertex_property(std::string_view name) { return vertex_props_.remove(name); }
-    template <class T>
-    property<edge_handle, T> add_edge_property(std::string_view name, T init = T{}) { return edge_props_.template add<T>(name, std::move(init)); }
-    template <class T>
-    std::optional<property<edge_handle, T>> get_edge_property(std::string_view name) const { return edge_props_.template find<T>(name); }
-    bool remove_edge_property(std::string_view name) { return edge_props_.remove(name); }
-    template <class T>
-    property<halfedge_handle, T> add_halfedge_property(std::string_view name, T init = T{}) { return halfedge_props_.template add<T>(name, std::move(init)); }
-    template <class T>
-    std::optional<property<halfedge_handle, T>> get_halfedge_property(std::string_view name) const { return halfedge_props_.template find<T>(name); }
-    bool remove_halfedge_property(std::string_view name) { return halfedge_props_.remove(name); }
-    template <class T>
-    property<face_handle, T> add_face_property(std::string_view name, T init = T{}) { return face_props_.template add<T>(name, std::move(init)); }
-    template <class T>
-    std::optional<property<face_handle, T>> get_face_property(std::string_view name) const { return face_props_.template find<T>(name); }
-    bool remove_face_property(std::string_view name) { return face_props_.remove(name); }
-    ///@}
-
     /// Grows on every change of connectivity or of the element set.
     std::uint64_t change_count() const noexcept { return changes_; }
 
@@ -739,10 +716,6 @@ private:
     std::vector<std::uint8_t> face_deleted_;
     std::vector<std::vector<halfedge_handle>> ring_lists_;
     std::size_t deleted_vertices_ = 0, deleted_edges_ = 0, deleted_faces_ = 0;
-    property_registry<vertex_handle> vertex_props_;
-    property_registry<edge_handle> edge_props_;
-    property_registry<halfedge_handle> halfedge_props_;
-    property_registry<face_handle> face_props_;
     std::uint64_t changes_ = 0;
     // Reused by add_face so that building a mesh does not allocate per face.
     std::vector<halfedge_handle> scratch_halfedges_;
@@ -754,68 +727,12 @@ using halfedge_mesh = basic_halfedge_mesh<double>;
 
 /// Native traits: halfedge navigation, inner rings and raw mutation, all at thesis cost.
 template <class Scalar>
-struct mesh_traits<basic_halfedge_mesh<Scalar>> {
+struct mesh_traits<basic_halfedge_mesh<Scalar>> : detail::native_halfedge_traits<basic_halfedge_mesh<Scalar>> {
     using mesh = basic_halfedge_mesh<Scalar>;
-    using vertex_handle = hmira::vertex_handle;
-    using face_handle = hmira::face_handle;
-    using edge_handle = hmira::edge_handle;
-    using halfedge_handle = hmira::halfedge_handle;
-    using scalar = Scalar;
 
-    static auto vertices(const mesh& m) { return m.vertices(); }
-    static auto faces(const mesh& m) { return m.faces(); }
-    static auto edges(const mesh& m) { return m.edges(); }
-    static auto halfedges(const mesh& m) { return m.halfedges(); }
-    static std::size_t vertex_count(const mesh& m) { return m.vertex_count(); }
-    static std::size_t face_count(const mesh& m) { return m.face_count(); }
-    static std::size_t edge_count(const mesh& m) { return m.edge_count(); }
-    static std::size_t vertex_index(const mesh&, vertex_handle v) { return v.index; }
-    static std::size_t vertex_index_bound(const mesh& m) { return m.vertex_index_bound(); }
-    static std::size_t face_index(const mesh&, face_handle f) { return f.index; }
-    static std::size_t face_index_bound(const mesh& m) { return m.face_index_bound(); }
-    static std::size_t edge_index(const mesh&, edge_handle e) { return e.index; }
-    static std::size_t edge_index_bound(const mesh& m) { return m.edge_index_bound(); }
-    static std::size_t halfedge_index(const mesh&, halfedge_handle h) { return h.index; }
-    static std::size_t halfedge_index_bound(const mesh& m) { return m.halfedge_index_bound(); }
-
-    static auto face_vertices(const mesh& m, face_handle f) { return m.face_vertices(f); }
-    static auto adjacent_vertices(const mesh& m, vertex_handle v) { return m.adjacent_vertices(v); }
-    static auto vertex_faces(const mesh& m, vertex_handle v) { return m.vertex_faces(v); }
-    static auto vertex_edges(const mesh& m, vertex_handle v) { return m.vertex_edges(v); }
-    static auto adjacent_faces(const mesh& m, face_handle f) { return m.adjacent_faces(f); }
-    static auto edge_vertices(const mesh& m, edge_handle e) { return m.edge_vertices(e); }
     static auto inner_rings(const mesh& m, face_handle f) { return m.inner_rings(f); }
-
-    static halfedge_handle next(const mesh& m, halfedge_handle h) { return m.next(h); }
-    static halfedge_handle prev(const mesh& m, halfedge_handle h) { return m.prev(h); }
-    static halfedge_handle opposite(const mesh&, halfedge_handle h) { return mesh::opposite(h); }
-    static vertex_handle target(const mesh& m, halfedge_handle h) { return m.target(h); }
-    static face_handle face(const mesh& m, halfedge_handle h) { return m.face(h); }
-    static edge_handle edge(const mesh&, halfedge_handle h) { return mesh::edge(h); }
-    static halfedge_handle edge_halfedge(const mesh&, edge_handle e) { return mesh::edge_halfedge(e); }
-    static halfedge_handle vertex_halfedge(const mesh& m, vertex_handle v) { return m.vertex_halfedge(v); }
-    static halfedge_handle face_halfedge(const mesh& m, face_handle f) { return m.face_halfedge(f); }
-    static constexpr face_handle null_face() { return {}; }
-    static constexpr halfedge_handle null_halfedge() { return {}; }
-
-    static const vec3<Scalar>& position(const mesh& m, vertex_handle v) { return m.position(v); }
-    static void set_position(mesh& m, vertex_handle v, const vec3<Scalar>& p) { m.set_position(v, p); }
-    static vertex_handle add_vertex(mesh& m, const vec3<Scalar>& p) { return m.add_vertex(p); }
-    static result<face_handle> add_face(mesh& m, std::span<const vertex_handle> vs) { return m.add_face(vs); }
-
-    static void set_next(mesh& m, halfedge_handle h, halfedge_handle n) { m.set_next(h, n); }
-    static void set_target(mesh& m, halfedge_handle h, vertex_handle v) { m.set_target(h, v); }
-    static void set_face(mesh& m, halfedge_handle h, face_handle f) { m.set_face(h, f); }
-    static void set_vertex_halfedge(mesh& m, vertex_handle v, halfedge_handle h) { m.set_vertex_halfedge(v, h); }
-    static void set_face_halfedge(mesh& m, face_handle f, halfedge_handle h) { m.set_face_halfedge(f, h); }
-    static halfedge_handle new_edge(mesh& m, vertex_handle a, vertex_handle b) { return m.new_edge(a, b); }
-    static face_handle new_face(mesh& m) { return m.new_face(); }
-    static void erase_edge(mesh& m, edge_handle e) { m.erase_edge(e); }
-    static void erase_face(mesh& m, face_handle f) { m.erase_face(f); }
-    static void erase_vertex(mesh& m, vertex_handle v) { m.erase_vertex(v); }
     static void add_inner_ring(mesh& m, face_handle f, halfedge_handle h) { m.add_inner_ring(f, h); }
     static void remove_inner_ring(mesh& m, face_handle f, halfedge_handle h) { m.remove_inner_ring(f, h); }
-    static std::uint64_t change_count(const mesh& m) { return m.change_count(); }
 };
 
 }  // namespace hmira

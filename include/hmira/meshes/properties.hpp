@@ -15,6 +15,8 @@
 #include <utility>
 #include <vector>
 
+#include "handles.hpp"
+
 namespace hmira {
 
 namespace detail {
@@ -174,6 +176,73 @@ public:
 private:
     std::vector<std::unique_ptr<detail::property_array_base>> arrays_;
     std::size_t size_ = 0;
+};
+
+/// The per-vertex property functions of hmira's meshes (each mesh derives from the
+/// with_*_properties of its element kinds). Add returns the existing property of that name
+/// and type, or an invalid one if the name has another type; get finds one; remove drops one
+/// and says whether it existed. Properties follow garbage collection.
+class with_vertex_properties {
+public:
+    /// Adds (or gets) a vertex property, find one, remove one by name.
+    ///@{
+    template <class T>
+    property<vertex_handle, T> add_vertex_property(std::string_view name, T init = T{}) { return vertex_props_.template add<T>(name, std::move(init)); }
+    template <class T>
+    std::optional<property<vertex_handle, T>> get_vertex_property(std::string_view name) const { return vertex_props_.template find<T>(name); }
+    bool remove_vertex_property(std::string_view name) { return vertex_props_.remove(name); }
+    ///@}
+
+protected:
+    property_registry<vertex_handle> vertex_props_;  ///< grown, compacted and cleared by the mesh
+};
+
+/// The per-face property functions (see with_vertex_properties).
+class with_face_properties {
+public:
+    /// Adds (or gets) a face property, find one, remove one by name.
+    ///@{
+    template <class T>
+    property<face_handle, T> add_face_property(std::string_view name, T init = T{}) { return face_props_.template add<T>(name, std::move(init)); }
+    template <class T>
+    std::optional<property<face_handle, T>> get_face_property(std::string_view name) const { return face_props_.template find<T>(name); }
+    bool remove_face_property(std::string_view name) { return face_props_.remove(name); }
+    ///@}
+
+protected:
+    property_registry<face_handle> face_props_;  ///< grown, compacted and cleared by the mesh
+};
+
+/// The per-edge property functions (see with_vertex_properties).
+class with_edge_properties {
+public:
+    /// Adds (or gets) an edge property, find one, remove one by name.
+    ///@{
+    template <class T>
+    property<edge_handle, T> add_edge_property(std::string_view name, T init = T{}) { return edge_props_.template add<T>(name, std::move(init)); }
+    template <class T>
+    std::optional<property<edge_handle, T>> get_edge_property(std::string_view name) const { return edge_props_.template find<T>(name); }
+    bool remove_edge_property(std::string_view name) { return edge_props_.remove(name); }
+    ///@}
+
+protected:
+    property_registry<edge_handle> edge_props_;  ///< grown, compacted and cleared by the mesh
+};
+
+/// The per-halfedge property functions (see with_vertex_properties).
+class with_halfedge_properties {
+public:
+    /// Adds (or gets) a halfedge property, find one, remove one by name.
+    ///@{
+    template <class T>
+    property<halfedge_handle, T> add_halfedge_property(std::string_view name, T init = T{}) { return halfedge_props_.template add<T>(name, std::move(init)); }
+    template <class T>
+    std::optional<property<halfedge_handle, T>> get_halfedge_property(std::string_view name) const { return halfedge_props_.template find<T>(name); }
+    bool remove_halfedge_property(std::string_view name) { return halfedge_props_.remove(name); }
+    ///@}
+
+protected:
+    property_registry<halfedge_handle> halfedge_props_;  ///< grown, compacted and cleared by the mesh
 };
 
 }  // namespace hmira

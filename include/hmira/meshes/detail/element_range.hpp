@@ -83,9 +83,7 @@ public:
 
         iterator() = default;
         iterator(const Mesh* m, Cursor start, Cursor cur, std::uint32_t lap)
-            : m_(m), start_(start), cur_(cur), lap_(lap) {
-            if (lap_ == 0 && !kept()) ++*this;
-        }
+            : m_(m), start_(start), cur_(cur), lap_(lap) {}
 
         value_type operator*() const { return Policy::value(*m_, cur_); }
         iterator& operator++() {
@@ -106,7 +104,6 @@ public:
             if constexpr (filtering_policy<Policy, Mesh, Cursor>) return Policy::keep(*m_, cur_);
             else return true;
         }
-        static constexpr std::uint32_t max_steps = 1u << 30;
         const Mesh* m_ = nullptr;
         Cursor start_{}, cur_{};
         std::uint32_t lap_ = 0, steps_ = 0;
@@ -114,13 +111,28 @@ public:
 
     loop_range() = default;
     loop_range(const Mesh& m, Cursor start) : m_(&m), start_(start) {}
-    iterator begin() const { return iterator(m_, start_, start_, start_ == Cursor{} ? 1u : 0u); }
+    iterator begin() const {
+        // A filtering loop starts at its first kept cursor, found here rather than by the
+        // iterator (which kept the hot ++ loop from being optimised as well at -O3).
+        if constexpr (filtering_policy<Policy, Mesh, Cursor>) {
+            if (start_ == Cursor{}) return end();
+            Cursor first = start_;
+            for (std::uint32_t steps = 0; !Policy::keep(*m_, first);) {
+                first = Policy::step(*m_, first);
+                if (first == start_ || ++steps > max_steps) return end();
+            }
+            return iterator(m_, start_, first, 0u);
+        } else {
+            return iterator(m_, start_, start_, start_ == Cursor{} ? 1u : 0u);
+        }
+    }
     iterator end() const { return iterator(m_, start_, start_, 1u); }
     bool empty() const { return begin() == end(); }
     explicit operator bool() const { return !empty(); }
     auto front() const { return *begin(); }
 
 private:
+    static constexpr std::uint32_t max_steps = 1u << 30;
     const Mesh* m_ = nullptr;
     Cursor start_{};
 };
