@@ -139,7 +139,9 @@ result<split_vertex_result<M, T>> split_vertex(M& mesh, typename T::halfedge_han
     return split_vertex_result<M, T>{w, out};
 }
 
-/// killEV (KEV), general form, the exact inverse of split_vertex: removes the edge of
+/// killEV (KEV), general form, the exact inverse of split_vertex wherever the split kept the
+/// mesh manifold (distinct corners on different faces of a vertex with at most one boundary
+/// gap) and of the antenna form (equal corners): removes the edge of
 /// `halfedge` (v -> w) and its target w; every other edge of w moves to v, in the same
 /// rotation, so the faces on both sides of the edge lose one side. V - 1, E - 1. With w of
 /// degree 1 this is kill_edge_vertex(halfedge).
