@@ -1,6 +1,7 @@
 // apps/hmira/cmd_bevel.cpp
 // `hmira bevel`: replaces chosen edges (named by their end vertices, all of them, or every edge
 // sharper than an angle) by strips of faces, or, in vertex-only mode, cuts chosen corners.
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -100,7 +101,8 @@ std::optional<std::vector<hmira::edge_handle>> select_edges(const bevel_args& a,
                                      " are not joined by an edge");
             return std::nullopt;
         }
-        out.push_back(m.edge(h));
+        const auto e = m.edge(h);
+        if (std::find(out.begin(), out.end(), e) == out.end()) out.push_back(e);  // "0,1" and "1,0" are one edge
     }
     code = ok;
     return out;
@@ -121,6 +123,7 @@ int run_bevel(const bevel_args& a, const common_options& o) {
     if (!vertex_mode && !edge_mode)
         return report(usage, "bevel: choose edges with --edge A,B, --all or --angle DEG, or vertices with --vertex N or --vertices-all");
     if (vertex_mode && a.segments != 1) return report(usage, "bevel: vertex-only mode (--vertex, --vertices-all) makes flat cuts only; drop --segments");
+    if (vertex_mode && a.no_clamp) return report(usage, "bevel: vertex-only mode always stops cuts at the middle of an edge; drop --no-clamp");
     int code = ok;
     auto loaded = load(a.input, o, code);
     if (!loaded) return code;

@@ -452,6 +452,9 @@ TEST(cli, bevel_one_cube_edge_is_a_chamfer_named_by_its_end_vertices) {
         // A prism of cross-section w^2 / 2 and length 2 is cut away.
         EXPECT_NEAR(hmira_test::signed_volume(b), 8 - w * w, 1e-12);
     }
+    const auto twice = hmira(dir, "bevel c.obj b.obj --edge 0,1 --edge 1,0 --width 0.25");
+    ASSERT_EQ(twice.code, 0) << twice.err;
+    EXPECT_NE(twice.out.find("bevelled 1 edge at width 0.25: V 8 -> 10"), std::string::npos) << "one edge named twice: " << twice.out;
     // Rounded: an arc of 3 segments removes less than the chamfer, more than the true quarter circle.
     ASSERT_EQ(hmira(dir, "bevel c.obj r.obj --edge 0,1 --width 0.25 --segments 3 -q").code, 0);
     const auto round = read_back(dir / "r.obj");
@@ -712,6 +715,8 @@ TEST(cli, editing_refuses_bad_selections_unknown_options_and_non_manifold_input)
     expect_refused(dir, "bevel c.obj t.obj", 2, "--edge A,B", "t.obj");
     expect_refused(dir, "extrude c.obj t.obj", 2, "--face N", "t.obj");
     expect_refused(dir, "bevel c.obj t.obj --edge 0,1 --all", 2, "excludes", "t.obj");
+    expect_refused(dir, "bevel c.obj t.obj --vertex 0 --segments 2", 2, "flat cuts only", "t.obj");
+    expect_refused(dir, "bevel c.obj t.obj --vertex 0 --no-clamp", 2, "drop --no-clamp", "t.obj");
     expect_refused(dir, "truncate c.obj t.obj --all --fraction 1", 2, "fraction must lie in (0, 1)", "t.obj");
     expect_refused(dir, "bevel c.obj t.obj --all --width 0", 2, "--width", "t.obj");
     expect_refused(dir, "extrude c.obj t.obj --face 0 --direction 1,2", 2, "--direction 1,2", "t.obj");
