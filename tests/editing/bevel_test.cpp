@@ -30,7 +30,7 @@ TYPED_TEST_SUITE(bevel_test, hmira_test::all_models);
         GTEST_SKIP() << "model cannot be edited (no Euler operators or triangles only)"; \
     } else
 
-/// The cube edge from (1,1,-1) to (1,1,1) (corners F and G of generate_cube).
+/// The edge between the vertices at a and b (e.g. the cube edge (1,1,-1)-(1,1,1)).
 template <class M, class T = hmira::default_traits<M>>
 typename T::edge_handle edge_between(const M& m, std::array<double, 3> a, std::array<double, 3> b) {
     for (auto e : T::edges(m)) {
@@ -507,9 +507,12 @@ TYPED_TEST(bevel_test, a_degree_five_apex_is_filled_with_a_pentagonal_grid) {
             }
             EXPECT_EQ(r->vertex_faces.size(), std::size_t(p.f));
             EXPECT_EQ(r->strip_faces.size(), std::size_t(5 * n));
-            const std::size_t pentagons = n % 2 ? 2 : 1;  // the base and, for odd n, the middle
-            EXPECT_EQ(face_sizes(m)[5], pentagons - 1);    // the base has 10 + 5 (n - 1) sides
-            EXPECT_EQ(face_sizes(m)[std::size_t(10 + 5 * (n - 1))], 1u);
+            // The grid fill's middle pentagon (odd n only); the base gains its 5 end arcs.
+            auto sizes = face_sizes(m);
+            EXPECT_EQ(sizes[5], n % 2 ? 1u : 0u);
+            EXPECT_EQ(sizes[std::size_t(10 + 5 * (n - 1))], 1u);
+            EXPECT_EQ(sizes[3], 5u);  // the lateral faces, cut back to triangles
+            EXPECT_EQ(sizes[4], std::size_t(count(m).f) - 6 - (n % 2 ? 1 : 0));
         }
     }
 }
