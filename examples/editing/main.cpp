@@ -79,9 +79,15 @@ int main(int argc, char** argv) {
         auto r = hmira::extrude(m, f, {.distance = 1.0});
         ok &= r.has_value() && save(m, dir, "extruded_cube");
     }
-    {  // A pocket: a face pushed into the solid.
+    {  // A pocket: chamfer the rim of one face, then push the face into the solid. (Pushing a
+       // whole cube face in would put the pocket walls in the planes of the side faces.)
         auto m = cube();
-        ok &= hmira::extrude(m, *T::faces(m).begin(), {.distance = -0.5}).has_value() && save(m, dir, "pocket_cube");
+        const auto f = *T::faces(m).begin();
+        std::vector<T::edge_handle> rim;
+        for (auto h = T::face_halfedge(m, f); rim.empty() || h != T::face_halfedge(m, f); h = T::next(m, h))
+            rim.push_back(T::edge(m, h));
+        ok &= hmira::bevel(m, rim, {.width = 0.2}).has_value() &&
+              hmira::extrude(m, f, {.distance = -0.5}).has_value() && save(m, dir, "pocket_cube");
     }
     {  // Two faces extruded individually, each along its own normal.
         auto m = cube();
