@@ -697,6 +697,29 @@ TEST(cli, mc_reads_raw_volumes_of_every_sample_type_into_a_closed_sphere) {
     expect_refused(dir, "mc missing.raw x.off --dims 24,24,24", 3, "missing.raw", "x.off");
 }
 
+TEST(cli, mc_reads_inr_and_inr_gz_volumes_by_name) {
+    scratch_dir dir;
+    // The same sphere as an INRIMAGE-4 file: a 256-byte text header, then float samples.
+    const double r0 = 0.8;
+    write_raw_volume<float>(dir / "samples", 24, -1.15, 0.1, false,
+                            [&](double x, double y, double z) { return float(std::sqrt(x * x + y * y + z * z) - r0); });
+    std::string header = "#INRIMAGE-4#{\nXDIM=24\nYDIM=24\nZDIM=24\nVDIM=1\nTYPE=float\nPIXSIZE=32 bits\nCPU=decm\nVX=0.1\nVY=0.1\nVZ=0.1\n";
+    header += std::string(252 - header.size(), '\n') + "##}\n";
+    ASSERT_EQ(header.size(), 256u);
+    hmira_test::write_bytes(dir / "s.inr", header + hmira_test::read_bytes(dir / "samples"));
+    const auto r = hmira(dir, "mc s.inr a.off");
+    ASSERT_EQ(r.code, 0) << r.err;
+    const auto a = read_back(dir / "a.off");
+    expect_sound(a);
+    EXPECT_NEAR(hmira_test::signed_volume(a), 4.0 / 3 * std::numbers::pi * r0 * r0 * r0, 0.03);
+    // Gzipped, named .inr.gz (or upper case): the same surface.
+    ASSERT_EQ(std::system(("cd '" + dir.path().string() + "' && gzip -c s.inr > S.INR.GZ").c_str()), 0);
+    const auto gz = hmira(dir, "mc S.INR.GZ b.off");
+    if (gz.code != 0 && gz.err.find("zlib") != std::string::npos) GTEST_SKIP() << "hmira built without zlib: " << gz.err;
+    ASSERT_EQ(gz.code, 0) << gz.err;
+    EXPECT_EQ(hmira_test::read_bytes(dir / "b.off"), hmira_test::read_bytes(dir / "a.off"));
+}
+
 TEST(cli, editing_refuses_bad_selections_unknown_options_and_non_manifold_input) {
     scratch_dir dir;
     ASSERT_EQ(hmira(dir, "generate cube c.obj").code, 0);
