@@ -23,8 +23,8 @@ namespace hmira_cli {
 /// Exit codes (documented in docs/cli.md and in `hmira --help`).
 enum exit_code : int {
     ok = 0,             ///< success
-    invalid_input = 1,  ///< the input is malformed, or validation found problems
-    usage = 2,          ///< bad command line (unknown option, missing argument, unknown format)
+    invalid_input = 1,  ///< the input is malformed, an edit cannot apply to it, or validation found problems
+    usage = 2,          ///< bad command line (unknown option, missing argument, value or index out of range, unknown format)
     io_failure = 3,     ///< a file cannot be read or written (missing, directory, permissions)
     internal = 4,       ///< an unexpected failure inside hmira
 };

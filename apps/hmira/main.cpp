@@ -16,8 +16,10 @@ namespace {
 const char* exit_codes_text =
     "Exit codes:\n"
     "  0  success\n"
-    "  1  invalid input: a malformed file, or validation found problems\n"
-    "  2  usage error: unknown option or subcommand, missing argument, unknown file format\n"
+    "  1  invalid input: a malformed file, a mesh the operation cannot apply to (non-manifold...),\n"
+    "     or validation found problems\n"
+    "  2  usage error: unknown option or subcommand, missing argument, a value or element index\n"
+    "     out of range, unknown file format\n"
     "  3  I/O error: a file cannot be read or written (missing, a directory, permissions)\n"
     "  4  internal error\n";
 
