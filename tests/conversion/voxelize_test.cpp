@@ -8,6 +8,7 @@
 #include <random>
 
 #include <hmira/algorithms/conversion/marching_cubes.hpp>
+#include <hmira/algorithms/generators/platonic_solids.hpp>
 #include <hmira/algorithms/conversion/voxelize.hpp>
 #include <hmira/algorithms/topology/mesh_topology.hpp>
 #include <hmira/grids/dense_grid.hpp>
@@ -224,6 +225,31 @@ TEST(VoxelizeBadInput, nan_positions_degenerate_triangles_and_bad_grids_are_refu
     ASSERT_FALSE(zero);
     EXPECT_NE(zero.error().message.find("spacing"), std::string::npos);
     EXPECT_FALSE(hmira::voxel_grid_around(hmira::face_vertex_mesh{}, 32));
+}
+
+TEST(voxelize, the_default_grid_leaves_an_empty_layer_even_where_the_surface_lies_on_the_bounding_box) {
+    hmira::face_vertex_mesh cube;
+    ASSERT_TRUE(hmira::generate_cube(cube));  // every face lies on the bounding box
+    for (std::size_t res : {4u, 7u, 16u}) {
+        const auto geo = hmira::voxel_grid_around(cube, res);
+        ASSERT_TRUE(geo);
+        const auto vox = hmira::voxelize(cube, *geo);
+        ASSERT_TRUE(vox) << vox.error().message;
+        const auto d = vox->voxels.dims();
+        std::size_t on_border = 0;
+        for (std::size_t k = 0; k < d[2]; ++k)
+            for (std::size_t j = 0; j < d[1]; ++j)
+                for (std::size_t i = 0; i < d[0]; ++i)
+                    if (i == 0 || j == 0 || k == 0 || i + 1 == d[0] || j + 1 == d[1] || k + 1 == d[2])
+                        on_border += vox->voxels.value(i, j, k);
+        EXPECT_EQ(on_border, 0u) << "resolution " << res;
+        // The cube spans res voxels; those touching its faces from outside may be set too.
+        EXPECT_GE(vox->voxels.count(), res * res * res) << "resolution " << res;
+        EXPECT_LE(vox->voxels.count(), (res + 2) * (res + 2) * (res + 2)) << "resolution " << res;
+        hmira::face_vertex_mesh back;
+        ASSERT_TRUE(hmira::marching_cubes(back, vox->voxels, {.iso = 0.5, .inside = hmira::iso_inside::above}));
+        EXPECT_TRUE(hmira::mesh_topology(back).closed()) << "resolution " << res;
+    }
 }
 
 std::filesystem::path data_dir() {

@@ -63,12 +63,16 @@ template <class M, class T = default_traits<M>>
 concept voxelize_mesh = face_vertex_range_mesh<M, T> && positioned_mesh<M, T> && vertex_index_mesh<M, T>;
 
 /// A grid of cubic voxels around the mesh's bounding box: `resolution` voxels along its longest
-/// side plus `padding` empty voxels on every side; sample (i, j, k) is voxel (i, j, k)'s centre.
+/// side plus `padding` voxels on every side; sample (i, j, k) is voxel (i, j, k)'s centre.
+/// Voxels whose closed box touches the surface are set, so a surface lying exactly on the
+/// bounding box (a cube's faces) also sets the first padding layer: with padding >= 2 (the
+/// default) at least one layer on every side stays empty, which marching cubes needs to close
+/// the surface it extracts.
 /// Errors: invalid_argument for resolution 0 or a mesh without vertices or with non-finite
 /// positions. O(V).
 template <class M, class T = default_traits<M>>
     requires positioned_mesh<M, T>
-result<grid_geometry> voxel_grid_around(const M& mesh, std::size_t resolution, std::size_t padding = 1) {
+result<grid_geometry> voxel_grid_around(const M& mesh, std::size_t resolution, std::size_t padding = 2) {
     if (resolution == 0) return fail(errc::invalid_argument, "voxel_grid_around: resolution must be at least 1");
     vec3<double> lo{std::numeric_limits<double>::max(), std::numeric_limits<double>::max(), std::numeric_limits<double>::max()};
     vec3<double> hi = -lo;
