@@ -28,6 +28,14 @@ template <class M, class T = hmira::default_traits<M>>
 concept indexed_halfedge_model = hmira::halfedge_index_mesh<M, T> && hmira::vertex_index_mesh<M, T> &&
                                  hmira::face_index_mesh<M, T> && hmira::edge_index_mesh<M, T> && hmira::positioned_mesh<M, T>;
 
+/// Skips the current typed test (and returns) on a model without the Euler operators: no raw
+/// halfedge layer, or triangles only.
+#define HMIRA_REQUIRE_EULER(M)                                                                    \
+    if constexpr (!hmira::euler_mutable_mesh<M> || !::hmira_test::indexed_halfedge_model<M>) {   \
+        GTEST_SKIP() << "not an euler_mutable_mesh (no raw halfedge layer, or triangles only)"; \
+        return;                                                                                   \
+    }
+
 /// Every reference the mesh holds, as indices, plus positions: equal snapshots mean the mesh
 /// is unchanged as seen through its traits.
 struct snapshot {

@@ -20,12 +20,6 @@ template <class M>
 class euler_operators : public ::testing::Test {};
 TYPED_TEST_SUITE(euler_operators, all_models);
 
-#define HMIRA_REQUIRE_EULER(M)                                                                    \
-    if constexpr (!hmira::euler_mutable_mesh<M> || !indexed_halfedge_model<M>) {                  \
-        GTEST_SKIP() << "not an euler_mutable_mesh (no raw halfedge layer, or triangles only)"; \
-        return;                                                                                   \
-    }
-
 /// A 3 x 3 grid of quads (S = 1, H = 0, one boundary loop).
 template <class M>
 M grid_mesh() { return mesh_from<M>(grid(3, 3)); }

@@ -27,12 +27,6 @@ template <class M>
 class split_vertex_test : public ::testing::Test {};
 TYPED_TEST_SUITE(split_vertex_test, all_models);
 
-#define HMIRA_REQUIRE_EULER(M)                                                                    \
-    if constexpr (!hmira::euler_mutable_mesh<M> || !indexed_halfedge_model<M>) {                  \
-        GTEST_SKIP() << "not an euler_mutable_mesh (no raw halfedge layer, or triangles only)"; \
-        return;                                                                                   \
-    }
-
 template <class M>
 ::testing::AssertionResult same_mesh(M a, M b) {
     compact(a);

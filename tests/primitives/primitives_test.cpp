@@ -20,12 +20,6 @@ template <class M>
 class primitives : public ::testing::Test {};
 TYPED_TEST_SUITE(primitives, all_models);
 
-#define HMIRA_REQUIRE_PRIMITIVES(M)                                                               \
-    if constexpr (!hmira::euler_mutable_mesh<M> || !indexed_halfedge_model<M>) {                  \
-        GTEST_SKIP() << "not an euler_mutable_mesh (no raw halfedge layer, or triangles only)"; \
-        return;                                                                                   \
-    }
-
 template <class M, class T = hmira::default_traits<M>>
 typename T::vertex_handle at(const M& m, double x, double y) {
     for (auto v : T::vertices(m))
@@ -49,7 +43,7 @@ void expect_report(const hmira::removal_report& r, std::size_t faces, std::size_
 }
 
 TYPED_TEST(primitives, add_vertex_adds_one_isolated_vertex) {
-    HMIRA_REQUIRE_PRIMITIVES(TypeParam)
+    HMIRA_REQUIRE_EULER(TypeParam)
     else {
         using T = hmira::default_traits<TypeParam>;
         auto m = mesh_from<TypeParam>(grid(3, 3));
@@ -62,7 +56,7 @@ TYPED_TEST(primitives, add_vertex_adds_one_isolated_vertex) {
 }
 
 TYPED_TEST(primitives, remove_vertex_takes_its_faces_and_the_edges_and_vertices_they_leave_bare) {
-    HMIRA_REQUIRE_PRIMITIVES(TypeParam)
+    HMIRA_REQUIRE_EULER(TypeParam)
     else {
         using T = hmira::default_traits<TypeParam>;
         auto m = mesh_from<TypeParam>(grid(3, 3));
@@ -79,7 +73,7 @@ TYPED_TEST(primitives, remove_vertex_takes_its_faces_and_the_edges_and_vertices_
 }
 
 TYPED_TEST(primitives, remove_vertex_can_keep_what_the_faces_leave_bare) {
-    HMIRA_REQUIRE_PRIMITIVES(TypeParam)
+    HMIRA_REQUIRE_EULER(TypeParam)
     else {
         auto m = mesh_from<TypeParam>(grid(3, 3));
         auto r = hmira::remove_vertex(m, at(m, 1, 1), {.remove_wire_edges = false, .remove_isolated_vertices = false});
@@ -91,7 +85,7 @@ TYPED_TEST(primitives, remove_vertex_can_keep_what_the_faces_leave_bare) {
 }
 
 TYPED_TEST(primitives, remove_edge_takes_its_two_faces) {
-    HMIRA_REQUIRE_PRIMITIVES(TypeParam)
+    HMIRA_REQUIRE_EULER(TypeParam)
     else {
         using T = hmira::default_traits<TypeParam>;
         auto m = mesh_from<TypeParam>(grid(3, 3));
@@ -108,7 +102,7 @@ TYPED_TEST(primitives, remove_edge_takes_its_two_faces) {
 }
 
 TYPED_TEST(primitives, remove_face_then_add_face_restores_mesh) {
-    HMIRA_REQUIRE_PRIMITIVES(TypeParam)
+    HMIRA_REQUIRE_EULER(TypeParam)
     else {
         using T = hmira::default_traits<TypeParam>;
         auto m = mesh_from<TypeParam>(grid(3, 3));
@@ -128,7 +122,7 @@ TYPED_TEST(primitives, remove_face_then_add_face_restores_mesh) {
 }
 
 TYPED_TEST(primitives, remove_corner_face_takes_its_bare_edges_and_vertex) {
-    HMIRA_REQUIRE_PRIMITIVES(TypeParam)
+    HMIRA_REQUIRE_EULER(TypeParam)
     else {
         using T = hmira::default_traits<TypeParam>;
         auto m = mesh_from<TypeParam>(grid(3, 3));
@@ -142,7 +136,7 @@ TYPED_TEST(primitives, remove_corner_face_takes_its_bare_edges_and_vertex) {
 }
 
 TYPED_TEST(primitives, add_edge_then_remove_edge_restores_mesh) {
-    HMIRA_REQUIRE_PRIMITIVES(TypeParam)
+    HMIRA_REQUIRE_EULER(TypeParam)
     else {
         using T = hmira::default_traits<TypeParam>;
         auto m = mesh_from<TypeParam>(grid(3, 3));
@@ -169,7 +163,7 @@ TYPED_TEST(primitives, add_edge_then_remove_edge_restores_mesh) {
 }
 
 TYPED_TEST(primitives, add_edge_with_bad_ends_fails_and_changes_nothing) {
-    HMIRA_REQUIRE_PRIMITIVES(TypeParam)
+    HMIRA_REQUIRE_EULER(TypeParam)
     else {
         auto m = mesh_from<TypeParam>(grid(3, 3));
         const auto before = take_snapshot(m);
