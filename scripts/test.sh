@@ -23,8 +23,10 @@ echo "== API reference (Doxygen; fails on any undocumented public entity)"
 bash scripts/docs.sh build/docs
 
 echo "== sanitizer build (AddressSanitizer + UndefinedBehaviorSanitizer)"
+# -O0: compiles in half the time of -O1 (measured on bevel_test.cpp: 59 s vs 113 s), and the
+# whole suite still runs in well under a minute under the sanitizers.
 cmake -S . -B build/asan "${common[@]}" -DHMIRA_SANITIZE=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-      -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" -DHMIRA_BUILD_BENCHMARKS=OFF >/dev/null
+      -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O0 -g1" -DHMIRA_BUILD_BENCHMARKS=OFF >/dev/null
 cmake --build build/asan -j"$jobs"
 (cd build/asan && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
    ctest --output-on-failure -j"$jobs" --timeout 900 -LE compile_fail)

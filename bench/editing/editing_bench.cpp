@@ -67,23 +67,47 @@ void bm_bevel(benchmark::State& state) {
     state.counters["faces"] = double(T::face_count(f.mesh));
 }
 
+// The four edges around a face, rounded with 3 segments: arcs at both ends of every strip.
+template <class M>
+void bm_bevel_face_rim_rounded(benchmark::State& state) {
+    using T = hmira::default_traits<M>;
+    fixture<M> f;
+    std::vector<typename T::edge_handle> rim;
+    for (auto _ : state) {
+        const auto face = f.g.faces[f.spot()];
+        rim.clear();
+        const auto first = T::face_halfedge(f.mesh, face);
+        auto h = first;
+        do {
+            rim.push_back(T::edge(f.mesh, h));
+            h = T::next(f.mesh, h);
+        } while (h != first);
+        auto r = hmira::bevel(f.mesh, rim, {.width = 0.0005, .segments = 3});
+        benchmark::DoNotOptimize(r);
+    }
+    state.counters["faces"] = double(T::face_count(f.mesh));
+}
+
 // At most one op per spot: (n / 3)^2 = 111k spots.
 constexpr benchmark::IterationCount iters = 100000;
 
 BENCHMARK_TEMPLATE(bm_truncate, hmira::halfedge_mesh)->Iterations(iters)->Unit(benchmark::kNanosecond);
 BENCHMARK_TEMPLATE(bm_extrude, hmira::halfedge_mesh)->Iterations(iters)->Unit(benchmark::kNanosecond);
 BENCHMARK_TEMPLATE(bm_bevel, hmira::halfedge_mesh)->Iterations(iters)->Unit(benchmark::kNanosecond);
+BENCHMARK_TEMPLATE(bm_bevel_face_rim_rounded, hmira::halfedge_mesh)->Iterations(iters)->Unit(benchmark::kNanosecond);
 #ifdef HMIRA_BENCH_WITH_CGAL
 using cgal_mesh = CGAL::Surface_mesh<CGAL::Simple_cartesian<double>::Point_3>;
 BENCHMARK_TEMPLATE(bm_truncate, cgal_mesh)->Iterations(iters)->Unit(benchmark::kNanosecond);
 BENCHMARK_TEMPLATE(bm_extrude, cgal_mesh)->Iterations(iters)->Unit(benchmark::kNanosecond);
 BENCHMARK_TEMPLATE(bm_bevel, cgal_mesh)->Iterations(iters)->Unit(benchmark::kNanosecond);
+BENCHMARK_TEMPLATE(bm_bevel_face_rim_rounded, cgal_mesh)->Iterations(iters)->Unit(benchmark::kNanosecond);
 #endif
 #ifdef HMIRA_BENCH_WITH_OPENMESH
 using openmesh_poly = OpenMesh::PolyMesh_ArrayKernelT<>;
 BENCHMARK_TEMPLATE(bm_truncate, openmesh_poly)->Iterations(iters)->Unit(benchmark::kNanosecond);
 BENCHMARK_TEMPLATE(bm_extrude, openmesh_poly)->Iterations(iters)->Unit(benchmark::kNanosecond);
 BENCHMARK_TEMPLATE(bm_bevel, openmesh_poly)->Iterations(iters)->Unit(benchmark::kNanosecond);
+BENCHMARK_TEMPLATE(bm_bevel_face_rim_rounded, openmesh_poly)->Iterations(iters)->Unit(benchmark::kNanosecond);
 #endif
 
 }  // namespace
