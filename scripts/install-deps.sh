@@ -3,7 +3,7 @@
 # through sudo). Packages already present are skipped, so a second run costs nothing.
 set -euo pipefail
 pkgs=(build-essential cmake ninja-build ccache pkg-config
-      libgtest-dev libbenchmark-dev libtbb-dev libcli11-dev zlib1g-dev
+      libgtest-dev libbenchmark-dev libtbb-dev libcli11-dev zlib1g-dev libtinyobjloader-dev
       libopenmesh-dev libcgal-dev libcgal-demo
       python3-venv libusb-1.0-0 doxygen
       clang-14 libclang-rt-14-dev)

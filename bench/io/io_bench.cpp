@@ -26,6 +26,9 @@
 #include <OpenMesh/Core/IO/MeshIO.hh>
 #include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
 #endif
+#ifdef HMIRA_BENCH_WITH_TINYOBJ
+#include <tiny_obj_loader.h>
+#endif
 #ifdef HMIRA_BENCH_WITH_CGAL
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/IO/polygon_soup_io.h>
@@ -130,6 +133,25 @@ void cgal_mesh(benchmark::State& s, std::string path) {
 }
 #endif
 
+#ifdef HMIRA_BENCH_WITH_TINYOBJ
+// Into indexed arrays, polygons kept (no triangulation), like read_soup.
+void tinyobj_soup(benchmark::State& s, std::string path) {
+    tinyobj::ObjReaderConfig config;
+    config.triangulate = false;
+    config.vertex_color = false;
+    for (auto _ : s) {
+        tinyobj::ObjReader reader;
+        if (!reader.ParseFromFile(path, config)) s.SkipWithError(("tinyobjloader: " + reader.Error()).c_str());
+        else {
+            std::size_t faces = 0;
+            for (const auto& shape : reader.GetShapes()) faces += shape.mesh.num_face_vertices.size();
+            label(s, reader.GetAttrib().vertices.size() / 3, faces);
+        }
+        benchmark::DoNotOptimize(reader);
+    }
+}
+#endif
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -159,6 +181,9 @@ int main(int argc, char** argv) {
         reg("mesh/" + name + "/hmira_face_vertex", hmira_mesh<hmira::face_vertex_mesh>);
 #ifdef HMIRA_BENCH_WITH_OPENMESH
         reg("mesh/" + name + "/openmesh", openmesh_mesh);
+#endif
+#ifdef HMIRA_BENCH_WITH_TINYOBJ
+        if (std::filesystem::path(p).extension() == ".obj") reg("soup/" + name + "/tinyobjloader", tinyobj_soup);
 #endif
 #ifdef HMIRA_BENCH_WITH_CGAL
         reg("soup/" + name + "/cgal", cgal_soup);

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Reading mesh files: hmira beside OpenMesh, CGAL (C++, Google Benchmark) and trimesh, Open3D
 # (Python venv), in the same run, like with like, and the ratio to the fastest peer.
-#   soup = into indexed arrays: hmira read_soup | CGAL read_polygon_soup, trimesh process=False, Open3D
+#   soup = into indexed arrays: hmira read_soup | CGAL read_polygon_soup, tinyobjloader (OBJ, polygons
+#          kept), trimesh process=False, Open3D
 #   mesh = into a connected mesh (STL welded): hmira read_mesh into halfedge_mesh |
 #          OpenMesh read_mesh (PolyMesh), CGAL read_polygon_mesh (Surface_mesh), trimesh process=True
 # Times are the minimum process CPU time over the repetitions (the machine is shared; CPU time
