@@ -110,6 +110,31 @@ hmira::face_vertex_mesh to_face_vertex(const hmira::halfedge_mesh& mesh, std::sp
 
 mesh_counts counts_of(const hmira::halfedge_mesh& mesh) { return {mesh.vertex_count(), mesh.edge_count(), mesh.face_count()}; }
 
+int run_edit(const loaded_mesh& loaded, const std::string& input, const std::string& output, const std::string& bar_label,
+             const common_options& o, const std::function<std::optional<edit_outcome>(hmira::halfedge_mesh&, int& code)>& edit) {
+    int code = ok;
+    mesh_counts before, after;
+    hmira::face_vertex_mesh edited;
+    std::string what;
+    {
+        auto bar = stage_bar(bar_label, o, loaded.mesh.face_count());
+        bar.update(0, 3);
+        auto mesh = to_halfedge(loaded.mesh, input, code);
+        if (!mesh) return code;
+        before = counts_of(*mesh);
+        bar.update(1, 3);
+        auto outcome = edit(*mesh, code);
+        if (!outcome) return code;
+        after = counts_of(*mesh);
+        bar.update(2, 3);
+        edited = to_face_vertex(*mesh, outcome->exchange);
+        what = std::move(outcome->what);
+    }
+    if (int c = save(edited, output, {}, o); c != ok) return c;
+    say(o, input + ": " + what + ": " + describe_change(before, after) + " (" + output + ")");
+    return ok;
+}
+
 std::string describe_change(const mesh_counts& before, const mesh_counts& after) {
     auto one = [](const char* what, std::size_t a, std::size_t b) { return std::string(what) + " " + std::to_string(a) + " -> " + std::to_string(b); };
     return one("V", before.vertices, after.vertices) + ", " + one("E", before.edges, after.edges) + ", " + one("F", before.faces, after.faces);

@@ -90,6 +90,18 @@ mesh_counts counts_of(const hmira::halfedge_mesh& mesh);
 /// "V 8 -> 24, E 12 -> 36, F 6 -> 14".
 std::string describe_change(const mesh_counts& before, const mesh_counts& after);
 
+/// What an editing subcommand did to the halfedge mesh: a phrase for the report ("truncated 8
+/// vertices") and, where the edit moved file vertices, the exchange for to_face_vertex().
+struct edit_outcome {
+    std::string what;
+    std::vector<std::pair<hmira::vertex_handle, hmira::vertex_handle>> exchange;
+};
+/// The frame every editing subcommand shares: converts the loaded mesh to a halfedge mesh, runs
+/// `edit` on it (nullopt after it has printed its error and set `code`), writes the result
+/// atomically and reports the change. Returns the exit code.
+int run_edit(const loaded_mesh& loaded, const std::string& input, const std::string& output, const std::string& bar_label,
+             const common_options& o, const std::function<std::optional<edit_outcome>(hmira::halfedge_mesh&, int& code)>& edit);
+
 /// Parses "X,Y,Z" (or one number for all three when `one_for_all`); nullopt if malformed.
 std::optional<std::array<double, 3>> parse_triple(const std::string& text, bool one_for_all = false);
 

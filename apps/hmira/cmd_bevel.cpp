@@ -128,43 +128,33 @@ int run_bevel(const bevel_args& a, const common_options& o) {
     auto loaded = load(a.input, o, code);
     if (!loaded) return code;
     if (!check_indices(a.vertices, loaded->mesh.vertex_count(), "vertex", "--vertex", a.input, code)) return code;
-    mesh_counts before, after;
-    hmira::face_vertex_mesh edited;
-    std::string what;
-    {
-        auto bar = stage_bar("bevelling " + a.input, o, loaded->mesh.face_count());
-        bar.update(0, 3);
-        auto mesh = to_halfedge(loaded->mesh, a.input, code);
-        if (!mesh) return code;
-        before = counts_of(*mesh);
-        bar.update(1, 3);
+    return run_edit(*loaded, a.input, a.output, "bevelling " + a.input, o, [&](hmira::halfedge_mesh& mesh, int& c) -> std::optional<edit_outcome> {
         const hmira::bevel_options options{.width = a.width, .segments = a.segments, .clamp_overlap = !a.no_clamp};
         if (vertex_mode) {
             std::vector<hmira::vertex_handle> chosen;
             if (a.vertices_all) {
-                for (auto v : mesh->vertices()) chosen.push_back(v);
+                for (auto v : mesh.vertices()) chosen.push_back(v);
             } else {
                 for (auto i : a.vertices) chosen.emplace_back(i);
             }
-            auto r = hmira::bevel_vertices(*mesh, chosen, options);
-            if (!r) return report(exit_code_for(r.error()), a.input + ": " + r.error().message);
-            what = "bevelled " + count_of(r->vertex_faces.size(), "vertex", "vertices");
-        } else {
-            auto chosen = select_edges(a, *mesh, code);
-            if (!chosen) return code;
-            auto r = hmira::bevel(*mesh, *chosen, options);
-            if (!r) return report(exit_code_for(r.error()), a.input + ": " + with_edge_ends(r.error(), *mesh));
-            char width[32];
-            std::snprintf(width, sizeof width, "%.6g", r->width);
-            what = "bevelled " + count_of(chosen->size(), "edge", "edges") + " at width " + width;
+            auto r = hmira::bevel_vertices(mesh, chosen, options);
+            if (!r) {
+                c = report(exit_code_for(r.error()), a.input + ": " + r.error().message);
+                return std::nullopt;
+            }
+            return edit_outcome{"bevelled " + count_of(r->vertex_faces.size(), "vertex", "vertices"), {}};
         }
-        after = counts_of(*mesh);
-        bar.update(2, 3);
-        edited = to_face_vertex(*mesh);
-    }
-    if (int c = save(edited, a.output, {}, o); c != ok) return c;
-    say(o, a.input + ": " + what + ": " + describe_change(before, after) + " (" + a.output + ")");
-    return ok;
+        auto chosen = select_edges(a, mesh, c);
+        if (!chosen) return std::nullopt;
+        auto r = hmira::bevel(mesh, *chosen, options);
+        if (!r) {
+            c = report(exit_code_for(r.error()), a.input + ": " + with_edge_ends(r.error(), mesh));
+            return std::nullopt;
+        }
+        char width[32];
+        std::snprintf(width, sizeof width, "%.6g", r->width);
+        return edit_outcome{"bevelled " + count_of(chosen->size(), "edge", "edges") + " at width " + width, {}};
+    });
 }
 
 const bool registered = register_command({

@@ -63,39 +63,27 @@ int run_extrude(const extrude_args& a, const common_options& o) {
     auto loaded = load(a.input, o, code);
     if (!loaded) return code;
     if (!check_indices(a.faces, loaded->mesh.face_count(), "face", "--face", a.input, code)) return code;
-    mesh_counts before, after;
-    hmira::face_vertex_mesh edited;
-    std::size_t walls = 0, moved = 0;
-    {
-        auto bar = stage_bar("extruding " + a.input, o, loaded->mesh.face_count());
-        bar.update(0, 3);
-        auto mesh = to_halfedge(loaded->mesh, a.input, code);
-        if (!mesh) return code;
-        before = counts_of(*mesh);
-        bar.update(1, 3);
+    return run_edit(*loaded, a.input, a.output, "extruding " + a.input, o, [&](hmira::halfedge_mesh& mesh, int& c) -> std::optional<edit_outcome> {
         std::vector<hmira::face_handle> chosen;
         if (a.all) {
-            for (auto f : mesh->faces()) chosen.push_back(f);
+            for (auto f : mesh.faces()) chosen.push_back(f);
         } else {
             for (auto i : a.faces) chosen.emplace_back(i);
         }
         const hmira::extrude_options options{.distance = a.distance,
                                              .direction = direction,
                                              .mode = a.mode == "individual" ? hmira::extrude_mode::individual : hmira::extrude_mode::region};
-        auto r = hmira::extrude(*mesh, chosen, options);
-        if (!r) return report(exit_code_for(r.error()), a.input + ": " + r.error().message);
-        moved = r->top_faces.size();
-        walls = r->side_faces.size();
-        after = counts_of(*mesh);
-        bar.update(2, 3);
-        edited = to_face_vertex(*mesh, stayed_behind(*mesh, *r, loaded->mesh.positions()));
-    }
-    if (int c = save(edited, a.output, {}, o); c != ok) return c;
-    char distance[32];
-    std::snprintf(distance, sizeof distance, "%g", a.distance);
-    say(o, a.input + ": extruded " + count_of(moved, "face", "faces") + " by " + distance + " with " + count_of(walls, "wall", "walls") + ": " +
-               describe_change(before, after) + " (" + a.output + ")");
-    return ok;
+        auto r = hmira::extrude(mesh, chosen, options);
+        if (!r) {
+            c = report(exit_code_for(r.error()), a.input + ": " + r.error().message);
+            return std::nullopt;
+        }
+        char distance[32];
+        std::snprintf(distance, sizeof distance, "%g", a.distance);
+        return edit_outcome{"extruded " + count_of(r->top_faces.size(), "face", "faces") + " by " + distance + " with " +
+                                count_of(r->side_faces.size(), "wall", "walls"),
+                            stayed_behind(mesh, *r, loaded->mesh.positions())};
+    });
 }
 
 const bool registered = register_command({

@@ -23,29 +23,17 @@ int run_truncate(const truncate_args& a, const common_options& o) {
     auto loaded = load(a.input, o, code);
     if (!loaded) return code;
     if (!check_indices(a.vertices, loaded->mesh.vertex_count(), "vertex", "--vertex", a.input, code)) return code;
-    mesh_counts before, after;
-    hmira::face_vertex_mesh edited;
-    std::size_t truncated = 0;
-    {
-        auto bar = stage_bar("truncating " + a.input, o, loaded->mesh.face_count());
-        bar.update(0, 3);
-        auto mesh = to_halfedge(loaded->mesh, a.input, code);
-        if (!mesh) return code;
-        before = counts_of(*mesh);
-        bar.update(1, 3);
+    return run_edit(*loaded, a.input, a.output, "truncating " + a.input, o, [&](hmira::halfedge_mesh& mesh, int& c) -> std::optional<edit_outcome> {
         const hmira::truncate_options options{.fraction = a.fraction, .distance = a.distance};
         std::vector<hmira::vertex_handle> chosen;
         for (auto i : a.vertices) chosen.emplace_back(i);
-        auto r = a.all ? hmira::truncate_all(*mesh, options) : hmira::truncate(*mesh, chosen, options);
-        if (!r) return report(exit_code_for(r.error()), a.input + ": " + r.error().message);
-        truncated = r->faces.size();
-        after = counts_of(*mesh);
-        bar.update(2, 3);
-        edited = to_face_vertex(*mesh);
-    }
-    if (int c = save(edited, a.output, {}, o); c != ok) return c;
-    say(o, a.input + ": truncated " + count_of(truncated, "vertex", "vertices") + ": " + describe_change(before, after) + " (" + a.output + ")");
-    return ok;
+        auto r = a.all ? hmira::truncate_all(mesh, options) : hmira::truncate(mesh, chosen, options);
+        if (!r) {
+            c = report(exit_code_for(r.error()), a.input + ": " + r.error().message);
+            return std::nullopt;
+        }
+        return edit_outcome{"truncated " + count_of(r->faces.size(), "vertex", "vertices"), {}};
+    });
 }
 
 const bool registered = register_command({
