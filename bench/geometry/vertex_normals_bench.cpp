@@ -14,11 +14,11 @@
 #include <hmira/meshes/face_vertex_mesh.hpp>
 #include <hmira/meshes/halfedge_mesh.hpp>
 
-#ifdef HMIRA_BENCH_OPENMESH
+#ifdef HMIRA_BENCH_WITH_OPENMESH
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 #include <hmira/interop/openmesh.hpp>
 #endif
-#ifdef HMIRA_BENCH_CGAL
+#ifdef HMIRA_BENCH_WITH_CGAL
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
@@ -79,7 +79,7 @@ void sizes(benchmark::internal::Benchmark* b) { b->Arg(128)->Arg(512)->Unit(benc
 [[maybe_unused]] const auto* const reg_2 = benchmark::RegisterBenchmark("hmira/face_vertex_mesh/area", hmira_normals<hmira::face_vertex_mesh>, hmira::normal_weighting::area)->Apply(sizes);
 [[maybe_unused]] const auto* const reg_3 = benchmark::RegisterBenchmark("hmira/halfedge_mesh/angle", hmira_normals<hmira::halfedge_mesh>, hmira::normal_weighting::angle)->Apply(sizes);
 
-#ifdef HMIRA_BENCH_OPENMESH
+#ifdef HMIRA_BENCH_WITH_OPENMESH
 using om_mesh = OpenMesh::TriMesh_ArrayKernelT<>;
 [[maybe_unused]] const auto* const reg_4 = benchmark::RegisterBenchmark("hmira/openmesh/angle", hmira_normals<om_mesh>, hmira::normal_weighting::angle)->Apply(sizes);
 [[maybe_unused]] const auto* const reg_5 = benchmark::RegisterBenchmark("hmira/openmesh/area", hmira_normals<om_mesh>, hmira::normal_weighting::area)->Apply(sizes);
@@ -102,7 +102,7 @@ void openmesh_native(benchmark::State& state, bool include_face_normals) {
 [[maybe_unused]] const auto* const reg_7 = benchmark::RegisterBenchmark("openmesh/openmesh/vertex_normals_only", openmesh_native, false)->Apply(sizes);
 #endif
 
-#ifdef HMIRA_BENCH_CGAL
+#ifdef HMIRA_BENCH_WITH_CGAL
 using cgal_kernel = CGAL::Simple_cartesian<double>;
 using cgal_mesh = CGAL::Surface_mesh<cgal_kernel::Point_3>;
 [[maybe_unused]] const auto* const reg_8 = benchmark::RegisterBenchmark("hmira/cgal/angle", hmira_normals<cgal_mesh>, hmira::normal_weighting::angle)->Apply(sizes);
