@@ -23,6 +23,7 @@
 #include <utility>
 
 #include "../../core/result.hpp"
+#include "atomic_write.hpp"
 
 namespace hmira::io::detail {
 
@@ -101,43 +102,6 @@ inline result<std::string> read_file(const std::filesystem::path& path) {
     auto f = input_file::open(path);
     if (!f) return f.error();
     return std::string(f->text());
-}
-
-/// Writes through `fill(std::ostream&)` into a temporary file next to `path`, then renames it
-/// over `path`. On any failure the temporary is removed and `path` is untouched.
-template <class Fill>
-result<void> write_file_atomically(const std::filesystem::path& path, Fill&& fill) {
-    namespace fs = std::filesystem;
-    std::error_code ec;
-    if (fs::is_directory(path, ec)) return fail(errc::io_error, path.string() + ": is a directory");
-    const fs::path dir = path.has_parent_path() ? path.parent_path() : fs::path(".");
-    if (!fs::is_directory(dir, ec)) return fail(errc::io_error, path.string() + ": folder " + dir.string() + " does not exist");
-    std::random_device rd;
-    const fs::path tmp = dir / (".tmp-" + path.filename().string() + "-" + std::to_string(rd()));
-    {
-        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-        if (!out) return fail(errc::io_error, path.string() + ": cannot create a temporary file in " + dir.string());
-        bool ok = true;
-        try {
-            ok = fill(out);
-        } catch (...) {
-            out.close();
-            fs::remove(tmp, ec);
-            throw;
-        }
-        out.flush();
-        out.close();
-        if (!ok || !out) {
-            fs::remove(tmp, ec);
-            return fail(errc::io_error, path.string() + ": write failed (disk full?); the existing file is unchanged");
-        }
-    }
-    fs::rename(tmp, path, ec);
-    if (ec) {
-        fs::remove(tmp, ec);
-        return fail(errc::io_error, path.string() + ": cannot replace the file: " + ec.message());
-    }
-    return {};
 }
 
 /// Collects output in memory and hands it to the stream in large blocks, so writers format
