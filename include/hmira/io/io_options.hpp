@@ -40,6 +40,9 @@ struct read_options {
     bool weld_stl = true;
     /// Called every few megabytes of input; leave empty for none.
     progress_callback progress = {};
+    /// Largest input read from a non-regular file (pipe, device, FIFO) before giving up with
+    /// an error; regular files are bounded by their size.
+    std::uint64_t max_input_bytes = std::uint64_t{4} << 30;
 };
 
 /// What a reader did besides filling the mesh.
