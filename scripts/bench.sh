@@ -1,12 +1,15 @@
 #!/usr/bin/env bash
 # Runs every benchmark family side by side with its peers (C++ peers from Debian, Python peers
-# from a venv that scripts/bench-venv.sh creates) and prints each family's ratio table.
+# from the venv that scripts/bench-venv.sh creates, which this script runs first) and prints each family's ratio table.
 # Usage: bash scripts/bench.sh [family ...]     (default: all of bench/*/run.sh)
 # Families: core euler geometry io marching_cubes voxelize delaunay (those with a run.sh).
 set -uo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
 bash scripts/test-data.sh build/test-data >/dev/null
+# The families' run.sh scripts take the peers from this venv; create it here so that
+# `bash scripts/bench.sh <family>` works on a fresh clone.
+bash scripts/bench-venv.sh >/dev/null
 families=("$@")
 if [ ${#families[@]} -eq 0 ]; then
   for f in bench/*/run.sh; do families+=("$(basename "$(dirname "$f")")"); done

@@ -11,8 +11,7 @@ build="${1:-$root/build-delaunay-bench}"
 shift || true
 sizes=("$@")
 [ ${#sizes[@]} -eq 0 ] && sizes=(100000 1000000 4000000)
-venv="$root/.venv-bench"
-py="$venv/bin/python"
+py="$(bash "$root/scripts/bench-venv.sh")"   # creates the peers' venv on first use
 repeats=3
 
 cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DHMIRA_BUILD_BENCHMARKS=ON \
@@ -26,7 +25,7 @@ if [ -x "$py" ] && "$py" -c "import numpy, scipy, triangle" 2>/dev/null; then ha
 if [ $have_py = 1 ]; then
   "$py" "$here/peers.py" write "$data" "${sizes[@]}"
 else
-  echo "note: $venv missing or incomplete (scripts/bench-venv.sh); Triangle and scipy skipped," \
+  echo "note: the peers venv lacks numpy, scipy or triangle (scripts/bench-venv.sh); Triangle and scipy skipped," \
        "C++ benchmarks use their own points" >&2
 fi
 

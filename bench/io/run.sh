@@ -38,7 +38,7 @@ mkdir -p "$out"
 echo "bench/io: C++ readers (hmira, OpenMesh, CGAL)..." >&2
 HMIRA_IO_BENCH_FILES="$files" "$bench" --benchmark_format=json --benchmark_out="$out/cpp.json" --benchmark_out_format=json > /dev/null
 echo "bench/io: Python readers (trimesh, Open3D)..." >&2
-py="$root/.venv-bench/bin/python"
+py="$(bash "$root/scripts/bench-venv.sh")"   # creates the peers' venv on first use
 if [ -x "$py" ]; then
   "$py" "$root/bench/io/peers.py" ${files//:/ } > "$out/py.jsonl" 2> "$out/py.err" || true
 else

@@ -2,12 +2,11 @@
 # Marching cubes, hmira against vtkFlyingEdges3D, vtkMarchingCubes, scikit-image and PyMCubes,
 # in one run on the same volumes and thread counts. Usage (from anywhere):
 #   bench/marching_cubes/run.sh            # builds into build-bench, prints a markdown table
-# Needs scripts/install-deps.sh, scripts/test-data.sh and scripts/bench-venv.sh to have run.
+# Needs scripts/install-deps.sh to have run; creates the peers' venv and test data itself.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/../.." && pwd)"
 build="${HMIRA_BENCH_BUILD:-$root/build-bench}"
-py="$root/.venv-bench/bin/python"
-[ -x "$py" ] || { echo "run.sh: $py missing; run scripts/bench-venv.sh" >&2; exit 1; }
+py="$(bash "$root/scripts/bench-venv.sh")"   # creates the peers' venv on first use
 "$root/scripts/test-data.sh" "$root/build/test-data" >/dev/null
 cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DHMIRA_BUILD_BENCHMARKS=ON >/dev/null
 cmake --build "$build" --target bench_marching_cubes -j2 >/dev/null

@@ -7,8 +7,7 @@
 set -euo pipefail
 root="$(cd "$(dirname "$0")/../.." && pwd)"
 build="${HMIRA_BENCH_BUILD:-$root/build-bench}"
-py="$root/.venv-bench/bin/python"
-[ -x "$py" ] || { echo "run.sh: $py missing; run scripts/bench-venv.sh" >&2; exit 1; }
+py="$(bash "$root/scripts/bench-venv.sh")"   # creates the peers' venv on first use
 "$root/scripts/test-data.sh" "$root/build/test-data" >/dev/null
 cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DHMIRA_BUILD_BENCHMARKS=ON >/dev/null
 cmake --build "$build" --target bench_voxelize -j2 >/dev/null
