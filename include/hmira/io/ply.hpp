@@ -269,7 +269,8 @@ result<void> ply_read_binary(const ply_header& h, polygon_soup& soup, ply_binary
             r.pos += static_cast<std::size_t>(fits) * stride;
             return r.truncated(e, fits);
         }
-        if (e.count == 0 || e.props.empty()) continue;  // nothing stored (a huge count costs nothing)
+        // Nothing stored (a huge count costs nothing); a vertex element must still have x, y, z.
+        if (e.count == 0 || (e.props.empty() && e.name != "vertex")) continue;
         if (e.name == "vertex") {
             const auto l = ply_layout(e);
             if (e.count > 0 && (l.xyz[0] < 0 || l.xyz[1] < 0 || l.xyz[2] < 0))
