@@ -167,7 +167,7 @@ inline result<polygon_soup> parse_obj(std::string_view text, const std::string& 
 template <class M, class T = default_traits<M>>
     requires readable_mesh<M, T>
 result<read_report> read_obj(M& mesh, const std::filesystem::path& path, const read_options& options = {}) {
-    auto file = detail::input_file::open(path);
+    auto file = detail::input_file::open(path, options.max_input_bytes);
     if (!file) return file.error();
     auto soup = parse_obj(file->text(), path.string(), options);
     if (!soup) return soup.error();

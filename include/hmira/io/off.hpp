@@ -128,7 +128,7 @@ inline result<polygon_soup> parse_off(std::string_view text, const std::string& 
 template <class M, class T = default_traits<M>>
     requires readable_mesh<M, T>
 result<read_report> read_off(M& mesh, const std::filesystem::path& path, const read_options& options = {}) {
-    auto file = detail::input_file::open(path);
+    auto file = detail::input_file::open(path, options.max_input_bytes);
     if (!file) return file.error();
     auto soup = parse_off(file->text(), path.string(), options);
     if (!soup) return soup.error();

@@ -536,7 +536,7 @@ inline const char* to_string(ply_encoding e) {
 template <class M, class T = default_traits<M>>
     requires readable_mesh<M, T>
 result<read_report> read_ply(M& mesh, const std::filesystem::path& path, const read_options& options = {}) {
-    auto file = detail::input_file::open(path);
+    auto file = detail::input_file::open(path, options.max_input_bytes);
     if (!file) return file.error();
     auto h = detail::parse_ply_header(file->text(), path.string());
     if (!h) return h.error();

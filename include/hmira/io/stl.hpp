@@ -259,7 +259,7 @@ inline result<stl_soup> parse_stl(std::string_view text, const std::string& name
 template <class M, class T = default_traits<M>>
     requires readable_mesh<M, T>
 result<read_report> read_stl(M& mesh, const std::filesystem::path& path, const read_options& options = {}) {
-    auto file = detail::input_file::open(path);
+    auto file = detail::input_file::open(path, options.max_input_bytes);
     if (!file) return file.error();
     auto s = parse_stl(file->text(), path.string(), options);
     if (!s) return s.error();
