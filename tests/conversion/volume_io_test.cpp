@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <random>
+#include <vector>
 
 #include <hmira/algorithms/conversion/marching_cubes.hpp>
 #include <hmira/algorithms/topology/mesh_topology.hpp>
@@ -179,6 +180,122 @@ TEST(InrVolume, gzip_volume_reads_when_zlib_is_available) {
     ASSERT_FALSE(g);
     EXPECT_EQ(g.error().code, hmira::errc::unsupported);
 #endif
+}
+
+// ---- hostile volumes (issue 14: D3, D4, D7, D8) -------------------------------------------------
+#if defined(HMIRA_HAS_ZLIB)
+/// One gzip member holding `bytes` (deflate level 9).
+std::string gzip(const std::string& bytes) {
+    z_stream z{};
+    EXPECT_EQ(deflateInit2(&z, 9, Z_DEFLATED, 15 + 16, 9, Z_DEFAULT_STRATEGY), Z_OK);
+    std::string out(deflateBound(&z, static_cast<uLong>(bytes.size())) + 64, '\0');
+    z.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(bytes.data()));
+    z.avail_in = static_cast<uInt>(bytes.size());
+    z.next_out = reinterpret_cast<Bytef*>(out.data());
+    z.avail_out = static_cast<uInt>(out.size());
+    EXPECT_EQ(deflate(&z, Z_FINISH), Z_STREAM_END);
+    out.resize(z.total_out);
+    deflateEnd(&z);
+    return out;
+}
+
+/// A gzip bomb: a 16^3 float volume's header (16 KiB of samples declared) followed by
+/// `mib` MiB of zeros, as concatenated gzip members (gunzip reads them as one stream), so
+/// that a 1 GiB bomb takes a millisecond to build.
+std::string inr_gzip_bomb(std::size_t mib) {
+    std::string bomb = gzip(inr_header("XDIM=16\nYDIM=16\nZDIM=16\nTYPE=float\nPIXSIZE=32 bits\n"));
+    const std::string zeros = gzip(std::string(1 << 20, '\0'));
+    for (std::size_t i = 0; i < mib; ++i) bomb += zeros;
+    return bomb;
+}
+
+TEST(InrVolume, a_gzip_bomb_is_refused_after_inflating_no_more_than_the_header_declares) {
+    temp_dir tmp;
+    const auto p = tmp.path / "bomb.inr.gz";
+    const auto bomb = inr_gzip_bomb(1024);  // 1 GiB inflated, about 1 MB on disk
+    EXPECT_LT(bomb.size(), 2u << 20);
+    write_bytes(p, bomb);
+    auto g = hmira::io::read_inr(p);
+    ASSERT_FALSE(g);
+    EXPECT_EQ(g.error().code, hmira::errc::parse_error);
+    EXPECT_NE(g.error().message.find(p.string() + ": "), std::string::npos) << g.error().message;
+    EXPECT_NE(g.error().message.find("goes on past the 16384 bytes of samples the header declares"), std::string::npos) << g.error().message;
+}
+
+TEST(InrVolume, gzip_data_shorter_or_longer_than_the_header_declares_is_an_error) {
+    temp_dir tmp;
+    const auto p = tmp.path / "v.inr.gz";
+    const std::string head = inr_header("XDIM=4\nYDIM=4\nZDIM=4\nTYPE=unsigned fixed\nPIXSIZE=8 bits\n");
+    write_bytes(p, gzip(head + std::string(64, '\x07')));
+    auto ok = hmira::io::read_inr(p);
+    ASSERT_TRUE(ok) << ok.error().message;
+    EXPECT_EQ(ok->value(3, 3, 3), 7.0f);
+    write_bytes(p, gzip(head + std::string(63, '\x07')));
+    auto short_one = hmira::io::read_inr(p);
+    ASSERT_FALSE(short_one);
+    EXPECT_NE(short_one.error().message.find("truncated: the header promises 64 bytes of samples, the file holds 63"), std::string::npos)
+        << short_one.error().message;
+    write_bytes(p, gzip(head + std::string(65, '\x07')));
+    auto long_one = hmira::io::read_inr(p);
+    ASSERT_FALSE(long_one);
+    EXPECT_NE(long_one.error().message.find("goes on past the 64 bytes of samples"), std::string::npos) << long_one.error().message;
+    // A header split over two gzip members still reads.
+    write_bytes(p, gzip(head.substr(0, 100)) + gzip(head.substr(100) + std::string(64, '\x07')));
+    EXPECT_TRUE(hmira::io::read_inr(p));
+}
+#endif
+
+TEST(InrVolume, plain_data_past_the_declared_samples_is_an_error) {
+    temp_dir tmp;
+    const auto p = tmp.path / "long.inr";
+    write_bytes(p, inr_header("XDIM=2\nYDIM=2\nZDIM=2\nTYPE=unsigned fixed\nPIXSIZE=8 bits\n") + std::string(8 + 5, '\0'));
+    auto g = hmira::io::read_inr(p);
+    ASSERT_FALSE(g);
+    EXPECT_EQ(g.error().code, hmira::errc::parse_error);
+    EXPECT_NE(g.error().message.find("5 bytes after the 8 bytes of samples the header declares"), std::string::npos) << g.error().message;
+}
+
+TEST(InrVolume, header_values_out_of_range_are_parse_errors_naming_the_key) {
+    temp_dir tmp;
+    const auto p = tmp.path / "h.inr";
+    const std::string rest = "TYPE=float\nPIXSIZE=32 bits\n";
+    struct bad_header {
+        std::string fields, key;
+    };
+    for (const auto& c : std::vector<bad_header>{{"XDIM=0\nYDIM=2\nZDIM=2\n" + rest, "XDIM=0"},
+                                                 {"XDIM=2.5\nYDIM=2\nZDIM=2\n" + rest, "XDIM=2.5"},
+                                                 {"XDIM=1e300\nYDIM=2\nZDIM=2\n" + rest, "XDIM=1e300"},
+                                                 {"XDIM=2\nYDIM=2\nZDIM=2\nVX=nan\n" + rest, "VX=nan"},
+                                                 {"XDIM=2\nYDIM=2\nZDIM=2\nVX=0\n" + rest, "VX=0"},
+                                                 {"XDIM=2\nYDIM=2\nZDIM=2\nVY=-1\n" + rest, "VY=-1"},
+                                                 {"XDIM=2\nYDIM=2\nZDIM=2\nTX=inf\n" + rest, "TX=inf"},
+                                                 {"XDIM=2\nYDIM=2\nZDIM=2\nTYPE=float\nPIXSIZE=1e20 bits\n", "PIXSIZE=1e20"},
+                                                 {"XDIM=2\nYDIM=2\nZDIM=2\nTYPE=float\nPIXSIZE=-8 bits\n", "PIXSIZE=-8"},
+                                                 {"XDIM=1000000\nYDIM=1000000\nZDIM=1000000\n" + rest, "too large"}}) {
+        SCOPED_TRACE(c.fields);
+        write_bytes(p, inr_header(c.fields) + std::string(32, '\0'));
+        auto g = hmira::io::read_inr(p);
+        ASSERT_FALSE(g);
+        EXPECT_EQ(g.error().code, hmira::errc::parse_error) << g.error().message;  // a problem of the file, not of the call
+        EXPECT_NE(g.error().message.find(p.string()), std::string::npos) << g.error().message;
+        EXPECT_NE(g.error().message.find(c.key), std::string::npos) << g.error().message;
+        EXPECT_EQ(g.error().message.find('\n'), std::string::npos) << g.error().message;
+    }
+}
+
+TEST(VolumeInput, endless_devices_stop_at_the_input_limit) {
+    temp_dir tmp;
+    const auto inr = tmp.path / "zero.inr", raw = tmp.path / "zero.raw";
+    fs::create_symlink("/dev/zero", inr);
+    fs::create_symlink("/dev/zero", raw);
+    auto g = hmira::io::read_inr(inr, {.max_input_bytes = 1 << 20});
+    ASSERT_FALSE(g);
+    EXPECT_EQ(g.error().code, hmira::errc::io_error);
+    EXPECT_NE(g.error().message.find(inr.string() + ": not a regular file, and longer than the input limit of 1048576 bytes"), std::string::npos)
+        << g.error().message;
+    auto r = hmira::io::read_raw<float>(raw, {{4, 4, 4}, {0, 0, 0}, {1, 1, 1}}, {.max_input_bytes = 1 << 20});
+    ASSERT_FALSE(r);
+    EXPECT_NE(r.error().message.find("input limit of 1048576 bytes"), std::string::npos) << r.error().message;
 }
 
 // An independent reader of what write_binvox produced, following the format description.

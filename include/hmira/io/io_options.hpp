@@ -41,7 +41,7 @@ struct read_options {
     /// Called every few megabytes of input; leave empty for none.
     progress_callback progress = {};
     /// Largest input read from a non-regular file (pipe, device, FIFO) before giving up with
-    /// an error; regular files are bounded by their size.
+    /// an error naming the file and the limit; regular files are read up to their size.
     std::uint64_t max_input_bytes = std::uint64_t{4} << 30;
 };
 

@@ -83,7 +83,7 @@ inline result<polygon_soup> parse_soup(std::string_view data, file_format format
 inline result<polygon_soup> read_soup(const std::filesystem::path& path, const read_options& options = {}) {
     const auto format = format_from_extension(path);
     if (!format) return detail::unknown_extension(path);
-    auto file = detail::input_file::open(path);
+    auto file = detail::input_file::open(path, options.max_input_bytes);
     if (!file) return file.error();
     return parse_soup(file->text(), *format, path.string(), options);
 }

@@ -67,6 +67,8 @@ inline result<polygon_soup> parse_obj(std::string_view text, const std::string& 
             std::array<double, 3> q{};
             for (auto& x : q)
                 if (!c.number(x)) return fail(errc::parse_error, where(c.line()) + ": vertex: " + detail::describe_bad_number(c));
+            if (!detail::all_finite(q))
+                return fail(errc::parse_error, where(c.line()) + ": vertex " + std::to_string(soup.points.size() + 1) + " has a coordinate that is not finite (NaN or infinity)");
             soup.points.push_back(q);
             std::array<double, 4> extra{};
             int n_extra = 0;
@@ -75,6 +77,8 @@ inline result<polygon_soup> parse_obj(std::string_view text, const std::string& 
                     return fail(errc::parse_error, where(c.line()) + ": vertex: " + detail::describe_bad_number(c));
                 ++n_extra;
             }
+            if (n_extra >= 3 && !detail::all_finite(std::array<double, 3>{extra[0], extra[1], extra[2]}))
+                return fail(errc::parse_error, where(c.line()) + ": vertex " + std::to_string(soup.points.size()) + " has a colour that is not finite (NaN or infinity)");
             if (n_extra >= 3) {  // `v x y z r g b`: colours in [0, 1]
                 auto& colors = soup.attributes.colors;
                 colors.resize(soup.points.size() - 1, {255, 255, 255, 255});
@@ -85,6 +89,7 @@ inline result<polygon_soup> parse_obj(std::string_view text, const std::string& 
             std::array<float, 3> n{};
             for (auto& x : n)
                 if (!c.number(x)) return fail(errc::parse_error, where(c.line()) + ": normal: " + detail::describe_bad_number(c));
+            if (!detail::all_finite(n)) return fail(errc::parse_error, where(c.line()) + ": normal " + std::to_string(vn.size() + 1) + " is not finite (NaN or infinity)");
             vn.push_back({n[0], n[1], n[2]});
         } else if (p[0] == 'f' && remaining > 1 && (p[1] == ' ' || p[1] == '\t')) {
             c.set_pos(p + 1);
@@ -167,7 +172,7 @@ inline result<polygon_soup> parse_obj(std::string_view text, const std::string& 
 template <class M, class T = default_traits<M>>
     requires readable_mesh<M, T>
 result<read_report> read_obj(M& mesh, const std::filesystem::path& path, const read_options& options = {}) {
-    auto file = detail::input_file::open(path);
+    auto file = detail::input_file::open(path, options.max_input_bytes);
     if (!file) return file.error();
     auto soup = parse_obj(file->text(), path.string(), options);
     if (!soup) return soup.error();

@@ -50,8 +50,10 @@ inline result<polygon_soup> parse_off(std::string_view text, const std::string& 
     }
     c.skip_space_and_newlines('#');
     long long nv = 0, nf = 0, ne = 0;
-    if (!c.number(nv) || !c.number(nf) || nv < 0 || nf < 0)
-        return fail(errc::parse_error, where() + ": expected vertex and face counts, " + detail::describe_bad_number(c));
+    if (!c.number(nv)) return fail(errc::parse_error, where() + ": expected vertex and face counts, " + detail::describe_bad_number(c));
+    if (nv < 0) return fail(errc::parse_error, where() + ": the vertex count " + std::to_string(nv) + " is negative");
+    if (!c.number(nf)) return fail(errc::parse_error, where() + ": expected a face count after the vertex count, " + detail::describe_bad_number(c));
+    if (nf < 0) return fail(errc::parse_error, where() + ": the face count " + std::to_string(nf) + " is negative");
     if (!c.at_line_end('#') && !c.number(ne)) return fail(errc::parse_error, where() + ": edge count: " + detail::describe_bad_number(c));
     if (nv > static_cast<long long>(UINT32_MAX) - 1) return fail(errc::parse_error, where() + ": vertex count " + std::to_string(nv) + " is too large");
     // Counts may be absurd in a broken file: reserve no more than the text could hold.
@@ -68,11 +70,13 @@ inline result<polygon_soup> parse_off(std::string_view text, const std::string& 
         std::array<double, 3> p{};
         for (auto& x : p)
             if (!c.number(x)) return fail(errc::parse_error, where() + ": vertex " + std::to_string(i) + ": " + detail::describe_bad_number(c));
+        if (!detail::all_finite(p)) return fail(errc::parse_error, where() + ": vertex " + std::to_string(i) + " has a coordinate that is not finite (NaN or infinity)");
         soup.points.push_back(p);
         if (has_normals) {
             std::array<float, 3> n{};
             for (auto& x : n)
                 if (!c.number(x)) return fail(errc::parse_error, where() + ": normal of vertex " + std::to_string(i) + ": " + detail::describe_bad_number(c));
+            if (!detail::all_finite(n)) return fail(errc::parse_error, where() + ": normal of vertex " + std::to_string(i) + " is not finite (NaN or infinity)");
             soup.attributes.normals.push_back({n[0], n[1], n[2]});
         }
         if (has_colors) {
@@ -83,12 +87,16 @@ inline result<polygon_soup> parse_off(std::string_view text, const std::string& 
                 if (!c.number(col[static_cast<std::size_t>(k)]))
                     return fail(errc::parse_error, where() + ": colour of vertex " + std::to_string(i) + ": " + detail::describe_bad_number(c));
             if (k < 3) return fail(errc::parse_error, where() + ": vertex " + std::to_string(i) + " has no colour (COFF needs r g b)");
-            // Integer colours run 0..255, float colours 0..1.
+            // Integer colours run 0..255, float colours 0..1; anything else is refused.
             const bool bytes = std::max({col[0], col[1], col[2], col[3]}) > 1.0;
             std::array<std::uint8_t, 4> rgba{};
             for (std::size_t j = 0; j < 4; ++j) {
-                const double x = j == 3 && col[3] < 0 ? (bytes ? 255.0 : 1.0) : col[j];
-                rgba[j] = bytes ? static_cast<std::uint8_t>(std::clamp(x, 0.0, 255.0)) : detail::to_byte(x);
+                const double x = j == 3 && k < 4 ? (bytes ? 255.0 : 1.0) : col[j];
+                const auto byte = detail::color_channel(x, bytes);
+                if (!byte)
+                    return fail(errc::parse_error, where() + ": colour of vertex " + std::to_string(i) + ": channel " + std::to_string(j) + " is " +
+                                                       detail::number_text(x) + ", outside " + (bytes ? "0..255" : "0..1"));
+                rgba[j] = *byte;
             }
             soup.attributes.colors.push_back(rgba);
         }
@@ -128,7 +136,7 @@ inline result<polygon_soup> parse_off(std::string_view text, const std::string& 
 template <class M, class T = default_traits<M>>
     requires readable_mesh<M, T>
 result<read_report> read_off(M& mesh, const std::filesystem::path& path, const read_options& options = {}) {
-    auto file = detail::input_file::open(path);
+    auto file = detail::input_file::open(path, options.max_input_bytes);
     if (!file) return file.error();
     auto soup = parse_off(file->text(), path.string(), options);
     if (!soup) return soup.error();

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <string_view>
@@ -228,9 +229,29 @@ inline ply_vertex_layout ply_layout(const ply_element& e) {
     return l;
 }
 
-inline std::uint8_t ply_color_byte(ply_type t, double v) {
-    if (ply_is_integer(t)) return static_cast<std::uint8_t>(std::clamp(v, 0.0, 255.0));
-    return to_byte(v);
+/// A colour channel: integer types must hold 0..255, float types 0..1 (else nothing).
+inline std::optional<std::uint8_t> ply_color_byte(ply_type t, double v) { return color_channel(v, ply_is_integer(t)); }
+
+/// "channel red is 300, outside 0..255", for the messages.
+inline std::string ply_bad_color(const ply_property& p, double v) {
+    return "colour channel " + p.name + " is " + number_text(v) + ", outside " + (ply_is_integer(p.type) ? "0..255" : "0..1");
+}
+
+/// The vertex properties the reader keeps must be single values, not lists.
+inline result<void> ply_check_vertex_scalars(const ply_element& e, const ply_vertex_layout& l, const std::string& name) {
+    auto check = [&](int prop) -> result<void> {
+        if (prop >= 0 && e.props[static_cast<std::size_t>(prop)].is_list())
+            return fail(errc::unsupported, name + ":" + std::to_string(e.line) + ": vertex property " + e.props[static_cast<std::size_t>(prop)].name +
+                                               " is a list; positions, normals and colours must be single values");
+        return {};
+    };
+    for (int prop : l.xyz)
+        if (auto r = check(prop); !r) return r;
+    for (int prop : l.normal)
+        if (auto r = check(prop); !r) return r;
+    for (int prop : l.color)
+        if (auto r = check(prop); !r) return r;
+    return {};
 }
 
 inline int ply_face_list(const ply_element& e) {
@@ -252,6 +273,9 @@ struct ply_binary_reader {
                                            " (truncated file, or a count in the header too large)", static_cast<long long>(item));
     }
     std::size_t left() const { return text.size() - pos; }
+    hmira::error not_finite(std::size_t offset, const char* what, std::size_t item) const {
+        return fail(errc::parse_error, at(offset) + ": " + what + " " + std::to_string(item) + " is not finite (NaN or infinity)", static_cast<long long>(item));
+    }
 };
 
 template <bool Swap>
@@ -269,7 +293,8 @@ result<void> ply_read_binary(const ply_header& h, polygon_soup& soup, ply_binary
             r.pos += static_cast<std::size_t>(fits) * stride;
             return r.truncated(e, fits);
         }
-        if (e.count == 0 || e.props.empty()) continue;  // nothing stored (a huge count costs nothing)
+        // Nothing stored (a huge count costs nothing); a vertex element must still have x, y, z.
+        if (e.count == 0 || (e.props.empty() && e.name != "vertex")) continue;
         if (e.name == "vertex") {
             const auto l = ply_layout(e);
             if (e.count > 0 && (l.xyz[0] < 0 || l.xyz[1] < 0 || l.xyz[2] < 0))
@@ -296,12 +321,14 @@ result<void> ply_read_binary(const ply_header& h, polygon_soup& soup, ply_binary
                 for (std::size_t i = 0; i < n; ++i) {
                     const char* item = base + i * stride;
                     soup.points[i] = {ply_raw<float, Swap>(item + off[0]), ply_raw<float, Swap>(item + off[1]), ply_raw<float, Swap>(item + off[2])};
+                    if (!all_finite(soup.points[i])) return r.not_finite(r.pos + i * stride, "vertex", i);
                 }
             } else {
                 for (std::size_t i = 0; i < n; ++i) {
                     const char* item = base + i * stride;
                     soup.points[i] = {ply_load<Swap>(type(l.xyz[0]), item + off[0]), ply_load<Swap>(type(l.xyz[1]), item + off[1]),
                                       ply_load<Swap>(type(l.xyz[2]), item + off[2])};
+                    if (!all_finite(soup.points[i])) return r.not_finite(r.pos + i * stride, "vertex", i);
                 }
             }
             if (l.has_normals()) {
@@ -309,6 +336,7 @@ result<void> ply_read_binary(const ply_header& h, polygon_soup& soup, ply_binary
                 for (std::size_t i = 0; i < n; ++i) {
                     const char* item = base + i * stride;
                     for (std::size_t k = 0; k < 3; ++k) soup.attributes.normals[i][k] = static_cast<float>(ply_load<Swap>(type(l.normal[k]), item + off[3 + k]));
+                    if (!all_finite(soup.attributes.normals[i])) return r.not_finite(r.pos + i * stride, "normal of vertex", i);
                 }
             }
             if (l.has_colors()) {
@@ -316,8 +344,18 @@ result<void> ply_read_binary(const ply_header& h, polygon_soup& soup, ply_binary
                 for (std::size_t i = 0; i < n; ++i) {
                     const char* item = base + i * stride;
                     auto& c = soup.attributes.colors[i];
-                    for (std::size_t k = 0; k < 4; ++k)
-                        c[k] = l.color[k] >= 0 ? ply_color_byte(type(l.color[k]), ply_load<Swap>(type(l.color[k]), item + off[6 + k])) : std::uint8_t{255};
+                    for (std::size_t k = 0; k < 4; ++k) {
+                        if (l.color[k] < 0) {
+                            c[k] = 255;
+                            continue;
+                        }
+                        const double v = ply_load<Swap>(type(l.color[k]), item + off[6 + k]);
+                        const auto byte = ply_color_byte(type(l.color[k]), v);
+                        if (!byte)
+                            return fail(errc::parse_error, r.at(r.pos + i * stride + off[6 + k]) + ": vertex " + std::to_string(i) + ": " +
+                                                               ply_bad_color(e.props[static_cast<std::size_t>(l.color[k])], v), static_cast<long long>(i));
+                        c[k] = *byte;
+                    }
                 }
             }
             r.pos += n * stride;
@@ -429,6 +467,7 @@ inline result<void> ply_read_ascii(const ply_header& h, polygon_soup& soup, std:
             l = ply_layout(e);
             if (e.count > 0 && (l.xyz[0] < 0 || l.xyz[1] < 0 || l.xyz[2] < 0))
                 return fail(errc::parse_error, name + ":" + std::to_string(e.line) + ": the vertex element has no x, y and z properties");
+            if (auto r = ply_check_vertex_scalars(e, l, name); !r) return r.error();
             soup.points.reserve(static_cast<std::size_t>(std::min<std::uint64_t>(e.count, text.size() / 6 + 1)));
         }
         if (is_face) {
@@ -475,13 +514,24 @@ inline result<void> ply_read_ascii(const ply_header& h, polygon_soup& soup, std:
                                                    " properties ('" + std::string(c.peek_token()) + "')");
             if (is_vertex) {
                 soup.points.push_back({values[static_cast<std::size_t>(l.xyz[0])], values[static_cast<std::size_t>(l.xyz[1])], values[static_cast<std::size_t>(l.xyz[2])]});
-                if (l.has_normals())
+                if (!all_finite(soup.points.back()))
+                    return fail(errc::parse_error, where() + ": vertex " + std::to_string(i) + " has a coordinate that is not finite (NaN or infinity)", static_cast<long long>(i));
+                if (l.has_normals()) {
                     soup.attributes.normals.push_back({static_cast<float>(values[static_cast<std::size_t>(l.normal[0])]), static_cast<float>(values[static_cast<std::size_t>(l.normal[1])]),
                                                        static_cast<float>(values[static_cast<std::size_t>(l.normal[2])])});
+                    if (!all_finite(soup.attributes.normals.back()))
+                        return fail(errc::parse_error, where() + ": normal of vertex " + std::to_string(i) + " is not finite (NaN or infinity)", static_cast<long long>(i));
+                }
                 if (l.has_colors()) {
                     std::array<std::uint8_t, 4> col{255, 255, 255, 255};
-                    for (std::size_t k = 0; k < 4; ++k)
-                        if (l.color[k] >= 0) col[k] = ply_color_byte(e.props[static_cast<std::size_t>(l.color[k])].type, values[static_cast<std::size_t>(l.color[k])]);
+                    for (std::size_t k = 0; k < 4; ++k) {
+                        if (l.color[k] < 0) continue;
+                        const auto& p = e.props[static_cast<std::size_t>(l.color[k])];
+                        const double v = values[static_cast<std::size_t>(l.color[k])];
+                        const auto byte = ply_color_byte(p.type, v);
+                        if (!byte) return fail(errc::parse_error, where() + ": vertex " + std::to_string(i) + ": " + ply_bad_color(p, v), static_cast<long long>(i));
+                        col[k] = *byte;
+                    }
                     soup.attributes.colors.push_back(col);
                 }
             }
@@ -535,7 +585,7 @@ inline const char* to_string(ply_encoding e) {
 template <class M, class T = default_traits<M>>
     requires readable_mesh<M, T>
 result<read_report> read_ply(M& mesh, const std::filesystem::path& path, const read_options& options = {}) {
-    auto file = detail::input_file::open(path);
+    auto file = detail::input_file::open(path, options.max_input_bytes);
     if (!file) return file.error();
     auto h = detail::parse_ply_header(file->text(), path.string());
     if (!h) return h.error();

@@ -178,6 +178,8 @@ inline result<void> parse_stl_ascii(std::string_view text, const std::string& na
                                                    " vertices; STL facets need exactly 3 (found '" + std::string(w.substr(0, 40)) + "')");
             for (auto& x : tri[v])
                 if (!c.number(x)) return fail(errc::parse_error, where() + ": facet " + std::to_string(facet) + " vertex: " + describe_bad_number(c));
+            if (!all_finite(tri[v]))
+                return fail(errc::parse_error, where() + ": facet " + std::to_string(facet) + " has a vertex coordinate that is not finite (NaN or infinity)");
         }
         c.skip_space_and_newlines();
         if (c.peek_token() == "vertex") return fail(errc::parse_error, where() + ": facet " + std::to_string(facet) + " has more than 3 vertices");
@@ -243,6 +245,9 @@ inline result<stl_soup> parse_stl(std::string_view text, const std::string& name
             std::memcpy(tri[v].data(), p + 12 + 12 * v, 12);
             if constexpr (std::endian::native == std::endian::big)
                 for (auto& x : tri[v]) x = std::bit_cast<float>(__builtin_bswap32(std::bit_cast<std::uint32_t>(x)));
+            if (!detail::all_finite(tri[v]))
+                return fail(errc::parse_error, name + ": byte offset " + std::to_string(p + 12 + 12 * v - text.data()) + ": triangle " + std::to_string(t) +
+                                                   " has a vertex coordinate that is not finite (NaN or infinity)", static_cast<long long>(t));
         }
         b.add(tri);
         if ((t & 0xffff) == 0) ticker.tick(static_cast<std::uint64_t>(p - text.data()));
@@ -259,7 +264,7 @@ inline result<stl_soup> parse_stl(std::string_view text, const std::string& name
 template <class M, class T = default_traits<M>>
     requires readable_mesh<M, T>
 result<read_report> read_stl(M& mesh, const std::filesystem::path& path, const read_options& options = {}) {
-    auto file = detail::input_file::open(path);
+    auto file = detail::input_file::open(path, options.max_input_bytes);
     if (!file) return file.error();
     auto s = parse_stl(file->text(), path.string(), options);
     if (!s) return s.error();

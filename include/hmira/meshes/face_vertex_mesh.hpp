@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -34,7 +35,8 @@ struct index_remap {
 /// Indexed polygons (thesis 1.2.1).
 ///
 /// Native costs, in the thesis's terms:
-///  - add vertex O(1); add face O(V_consistF) (checks handles and repeated vertices);
+///  - add vertex O(1); add face O(V_consistF), O(V_consistF log V_consistF) above 16 corners
+///    (checks handles and repeated vertices);
 ///  - face -> vertices O(V_consistF), reverse a face O(V_consistF);
 ///  - remove face O(1) (marked, reclaimed by collect_garbage);
 ///  - remove vertex O(F_all x V_face): it must scan all faces for the ones that use it;
@@ -102,23 +104,24 @@ public:
     }
 
     /// Adds a polygon. Fails, leaving the mesh unchanged, on fewer than 3 vertices, an invalid
-    /// or deleted vertex, or a vertex repeated within the face.
+    /// or deleted vertex, a vertex repeated within the face, or a face count that face
+    /// handles cannot number. O(k) for k <= 16 corners, O(k log k) above (repeats are found
+    /// by sorting a copy).
     result<face_handle> add_face(std::span<const vertex_handle> vs) {
         if (vs.size() < 3)
             return fail(errc::degenerate_face, "add_face: a face needs at least 3 vertices, got " +
                                                    std::to_string(vs.size()));
-        for (std::size_t i = 0; i < vs.size(); ++i) {
+        for (std::size_t i = 0; i < vs.size(); ++i)
             if (!is_valid(vs[i]))
                 return fail(errc::invalid_handle, "add_face: corner " + std::to_string(i) + " names vertex " +
                                                       std::to_string(static_cast<long long>(vs[i].index)) +
                                                       ", which does not exist", static_cast<long long>(vs[i].index));
-            for (std::size_t j = 0; j < i; ++j)
-                if (vs[j] == vs[i])
-                    return fail(errc::degenerate_face, "add_face: vertex " + std::to_string(vs[i].index) +
-                                                           " appears twice in the face", vs[i].index);
-        }
+        if (auto repeated = find_repeated(vs))
+            return fail(errc::degenerate_face, "add_face: vertex " + std::to_string(*repeated) + " appears twice in the face", *repeated);
+        if (face_index_bound() >= UINT32_MAX - 1)
+            return fail(errc::invalid_argument, "add_face: the mesh already holds the most faces a 32-bit face handle can name");
         corners_.insert(corners_.end(), vs.begin(), vs.end());
-        face_begin_.push_back(static_cast<std::uint32_t>(corners_.size()));
+        face_begin_.push_back(corners_.size());
         face_deleted_.push_back(0);
         face_props_.push_back();
         ++changes_;
@@ -181,14 +184,14 @@ public:
         vertex_deleted_.assign(nv, 0);
         map.faces.assign(face_index_bound(), UINT32_MAX);
         std::vector<vertex_handle> corners;
-        std::vector<std::uint32_t> begin{0};
+        std::vector<std::size_t> begin{0};
         std::uint32_t nf = 0;
         for (std::size_t f = 0; f + 1 < face_begin_.size(); ++f) {
             if (face_deleted_[f]) continue;
             map.faces[f] = nf++;
             for (auto k = face_begin_[f]; k < face_begin_[f + 1]; ++k)
                 corners.push_back(vertex_handle(map.vertices[corners_[k].index]));
-            begin.push_back(static_cast<std::uint32_t>(corners.size()));
+            begin.push_back(corners.size());
         }
         corners_ = std::move(corners);
         face_begin_ = std::move(begin);
@@ -216,10 +219,27 @@ public:
     std::uint64_t change_count() const noexcept { return changes_; }
 
 private:
+    // The index of a vertex listed twice in vs, if any: pairwise for short faces (no
+    // allocation), by sorting a copy for long ones, so a 400k-gon costs O(k log k), not O(k^2).
+    static std::optional<std::uint32_t> find_repeated(std::span<const vertex_handle> vs) {
+        if (vs.size() <= 16) {
+            for (std::size_t i = 1; i < vs.size(); ++i)
+                for (std::size_t j = 0; j < i; ++j)
+                    if (vs[j] == vs[i]) return vs[i].index;
+            return std::nullopt;
+        }
+        std::vector<std::uint32_t> sorted(vs.size());
+        for (std::size_t i = 0; i < vs.size(); ++i) sorted[i] = vs[i].index;
+        std::sort(sorted.begin(), sorted.end());
+        const auto at = std::adjacent_find(sorted.begin(), sorted.end());
+        if (at != sorted.end()) return *at;
+        return std::nullopt;
+    }
+
     std::vector<point> positions_;
     std::vector<std::uint8_t> vertex_deleted_;
     std::vector<vertex_handle> corners_;
-    std::vector<std::uint32_t> face_begin_{0};
+    std::vector<std::size_t> face_begin_{0};  // corner offsets: 64-bit, so 2^32 corners do not wrap
     std::vector<std::uint8_t> face_deleted_;
     std::size_t deleted_vertices_ = 0, deleted_faces_ = 0;
     std::uint64_t changes_ = 0;

@@ -1,16 +1,17 @@
 // hmira/io/detail/files.hpp
-// File plumbing shared by the readers and writers: whole-file input through mmap (no copy,
-// no iostream), clear errors for missing files and directories, and atomic writes
-// (temporary file in the same folder, then rename) so that a failed write never truncates
-// or replaces an existing file.
+// File plumbing shared by the readers and writers: whole-file input (read once, bounded, safe
+// against a file that shrinks underneath), clear errors for missing files and directories,
+// and text helpers; atomic writes live in atomic_write.hpp.
 #pragma once
 
 #include <fcntl.h>
-#include <sys/mman.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
+#include <cstdint>
+#include <cstdlib>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -27,79 +28,133 @@
 
 namespace hmira::io::detail {
 
-/// A read-only view of a whole file: memory-mapped when it is a regular file, read into a
-/// buffer otherwise (pipes, /dev/stdin). Move-only.
-class input_file {
+/// Largest input read from a non-regular file when the caller gives no limit (4 GiB).
+inline constexpr std::uint64_t default_max_input_bytes = std::uint64_t{4} << 30;
+
+/// Test hook: when set, input_file::open calls it with the path after it has learnt the
+/// size of a regular file and before it reads the bytes, so that a test can shrink the file
+/// in between (what another process may do at any time).
+inline void (*input_file_size_known_hook)(const char* path) = nullptr;
+
+/// A growable byte array on malloc/realloc. glibc moves a large block with mremap, so
+/// growing it copies nothing and costs no more memory than the bytes it holds. Move-only.
+class byte_buffer {
 public:
-    input_file() = default;
-    input_file(const input_file&) = delete;
-    input_file& operator=(const input_file&) = delete;
-    input_file(input_file&& o) noexcept { swap(o); }
-    input_file& operator=(input_file&& o) noexcept {
+    byte_buffer() = default;
+    byte_buffer(const byte_buffer&) = delete;
+    byte_buffer& operator=(const byte_buffer&) = delete;
+    byte_buffer(byte_buffer&& o) noexcept { swap(o); }
+    byte_buffer& operator=(byte_buffer&& o) noexcept {
         if (this != &o) {
-            release();
+            byte_buffer().swap(*this);
             swap(o);
         }
         return *this;
     }
-    ~input_file() { release(); }
+    ~byte_buffer() { std::free(data_); }
 
-    std::string_view text() const noexcept { return map_ ? std::string_view(static_cast<const char*>(map_), size_) : std::string_view(buffer_); }
+    char* data() noexcept { return data_; }
+    const char* data() const noexcept { return data_; }
+    std::size_t size() const noexcept { return size_; }
+    std::size_t capacity() const noexcept { return capacity_; }
+    std::string_view view() const noexcept { return {data_ ? data_ : "", size_}; }
+    /// Room for at least `n` bytes; false (and unchanged) when memory runs out.
+    bool reserve(std::size_t n) noexcept {
+        if (n <= capacity_) return true;
+        void* p = std::realloc(data_, n);
+        if (!p) return false;
+        data_ = static_cast<char*>(p);
+        capacity_ = n;
+        return true;
+    }
+    /// Declares the first `n` <= capacity() bytes written.
+    void set_size(std::size_t n) noexcept { size_ = n; }
+    /// Grows the capacity geometrically, but never past `limit` bytes; false when at the
+    /// limit already or out of memory.
+    bool grow_towards(std::size_t limit) noexcept {
+        if (capacity_ >= limit) return false;
+        const std::size_t want = capacity_ < limit / 2 ? std::max<std::size_t>(2 * capacity_, std::size_t{1} << 16) : limit;
+        return reserve(std::min(want, limit));
+    }
+    void swap(byte_buffer& o) noexcept {
+        std::swap(data_, o.data_);
+        std::swap(size_, o.size_);
+        std::swap(capacity_, o.capacity_);
+    }
 
-    static result<input_file> open(const std::filesystem::path& path) {
+private:
+    char* data_ = nullptr;
+    std::size_t size_ = 0, capacity_ = 0;
+};
+
+/// A whole file in memory, read once with read(2). Reading (rather than memory-mapping)
+/// means a file truncated by another process while we read it gives an error, never a
+/// SIGBUS; the copy costs a few percent of a parse. A regular file is read up to the size
+/// it had when opened; any other file (pipe, FIFO, device) up to a limit. Move-only.
+class input_file {
+public:
+    /// The bytes.
+    std::string_view text() const noexcept { return bytes_.view(); }
+
+    /// Reads the file at `path`. A non-regular file longer than `max_bytes` is an error.
+    /// Errors: io_error for a missing file, a directory, a read error, a regular file that
+    /// shrank while being read, or a non-regular file longer than `max_bytes`.
+    static result<input_file> open(const std::filesystem::path& path, std::uint64_t max_bytes = default_max_input_bytes) {
         const std::string name = path.string();
-        struct stat st{};
-        if (::stat(name.c_str(), &st) != 0)
-            return fail(errc::io_error, name + ": cannot open: " + std::strerror(errno));
-        if (S_ISDIR(st.st_mode)) return fail(errc::io_error, name + ": is a directory, not a mesh file");
         const int fd = ::open(name.c_str(), O_RDONLY | O_CLOEXEC);
         if (fd < 0) return fail(errc::io_error, name + ": cannot open: " + std::strerror(errno));
+        struct closer {
+            int fd;
+            ~closer() { ::close(fd); }
+        } close_fd{fd};
+        struct stat st{};
+        if (::fstat(fd, &st) != 0) return fail(errc::io_error, name + ": cannot open: " + std::strerror(errno));
+        if (S_ISDIR(st.st_mode)) return fail(errc::io_error, name + ": is a directory, not a mesh file");
         input_file f;
+        auto& b = f.bytes_;
+        // (A regular file of size 0 may still have content, as /proc files do: read it as a stream.)
         if (S_ISREG(st.st_mode) && st.st_size > 0) {
-            void* m = ::mmap(nullptr, static_cast<std::size_t>(st.st_size), PROT_READ, MAP_PRIVATE | MAP_POPULATE, fd, 0);
-            if (m != MAP_FAILED) {
-                ::madvise(m, static_cast<std::size_t>(st.st_size), MADV_SEQUENTIAL);
-                f.map_ = m;
-                f.size_ = static_cast<std::size_t>(st.st_size);
-                ::close(fd);
-                return f;
+            const auto size = static_cast<std::uint64_t>(st.st_size);
+            if (input_file_size_known_hook) input_file_size_known_hook(name.c_str());
+            if (size > SIZE_MAX || !b.reserve(static_cast<std::size_t>(size)))
+                return fail(errc::io_error, name + ": not enough memory to read its " + std::to_string(size) + " bytes");
+            while (b.size() < size) {
+                const auto n = ::read(fd, b.data() + b.size(), static_cast<std::size_t>(size - b.size()));
+                if (n < 0 && errno == EINTR) continue;
+                if (n < 0) return fail(errc::io_error, name + ": read error: " + std::strerror(errno));
+                if (n == 0)
+                    return fail(errc::io_error, name + ": file shrank while reading (" + std::to_string(size) + " bytes when opened, " +
+                                                    std::to_string(b.size()) + " read)");
+                b.set_size(b.size() + static_cast<std::size_t>(n));
             }
+            return f;
         }
-        char chunk[1 << 16];
+        // A pipe or device: read until its end, but never more than one byte past the limit.
+        const std::size_t limit = static_cast<std::size_t>(std::min<std::uint64_t>(max_bytes, SIZE_MAX - 1) + 1);
         for (;;) {
-            const auto n = ::read(fd, chunk, sizeof chunk);
-            if (n < 0) {
-                if (errno == EINTR) continue;
-                const std::string why = std::strerror(errno);
-                ::close(fd);
-                return fail(errc::io_error, name + ": read error: " + why);
+            if (b.size() == b.capacity()) {
+                if (b.size() > max_bytes)
+                    return fail(errc::io_error, name + ": not a regular file, and longer than the input limit of " + std::to_string(max_bytes) +
+                                                    " bytes (max_input_bytes)");
+                if (!b.grow_towards(limit))
+                    return fail(errc::io_error, name + ": not enough memory to read it (" + std::to_string(b.size()) + " bytes so far)");
             }
+            const auto n = ::read(fd, b.data() + b.size(), b.capacity() - b.size());
+            if (n < 0 && errno == EINTR) continue;
+            if (n < 0) return fail(errc::io_error, name + ": read error: " + std::strerror(errno));
             if (n == 0) break;
-            f.buffer_.append(chunk, static_cast<std::size_t>(n));
+            b.set_size(b.size() + static_cast<std::size_t>(n));
         }
-        ::close(fd);
         return f;
     }
 
 private:
-    void release() noexcept {
-        if (map_) ::munmap(map_, size_);
-        map_ = nullptr;
-        size_ = 0;
-    }
-    void swap(input_file& o) noexcept {
-        std::swap(map_, o.map_);
-        std::swap(size_, o.size_);
-        std::swap(buffer_, o.buffer_);
-    }
-    void* map_ = nullptr;
-    std::size_t size_ = 0;
-    std::string buffer_;
+    byte_buffer bytes_;
 };
 
 /// The whole file as a string (small files, tests). Prefer input_file for meshes.
-inline result<std::string> read_file(const std::filesystem::path& path) {
-    auto f = input_file::open(path);
+inline result<std::string> read_file(const std::filesystem::path& path, std::uint64_t max_bytes = default_max_input_bytes) {
+    auto f = input_file::open(path, max_bytes);
     if (!f) return f.error();
     return std::string(f->text());
 }

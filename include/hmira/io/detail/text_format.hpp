@@ -5,6 +5,8 @@
 #pragma once
 
 #include <charconv>
+#include <cmath>
+#include <optional>
 #include <cstdint>
 #include <cstring>
 #include <ostream>
@@ -143,6 +145,31 @@ private:
     const char* end_;
     std::size_t line_ = 1;
 };
+
+/// True when the three values of a point or vector are finite (no NaN, no infinity), as
+/// coordinates and normals must be.
+template <class V>
+bool all_finite(const V& v) noexcept {
+    return std::isfinite(static_cast<double>(v[0])) && std::isfinite(static_cast<double>(v[1])) && std::isfinite(static_cast<double>(v[2]));
+}
+
+/// A colour channel from a file as a byte, or nothing when it is no colour: NaN, infinite,
+/// or outside [0, 255] for byte channels (bytes = true) or [0, 1] for fractional ones.
+inline std::optional<std::uint8_t> color_channel(double v, bool bytes) noexcept {
+    if (bytes) {
+        if (!(v >= 0 && v <= 255)) return std::nullopt;
+        return static_cast<std::uint8_t>(v);
+    }
+    if (!(v >= 0 && v <= 1)) return std::nullopt;
+    return static_cast<std::uint8_t>(v * 255.0 + 0.5);
+}
+
+/// The number for a message: shortest form, "nan"/"inf" as such.
+inline std::string number_text(double v) {
+    std::string s;
+    append_number(s, v);
+    return s;
+}
 
 /// "'abc' is not a number" / "missing number" for the token at the cursor.
 inline std::string describe_bad_number(const text_cursor& c) {

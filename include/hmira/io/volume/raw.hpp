@@ -24,6 +24,10 @@ namespace hmira::io {
 struct raw_options {
     /// Byte order of multi-byte samples in the file.
     bool big_endian = false;
+    /// Reading only: largest input read from a non-regular file (pipe, device, FIFO) before
+    /// giving up with an error naming the file and the limit; a regular file is read up to
+    /// its size. The same limit as read_options::max_input_bytes.
+    std::uint64_t max_input_bytes = detail::default_max_input_bytes;
 };
 
 namespace detail {
@@ -60,24 +64,26 @@ result<dense_grid<T>> samples_to_grid(const char* bytes, const grid_geometry& g,
 
 /// Reads a raw volume of samples of type T with the geometry `g`.
 /// Errors: invalid_argument for an unusable geometry (zero dimension, spacing not positive);
-/// io_error if the file cannot be read; parse_error if its size is not exactly
+/// io_error if the file cannot be read, or is a non-regular file longer than
+/// options.max_input_bytes; parse_error if its size is not exactly
 /// g.size() * sizeof(T) bytes (truncated, or the wrong dimensions or type), or a
 /// floating-point sample is NaN. O(N).
 template <class T>
 result<dense_grid<T>> read_raw(const std::filesystem::path& path, const grid_geometry& g, const raw_options& options = {}) {
     static_assert(std::is_arithmetic_v<T>, "read_raw: samples must be a number type");
     if (auto ok = check_grid_geometry(g, "read_raw " + path.string()); !ok) return ok.error();
-    auto bytes = detail::read_file(path);
-    if (!bytes) return bytes.error();
+    auto file = detail::input_file::open(path, options.max_input_bytes);
+    if (!file) return file.error();
+    const auto bytes = file->text();
     const std::size_t expected = g.size() * sizeof(T);
-    if (bytes->size() != expected)
-        return fail(errc::parse_error, path.string() + ": holds " + std::to_string(bytes->size()) + " bytes, but " +
+    if (bytes.size() != expected)
+        return fail(errc::parse_error, path.string() + ": holds " + std::to_string(bytes.size()) + " bytes, but " +
                                            std::to_string(g.dims[0]) + " x " + std::to_string(g.dims[1]) + " x " +
                                            std::to_string(g.dims[2]) + " samples of " + std::to_string(sizeof(T)) +
                                            " bytes need " + std::to_string(expected) +
-                                           (bytes->size() < expected ? " (truncated file?)" : ""));
+                                           (bytes.size() < expected ? " (truncated file?)" : ""));
     const bool swap = sizeof(T) > 1 && (options.big_endian != (std::endian::native == std::endian::big));
-    return detail::samples_to_grid<T>(bytes->data(), g, swap, path.string());
+    return detail::samples_to_grid<T>(bytes.data(), g, swap, path.string());
 }
 
 /// Writes every sample of `grid` as its value_type, x fastest, atomically (a failed write
