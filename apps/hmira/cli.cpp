@@ -4,8 +4,11 @@
 
 #include <unistd.h>
 
+#include <cerrno>
 #include <charconv>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
 #include <limits>
 
@@ -21,18 +24,100 @@ bool register_command(command c) {
     return true;
 }
 
+std::string printable(const std::string& text) {
+    std::string out;
+    out.reserve(text.size());
+    for (char c : text) {
+        const auto u = static_cast<unsigned char>(c);
+        if (c == '\n') out += "\\n";
+        else if (c == '\r') out += "\\r";
+        else if (c == '\t') out += "\\t";
+        else if (u < 0x20 || u == 0x7f) {
+            char hex[8];
+            std::snprintf(hex, sizeof hex, "\\x%02x", u);
+            out += hex;
+        } else {
+            out += c;
+        }
+    }
+    return out;
+}
+
 int report(int code, const std::string& message) {
-    if (!message.empty()) std::cerr << "hmira: error: " << message << '\n';
+    if (!message.empty()) std::cerr << "hmira: error: " << printable(message) << '\n';
     return code;
 }
 
 int exit_code_for(const hmira::error& e) {
+    if (e.code == hmira::errc::invalid_argument) return usage;
+    return input_exit_code(e);
+}
+
+int input_exit_code(const hmira::error& e) {
     switch (e.code) {
         case hmira::errc::io_error: return io_failure;
         case hmira::errc::unsupported: return e.message.find("unknown mesh format") != std::string::npos ? usage : invalid_input;
-        case hmira::errc::invalid_argument: return usage;
         default: return invalid_input;
     }
+}
+
+namespace {
+
+std::string compact(double x) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%g", x);
+    return b;
+}
+
+}  // namespace
+
+CLI::Validator finite_number(std::string rule, std::function<bool(double)> holds) {
+    const std::string wanted = "a finite number" + (rule.empty() ? std::string() : " " + rule);
+    return CLI::Validator(
+        [wanted, holds](std::string& text) -> std::string {
+            const std::string shown = "'" + printable(text.substr(0, 40)) + (text.size() > 40 ? "...'" : "'");
+            errno = 0;
+            char* end = nullptr;
+            const double x = std::strtod(text.c_str(), &end);
+            if (text.empty() || end != text.c_str() + text.size()) return "expected " + wanted + ", got " + shown;
+            if (!std::isfinite(x)) return "expected " + wanted + ", got " + shown + " (NaN and infinity are not allowed)";
+            if (holds && !holds(x)) return "expected " + wanted + ", got " + compact(x);
+            return {};
+        },
+        rule.empty() ? "FINITE" : "FINITE " + rule);
+}
+
+CLI::Validator whole_number(std::uint64_t lo, std::uint64_t hi) {
+    const bool unbounded = hi == std::numeric_limits<std::uint64_t>::max();
+    const std::string bounds = unbounded ? ">= " + std::to_string(lo) : "in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
+    const std::string wanted = "a whole number " + bounds;
+    return CLI::Validator(
+        [wanted, lo, hi](std::string& text) -> std::string {
+            const std::string shown = "'" + printable(text.substr(0, 40)) + (text.size() > 40 ? "...'" : "'");
+            std::uint64_t x = 0;
+            const char* b = text.data();
+            const char* e = b + text.size();
+            if (b != e && *b == '+') ++b;
+            const auto r = std::from_chars(b, e, x);
+            if (r.ec == std::errc::result_out_of_range) return "expected " + wanted + ", got " + shown;
+            if (r.ec != std::errc() || r.ptr != e || b == e) return "expected " + wanted + ", got " + shown;
+            if (x < lo || x > hi) return "expected " + wanted + ", got " + std::to_string(x);
+            return {};
+        },
+        "INT " + bounds);
+}
+
+bool refuse_non_finite(const hmira::face_vertex_mesh& mesh, const std::string& path, const std::string& what, int& code) {
+    for (auto v : mesh.vertices()) {
+        const auto p = mesh.position(v);
+        if (std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z)) continue;
+        // The face-vertex mesh of a freshly read file numbers vertices densely in file order.
+        code = report(invalid_input, path + ": " + what + ": vertex " + std::to_string(v.index) + " has a non-finite coordinate (" +
+                                         compact(p.x) + ", " + compact(p.y) + ", " + compact(p.z) + "); nothing written");
+        return false;
+    }
+    code = ok;
+    return true;
 }
 
 void say(const common_options& o, const std::string& line) {
@@ -42,9 +127,9 @@ void say(const common_options& o, const std::string& line) {
 std::optional<loaded_mesh> load(const std::string& path, const common_options& o, int& code) {
     loaded_mesh out;
     progress_bar bar("reading " + path, o);
-    auto r = hmira::io::read_mesh(out.mesh, path, {.progress = bar.callback()});
+    auto r = hmira::io::read_mesh(out.mesh, path, {.progress = bar.callback(), .max_input_bytes = o.max_input_bytes});
     if (!r) {
-        code = report(exit_code_for(r.error()), r.error().message);
+        code = report(input_exit_code(r.error()), r.error().message);
         return std::nullopt;
     }
     out.report = std::move(*r);
@@ -113,6 +198,7 @@ mesh_counts counts_of(const hmira::halfedge_mesh& mesh) { return {mesh.vertex_co
 int run_edit(const loaded_mesh& loaded, const std::string& input, const std::string& output, const std::string& bar_label,
              const common_options& o, const std::function<std::optional<edit_outcome>(hmira::halfedge_mesh&, int& code)>& edit) {
     int code = ok;
+    if (!refuse_non_finite(loaded.mesh, input, "cannot edit", code)) return code;
     mesh_counts before, after;
     hmira::face_vertex_mesh edited;
     std::string what;
@@ -158,6 +244,8 @@ std::optional<std::array<double, 3>> parse_triple(const std::string& text, bool 
         ++p;
     }
     if (p != end) return std::nullopt;
+    for (int i = 0; i < n; ++i)
+        if (!std::isfinite(v[static_cast<std::size_t>(i)])) return std::nullopt;
     if (n == 1 && one_for_all) return std::array<double, 3>{v[0], v[0], v[0]};
     if (n != 3) return std::nullopt;
     return v;

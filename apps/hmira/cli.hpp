@@ -7,7 +7,9 @@
 #include <CLI/CLI.hpp>
 
 #include <array>
+#include <cstdint>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <span>
 #include <utility>
@@ -33,7 +35,20 @@ enum exit_code : int {
 struct common_options {
     int threads = 0;  ///< 0: all cores
     bool quiet = false;
+    /// Largest input read from a pipe, device or FIFO (regular files are bounded by their size).
+    std::uint64_t max_input_bytes = std::uint64_t{4} << 30;
 };
+
+/// The check of a floating-point option: a finite number (CLI11's range checks let NaN and
+/// infinity through) for which `holds` is true; `rule` says what that means ("> 0",
+/// "in [0, 180]") in the message, e.g. "--scale: expected a finite number > 0, got 'nan'".
+CLI::Validator finite_number(std::string rule = {}, std::function<bool(double)> holds = {});
+/// The check of an integer option: a whole number in [lo, hi], bounds printed as written.
+CLI::Validator whole_number(std::uint64_t lo, std::uint64_t hi);
+
+/// `text` safe to print on one line: control characters (a newline in a file name) become
+/// escapes such as \n or \x1b.
+std::string printable(const std::string& text);
 
 /// A subcommand: `setup` adds its options to `sub` and returns the function that runs it.
 struct command {
@@ -50,8 +65,18 @@ std::vector<command>& commands();
 
 /// Prints "hmira: error: <message>" (one line) unless empty, and returns the code.
 int report(int code, const std::string& message);
-/// The exit code for a library error.
+/// The exit code for a library error of an operation whose arguments came from the command
+/// line: an invalid argument is a usage error.
 int exit_code_for(const hmira::error& e);
+/// The exit code for a library error caused by the input's content (reading a file, or an
+/// operation whose options were already checked): anything but an I/O failure or an unknown
+/// file extension is invalid input.
+int input_exit_code(const hmira::error& e);
+
+/// Refuses a mesh with a NaN or infinite coordinate before `what` ("truncate", "voxelize")
+/// uses it: prints one line naming the first such vertex (file order), sets `code` to
+/// invalid_input and returns false.
+bool refuse_non_finite(const hmira::face_vertex_mesh& mesh, const std::string& path, const std::string& what, int& code);
 
 /// Prints a line on stdout unless quiet.
 void say(const common_options& o, const std::string& line);
@@ -102,7 +127,8 @@ struct edit_outcome {
 int run_edit(const loaded_mesh& loaded, const std::string& input, const std::string& output, const std::string& bar_label,
              const common_options& o, const std::function<std::optional<edit_outcome>(hmira::halfedge_mesh&, int& code)>& edit);
 
-/// Parses "X,Y,Z" (or one number for all three when `one_for_all`); nullopt if malformed.
+/// Parses "X,Y,Z" (or one number for all three when `one_for_all`); nullopt if malformed or
+/// not finite.
 std::optional<std::array<double, 3>> parse_triple(const std::string& text, bool one_for_all = false);
 
 /// Checks file-order indices of `what` ("vertex", "face") against the mesh's count; on failure

@@ -137,9 +137,19 @@ int run_bevel(const bevel_args& a, const common_options& o) {
             } else {
                 for (auto i : a.vertices) chosen.emplace_back(i);
             }
+            // Vertex-only bevel runs truncate underneath: say what the user asked for, and why.
+            const std::string mode = a.vertices_all ? "bevel --vertices-all" : "bevel --vertex";
+            for (auto v : chosen)
+                if (mesh.is_isolated(v)) {
+                    c = report(invalid_input, a.input + ": " + mode + ": vertex " + std::to_string(v.index) +
+                                                  " is used by no face, so it has no corner to cut; nothing written");
+                    return std::nullopt;
+                }
             auto r = hmira::bevel_vertices(mesh, chosen, options);
             if (!r) {
-                c = report(exit_code_for(r.error()), a.input + ": " + r.error().message);
+                std::string why = r.error().message;
+                if (why.rfind("truncate: ", 0) == 0) why = why.substr(10);
+                c = report(input_exit_code(r.error()), a.input + ": " + mode + ": " + why);
                 return std::nullopt;
             }
             return edit_outcome{"bevelled " + count_of(r->vertex_faces.size(), "vertex", "vertices"), {}};
@@ -148,7 +158,7 @@ int run_bevel(const bevel_args& a, const common_options& o) {
         if (!chosen) return std::nullopt;
         auto r = hmira::bevel(mesh, *chosen, options);
         if (!r) {
-            c = report(exit_code_for(r.error()), a.input + ": " + with_edge_ends(r.error(), mesh));
+            c = report(input_exit_code(r.error()), a.input + ": " + with_edge_ends(r.error(), mesh));
             return std::nullopt;
         }
         char width[32];
@@ -168,17 +178,17 @@ const bool registered = register_command({
         auto* all = sub.add_flag("--all", a->all, "bevel every edge between two faces");
         auto* angle = sub.add_option("--angle", a->angle, "bevel every edge whose faces' normals differ by at least DEG degrees (sharp edges)")
                           ->type_name("DEG")
-                          ->check(CLI::Range(0.0, 180.0));
+                          ->check(finite_number("in [0, 180]", [](double x) { return x >= 0 && x <= 180; }));
         sub.add_option("--width", a->width, "distance from the old edge to the new ones, inside each face next to it")
             ->capture_default_str()
-            ->check(CLI::PositiveNumber);
+            ->check(finite_number("> 0", [](double x) { return x > 0; }));
         sub.add_option("--segments", a->segments, "faces across each strip: 1 is a flat chamfer, more follow a round arc")
             ->capture_default_str()
-            ->check(CLI::Range(1, 64));
+            ->check(whole_number(1, 64));
         sub.add_flag("--no-clamp", a->no_clamp, "use the width as given even where new vertices would pass each other");
         auto* vertex = sub.add_option("--vertex", a->vertices, "vertex-only mode: cut the corner at vertex N, at --width along each edge (repeatable)")
                            ->delimiter(',')
-                           ->check(CLI::NonNegativeNumber);
+                           ->check(whole_number(0, std::numeric_limits<std::uint64_t>::max()));
         auto* vertices_all = sub.add_flag("--vertices-all", a->vertices_all, "vertex-only mode on every vertex");
         // Exactly one way to choose what is bevelled.
         const std::vector<CLI::Option*> ways{edge, all, angle, vertex, vertices_all};

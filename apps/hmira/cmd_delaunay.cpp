@@ -73,7 +73,7 @@ hmira::result<std::vector<hmira::vec3<double>>> read_points(const std::string& p
 
 int run_delaunay(const delaunay_args& a, const common_options& o) {
     auto pts = read_points(a.input);
-    if (!pts) return report(exit_code_for(pts.error()), pts.error().message);
+    if (!pts) return report(input_exit_code(pts.error()), pts.error().message);
     hmira::face_vertex_mesh m;
     auto r = hmira::delaunay_triangulation(m, *pts);
     if (!r) return report(invalid_input, a.input + ": " + r.error().message);

@@ -56,7 +56,8 @@ int run_extrude(const extrude_args& a, const common_options& o) {
     std::optional<hmira::vec3<double>> direction;
     if (!a.direction.empty()) {
         const auto d = parse_triple(a.direction);
-        if (!d) return report(usage, "--direction " + a.direction + ": expected three numbers X,Y,Z");
+        if (!d || ((*d)[0] == 0 && (*d)[1] == 0 && (*d)[2] == 0))
+            return report(usage, "--direction " + a.direction + ": expected three finite numbers X,Y,Z, not all 0");
         direction = hmira::vec3<double>{(*d)[0], (*d)[1], (*d)[2]};
     }
     int code = ok;
@@ -75,7 +76,7 @@ int run_extrude(const extrude_args& a, const common_options& o) {
                                              .mode = a.mode == "individual" ? hmira::extrude_mode::individual : hmira::extrude_mode::region};
         auto r = hmira::extrude(mesh, chosen, options);
         if (!r) {
-            c = report(exit_code_for(r.error()), a.input + ": " + r.error().message);
+            c = report(input_exit_code(r.error()), a.input + ": " + r.error().message);  // the options were checked up front
             return std::nullopt;
         }
         char distance[32];
@@ -95,10 +96,12 @@ const bool registered = register_command({
         sub.add_option("output", a->output, "mesh file to write: the input's vertices first, in file order, then the new ones")->required();
         auto* face = sub.add_option("--face", a->faces, "extrude face N (0-based, in the input file's order; repeatable, or N,M,...)")
                          ->delimiter(',')
-                         ->check(CLI::NonNegativeNumber);
+                         ->check(whole_number(0, std::numeric_limits<std::uint64_t>::max()));
         auto* all = sub.add_flag("--all", a->all, "extrude every face (use --mode individual on a closed mesh)");
         face->excludes(all);
-        sub.add_option("--distance", a->distance, "how far to move the faces; negative pushes them in")->capture_default_str();
+        sub.add_option("--distance", a->distance, "how far to move the faces; negative pushes them in")
+            ->capture_default_str()
+            ->check(finite_number("other than 0", [](double x) { return x != 0; }));
         sub.add_option("--direction", a->direction, "move along this direction (normalised) instead of the normal")->type_name("X,Y,Z");
         sub.add_option("--mode", a->mode, "region: connected faces move as one piece, walls only on the outline; individual: each face on its own")
             ->capture_default_str()

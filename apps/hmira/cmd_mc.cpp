@@ -50,7 +50,7 @@ std::optional<hmira::grid_geometry> raw_geometry(const mc_args& a, int& code) {
     const auto d = parse_triple(a.dims);
     for (std::size_t k = 0; d && k < 3; ++k) {
         if (!((*d)[k] >= 1 && (*d)[k] <= 1e6 && (*d)[k] == double(std::size_t((*d)[k])))) {
-            code = report(usage, "--dims " + a.dims + ": expected three whole numbers X,Y,Z, each at least 1");
+            code = report(usage, "--dims " + a.dims + ": expected three whole numbers X,Y,Z, each in [1, 1000000]");
             return std::nullopt;
         }
         g.dims[k] = static_cast<std::size_t>((*d)[k]);
@@ -62,7 +62,7 @@ std::optional<hmira::grid_geometry> raw_geometry(const mc_args& a, int& code) {
     if (!a.spacing.empty()) {
         const auto s = parse_triple(a.spacing, true);
         if (!s || !((*s)[0] > 0 && (*s)[1] > 0 && (*s)[2] > 0)) {
-            code = report(usage, "--spacing " + a.spacing + ": expected one positive number, or three as X,Y,Z");
+            code = report(usage, "--spacing " + a.spacing + ": expected one positive finite number, or three as X,Y,Z");
             return std::nullopt;
         }
         g.spacing = {(*s)[0], (*s)[1], (*s)[2]};
@@ -70,10 +70,15 @@ std::optional<hmira::grid_geometry> raw_geometry(const mc_args& a, int& code) {
     if (!a.origin.empty()) {
         const auto p = parse_triple(a.origin);
         if (!p) {
-            code = report(usage, "--origin " + a.origin + ": expected three numbers X,Y,Z");
+            code = report(usage, "--origin " + a.origin + ": expected three finite numbers X,Y,Z");
             return std::nullopt;
         }
         g.origin = {(*p)[0], (*p)[1], (*p)[2]};
+    }
+    // A grid whose sample count overflows is the command line's fault, not the file's.
+    if (auto fits = hmira::check_grid_geometry(g, "--dims " + a.dims); !fits) {
+        code = report(usage, fits.error().message);
+        return std::nullopt;
     }
     code = ok;
     return g;
@@ -122,14 +127,18 @@ int run_mc(const mc_args& a, const common_options& o) {
     } else {
         grid = g.error();
     }
-    if (!grid) return report(exit_code_for(grid.error()), grid.error().message);
+    // A volume file's content (zero dimensions, bad spacing, NaN samples) is invalid input; only
+    // an unknown shape name is a usage error.
+    const bool from_file = raw || ends_with_lower(a.source, ".inr") || ends_with_lower(a.source, ".inr.gz");
+    auto code_for = [&](const hmira::error& e) { return from_file ? input_exit_code(e) : exit_code_for(e); };
+    if (!grid) return report(code_for(grid.error()), grid.error().message);
     hmira::face_vertex_mesh m;
     const hmira::marching_cubes_options opt{.iso = a.iso,
                                              .inside = a.inside == "above" ? hmira::iso_inside::above : hmira::iso_inside::below,
                                              .normals = a.normals,
                                              .threads = static_cast<unsigned>(o.threads)};
     auto r = std::visit([&](const auto& g) { return hmira::marching_cubes(m, g, opt); }, *grid);
-    if (!r) return report(exit_code_for(r.error()), r.error().message);
+    if (!r) return report(code_for(r.error()), r.error().message);
     hmira::io::mesh_attributes attributes;
     for (const auto& n : r->normals) attributes.normals.push_back({float(n.x), float(n.y), float(n.z)});
     hmira::io::write_options w;
@@ -146,8 +155,8 @@ const bool registered = register_command({
         auto a = std::make_shared<mc_args>();
         sub.add_option("source", a->source, "sphere | torus | gyroid | volume.inr | volume.inr.gz | volume.raw")->required();
         sub.add_option("output", a->output, "mesh file to write (.obj .off .ply .stl)")->required();
-        sub.add_option("-n,--resolution", a->resolution, "samples per axis for a named shape")->capture_default_str()->check(CLI::Range(2, 2048));
-        sub.add_option("--iso", a->iso, "iso value")->capture_default_str();
+        sub.add_option("-n,--resolution", a->resolution, "samples per axis for a named shape")->capture_default_str()->check(whole_number(2, 2048));
+        sub.add_option("--iso", a->iso, "iso value")->capture_default_str()->check(finite_number());
         sub.add_option("--inside", a->inside, "which side of the iso value is inside")->capture_default_str()->check(CLI::IsMember({"below", "above"}));
         sub.add_flag("--normals", a->normals, "write per-vertex normals from the field's gradient");
         sub.add_option("--dims", a->dims, ".raw: samples along x, y and z (required for .raw; x varies fastest in the file)")->type_name("X,Y,Z");

@@ -42,7 +42,9 @@ const bool registered = register_command({
     [](CLI::App& sub) {
         auto a = std::make_shared<validate_args>();
         sub.add_option("input", a->input, "mesh file (.obj .off .ply .stl)")->required();
-        sub.add_option("--max", a->max, "list at most this many problems (0: all)")->capture_default_str();
+        sub.add_option("--max", a->max, "list at most this many problems (0: all)")
+            ->capture_default_str()
+            ->check(whole_number(0, std::numeric_limits<std::uint64_t>::max()));
         sub.add_flag("--relaxed", a->relaxed, "accept isolated vertices and the other states legal during Euler construction");
         sub.add_flag("--no-geometry", a->no_geometry, "skip the zero-area face check");
         return [a](const common_options& o) { return run_validate(*a, o); };

@@ -61,8 +61,11 @@ int run_voxelize(const voxelize_args& a, const common_options& o) {
     auto loaded = load(a.input, o, code);
     if (!loaded) return code;
     const auto& mesh = loaded->mesh;
+    if (!refuse_non_finite(mesh, a.input, "voxelize", code)) return code;
+    if (mesh.vertex_count() == 0) return report(invalid_input, a.input + ": voxelize: the mesh has no vertices");
     auto grid = hmira::voxel_grid_around(mesh, a.resolution, a.padding);
-    if (!grid) return report(exit_code_for(grid.error()), a.input + ": " + grid.error().message);
+    // --resolution and --padding were checked on the command line: what is left is the mesh.
+    if (!grid) return report(input_exit_code(grid.error()), a.input + ": " + grid.error().message);
     const hmira::voxelize_options options{.mode = a.surface ? hmira::voxelize_mode::surface : hmira::voxelize_mode::solid,
                                           .open_mesh = a.fill_open ? hmira::open_mesh_fill::winding_number : hmira::open_mesh_fill::surface_only,
                                           .allow_degenerate = true,
@@ -72,7 +75,7 @@ int run_voxelize(const voxelize_args& a, const common_options& o) {
         auto bar = stage_bar("voxelizing " + a.input, o, grid->size(), std::uint64_t(64) << 20);
         bar.update(0, 2);
         voxels = hmira::voxelize(mesh, *grid, options);
-        if (!voxels) return report(exit_code_for(voxels.error()), a.input + ": " + voxels.error().message);
+        if (!voxels) return report(input_exit_code(voxels.error()), a.input + ": " + voxels.error().message);
         bar.update(1, 2);
         if (ext == ".binvox") {
             if (auto w = hmira::io::write_binvox(voxels->voxels, a.output); !w) return report(exit_code_for(w.error()), w.error().message);
@@ -113,8 +116,8 @@ const bool registered = register_command({
             ->required();
         sub.add_option("-n,--resolution", a->resolution, "voxels along the longest side of the bounding box")
             ->capture_default_str()
-            ->check(CLI::Range(1, 2048));
-        sub.add_option("--padding", a->padding, "voxels added on every side of the bounding box (the outer one of 2 stays empty even where the surface lies on the box)")->capture_default_str()->check(CLI::Range(0, 1024));
+            ->check(whole_number(1, 2048));
+        sub.add_option("--padding", a->padding, "voxels added on every side of the bounding box (the outer one of 2 stays empty even where the surface lies on the box)")->capture_default_str()->check(whole_number(0, 1024));
         sub.add_flag("--surface", a->surface, "only the voxels the surface touches (default: solid, also the inside of a closed mesh)");
         sub.add_flag("--fill-open", a->fill_open, "solid mode on a mesh with holes: fill where the winding number is at least 1/2 (default: surface only, with a note)");
         return [a](const common_options& o) { return run_voxelize(*a, o); };

@@ -38,7 +38,7 @@ int main(int argc, char** argv) {
     std::function<int(const common_options&)> chosen;
     for (auto& c : all) {
         CLI::App* sub = app.add_subcommand(c.name, c.summary);
-        sub->add_option("--threads", common.threads, "worker threads (0: all cores)")->check(CLI::NonNegativeNumber);
+        sub->add_option("--threads", common.threads, "worker threads (0: all cores)")->check(whole_number(0, 4096));
         sub->add_flag("-q,--quiet", common.quiet, "print nothing but errors");
         sub->footer("\nExample:\n  " + c.example + "\n\n" + exit_codes_text);
         auto run = c.setup(*sub);

@@ -3,6 +3,8 @@
 // so that nothing upstream refuses them first.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
 #include <span>
 
 #include <hmira/algorithms/generators/platonic_solids.hpp>
@@ -114,6 +116,19 @@ TEST(validate, reports_zero_area_faces_when_checking_geometry) {
     m.points[3] = {0.5, 0.5, 0};  // face 3 (1, 2, 3) becomes collinear
     EXPECT_TRUE(has(validate(m), problem_kind::zero_area_face, 3));
     EXPECT_FALSE(has(validate(m, {.check_geometry = false}), problem_kind::zero_area_face, 3));
+}
+
+TEST(validate, reports_non_finite_positions_naming_the_vertex_even_without_the_geometry_check) {
+    for (double bad : {std::nan(""), std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()}) {
+        auto m = tetra();
+        m.points[2].y = bad;
+        for (bool geometry : {true, false}) {
+            const auto ps = validate(m, {.check_geometry = geometry});
+            EXPECT_TRUE(has(ps, problem_kind::non_finite_position, 2)) << hmira_test::describe(ps);
+            EXPECT_EQ(std::count_if(ps.begin(), ps.end(), [](const mesh_problem& p) { return p.kind == problem_kind::non_finite_position; }), 1);
+        }
+    }
+    EXPECT_STREQ(to_string(problem_kind::non_finite_position), "non-finite position");
 }
 
 TEST(validate, stops_after_max_problems) {

@@ -740,10 +740,10 @@ TEST(cli, editing_refuses_bad_selections_unknown_options_and_non_manifold_input)
     expect_refused(dir, "bevel c.obj t.obj --edge 0,1 --all", 2, "excludes", "t.obj");
     expect_refused(dir, "bevel c.obj t.obj --vertex 0 --segments 2", 2, "flat cuts only", "t.obj");
     expect_refused(dir, "bevel c.obj t.obj --vertex 0 --no-clamp", 2, "drop --no-clamp", "t.obj");
-    expect_refused(dir, "truncate c.obj t.obj --all --fraction 1", 2, "fraction must lie in (0, 1)", "t.obj");
+    expect_refused(dir, "truncate c.obj t.obj --all --fraction 1", 2, "--fraction: expected a finite number in (0, 1), got 1", "t.obj");
     expect_refused(dir, "bevel c.obj t.obj --all --width 0", 2, "--width", "t.obj");
     expect_refused(dir, "extrude c.obj t.obj --face 0 --direction 1,2", 2, "--direction 1,2", "t.obj");
-    expect_refused(dir, "extrude c.obj t.obj --face 0 --distance 0", 2, "distance must be finite and non-zero", "t.obj");
+    expect_refused(dir, "extrude c.obj t.obj --face 0 --distance 0", 2, "--distance: expected a finite number other than 0, got 0", "t.obj");
     expect_refused(dir, "extrude c.obj t.obj --face 0 --mode sideways", 2, "--mode", "t.obj");
     // Operations the mesh does not allow: invalid input, the library's reason.
     hmira_test::write_bytes(dir / "square.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 3\n");

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -26,6 +27,7 @@ enum class problem_kind {
     isolated_vertex,           ///< a vertex used by no edge or face (legal in relaxed mode)
     wire_edge,                 ///< an edge with no face on either side (legal in relaxed mode)
     broken_link,               ///< halfedge invariants violated (next/prev/opposite/target/face)
+    non_finite_position,       ///< a vertex coordinate is NaN or infinite
 };
 
 /// Readable name of a problem kind, for reports.
@@ -40,6 +42,7 @@ inline const char* to_string(problem_kind k) {
         case problem_kind::isolated_vertex: return "isolated vertex";
         case problem_kind::wire_edge: return "wire edge";
         case problem_kind::broken_link: return "broken link";
+        case problem_kind::non_finite_position: return "non-finite position";
     }
     return "unknown";
 }
@@ -212,10 +215,11 @@ void validate_halfedges(const M& mesh, const validate_options& options, problem_
 
 }  // namespace detail
 
-/// Checks the mesh; an empty result means valid. Cost O(C log C) for C face corners, plus
-/// O(H_all) for halfedge models.
+/// Checks the mesh; an empty result means valid. Cost O(V + C log C) for V vertices and C face
+/// corners, plus O(H_all) for halfedge models.
 ///
-/// Every model: faces of fewer than 3 or repeated vertices (strict mode), faces naming
+/// Meshes with positions: vertices with a NaN or infinite coordinate (always checked: no
+/// geometric operation can use them). Every model: faces of fewer than 3 or repeated vertices (strict mode), faces naming
 /// missing vertices, exactly-zero-area faces (check_geometry), edges with more than two face
 /// sides, edges run twice in one direction (inconsistent orientation), vertices whose faces
 /// form several fans, isolated vertices (strict mode).
@@ -229,6 +233,17 @@ std::vector<mesh_problem> validate(const M& mesh, const validate_options& option
     const std::size_t nv = T::vertex_index_bound(mesh);
     std::vector<std::uint8_t> live(nv, 0), used(nv, 0);
     for (auto v : T::vertices(mesh)) live[T::vertex_index(mesh, v)] = 1;
+
+    if constexpr (positioned_mesh<M, T>) {
+        for (auto v : T::vertices(mesh)) {
+            if (sink.full()) return out;
+            const auto p = static_cast<vec3<typename T::scalar>>(T::position(mesh, v));
+            if (!(std::isfinite(double(p.x)) && std::isfinite(double(p.y)) && std::isfinite(double(p.z)))) {
+                const auto vi = T::vertex_index(mesh, v);
+                sink.add(problem_kind::non_finite_position, vi, "vertex " + std::to_string(vi) + " has a non-finite coordinate (NaN or infinity)");
+            }
+        }
+    }
 
     // Faces one by one.
     std::vector<std::uint32_t> corner_vertex;  // per corner: vertex index

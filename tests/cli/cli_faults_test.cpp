@@ -1,0 +1,325 @@
+// The `hmira` tool under hostile input and faults (issue 14): non-finite numbers in files and
+// options, the documented exit code of every documented failure, interrupted and failing
+// writes, long and strange file names. Each case runs the built binary as a separate process.
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <csignal>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <hmira/algorithms/validation/validate.hpp>
+#include <hmira/io/mesh_io.hpp>
+#include <hmira/meshes/face_vertex_mesh.hpp>
+
+#include "io/io_support.hpp"
+
+namespace {
+
+using hmira_test::scratch_dir;
+
+struct run_result {
+    int code = -1;    ///< exit status, or -1 if killed by a signal
+    int signal = 0;   ///< the signal that ended it, or 0
+    std::string out, err;
+};
+
+/// Runs `[env] hmira <args>` (args already shell-quoted where needed) in `dir`.
+run_result hmira(const scratch_dir& dir, const std::string& args, const std::string& env = "") {
+    const auto out = dir.path().parent_path() / (dir.path().filename().string() + ".stdout");
+    const auto err = dir.path().parent_path() / (dir.path().filename().string() + ".stderr");
+    // exec: the status seen is hmira's own, signals included, not a shell's.
+    const std::string cmd = "cd '" + dir.path().string() + "' && " + env + " exec '" + std::string(HMIRA_CLI) + "' " + args + " >'" + out.string() +
+                            "' 2>'" + err.string() + "' </dev/null";
+    const int status = std::system(cmd.c_str());
+    run_result r;
+    if (WIFEXITED(status)) r.code = WEXITSTATUS(status);
+    if (WIFSIGNALED(status)) r.signal = WTERMSIG(status);
+    r.out = hmira_test::read_bytes(out);
+    r.err = hmira_test::read_bytes(err);
+    std::filesystem::remove(out);
+    std::filesystem::remove(err);
+    return r;
+}
+
+::testing::AssertionResult one_line_error(const run_result& r, const std::string& part) {
+    if (r.err.rfind("hmira: error: ", 0) != 0) return ::testing::AssertionFailure() << "no 'hmira: error: ' prefix: " << r.err;
+    if (std::count(r.err.begin(), r.err.end(), '\n') != 1) return ::testing::AssertionFailure() << "not one line: " << r.err;
+    if (r.err.find(part) == std::string::npos) return ::testing::AssertionFailure() << "'" << part << "' not in: " << r.err;
+    return ::testing::AssertionSuccess();
+}
+
+const char* cube_off =
+    "OFF\n8 6 0\n-1 -1 -1\n1 -1 -1\n1 -1 1\n-1 -1 1\n-1 1 -1\n1 1 -1\n1 1 1\n-1 1 1\n"
+    "4 0 1 2 3\n4 7 6 5 4\n4 0 4 5 1\n4 1 5 6 2\n4 2 6 7 3\n4 3 7 4 0\n";
+
+/// The cube with vertex 6 replaced by `coordinates`.
+std::string cube_with_vertex_6(const std::string& coordinates) {
+    std::string s = cube_off;
+    const auto at = s.find("1 1 1\n");
+    return s.replace(at, 5, coordinates);
+}
+
+/// An INRIMAGE-4 volume of 2x2x2 unsigned bytes with `extra` header lines overriding the
+/// defaults (later keys win in hmira's reader, as they are read in order).
+std::string inr(const std::string& extra, std::size_t samples = 8) {
+    std::string h = "#INRIMAGE-4#{\nXDIM=2\nYDIM=2\nZDIM=2\nVDIM=1\nTYPE=unsigned fixed\nPIXSIZE=8 bits\nCPU=decm\nVX=1\nVY=1\nVZ=1\n" + extra;
+    h += std::string(252 - h.size(), '\n') + "##}\n";
+    return h + std::string(samples, '\1');
+}
+
+std::string data_file(const std::string& name) {
+    const char* data = std::getenv("HMIRA_TEST_DATA");
+    return data ? std::string(data) + "/meshes/" + name : std::string();
+}
+
+// ---- D10: non-finite numbers ---------------------------------------------------------------
+
+TEST(cli_faults, validate_reports_a_nan_or_infinite_vertex_by_index) {
+    scratch_dir dir;
+    for (const std::string bad : {"nan 1 1", "1 inf 1", "1 1 -inf"}) {
+        SCOPED_TRACE(bad);
+        hmira_test::write_bytes(dir / "bad.off", cube_with_vertex_6(bad));
+        const auto r = hmira(dir, "validate bad.off");
+        EXPECT_EQ(r.code, 1);
+        EXPECT_NE(r.out.find("non-finite position: vertex 6 "), std::string::npos) << r.out;
+        const auto relaxed = hmira(dir, "validate bad.off --relaxed --no-geometry");
+        EXPECT_EQ(relaxed.code, 1) << relaxed.out;
+    }
+    hmira_test::write_bytes(dir / "good.off", cube_off);
+    EXPECT_EQ(hmira(dir, "validate good.off").code, 0);
+}
+
+TEST(cli_faults, info_reports_non_finite_vertices_instead_of_dropping_them_from_the_box) {
+    scratch_dir dir;
+    hmira_test::write_bytes(dir / "bad.off", cube_with_vertex_6("nan 5 5"));
+    const auto r = hmira(dir, "info bad.off");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.out.find("(finite vertices only)"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("non-finite:      1 vertex with a NaN or infinite coordinate (first: vertex 6)"), std::string::npos) << r.out;
+    const auto j = hmira(dir, "info --json bad.off");
+    EXPECT_NE(j.out.find("\"non_finite_vertices\": 1,"), std::string::npos) << j.out;
+    EXPECT_EQ(j.out.find("nan"), std::string::npos) << "JSON has no NaN literal: " << j.out;
+    hmira_test::write_bytes(dir / "good.off", cube_off);
+    EXPECT_NE(hmira(dir, "info --json good.off").out.find("\"non_finite_vertices\": 0,"), std::string::npos);
+}
+
+TEST(cli_faults, edits_and_voxelize_refuse_a_non_finite_vertex_and_write_nothing) {
+    scratch_dir dir;
+    hmira_test::write_bytes(dir / "bad.off", cube_with_vertex_6("nan 1 1"));
+    hmira_test::write_bytes(dir / "inf.off", cube_with_vertex_6("1 inf 1"));
+    for (const std::string input : {"bad.off", "inf.off"})
+        for (const std::string cmd : {"truncate IN out.off --all", "truncate IN out.off --vertex 0", "bevel IN out.off --angle 30", "bevel IN out.off --all",
+                                      "bevel IN out.off --vertices-all", "bevel IN out.off --edge 0,1", "extrude IN out.off --face 0",
+                                      "voxelize IN out.raw -n 8", "voxelize IN out.binvox -n 8"}) {
+            std::string line = cmd;
+            line.replace(line.find("IN"), 2, input);
+            SCOPED_TRACE(line);
+            const auto r = hmira(dir, line);
+            EXPECT_EQ(r.code, 1);
+            EXPECT_TRUE(one_line_error(r, "vertex 6 has a non-finite coordinate"));
+            EXPECT_EQ(r.err.find("collinear"), std::string::npos) << r.err;
+            EXPECT_EQ(dir.files(), (std::vector<std::string>{"bad.off", "inf.off"}));
+        }
+}
+
+TEST(cli_faults, every_numeric_option_refuses_nan_and_infinity_naming_the_option) {
+    scratch_dir dir;
+    hmira_test::write_bytes(dir / "c.off", cube_off);
+    struct option_case {
+        std::string command, option;
+    };
+    const std::vector<option_case> cases = {
+        {"generate cube x.obj --scale V", "--scale"},
+        {"bevel c.off x.off --angle V", "--angle"},
+        {"bevel c.off x.off --all --width V", "--width"},
+        {"truncate c.off x.off --all --fraction V", "--fraction"},
+        {"truncate c.off x.off --all --distance V", "--distance"},
+        {"extrude c.off x.off --face 0 --distance V", "--distance"},
+        {"extrude c.off x.off --face 0 --direction V,0,1", "--direction"},
+        {"mc sphere x.obj --iso V", "--iso"},
+        {"mc v.raw x.obj --dims 2,2,2 --spacing V", "--spacing"},
+        {"mc v.raw x.obj --dims 2,2,2 --origin V,0,0", "--origin"},
+        {"mc v.raw x.obj --dims V,2,2", "--dims"},
+        {"info c.off --threads V", "--threads"},
+        {"voxelize c.off x.raw -n V", "--resolution"},
+        {"voxelize c.off x.raw --padding V", "--padding"},
+        {"bevel c.off x.off --edge 0,1 --segments V", "--segments"},
+        {"truncate c.off x.off --vertex V", "--vertex"},
+        {"extrude c.off x.off --face V", "--face"},
+        {"validate c.off --max V", "--max"},
+    };
+    for (const auto& c : cases)
+        for (const std::string value : {"nan", "NaN", "inf", "-inf", "infinity"}) {
+            std::string line = c.command;
+            line.replace(line.find('V'), 1, value);
+            SCOPED_TRACE(line);
+            const auto r = hmira(dir, line);
+            EXPECT_EQ(r.code, 2);
+            EXPECT_TRUE(one_line_error(r, c.option)) << r.err;
+            EXPECT_EQ(dir.files(), std::vector<std::string>{"c.off"});
+        }
+}
+
+// ---- D14: messages ---------------------------------------------------------------------------
+
+TEST(cli_faults, bevel_angle_nan_names_the_option_not_the_selection) {
+    scratch_dir dir;
+    hmira_test::write_bytes(dir / "c.off", cube_off);
+    const auto r = hmira(dir, "bevel c.off x.off --angle nan");
+    EXPECT_EQ(r.code, 2);
+    EXPECT_TRUE(one_line_error(r, "--angle: expected a finite number in [0, 180], got 'nan'"));
+    EXPECT_EQ(r.err.find("choose edges"), std::string::npos);
+}
+
+TEST(cli_faults, range_errors_print_their_bounds_compactly) {
+    scratch_dir dir;
+    hmira_test::write_bytes(dir / "c.off", cube_off);
+    for (const std::string line : {"generate cube x.obj --scale -1", "bevel c.off x.off --all --width -2", "truncate c.off x.off --all --distance 0",
+                                   "truncate c.off x.off --vertex -1", "info c.off --threads -3", "bevel c.off x.off --angle 1e308"}) {
+        SCOPED_TRACE(line);
+        const auto r = hmira(dir, line);
+        EXPECT_EQ(r.code, 2);
+        EXPECT_TRUE(one_line_error(r, "expected a"));
+        EXPECT_LT(r.err.size(), 160u) << r.err;
+        EXPECT_EQ(r.err.find("1797693134862315"), std::string::npos) << r.err;
+    }
+    EXPECT_TRUE(one_line_error(hmira(dir, "generate cube x.obj --scale -1"), "--scale: expected a finite number > 0, got -1"));
+}
+
+TEST(cli_faults, bevel_vertices_all_blames_bevel_and_says_why_not_truncate) {
+    scratch_dir dir;
+    std::string iso = cube_off;
+    iso.replace(iso.find("8 6 0"), 5, "9 6 0");
+    iso.insert(iso.find("4 0 1 2 3"), "5 5 5\n");  // vertex 8, used by no face
+    hmira_test::write_bytes(dir / "iso.off", iso);
+    for (const std::string sel : {"--vertices-all", "--vertex 8"}) {
+        SCOPED_TRACE(sel);
+        const auto r = hmira(dir, "bevel iso.off x.off " + sel);
+        EXPECT_EQ(r.code, 1);
+        EXPECT_TRUE(one_line_error(r, "bevel " + sel.substr(0, sel.find(' ')) + ": vertex 8 is used by no face, so it has no corner to cut"));
+        EXPECT_EQ(r.err.find("truncate"), std::string::npos) << r.err;
+        EXPECT_FALSE(std::filesystem::exists(dir / "x.off"));
+    }
+}
+
+TEST(cli_faults, a_control_character_in_a_file_name_cannot_split_the_error_line) {
+    scratch_dir dir;
+    for (const std::string name : {"'a\nb.off'", "'tab\there.off'", "$'esc\\x1b[31m.off'"}) {
+        SCOPED_TRACE(name);
+        const auto r = hmira(dir, "info " + name);
+        EXPECT_EQ(r.code, 3);
+        EXPECT_TRUE(one_line_error(r, "cannot open"));
+        EXPECT_EQ(r.err.find('\x1b'), std::string::npos);
+        EXPECT_EQ(r.err.find('\t'), std::string::npos);
+    }
+    EXPECT_TRUE(one_line_error(hmira(dir, "info 'a\nb.off'"), "a\\nb.off"));
+}
+
+// ---- D7: the exit code of every documented failure -------------------------------------------
+
+/// Every failure docs/cli.md documents, with the code it documents: 1 invalid input, 2 usage,
+/// 3 I/O, (4 internal has no reproducer by design).
+TEST(cli_faults, every_documented_failure_exits_with_its_documented_code) {
+    scratch_dir dir;
+    hmira_test::write_bytes(dir / "c.off", cube_off);
+    hmira_test::write_bytes(dir / "nan.off", cube_with_vertex_6("nan 1 1"));
+    hmira_test::write_bytes(dir / "empty.off", "OFF\n0 0 0\n");
+    hmira_test::write_bytes(dir / "bad.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n");
+    hmira_test::write_bytes(dir / "open.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+    hmira_test::write_bytes(dir / "nonmanifold.off", "OFF\n5 3 0\n0 0 0\n1 0 0\n0 1 0\n0 -1 0\n0 0 1\n3 0 1 2\n3 1 0 3\n3 0 1 4\n");
+    hmira_test::write_bytes(dir / "pts.xyz", "0 0\n1 0\n");
+    hmira_test::write_bytes(dir / "v.raw", std::string(7, '\0'));
+    hmira_test::write_bytes(dir / "nan.raw", std::string("\0\0\xc0\x7f", 4) + std::string(28, '\0'));
+    hmira_test::write_bytes(dir / "ok.inr", inr(""));
+    hmira_test::write_bytes(dir / "xdim0.inr", inr("XDIM=0\n", 0));
+    hmira_test::write_bytes(dir / "vx0.inr", inr("VX=0\n"));
+    hmira_test::write_bytes(dir / "vxnan.inr", inr("VX=nan\n"));
+    hmira_test::write_bytes(dir / "vxneg.inr", inr("VX=-1\n"));
+    hmira_test::write_bytes(dir / "txinf.inr", inr("TX=inf\n"));
+    hmira_test::write_bytes(dir / "huge.inr", inr("XDIM=100000\nYDIM=100000\nZDIM=100000\n", 0));
+    hmira_test::write_bytes(dir / "short.inr", inr("", 3));
+    std::filesystem::create_directory(dir / "folder");
+    struct failure {
+        std::string command;
+        int code;
+    };
+    std::vector<failure> failures = {
+        // 1: invalid input
+        {"info bad.off", 1},
+        {"validate nonmanifold.off", 1},
+        {"validate nan.off", 1},
+        {"truncate nonmanifold.off x.off --all", 1},
+        {"truncate nan.off x.off --all", 1},
+        {"bevel open.off x.off --all", 1},
+        {"bevel c.off x.off --angle 180", 1},
+        {"extrude c.off x.off --all", 1},
+        {"voxelize empty.off x.binvox", 1},
+        {"voxelize nan.off x.binvox", 1},
+        {"delaunay pts.xyz x.off", 1},
+        {"mc v.raw x.obj --dims 2,2,2 --type uint8", 1},
+        {"mc nan.raw x.obj --dims 2,2,2", 1},
+        {"mc xdim0.inr x.obj", 1},
+        {"mc vx0.inr x.obj", 1},
+        {"mc vxnan.inr x.obj", 1},
+        {"mc vxneg.inr x.obj", 1},
+        {"mc txinf.inr x.obj", 1},
+        {"mc huge.inr x.obj", 1},
+        {"mc short.inr x.obj", 1},
+        // 2: usage
+        {"", 2},
+        {"frobnicate", 2},
+        {"info", 2},
+        {"info c.off --no-such-option", 2},
+        {"info c.xyz", 2},
+        {"convert c.off c.abc", 2},
+        {"generate cube x.obj --scale 0", 2},
+        {"generate sphere x.obj", 2},
+        {"truncate c.off x.off", 2},
+        {"truncate c.off x.off --vertex 8", 2},
+        {"truncate c.off x.off --all --fraction 1", 2},
+        {"truncate c.off x.off --all --distance 0", 2},
+        {"truncate c.off x.off --all --vertex 1", 2},
+        {"bevel c.off x.off", 2},
+        {"bevel c.off x.off --edge 0,6", 2},
+        {"bevel c.off x.off --edge 0,9", 2},
+        {"bevel c.off x.off --angle 181", 2},
+        {"bevel c.off x.off --vertex 0 --segments 2", 2},
+        {"extrude c.off x.off", 2},
+        {"extrude c.off x.off --face 6", 2},
+        {"extrude c.off x.off --face 0 --distance 0", 2},
+        {"extrude c.off x.off --face 0 --direction 0,0,0", 2},
+        {"voxelize c.off x.vox", 2},
+        {"voxelize c.off x.raw -n 0", 2},
+        {"voxelize c.off x.raw -n 2049", 2},
+        {"mc v.raw x.obj", 2},
+        {"mc v.raw x.obj --dims 1000000,1000000,1000000", 2},
+        {"mc sphere x.obj --dims 2,2,2", 2},
+        {"mc teapot x.obj", 2},
+        {"mc sphere x.obj -n 1", 2},
+        // 3: I/O
+        {"info missing.off", 3},
+        {"info folder", 3},
+        {"convert c.off folder", 3},
+        {"convert c.off no/such/folder/x.off", 3},
+        {"mc missing.inr x.obj", 3},
+        {"delaunay missing.xyz x.off", 3},
+    };
+    if (const auto deg = data_file("degtri_sliding.off"); !deg.empty() && std::filesystem::exists(deg))
+        failures.push_back({"extrude '" + deg + "' x.off --all --mode individual", 1});
+    for (const auto& f : failures) {
+        SCOPED_TRACE(f.command);
+        const auto r = hmira(dir, f.command);
+        EXPECT_EQ(r.code, f.code) << r.err;
+        if (f.command.rfind("validate", 0) == 0) EXPECT_NE(r.out.find("problem(s)"), std::string::npos) << r.out;  // problems go to stdout
+        else EXPECT_TRUE(one_line_error(r, ""));
+        EXPECT_FALSE(std::filesystem::exists(dir / "x.off") || std::filesystem::exists(dir / "x.obj") || std::filesystem::exists(dir / "x.binvox") ||
+                     std::filesystem::exists(dir / "x.raw"));
+    }
+}
+
+}  // namespace
