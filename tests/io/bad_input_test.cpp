@@ -219,10 +219,15 @@ TEST(io_bad_input, faces_the_mesh_rejects_leave_it_unchanged_and_are_named) {
     EXPECT_TRUE(io::read_mesh(fv, dir / "nm.off"));
     halfedge_mesh he;
     ASSERT_TRUE(generate_cube(he));
-    auto r = io::read_mesh(he, dir / "nm.off");
+    // Without repair the file is refused, naming the face; by default it is repaired.
+    auto r = io::read_mesh(he, dir / "nm.off", {.repair = false});
     ASSERT_FALSE(r);
-    EXPECT_NE(r.error().message.find("face 2 rejected"), std::string::npos) << r.error().message;
+    EXPECT_NE(r.error().message.find("nm.off: face 2 "), std::string::npos) << r.error().message;
     EXPECT_EQ(he.face_count(), 6u);
+    auto repaired = io::read_mesh(he, dir / "nm.off");
+    ASSERT_TRUE(repaired) << repaired.error().message;
+    EXPECT_EQ(he.face_count(), 3u);
+    EXPECT_EQ(repaired->repair.nonmanifold_edge_faces.first, std::vector<std::size_t>{2});
 }
 
 TEST(io_bad_input, garbage_headers_are_named) {

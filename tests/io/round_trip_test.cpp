@@ -180,7 +180,7 @@ TEST(io_obj, negative_indices_mean_the_same_faces_as_positive_ones) {
     ASSERT_TRUE(pos && neg && mixed) << (mixed ? "" : mixed.error().message);
     EXPECT_EQ(pos->indices, neg->indices);
     EXPECT_EQ(mixed->indices, (std::vector<std::uint32_t>{0, 1, 2, 0, 2, 3}));
-    EXPECT_EQ(mixed->face_offsets, (std::vector<std::uint32_t>{0, 3, 6}));
+    EXPECT_EQ(mixed->face_offsets, (std::vector<std::uint64_t>{0, 3, 6}));
 }
 
 TEST(io_obj, texture_and_normal_references_and_other_records_are_accepted) {

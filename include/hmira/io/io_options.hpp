@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "../algorithms/repair/repair_polygon_soup.hpp"
 #include "../core/vec3.hpp"
 
 namespace hmira::io {
@@ -43,6 +44,13 @@ struct read_options {
     /// Largest input read from a non-regular file (pipe, device, FIFO) before giving up with
     /// an error naming the file and the limit; regular files are read up to their size.
     std::uint64_t max_input_bytes = std::uint64_t{4} << 30;
+    /// Half-edge models (halfedge_mesh, winged_edge_mesh, OpenMesh, CGAL): repair what the
+    /// mesh could not hold (see repair_polygon_soup) and say so in read_report::repair. False:
+    /// refuse such a file with an error naming the first face at fault. Other models (the
+    /// face-vertex mesh) always get the file as it is.
+    bool repair = true;
+    /// When repairing: faces beyond the second on an edge keep copied vertices, or are dropped.
+    nonmanifold_edge_policy nonmanifold_edges = nonmanifold_edge_policy::duplicate_vertices;
 };
 
 /// What a reader did besides filling the mesh.
@@ -50,6 +58,16 @@ struct read_report {
     std::string format;                 ///< "obj", "off", "ply (binary little endian)", ...
     mesh_attributes attributes;         ///< normals / colours found in the file
     std::size_t dropped_triangles = 0;  ///< STL: triangles whose corners welded together
+    /// What was repaired while reading into a half-edge model (clean() when nothing was).
+    soup_repair_report repair;
+    /// Vertices the file has. The mesh's vertex i < file_vertices is the file's vertex i.
+    std::size_t file_vertices = 0;
+    /// Repair copies: the mesh's vertex file_vertices + k is a copy of the file's vertex
+    /// copied_from[k] (so every copy of a split vertex can be traced to it). Empty: no copies.
+    std::vector<std::uint32_t> copied_from;
+    /// The mesh's face i is the file's face face_source[i]. Empty when every face was created,
+    /// in file order (nothing dropped).
+    std::vector<std::size_t> face_source;
 };
 
 /// The three PLY encodings.

@@ -61,9 +61,8 @@ inline hmira::error unknown_extension(const std::filesystem::path& path) {
 }
 }  // namespace detail
 
-/// Parses text/bytes of the given format into a soup (what the fuzz targets call).
-/// Complexity O(bytes). Errors: as the format's parse_* function.
-inline result<polygon_soup> parse_soup(std::string_view data, file_format format, const std::string& name, const read_options& options = {}) {
+namespace detail {
+inline result<polygon_soup> parse_any(std::string_view data, file_format format, const std::string& name, const read_options& options) {
     switch (format) {
         case file_format::obj: return parse_obj(data, name, options);
         case file_format::off: return parse_off(data, name, options);
@@ -75,6 +74,18 @@ inline result<polygon_soup> parse_soup(std::string_view data, file_format format
         }
     }
     return fail(errc::unsupported, name + ": unknown format");
+}
+}  // namespace detail
+
+/// Parses text/bytes of the given format into a soup (what the fuzz targets call).
+/// Complexity O(bytes). Errors: as the format's parse_* function, and errc::unsupported for
+/// 2^32 points or more.
+inline result<polygon_soup> parse_soup(std::string_view data, file_format format, const std::string& name, const read_options& options = {}) {
+    auto soup = detail::parse_any(data, format, name, options);
+    // Corner indices are 32-bit: a soup with more points could not name them all.
+    if (soup && soup->points.size() > std::size_t{0xffffffffu})
+        return fail(errc::unsupported, name + ": " + std::to_string(soup->points.size()) + " vertices; at most 2^32 - 1 are supported");
+    return soup;
 }
 
 /// Reads a file into indexed arrays, the format chosen by extension. No mesh is built.
@@ -89,9 +100,17 @@ inline result<polygon_soup> read_soup(const std::filesystem::path& path, const r
 }
 
 /// Reads a mesh file into `mesh` (replacing its content), the format chosen by extension.
-/// On any error the mesh is unchanged. Complexity O(bytes + mesh insertions).
-/// Errors: errc::io_error, errc::unsupported, the format's parse errors, and the mesh's own
-/// add_face errors (for example a non-manifold face in a halfedge mesh), naming the face.
+/// Half-edge models (halfedge_mesh, winged_edge_mesh, OpenMesh, CGAL Surface_mesh) get the
+/// file repaired as repair_polygon_soup does (unless options.repair is false), and the report
+/// says what was repaired: degenerate faces dropped, faces on non-manifold edges cut free or
+/// dropped, faces flipped, non-manifold vertices split (copies follow the file's vertices, see
+/// read_report::copied_from). The mesh object is kept (OpenMesh keeps its requested
+/// properties): it is cleared only once the file is parsed and repaired.
+/// On any error the mesh is unchanged. Complexity O(bytes + C log d + mesh insertions), C
+/// corners, d the largest vertex degree.
+/// Errors: errc::io_error, errc::unsupported, the format's parse errors; without repair, a
+/// file a half-edge model cannot hold (errc::non_manifold, naming the face); for other models,
+/// the mesh's own add_face errors, naming the face.
 template <class M, class T = default_traits<M>>
     requires readable_mesh<M, T>
 result<read_report> read_mesh(M& mesh, const std::filesystem::path& path, const read_options& options = {}) {

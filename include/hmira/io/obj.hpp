@@ -142,7 +142,7 @@ inline result<polygon_soup> parse_obj(std::string_view text, const std::string& 
             const std::size_t k = soup.indices.size() - start;
             if (k < 3)
                 return fail(errc::degenerate_face, where(c.line()) + ": a face needs at least 3 vertices, got " + std::to_string(k));
-            soup.face_offsets.push_back(static_cast<std::uint32_t>(soup.indices.size()));
+            soup.face_offsets.push_back(soup.indices.size());
         }
         // Other records (vt, g, o, s, l, usemtl, mtllib, comments) carry nothing we keep.
         if (!c.next_line()) break;
@@ -176,7 +176,7 @@ result<read_report> read_obj(M& mesh, const std::filesystem::path& path, const r
     if (!file) return file.error();
     auto soup = parse_obj(file->text(), path.string(), options);
     if (!soup) return soup.error();
-    return finish_read<M, T>(mesh, std::move(*soup), path.string(), "obj");
+    return finish_read<M, T>(mesh, std::move(*soup), path.string(), "obj", 0, options);
 }
 
 /// Writes OBJ through `out`: `v` lines (with `r g b` when there are colours), `vn` lines

@@ -121,7 +121,7 @@ inline result<polygon_soup> parse_off(std::string_view text, const std::string& 
                                                    std::to_string(nv) + ")");
             soup.indices.push_back(static_cast<std::uint32_t>(idx));
         }
-        soup.face_offsets.push_back(static_cast<std::uint32_t>(soup.indices.size()));
+        soup.face_offsets.push_back(soup.indices.size());
         c.next_line();
         ticker.tick(c.offset());
     }
@@ -140,7 +140,7 @@ result<read_report> read_off(M& mesh, const std::filesystem::path& path, const r
     if (!file) return file.error();
     auto soup = parse_off(file->text(), path.string(), options);
     if (!soup) return soup.error();
-    return finish_read<M, T>(mesh, std::move(*soup), path.string(), "off");
+    return finish_read<M, T>(mesh, std::move(*soup), path.string(), "off", 0, options);
 }
 
 /// Writes OFF through `out`: "[C][N]OFF" as the attributes require, colours as 0..255 RGBA.

@@ -387,7 +387,7 @@ result<void> ply_read_binary(const ply_header& h, polygon_soup& soup, ply_binary
                         soup.indices.push_back(idx);
                     }
                     r.pos += 1 + 4 * k;
-                    soup.face_offsets.push_back(static_cast<std::uint32_t>(soup.indices.size()));
+                    soup.face_offsets.push_back(soup.indices.size());
                     if ((f & 0xffff) == 0) ticker.tick(r.pos);
                     continue;
                 }
@@ -416,7 +416,7 @@ result<void> ply_read_binary(const ply_header& h, polygon_soup& soup, ply_binary
                                                                    std::to_string(idx) + ", out of range [0, " + std::to_string(nv) + ")", static_cast<long long>(f));
                             soup.indices.push_back(static_cast<std::uint32_t>(idx));
                         }
-                        soup.face_offsets.push_back(static_cast<std::uint32_t>(soup.indices.size()));
+                        soup.face_offsets.push_back(soup.indices.size());
                     }
                     r.pos += static_cast<std::size_t>(k) * is;
                 }
@@ -535,7 +535,7 @@ inline result<void> ply_read_ascii(const ply_header& h, polygon_soup& soup, std:
                     soup.attributes.colors.push_back(col);
                 }
             }
-            if (is_face && list >= 0 && soup.indices.size() > face_start) soup.face_offsets.push_back(static_cast<std::uint32_t>(soup.indices.size()));
+            if (is_face && list >= 0 && soup.indices.size() > face_start) soup.face_offsets.push_back(soup.indices.size());
             c.next_line();
             ticker.tick(h.data_offset + c.offset());
         }
@@ -591,7 +591,7 @@ result<read_report> read_ply(M& mesh, const std::filesystem::path& path, const r
     if (!h) return h.error();
     auto soup = parse_ply(file->text(), path.string(), options);
     if (!soup) return soup.error();
-    return finish_read<M, T>(mesh, std::move(*soup), path.string(), std::string("ply (") + to_string(h->encoding) + ")");
+    return finish_read<M, T>(mesh, std::move(*soup), path.string(), std::string("ply (") + to_string(h->encoding) + ")", 0, options);
 }
 
 /// Writes PLY through `out` in the chosen encoding: x y z (the mesh's scalar type unless

@@ -105,7 +105,7 @@ struct stl_builder {
             }
         }
         soup.indices.insert(soup.indices.end(), id.begin(), id.end());
-        soup.face_offsets.push_back(static_cast<std::uint32_t>(soup.indices.size()));
+        soup.face_offsets.push_back(soup.indices.size());
     }
     polygon_soup finish() {
         const auto& pts = weld ? welder.points : loose;
@@ -268,7 +268,7 @@ result<read_report> read_stl(M& mesh, const std::filesystem::path& path, const r
     if (!file) return file.error();
     auto s = parse_stl(file->text(), path.string(), options);
     if (!s) return s.error();
-    return finish_read<M, T>(mesh, std::move(s->soup), path.string(), s->binary ? "stl (binary)" : "stl (ascii)", s->dropped_triangles);
+    return finish_read<M, T>(mesh, std::move(s->soup), path.string(), s->binary ? "stl (binary)" : "stl (ascii)", s->dropped_triangles, options);
 }
 
 /// Writes STL through `out`; polygons are fan-triangulated, facet normals computed from the

@@ -13,6 +13,7 @@
 #include <string_view>
 #include <vector>
 
+#include "../../algorithms/repair/repair_polygon_soup.hpp"
 #include "../../concepts.hpp"
 #include "../../core/result.hpp"
 #include "../io_options.hpp"
@@ -21,10 +22,12 @@ namespace hmira::io {
 
 /// Positions and faces as plain indexed arrays (faces in CSR form), plus the per-vertex
 /// attributes the file had. This is what the parse_* functions return: the fastest way to get
-/// a file's content when no mesh is needed.
+/// a file's content when no mesh is needed. Offsets are 64-bit, so a file with 2^32 corners or
+/// more cannot wrap them; vertex indices are 32-bit, and building a mesh from a soup with 2^32
+/// points or more is refused.
 struct polygon_soup {
     std::vector<std::array<double, 3>> points;   ///< positions, in file order
-    std::vector<std::uint32_t> face_offsets{0};  ///< face i is indices[face_offsets[i] .. face_offsets[i+1])
+    std::vector<std::uint64_t> face_offsets{0};  ///< face i is indices[face_offsets[i] .. face_offsets[i+1])
     std::vector<std::uint32_t> indices;          ///< face corners: indices into points
     mesh_attributes attributes;  ///< empty vectors, or one entry per point
     /// Number of faces.
@@ -134,16 +137,129 @@ result<void> assign_from_soup(M& mesh, const polygon_soup& soup, Origin&& face_o
     return {};
 }
 
-/// Shorthand used by the readers: the soup into the mesh, the attributes into the report.
+namespace detail {
+
+/// Empties a mesh that is about to be read into, keeping what the user set up on it where the
+/// model allows: OpenMesh's clear() keeps requested and added properties (values reset), and
+/// Surface_mesh keeps its property maps. hmira's meshes start afresh.
+template <class M>
+void clear_for_reading(M& mesh) {
+    if constexpr (requires { mesh.clear_without_removing_property_maps(); })
+        mesh.clear_without_removing_property_maps();
+    else if constexpr (requires { mesh.clear(); })
+        mesh.clear();
+    else
+        mesh = M{};
+}
+
+/// The first thing a repair changed, as "face 12: <why>", for refusing a file without repair.
+inline std::pair<long long, std::string> first_repair(const soup_repair_report& r) {
+    auto face = [](const repair_count& c) { return static_cast<long long>(c.first.empty() ? 0 : c.first.front()); };
+    if (r.degenerate_faces.count) return {face(r.degenerate_faces), "degenerate (fewer than 3 distinct corners, or a repeated vertex)"};
+    if (r.merged_corners.count) return {face(r.merged_corners), "repeats a corner"};
+    if (r.nonmanifold_edge_faces.count) return {face(r.nonmanifold_edge_faces), "is a third face on an edge (non-manifold edge)"};
+    if (r.detached_faces.count) return {face(r.detached_faces), "would make an edge non-manifold"};
+    if (r.flipped_faces.count) return {face(r.flipped_faces), "is wound against its neighbours"};
+    if (r.orientation_cuts) return {-1, "the surface cannot be oriented (Moebius-like)"};
+    if (r.split_vertices.count)
+        return {-1, "vertex " + std::to_string(r.split_vertices.first.front()) + " is non-manifold (its faces form several fans)"};
+    return {-1, ""};
+}
+
+}  // namespace detail
+
+/// Fills `mesh` from a soup that a half-edge model may refuse as it is: the soup is repaired
+/// first (repair_polygon_soup, as options say), and only then is the mesh cleared (keeping its
+/// properties where the model allows, see detail::clear_for_reading) and filled, so adding a
+/// face cannot fail halfway. Other models get the soup as it is, through assign_from_soup.
+/// Copies of split vertices get the attributes of their file vertex. `name` prefixes errors.
+/// \post on success, the mesh's vertex i < soup.points.size() is soup point i and the report
+///       says what was repaired and where each created element came from; on error the mesh
+///       is unchanged.
+/// Complexity: O(C log d + V) for the repair (see repair_polygon_soup) plus O(V + C) mesh
+/// insertions.
 template <class M, class T = default_traits<M>>
     requires readable_mesh<M, T>
-result<read_report> finish_read(M& mesh, polygon_soup&& soup, const std::string& name, std::string format, std::size_t dropped = 0) {
-    auto r = assign_from_soup<M, T>(mesh, soup, [&](std::size_t) { return name; });
-    if (!r) return r.error();
+result<read_report> build_from_soup(M& mesh, polygon_soup&& soup, const std::string& name, const read_options& options = {}) {
     read_report report;
-    report.format = std::move(format);
-    report.attributes = std::move(soup.attributes);
-    report.dropped_triangles = dropped;
+    report.file_vertices = soup.points.size();
+    if (soup.points.size() > std::size_t{0xffffffffu})
+        return fail(errc::unsupported, name + ": " + std::to_string(soup.points.size()) + " vertices; at most 2^32 - 1 are supported");
+    if constexpr (!halfedge_navigable_mesh<M, T>) {
+        auto r = assign_from_soup<M, T>(mesh, soup, [&](std::size_t) { return name; });
+        if (!r) return r.error();
+        report.attributes = std::move(soup.attributes);
+        return report;
+    } else {
+        using VH = typename T::vertex_handle;
+        using S = typename T::scalar;
+        auto repaired = repair_polygon_soup(soup.points.size(), soup.face_offsets, soup.indices, {.nonmanifold_edges = options.nonmanifold_edges});
+        if (!repaired) {
+            auto e = repaired.error();
+            e.message = name + ": " + e.message;
+            return e;
+        }
+        if (!options.repair && !repaired->report.clean()) {
+            const auto [face, why] = detail::first_repair(repaired->report);
+            return fail(errc::non_manifold, name + (face >= 0 ? ": face " + std::to_string(face) + " " : ": ") + why +
+                                                " (read with repair to fix it)", face);
+        }
+        if constexpr (requires { requires T::triangles_only; }) {
+            for (std::size_t f = 0; f < repaired->face_count(); ++f)
+                if (repaired->face_offsets[f + 1] - repaired->face_offsets[f] != 3) {
+                    const auto source = repaired->face_source[f];
+                    return fail(errc::unsupported, name + ": face " + std::to_string(source) + " has " +
+                                                       std::to_string(repaired->face_offsets[f + 1] - repaired->face_offsets[f]) +
+                                                       " corners; this mesh holds triangles only", static_cast<long long>(source));
+                }
+        }
+        // Nothing below can fail: the repaired soup is one every half-edge model holds.
+        detail::clear_for_reading(mesh);
+        std::vector<VH> vs;
+        vs.reserve(repaired->vertex_count);
+        for (std::size_t v = 0; v < repaired->vertex_count; ++v) {
+            const auto& p = soup.points[repaired->source_vertex(v)];
+            vs.push_back(T::add_vertex(mesh, vec3<S>{static_cast<S>(p[0]), static_cast<S>(p[1]), static_cast<S>(p[2])}));
+        }
+        std::vector<VH> corners;
+        for (std::size_t f = 0; f < repaired->face_count(); ++f) {
+            corners.clear();
+            for (auto k = repaired->face_offsets[f]; k < repaired->face_offsets[f + 1]; ++k) corners.push_back(vs[repaired->corners[k]]);
+            auto added = T::add_face(mesh, std::span<const VH>(corners));
+            if (!added) {
+                // A bug in the repair, not in the file: leave an empty mesh rather than half of one.
+                detail::clear_for_reading(mesh);
+                auto e = added.error();
+                e.message = name + ": internal error: repaired face " + std::to_string(repaired->face_source[f]) + " rejected: " + e.message;
+                e.element = static_cast<long long>(repaired->face_source[f]);
+                return e;
+            }
+        }
+        auto extend = [&](auto& values) {
+            if (values.size() != soup.points.size()) return;
+            for (auto v : repaired->copied_from) values.push_back(values[v]);
+        };
+        extend(soup.attributes.normals);
+        extend(soup.attributes.colors);
+        detail::store_attribute_properties<M, T>(mesh, soup.attributes, vs);
+        report.attributes = std::move(soup.attributes);
+        report.copied_from = std::move(repaired->copied_from);
+        if (repaired->face_count() != soup.face_count()) report.face_source = std::move(repaired->face_source);
+        report.repair = std::move(repaired->report);
+        return report;
+    }
+}
+
+/// Shorthand used by the readers: the soup into the mesh (repaired for half-edge models, see
+/// build_from_soup), the attributes and repairs into the report.
+template <class M, class T = default_traits<M>>
+    requires readable_mesh<M, T>
+result<read_report> finish_read(M& mesh, polygon_soup&& soup, const std::string& name, std::string format, std::size_t dropped = 0,
+                                const read_options& options = {}) {
+    auto report = build_from_soup<M, T>(mesh, std::move(soup), name, options);
+    if (!report) return report.error();
+    report->format = std::move(format);
+    report->dropped_triangles = dropped;
     return report;
 }
 
