@@ -33,11 +33,16 @@ struct bevel_options {
     /// Faces across each strip: 1 is a flat chamfer (one quad per edge); more follow a circular
     /// arc tangent to both neighbouring faces. In [1, 64].
     int segments = 1;
-    /// Shrink the width (uniformly, for the whole call) so that no new vertex passes an
-    /// existing one or one placed from the edge's other end: new vertices reach at most half
-    /// way along any edge (at exactly half, points from both ends coincide, as when all four
-    /// edges of a square face are bevelled to its centre). Off: the width is used as given.
+    /// Shrink the width where it would overlap: a new vertex reaches at most half way along the
+    /// edge it slides on, or the bevelled edges it lies between, so it never passes an existing
+    /// vertex or one placed from the edge's other end (at exactly half, points from both ends
+    /// coincide, as when all four edges of a square face are bevelled to its centre). Each new
+    /// vertex is limited by its own edges only (a local clamp), so one short edge shrinks only
+    /// the bevel next to it. Off: the width is used as given.
     bool clamp_overlap = true;
+    /// With clamp_overlap: shrink the width uniformly for the whole call to the smallest local
+    /// limit instead (every strip equally wide, as before the local clamp).
+    bool clamp_globally = false;
 };
 
 /// What a bevel created.
@@ -50,7 +55,9 @@ struct bevel_result {
     /// cube corner; with segments > 1 every face of its grid fill), and vertex-only mode's faces.
     std::vector<typename T::face_handle> vertex_faces;
     std::vector<typename T::vertex_handle> vertices;  ///< every new vertex
-    double width = 0;                                 ///< the width used (after clamping)
+    double width = 0;            ///< the smallest width used by any new vertex (after clamping)
+    double requested_width = 0;  ///< bevel_options::width
+    std::size_t limited_edges = 0;  ///< bevelled edges with at least one new vertex limited by the clamp
 };
 
 namespace detail::editing {
@@ -68,217 +75,98 @@ inline vec3<double> arc_point(const vec3<double>& a, const vec3<double>& c, cons
 
 }  // namespace detail::editing
 
-/// Bevels the edges in `edges` (a range of edge handles; duplicates count once).
-///
-/// What happens, edge by edge and vertex by vertex (the behaviour of 3D editors' bevel with
-/// the "offset" width):
-/// - Each bevelled edge is replaced by a strip: `segments` quads whose long sides lie at
-///   `width` from the old edge inside the two faces next to it; those faces shrink.
-/// - At an end vertex, every face corner next to a bevelled edge gets a new vertex: on the
-///   corner's other edge when that one is not bevelled (slid along it so that its offset from
-///   the bevelled edge is `width`; an edge slid from two corners takes the mean), or inside the
-///   face at `width` from both edges when both are bevelled.
-/// - If every edge of the vertex is bevelled or next to a bevelled edge around it, the vertex
-///   goes: its new vertices are joined into one face (a triangle at a cube corner with three
-///   bevelled edges), or, with only two of them (a corner of degree 3 with one bevelled edge,
-///   as on a cube), into one edge that the remaining face gains, exactly the chamfer of a cube
-///   edge. At the boundary, that face or edge closes the corner with one boundary edge.
-/// - Otherwise (the vertex also has edges away from the bevel, e.g. a degree-4 vertex of a
-///   grid with one bevelled edge) the vertex stays where it is, with those edges, and the
-///   strip ends in it: the strip face then has the vertex as a pointed end.
-/// V/E/F: a cube edge with segments = 1 gives V + 2, E + 3, F + 1 (8/12/6 -> 10/15/7).
-///
-/// With segments = n > 1 the flat result above is rounded:
-/// - Every end edge (where a strip meets its end vertex's replacement) is split once into n
-///   segments along a circular arc (arc_point). Its control point is the old end vertex where
-///   two strips share the end edge (two bevelled edges meeting at a degree-3 vertex, or passing
-///   straight through a degree-4 one: the mitre, whose points lie in the plane of both edges),
-///   and otherwise the point of the bevelled edge's line nearest to the end edge's midpoint:
-///   the old vertex on a cube edge's chamfer, and at a cube corner with three bevelled edges a
-///   point that makes the arc a quarter circle of the strip's cylinder.
-/// - Each strip is cut across into n faces, joining the j-th arc points of its two ends; at an
-///   end vertex that stays the cuts fan out from it. A strip whose two end vertices both stay
-///   has no profile to follow and remains one face.
-/// - A patch whose every side is an arc (k >= 3 bevelled edges around a removed vertex, as at a
-///   cube corner) is filled with a grid of quads (grid fill): with m = floor(n / 2), one m x m
-///   quad patch per corner, meeting in a centre vertex (n even), or, for n odd, around a middle
-///   k-gon (a triangle at a cube corner) with a strip of m quads between neighbouring patches.
-///   Inner points come from Coons patches of the sides, then are projected onto the sphere
-///   fitted to the patch's boundary by least squares, when that fit is good (rms distance below
-///   1% of the radius, radius below 10 x the patch's diameter); at a cube corner the boundary
-///   lies exactly on the sphere of radius `width` around the inner corner, so the patch does
-///   too. Otherwise the Coons positions stay.
-/// - A patch with straight sides (the vertex also had a face corner away from the bevel) stays
-///   one face, its sides carrying the arc points: a non-planar polygon (editors' "cutoff"
-///   corner).
-/// All 12 edges of a cube with segments = 4 give a rounded cube: 6 + 48 + 8 x 12 faces.
-/// At the clamp limit new points from both ends of an edge may coincide; the result is still
-/// valid topologically, but faces of zero area can occur there.
-///
-/// Complexity O(sum of the end vertices' degrees and the touched faces' degrees) per edge =
-/// O(V_adjacentV), plus O(k log k) for k edges, for segments = 1; with n segments add O(n^2)
-/// per strip (cuts found by walking the strip) and O(k n^3) per patch of k sides (every
-/// halfedge of the grid fill is found by walking the current face), for O(k n^2) new elements.
-/// Errors (mesh unchanged): errc::invalid_argument for options out of range or an empty
-/// selection; errc::invalid_handle for a missing edge; errc::unsupported for a boundary edge
-/// (a bevelled edge needs a face on both sides) or a degenerate corner (collinear edges);
-/// errc::topology / errc::non_manifold for end vertices truncate() would reject.
-template <class M, class T = default_traits<M>, class R>
-    requires bevelable_mesh<M, T> && range_of_handles<R, typename T::edge_handle>
-result<bevel_result<M, T>> bevel(M& mesh, const R& edges, const bevel_options& options = {}) {
-    namespace de = detail::editing;
-    namespace du = detail::euler;
+namespace detail::editing {
+
+/// Everything bevel() decides before changing the mesh (from the original geometry).
+template <class M, class T>
+struct bevel_plan {
+    /// A new vertex slid along an unbevelled edge.
+    struct slide {
+        typename T::halfedge_handle h;  ///< the unbevelled edge, leaving the end vertex
+        double t = 0;                   ///< fraction of the edge from its source; < 0: split with its partner
+        double t_back = -1;             ///< the partner's fraction from the other end, or < 0
+    };
+    /// A new vertex inside a corner between two bevelled edges.
+    struct inner {
+        typename T::halfedge_handle corner;  ///< into the end vertex, between two bevelled edges
+        typename T::vertex_handle v;         ///< the end vertex
+        vec3<double> dir;                    ///< point = pos(v) + dir * width
+        double width = 0;                    ///< after the clamp
+    };
+    std::vector<typename T::halfedge_handle> sel;     ///< one halfedge per bevelled edge
+    std::vector<typename T::vertex_handle> touched;   ///< the bevelled edges' ends
+    std::vector<bool> removed;                        ///< per touched vertex: it goes
+    std::vector<slide> slides;                        ///< the slid vertices
+    std::vector<inner> inners;                        ///< the corner vertices
+    std::vector<std::array<bool, 2>> end_kept;        ///< per bevelled edge: source / target stays
+    int segments = 1;                                 ///< bevel_options::segments
+    double requested_width = 0;                       ///< bevel_options::width
+    double smallest_width = 0;                        ///< the smallest width used after the clamp
+    std::size_t limited_edges = 0;                    ///< bevelled edges with a clamped new vertex
+};
+
+/// Builds the bevel planned in `plan` (see bevel()). Run inside a transaction (T journaled);
+/// an inner failure is passed on.
+template <class M, class T, class Plan, class Out>
+result<void> bevel_build(M& mesh, const Plan& plan, Out& out) {
+    namespace du = ::hmira::detail::euler;
     using H = typename T::halfedge_handle;
     using V = typename T::vertex_handle;
-    if (!(options.width > 0) || !de::finite(options.width))
-        return fail(errc::invalid_argument, "bevel: width must be finite and > 0");
-    if (options.segments < 1 || options.segments > 64)
-        return fail(errc::invalid_argument, "bevel: segments must lie in [1, 64], got " + std::to_string(options.segments));
-    // Selection.
-    std::vector<H> sel;
-    de::index_set bevelled;
-    for (auto e0 : edges) {
-        const typename T::edge_handle e = e0;
-        if (T::edge_index(mesh, e) >= T::edge_index_bound(mesh))
-            return fail(errc::invalid_handle, "bevel: edge " + std::to_string(T::edge_index(mesh, e)) + " does not exist",
-                        static_cast<long long>(T::edge_index(mesh, e)));
-        const auto h = T::edge_halfedge(mesh, e);
-        if (T::face(mesh, h) == T::null_face() || T::face(mesh, T::opposite(mesh, h)) == T::null_face())
-            return fail(errc::unsupported, "bevel: edge " + std::to_string(T::edge_index(mesh, e)) +
-                                               " is on the boundary; only edges between two faces are bevelled",
-                        static_cast<long long>(T::edge_index(mesh, e)));
-        if (bevelled.insert(T::edge_index(mesh, e))) sel.push_back(h);
-    }
-    if (sel.empty()) return fail(errc::invalid_argument, "bevel: no edge selected");
-    auto is_bev = [&](H h) { return bevelled.contains(T::edge_index(mesh, T::edge(mesh, h))); };
-    std::vector<V> touched;
-    de::index_set touched_set;
-    for (auto h : sel)
-        for (auto v : {du::source<M, T>(mesh, h), T::target(mesh, h)}) {
-            if (auto ok = de::check_corner_vertex<M, T>(mesh, v, "bevel"); !ok) return ok.error();
-            if (touched_set.insert(T::vertex_index(mesh, v))) touched.push_back(v);
-        }
-
-    // Plan, from the original geometry: slides on unbevelled edges, points inside corners
-    // between two bevelled edges, which vertices go. Distances scale with the width.
-    struct slide { H h; double sum = 0; int n = 0; };
-    struct inner { H corner; V v; vec3<double> dir; };  // point = pos(v) + dir * width
-    std::vector<slide> slides;
-    std::vector<inner> inners;
-    std::vector<bool> removed(touched.size(), true);
-    double limit_ratio = 1e300;  // max width / requested width allowed by clamp_overlap
-    auto add_slide = [&](H h, double per_width) {
-        for (auto& s : slides)
-            if (s.h == h) { s.sum += per_width; ++s.n; return; }
-        slides.push_back({h, per_width, 1});
-    };
-    for (std::size_t k = 0; k < touched.size(); ++k) {
-        const auto v = touched[k];
-        const auto pv = de::pos<M, T>(mesh, v);
-        const auto hs = de::outgoing<M, T>(mesh, v);
-        const std::size_t d = hs.size();
-        std::vector<bool> near(d, false);
-        for (std::size_t i = 0; i < d; ++i) {
-            const auto a = hs[i], b = hs[(i + 1) % d];
-            if (T::face(mesh, b) == T::null_face()) continue;  // the boundary gap is no corner
-            const bool ba = is_bev(a), bb = is_bev(b);
-            if (!ba && !bb) continue;
-            near[i] = near[(i + 1) % d] = true;
-            const auto ua = normalized(de::pos<M, T>(mesh, T::target(mesh, a)) - pv);
-            const auto ub = normalized(de::pos<M, T>(mesh, T::target(mesh, b)) - pv);
-            const double s = norm(cross(ua, ub));
-            if (!(s > 1e-9))
-                return fail(errc::unsupported, "bevel: the edges of a face corner at " + du::name<M, T>("vertex", mesh, v) +
-                                                   " are collinear; the offset there is undefined",
-                            du::index_of<M, T>(mesh, v));
-            if (ba && bb) inners.push_back({T::opposite(mesh, a), v, (ua + ub) / s});
-            else add_slide(ba ? b : a, 1.0 / s);
-        }
-        for (std::size_t i = 0; i < d; ++i)
-            if (!near[i]) removed[k] = false;
-    }
-    // Clamp: new vertices reach at most half way along any edge (a slid vertex at the far end
-    // would collapse the face beside the strip).
-    for (const auto& s : slides) {
-        const double len = norm(de::pos<M, T>(mesh, T::target(mesh, s.h)) - de::pos<M, T>(mesh, du::source<M, T>(mesh, s.h)));
-        limit_ratio = std::min(limit_ratio, len / 2 / (s.sum / s.n));
-    }
-    for (const auto& in : inners) {
-        // The inner point projects onto both bevelled edges at |dir|-scaled distances.
-        const auto a = T::opposite(mesh, in.corner);
-        const auto b = T::next(mesh, in.corner);
-        for (auto h : {a, b}) {
-            const auto e = de::pos<M, T>(mesh, T::target(mesh, h)) - de::pos<M, T>(mesh, in.v);
-            const double along = dot(in.dir, normalized(e));
-            if (along > 0) limit_ratio = std::min(limit_ratio, norm(e) / 2 / along);
-        }
-    }
-    const double width = options.clamp_overlap ? std::min(options.width, limit_ratio) : options.width;
-    // Which ends of each bevelled edge stay (the strip then ends in a point there).
-    std::vector<std::array<bool, 2>> end_kept(sel.size());
-    for (std::size_t i = 0; i < sel.size(); ++i)
-        for (int side = 0; side < 2; ++side) {
-            const auto v = side == 0 ? du::source<M, T>(mesh, sel[i]) : T::target(mesh, sel[i]);
-            for (std::size_t k = 0; k < touched.size(); ++k)
-                if (touched[k] == v) end_kept[i][side] = !removed[k];
-        }
-
-    // ---- change the mesh (nothing below fails) ----
-    bevel_result<M, T> out;
-    out.width = width;
+    const auto& sel = plan.sel;
+    const auto& touched = plan.touched;
+    const auto& removed = plan.removed;
+    const auto& end_kept = plan.end_kept;
+    out.width = plan.smallest_width;
+    out.requested_width = plan.requested_width;
+    out.limited_edges = plan.limited_edges;
     // The ends' positions are the rounded profiles' control points (the ends may be gone and
     // their handles reused by the time the profiles are built).
     std::vector<std::pair<vec3<double>, vec3<double>>> ends(sel.size());
     for (std::size_t i = 0; i < sel.size(); ++i)
-        ends[i] = {de::pos<M, T>(mesh, du::source<M, T>(mesh, sel[i])), de::pos<M, T>(mesh, T::target(mesh, sel[i]))};
+        ends[i] = {pos<M, T>(mesh, du::source<M, T>(mesh, sel[i])), pos<M, T>(mesh, T::target(mesh, sel[i]))};
     // 1. Split the slid edges (once where slides from both ends meet exactly).
-    std::vector<bool> done(slides.size(), false);
-    for (std::size_t i = 0; i < slides.size(); ++i) {
-        if (done[i]) continue;
-        done[i] = true;
-        const auto h = slides[i].h;
-        const auto a = de::pos<M, T>(mesh, du::source<M, T>(mesh, h)), b = de::pos<M, T>(mesh, T::target(mesh, h));
-        const double len = norm(b - a);
-        const double t = width * slides[i].sum / slides[i].n / len;
-        double t_back = -1;
-        for (std::size_t j = i + 1; j < slides.size(); ++j)
-            if (slides[j].h == T::opposite(mesh, h)) {
-                done[j] = true;
-                t_back = width * slides[j].sum / slides[j].n / len;
-            }
-        if (t_back >= 0 && t + t_back == 1.0) {
-            out.vertices.push_back(de::split_edge<M, T>(mesh, h, lerp(a, b, t)).vertex);
-            continue;
-        }
-        const auto s = de::split_edge<M, T>(mesh, h, lerp(a, b, t));
-        out.vertices.push_back(s.vertex);
-        if (t_back >= 0) out.vertices.push_back(de::split_edge<M, T>(mesh, s.second, lerp(a, b, 1 - t_back)).vertex);
+    for (const auto& sl : plan.slides) {
+        if (sl.t < 0) continue;  // split with its partner from the other end
+        const auto h = sl.h;
+        const auto a = pos<M, T>(mesh, du::source<M, T>(mesh, h)), b = pos<M, T>(mesh, T::target(mesh, h));
+        const auto s = split_edge<M, T>(mesh, h, lerp(a, b, sl.t));
+        if (!s) return s.error();
+        out.vertices.push_back(s.value().vertex);
+        if (sl.t_back < 0 || sl.t + sl.t_back == 1.0) continue;
+        const auto s2 = split_edge<M, T>(mesh, s.value().second, lerp(a, b, 1 - sl.t_back));
+        if (!s2) return s2.error();
+        out.vertices.push_back(s2.value().vertex);
     }
     // 2. Points inside corners between two bevelled edges, hung from the vertex by makeEV.
-    for (const auto& in : inners)
-        out.vertices.push_back(make_edge_vertex<M, T>(mesh, in.corner, de::to_point<M, T>(de::pos<M, T>(mesh, in.v) + in.dir * width))->vertex);
+    for (const auto& in : plan.inners) {
+        const auto r = mev<M, T>(mesh, in.corner, pos<M, T>(mesh, in.v) + in.dir * in.width);
+        if (!r) return r.error();
+        out.vertices.push_back(r.value().vertex);
+    }
     // 3. Each bevelled edge: cut the quad (p, v, w, q) off each side, then join the two quads.
     std::vector<H> strip_side(sel.size());  // a halfedge of each strip, on its F_L long side
     for (std::size_t i = 0; i < sel.size(); ++i) {
         const auto h = sel[i], o = T::opposite(mesh, h);
-        const auto left = make_edge_face<M, T>(mesh, T::prev(mesh, T::prev(mesh, h)), T::next(mesh, h));
-        (void)make_edge_face<M, T>(mesh, T::prev(mesh, T::prev(mesh, o)), T::next(mesh, o));
-        strip_side[i] = T::opposite(mesh, left->halfedge);  // q -> p, inside the strip
-        (void)kill_edge_face<M, T>(mesh, h);
+        const auto left = mef<M, T>(mesh, T::prev(mesh, T::prev(mesh, h)), T::next(mesh, h));
+        if (!left) return left.error();
+        if (auto right = mef<M, T>(mesh, T::prev(mesh, T::prev(mesh, o)), T::next(mesh, o)); !right) return right.error();
+        strip_side[i] = T::opposite(mesh, left.value().halfedge);  // q -> p, inside the strip
+        if (auto ok = kef<M, T>(mesh, h); !ok) return ok.error();
     }
     // 4. Vertices with nothing left but new neighbours go.
     for (std::size_t k = 0; k < touched.size(); ++k)
         if (removed[k]) {
-            const auto f = de::replace_vertex_by_polygon<M, T>(mesh, touched[k]);
-            if (f != T::null_face()) out.vertex_faces.push_back(f);
+            const auto f = replace_vertex_by_polygon<M, T>(mesh, touched[k]);
+            if (!f) return f.error();
+            if (f.value() != T::null_face()) out.vertex_faces.push_back(f.value());
         }
     // 5. Rounded profiles (segments > 1): split every end edge once along an arc (B), cut each
     //    strip across (C), and fill each vertex patch bounded by arcs only with a grid (D).
-    if (options.segments == 1) {
+    if (plan.segments == 1) {
         for (auto qp : strip_side) out.strip_faces.push_back(T::face(mesh, qp));
-        return out;
+        return {};
     }
-    const auto n = static_cast<std::size_t>(options.segments);
+    const auto n = static_cast<std::size_t>(plan.segments);
     struct end_edge {
         V a, b;                     // the edge's ends, as first met (from a strip's F_L side)
         vec3<double> v{}, dir{};    // the original end vertex, and the unit edge direction away from it
@@ -340,17 +228,18 @@ result<bevel_result<M, T>> bevel(M& mesh, const R& edges, const bevel_options& o
     //    the edge (their tangents meet there: the mitre); else the point of the bevelled edge's
     //    line nearest to the end edge's midpoint (a quarter circle at a three-edge corner).
     for (auto& ee : end_edges) {
-        const auto pa = de::pos<M, T>(mesh, ee.a), pb = de::pos<M, T>(mesh, ee.b);
+        const auto pa = pos<M, T>(mesh, ee.a), pb = pos<M, T>(mesh, ee.b);
         const auto ctrl = ee.uses >= 2 ? ee.v : ee.v + ee.dir * dot((pa + pb) / 2.0 - ee.v, ee.dir);
         auto x = ee.side;
         const bool forward = du::source<M, T>(mesh, x) == ee.a;
         std::vector<V> arc{du::source<M, T>(mesh, x)};
         for (std::size_t j = 1; j < n; ++j) {
             const double t = double(j) / double(n);
-            const auto s = de::split_edge<M, T>(mesh, x, de::arc_point(pa, ctrl, pb, forward ? t : 1 - t));
-            out.vertices.push_back(s.vertex);
-            arc.push_back(s.vertex);
-            x = s.second;
+            const auto s = split_edge<M, T>(mesh, x, arc_point(pa, ctrl, pb, forward ? t : 1 - t));
+            if (!s) return s.error();
+            out.vertices.push_back(s.value().vertex);
+            arc.push_back(s.value().vertex);
+            x = s.value().second;
         }
         arc.push_back(T::target(mesh, x));
         if (!forward) std::reverse(arc.begin(), arc.end());
@@ -371,9 +260,11 @@ result<bevel_result<M, T>> bevel(M& mesh, const R& edges, const bevel_options& o
         };
         for (std::size_t j = 1; j < n; ++j) {
             // makeEF's new face runs forward from the first end's point: the uncut rest.
-            const auto h0 = de::into_vertex<M, T>(mesh, c, point(0, j));
-            const auto h1 = de::into_vertex<M, T>(mesh, c, point(1, j));
-            c = make_edge_face<M, T>(mesh, h0, h1)->face;
+            const auto h0 = into_vertex<M, T>(mesh, c, point(0, j));
+            const auto h1 = into_vertex<M, T>(mesh, c, point(1, j));
+            const auto cut = mef<M, T>(mesh, h0, h1);
+            if (!cut) return cut.error();
+            c = cut.value().face;
             out.strip_faces.push_back(c);
         }
     }
@@ -389,11 +280,225 @@ result<bevel_result<M, T>> bevel(M& mesh, const R& edges, const bevel_options& o
             arcs[s] = ee.arc;
             if (ee.a != from) std::reverse(arcs[s].begin(), arcs[s].end());
         }
-        auto g = de::grid_fill<M, T>(mesh, pa.face, arcs);
+        const auto filled = grid_fill<M, T>(mesh, pa.face, arcs);
+        if (!filled) return filled.error();
+        const auto& g = filled.value();
         out.vertex_faces.insert(out.vertex_faces.end(), g.faces.begin(), g.faces.end());
         out.vertices.insert(out.vertices.end(), g.vertices.begin(), g.vertices.end());
     }
-    return out;
+    return {};
+}
+
+}  // namespace detail::editing
+
+/// Bevels the edges in `edges` (a range of edge handles; duplicates count once).
+///
+/// What happens, edge by edge and vertex by vertex (the behaviour of 3D editors' bevel with
+/// the "offset" width):
+/// - Each bevelled edge is replaced by a strip: `segments` quads whose long sides lie at
+///   `width` from the old edge inside the two faces next to it; those faces shrink.
+/// - At an end vertex, every face corner next to a bevelled edge gets a new vertex: on the
+///   corner's other edge when that one is not bevelled (slid along it so that its offset from
+///   the bevelled edge is `width`; an edge slid from two corners takes the mean), or inside the
+///   face at `width` from both edges when both are bevelled.
+/// - If every edge of the vertex is bevelled or next to a bevelled edge around it, the vertex
+///   goes: its new vertices are joined into one face (a triangle at a cube corner with three
+///   bevelled edges), or, with only two of them (a corner of degree 3 with one bevelled edge,
+///   as on a cube), into one edge that the remaining face gains, exactly the chamfer of a cube
+///   edge. At the boundary, that face or edge closes the corner with one boundary edge.
+/// - Otherwise (the vertex also has edges away from the bevel, e.g. a degree-4 vertex of a
+///   grid with one bevelled edge) the vertex stays where it is, with those edges, and the
+///   strip ends in it: the strip face then has the vertex as a pointed end.
+/// V/E/F: a cube edge with segments = 1 gives V + 2, E + 3, F + 1 (8/12/6 -> 10/15/7).
+///
+/// With segments = n > 1 the flat result above is rounded:
+/// - Every end edge (where a strip meets its end vertex's replacement) is split once into n
+///   segments along a circular arc (arc_point). Its control point is the old end vertex where
+///   two strips share the end edge (two bevelled edges meeting at a degree-3 vertex, or passing
+///   straight through a degree-4 one: the mitre, whose points lie in the plane of both edges),
+///   and otherwise the point of the bevelled edge's line nearest to the end edge's midpoint:
+///   the old vertex on a cube edge's chamfer, and at a cube corner with three bevelled edges a
+///   point that makes the arc a quarter circle of the strip's cylinder.
+/// - Each strip is cut across into n faces, joining the j-th arc points of its two ends; at an
+///   end vertex that stays the cuts fan out from it. A strip whose two end vertices both stay
+///   has no profile to follow and remains one face.
+/// - A patch whose every side is an arc (k >= 3 bevelled edges around a removed vertex, as at a
+///   cube corner) is filled with a grid of quads (grid fill): with m = floor(n / 2), one m x m
+///   quad patch per corner, meeting in a centre vertex (n even), or, for n odd, around a middle
+///   k-gon (a triangle at a cube corner) with a strip of m quads between neighbouring patches.
+///   Inner points come from Coons patches of the sides, then are projected onto the sphere
+///   fitted to the patch's boundary by least squares, when that fit is good (rms distance below
+///   1% of the radius, radius below 10 x the patch's diameter); at a cube corner the boundary
+///   lies exactly on the sphere of radius `width` around the inner corner, so the patch does
+///   too. Otherwise the Coons positions stay.
+/// - A patch with straight sides (the vertex also had a face corner away from the bevel) stays
+///   one face, its sides carrying the arc points: a non-planar polygon (editors' "cutoff"
+///   corner).
+/// All 12 edges of a cube with segments = 4 give a rounded cube: 6 + 48 + 8 x 12 faces.
+/// At the clamp limit new points from both ends of an edge may coincide; the result is still
+/// valid topologically, but faces of zero area can occur there.
+///
+/// Complexity O(sum of the end vertices' degrees and the touched faces' degrees) per edge =
+/// O(V_adjacentV), plus O(k) expected for the selection and slide lookups of k edges (hash
+/// tables), for segments = 1; with n segments add O(k log k) for the end-edge table, O(n^2)
+/// per strip (cuts found by walking the strip) and O(k n^3) per patch of k sides (every
+/// halfedge of the grid fill is found by walking the current face), for O(k n^2) new elements.
+/// Clamp: see bevel_options::clamp_overlap; the result reports the requested width, the
+/// smallest width used and how many edges were limited.
+/// Atomic: on any error, or when an allocation throws, the mesh is unchanged (see
+/// detail/transaction.hpp). Errors (mesh unchanged): errc::invalid_argument for options out of range or an empty
+/// selection; errc::invalid_handle for a missing edge; errc::unsupported for a boundary edge
+/// (a bevelled edge needs a face on both sides) or a degenerate corner (collinear edges);
+/// errc::topology / errc::non_manifold for end vertices truncate() would reject.
+template <class M, class T = default_traits<M>, class R>
+    requires bevelable_mesh<M, T> && range_of_handles<R, typename T::edge_handle>
+result<bevel_result<M, T>> bevel(M& mesh, const R& edges, const bevel_options& options = {}) {
+    namespace de = detail::editing;
+    namespace du = detail::euler;
+    using H = typename T::halfedge_handle;
+    if (!(options.width > 0) || !de::finite(options.width))
+        return fail(errc::invalid_argument, "bevel: width must be finite and > 0");
+    if (options.segments < 1 || options.segments > 64)
+        return fail(errc::invalid_argument, "bevel: segments must lie in [1, 64], got " + std::to_string(options.segments));
+    // Selection.
+    de::bevel_plan<M, T> plan;
+    plan.segments = options.segments;
+    auto& sel = plan.sel;
+    de::index_set bevelled;
+    for (auto e0 : edges) {
+        const typename T::edge_handle e = e0;
+        if (T::edge_index(mesh, e) >= T::edge_index_bound(mesh))
+            return fail(errc::invalid_handle, "bevel: edge " + std::to_string(T::edge_index(mesh, e)) + " does not exist",
+                        static_cast<long long>(T::edge_index(mesh, e)));
+        const auto h = T::edge_halfedge(mesh, e);
+        if (T::face(mesh, h) == T::null_face() || T::face(mesh, T::opposite(mesh, h)) == T::null_face())
+            return fail(errc::unsupported, "bevel: edge " + std::to_string(T::edge_index(mesh, e)) +
+                                               " is on the boundary; only edges between two faces are bevelled",
+                        static_cast<long long>(T::edge_index(mesh, e)));
+        if (bevelled.insert(T::edge_index(mesh, e))) sel.push_back(h);
+    }
+    if (sel.empty()) return fail(errc::invalid_argument, "bevel: no edge selected");
+    auto edge_of = [&](H h) { return T::edge_index(mesh, T::edge(mesh, h)); };
+    auto is_bev = [&](H h) { return bevelled.contains(edge_of(h)); };
+    auto& touched = plan.touched;
+    de::index_map touched_at;  // vertex index -> position in touched
+    for (auto h : sel)
+        for (auto v : {du::source<M, T>(mesh, h), T::target(mesh, h)}) {
+            if (auto ok = de::check_corner_vertex<M, T>(mesh, v, "bevel"); !ok) return ok.error();
+            if (touched_at.emplace(T::vertex_index(mesh, v), touched.size()) == touched.size()) touched.push_back(v);
+        }
+
+    // Plan, from the original geometry: slides on unbevelled edges, points inside corners
+    // between two bevelled edges, which vertices go. Offsets are per unit width; each new
+    // point remembers the bevelled edges it serves, for the clamp's count.
+    struct slide { H h; double sum = 0; int n = 0; std::size_t edge_a, edge_b; };
+    std::vector<slide> slides;
+    de::index_map slide_at;  // halfedge index -> position in slides
+    auto& inners = plan.inners;
+    std::vector<std::array<std::size_t, 2>> inner_edges;
+    auto& removed = plan.removed;
+    removed.assign(touched.size(), true);
+    for (std::size_t k = 0; k < touched.size(); ++k) {
+        const auto v = touched[k];
+        const auto pv = de::pos<M, T>(mesh, v);
+        const auto hs = de::outgoing<M, T>(mesh, v);
+        const std::size_t d = hs.size();
+        std::vector<bool> near(d, false);
+        for (std::size_t i = 0; i < d; ++i) {
+            const auto a = hs[i], b = hs[(i + 1) % d];
+            if (T::face(mesh, b) == T::null_face()) continue;  // the boundary gap is no corner
+            const bool ba = is_bev(a), bb = is_bev(b);
+            if (!ba && !bb) continue;
+            near[i] = near[(i + 1) % d] = true;
+            const auto ua = normalized(de::pos<M, T>(mesh, T::target(mesh, a)) - pv);
+            const auto ub = normalized(de::pos<M, T>(mesh, T::target(mesh, b)) - pv);
+            const double s = norm(cross(ua, ub));
+            if (!(s > 1e-9))
+                return fail(errc::unsupported, "bevel: the edges of a face corner at " + du::name<M, T>("vertex", mesh, v) +
+                                                   " are collinear; the offset there is undefined",
+                            du::index_of<M, T>(mesh, v));
+            if (ba && bb) {
+                inners.push_back({T::opposite(mesh, a), v, (ua + ub) / s, 0});
+                inner_edges.push_back({edge_of(a), edge_of(b)});
+                continue;
+            }
+            const H along = ba ? b : a;
+            const std::size_t at = slide_at.emplace(T::halfedge_index(mesh, along), slides.size());
+            if (at == slides.size()) slides.push_back({along, 0, 0, edge_of(ba ? a : b), de::index_map::none});
+            else slides[at].edge_b = edge_of(ba ? a : b);
+            slides[at].sum += 1.0 / s;
+            ++slides[at].n;
+        }
+        for (std::size_t i = 0; i < d; ++i)
+            if (!near[i]) removed[k] = false;
+    }
+    // Clamp: each new vertex reaches at most half way along the edges it lies on or projects
+    // onto (a slid vertex at the far end would collapse the face beside the strip). Its own
+    // limit, as a width: `limit` per slide and per inner point.
+    std::vector<double> slide_limit(slides.size()), inner_limit(inners.size(), 1e300);
+    std::vector<double> slide_len(slides.size());
+    for (std::size_t i = 0; i < slides.size(); ++i) {
+        const auto& s = slides[i];
+        slide_len[i] = norm(de::pos<M, T>(mesh, T::target(mesh, s.h)) - de::pos<M, T>(mesh, du::source<M, T>(mesh, s.h)));
+        slide_limit[i] = slide_len[i] / 2 / (s.sum / s.n);
+    }
+    for (std::size_t i = 0; i < inners.size(); ++i) {
+        // The inner point projects onto both bevelled edges at |dir|-scaled distances.
+        const auto& in = inners[i];
+        for (auto h : {T::opposite(mesh, in.corner), T::next(mesh, in.corner)}) {
+            const auto e = de::pos<M, T>(mesh, T::target(mesh, h)) - de::pos<M, T>(mesh, in.v);
+            const double along = dot(in.dir, normalized(e));
+            if (along > 0) inner_limit[i] = std::min(inner_limit[i], norm(e) / 2 / along);
+        }
+    }
+    double global = options.width;
+    if (options.clamp_overlap && options.clamp_globally) {
+        for (double l : slide_limit) global = std::min(global, l);
+        for (double l : inner_limit) global = std::min(global, l);
+    }
+    auto used = [&](double limit) { return options.clamp_overlap ? std::min(global, limit) : options.width; };
+    de::index_set limited;
+    plan.smallest_width = options.width;
+    auto note = [&](double w, std::size_t e) {
+        plan.smallest_width = std::min(plan.smallest_width, w);
+        if (w < options.width && e != de::index_map::none) limited.insert(e);
+    };
+    for (std::size_t i = 0; i < slides.size(); ++i) {
+        const double w = used(slide_limit[i]);
+        note(w, slides[i].edge_a);
+        note(w, slides[i].edge_b);
+        // The fraction of the edge the slide covers, from its source.
+        const double t = w * slides[i].sum / slides[i].n / slide_len[i];
+        plan.slides.push_back({slides[i].h, t, -1.0});
+    }
+    for (std::size_t i = 0; i < inners.size(); ++i) {
+        inners[i].width = used(inner_limit[i]);
+        note(inners[i].width, inner_edges[i][0]);
+        note(inners[i].width, inner_edges[i][1]);
+    }
+    plan.limited_edges = limited.size();
+    // Slides from both ends of one edge are split together: the first carries the second's
+    // fraction, the second is dropped (t < 0).
+    for (std::size_t i = 0; i < plan.slides.size(); ++i) {
+        if (plan.slides[i].t < 0) continue;
+        const std::size_t j = slide_at.find(T::halfedge_index(mesh, T::opposite(mesh, plan.slides[i].h)));
+        if (j == de::index_map::none || j < i) continue;
+        plan.slides[i].t_back = plan.slides[j].t;
+        plan.slides[j].t = -1.0;
+    }
+    // Which ends of each bevelled edge stay (the strip then ends in a point there).
+    plan.end_kept.resize(sel.size());
+    for (std::size_t i = 0; i < sel.size(); ++i)
+        for (int side = 0; side < 2; ++side) {
+            const auto v = side == 0 ? du::source<M, T>(mesh, sel[i]) : T::target(mesh, sel[i]);
+            plan.end_kept[i][side] = !removed[touched_at.find(T::vertex_index(mesh, v))];
+        }
+    plan.requested_width = options.width;
+    return de::transact<M, T>(mesh, [&]<class JT>() -> result<bevel_result<M, T>> {
+        bevel_result<M, T> out;
+        if (auto ok = de::bevel_build<M, JT>(mesh, plan, out); !ok) return ok.error();
+        return out;
+    });
 }
 
 /// Bevels one edge (see the range overload). A cube edge with segments = 1 gives the chamfer:
@@ -419,10 +524,11 @@ result<bevel_result<M, T>> bevel_vertices(M& mesh, const R& vertices, const beve
     auto r = truncate<M, T>(mesh, vertices, {.fraction = 1.0 / 3.0, .distance = options.width});
     if (!r) return r.error();
     bevel_result<M, T> out;
-    for (auto f : r->faces)
+    for (auto f : r.value().faces)
         if (f != T::null_face()) out.vertex_faces.push_back(f);
-    out.vertices = std::move(r->vertices);
+    out.vertices = std::move(r.value().vertices);
     out.width = options.width;
+    out.requested_width = options.width;
     return out;
 }
 

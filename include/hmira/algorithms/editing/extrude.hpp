@@ -106,8 +106,8 @@ vec3<double> area_vector_with_rings(const M& m, typename T::face_handle f) {
 /// into the face, then makeEF joins consecutive tips, each cutting a side quad off the face,
 /// until the loop runs through the tips only. On a ring the quads face into the hole. For n
 /// corners over all loops: V + n, E + 2n, F + n, rings unchanged. O(n + rings).
-template <class M, class T>
-void extrude_one(M& m, typename T::face_handle f, const vec3<double>& d, extrude_result<M, T>& out) {
+template <class M, class T, class Out>
+result<void> extrude_one(M& m, typename T::face_handle f, const vec3<double>& d, Out& out) {
     using H = typename T::halfedge_handle;
     // Every loop is read before any change: makeEF re-registers the ring halfedges it cuts off.
     std::vector<std::vector<H>> loops;
@@ -116,18 +116,21 @@ void extrude_one(M& m, typename T::face_handle f, const vec3<double>& d, extrude
         const std::size_t n = into.size();
         std::vector<H> up(n);
         for (std::size_t i = 0; i < n; ++i) {
-            const auto r = make_edge_vertex<M, T>(m, into[i], to_point<M, T>(pos<M, T>(m, T::target(m, into[i])) + d));
-            up[i] = r->halfedge;
-            out.vertices.push_back(r->vertex);
+            const auto r = mev<M, T>(m, into[i], pos<M, T>(m, T::target(m, into[i])) + d);
+            if (!r) return r.error();
+            up[i] = r.value().halfedge;
+            out.vertices.push_back(r.value().vertex);
         }
         H h0 = up[0];
         for (std::size_t i = 0; i < n; ++i) {
-            const auto r = make_edge_face<M, T>(m, h0, up[(i + 1) % n]);
-            out.side_faces.push_back(r->face);
-            h0 = r->halfedge;
+            const auto r = mef<M, T>(m, h0, up[(i + 1) % n]);
+            if (!r) return r.error();
+            out.side_faces.push_back(r.value().face);
+            h0 = r.value().halfedge;
         }
     }
     out.top_faces.push_back(f);
+    return {};
 }
 
 /// Extrudes a connected region of several faces (already checked: `in_region` holds their
@@ -143,9 +146,9 @@ void extrude_one(M& m, typename T::face_handle f, const vec3<double>& d, extrude
 ///  3. the region's vertices (all of them, outline included) move by d.
 /// V + b, E + 2b, F + b for b outline edges. O(R log R) for R corners of the region's faces,
 /// plus the outline vertices' fans.
-template <class M, class T>
-void extrude_region(M& m, const std::vector<typename T::face_handle>& faces, const index_set& in_region,
-                    const std::vector<typename T::halfedge_handle>& outline, const vec3<double>& d, extrude_result<M, T>& out) {
+template <class M, class T, class Out>
+result<void> extrude_region(M& m, const std::vector<typename T::face_handle>& faces, const index_set& in_region,
+                            const std::vector<typename T::halfedge_handle>& outline, const vec3<double>& d, Out& out) {
     using H = typename T::halfedge_handle;
     using F = typename T::face_handle;
     auto in_r = [&](F f) { return f != T::null_face() && in_region.contains(T::face_index(m, f)); };
@@ -154,7 +157,7 @@ void extrude_region(M& m, const std::vector<typename T::face_handle>& faces, con
     // ends at u (its split makes the wall's other vertical edge).
     std::vector<H> h0(k), h1(k);
     std::vector<vec3<double>> place(k);
-    std::vector<std::pair<std::size_t, std::size_t>> by_target;  // (vertex index of v, i)
+    index_map by_target;  // vertex index of v -> i
     for (std::size_t i = 0; i < k; ++i) {
         const auto g = outline[i];
         // Turn through the region's corners at v to the outline halfedge leaving v.
@@ -167,26 +170,26 @@ void extrude_region(M& m, const std::vector<typename T::face_handle>& faces, con
         h0[i] = T::opposite(m, leaving);               // into v from outside, along the outline edge leaving v
         h1[i] = T::prev(m, T::opposite(m, g));         // the last outside corner before g
         place[i] = pos<M, T>(m, T::target(m, g));
-        by_target.push_back({T::vertex_index(m, T::target(m, g)), i});
+        by_target.emplace(T::vertex_index(m, T::target(m, g)), i);
     }
-    std::sort(by_target.begin(), by_target.end());
     std::vector<std::size_t> left(k);  // the outline halfedge that ends at the source of g_i
-    for (std::size_t i = 0; i < k; ++i) {
-        const auto u = T::vertex_index(m, T::target(m, T::opposite(m, outline[i])));
-        left[i] = std::lower_bound(by_target.begin(), by_target.end(), std::pair<std::size_t, std::size_t>{u, 0})->second;
-    }
+    for (std::size_t i = 0; i < k; ++i)
+        left[i] = by_target.find(T::vertex_index(m, T::target(m, T::opposite(m, outline[i]))));
     // 1. Split every outline vertex; `down[i]` runs from v_i to its copy.
     std::vector<H> down(k);
     for (std::size_t i = 0; i < k; ++i) {
+        if (auto ok = inner_call_allowed<T>("split_vertex"); !ok) return ok.error();
         const auto r = split_vertex<M, T>(m, h0[i], h1[i], to_point<M, T>(place[i]));
-        down[i] = r->halfedge;
-        out.vertices.push_back(r->vertex);
+        if (!r) return r.error();
+        down[i] = r.value().halfedge;
+        out.vertices.push_back(r.value().vertex);
     }
     // 2. One wall per outline edge: its face's loop reads ... -> v' -> v -> u -> u' -> ...
     for (std::size_t i = 0; i < k; ++i) {
         const auto up_v = T::opposite(m, down[i]);  // v' -> v
-        const auto r = make_edge_face<M, T>(m, T::prev(m, up_v), down[left[i]]);
-        out.side_faces.push_back(r->face);
+        const auto r = mef<M, T>(m, T::prev(m, up_v), down[left[i]]);
+        if (!r) return r.error();
+        out.side_faces.push_back(r.value().face);
     }
     // 3. Move the region.
     index_set done;
@@ -198,6 +201,7 @@ void extrude_region(M& m, const std::vector<typename T::face_handle>& faces, con
                 T::set_position(m, v, to_point<M, T>(pos<M, T>(m, v) + d));
             }
     out.top_faces = faces;
+    return {};
 }
 
 }  // namespace detail::editing
@@ -218,7 +222,10 @@ void extrude_region(M& m, const std::vector<typename T::face_handle>& faces, con
 /// unchanged. Models without rings never reach that code.
 ///
 /// Complexity: O(n) for a face of degree n; region mode O(R log R) for R corners of the
-/// region's faces (local: nothing outside the region and its outline fans is read).
+/// region's faces (the pinch check sorts the outline; the rest is hashed, expected O(R);
+/// local: nothing outside the region and its outline fans is read).
+/// Atomic: on any error, or when an allocation throws, the mesh is unchanged (see
+/// detail/transaction.hpp).
 /// Errors (mesh unchanged): errc::invalid_argument for a zero, NaN or infinite distance, a
 /// zero direction or a zero normal, an empty selection; errc::invalid_handle for a missing
 /// face; errc::topology for a region that is not connected, has no outline (a whole closed
@@ -248,7 +255,6 @@ result<extrude_result<M, T>> extrude(M& mesh, const R& faces, const extrude_opti
         fs.push_back(f);
     }
     if (fs.empty()) return fail(errc::invalid_argument, "extrude: no face selected");
-    extrude_result<M, T> out;
     if (options.mode == extrude_mode::individual || fs.size() == 1) {
         std::vector<vec3<double>> moves;
         for (auto f : fs) {
@@ -258,8 +264,12 @@ result<extrude_result<M, T>> extrude(M& mesh, const R& faces, const extrude_opti
                             static_cast<long long>(T::face_index(mesh, f)));
             moves.push_back((options.direction ? dir : normalized(n)) * options.distance);
         }
-        for (std::size_t i = 0; i < fs.size(); ++i) de::extrude_one<M, T>(mesh, fs[i], moves[i], out);
-        return out;
+        return de::transact<M, T>(mesh, [&]<class JT>() -> result<extrude_result<M, T>> {
+            extrude_result<M, T> out;
+            for (std::size_t i = 0; i < fs.size(); ++i)
+                if (auto ok = de::extrude_one<M, JT>(mesh, fs[i], moves[i], out); !ok) return ok.error();
+            return out;
+        });
     }
     // Region: connected, with an outline, not pinched.
     auto in_r = [&](F f) { return f != T::null_face() && in_region.contains(T::face_index(mesh, f)); };
@@ -306,8 +316,11 @@ result<extrude_result<M, T>> extrude(M& mesh, const R& faces, const extrude_opti
         if (!(norm(area) > 0)) return fail(errc::invalid_argument, "extrude: the region's mean normal is zero; give a direction");
         dir = normalized(area);
     }
-    de::extrude_region<M, T>(mesh, fs, in_region, outline, dir * options.distance, out);
-    return out;
+    return de::transact<M, T>(mesh, [&]<class JT>() -> result<extrude_result<M, T>> {
+        extrude_result<M, T> out;
+        if (auto ok = de::extrude_region<M, JT>(mesh, fs, in_region, outline, dir * options.distance, out); !ok) return ok.error();
+        return out;
+    });
 }
 
 /// Extrudes one face with n corners over its outer loop and inner rings (see the range

@@ -65,12 +65,12 @@ double cut_parameter(const M& m, typename T::halfedge_handle h, const truncate_o
 }
 
 /// Truncates the vertices whose indices are in `selected` (already checked): splits every
-/// edge at their cuts, then replaces each vertex by a polygon through its cut points.
-template <class M, class T>
-truncate_set_result<M, T> truncate_checked(M& m, const std::vector<typename T::vertex_handle>& vs, const index_set& selected,
-                                           const truncate_options& o) {
+/// edge at their cuts, then replaces each vertex by a polygon through its cut points. Run
+/// inside a transaction (T journaled); an inner failure is passed on.
+template <class M, class T, class Out>
+result<void> truncate_checked(M& m, const std::vector<typename T::vertex_handle>& vs, const index_set& selected,
+                              const truncate_options& o, Out& out) {
     using H = typename T::halfedge_handle;
-    truncate_set_result<M, T> out;
     // Plan every split before changing anything, from the original geometry.
     struct cut { H h; double t_from, t_to; bool both; };
     std::vector<cut> cuts;
@@ -86,16 +86,20 @@ truncate_set_result<M, T> truncate_checked(M& m, const std::vector<typename T::v
     for (const auto& c : cuts) {
         const auto a = pos<M, T>(m, detail::euler::source<M, T>(m, c.h));
         const auto b = pos<M, T>(m, T::target(m, c.h));
-        if (c.both && c.t_from + c.t_to >= 1.0) {  // the cuts meet: one shared point
-            out.vertices.push_back(split_edge<M, T>(m, c.h, lerp(a, b, c.t_from)).vertex);
-            continue;
-        }
         const auto s = split_edge<M, T>(m, c.h, lerp(a, b, c.t_from));
-        out.vertices.push_back(s.vertex);
-        if (c.both) out.vertices.push_back(split_edge<M, T>(m, s.second, lerp(a, b, 1.0 - c.t_to)).vertex);
+        if (!s) return s.error();
+        out.vertices.push_back(s.value().vertex);
+        if (!c.both || c.t_from + c.t_to >= 1.0) continue;  // meeting cuts share one point
+        const auto s2 = split_edge<M, T>(m, s.value().second, lerp(a, b, 1.0 - c.t_to));
+        if (!s2) return s2.error();
+        out.vertices.push_back(s2.value().vertex);
     }
-    for (auto v : vs) out.faces.push_back(replace_vertex_by_polygon<M, T>(m, v));
-    return out;
+    for (auto v : vs) {
+        const auto f = replace_vertex_by_polygon<M, T>(m, v);
+        if (!f) return f.error();
+        out.faces.push_back(f.value());
+    }
+    return {};
 }
 
 }  // namespace detail::editing
@@ -111,7 +115,8 @@ truncate_set_result<M, T> truncate_checked(M& m, const std::vector<typename T::v
 /// corner is cut off by a single new edge (V + 1, E + 1, F + 0).
 ///
 /// Complexity O(sum of the degrees of the vertices) = O(V_adjacentV) per vertex, plus
-/// O(k log k) for k vertices. Errors (mesh unchanged): errc::invalid_argument for options out
+/// O(k) expected for the selection of k vertices (hashing). Atomic: on any error, or when an
+/// allocation throws, the mesh is unchanged (see detail/transaction.hpp). Errors (mesh unchanged): errc::invalid_argument for options out
 /// of range; errc::invalid_handle for a missing vertex; errc::topology for an isolated vertex
 /// or a vertex of degree 1; errc::non_manifold for a vertex with several boundary gaps.
 template <class M, class T = default_traits<M>, class R>
@@ -129,7 +134,11 @@ result<truncate_set_result<M, T>> truncate(M& mesh, const R& vertices, const tru
         selected.insert(i);
         vs.push_back(v);
     }
-    return de::truncate_checked<M, T>(mesh, vs, selected, options);
+    return de::transact<M, T>(mesh, [&]<class JT>() -> result<truncate_set_result<M, T>> {
+        truncate_set_result<M, T> out;
+        if (auto ok = de::truncate_checked<M, JT>(mesh, vs, selected, options, out); !ok) return ok.error();
+        return out;
+    });
 }
 
 /// Truncates one vertex of degree d (see the set overload): V + d - 1, E + d, F + 1.
@@ -142,12 +151,18 @@ result<truncate_result<M, T>> truncate(M& mesh, typename T::vertex_handle vertex
     if (auto ok = de::check_corner_vertex<M, T>(mesh, vertex, "truncate"); !ok) return ok.error();
     de::index_set selected;
     selected.insert(T::vertex_index(mesh, vertex));
-    auto r = de::truncate_checked<M, T>(mesh, std::vector<typename T::vertex_handle>{vertex}, selected, options);
-    truncate_result<M, T> out{r.faces[0], {}};
+    auto r = de::transact<M, T>(mesh, [&]<class JT>() -> result<truncate_set_result<M, T>> {
+        truncate_set_result<M, T> set;
+        if (auto ok = de::truncate_checked<M, JT>(mesh, std::vector<typename T::vertex_handle>{vertex}, selected, options, set); !ok)
+            return ok.error();
+        return set;
+    });
+    if (!r) return r.error();
+    truncate_result<M, T> out{r.value().faces[0], {}};
     if (out.face != T::null_face()) {
         for (auto v : T::face_vertices(mesh, out.face)) out.vertices.push_back(v);
     } else {
-        out.vertices = std::move(r.vertices);
+        out.vertices = std::move(r.value().vertices);
     }
     return out;
 }

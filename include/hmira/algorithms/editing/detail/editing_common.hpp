@@ -5,8 +5,10 @@
 #pragma once
 
 #include <algorithm>
+#include <concepts>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -14,6 +16,7 @@
 #include "../../../core/result.hpp"
 #include "../../../core/vec3.hpp"
 #include "../../euler/euler.hpp"
+#include "transaction.hpp"
 
 namespace hmira {
 
@@ -42,21 +45,98 @@ point<M, T> to_point(const vec3<double>& p) {
     return {static_cast<S>(p.x), static_cast<S>(p.y), static_cast<S>(p.z)};
 }
 
-/// A small sorted set of element indices: selections stay local (no array sized by the
-/// whole mesh), at O(k log k) for k selected elements.
+/// A set of element indices for selections: open addressing with linear probing, so that
+/// selections stay local (no array sized by the whole mesh) at expected O(1) per insert or
+/// lookup, O(k) for k elements (the table doubles at half load).
 class index_set {
 public:
-    /// Adds i; returns whether it was new.
+    /// Adds i; returns whether it was new. Expected O(1), amortised.
     bool insert(std::size_t i) {
-        const auto it = std::lower_bound(items_.begin(), items_.end(), i);
-        if (it != items_.end() && *it == i) return false;
-        items_.insert(it, i);
+        if (2 * (size_ + 1) > slots_.size()) grow();
+        std::size_t s = slot(i);
+        while (slots_[s] != empty) {
+            if (slots_[s] == i) return false;
+            s = (s + 1) & (slots_.size() - 1);
+        }
+        slots_[s] = i;
+        ++size_;
         return true;
     }
-    bool contains(std::size_t i) const { return std::binary_search(items_.begin(), items_.end(), i); }
-    std::size_t size() const { return items_.size(); }
+    /// Whether i was inserted. Expected O(1).
+    bool contains(std::size_t i) const {
+        if (slots_.empty()) return false;
+        for (std::size_t s = slot(i); slots_[s] != empty; s = (s + 1) & (slots_.size() - 1))
+            if (slots_[s] == i) return true;
+        return false;
+    }
+    /// Number of distinct indices inserted.
+    std::size_t size() const { return size_; }
+
 private:
-    std::vector<std::size_t> items_;
+    static constexpr std::size_t empty = ~std::size_t{0};
+    std::size_t slot(std::size_t i) const {
+        // Fibonacci hashing spreads consecutive indices over the table.
+        return static_cast<std::size_t>((static_cast<std::uint64_t>(i) * 0x9E3779B97F4A7C15ull) >> shift_);
+    }
+    void grow() {
+        std::vector<std::size_t> old = std::move(slots_);
+        const std::size_t n = old.empty() ? 16 : 2 * old.size();
+        slots_.assign(n, empty);
+        shift_ = 64;
+        for (std::size_t c = n; c > 1; c >>= 1) --shift_;
+        size_ = 0;
+        for (auto i : old)
+            if (i != empty) insert(i);
+    }
+    std::vector<std::size_t> slots_;
+    std::size_t size_ = 0;
+    unsigned shift_ = 64;
+};
+
+/// A map from element indices to small values (positions in a local array), open addressing
+/// like index_set: expected O(1) per operation, O(k) memory for k keys.
+class index_map {
+public:
+    static constexpr std::size_t none = ~std::size_t{0};
+    /// The value stored for i, or `none`. Expected O(1).
+    std::size_t find(std::size_t i) const {
+        if (keys_.empty()) return none;
+        for (std::size_t s = slot(i); keys_[s] != none; s = (s + 1) & (keys_.size() - 1))
+            if (keys_[s] == i) return values_[s];
+        return none;
+    }
+    /// Stores value for i unless i is present; returns the value stored for i. Expected O(1).
+    std::size_t emplace(std::size_t i, std::size_t value) {
+        if (2 * (size_ + 1) > keys_.size()) grow();
+        std::size_t s = slot(i);
+        while (keys_[s] != none) {
+            if (keys_[s] == i) return values_[s];
+            s = (s + 1) & (keys_.size() - 1);
+        }
+        keys_[s] = i;
+        values_[s] = value;
+        ++size_;
+        return value;
+    }
+
+private:
+    std::size_t slot(std::size_t i) const {
+        return static_cast<std::size_t>((static_cast<std::uint64_t>(i) * 0x9E3779B97F4A7C15ull) >> shift_);
+    }
+    void grow() {
+        std::vector<std::size_t> old_keys = std::move(keys_), old_values = std::move(values_);
+        const std::size_t n = old_keys.empty() ? 16 : 2 * old_keys.size();
+        keys_.assign(n, none);
+        values_.assign(n, none);
+        shift_ = 64;
+        for (std::size_t c = n; c > 1; c >>= 1) --shift_;
+        size_ = 0;
+        for (std::size_t s = 0; s < old_keys.size(); ++s)
+            if (old_keys[s] != none) emplace(old_keys[s], old_values[s]);
+    }
+    std::vector<std::size_t> keys_, values_;
+    std::size_t size_ = 0;
+    unsigned shift_ = 64;
 };
 
 /// The outgoing halfedges of v in rotation order (h -> next(opposite(h))), starting at the
@@ -115,6 +195,41 @@ result<void> check_corner_vertex(const M& m, typename T::vertex_handle v, const 
     return {};
 }
 
+/// Test hook for the fault-injection suites: traits that declare `static bool
+/// fail_inner_call()` can make any inner operator call of an edit fail (as if its precondition
+/// had not held) when it returns true. Absent on every real model: compiles to nothing.
+template <class T>
+result<void> inner_call_allowed(const char* what) {
+    if constexpr (requires { { T::fail_inner_call() } -> std::convertible_to<bool>; }) {
+        if (T::fail_inner_call()) return fail(errc::topology, std::string(what) + ": failure injected by the traits (test hook)");
+    }
+    return {};
+}
+
+/// The Euler operators as an edit calls them: through inner_call_allowed, results passed on.
+template <class M, class T>
+result<make_edge_vertex_result<M, T>> mev(M& m, typename T::halfedge_handle corner, const vec3<double>& p) {
+    if (auto ok = inner_call_allowed<T>("make_edge_vertex"); !ok) return ok.error();
+    return make_edge_vertex<M, T>(m, corner, to_point<M, T>(p));
+}
+template <class M, class T>
+result<make_edge_face_result<M, T>> mef(M& m, typename T::halfedge_handle a, typename T::halfedge_handle b) {
+    if (auto ok = inner_call_allowed<T>("make_edge_face"); !ok) return ok.error();
+    return make_edge_face<M, T>(m, a, b);
+}
+template <class M, class T>
+result<void> kef(M& m, typename T::halfedge_handle h) {
+    if (auto ok = inner_call_allowed<T>("kill_edge_face"); !ok) return ok.error();
+    if (auto r = kill_edge_face<M, T>(m, h); !r) return r.error();
+    return {};
+}
+template <class M, class T>
+result<void> kev(M& m, typename T::halfedge_handle h) {
+    if (auto ok = inner_call_allowed<T>("kill_edge_vertex"); !ok) return ok.error();
+    if (auto r = kill_edge_vertex<M, T>(m, h); !r) return r.error();
+    return {};
+}
+
 /// What split_edge made of the halfedge u -> w.
 template <class M, class T>
 struct split_result {
@@ -126,18 +241,20 @@ struct split_result {
 /// grows x from u inside face(h), makeEF joins x to w (cutting off the triangle u x w), and
 /// killEF deletes the old edge, merging that triangle into the face on the other side.
 /// V + 1, E + 1, F + 0. The old edge's handles die. O(1), plus O(V_adjacentV) on a boundary.
-/// Precondition: h is a usable halfedge of an edge whose ends differ (never fails then).
+/// Precondition: h is a usable halfedge of an edge whose ends differ; an inner failure is
+/// passed on (the caller's transaction undoes the partial split).
 template <class M, class T>
-split_result<M, T> split_edge(M& m, typename T::halfedge_handle h, const vec3<double>& p) {
+result<split_result<M, T>> split_edge(M& m, typename T::halfedge_handle h, const vec3<double>& p) {
     const auto corner = T::prev(m, h);  // into u, in face(h)
     const auto o = T::opposite(m, h);
-    const auto mev = make_edge_vertex<M, T>(m, corner, to_point<M, T>(p));  // loop: corner -> u->x -> x->u -> h
-    const auto ux = mev->halfedge;
-    const auto mef = make_edge_face<M, T>(m, ux, h);  // new face: h -> w->x -> x->u; old side: u->x -> x->w -> ...
-    const auto xw = mef->halfedge;
-    const auto kef = kill_edge_face<M, T>(m, o);  // keeps face(o), kills the triangle (face of h)
-    (void)kef;
-    return {mev->vertex, ux, xw};
+    const auto made_vertex = mev<M, T>(m, corner, p);  // loop: corner -> u->x -> x->u -> h
+    if (!made_vertex) return made_vertex.error();
+    const auto ux = made_vertex.value().halfedge;
+    const auto made_face = mef<M, T>(m, ux, h);  // new face: h -> w->x -> x->u; old side: u->x -> x->w -> ...
+    if (!made_face) return made_face.error();
+    const auto xw = made_face.value().halfedge;
+    if (auto ok = kef<M, T>(m, o); !ok) return ok.error();  // keeps face(o), kills the triangle (face of h)
+    return split_result<M, T>{made_vertex.value().vertex, ux, xw};
 }
 
 /// Replaces vertex v by a polygon through its neighbours, from Euler operators: the corner of
@@ -149,22 +266,23 @@ split_result<M, T> split_edge(M& m, typename T::halfedge_handle h, const vec3<do
 /// neighbours joined by one edge, which both faces share) and the result is the null face.
 ///
 /// Preconditions (checked by the callers): check_corner_vertex(v) holds; the neighbours are
-/// distinct and no two of them are joined by an edge, except across a triangle at v.
+/// distinct and no two of them are joined by an edge, except across a triangle at v. An inner
+/// failure is passed on (the caller's transaction undoes the partial replacement).
 /// V - 1, and for degree d: E + 0, F + 1 (d >= 3), or E - 1, F + 0 (d = 2).
 /// Cost O(d): every face operation touches one triangle.
 template <class M, class T>
-typename T::face_handle replace_vertex_by_polygon(M& m, typename T::vertex_handle v) {
+result<typename T::face_handle> replace_vertex_by_polygon(M& m, typename T::vertex_handle v) {
     auto hs = outgoing<M, T>(m, v);
     const std::size_t d = hs.size();
     const bool boundary = T::face(m, hs[0]) == T::null_face();
     if (boundary) {
         // The gap lies between hs[d-1] and hs[0]; closing it makes the triangle a[d-1] v a[0].
         const auto into_last = T::prev(m, T::opposite(m, hs[d - 1]));
-        (void)make_edge_face<M, T>(m, into_last, hs[0]);
+        if (auto r = mef<M, T>(m, into_last, hs[0]); !r) return r.error();
         if (d == 2) {
             // The one real face keeps the new edge as its boundary side.
-            (void)kill_edge_face<M, T>(m, T::opposite(m, hs[0]));
-            (void)kill_edge_vertex<M, T>(m, T::opposite(m, hs[1]));
+            if (auto ok = kef<M, T>(m, T::opposite(m, hs[0])); !ok) return ok.error();
+            if (auto ok = kev<M, T>(m, T::opposite(m, hs[1])); !ok) return ok.error();
             return T::null_face();
         }
     }
@@ -173,18 +291,19 @@ typename T::face_handle replace_vertex_by_polygon(M& m, typename T::vertex_handl
         const auto in = T::opposite(m, hs[i]);          // a[i] -> v
         const auto out = hs[(i + 1) % d];                // v -> a[i+1], same face as `in`
         if (T::next(m, T::next(m, out)) == in) continue;  // already a triangle
-        (void)make_edge_face<M, T>(m, T::prev(m, in), out);
+        if (auto r = mef<M, T>(m, T::prev(m, in), out); !r) return r.error();
         if (d == 2) break;  // one triangle, merged into the other face below
     }
     if (d == 2) {
         // hs[1]'s face is the triangle cut above; merge it into the face of hs[0].
-        (void)kill_edge_face<M, T>(m, hs[0]);
-        (void)kill_edge_vertex<M, T>(m, T::opposite(m, hs[1]));
+        if (auto ok = kef<M, T>(m, hs[0]); !ok) return ok.error();
+        if (auto ok = kev<M, T>(m, T::opposite(m, hs[1])); !ok) return ok.error();
         return T::null_face();
     }
-    for (std::size_t i = 0; i + 1 < d; ++i) (void)kill_edge_face<M, T>(m, hs[i]);
+    for (std::size_t i = 0; i + 1 < d; ++i)
+        if (auto ok = kef<M, T>(m, hs[i]); !ok) return ok.error();
     const auto face = T::face(m, hs[0]);
-    (void)kill_edge_vertex<M, T>(m, T::opposite(m, hs[d - 1]));
+    if (auto ok = kev<M, T>(m, T::opposite(m, hs[d - 1])); !ok) return ok.error();
     return face;
 }
 

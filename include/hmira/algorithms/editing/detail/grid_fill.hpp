@@ -109,9 +109,10 @@ inline fitted_sphere fit_sphere(const std::vector<vec3<double>>& pts) {
 /// from it to corner i + 1), patch interiors by a Coons patch of their four sides, then
 /// everything projected onto fit_sphere(boundary) when that fit is accepted.
 /// Built from makeEV chains (antennas into the face) closed by makeEF; every halfedge is found
-/// by walking the current face: O(k n^3) at worst (O(k n^2) new elements).
+/// by walking the current face: O(k n^3) at worst (O(k n^2) new elements). Run inside a
+/// transaction (T journaled); an inner failure is passed on.
 template <class M, class T>
-grid_fill_result<M, T> grid_fill(M& m, typename T::face_handle f, const std::vector<std::vector<typename T::vertex_handle>>& arcs) {
+result<grid_fill_result<M, T>> grid_fill(M& m, typename T::face_handle f, const std::vector<std::vector<typename T::vertex_handle>>& arcs) {
     using V = typename T::vertex_handle;
     using F = typename T::face_handle;
     using P = vec3<double>;
@@ -176,19 +177,21 @@ grid_fill_result<M, T> grid_fill(M& m, typename T::face_handle f, const std::vec
     // ---- topology ----
     // Chain from x through new vertices at `pts`, closed at y when y is given. makeEF's new
     // face is the part of the loop running forward from x to y; returns it (null if open).
-    auto chain = [&](F face, V x, const std::vector<P>& pts, const V* y, std::vector<V>& made) -> F {
+    auto chain = [&](F face, V x, const std::vector<P>& pts, const V* y, std::vector<V>& made) -> result<F> {
         auto corner = into_vertex<M, T>(m, face, x);
         const auto cy = y ? into_vertex<M, T>(m, face, *y) : T::null_halfedge();
         for (const auto& p : pts) {
-            const auto r = make_edge_vertex<M, T>(m, corner, to_point<M, T>(place(p)));
-            made.push_back(r->vertex);
-            out.vertices.push_back(r->vertex);
-            corner = r->halfedge;
+            const auto r = mev<M, T>(m, corner, place(p));
+            if (!r) return r.error();
+            made.push_back(r.value().vertex);
+            out.vertices.push_back(r.value().vertex);
+            corner = r.value().halfedge;
         }
         if (!y) return T::null_face();
-        const F nf = make_edge_face<M, T>(m, corner, cy)->face;
-        out.faces.push_back(nf);
-        return nf;
+        const auto nf = mef<M, T>(m, corner, cy);
+        if (!nf) return nf.error();
+        out.faces.push_back(nf.value().face);
+        return nf.value().face;
     };
     auto slice = [](const std::vector<P>& v, std::size_t from, std::size_t to) {  // v[from, to)
         return std::vector<P>(v.begin() + std::ptrdiff_t(from), v.begin() + std::ptrdiff_t(to));
@@ -200,14 +203,15 @@ grid_fill_result<M, T> grid_fill(M& m, typename T::face_handle f, const std::vec
     if (!odd) {
         // Spoke 0 is an antenna ending in the centre; each further spoke closes patch i - 1.
         lv[0].push_back(arcs[0][h]);
-        (void)chain(rest, arcs[0][h], slice(lp[0], 1, h + 1), nullptr, lv[0]);
+        if (auto r = chain(rest, arcs[0][h], slice(lp[0], 1, h + 1), nullptr, lv[0]); !r) return r.error();
         const V o = lv[0][h];
         for (std::size_t i = 1; i < k; ++i) {
             lv[i].push_back(arcs[i][h]);
-            const F nf = chain(rest, arcs[i][h], slice(lp[i], 1, h), &o, lv[i]);
+            const auto nf = chain(rest, arcs[i][h], slice(lp[i], 1, h), &o, lv[i]);
+            if (!nf) return nf.error();
             lv[i].push_back(o);
             patch[i - 1] = rest;
-            rest = nf;
+            rest = nf.value();
         }
         patch[k - 1] = rest;
         for (std::size_t i = 0; i < k; ++i) rv[i] = lv[nx(i)];
@@ -215,29 +219,35 @@ grid_fill_result<M, T> grid_fill(M& m, typename T::face_handle f, const std::vec
         // L_0 is an antenna ending at I_0; then, around: R_i closes patch i, and L_{i+1}
         // with the inner edge I_{i+1} -> I_i closes strip i + 1.
         lv[0].push_back(arcs[0][a0]);
-        (void)chain(rest, arcs[0][a0], slice(lp[0], 1, h + 1), nullptr, lv[0]);
+        if (auto r = chain(rest, arcs[0][a0], slice(lp[0], 1, h + 1), nullptr, lv[0]); !r) return r.error();
         for (std::size_t i = 0; i < k; ++i) {
             rv[i].push_back(arcs[nx(i)][h]);
-            F nf = chain(rest, arcs[nx(i)][h], slice(rp[i], 1, h), &lv[i][h], rv[i]);
+            auto nf = chain(rest, arcs[nx(i)][h], slice(rp[i], 1, h), &lv[i][h], rv[i]);
+            if (!nf) return nf.error();
             rv[i].push_back(lv[i][h]);
             patch[i] = rest;
-            rest = nf;
+            rest = nf.value();
             if (i + 1 == k) break;
             lv[i + 1].push_back(arcs[i + 1][a0]);
             nf = chain(rest, arcs[i + 1][a0], slice(lp[i + 1], 1, h + 1), &lv[i][h], lv[i + 1]);
+            if (!nf) return nf.error();
             strip[i + 1] = rest;
-            rest = nf;
+            rest = nf.value();
         }
         // What is left is strip 0 and the middle k-gon, split by the edge I_{k-1} -> I_0.
         std::vector<V> none;
-        strip[0] = chain(rest, lv[k - 1][h], {}, &lv[0][h], none);
+        const auto s0 = chain(rest, lv[k - 1][h], {}, &lv[0][h], none);
+        if (!s0) return s0.error();
+        strip[0] = s0.value();
         // Each strip between patches i - 1 and i: rungs R_{i-1}[r] - L_i[r].
         for (std::size_t i = 0; i < k; ++i) {
             F c = strip[i];
             const auto& rr = rv[(i + k - 1) % k];
             for (std::size_t r = 1; r < h; ++r) {
                 // Forward from L_i[r]: up L_i, across the inner edge, down R_{i-1}: the rest.
-                c = chain(c, lv[i][r], {}, &rr[r], none);
+                const auto nc = chain(c, lv[i][r], {}, &rr[r], none);
+                if (!nc) return nc.error();
+                c = nc.value();
             }
         }
     }
@@ -257,7 +267,9 @@ grid_fill_result<M, T> grid_fill(M& m, typename T::face_handle f, const std::vec
         for (std::size_t r = 1; r < h; ++r) {
             std::vector<V> made{g[r][0]};
             // Forward from G[r][0] runs back up to row 0: the new face is the row strip r - 1.
-            rows[r - 1] = chain(c, g[r][0], slice(gp[i][r], 1, h), &g[r][h], made);
+            const auto row = chain(c, g[r][0], slice(gp[i][r], 1, h), &g[r][h], made);
+            if (!row) return row.error();
+            rows[r - 1] = row.value();
             for (std::size_t s = 1; s < h; ++s) g[r][s] = made[s];
         }
         rows[h - 1] = c;
@@ -265,7 +277,11 @@ grid_fill_result<M, T> grid_fill(M& m, typename T::face_handle f, const std::vec
         for (std::size_t r = 0; r < h; ++r) {
             F cell = rows[r];
             // Forward from G[r][s] runs to the row's far end and back: the new face is the rest.
-            for (std::size_t s = 1; s < h; ++s) cell = chain(cell, g[r][s], {}, &g[r + 1][s], none);
+            for (std::size_t s = 1; s < h; ++s) {
+                const auto next_cell = chain(cell, g[r][s], {}, &g[r + 1][s], none);
+                if (!next_cell) return next_cell.error();
+                cell = next_cell.value();
+            }
         }
     }
     return out;

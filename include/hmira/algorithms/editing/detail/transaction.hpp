@@ -1,0 +1,249 @@
+// hmira/algorithms/editing/detail/transaction.hpp
+// How truncate, bevel and extrude keep their "mesh unchanged on error" promise: the edit runs
+// through a journaling traits class that records every raw mutation, and is rolled back from
+// the journal when an inner operator fails or anything throws (std::bad_alloc). Not public API.
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "../../../concepts.hpp"
+#include "../../../core/result.hpp"
+#include "../../../core/vec3.hpp"
+
+namespace hmira::detail::editing {
+
+// Why a journal and not "check everything first": an edit is a long chain of Euler operators
+// whose later preconditions depend on what the earlier ones built (bevel's strips, grid fill's
+// antennas), so checking them all up front would mean simulating the edit; and no up-front
+// check can give the strong guarantee when an allocation throws half way. A journal covers
+// both at O(1) time and memory per raw mutation, and keeps the edit local.
+//
+// What is journaled: set_next (with the stored prev of the new next, which set_next also
+// overwrites on every shipped model), set_target, set_face, set_vertex_halfedge,
+// set_face_halfedge, set_position, add/remove_inner_ring, and the elements created. Erasures
+// are deferred to the commit, so a rollback never has to revive an element: after a rollback
+// the same elements are live with the same handles, connectivity and positions; only index
+// bounds and garbage (the created elements, erased again) differ. Requirement on the model:
+// prev() reads a stored link in O(1) (true of every shipped model), and erase_* and setters do
+// not allocate once an erasure has happened (OpenMesh's status bits are requested before the
+// first change, through the traits' optional prepare_erase()).
+
+/// Every raw mutation of one edit, in order, and what undoes it.
+template <class M, class T>
+class journal {
+public:
+    using H = typename T::halfedge_handle;
+    using V = typename T::vertex_handle;
+    using F = typename T::face_handle;
+    using E = typename T::edge_handle;
+    using P = vec3<typename T::scalar>;
+
+    enum class kind : std::uint8_t { next, target, face, vertex_halfedge, face_halfedge, position, ring_added, ring_removed };
+    struct entry {
+        kind what;
+        H h{};  // the halfedge changed (next, target, face), or the ring's halfedge
+        H old_h{};
+        V v{};
+        F f{};
+        std::size_t position = 0;  // index into positions_ for kind::position
+    };
+    struct old_prev {
+        H x, prev;
+        std::size_t seq;
+    };
+
+    void record_next(const M& m, H h, H n) {
+        prev_.reserve(prev_.size() + 1);
+        entries_.push_back({kind::next, h, T::next(m, h), V{}, F{}, 0});
+        prev_.push_back({n, T::prev(m, n), prev_.size()});
+    }
+    void record_target(const M& m, H h) { entries_.push_back({kind::target, h, H{}, T::target(m, h), F{}, 0}); }
+    void record_face(const M& m, H h) { entries_.push_back({kind::face, h, H{}, V{}, T::face(m, h), 0}); }
+    void record_vertex_halfedge(const M& m, V v) { entries_.push_back({kind::vertex_halfedge, H{}, T::vertex_halfedge(m, v), v, F{}, 0}); }
+    void record_face_halfedge(const M& m, F f) { entries_.push_back({kind::face_halfedge, H{}, T::face_halfedge(m, f), V{}, f, 0}); }
+    void record_position(const M& m, V v) {
+        positions_.reserve(positions_.size() + 1);
+        entries_.push_back({kind::position, H{}, H{}, v, F{}, positions_.size()});
+        positions_.push_back(T::position(m, v));
+    }
+    void record_ring(F f, H h, bool added) { entries_.push_back({added ? kind::ring_added : kind::ring_removed, h, H{}, V{}, f, 0}); }
+
+    /// Room for one more created element, reserved before the model creates it (so that
+    /// recording it cannot throw after it exists).
+    void reserve_created() {
+        made_vertices_.reserve(made_vertices_.size() + 1);
+        made_edges_.reserve(made_edges_.size() + 1);
+        made_faces_.reserve(made_faces_.size() + 1);
+    }
+    void created(V v) { made_vertices_.push_back(v); }
+    void created(E e) { made_edges_.push_back(e); }
+    void created(F f) { made_faces_.push_back(f); }
+    void erase_later(E e) { erase_edges_.push_back(e); }
+    void erase_later(F f) { erase_faces_.push_back(f); }
+    void erase_later(V v) { erase_vertices_.push_back(v); }
+
+    /// Number of raw mutations so far (the fault-injection tests count them).
+    std::size_t size() const { return entries_.size() + made_vertices_.size() + made_edges_.size() + made_faces_.size(); }
+
+    /// Performs the deferred erasures. Erasing only marks elements on every shipped model and
+    /// cannot fail; should the very first one throw, nothing has happened yet and the caller
+    /// rolls back.
+    void commit(M& m) {
+        for (auto e : erase_edges_) T::erase_edge(m, e);
+        for (auto f : erase_faces_) T::erase_face(m, f);
+        for (auto v : erase_vertices_) T::erase_vertex(m, v);
+    }
+
+    /// Undoes everything recorded, newest first; then re-links the stored prev of every
+    /// halfedge that set_next reached, and erases the created elements. Allocates nothing.
+    void rollback(M& m) noexcept {
+        for (auto it = entries_.rbegin(); it != entries_.rend(); ++it) {
+            switch (it->what) {
+            case kind::next: T::set_next(m, it->h, it->old_h); break;
+            case kind::target: T::set_target(m, it->h, it->v); break;
+            case kind::face: T::set_face(m, it->h, it->f); break;
+            case kind::vertex_halfedge: T::set_vertex_halfedge(m, it->v, it->old_h); break;
+            case kind::face_halfedge: T::set_face_halfedge(m, it->f, it->old_h); break;
+            case kind::position:
+                if constexpr (position_mutable_mesh<M, T>) T::set_position(m, it->v, positions_[it->position]);
+                break;
+            case kind::ring_added:
+                if constexpr (inner_ring_mutable_mesh<M, T>) T::remove_inner_ring(m, it->f, it->h);
+                break;
+            case kind::ring_removed:
+                if constexpr (inner_ring_mutable_mesh<M, T>) T::add_inner_ring(m, it->f, it->h);
+                break;
+            }
+        }
+        // set_next(h, n) also set prev(n) = h. The first recorded prev of each n is its value
+        // before the edit; set_next(prev, n) restores it (and sets next(prev) = n, its old value).
+        std::sort(made_edges_.begin(), made_edges_.end(),
+                  [&](E a, E b) { return T::edge_index(m, a) < T::edge_index(m, b); });
+        auto made = [&](H h) {
+            const auto e = T::edge(m, h);
+            return std::binary_search(made_edges_.begin(), made_edges_.end(), e,
+                                      [&](E a, E b) { return T::edge_index(m, a) < T::edge_index(m, b); });
+        };
+        std::sort(prev_.begin(), prev_.end(), [&](const old_prev& a, const old_prev& b) {
+            const auto ia = T::halfedge_index(m, a.x), ib = T::halfedge_index(m, b.x);
+            return ia != ib ? ia < ib : a.seq < b.seq;
+        });
+        for (std::size_t i = 0; i < prev_.size(); ++i) {
+            if (i > 0 && prev_[i].x == prev_[i - 1].x) continue;
+            const auto& r = prev_[i];
+            if (r.prev == T::null_halfedge() || made(r.x) || made(r.prev)) continue;
+            T::set_next(m, r.prev, r.x);
+        }
+        for (auto e : made_edges_) T::erase_edge(m, e);
+        for (auto f : made_faces_) T::erase_face(m, f);
+        for (auto v : made_vertices_) T::erase_vertex(m, v);
+    }
+
+private:
+    std::vector<entry> entries_;
+    std::vector<old_prev> prev_;
+    std::vector<P> positions_;
+    std::vector<V> made_vertices_;
+    std::vector<E> made_edges_;
+    std::vector<F> made_faces_;
+    std::vector<E> erase_edges_;
+    std::vector<F> erase_faces_;
+    std::vector<V> erase_vertices_;
+};
+
+/// T with every raw mutation recorded in the active journal; navigation is T's own. An edit
+/// instantiated with these traits can be rolled back. The journal is per thread, so edits on
+/// different meshes may run in parallel threads.
+template <class M, class T>
+struct journaled_traits : T {
+    using H = typename T::halfedge_handle;
+    using V = typename T::vertex_handle;
+    using F = typename T::face_handle;
+    using E = typename T::edge_handle;
+    static inline thread_local journal<M, T>* active = nullptr;
+
+    static void set_next(M& m, H h, H n) { active->record_next(m, h, n); T::set_next(m, h, n); }
+    static void set_target(M& m, H h, V v) { active->record_target(m, h); T::set_target(m, h, v); }
+    static void set_face(M& m, H h, F f) { active->record_face(m, h); T::set_face(m, h, f); }
+    static void set_vertex_halfedge(M& m, V v, H h) { active->record_vertex_halfedge(m, v); T::set_vertex_halfedge(m, v, h); }
+    static void set_face_halfedge(M& m, F f, H h) { active->record_face_halfedge(m, f); T::set_face_halfedge(m, f, h); }
+    static void set_position(M& m, V v, const vec3<typename T::scalar>& p)
+        requires position_mutable_mesh<M, T>
+    {
+        active->record_position(m, v);
+        T::set_position(m, v, p);
+    }
+    static void add_inner_ring(M& m, F f, H h)
+        requires inner_ring_mutable_mesh<M, T>
+    {
+        active->record_ring(f, h, true);
+        T::add_inner_ring(m, f, h);
+    }
+    static void remove_inner_ring(M& m, F f, H h)
+        requires inner_ring_mutable_mesh<M, T>
+    {
+        active->record_ring(f, h, false);
+        T::remove_inner_ring(m, f, h);
+    }
+    static H new_edge(M& m, V a, V b) {
+        active->reserve_created();
+        const H h = T::new_edge(m, a, b);
+        active->created(T::edge(m, h));
+        return h;
+    }
+    static F new_face(M& m) {
+        active->reserve_created();
+        const F f = T::new_face(m);
+        active->created(f);
+        return f;
+    }
+    static V add_vertex(M& m, const vec3<typename T::scalar>& p) {
+        active->reserve_created();
+        const V v = T::add_vertex(m, p);
+        active->created(v);
+        return v;
+    }
+    static void erase_edge(M&, E e) { active->erase_later(e); }
+    static void erase_face(M&, F f) { active->erase_later(f); }
+    static void erase_vertex(M&, V v) { active->erase_later(v); }
+};
+
+/// Runs `body.template operator()<JT>()` with JT = journaled_traits<M, T>: it must do all its
+/// mutation through JT. On an error result, or on any exception, every change is undone (the
+/// exception is rethrown); otherwise the deferred erasures are applied. Returns body's result.
+/// Cost: O(1) time and memory per raw mutation on top of the edit.
+template <class M, class T, class Body>
+auto transact(M& m, Body&& body) -> decltype(body.template operator()<journaled_traits<M, T>>()) {
+    using JT = journaled_traits<M, T>;
+    if constexpr (requires { T::prepare_erase(m); }) T::prepare_erase(m);
+    journal<M, T> j;
+    struct activation {
+        journal<M, T>* saved;
+        explicit activation(journal<M, T>* now) : saved(JT::active) { JT::active = now; }
+        ~activation() { JT::active = saved; }
+        activation(const activation&) = delete;
+        activation& operator=(const activation&) = delete;
+    };
+    try {
+        auto r = [&] {
+            activation on(&j);
+            return body.template operator()<JT>();
+        }();
+        if (!r) {
+            j.rollback(m);
+            return r;
+        }
+        j.commit(m);
+        return r;
+    } catch (...) {
+        j.rollback(m);
+        throw;
+    }
+}
+
+}  // namespace hmira::detail::editing
