@@ -241,6 +241,23 @@ concept inner_ring_mutable_mesh = inner_ring_mesh<M, T> && halfedge_mutable_mesh
         T::remove_inner_ring(m, f, h);
     };
 
+/// `T::remove_face(m, f)` removes one face and keeps its vertices, returning result<void>
+/// (an error, and the mesh unchanged, for a face that does not exist). The way a model
+/// without edges (face-vertex) removes faces; halfedge models unlink them through
+/// halfedge_mutable_mesh instead.
+template <class M, class T = default_traits<M>>
+concept face_removal_mesh = face_list_mesh<M, T> && requires(M& m, typename T::face_handle f) {
+    { T::remove_face(m, f) } -> std::same_as<result<void>>;
+};
+
+/// `T::remove_vertex(m, v)` removes a vertex and every face that uses it, returning
+/// result<void> (an error, and the mesh unchanged, for a vertex that does not exist).
+template <class M, class T = default_traits<M>>
+concept vertex_removal_mesh = vertex_list_mesh<M, T> && face_list_mesh<M, T> &&
+    requires(M& m, typename T::vertex_handle v) {
+        { T::remove_vertex(m, v) } -> std::same_as<result<void>>;
+    };
+
 /// `T::change_count(m)` grows on every change of connectivity, so that a cache built from
 /// the mesh (an indexed adapter) can tell it has gone stale.
 template <class M, class T = default_traits<M>>

@@ -176,6 +176,8 @@ HMIRA_CAPABILITY(polygon_mesh_builder);
 HMIRA_CAPABILITY(face_reversible_mesh);
 HMIRA_CAPABILITY(halfedge_mutable_mesh);
 HMIRA_CAPABILITY(inner_ring_mutable_mesh);
+HMIRA_CAPABILITY(face_removal_mesh);
+HMIRA_CAPABILITY(vertex_removal_mesh);
 HMIRA_CAPABILITY(change_counted_mesh);
 using capabilities =
     row_list<cap_mesh_element_types, cap_vertex_list_mesh, cap_face_list_mesh, cap_edge_list_mesh, cap_vertex_index_mesh,
@@ -183,7 +185,8 @@ using capabilities =
              cap_position_mutable_mesh, cap_vertex_adjacency_mesh, cap_vertex_face_adjacency_mesh,
              cap_vertex_edge_adjacency_mesh, cap_face_adjacency_mesh, cap_halfedge_navigable_mesh, cap_halfedge_index_mesh,
              cap_inner_ring_mesh, cap_mesh_builder, cap_polygon_mesh_builder, cap_face_reversible_mesh,
-             cap_halfedge_mutable_mesh, cap_inner_ring_mutable_mesh, cap_change_counted_mesh>;
+             cap_halfedge_mutable_mesh, cap_inner_ring_mutable_mesh, cap_face_removal_mesh, cap_vertex_removal_mesh,
+             cap_change_counted_mesh>;
 
 // A few claims spelled out, so that the compiler states them even before the table is read.
 static_assert(!hmira::vertex_adjacency_mesh<hmira::face_vertex_mesh>);

@@ -16,6 +16,7 @@
 #include "../core/vec3.hpp"
 #include "../traits.hpp"
 #include "detail/element_range.hpp"
+#include "detail/link_face.hpp"
 #include "detail/native_traits.hpp"
 #include "face_vertex_mesh.hpp"  // index_remap
 #include "handles.hpp"
@@ -259,123 +260,13 @@ public:
     /// from the vertex's other fans by boundary gaps (a pinch that validate() reports as a
     /// non-manifold vertex until the faces between the fans are added).
     result<face_handle> add_face(std::span<const vertex_handle> vs) {
-        const std::size_t n = vs.size();
-        if (n < 3)
-            return fail(errc::degenerate_face, "add_face: a face needs at least 3 vertices, got " + std::to_string(n));
-        scratch_halfedges_.assign(n, {});
-        scratch_new_.assign(n, 0);
-        for (std::size_t i = 0; i < n; ++i) {
-            if (!is_valid(vs[i]))
-                return fail(errc::invalid_handle,
-                            "add_face: corner " + std::to_string(i) + " names vertex " +
-                                std::to_string(static_cast<long long>(vs[i].index)) + ", which does not exist",
-                            static_cast<long long>(vs[i].index));
-            for (std::size_t j = 0; j < i; ++j)
-                if (vs[j] == vs[i])
-                    return fail(errc::degenerate_face, "add_face: vertex " + std::to_string(vs[i].index) +
-                                                           " appears twice in the face", vs[i].index);
-        }
-        for (std::size_t i = 0; i < n; ++i) {
-            if (!is_boundary(vs[i]))
-                return fail(errc::non_manifold, "add_face: vertex " + std::to_string(vs[i].index) +
-                                                    " is interior (surrounded by faces); a face there would be non-manifold",
-                            vs[i].index);
-            const auto h = find_halfedge(vs[i], vs[(i + 1) % n]);
-            if (!h.is_null() && !is_boundary(h)) {
-                const bool reversed = is_boundary(opposite(h));
-                return fail(reversed ? errc::orientation_conflict : errc::non_manifold,
-                            "add_face: edge " + std::to_string(vs[i].index) + "->" + std::to_string(vs[(i + 1) % n].index) +
-                                (reversed ? " is already used in this direction by face " + std::to_string(face(h).index) +
-                                                " (the new face is wound against its neighbour)"
-                                          : " already has two faces"),
-                            vs[i].index);
-            }
-            scratch_halfedges_[i] = h;
-            scratch_new_[i] = h.is_null();
-        }
-        // A vertex between two existing edges must be able to re-link its boundary fans; check
-        // first so that a failure changes nothing.
-        for (std::size_t i = 0; i < n; ++i) {
-            const std::size_t ii = (i + 1) % n;
-            if (scratch_new_[i] || scratch_new_[ii]) continue;
-            const auto inner_prev = scratch_halfedges_[i], inner_next = scratch_halfedges_[ii];
-            if (next(inner_prev) == inner_next) continue;
-            if (find_free_gap(inner_prev, inner_next).is_null())
-                return fail(errc::non_manifold, "add_face: vertex " + std::to_string(vs[ii].index) +
-                                                    " has no free boundary gap to move its fans to", vs[ii].index);
-        }
-        // Re-link: move the boundary patch between inner_prev and inner_next elsewhere so the
-        // two become consecutive.
-        for (std::size_t i = 0; i < n; ++i) {
-            const std::size_t ii = (i + 1) % n;
-            if (scratch_new_[i] || scratch_new_[ii]) continue;
-            const auto inner_prev = scratch_halfedges_[i], inner_next = scratch_halfedges_[ii];
-            if (next(inner_prev) == inner_next) continue;
-            const auto boundary_prev = find_free_gap(inner_prev, inner_next);
-            const auto boundary_next = next(boundary_prev);
-            const auto patch_start = next(inner_prev), patch_end = prev(inner_next);
-            link(boundary_prev, patch_start);
-            link(patch_end, boundary_next);
-            link(inner_prev, inner_next);
-        }
-        for (std::size_t i = 0; i < n; ++i)
-            if (scratch_new_[i]) scratch_halfedges_[i] = new_edge(vs[i], vs[(i + 1) % n]);
-
-        const auto f = new_face();
-        faces_[f.index].outer = scratch_halfedges_[n - 1];
-
-        // Compute the new next links from the state before this face, then apply them.
-        scratch_links_.clear();
-        for (std::size_t i = 0; i < n; ++i) {
-            const std::size_t ii = (i + 1) % n;
-            const auto v = vs[ii];
-            const auto inner_prev = scratch_halfedges_[i], inner_next = scratch_halfedges_[ii];
-            const unsigned kind = (scratch_new_[i] ? 1u : 0u) | (scratch_new_[ii] ? 2u : 0u);
-            if (kind != 0) {
-                const auto outer_prev = opposite(inner_next), outer_next = opposite(inner_prev);
-                switch (kind) {
-                    case 1: {  // prev new, next old
-                        const auto boundary_prev = prev(inner_next);
-                        scratch_links_.push_back({boundary_prev, outer_next});
-                        vertex_out_[v.index] = outer_next;
-                        break;
-                    }
-                    case 2: {  // prev old, next new
-                        const auto boundary_next = next(inner_prev);
-                        scratch_links_.push_back({outer_prev, boundary_next});
-                        vertex_out_[v.index] = boundary_next;
-                        break;
-                    }
-                    default: {  // both new
-                        if (vertex_out_[v.index].is_null()) {
-                            vertex_out_[v.index] = outer_next;
-                            scratch_links_.push_back({outer_prev, outer_next});
-                        } else {
-                            const auto boundary_next = vertex_out_[v.index];
-                            const auto boundary_prev = prev(boundary_next);
-                            scratch_links_.push_back({boundary_prev, outer_next});
-                            scratch_links_.push_back({outer_prev, boundary_next});
-                        }
-                    }
-                }
-                scratch_links_.push_back({inner_prev, inner_next});
-            }
-            halfedges_[inner_prev.index].face = f;
-        }
-        for (const auto& [a, b] : scratch_links_) link(a, b);
-        for (std::size_t i = 0; i < n; ++i) adjust_outgoing_halfedge(vs[i]);
-        return f;
+        return detail::link_face<basic_halfedge_mesh, mesh_traits<basic_halfedge_mesh>>(*this, vs, link_scratch_,
+                                                                                        [this](vertex_handle v) { return is_valid(v); });
     }
 
     /// Makes the stored outgoing halfedge of v a boundary one if v has any. O(V_adjacentV).
     void adjust_outgoing_halfedge(vertex_handle v) {
-        const auto start = vertex_out_[v.index];
-        if (start.is_null()) return;
-        for (auto h : outgoing_halfedges(v))
-            if (is_boundary(h)) {
-                vertex_out_[v.index] = h;
-                return;
-            }
+        detail::prefer_boundary_halfedge<basic_halfedge_mesh, mesh_traits<basic_halfedge_mesh>>(*this, v);
     }
 
     // ----- bulk building ---------------------------------------------------------------------------
@@ -693,20 +584,6 @@ private:
         halfedges_[b.index].prev = a;
     }
 
-    /// For re-linking at the vertex between inner_prev (in) and inner_next (out): the boundary
-    /// halfedge that closes inner_next's fan on its far side, where the patch can move; null if
-    /// that is inner_prev itself (the new face would close the fan into a disk while other fans
-    /// still touch the vertex: non-manifold).
-    halfedge_handle find_free_gap(halfedge_handle inner_prev, halfedge_handle inner_next) const {
-        auto h = opposite(inner_next);
-        const auto start = h;
-        do {
-            h = opposite(next(h));
-            if (is_boundary(h)) return h == inner_prev ? halfedge_handle{} : h;
-        } while (h != start);
-        return {};
-    }
-
     std::vector<point> positions_;
     std::vector<halfedge_handle> vertex_out_;
     std::vector<std::uint8_t> vertex_deleted_;
@@ -718,9 +595,7 @@ private:
     std::size_t deleted_vertices_ = 0, deleted_edges_ = 0, deleted_faces_ = 0;
     std::uint64_t changes_ = 0;
     // Reused by add_face so that building a mesh does not allocate per face.
-    std::vector<halfedge_handle> scratch_halfedges_;
-    std::vector<std::uint8_t> scratch_new_;
-    std::vector<std::pair<halfedge_handle, halfedge_handle>> scratch_links_;
+    detail::face_link_scratch<halfedge_handle> link_scratch_;
 };
 
 using halfedge_mesh = basic_halfedge_mesh<double>;

@@ -20,6 +20,7 @@
 #include "../core/vec3.hpp"
 #include "../traits.hpp"
 #include "detail/element_range.hpp"
+#include "detail/link_face.hpp"
 #include "detail/native_traits.hpp"
 #include "face_vertex_mesh.hpp"  // index_remap
 #include "handles.hpp"
@@ -260,109 +261,13 @@ public:
     /// Faces may arrive in any order: a face may touch a vertex in a fan of its own (a pinch
     /// that validate() reports until the faces between the fans are added).
     result<face_handle> add_face(std::span<const vertex_handle> vs) {
-        const std::size_t n = vs.size();
-        if (n < 3)
-            return fail(errc::degenerate_face, "add_face: a face needs at least 3 vertices, got " + std::to_string(n));
-        for (std::size_t i = 0; i < n; ++i) {
-            if (!is_valid(vs[i]))
-                return fail(errc::invalid_handle,
-                            "add_face: corner " + std::to_string(i) + " names vertex " +
-                                std::to_string(static_cast<long long>(vs[i].index)) + ", which does not exist",
-                            static_cast<long long>(vs[i].index));
-            for (std::size_t j = 0; j < i; ++j)
-                if (vs[j] == vs[i])
-                    return fail(errc::degenerate_face, "add_face: vertex " + std::to_string(vs[i].index) +
-                                                           " appears twice in the face", vs[i].index);
-        }
-        scratch_sides_.assign(n, {});
-        scratch_new_.assign(n, 0);
-        for (std::size_t i = 0; i < n; ++i) {
-            if (!is_boundary(vs[i]))
-                return fail(errc::non_manifold, "add_face: vertex " + std::to_string(vs[i].index) +
-                                                    " is interior (surrounded by faces); a face there would be non-manifold",
-                            vs[i].index);
-            const auto h = find_halfedge(vs[i], vs[(i + 1) % n]);
-            if (!h.is_null() && !is_boundary(h)) {
-                const bool reversed = is_boundary(opposite(h));
-                return fail(reversed ? errc::orientation_conflict : errc::non_manifold,
-                            "add_face: edge " + std::to_string(vs[i].index) + "->" + std::to_string(vs[(i + 1) % n].index) +
-                                (reversed ? " is already used in this direction by face " + std::to_string(face(h).index) +
-                                                " (the new face is wound against its neighbour)"
-                                          : " already has two faces"),
-                            vs[i].index);
-            }
-            scratch_sides_[i] = h;
-            scratch_new_[i] = h.is_null();
-        }
-        // Where two existing edges meet at a corner but are not consecutive, the boundary
-        // between them must move to another gap of the vertex; check it exists before changing anything.
-        for (std::size_t i = 0; i < n; ++i) {
-            const std::size_t ii = (i + 1) % n;
-            if (scratch_new_[i] || scratch_new_[ii]) continue;
-            if (next(scratch_sides_[i]) == scratch_sides_[ii]) continue;
-            if (free_gap(scratch_sides_[i], scratch_sides_[ii]).is_null())
-                return fail(errc::non_manifold, "add_face: vertex " + std::to_string(vs[ii].index) +
-                                                    " has no free boundary gap to move its fans to", vs[ii].index);
-        }
-        for (std::size_t i = 0; i < n; ++i) {
-            const std::size_t ii = (i + 1) % n;
-            if (scratch_new_[i] || scratch_new_[ii]) continue;
-            const auto in = scratch_sides_[i], out = scratch_sides_[ii];
-            if (next(in) == out) continue;
-            const auto gap_prev = free_gap(in, out);
-            const auto gap_next = next(gap_prev);
-            const auto patch_first = next(in), patch_last = prev(out);
-            link(gap_prev, patch_first);
-            link(patch_last, gap_next);
-            link(in, out);
-        }
-        for (std::size_t i = 0; i < n; ++i)
-            if (scratch_new_[i]) scratch_sides_[i] = new_edge(vs[i], vs[(i + 1) % n]);
-
-        const auto f = new_face();
-        face_edge_[f.index] = scratch_sides_[n - 1];
-
-        // New wings computed from the state before this face, applied afterwards.
-        scratch_links_.clear();
-        for (std::size_t i = 0; i < n; ++i) {
-            const std::size_t ii = (i + 1) % n;
-            const auto v = vs[ii];
-            const auto in = scratch_sides_[i], out = scratch_sides_[ii];
-            const bool in_new = scratch_new_[i] != 0, out_new = scratch_new_[ii] != 0;
-            if (in_new || out_new) {
-                const auto outer_in = opposite(out), outer_out = opposite(in);
-                if (in_new && !out_new) {
-                    scratch_links_.push_back({prev(out), outer_out});
-                    vertex_out_[v.index] = outer_out;
-                } else if (!in_new && out_new) {
-                    const auto boundary_next = next(in);
-                    scratch_links_.push_back({outer_in, boundary_next});
-                    vertex_out_[v.index] = boundary_next;
-                } else if (vertex_out_[v.index].is_null()) {
-                    vertex_out_[v.index] = outer_out;
-                    scratch_links_.push_back({outer_in, outer_out});
-                } else {
-                    const auto boundary_next = vertex_out_[v.index];
-                    scratch_links_.push_back({prev(boundary_next), outer_out});
-                    scratch_links_.push_back({outer_in, boundary_next});
-                }
-                scratch_links_.push_back({in, out});
-            }
-            edges_[in.index >> 1].face[in.index & 1u] = f;
-        }
-        for (const auto& [a, b] : scratch_links_) link(a, b);
-        for (std::size_t i = 0; i < n; ++i) adjust_outgoing_halfedge(vs[i]);
-        return f;
+        return detail::link_face<basic_winged_edge_mesh, mesh_traits<basic_winged_edge_mesh>>(*this, vs, link_scratch_,
+                                                                                              [this](vertex_handle v) { return is_valid(v); });
     }
 
     /// Makes the edge a vertex keeps a boundary one if the vertex has any. O(V_adjacentV).
     void adjust_outgoing_halfedge(vertex_handle v) {
-        if (vertex_out_[v.index].is_null()) return;
-        for (auto h : outgoing_halfedges(v))
-            if (is_boundary(h)) {
-                vertex_out_[v.index] = h;
-                return;
-            }
+        detail::prefer_boundary_halfedge<basic_winged_edge_mesh, mesh_traits<basic_winged_edge_mesh>>(*this, v);
     }
 
     // ----- raw mutation on the records (the halfedge layer; keeps nothing consistent) ---------
@@ -484,19 +389,6 @@ private:
         edges_[b.index >> 1].prev_wing[b.index & 1u] = a;
     }
 
-    /// The boundary side that closes `out`'s fan on its far side, where the patch between `in`
-    /// and `out` can move; null if that is `in` itself (the new face would close the fan into
-    /// a disk while other fans still touch the vertex: non-manifold).
-    halfedge_handle free_gap(halfedge_handle in, halfedge_handle out) const {
-        auto h = opposite(out);
-        const auto start = h;
-        do {
-            h = opposite(next(h));
-            if (is_boundary(h)) return h == in ? halfedge_handle{} : h;
-        } while (h != start);
-        return {};
-    }
-
     std::vector<point> positions_;
     std::vector<halfedge_handle> vertex_out_;  // the edge each vertex keeps, as its outgoing side
     std::vector<std::uint8_t> vertex_deleted_;
@@ -507,9 +399,7 @@ private:
     std::size_t deleted_vertices_ = 0, deleted_edges_ = 0, deleted_faces_ = 0;
     std::uint64_t changes_ = 0;
     // Reused by add_face so that building does not allocate per face.
-    std::vector<halfedge_handle> scratch_sides_;
-    std::vector<std::uint8_t> scratch_new_;
-    std::vector<std::pair<halfedge_handle, halfedge_handle>> scratch_links_;
+    detail::face_link_scratch<halfedge_handle> link_scratch_;
 };
 
 using winged_edge_mesh = basic_winged_edge_mesh<double>;

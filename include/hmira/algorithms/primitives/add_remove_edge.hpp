@@ -13,13 +13,14 @@ namespace hmira {
 /// from -> to. Each end must be isolated or on the boundary; the edge goes into the boundary
 /// gap the vertex stores (vertex_halfedge), so at a vertex with several gaps name the corner
 /// with make_edge_vertex / make_edge_face instead. If both ends are on one boundary loop, that
-/// loop falls in two.
+/// loop falls in two. A wire edge makes no face, so triangle-only models (OpenMesh's TriMesh)
+/// can take it: only the raw halfedge layer is needed.
 ///
 /// Complexity O(V_adjacentV) (thesis: O(V_adjacentV)): the ends are searched for an existing
 /// edge. Errors (mesh unchanged): errc::invalid_handle; errc::topology when from == to, when
 /// the edge exists already, or when an end is an interior vertex (no boundary gap to put it in).
 template <class M, class T = default_traits<M>>
-    requires euler_mutable_mesh<M, T>
+    requires halfedge_mutable_mesh<M, T>
 result<typename T::halfedge_handle> add_edge(M& mesh, typename T::vertex_handle from, typename T::vertex_handle to) {
     namespace de = detail::euler;
     for (auto v : {from, to})
@@ -62,10 +63,12 @@ result<typename T::halfedge_handle> add_edge(M& mesh, typename T::vertex_handle 
 /// other edges of those faces left with no face, and the vertices left with no edge (the
 /// edge's own ends included). Returns what was removed.
 ///
+/// Removing never makes a polygon, so triangle-only models can too.
+///
 /// Complexity O(1) for an edge without faces (thesis: O(1)), plus O(face degree) for each
 /// face on its sides. Errors: errc::invalid_handle (mesh unchanged).
 template <class M, class T = default_traits<M>>
-    requires euler_mutable_mesh<M, T>
+    requires halfedge_mutable_mesh<M, T>
 result<removal_report> remove_edge(M& mesh, typename T::halfedge_handle halfedge, const remove_options& options = {}) {
     namespace de = detail::euler;
     namespace dp = detail::primitives;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <span>
+#include <string>
 #include <vector>
 
 #include "primitives_common.hpp"
@@ -26,22 +27,44 @@ result<typename T::face_handle> add_face(M& mesh, std::span<const typename T::ve
 /// edges left with no face on either side and the vertices left with no edge. Inner rings of
 /// the face go with it. Returns what was removed. Removing a face between two others around a
 /// vertex pinches the surface there (the vertex gets two boundary gaps), as in any halfedge
-/// model.
+/// model. On a model without edges (face_vertex_mesh) the face goes through the traits'
+/// remove_face and `remove_isolated_vertices` removes its corners that no other face uses.
 ///
-/// Complexity O(face degree) (thesis: O(V_adjacentV)). Errors: errc::invalid_handle (mesh
-/// unchanged).
+/// \pre nothing: a face that does not exist is reported, not assumed away.
+/// \post on success the face is gone and nothing else changed but what the report counts.
+///
+/// Complexity on a halfedge model O(face degree) (thesis: O(V_adjacentV)). On a model that
+/// removes faces through its traits, the model's remove_face (O(1) on face_vertex_mesh), plus,
+/// when vertices are cleaned up, the scan of remove_unused_vertices: O(F_all x face degree)
+/// on face_vertex_mesh, which keeps no vertex -> face links (pass
+/// `.remove_isolated_vertices = false` to avoid it).
+/// Errors: errc::invalid_handle (mesh unchanged).
 template <class M, class T = default_traits<M>>
-    requires euler_mutable_mesh<M, T>
+    requires face_erasable_mesh<M, T>
 result<removal_report> remove_face(M& mesh, typename T::face_handle face, const remove_options& options = {}) {
     namespace de = detail::euler;
     namespace dp = detail::primitives;
-    if (!de::usable<M, T>(mesh, face))
-        return fail(errc::invalid_handle, "remove_face: " + de::name<M, T>("face", mesh, face) + " does not exist",
-                    de::index_of<M, T>(mesh, face));
     removal_report report{1, 0, 0};
-    std::vector<typename T::halfedge_handle> touched;
-    dp::strip_face<M, T>(mesh, face, touched);
-    if (options.remove_wire_edges) dp::remove_wires<M, T>(mesh, touched, options, report);
+    if constexpr (halfedge_mutable_mesh<M, T>) {
+        if (!de::usable<M, T>(mesh, face))
+            return fail(errc::invalid_handle, "remove_face: " + de::name<M, T>("face", mesh, face) + " does not exist",
+                        de::index_of<M, T>(mesh, face));
+        std::vector<typename T::halfedge_handle> touched;
+        dp::strip_face<M, T>(mesh, face, touched);
+        if (options.remove_wire_edges) dp::remove_wires<M, T>(mesh, touched, options, report);
+    } else {
+        const auto index = T::face_index(mesh, face);
+        if (index >= T::face_index_bound(mesh))
+            return fail(errc::invalid_handle, "remove_face: face " + std::to_string(index) + " does not exist",
+                        static_cast<long long>(index));
+        std::vector<typename T::vertex_handle> corners;
+        if (options.remove_isolated_vertices)
+            for (auto v : T::face_vertices(mesh, face)) corners.push_back(v);
+        // The model checks the handle again (a deleted face, say) before changing anything.
+        if (auto removed = T::remove_face(mesh, face); !removed) return removed.error();
+        if (options.remove_isolated_vertices)
+            if (auto r = dp::remove_unused_vertices<M, T>(mesh, std::move(corners), report); !r) return r.error();
+    }
     return report;
 }
 

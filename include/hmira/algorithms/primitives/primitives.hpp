@@ -1,6 +1,7 @@
 // hmira/algorithms/primitives/primitives.hpp
-// The add/remove primitives of thesis 4.2 (vertex, edge, face), generic over any mesh with
-// the raw halfedge layer, each within the thesis's allowed complexity.
+// The add/remove primitives of thesis 4.2 (vertex, edge, face), each under the weakest concept
+// it needs (face_erasable_mesh, vertex_erasable_mesh, halfedge_mutable_mesh, mesh_builder), each
+// within the thesis's allowed complexity.
 #pragma once
 
 #include "add_remove_edge.hpp"

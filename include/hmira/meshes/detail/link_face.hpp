@@ -1,0 +1,213 @@
+// hmira/meshes/detail/link_face.hpp
+// Adding a face to a half-edge structure, written once over the raw halfedge layer
+// (halfedge_mutable_mesh), as CGAL's Euler::add_face is: halfedge_mesh and winged_edge_mesh
+// both build their faces with it, and any model with that layer could.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "../../concepts.hpp"
+#include "../../core/result.hpp"
+
+namespace hmira::detail {
+
+/// Buffers link_face reuses from call to call, so that building a mesh face by face does not
+/// allocate per face. A mesh keeps one and passes it in.
+template <class Halfedge>
+struct face_link_scratch {
+    std::vector<Halfedge> sides;                        ///< the halfedge of each side, once known
+    std::vector<std::uint8_t> fresh;                    ///< whether that side's edge is new
+    std::vector<std::pair<Halfedge, Halfedge>> links;  ///< next links to set, computed first
+};
+
+namespace linking {
+
+template <class M, class T>
+std::string vertex_name(const M& m, typename T::vertex_handle v) {
+    if constexpr (vertex_index_mesh<M, T>) return std::to_string(T::vertex_index(m, v));
+    else { (void)m; (void)v; return "(unnumbered)"; }
+}
+template <class M, class T>
+long long vertex_number(const M& m, typename T::vertex_handle v) {
+    if constexpr (vertex_index_mesh<M, T>) return static_cast<long long>(T::vertex_index(m, v));
+    else { (void)m; (void)v; return -1; }
+}
+
+/// Whether v has a boundary gap (or no edge at all): its stored halfedge is a boundary one.
+template <class M, class T>
+bool on_boundary(const M& m, typename T::vertex_handle v) {
+    const auto h = T::vertex_halfedge(m, v);
+    return h == T::null_halfedge() || T::face(m, h) == T::null_face();
+}
+
+/// The halfedge a -> b, or null. O(V_adjacentV).
+template <class M, class T>
+typename T::halfedge_handle find_halfedge(const M& m, typename T::vertex_handle a, typename T::vertex_handle b) {
+    const auto start = T::vertex_halfedge(m, a);
+    if (start == T::null_halfedge()) return start;
+    auto h = start;
+    do {
+        if (T::target(m, h) == b) return h;
+        h = T::next(m, T::opposite(m, h));
+    } while (h != start);
+    return T::null_halfedge();
+}
+
+/// For re-linking at the vertex between `in` (incoming) and `out` (outgoing): the boundary
+/// halfedge that closes out's fan on its far side, where the patch between them can move;
+/// null if that is `in` itself (the new face would close the fan into a disk while other fans
+/// still touch the vertex: non-manifold). O(V_adjacentV).
+template <class M, class T>
+typename T::halfedge_handle free_gap(const M& m, typename T::halfedge_handle in, typename T::halfedge_handle out) {
+    auto h = T::opposite(m, out);
+    const auto start = h;
+    do {
+        h = T::opposite(m, T::next(m, h));
+        if (T::face(m, h) == T::null_face()) return h == in ? T::null_halfedge() : h;
+    } while (h != start);
+    return T::null_halfedge();
+}
+
+}  // namespace linking
+
+/// Makes v's stored outgoing halfedge a boundary one if v has any. O(V_adjacentV).
+template <class M, class T>
+void prefer_boundary_halfedge(M& m, typename T::vertex_handle v) {
+    const auto start = T::vertex_halfedge(m, v);
+    if (start == T::null_halfedge()) return;
+    auto h = start;
+    do {
+        if (T::face(m, h) == T::null_face()) {
+            if (h != start) T::set_vertex_halfedge(m, v, h);
+            return;
+        }
+        h = T::next(m, T::opposite(m, h));
+    } while (h != start);
+}
+
+/// Adds the face with corners `vs` (counter-clockwise seen from outside), reusing the edges
+/// that exist and re-linking the boundary fans around its corners, so that no non-manifold
+/// vertex or edge can appear. Faces may arrive in any order: a face may touch a vertex in a fan
+/// of its own, separated from the vertex's other fans by boundary gaps (a pinch that validate()
+/// reports until the faces between the fans are added). `exists(v)` says whether a vertex
+/// handle names a live vertex.
+///
+/// \pre none: every failure is found before the first change.
+/// \post on success the face's halfedges form one loop with the face on their side, every
+/// corner stores a boundary outgoing halfedge if it has one, and each edge has at most two faces.
+///
+/// Fails, with the mesh unchanged, when the face has fewer than 3 or repeated vertices, names
+/// a vertex that does not exist, would give an edge a third face or a face on the wrong side
+/// (orientation conflict), or would make a vertex non-manifold. O(sum of V_adjacentV over the
+/// corners).
+template <class M, class T, class Exists>
+    requires halfedge_mutable_mesh<M, T>
+result<typename T::face_handle> link_face(M& m, std::span<const typename T::vertex_handle> vs,
+                                          face_link_scratch<typename T::halfedge_handle>& scratch, Exists&& exists) {
+    const std::size_t n = vs.size();
+    const auto null_h = T::null_halfedge();
+    if (n < 3) return fail(errc::degenerate_face, "add_face: a face needs at least 3 vertices, got " + std::to_string(n));
+    for (std::size_t i = 0; i < n; ++i) {
+        if (!exists(vs[i]))
+            return fail(errc::invalid_handle,
+                        "add_face: corner " + std::to_string(i) + " names vertex " + linking::vertex_name<M, T>(m, vs[i]) +
+                            ", which does not exist",
+                        linking::vertex_number<M, T>(m, vs[i]));
+        for (std::size_t j = 0; j < i; ++j)
+            if (vs[j] == vs[i])
+                return fail(errc::degenerate_face, "add_face: vertex " + linking::vertex_name<M, T>(m, vs[i]) + " appears twice in the face",
+                            linking::vertex_number<M, T>(m, vs[i]));
+    }
+    auto& sides = scratch.sides;
+    auto& fresh = scratch.fresh;
+    sides.assign(n, null_h);
+    fresh.assign(n, 0);
+    for (std::size_t i = 0; i < n; ++i) {
+        if (!linking::on_boundary<M, T>(m, vs[i]))
+            return fail(errc::non_manifold,
+                        "add_face: vertex " + linking::vertex_name<M, T>(m, vs[i]) + " is interior (surrounded by faces); a face there would be non-manifold",
+                        linking::vertex_number<M, T>(m, vs[i]));
+        const auto h = linking::find_halfedge<M, T>(m, vs[i], vs[(i + 1) % n]);
+        if (h != null_h && T::face(m, h) != T::null_face()) {
+            const bool reversed = T::face(m, T::opposite(m, h)) == T::null_face();
+            std::string edge = linking::vertex_name<M, T>(m, vs[i]) + "->" + linking::vertex_name<M, T>(m, vs[(i + 1) % n]);
+            std::string face = "face";
+            if constexpr (face_index_mesh<M, T>) face += " " + std::to_string(T::face_index(m, T::face(m, h)));
+            return fail(reversed ? errc::orientation_conflict : errc::non_manifold,
+                        "add_face: edge " + edge +
+                            (reversed ? " is already used in this direction by " + face + " (the new face is wound against its neighbour)"
+                                      : " already has two faces"),
+                        linking::vertex_number<M, T>(m, vs[i]));
+        }
+        sides[i] = h;
+        fresh[i] = h == null_h;
+    }
+    // A corner between two existing edges must be able to move the boundary patch between them
+    // to another gap of the vertex; check them all first so that a failure changes nothing.
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::size_t ii = (i + 1) % n;
+        if (fresh[i] || fresh[ii] || T::next(m, sides[i]) == sides[ii]) continue;
+        if (linking::free_gap<M, T>(m, sides[i], sides[ii]) == null_h)
+            return fail(errc::non_manifold,
+                        "add_face: vertex " + linking::vertex_name<M, T>(m, vs[ii]) + " has no free boundary gap to move its fans to",
+                        linking::vertex_number<M, T>(m, vs[ii]));
+    }
+    // Re-link: move the boundary patch between `in` and `out` into the free gap, so the two
+    // become consecutive.
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::size_t ii = (i + 1) % n;
+        const auto in = sides[i], out = sides[ii];
+        if (fresh[i] || fresh[ii] || T::next(m, in) == out) continue;
+        const auto gap_prev = linking::free_gap<M, T>(m, in, out);
+        const auto gap_next = T::next(m, gap_prev);
+        const auto patch_first = T::next(m, in), patch_last = T::prev(m, out);
+        T::set_next(m, gap_prev, patch_first);
+        T::set_next(m, patch_last, gap_next);
+        T::set_next(m, in, out);
+    }
+    for (std::size_t i = 0; i < n; ++i)
+        if (fresh[i]) sides[i] = T::new_edge(m, vs[i], vs[(i + 1) % n]);
+
+    const auto f = T::new_face(m);
+    T::set_face_halfedge(m, f, sides[n - 1]);
+
+    // The new next links, computed from the state before this face and applied afterwards.
+    auto& links = scratch.links;
+    links.clear();
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::size_t ii = (i + 1) % n;
+        const auto v = vs[ii];
+        const auto in = sides[i], out = sides[ii];
+        const bool in_new = fresh[i] != 0, out_new = fresh[ii] != 0;
+        if (in_new || out_new) {
+            const auto outer_in = T::opposite(m, out), outer_out = T::opposite(m, in);
+            if (in_new && !out_new) {
+                links.push_back({T::prev(m, out), outer_out});
+                T::set_vertex_halfedge(m, v, outer_out);
+            } else if (!in_new && out_new) {
+                const auto boundary_next = T::next(m, in);
+                links.push_back({outer_in, boundary_next});
+                T::set_vertex_halfedge(m, v, boundary_next);
+            } else if (T::vertex_halfedge(m, v) == null_h) {
+                T::set_vertex_halfedge(m, v, outer_out);
+                links.push_back({outer_in, outer_out});
+            } else {
+                const auto boundary_next = T::vertex_halfedge(m, v);
+                links.push_back({T::prev(m, boundary_next), outer_out});
+                links.push_back({outer_in, boundary_next});
+            }
+            links.push_back({in, out});
+        }
+        T::set_face(m, in, f);
+    }
+    for (const auto& [a, b] : links) T::set_next(m, a, b);
+    for (std::size_t i = 0; i < n; ++i) prefer_boundary_halfedge<M, T>(m, vs[i]);
+    return f;
+}
+
+}  // namespace hmira::detail
