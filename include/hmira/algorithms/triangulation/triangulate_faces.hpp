@@ -1,0 +1,228 @@
+// hmira/algorithms/triangulation/triangulate_faces.hpp
+// Faces to triangles: face_triangles gives one face's triangles (inner rings included) as
+// vertex triples, for writers such as STL; triangulate_faces cuts every face of a mesh.
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "../../concepts.hpp"
+#include "../../core/result.hpp"
+#include "../euler/euler_common.hpp"
+#include "../euler/make_edge_face.hpp"
+#include "../euler/make_edge_kill_ring.hpp"
+#include "triangulate_polygon.hpp"
+
+namespace hmira {
+
+/// A mesh whose faces face_triangles can read: the outer loop's vertices, positions, indices
+/// (to name a refused face). Inner rings are read too where the model has them.
+template <class M, class T = default_traits<M>>
+concept face_triangulable_mesh = face_vertex_range_mesh<M, T> && positioned_mesh<M, T> && face_index_mesh<M, T>;
+
+namespace detail::triangulation {
+
+/// One face's corners as plane points, projected along the dominant axis of the outer loop's
+/// Newell normal (so the outer loop is counter-clockwise), and its loops as point indices.
+template <class M, class T>
+struct face_polygon {
+    std::vector<typename T::vertex_handle> vertices;
+    std::vector<point2> points;
+    std::vector<std::vector<std::size_t>> loops;
+};
+
+template <class M, class T>
+result<face_polygon<M, T>> project_face(const M& m, typename T::face_handle f) {
+    face_polygon<M, T> out;
+    std::vector<vec3<double>> p;
+    auto add_loop = [&](auto&& range) {
+        out.loops.emplace_back();
+        for (auto v : range) {
+            out.loops.back().push_back(out.vertices.size());
+            out.vertices.push_back(v);
+            const vec3<typename T::scalar> q = T::position(m, v);
+            p.push_back({double(q.x), double(q.y), double(q.z)});
+        }
+    };
+    add_loop(T::face_vertices(m, f));
+    if constexpr (inner_ring_mesh<M, T>) {
+        for (auto r : T::inner_rings(m, f)) {
+            std::vector<typename T::vertex_handle> ring;
+            auto h = typename T::halfedge_handle(r);
+            do {
+                ring.push_back(T::target(m, h));
+                h = T::next(m, h);
+            } while (h != typename T::halfedge_handle(r));
+            add_loop(ring);
+        }
+    }
+    const std::string name = "face " + std::to_string(T::face_index(m, f));
+    vec3<double> n{};
+    const auto& outer = out.loops[0];
+    for (std::size_t i = 0; i < outer.size(); ++i) {
+        const auto& a = p[outer[i]];
+        const auto& b = p[outer[(i + 1) % outer.size()]];
+        n += vec3<double>{(a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y)};
+    }
+    if (!std::isfinite(n.x) || !std::isfinite(n.y) || !std::isfinite(n.z))
+        return fail(errc::invalid_argument, name + " has a corner that is not finite", (long long)T::face_index(m, f));
+    const double ax = std::fabs(n.x), ay = std::fabs(n.y), az = std::fabs(n.z);
+    if (ax == 0 && ay == 0 && az == 0)
+        return fail(errc::degenerate_face, name + " has no area to project (its corners are collinear)", (long long)T::face_index(m, f));
+    const int k = ax >= ay && ax >= az ? 0 : (ay >= az ? 1 : 2);
+    int u = (k + 1) % 3, v = (k + 2) % 3;
+    if (n[std::size_t(k)] < 0) std::swap(u, v);
+    out.points.reserve(p.size());
+    for (const auto& q : p) out.points.push_back({q[std::size_t(u)], q[std::size_t(v)]});
+    return out;
+}
+
+}  // namespace detail::triangulation
+
+/// The triangles of face f as vertex triples, wound like the face: its outer loop and inner
+/// rings projected onto the coordinate plane that the face's Newell normal is closest to, and
+/// triangulated there with exact predicates (triangulate_polygon). A triangle without rings
+/// comes back as itself.
+///
+/// Errors (naming the face): errc::degenerate_face for a loop of fewer than three corners or a
+/// face without projected area; errc::topology when the projection is not a simple polygon
+/// with holes (self-crossing, repeated corner, ring outside its face); errc::invalid_argument
+/// for non-finite coordinates.
+/// Complexity: that of triangulate_polygon on the face's corners (O(n^2) typical).
+template <class M, class T = default_traits<M>>
+    requires face_triangulable_mesh<M, T>
+[[nodiscard]] result<std::vector<std::array<typename T::vertex_handle, 3>>> face_triangles(const M& mesh, typename T::face_handle f) {
+    namespace dt = detail::triangulation;
+    using out_t = std::vector<std::array<typename T::vertex_handle, 3>>;
+    auto poly = dt::project_face<M, T>(mesh, f);
+    if (!poly) return poly.error();
+    if (poly->loops.size() == 1 && poly->loops[0].size() == 3)
+        return out_t{{poly->vertices[0], poly->vertices[1], poly->vertices[2]}};
+    auto tris = triangulate_polygon(poly->points, poly->loops);
+    if (!tris) {
+        auto e = tris.error();
+        return fail(e.code, "face " + std::to_string(T::face_index(mesh, f)) + ": " + e.message, (long long)T::face_index(mesh, f));
+    }
+    out_t out;
+    out.reserve(tris->size());
+    for (const auto& t : *tris) out.push_back({poly->vertices[t[0]], poly->vertices[t[1]], poly->vertices[t[2]]});
+    return out;
+}
+
+/// What triangulate_faces did.
+struct triangulate_faces_result {
+    std::size_t faces_cut = 0;        ///< faces that were not triangles (or had rings)
+    std::size_t triangles_added = 0;  ///< faces the mesh gained
+};
+
+/// Cuts every face that is not a triangle, or has inner rings, into triangles
+/// (face_triangles), with the Euler operators: a bridge to a ring is makeEkillR, every other
+/// diagonal makeEF. Every face is triangulated on paper first, so a refused face leaves the
+/// mesh unchanged.
+/// \post every face is a triangle without rings; V unchanged; the surface is the same point set.
+/// Errors (mesh unchanged): those of face_triangles, naming the first refused face.
+/// Complexity: O(sum over faces of n_f^2) typical, n_f the face's corners.
+template <class M, class T = default_traits<M>>
+    requires face_triangulable_mesh<M, T> && euler_mutable_mesh<M, T>
+[[nodiscard]] result<triangulate_faces_result> triangulate_faces(M& mesh) {
+    namespace dt = detail::triangulation;
+    using V = typename T::vertex_handle;
+    using H = typename T::halfedge_handle;
+    using F = typename T::face_handle;
+    struct plan {
+        F face;
+        dt::face_polygon<M, T> polygon;
+        std::vector<std::array<std::size_t, 3>> triangles;
+    };
+    std::vector<plan> plans;
+    for (auto f : T::faces(mesh)) {
+        if (!detail::euler::has_rings<M, T>(mesh, f)) {
+            const auto h = T::face_halfedge(mesh, f);
+            if (T::next(mesh, T::next(mesh, T::next(mesh, h))) == h) continue;
+        }
+        auto poly = dt::project_face<M, T>(mesh, f);
+        if (!poly) return poly.error();
+        auto tris = triangulate_polygon(poly->points, poly->loops);
+        if (!tris) {
+            auto e = tris.error();
+            return fail(e.code, "triangulate_faces: face " + std::to_string(T::face_index(mesh, f)) + ": " + e.message,
+                        (long long)T::face_index(mesh, f));
+        }
+        plans.push_back({f, std::move(*poly), std::move(*tris)});
+    }
+    triangulate_faces_result out;
+    for (auto& pl : plans) {
+        const auto& pts = pl.polygon.points;
+        const auto& vs = pl.polygon.vertices;
+        // Point index of each vertex of this face (a vertex appears once per face).
+        auto point_of = [&](V v) {
+            for (std::size_t i = 0; i < vs.size(); ++i)
+                if (vs[i] == v) return i;
+            return vs.size();
+        };
+        // The diagonals: triangle sides that are not sides of the face's loops.
+        std::vector<std::array<std::size_t, 2>> sides;
+        for (const auto& loop : pl.polygon.loops)
+            for (std::size_t i = 0; i < loop.size(); ++i) {
+                const auto a = loop[i], b = loop[(i + 1) % loop.size()];
+                sides.push_back({std::min(a, b), std::max(a, b)});
+            }
+        std::sort(sides.begin(), sides.end());
+        std::vector<std::array<std::size_t, 2>> diagonals;
+        for (const auto& t : pl.triangles)
+            for (int s = 0; s < 3; ++s) {
+                const std::array<std::size_t, 2> d{std::min(t[s], t[(s + 1) % 3]), std::max(t[s], t[(s + 1) % 3])};
+                if (!std::binary_search(sides.begin(), sides.end(), d)) diagonals.push_back(d);
+            }
+        std::sort(diagonals.begin(), diagonals.end());
+        diagonals.erase(std::unique(diagonals.begin(), diagonals.end()), diagonals.end());
+        std::vector<F> pieces{pl.face};
+        auto is_piece = [&](F g) { return std::find(pieces.begin(), pieces.end(), g) != pieces.end(); };
+        // The corner (halfedge into v) of a piece whose angle at v holds the direction to w.
+        auto corner = [&](std::size_t v, std::size_t w) {
+            const auto start = T::vertex_halfedge(mesh, vs[v]);
+            H fallback = T::null_halfedge();
+            auto x = start;
+            do {
+                const H in = T::opposite(mesh, x);
+                if (T::face(mesh, in) != T::null_face() && is_piece(T::face(mesh, in))) {
+                    const auto a = point_of(T::target(mesh, T::opposite(mesh, in)));
+                    const auto b = point_of(T::target(mesh, T::next(mesh, in)));
+                    if (a < vs.size() && b < vs.size() && dt::in_cone(pts[a], pts[v], pts[b], pts[w])) return in;
+                    if (fallback == T::null_halfedge()) fallback = in;
+                }
+                x = T::next(mesh, in);
+            } while (x != start);
+            return fallback;
+        };
+        auto same_loop = [&](H a, H b) {
+            auto x = a;
+            do {
+                if (x == b) return true;
+                x = T::next(mesh, x);
+            } while (x != a);
+            return false;
+        };
+        for (const auto& d : diagonals) {
+            const H ca = corner(d[0], d[1]), cb = corner(d[1], d[0]);
+            if (same_loop(ca, cb)) {
+                auto r = make_edge_face<M, T>(mesh, ca, cb);
+                if (!r) return fail(r.error().code, "triangulate_faces: internal: " + r.error().message);  // unreachable on a valid mesh
+                pieces.push_back(r->face);
+                ++out.triangles_added;
+            } else {
+                if constexpr (euler_ring_mutable_mesh<M, T>) {
+                    auto r = make_edge_kill_ring<M, T>(mesh, ca, cb);
+                    if (!r) return fail(r.error().code, "triangulate_faces: internal: " + r.error().message);
+                }
+            }
+        }
+        ++out.faces_cut;
+    }
+    return out;
+}
+
+}  // namespace hmira
