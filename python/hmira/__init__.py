@@ -93,9 +93,14 @@ class VertexView(np.ndarray):
             return x._plain() if isinstance(x, VertexView) else x
 
         inputs = tuple(unwrap(x) for x in inputs)
-        if "out" in kwargs:
-            kwargs["out"] = tuple(unwrap(x) for x in kwargs["out"])
-        return getattr(ufunc, method)(*inputs, **kwargs)
+        outs = kwargs.get("out")
+        if outs is not None:
+            kwargs["out"] = tuple(unwrap(x) for x in outs)
+        result = getattr(ufunc, method)(*inputs, **kwargs)
+        if outs is not None and any(isinstance(x, VertexView) for x in outs):
+            # In-place operations (v += 1) keep the checked view.
+            return outs[0] if len(outs) == 1 else outs
+        return result
 
     def __array_function__(self, func: Any, types: Any, args: Any, kwargs: Any) -> Any:
         def unwrap(x: Any) -> Any:

@@ -324,8 +324,8 @@ attributes : bool, keyword-only
         .def_prop_ro("vertex_count", [](const py_mesh& s) { return s.get().vertex_count(); }, "Live vertices.")
         .def_prop_ro("edge_count", [](const py_mesh& s) { return s.get().edge_count(); }, "Live edges.")
         .def_prop_ro("face_count", [](const py_mesh& s) { return s.get().face_count(); }, "Live faces.")
-        .def_prop_ro("faces", &faces, "Faces as an (m, k) int32 array (ValueError when faces differ in size).")
-        .def_prop_ro("polygons", &polygons, "Faces as a list of vertex-index lists.")
+        .def_prop_ro("faces", &faces, nb::rv_policy::automatic, "Faces as an (m, k) int32 array (ValueError when faces differ in size).")
+        .def_prop_ro("polygons", &polygons, nb::rv_policy::automatic, "Faces as a list of vertex-index lists.")
         .def("topology", &topology_of, "V, E, F, genus, components and boundary loops (a Topology).")
         .def("validate", &validate, nb::kw_only(), nb::arg("relaxed") = false,
              "The mesh's problems, one message each; an empty list for a valid mesh.")
