@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "../../concepts.hpp"
+#include "../../core/progress.hpp"
 #include "../../core/result.hpp"
 #include "../../core/vec3.hpp"
 #include "../../grids/voxel_grid.hpp"
@@ -43,6 +44,9 @@ struct marching_cubes_options {
     bool normals = false;
     /// Worker threads (0: all available). The output does not depend on it.
     unsigned threads = 0;
+    /// Called between z-slices of each of the three passes; returning false cancels the
+    /// extraction (error errc::unsupported, "marching_cubes: cancelled").
+    progress_function progress = {};
 };
 
 /// An indexed triangle list: triangle corners index `positions`; `normals` is empty unless
@@ -172,9 +176,10 @@ public:
 
         // Pass 1: classify every sample into bit rows.
         std::vector<std::uint8_t> nan_in_slab(nz_, 0);
+        progress_gate gate(opt_.progress, 3 * nz_);
         parallel_chunks(nz_, 1, [&](std::size_t k0, std::size_t k1) {
             std::vector<double> buffer;
-            for (std::size_t k = k0; k < k1; ++k)
+            for (std::size_t k = k0; k < k1 && gate.advance(); ++k)
                 for (std::size_t j = 0; j < ny_; ++j) {
                     std::uint64_t* out = &bits_[(k * ny_ + j) * words_];
                     bool nan;
@@ -188,6 +193,7 @@ public:
                     if (nan) nan_in_slab[k] = 1;
                 }
         });
+        if (gate.cancelled()) return cancelled();
         for (std::size_t k = 0; k < nz_; ++k)
             if (nan_in_slab[k])
                 return fail(errc::invalid_argument, "marching_cubes: the grid holds NaN samples (first in z-slice " +
@@ -196,7 +202,7 @@ public:
         // Pass 2: count crossed edges per row (the vertices it owns) and triangles per cube row.
         parallel_chunks(nz_, 1, [&](std::size_t k0, std::size_t k1) {
             scratch s(words_);
-            for (std::size_t k = k0; k < k1; ++k)
+            for (std::size_t k = k0; k < k1 && gate.advance(); ++k)
                 for (std::size_t j = 0; j < ny_; ++j) {
                     const std::size_t r = k * ny_ + j;
                     const std::uint64_t* a = row(j, k);
@@ -222,6 +228,7 @@ public:
                     vbase_[r + 1] = std::uint64_t(xc) + yc + zc + centers;
                 }
         });
+        if (gate.cancelled()) return cancelled();
         for (std::size_t r = 0; r < rows; ++r) {
             vbase_[r + 1] += vbase_[r];
             tbase_[r + 1] += tbase_[r];
@@ -238,17 +245,20 @@ public:
         // counted above, so the output order is the same whatever the schedule.
         parallel_chunks(nz_, 1, [&](std::size_t k0, std::size_t k1) {
             scratch s(words_);
-            for (std::size_t k = k0; k < k1; ++k)
+            for (std::size_t k = k0; k < k1 && gate.advance(); ++k)
                 for (std::size_t j = 0; j < ny_; ++j) {
                     if (j + prefetch_distance < ny_) prefetch_row(j + prefetch_distance, k);
                     write_row_vertices(j, k, out);
                     if (j + 1 < ny_ && k + 1 < nz_) write_cube_row(j, k, s, table, out);
                 }
         });
+        if (gate.cancelled()) return cancelled();
         return out;
     }
 
 private:
+    static hmira::error cancelled() { return fail(errc::unsupported, "marching_cubes: cancelled"); }
+
     struct scratch {
         explicit scratch(std::size_t words) : active(words), cubes(words), masks(8 * words), prefix(8 * (words + 1)) {}
         std::vector<std::uint64_t> active, cubes, masks;

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "../../concepts.hpp"
+#include "../../core/progress.hpp"
 #include "../../core/result.hpp"
 #include "../../core/vec3.hpp"
 #include "../../grids/bit_grid.hpp"
@@ -46,6 +47,9 @@ struct voxelize_options {
     bool allow_degenerate = false;
     /// Worker threads (0: all available). The output does not depend on it.
     unsigned threads = 0;
+    /// Called between blocks of triangles and of rows; returning false cancels the
+    /// voxelization (error errc::unsupported, "voxelize: cancelled").
+    progress_function progress = {};
 };
 
 /// The voxels, and how they were made.
@@ -304,10 +308,13 @@ result<voxelization> voxelize(const M& mesh, const grid_geometry& grid, const vo
             }
     };
 
+    const std::size_t row_blocks = fill ? ny * nz : 0;
+    detail::progress_gate gate(options.progress, tris.size() + row_blocks);
     detail::with_thread_count(options.threads, [&] {
         // Surface voxels and ray crossings, one triangle at a time.
         detail::parallel_chunks(tris.size(), 1024, [&](std::size_t t0, std::size_t t1) {
             for (std::size_t t = t0; t < t1; ++t) {
+                if ((t - t0) % 1024 == 0 && !gate.advance(std::min<std::size_t>(1024, t1 - t))) return;
                 const auto& tr = tris[t];
                 vec3<double> lo = tr.p[0], hi = tr.p[0];
                 for (int c = 1; c < 3; ++c)
@@ -358,11 +365,13 @@ result<voxelization> voxelize(const M& mesh, const grid_geometry& grid, const vo
             }
         });
 
+        if (gate.cancelled()) return;
         if (fill && !winding) {
             // Prefix XOR along each row turns crossing marks into inside bits.
             const std::uint64_t last = (nx & 63) ? (std::uint64_t(1) << (nx & 63)) - 1 : ~std::uint64_t(0);
             detail::parallel_chunks(ny * nz, 256, [&](std::size_t r0, std::size_t r1) {
                 for (std::size_t r = r0; r < r1; ++r) {
+                    if ((r - r0) % 256 == 0 && !gate.advance(std::min<std::size_t>(256, r1 - r))) return;
                     std::uint64_t carry = 0;
                     std::uint64_t* tg = &toggles[r * words];
                     std::uint64_t* row = vox.row(r % ny, r / ny);
@@ -387,7 +396,7 @@ result<voxelization> voxelize(const M& mesh, const grid_geometry& grid, const vo
             // the surface, except through a hole: one winding number per run of empty voxels.
             const double four_pi = 4 * std::numbers::pi;
             detail::parallel_chunks(ny * nz, 16, [&](std::size_t r0, std::size_t r1) {
-                for (std::size_t r = r0; r < r1; ++r) {
+                for (std::size_t r = r0; r < r1 && gate.advance(); ++r) {
                     const std::size_t j = r % ny, k = r / ny;
                     std::uint64_t* row = vox.row(j, k);
                     std::vector<std::size_t> starts;
@@ -409,6 +418,7 @@ result<voxelization> voxelize(const M& mesh, const grid_geometry& grid, const vo
             });
         }
     });
+    if (gate.cancelled()) return fail(errc::unsupported, "voxelize: cancelled");
     out.filled = fill;
     return out;
 }

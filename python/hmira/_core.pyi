@@ -1,0 +1,219 @@
+"""
+hmira's compiled core: marching cubes, voxelization, Delaunay, mesh I/O and the Mesh class.
+"""
+
+from collections.abc import Sequence
+from typing import Annotated
+
+import numpy
+from numpy.typing import NDArray
+
+
+def marching_cubes(volume: Annotated[NDArray, dict(shape=(None, None, None), device='cpu', writable=False)], iso: float = 0.0, *, spacing: Sequence[float] = [1.0, 1.0, 1.0], origin: Sequence[float] = [0.0, 0.0, 0.0], inside: str = 'below', threads: int = 0) -> tuple:
+    """
+    Extract the iso-surface of a 3-D volume as a welded, closed triangle mesh.
+
+    Parameters
+    ----------
+    volume : ndarray, shape (n0, n1, n2)
+        Samples, float32, float64, uint8, uint16 or int16; C- or Fortran-ordered or
+        strided, read in place (never copied). NaN samples raise ValueError.
+    iso : float
+        The iso value.
+    spacing : sequence of 3 floats, keyword-only
+        Distance between samples along array axes 0, 1, 2.
+    origin : sequence of 3 floats, keyword-only
+        Position of sample [0, 0, 0].
+    inside : {"below", "above"}, keyword-only
+        Which side of `iso` is the solid ("below" for signed distances, "above" for
+        CT/MRI scans). Triangles wind counter-clockwise seen from outside.
+    threads : int, keyword-only
+        Worker threads (0: all cores). The output does not depend on it.
+
+    Returns
+    -------
+    vertices : ndarray of float64, shape (n, 3)
+        Column j is the coordinate along array axis j (as scikit-image).
+    faces : ndarray of int32, shape (m, 3)
+
+    Notes
+    -----
+    The GIL is released while the surface is extracted; Ctrl-C stops it between
+    z-slices (KeyboardInterrupt).
+
+    Examples
+    --------
+    >>> import numpy as np, hmira
+    >>> x, y, z = np.mgrid[-1:1:32j, -1:1:32j, -1:1:32j]
+    >>> v, f = hmira.marching_cubes(x**2 + y**2 + z**2 - 0.5, 0.0)
+    >>> v.shape[1], f.dtype.name, len(f) == 2 * len(v) - 4
+    (3, 'int32', True)
+    """
+
+def delaunay_triangulation(points: Annotated[NDArray[numpy.float64], dict(shape=(None, None), order='C', device='cpu', writable=False)], *, voronoi: bool = False) -> object:
+    """
+    Delaunay triangulation of points in the plane.
+
+    Parameters
+    ----------
+    points : ndarray of float64, shape (n, 2) or (n, 3)
+        The points; a third column is a height, kept but ignored by the
+        triangulation (2.5-D), unlike scipy's 3-D tetrahedra.
+    voronoi : bool, keyword-only
+        Also return the Voronoi diagram.
+
+    Returns
+    -------
+    triangles : ndarray of int32, shape (m, 3)
+        Counter-clockwise triangles indexing `points` (duplicates use their first
+        occurrence).
+    voronoi_vertices : ndarray of float64, shape (m, 2)
+        Only with ``voronoi=True``: the circumcentre of each triangle.
+    voronoi_edges : ndarray of int32, shape (e, 2)
+        Only with ``voronoi=True``: pairs of Voronoi vertex indices, -1 marking the
+        infinite end of a ray.
+
+    Examples
+    --------
+    >>> import numpy as np, hmira
+    >>> hmira.delaunay_triangulation(np.array([[0., 0.], [1., 0.], [0., 1.], [1., 1.1]])).shape
+    (2, 3)
+    """
+
+class Topology:
+    """Counts of a mesh's elements and its topological invariants."""
+
+    @property
+    def vertices(self) -> int:
+        """live vertices"""
+
+    @property
+    def edges(self) -> int:
+        """edges"""
+
+    @property
+    def faces(self) -> int:
+        """faces"""
+
+    @property
+    def genus(self) -> int:
+        """total genus of the surface components"""
+
+    @property
+    def components(self) -> int:
+        """connected components, isolated vertices included"""
+
+    @property
+    def boundary_loops(self) -> int:
+        """closed chains of boundary edges"""
+
+    @property
+    def boundary_edges(self) -> int:
+        """edges with one face"""
+
+    @property
+    def isolated_vertices(self) -> int:
+        """vertices used by no face"""
+
+    @property
+    def non_manifold_edges(self) -> int:
+        """edges with more than two faces"""
+
+    @property
+    def euler_characteristic(self) -> int:
+        """V - E + F"""
+
+    @property
+    def closed(self) -> bool:
+        """no boundary and no non-manifold edge"""
+
+    def __repr__(self) -> str: ...
+
+class MeshCore:
+    """
+    A polygon mesh backed by hmira's half-edge mesh (the compiled part of
+    hmira.Mesh; use hmira.Mesh, which adds the checked `vertices` view).
+    """
+
+    def __init__(self) -> None:
+        """An empty mesh."""
+
+    def write(self, path: str, *, ascii: bool = False, big_endian: bool = False, float32: bool = False, attributes: bool = True) -> None:
+        """
+        Write the mesh to a file (OBJ, OFF, PLY or STL by extension), atomically.
+
+        Parameters
+        ----------
+        path : str
+        ascii : bool, keyword-only
+            PLY/STL: text instead of binary.
+        big_endian : bool, keyword-only
+            PLY: binary big endian.
+        float32 : bool, keyword-only
+            PLY: 32-bit coordinates (default 64-bit).
+        attributes : bool, keyword-only
+            Write per-vertex normals and colours read from a file.
+        """
+
+    @property
+    def vertex_count(self) -> int:
+        """Live vertices."""
+
+    @property
+    def edge_count(self) -> int:
+        """Live edges."""
+
+    @property
+    def face_count(self) -> int:
+        """Live faces."""
+
+    @property
+    def faces(self) -> Annotated[NDArray[numpy.int32], dict(shape=(None, None))]:
+        """Faces as an (m, k) int32 array (ValueError when faces differ in size)."""
+
+    @property
+    def polygons(self) -> list:
+        """Faces as a list of vertex-index lists."""
+
+    def topology(self) -> Topology:
+        """V, E, F, genus, components and boundary loops (a Topology)."""
+
+    def validate(self, *, relaxed: bool = False) -> list[str]:
+        """The mesh's problems, one message each; an empty list for a valid mesh."""
+
+    def flip(self) -> int:
+        """Reverse every face's winding; returns the faces flipped."""
+
+    def vertex_normals(self, *, weighting: str = 'angle') -> Annotated[NDArray[numpy.float64], dict(shape=(None, None))]:
+        """
+        Unit vertex normals (n, 3), faces weighted by corner angle ('angle') or area ('area').
+        """
+
+    def collect_garbage(self) -> None:
+        """Drop deleted elements and renumber densely (after kill operators)."""
+
+    def find_halfedge(self, a: int, b: int) -> int:
+        """The halfedge from vertex a to vertex b, or -1."""
+
+    def make_vertex(self, position: Sequence[float]) -> int:
+        """makeV: a new isolated vertex; returns its index."""
+
+    def make_edge_vertex(self, corner: int, position: Sequence[float]) -> tuple:
+        """
+        makeEV: a new vertex joined to target(corner); returns (vertex, halfedge from the old vertex to the new).
+        """
+
+    def kill_edge_vertex(self, halfedge: int) -> tuple:
+        """
+        killEV: removes the edge and its degree-1 target; returns (vertex, corner, position) for the redo.
+        """
+
+    def make_edge_face(self, h0: int, h1: int) -> tuple:
+        """
+        makeEF: splits a face by an edge from target(h0) to target(h1); returns (halfedge, face).
+        """
+
+    def kill_edge_face(self, halfedge: int) -> tuple:
+        """
+        killEF: removes the edge, merging its two faces; returns (face, h0, h1) for make_edge_face.
+        """

@@ -1,0 +1,391 @@
+// python/src/arrays.cpp
+// The array functions: marching cubes on any 3-D numpy volume without copying it, voxelization,
+// Delaunay triangulation, and writing (V, F) arrays. Outputs are numpy arrays that take over
+// the C++ vectors (no copy on the way out).
+#include "common.hpp"
+
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include <hmira/algorithms/conversion/delaunay_triangulation.hpp>
+#include <hmira/algorithms/conversion/marching_cubes.hpp>
+#include <hmira/algorithms/conversion/voxelize.hpp>
+#include <hmira/io/mesh_io.hpp>
+#include <hmira/meshes/face_vertex_mesh.hpp>
+
+namespace hmira_py {
+
+namespace {
+
+constexpr const char* MC_DOC = R"doc(Extract the iso-surface of a 3-D volume as a welded, closed triangle mesh.
+
+Parameters
+----------
+volume : ndarray, shape (n0, n1, n2)
+    Samples, float32, float64, uint8, uint16 or int16; C- or Fortran-ordered or
+    strided, read in place (never copied). NaN samples raise ValueError.
+iso : float
+    The iso value.
+spacing : sequence of 3 floats, keyword-only
+    Distance between samples along array axes 0, 1, 2.
+origin : sequence of 3 floats, keyword-only
+    Position of sample [0, 0, 0].
+inside : {"below", "above"}, keyword-only
+    Which side of `iso` is the solid ("below" for signed distances, "above" for
+    CT/MRI scans). Triangles wind counter-clockwise seen from outside.
+threads : int, keyword-only
+    Worker threads (0: all cores). The output does not depend on it.
+
+Returns
+-------
+vertices : ndarray of float64, shape (n, 3)
+    Column j is the coordinate along array axis j (as scikit-image).
+faces : ndarray of int32, shape (m, 3)
+
+Notes
+-----
+The GIL is released while the surface is extracted; Ctrl-C stops it between
+z-slices (KeyboardInterrupt).
+
+Examples
+--------
+>>> import numpy as np, hmira
+>>> x, y, z = np.mgrid[-1:1:32j, -1:1:32j, -1:1:32j]
+>>> v, f = hmira.marching_cubes(x**2 + y**2 + z**2 - 0.5, 0.0)
+>>> v.shape[1], f.dtype.name, len(f) == 2 * len(v) - 4
+(3, 'int32', True)
+)doc";
+
+constexpr const char* DELAUNAY_DOC = R"doc(Delaunay triangulation of points in the plane.
+
+Parameters
+----------
+points : ndarray of float64, shape (n, 2) or (n, 3)
+    The points; a third column is a height, kept but ignored by the
+    triangulation (2.5-D), unlike scipy's 3-D tetrahedra.
+voronoi : bool, keyword-only
+    Also return the Voronoi diagram.
+
+Returns
+-------
+triangles : ndarray of int32, shape (m, 3)
+    Counter-clockwise triangles indexing `points` (duplicates use their first
+    occurrence).
+voronoi_vertices : ndarray of float64, shape (m, 2)
+    Only with ``voronoi=True``: the circumcentre of each triangle.
+voronoi_edges : ndarray of int32, shape (e, 2)
+    Only with ``voronoi=True``: pairs of Voronoi vertex indices, -1 marking the
+    infinite end of a ray.
+
+Examples
+--------
+>>> import numpy as np, hmira
+>>> hmira.delaunay_triangulation(np.array([[0., 0.], [1., 0.], [0., 1.], [1., 1.1]])).shape
+(2, 3)
+)doc";
+
+using hmira::vec3;
+
+/// A numpy volume seen as a grid whose x runs along memory: sample (i, j, k) at
+/// data[i + nx * (j + ny * k)].
+template <class V>
+struct contiguous_view {
+    using value_type = V;
+    const V* samples;
+    hmira::grid_dims size;
+    vec3<double> at, step;
+    hmira::grid_dims dims() const { return size; }
+    vec3<double> origin() const { return at; }
+    vec3<double> spacing() const { return step; }
+    double value(std::size_t i, std::size_t j, std::size_t k) const {
+        return static_cast<double>(samples[i + size[0] * (j + size[1] * k)]);
+    }
+    const V* data() const { return samples; }
+};
+
+/// Any strided numpy volume, read sample by sample: (i, j, k) is array index [i, j, k].
+template <class V>
+struct strided_view {
+    using value_type = V;
+    const V* samples;
+    hmira::grid_dims size;
+    std::int64_t stride[3];  // in elements, possibly negative
+    vec3<double> at, step;
+    hmira::grid_dims dims() const { return size; }
+    vec3<double> origin() const { return at; }
+    vec3<double> spacing() const { return step; }
+    double value(std::size_t i, std::size_t j, std::size_t k) const {
+        return static_cast<double>(samples[std::int64_t(i) * stride[0] + std::int64_t(j) * stride[1] + std::int64_t(k) * stride[2]]);
+    }
+};
+
+/// A numpy array that owns a heap-allocated C++ container (moved in, freed with the array).
+template <class Scalar, class Container>
+nb::ndarray<nb::numpy, Scalar> adopt(Container&& c, std::initializer_list<std::size_t> shape) {
+    auto* owned = new Container(std::move(c));
+    nb::capsule owner(owned, [](void* p) noexcept { delete static_cast<Container*>(p); });
+    return nb::ndarray<nb::numpy, Scalar>(reinterpret_cast<Scalar*>(owned->data()), shape, owner);
+}
+
+hmira::iso_inside parse_inside(const std::string& s) {
+    if (s == "below") return hmira::iso_inside::below;
+    if (s == "above") return hmira::iso_inside::above;
+    value_error("marching_cubes: inside must be 'below' or 'above', got '" + s + "'");
+}
+
+vec3<double> triple(const std::vector<double>& v, const char* name) {
+    if (v.size() != 3) value_error(std::string("marching_cubes: ") + name + " needs 3 values, got " + std::to_string(v.size()));
+    return {v[0], v[1], v[2]};
+}
+
+using mc_volume = nb::ndarray<nb::ro, nb::ndim<3>, nb::device::cpu>;
+
+template <class V>
+hmira::result<hmira::indexed_triangles<double>> extract(const mc_volume& volume, const vec3<double>& spacing,
+                                                        const vec3<double>& origin, const hmira::marching_cubes_options& options,
+                                                        bool& swapped) {
+    const auto* p = static_cast<const V*>(volume.data());
+    const std::size_t n0 = volume.shape(0), n1 = volume.shape(1), n2 = volume.shape(2);
+    const std::int64_t s0 = volume.stride(0), s1 = volume.stride(1), s2 = volume.stride(2);
+    // A stride only matters along an axis longer than 1.
+    auto fits = [](std::size_t n, std::int64_t s, std::int64_t want) { return n <= 1 || s == want; };
+    swapped = false;
+    if (fits(n0, s0, 1) && fits(n1, s1, std::int64_t(n0)) && fits(n2, s2, std::int64_t(n0 * n1))) {
+        // Fortran order: array axis 0 runs along memory, as the grid's x does.
+        const contiguous_view<V> g{p, {n0, n1, n2}, origin, spacing};
+        return hmira::marching_cubes_indexed<double>(g, options);
+    }
+    if (fits(n2, s2, 1) && fits(n1, s1, std::int64_t(n2)) && fits(n0, s0, std::int64_t(n1 * n2))) {
+        // C order: the grid's x is array axis 2; the caller swaps columns 0 and 2 back.
+        swapped = true;
+        const contiguous_view<V> g{p, {n2, n1, n0}, {origin.z, origin.y, origin.x}, {spacing.z, spacing.y, spacing.x}};
+        return hmira::marching_cubes_indexed<double>(g, options);
+    }
+    const strided_view<V> g{p, {n0, n1, n2}, {s0, s1, s2}, origin, spacing};
+    return hmira::marching_cubes_indexed<double>(g, options);
+}
+
+nb::tuple marching_cubes(const mc_volume& volume, double iso, const std::vector<double>& spacing,
+                         const std::vector<double>& origin, const std::string& inside, unsigned threads) {
+    const auto sp = triple(spacing, "spacing"), org = triple(origin, "origin");
+    interrupt_watch watch;
+    hmira::marching_cubes_options options{.iso = iso, .inside = parse_inside(inside), .normals = false, .threads = threads,
+                                          .progress = watch.callback()};
+    const auto dt = volume.dtype();
+    hmira::result<hmira::indexed_triangles<double>> r = hmira::fail(hmira::errc::invalid_argument, "");
+    bool swapped = false;
+    {
+        nb::gil_scoped_release release;
+        if (dt == nb::dtype<float>()) r = extract<float>(volume, sp, org, options, swapped);
+        else if (dt == nb::dtype<double>()) r = extract<double>(volume, sp, org, options, swapped);
+        else if (dt == nb::dtype<std::uint8_t>()) r = extract<std::uint8_t>(volume, sp, org, options, swapped);
+        else if (dt == nb::dtype<std::uint16_t>()) r = extract<std::uint16_t>(volume, sp, org, options, swapped);
+        else if (dt == nb::dtype<std::int16_t>()) r = extract<std::int16_t>(volume, sp, org, options, swapped);
+        else r = hmira::fail(hmira::errc::invalid_argument, "marching_cubes: volume dtype must be float32, float64, uint8, uint16 or int16");
+    }
+    watch.rethrow();
+    auto tri = take(std::move(r));
+    if (tri.positions.size() > std::size_t(std::numeric_limits<std::int32_t>::max()))
+        value_error("marching_cubes: " + std::to_string(tri.positions.size()) + " vertices do not fit int32 face indices (at most 2^31 - 1)");
+    if (swapped) {
+        // Swapping two axes mirrors the surface: swap the coordinates back and reverse each
+        // triangle so that it still winds counter-clockwise seen from outside.
+        for (auto& p : tri.positions) std::swap(p.x, p.z);
+        for (auto& t : tri.triangles) std::swap(t[1], t[2]);
+    }
+    const std::size_t nv = tri.positions.size(), nt = tri.triangles.size();
+    static_assert(sizeof(vec3<double>) == 3 * sizeof(double) && sizeof(std::array<std::uint32_t, 3>) == 3 * sizeof(std::int32_t));
+    auto vertices = adopt<double>(std::move(tri.positions), {nv, 3});
+    auto faces = adopt<std::int32_t>(std::move(tri.triangles), {nt, 3});
+    return nb::make_tuple(vertices, faces);
+}
+
+}  // namespace
+
+// ---- polygons from Python: an (m, k) integer array or a sequence of index sequences --------
+
+hmira::io::polygon_soup to_soup(const nb::ndarray<const double, nb::ndim<2>, nb::c_contig, nb::device::cpu>& vertices,
+                                nb::handle faces, const char* who) {
+    if (vertices.shape(1) != 3) value_error(std::string(who) + ": vertices must have shape (n, 3), got (" + std::to_string(vertices.shape(0)) + ", " + std::to_string(vertices.shape(1)) + ")");
+    hmira::io::polygon_soup soup;
+    const std::size_t nv = vertices.shape(0);
+    soup.points.resize(nv);
+    const double* v = vertices.data();
+    for (std::size_t i = 0; i < nv; ++i) {
+        for (int a = 0; a < 3; ++a) {
+            if (!std::isfinite(v[3 * i + a])) value_error(std::string(who) + ": vertex " + std::to_string(i) + " has a non-finite coordinate");
+            soup.points[i][a] = v[3 * i + a];
+        }
+    }
+    auto push = [&](long long idx, std::size_t f) {
+        if (idx < 0 || std::size_t(idx) >= nv)
+            value_error(std::string(who) + ": face " + std::to_string(f) + " uses vertex " + std::to_string(idx) + ", out of range [0, " + std::to_string(nv) + ")");
+        soup.indices.push_back(static_cast<std::uint32_t>(idx));
+    };
+    nb::ndarray<const std::int64_t, nb::ndim<2>, nb::c_contig, nb::device::cpu> array;
+    if (nb::try_cast(faces, array) && !nb::isinstance<nb::list>(faces) && !nb::isinstance<nb::tuple>(faces)) {
+        const std::size_t m = array.shape(0), k = array.shape(1);
+        soup.indices.reserve(m * k);
+        soup.face_offsets.reserve(m + 1);
+        for (std::size_t f = 0; f < m; ++f) {
+            for (std::size_t c = 0; c < k; ++c) push(array.data()[f * k + c], f);
+            soup.face_offsets.push_back(static_cast<std::uint32_t>(soup.indices.size()));
+        }
+        return soup;
+    }
+    std::size_t f = 0;
+    for (nb::handle polygon : faces) {
+        for (nb::handle i : polygon) push(nb::cast<long long>(i), f);
+        soup.face_offsets.push_back(static_cast<std::uint32_t>(soup.indices.size()));
+        ++f;
+    }
+    return soup;
+}
+
+hmira::io::write_options write_options_from(bool ascii, bool big_endian, bool float32, bool attributes) {
+    hmira::io::write_options o;
+    o.ply = ascii ? hmira::io::ply_encoding::ascii : big_endian ? hmira::io::ply_encoding::binary_big_endian : hmira::io::ply_encoding::binary_little_endian;
+    o.ply_coordinates = float32 ? hmira::io::ply_scalar::float32 : hmira::io::ply_scalar::float64;
+    o.stl = ascii ? hmira::io::stl_encoding::ascii : hmira::io::stl_encoding::binary;
+    o.write_attributes = attributes;
+    return o;
+}
+
+namespace {
+
+using vertex_array = nb::ndarray<const double, nb::ndim<2>, nb::c_contig, nb::device::cpu>;
+
+nb::tuple voxelize(const vertex_array& vertices, nb::handle faces, std::optional<std::size_t> resolution, std::optional<double> pitch,
+                   const std::string& mode, bool fill_open, unsigned threads) {
+    if (mode != "solid" && mode != "surface") value_error("voxelize: mode must be 'solid' or 'surface', got '" + mode + "'");
+    if (resolution && pitch) value_error("voxelize: give resolution or pitch, not both");
+    if (resolution && *resolution == 0) value_error("voxelize: resolution must be at least 1");
+    if (pitch && !(*pitch > 0 && std::isfinite(*pitch))) value_error("voxelize: pitch must be finite and > 0");
+    const auto soup = to_soup(vertices, faces, "voxelize");
+    interrupt_watch watch;
+    const hmira::voxelize_options options{.mode = mode == "surface" ? hmira::voxelize_mode::surface : hmira::voxelize_mode::solid,
+                                          .open_mesh = fill_open ? hmira::open_mesh_fill::winding_number : hmira::open_mesh_fill::surface_only,
+                                          .allow_degenerate = true,
+                                          .threads = threads,
+                                          .progress = watch.callback()};
+    hmira::result<hmira::voxelization> r = hmira::fail(hmira::errc::invalid_argument, "");
+    hmira::grid_geometry geometry;
+    {
+        nb::gil_scoped_release release;
+        r = [&]() -> hmira::result<hmira::voxelization> {
+            hmira::face_vertex_mesh mesh;
+            auto built = hmira::io::assign_from_soup(mesh, soup, [](std::size_t) { return std::string("voxelize"); });
+            if (!built) return built.error();
+            auto g = hmira::voxel_grid_around(mesh, resolution.value_or(256), 2);
+            if (!g) return g.error();
+            geometry = *g;
+            if (pitch) {
+                // The box voxel_grid_around centres on the mesh, with the voxel size given.
+                for (int a = 0; a < 3; ++a) {
+                    const double centre = g->origin[a] + 0.5 * double(g->dims[a] - 1) * g->spacing[a];
+                    const double extent = double(g->dims[a] - 4) * g->spacing[a];
+                    const double n = std::ceil(extent / *pitch - 1e-9);
+                    if (!(n < 65536)) return hmira::fail(hmira::errc::invalid_argument, "voxelize: pitch too small for the mesh (more than 65536 voxels along an axis)");
+                    geometry.dims[a] = std::max<std::size_t>(std::size_t(n), 1) + 4;
+                    geometry.spacing[a] = *pitch;
+                    geometry.origin[a] = centre - 0.5 * double(geometry.dims[a] - 1) * *pitch;
+                }
+            }
+            return hmira::voxelize(mesh, geometry, options);
+        }();
+    }
+    watch.rethrow();
+    auto v = take(std::move(r));
+    const auto d = geometry.dims;
+    // Fortran order: [i, j, k] indexes x, y, z, and each row of x stays contiguous.
+    std::vector<std::uint8_t> cells(d[0] * d[1] * d[2]);
+    {
+        nb::gil_scoped_release release;
+        for (std::size_t k = 0; k < d[2]; ++k)
+            for (std::size_t j = 0; j < d[1]; ++j) {
+                const std::uint64_t* row = v.voxels.row(j, k);
+                std::uint8_t* out = &cells[d[0] * (j + d[1] * k)];
+                for (std::size_t i = 0; i < d[0]; ++i) out[i] = static_cast<std::uint8_t>((row[i >> 6] >> (i & 63)) & 1u);
+            }
+    }
+    auto* owned = new std::vector<std::uint8_t>(std::move(cells));
+    nb::capsule owner(owned, [](void* p) noexcept { delete static_cast<std::vector<std::uint8_t>*>(p); });
+    const std::size_t shape[3] = {d[0], d[1], d[2]};
+    const std::int64_t strides[3] = {1, std::int64_t(d[0]), std::int64_t(d[0] * d[1])};
+    nb::ndarray<nb::numpy, bool, nb::ndim<3>> grid(reinterpret_cast<bool*>(owned->data()), 3, shape, owner, strides);
+    auto origin = nb::make_tuple(geometry.origin.x, geometry.origin.y, geometry.origin.z);
+    return nb::make_tuple(grid, origin, geometry.spacing.x, v.filled, v.note);
+}
+
+using point_array = nb::ndarray<const double, nb::ndim<2>, nb::c_contig, nb::device::cpu>;
+
+nb::object delaunay(const point_array& points, bool voronoi) {
+    const std::size_t n = points.shape(0), dim = points.shape(1);
+    if (dim != 2 && dim != 3) value_error("delaunay_triangulation: points must have shape (n, 2) or (n, 3), got (" + std::to_string(n) + ", " + std::to_string(dim) + ")");
+    hmira::result<hmira::delaunay_triangles> r = hmira::fail(hmira::errc::invalid_argument, "");
+    {
+        nb::gil_scoped_release release;
+        const hmira::delaunay_options options{.voronoi = voronoi, .brio = true};
+        if (dim == 2) {
+            // (n, 2) doubles in C order are n std::array<double, 2>: read in place.
+            const auto* p = reinterpret_cast<const std::array<double, 2>*>(points.data());
+            r = hmira::delaunay_triangulation(std::span<const std::array<double, 2>>(p, n), options);
+        } else {
+            const auto* p = reinterpret_cast<const std::array<double, 3>*>(points.data());
+            r = hmira::delaunay_triangulation(std::span<const std::array<double, 3>>(p, n), options);
+        }
+    }
+    auto t = take(std::move(r));
+    // Triangles index the caller's points (the first of each group of duplicates).
+    std::vector<std::int32_t> tri(3 * t.triangles.size());
+    for (std::size_t i = 0; i < t.triangles.size(); ++i)
+        for (int c = 0; c < 3; ++c) tri[3 * i + c] = static_cast<std::int32_t>(t.vertex_to_input[t.triangles[i][c]]);
+    const std::size_t m = t.triangles.size();
+    auto triangles = adopt<std::int32_t>(std::move(tri), {m, 3});
+    if (!voronoi) return nb::cast(triangles);
+    std::vector<double> vv(2 * t.voronoi.vertices.size());
+    for (std::size_t i = 0; i < t.voronoi.vertices.size(); ++i) {
+        vv[2 * i] = t.voronoi.vertices[i].x;
+        vv[2 * i + 1] = t.voronoi.vertices[i].y;
+    }
+    std::vector<std::int32_t> ve(2 * t.voronoi.edges.size());
+    for (std::size_t i = 0; i < t.voronoi.edges.size(); ++i) {
+        const auto& e = t.voronoi.edges[i];
+        ve[2 * i] = static_cast<std::int32_t>(e.from);
+        ve[2 * i + 1] = e.to == hmira::voronoi_edge::no_vertex ? -1 : static_cast<std::int32_t>(e.to);
+    }
+    const std::size_t k = t.voronoi.vertices.size(), ne = t.voronoi.edges.size();
+    return nb::make_tuple(triangles, adopt<double>(std::move(vv), {k, 2}), adopt<std::int32_t>(std::move(ve), {ne, 2}));
+}
+
+void write_polygons(const std::string& path, const vertex_array& vertices, nb::handle faces, bool ascii, bool big_endian, bool float32) {
+    const auto soup = to_soup(vertices, faces, "write_mesh");
+    hmira::result<void> r;
+    {
+        nb::gil_scoped_release release;
+        hmira::face_vertex_mesh mesh;
+        r = hmira::io::assign_from_soup(mesh, soup, [&](std::size_t) { return path; });
+        if (r) r = hmira::io::write_mesh(mesh, path, write_options_from(ascii, big_endian, float32, true));
+    }
+    check(r);
+}
+
+}  // namespace
+
+void bind_arrays(nb::module_& m) {
+    m.def("marching_cubes", &marching_cubes, nb::arg("volume"), nb::arg("iso") = 0.0, nb::kw_only(),
+          nb::arg("spacing") = std::vector<double>{1, 1, 1}, nb::arg("origin") = std::vector<double>{0, 0, 0},
+          nb::arg("inside") = "below", nb::arg("threads") = 0u, MC_DOC);
+    m.def("_voxelize", &voxelize, nb::arg("vertices"), nb::arg("faces"), nb::kw_only(), nb::arg("resolution") = nb::none(),
+          nb::arg("pitch") = nb::none(), nb::arg("mode") = "solid", nb::arg("fill_open") = false, nb::arg("threads") = 0u,
+          "Voxelizes (vertices, faces); see hmira.voxelize.");
+    m.def("delaunay_triangulation", &delaunay, nb::arg("points"), nb::kw_only(), nb::arg("voronoi") = false, DELAUNAY_DOC);
+    m.def("_write_polygons", &write_polygons, nb::arg("path"), nb::arg("vertices"), nb::arg("faces"), nb::kw_only(),
+          nb::arg("ascii") = false, nb::arg("big_endian") = false, nb::arg("float32") = false,
+          "Writes (vertices, faces) arrays as a mesh file; see hmira.write_mesh.");
+}
+
+}  // namespace hmira_py

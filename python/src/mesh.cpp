@@ -1,0 +1,377 @@
+// python/src/mesh.cpp
+// hmira.Mesh: a polygon mesh backed by hmira::halfedge_mesh, with its positions exported as a
+// numpy view. The mesh lives behind a shared_ptr that every exported view also holds, and a
+// topology change first moves the mesh away from storage a view still uses (copy on write), so
+// a view can go stale but never points at freed memory; the Python wrapper (hmira.VertexView)
+// compares the version it was made at and raises once it is stale.
+#include "common.hpp"
+
+#include <cmath>
+#include <memory>
+#include <numbers>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <hmira/algorithms/editing/editing.hpp>
+#include <hmira/algorithms/euler/euler.hpp>
+#include <hmira/algorithms/geometry/vertex_normals.hpp>
+#include <hmira/algorithms/orientation/flip_normals.hpp>
+#include <hmira/algorithms/topology/mesh_topology.hpp>
+#include <hmira/algorithms/validation/validate.hpp>
+#include <hmira/io/mesh_io.hpp>
+#include <hmira/meshes/halfedge_mesh.hpp>
+
+namespace hmira_py {
+
+hmira::io::polygon_soup to_soup(const nb::ndarray<const double, nb::ndim<2>, nb::c_contig, nb::device::cpu>& vertices,
+                                nb::handle faces, const char* who);
+hmira::io::write_options write_options_from(bool ascii, bool big_endian, bool float32, bool attributes);
+
+namespace {
+
+using hmira::halfedge_mesh;
+using hmira::vec3;
+
+struct py_mesh {
+    std::shared_ptr<halfedge_mesh> mesh = std::make_shared<halfedge_mesh>();
+    /// Bumped by every change that may move or renumber the positions.
+    std::uint64_t version = 0;
+
+    halfedge_mesh& get() { return *mesh; }
+    const halfedge_mesh& get() const { return *mesh; }
+
+    /// Call before a topology change: a view exported earlier keeps the old storage.
+    halfedge_mesh& for_topology_change() {
+        if (mesh.use_count() > 1) mesh = std::make_shared<halfedge_mesh>(*mesh);
+        ++version;
+        return *mesh;
+    }
+    void replace(halfedge_mesh&& fresh) {
+        mesh = std::make_shared<halfedge_mesh>(std::move(fresh));
+        ++version;
+    }
+};
+
+using vertex_array = nb::ndarray<const double, nb::ndim<2>, nb::c_contig, nb::device::cpu>;
+
+hmira::vertex_handle vertex_arg(const halfedge_mesh& m, long long i, const char* who) {
+    if (i < 0 || std::size_t(i) >= m.vertex_index_bound() || !m.is_valid(hmira::vertex_handle(std::size_t(i))))
+        value_error(std::string(who) + ": vertex " + std::to_string(i) + " does not exist");
+    return hmira::vertex_handle(std::size_t(i));
+}
+hmira::face_handle face_arg(const halfedge_mesh& m, long long i, const char* who) {
+    if (i < 0 || std::size_t(i) >= m.face_index_bound() || !m.is_valid(hmira::face_handle(std::size_t(i))))
+        value_error(std::string(who) + ": face " + std::to_string(i) + " does not exist");
+    return hmira::face_handle(std::size_t(i));
+}
+hmira::halfedge_handle halfedge_arg(const halfedge_mesh& m, long long i, const char* who) {
+    if (i < 0 || std::size_t(i) >= m.halfedge_index_bound() || !m.is_valid(hmira::halfedge_handle(std::size_t(i))))
+        value_error(std::string(who) + ": halfedge " + std::to_string(i) + " does not exist");
+    return hmira::halfedge_handle(std::size_t(i));
+}
+vec3<double> point_arg(const std::vector<double>& p, const char* who) {
+    if (p.size() != 3 || !std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+        value_error(std::string(who) + ": position must be 3 finite numbers");
+    return {p[0], p[1], p[2]};
+}
+long long idx(auto h) { return h.index == UINT32_MAX ? -1 : static_cast<long long>(h.index); }
+
+void set_polygons(py_mesh& self, const vertex_array& vertices, nb::handle faces) {
+    const auto soup = to_soup(vertices, faces, "Mesh");
+    halfedge_mesh fresh;
+    // The readers' own soup-to-mesh path, so construction gets whatever repair they do.
+    check(hmira::io::assign_from_soup(fresh, soup, [](std::size_t) { return std::string("Mesh"); }));
+    self.replace(std::move(fresh));
+}
+
+void read(py_mesh& self, const std::string& path, bool weld_stl) {
+    halfedge_mesh fresh;
+    hmira::result<hmira::io::read_report> r = hmira::fail(hmira::errc::invalid_argument, "");
+    {
+        nb::gil_scoped_release release;
+        hmira::io::read_options options;
+        options.weld_stl = weld_stl;
+        r = hmira::io::read_mesh(fresh, path, options);
+    }
+    check(r);
+    self.replace(std::move(fresh));
+}
+
+void write(const py_mesh& self, const std::string& path, bool ascii, bool big_endian, bool float32, bool attributes) {
+    hmira::result<void> r;
+    {
+        nb::gil_scoped_release release;
+        r = hmira::io::write_mesh(self.get(), path, write_options_from(ascii, big_endian, float32, attributes));
+    }
+    check(r);
+}
+
+nb::ndarray<nb::numpy, double, nb::ndim<2>> positions(py_mesh& self) {
+    auto* keep = new std::shared_ptr<halfedge_mesh>(self.mesh);
+    nb::capsule owner(keep, [](void* p) noexcept { delete static_cast<std::shared_ptr<halfedge_mesh>*>(p); });
+    const auto span = self.get().positions();
+    static_assert(sizeof(vec3<double>) == 3 * sizeof(double));
+    // The mesh is not const (only the accessor is): writing through the view moves vertices.
+    auto* data = const_cast<double*>(reinterpret_cast<const double*>(span.data()));
+    return nb::ndarray<nb::numpy, double, nb::ndim<2>>(data, {span.size(), 3}, owner);
+}
+
+nb::list polygons(const py_mesh& self) {
+    nb::list out;
+    const auto& m = self.get();
+    for (auto f : m.faces()) {
+        nb::list poly;
+        for (auto v : m.face_vertices(f)) poly.append(static_cast<long long>(v.index));
+        out.append(poly);
+    }
+    return out;
+}
+
+nb::ndarray<nb::numpy, std::int32_t, nb::ndim<2>> faces(const py_mesh& self) {
+    const auto& m = self.get();
+    std::vector<std::int32_t> out;
+    std::size_t k = 0, count = 0;
+    for (auto f : m.faces()) {
+        std::size_t n = 0;
+        for (auto v : m.face_vertices(f)) {
+            out.push_back(static_cast<std::int32_t>(v.index));
+            ++n;
+        }
+        if (count == 0) k = n;
+        else if (n != k)
+            value_error("Mesh.faces: face " + std::to_string(f.index) + " has " + std::to_string(n) + " corners, face 0 has " +
+                        std::to_string(k) + "; use Mesh.polygons for mixed polygons");
+        ++count;
+    }
+    auto* owned = new std::vector<std::int32_t>(std::move(out));
+    nb::capsule owner(owned, [](void* p) noexcept { delete static_cast<std::vector<std::int32_t>*>(p); });
+    return nb::ndarray<nb::numpy, std::int32_t, nb::ndim<2>>(owned->data(), {count, k}, owner);
+}
+
+struct topology {
+    std::size_t vertices, edges, faces, components, boundary_loops, boundary_edges, isolated_vertices, non_manifold_edges;
+    long long genus, euler_characteristic;
+    bool closed;
+};
+
+topology topology_of(const py_mesh& self) {
+    const auto s = hmira::mesh_topology(self.get());
+    return {s.vertices, s.edges, s.faces, s.components, s.boundary_loops, s.boundary_edges, s.isolated_vertices,
+            s.non_manifold_edges, s.genus, s.euler_characteristic, s.closed()};
+}
+
+std::vector<std::string> validate(const py_mesh& self, bool relaxed) {
+    std::vector<std::string> out;
+    for (auto& p : hmira::validate(self.get(), {.relaxed = relaxed, .check_geometry = true, .max_problems = 1000}))
+        out.push_back(std::move(p.message));
+    return out;
+}
+
+nb::ndarray<nb::numpy, double, nb::ndim<2>> normals(const py_mesh& self, const std::string& weighting) {
+    hmira::vertex_normal_options o;
+    if (weighting == "angle") o.weighting = hmira::normal_weighting::angle;
+    else if (weighting == "area") o.weighting = hmira::normal_weighting::area;
+    else value_error("vertex_normals: weighting must be 'angle' or 'area', got '" + weighting + "'");
+    auto n = hmira::vertex_normals(self.get(), o);
+    const std::size_t count = n.size();
+    auto* owned = new std::vector<vec3<double>>(std::move(n));
+    nb::capsule owner(owned, [](void* p) noexcept { delete static_cast<std::vector<vec3<double>>*>(p); });
+    return nb::ndarray<nb::numpy, double, nb::ndim<2>>(reinterpret_cast<double*>(owned->data()), {count, 3}, owner);
+}
+
+/// Compacts after an edit so that vertex and face indices stay dense (0 .. n-1), as the CLI
+/// writes them; returns nothing the caller needs.
+void compact(halfedge_mesh& m) { (void)m.collect_garbage(); }
+
+nb::dict truncate(py_mesh& self, std::optional<std::vector<long long>> vertices, bool all, std::optional<double> fraction,
+                  std::optional<double> distance) {
+    auto& m0 = self.get();
+    if (all == vertices.has_value()) value_error("truncate: give vertices or all=True (one of them)");
+    std::vector<hmira::vertex_handle> vs;
+    if (all) for (auto v : m0.vertices()) vs.push_back(v);
+    else for (long long i : *vertices) vs.push_back(vertex_arg(m0, i, "truncate"));
+    const hmira::truncate_options o{.fraction = fraction.value_or(1.0 / 3.0), .distance = distance.value_or(0.0)};
+    // Checked on a copy of nothing: truncate leaves the mesh unchanged on error.
+    auto& m = self.for_topology_change();
+    auto r = take(hmira::truncate(m, vs, o));
+    compact(m);
+    nb::dict d;
+    d["faces"] = r.faces.size();
+    d["vertices"] = r.vertices.size();
+    return d;
+}
+
+nb::dict bevel(py_mesh& self, std::optional<std::vector<std::pair<long long, long long>>> edges, bool all, std::optional<double> angle,
+               double width, int segments, bool no_clamp, std::optional<std::vector<long long>> vertices, bool vertices_all) {
+    auto& m0 = self.get();
+    const int ways = int(edges.has_value()) + int(all) + int(angle.has_value()) + int(vertices.has_value()) + int(vertices_all);
+    if (ways != 1) value_error("bevel: choose edges, all=True or angle=DEG, or vertices / vertices_all=True (exactly one)");
+    const hmira::bevel_options o{.width = width, .segments = segments, .clamp_overlap = !no_clamp};
+    hmira::result<hmira::bevel_result<halfedge_mesh>> r = hmira::fail(hmira::errc::invalid_argument, "");
+    if (vertices || vertices_all) {
+        std::vector<hmira::vertex_handle> vs;
+        if (vertices_all) for (auto v : m0.vertices()) vs.push_back(v);
+        else for (long long i : *vertices) vs.push_back(vertex_arg(m0, i, "bevel"));
+        r = hmira::bevel_vertices(self.for_topology_change(), vs, o);
+    } else {
+        std::vector<hmira::edge_handle> es;
+        if (edges) {
+            for (auto [a, b] : *edges) {
+                const auto h = m0.find_halfedge(vertex_arg(m0, a, "bevel"), vertex_arg(m0, b, "bevel"));
+                if (!m0.is_valid(h)) value_error("bevel: no edge between vertices " + std::to_string(a) + " and " + std::to_string(b));
+                es.push_back(m0.edge(h));
+            }
+        } else {
+            const double cos_limit = angle ? std::cos(*angle * std::numbers::pi / 180.0) : 2.0;
+            for (auto e : m0.edges()) {
+                const auto h = m0.edge_halfedge(e);
+                const auto f0 = m0.face(h), f1 = m0.face(m0.opposite(h));
+                if (!m0.is_valid(f0) || !m0.is_valid(f1)) continue;
+                if (angle) {
+                    auto normal = [&](hmira::face_handle f) {
+                        std::vector<vec3<double>> p;
+                        for (auto v : m0.face_vertices(f)) p.push_back(m0.position(v));
+                        return hmira::normalized(hmira::detail::newell_normal(p));
+                    };
+                    if (hmira::dot(normal(f0), normal(f1)) > cos_limit) continue;
+                }
+                es.push_back(e);
+            }
+            if (es.empty()) value_error(angle ? "bevel: no edge has a dihedral angle of at least " + std::to_string(*angle) + " degrees"
+                                              : std::string("bevel: the mesh has no edge between two faces"));
+        }
+        r = hmira::bevel(self.for_topology_change(), es, o);
+    }
+    auto b = take(std::move(r));
+    compact(self.get());
+    nb::dict d;
+    d["strip_faces"] = b.strip_faces.size();
+    d["vertex_faces"] = b.vertex_faces.size();
+    d["vertices"] = b.vertices.size();
+    d["width"] = b.width;
+    return d;
+}
+
+nb::dict extrude(py_mesh& self, std::optional<std::vector<long long>> faces, bool all, double distance,
+                 std::optional<std::vector<double>> direction, const std::string& mode) {
+    auto& m0 = self.get();
+    if (all == faces.has_value()) value_error("extrude: give faces or all=True (one of them)");
+    if (mode != "region" && mode != "individual") value_error("extrude: mode must be 'region' or 'individual', got '" + mode + "'");
+    std::vector<hmira::face_handle> fs;
+    if (all) for (auto f : m0.faces()) fs.push_back(f);
+    else for (long long i : *faces) fs.push_back(face_arg(m0, i, "extrude"));
+    hmira::extrude_options o{.distance = distance, .direction = std::nullopt,
+                             .mode = mode == "individual" ? hmira::extrude_mode::individual : hmira::extrude_mode::region};
+    if (direction) o.direction = point_arg(*direction, "extrude: direction");
+    auto r = take(hmira::extrude(self.for_topology_change(), fs, o));
+    compact(self.get());
+    nb::dict d;
+    d["top_faces"] = r.top_faces.size();
+    d["side_faces"] = r.side_faces.size();
+    d["vertices"] = r.vertices.size();
+    return d;
+}
+
+constexpr const char* MESH_DOC = R"doc(A polygon mesh backed by hmira's half-edge mesh (the compiled part of
+hmira.Mesh; use hmira.Mesh, which adds the checked `vertices` view).)doc";
+
+}  // namespace
+
+void bind_mesh(nb::module_& m) {
+    nb::class_<topology>(m, "Topology", "Counts of a mesh's elements and its topological invariants.")
+        .def_ro("vertices", &topology::vertices, "live vertices")
+        .def_ro("edges", &topology::edges, "edges")
+        .def_ro("faces", &topology::faces, "faces")
+        .def_ro("genus", &topology::genus, "total genus of the surface components")
+        .def_ro("components", &topology::components, "connected components, isolated vertices included")
+        .def_ro("boundary_loops", &topology::boundary_loops, "closed chains of boundary edges")
+        .def_ro("boundary_edges", &topology::boundary_edges, "edges with one face")
+        .def_ro("isolated_vertices", &topology::isolated_vertices, "vertices used by no face")
+        .def_ro("non_manifold_edges", &topology::non_manifold_edges, "edges with more than two faces")
+        .def_ro("euler_characteristic", &topology::euler_characteristic, "V - E + F")
+        .def_ro("closed", &topology::closed, "no boundary and no non-manifold edge")
+        .def("__repr__", [](const topology& t) {
+            return "Topology(vertices=" + std::to_string(t.vertices) + ", edges=" + std::to_string(t.edges) +
+                   ", faces=" + std::to_string(t.faces) + ", genus=" + std::to_string(t.genus) +
+                   ", components=" + std::to_string(t.components) + ", boundary_loops=" + std::to_string(t.boundary_loops) + ")";
+        });
+
+    nb::class_<py_mesh>(m, "MeshCore", MESH_DOC, nb::is_weak_referenceable())
+        .def(nb::init<>(), "An empty mesh.")
+        .def("_set_polygons", &set_polygons, nb::arg("vertices"), nb::arg("faces"),
+             "Replaces the content by (vertices, faces); faces an (m, k) integer array or a sequence of polygons.")
+        .def("_read", &read, nb::arg("path"), nb::kw_only(), nb::arg("weld_stl") = true, "Replaces the content by a mesh file's.")
+        .def("_assign", [](py_mesh& self, const py_mesh& other) { self.replace(halfedge_mesh(other.get())); }, nb::arg("other"),
+             "Replaces the content by a copy of `other`'s.")
+        .def("_positions", &positions, "The positions as a writable (n, 3) float64 view (unchecked; see Mesh.vertices).")
+        .def_prop_ro("_topology_version", [](const py_mesh& s) { return s.version; }, "Bumped by every topology change.")
+        .def("write", &write, nb::arg("path"), nb::kw_only(), nb::arg("ascii") = false, nb::arg("big_endian") = false,
+             nb::arg("float32") = false, nb::arg("attributes") = true,
+             R"doc(Write the mesh to a file (OBJ, OFF, PLY or STL by extension), atomically.
+
+Parameters
+----------
+path : str
+ascii : bool, keyword-only
+    PLY/STL: text instead of binary.
+big_endian : bool, keyword-only
+    PLY: binary big endian.
+float32 : bool, keyword-only
+    PLY: 32-bit coordinates (default 64-bit).
+attributes : bool, keyword-only
+    Write per-vertex normals and colours read from a file.)doc")
+        .def_prop_ro("vertex_count", [](const py_mesh& s) { return s.get().vertex_count(); }, "Live vertices.")
+        .def_prop_ro("edge_count", [](const py_mesh& s) { return s.get().edge_count(); }, "Live edges.")
+        .def_prop_ro("face_count", [](const py_mesh& s) { return s.get().face_count(); }, "Live faces.")
+        .def_prop_ro("faces", &faces, nb::rv_policy::automatic, "Faces as an (m, k) int32 array (ValueError when faces differ in size).")
+        .def_prop_ro("polygons", &polygons, nb::rv_policy::automatic, "Faces as a list of vertex-index lists.")
+        .def("topology", &topology_of, "V, E, F, genus, components and boundary loops (a Topology).")
+        .def("validate", &validate, nb::kw_only(), nb::arg("relaxed") = false,
+             "The mesh's problems, one message each; an empty list for a valid mesh.")
+        .def("flip", [](py_mesh& s) { return hmira::flip_normals(s.get()); }, "Reverse every face's winding; returns the faces flipped.")
+        .def("vertex_normals", &normals, nb::kw_only(), nb::arg("weighting") = "angle",
+             "Unit vertex normals (n, 3), faces weighted by corner angle ('angle') or area ('area').")
+        .def("collect_garbage", [](py_mesh& s) { compact(s.for_topology_change()); },
+             "Drop deleted elements and renumber densely (after kill operators).")
+        .def("_truncate", &truncate, nb::arg("vertices") = nb::none(), nb::kw_only(), nb::arg("all") = false,
+             nb::arg("fraction") = nb::none(), nb::arg("distance") = nb::none())
+        .def("_bevel", &bevel, nb::arg("edges") = nb::none(), nb::kw_only(), nb::arg("all") = false, nb::arg("angle") = nb::none(),
+             nb::arg("width") = 0.1, nb::arg("segments") = 1, nb::arg("no_clamp") = false, nb::arg("vertices") = nb::none(),
+             nb::arg("vertices_all") = false)
+        .def("_extrude", &extrude, nb::arg("faces") = nb::none(), nb::kw_only(), nb::arg("all") = false, nb::arg("distance") = 1.0,
+             nb::arg("direction") = nb::none(), nb::arg("mode") = "region")
+        // ---- Euler operators: handles as ints; kill operators leave deleted slots until collect_garbage()
+        .def("find_halfedge", [](const py_mesh& s, long long a, long long b) {
+                 const auto& m = s.get();
+                 return idx(m.find_halfedge(vertex_arg(m, a, "find_halfedge"), vertex_arg(m, b, "find_halfedge")));
+             }, nb::arg("a"), nb::arg("b"), "The halfedge from vertex a to vertex b, or -1.")
+        .def("make_vertex", [](py_mesh& s, const std::vector<double>& p) {
+                 const auto q = point_arg(p, "make_vertex");
+                 return idx(hmira::make_vertex(s.for_topology_change(), q).vertex);
+             }, nb::arg("position"), "makeV: a new isolated vertex; returns its index.")
+        .def("make_edge_vertex", [](py_mesh& s, long long corner, const std::vector<double>& p) {
+                 const auto q = point_arg(p, "make_edge_vertex");
+                 const auto h = halfedge_arg(s.get(), corner, "make_edge_vertex");
+                 auto r = take(hmira::make_edge_vertex(s.for_topology_change(), h, q));
+                 return nb::make_tuple(idx(r.vertex), idx(r.halfedge));
+             }, nb::arg("corner"), nb::arg("position"),
+             "makeEV: a new vertex joined to target(corner); returns (vertex, halfedge from the old vertex to the new).")
+        .def("kill_edge_vertex", [](py_mesh& s, long long h) {
+                 const auto hh = halfedge_arg(s.get(), h, "kill_edge_vertex");
+                 auto r = take(hmira::kill_edge_vertex(s.for_topology_change(), hh));
+                 return nb::make_tuple(idx(r.vertex), idx(r.corner), nb::make_tuple(r.position.x, r.position.y, r.position.z));
+             }, nb::arg("halfedge"), "killEV: removes the edge and its degree-1 target; returns (vertex, corner, position) for the redo.")
+        .def("make_edge_face", [](py_mesh& s, long long h0, long long h1) {
+                 const auto a = halfedge_arg(s.get(), h0, "make_edge_face"), b = halfedge_arg(s.get(), h1, "make_edge_face");
+                 auto r = take(hmira::make_edge_face(s.for_topology_change(), a, b));
+                 return nb::make_tuple(idx(r.halfedge), idx(r.face));
+             }, nb::arg("h0"), nb::arg("h1"), "makeEF: splits a face by an edge from target(h0) to target(h1); returns (halfedge, face).")
+        .def("kill_edge_face", [](py_mesh& s, long long h) {
+                 const auto hh = halfedge_arg(s.get(), h, "kill_edge_face");
+                 auto r = take(hmira::kill_edge_face(s.for_topology_change(), hh));
+                 return nb::make_tuple(idx(r.face), idx(r.h0), idx(r.h1));
+             }, nb::arg("halfedge"), "killEF: removes the edge, merging its two faces; returns (face, h0, h1) for make_edge_face.");
+}
+
+}  // namespace hmira_py

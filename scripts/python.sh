@@ -1,0 +1,38 @@
+#!/usr/bin/env bash
+# The Python package's check: builds and installs `hmira` with `pip install .` into a fresh
+# venv (nanobind + scikit-build-core from PyPI), checks that the committed type stubs equal
+# what nanobind's stubgen makes now, and runs the pytest suite.
+#   HMIRA_TEST_DATA  libcgal-demo data (default: build/test-data, as scripts/test-data.sh makes it)
+#   HMIRA_CLI        the C++ `hmira` binary the tests compare with (unset: those comparisons skip)
+#   HMIRA_PY_VENV    where the venv goes (default: build/python-venv; always made anew)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+start=$(date +%s)
+venv=${HMIRA_PY_VENV:-build/python-venv}
+case $venv in /*) ;; *) venv=$PWD/$venv ;; esac
+export HMIRA_TEST_DATA=${HMIRA_TEST_DATA:-$PWD/build/test-data}
+export CCACHE_BASEDIR=${CCACHE_BASEDIR:-$PWD}
+
+echo "== fresh venv at $venv"
+rm -rf "$venv"
+python3 -m venv "$venv"
+"$venv/bin/python" -m pip install -q --upgrade pip
+"$venv/bin/python" -m pip install -q -r python/requirements-test.txt
+
+echo "== pip install . (builds hmira._core)"
+"$venv/bin/python" -m pip install -q .
+echo "built and installed after $(( $(date +%s) - start )) s"
+
+echo "== type stubs: committed python/hmira/_core.pyi must equal nanobind's stubgen output"
+stubs=$(mktemp -d)
+trap 'rm -rf "$stubs"' EXIT
+(cd "$stubs" && "$venv/bin/python" -m nanobind.stubgen -q -m hmira._core -o "$stubs/_core.pyi")
+if ! diff -u python/hmira/_core.pyi "$stubs/_core.pyi"; then
+  echo "python/hmira/_core.pyi is out of date: regenerate it with" >&2
+  echo "  $venv/bin/python -m nanobind.stubgen -m hmira._core -o python/hmira/_core.pyi" >&2
+  exit 1
+fi
+
+echo "== pytest (installed package, not the source tree)"
+(cd python/tests && "$venv/bin/python" -m pytest -q -p no:cacheprovider .)
+echo "python checks finished after $(( $(date +%s) - start )) s"
