@@ -21,10 +21,12 @@ def main(html, runs=3):
                   f" first frame at {timings['first_frame_ms'] / 1000:.2f} s)")
             times.append(opened.seconds)
             opened.page.close()
-    print(f"  best {min(times):.2f} s, worst {max(times):.2f} s over {runs} runs")
-    return max(times)
+    times.sort()
+    median = times[len(times) // 2]
+    print(f"  best {times[0]:.2f} s, median {median:.2f} s, worst {times[-1]:.2f} s over {runs} runs")
+    return median
 
 
 if __name__ == "__main__":
-    worst = main(sys.argv[1], int(sys.argv[2]) if len(sys.argv) > 2 else 3)
-    sys.exit(0 if worst < 5.0 else f"slower than 5 s: {worst:.2f} s")
+    median = main(sys.argv[1], int(sys.argv[2]) if len(sys.argv) > 2 else 3)
+    sys.exit(0 if median < 5.0 else f"slower than 5 s (median): {median:.2f} s")

@@ -196,6 +196,38 @@ class ViewerTest(unittest.TestCase):
         left, right = image.crop((0, 0, 400, 600)), image.crop((400, 0, 800, 600))
         self.assertEqual(list(left.get_flattened_data()), list(right.get_flattened_data()))  # the same mesh seen by one camera
 
+    def test_shading_and_edge_toggles_change_the_picture(self):
+        self.assertEqual(hmira("generate", "icosahedron", self.path("ico.obj"), "--quiet").returncode, 0)
+        self.view(self.path("ico.obj"))
+        opened = self.open(self.path("ico.html"))
+        page = opened.page
+        self.assertEqual(page.evaluate("[window.hmiraViewer.state.smooth, window.hmiraViewer.state.edges]"), [False, True])
+        flat = opened.screenshot(hide_ui=True)
+        for key, state in (("s", "smooth"), ("e", "edges")):
+            page.keyboard.press(key)
+            page.wait_for_timeout(200)
+            self.assertEqual(page.evaluate(f"window.hmiraViewer.state.{state}"), state == "smooth")
+            after = opened.screenshot(hide_ui=True)
+            self.assertNotEqual(pixels(after)[1], pixels(flat)[1], f"toggling {state} changed nothing")
+            flat = after
+        self.assert_no_console_errors(opened)
+
+    def test_normals_from_the_file_are_embedded_and_shown_smooth(self):
+        self.assertEqual(hmira("mc", "sphere", self.path("sphere.ply"), "-n", 24, "--normals", "--quiet").returncode, 0)
+        self.view(self.path("sphere.ply"))
+        scene, buffers = page_buffers(self.path("sphere.html"))
+        vertices = scene["meshes"][0]["info"]["vertices"]
+        self.assertEqual(len(buffers["hmira-m0-normals"]), vertices * 3 * 4)
+        normals = struct.unpack(f"<{3 * vertices}f", buffers["hmira-m0-normals"])
+        for i in range(0, len(normals), 3):
+            self.assertAlmostEqual(normals[i] ** 2 + normals[i + 1] ** 2 + normals[i + 2] ** 2, 1.0, places=3)
+        opened = self.open(self.path("sphere.html"))
+        self.assertTrue(opened.page.evaluate("window.hmiraViewer.state.smooth"))
+        shot = opened.screenshot(hide_ui=True)
+        self.assert_no_console_errors(opened)
+        self.assertTrue(0.10 <= coverage(shot) <= 0.90, coverage(shot))
+        self.assertEqual(count(shot, is_boundary_colour), 0)
+
     def test_vertex_colours_are_shown(self):
         self.view(self.write("green.ply", GREEN_TETRA), self.path("green.html"))
         opened = self.open(self.path("green.html"))
