@@ -22,7 +22,7 @@ function(hmira_viewer_embed target)
   elseif(NOT bundle AND EXISTS ${src}/dist/hmira-viewer.js)
     set(bundle ${src}/dist/hmira-viewer.js)
   endif()
-  target_include_directories(${target} PRIVATE ${src})  # page.hpp
+  target_include_directories(${target} PRIVATE ${src})  # viewer_page.hpp, viewer_bundle.hpp
   if(bundle)
     set(inc ${CMAKE_CURRENT_BINARY_DIR}/generated/hmira_viewer_bundle.inc)
     add_custom_command(OUTPUT ${inc} COMMAND ${CMAKE_COMMAND} -DIN=${bundle} -DOUT=${inc} -P ${src}/embed.cmake

@@ -1,7 +1,7 @@
 // apps/hmira/cmd_view.cpp
 // `hmira view`: writes one self-contained HTML page that shows a mesh (or two side by side,
 // `--compare`) in any browser, offline: the three.js viewer is compiled into this binary
-// (viewer/viewer.cmake) and the mesh is embedded as base64 binary buffers (viewer/page.hpp).
+// (viewer/viewer.cmake) and the mesh is embedded as base64 binary buffers (viewer/viewer_page.hpp).
 #include <cstdio>
 #include <filesystem>
 #include <string_view>
@@ -9,7 +9,8 @@
 #include <hmira/algorithms/topology/mesh_topology.hpp>
 #include <hmira/io/detail/atomic_write.hpp>
 
-#include <page.hpp>
+#include <viewer_bundle.hpp>
+#include <viewer_page.hpp>
 
 #include "cli.hpp"
 
@@ -17,21 +18,12 @@ namespace {
 
 using namespace hmira_cli;
 
-#ifdef HMIRA_VIEWER_BUNDLE
-// An array, not a constexpr string_view: its length is sizeof, not a compile-time strlen of 600 KB.
-const char viewer_bundle_text[] =
-#include "hmira_viewer_bundle.inc"
-    ;
-const std::string_view viewer_bundle(viewer_bundle_text, sizeof viewer_bundle_text - 1);
-#else
-const std::string_view viewer_bundle{};
-#endif
 
 struct view_args {
     std::string input, output, compare;
 };
 
-/// The loaded mesh as the plain arrays page.hpp takes (vertices renumbered densely in file order).
+/// The loaded mesh as the plain arrays viewer_page.hpp takes (vertices renumbered densely in file order).
 struct plain_mesh {
     std::string path;
     hmira::topology_summary topology;
@@ -91,6 +83,7 @@ std::string size_text(std::uintmax_t bytes) {
 }
 
 int run_view(const view_args& a, const common_options& o) {
+    const std::string_view viewer_bundle = hmira_viewer::bundle();
     if (viewer_bundle.empty())
         return report(internal, "this hmira was built without the viewer bundle: run viewer/build.sh (needs node and npm), then re-run cmake and rebuild");
     const std::string output = a.output.empty() ? std::filesystem::path(a.input).replace_extension(".html").string() : a.output;

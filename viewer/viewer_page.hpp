@@ -1,4 +1,4 @@
-// viewer/page.hpp
+// viewer/viewer_page.hpp
 // Writes the self-contained HTML page of the hmira viewer from plain arrays (points, polygon
 // offsets and corners), so the CLI (`hmira view`) and the Python bindings make the same page.
 // Standard library only; the viewer script (viewer/dist/hmira-viewer.js) is passed in as text.
