@@ -200,7 +200,17 @@ function start() {
     // Multisampling costs a software renderer (SwiftShader, headless Chromium) several times the
     // raster work; on a mesh this dense its triangles are smaller than a pixel anyway.
     const triangleCount = parts.reduce((n, p) => n + p.entry.triangles, 0);
-    const renderer = new WebGLRenderer({ antialias: triangleCount <= antialiasUpTo });
+    let renderer;
+    try {
+        renderer = new WebGLRenderer({ antialias: triangleCount <= antialiasUpTo });
+    } catch (error) {
+        const note = document.createElement('p');
+        note.style.cssText = 'font:15px system-ui,sans-serif;margin:2em';
+        note.textContent = `This page needs WebGL, which this browser does not offer (${error.message}).`;
+        document.body.appendChild(note);
+        window.hmiraError = String(error.message);
+        throw error;
+    }
     renderer.setPixelRatio(window.devicePixelRatio || 1);
     renderer.setSize(window.innerWidth, window.innerHeight);
     renderer.setClearColor(new Color(palette.background));
