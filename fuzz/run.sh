@@ -1,15 +1,18 @@
 #!/usr/bin/env bash
-# Builds the parser fuzz targets with clang 14's libFuzzer (+ ASan/UBSan) and runs each for a
-# bounded time on a copy of its committed corpus, so CI stays deterministic in what it keeps.
+# Builds the parser fuzz targets (OBJ, OFF, PLY, STL, INR plain and gzip, binvox, .xyz/.csv
+# points) with clang 14's libFuzzer (+ ASan/UBSan) and runs each for a bounded time with its
+# dictionary on a copy of its committed corpus, so CI stays deterministic in what it keeps.
+# 8 targets x 18 s (scripts/test.sh) keeps the CI run near 2.5 minutes; fuzz/run-long.sh runs
+# them for long.
 # First checks that every public header under include/hmira/io and include/hmira/meshes
 # compiles on its own with clang 14 (-Wall -Wextra -Werror).
-# Usage: fuzz/run.sh [seconds per format, default 30] [build folder, default build-fuzz]
-# Needs clang-14 and libclang-rt-14-dev (scripts/install-deps.sh). Exits non-zero on a finding
+# Usage: fuzz/run.sh [seconds per target, default 18] [build folder, default build-fuzz]
+# Needs clang-14, libclang-rt-14-dev and zlib1g-dev (scripts/install-deps.sh). Exits non-zero on a finding
 # or on a header that does not compile.
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 root="$(dirname "$here")"
-seconds="${1:-30}"
+seconds="${1:-18}"
 out="${2:-$root/build-fuzz}"
 cxx="${CXX_FUZZ:-clang++-14}"
 command -v "$cxx" >/dev/null || { echo "fuzz: $cxx not found (apt install clang-14 libclang-rt-14-dev)" >&2; exit 2; }
@@ -40,19 +43,32 @@ if [ "$headers" -eq 0 ]; then echo "fuzz: no headers found to check" >&2; status
 if [ "$failed" -ne 0 ]; then status=1; fi
 echo "fuzz: header check: $((headers - failed)) of $headers headers compile with $header_cxx -std=c++20 -Wall -Wextra -Werror"
 
-for fmt in obj off ply stl; do
-  bin="$out/fuzz_$fmt"
-  if [ ! -x "$bin" ] || [ "$here/fuzz_$fmt.cpp" -nt "$bin" ] || [ -n "$(find "$root/include/hmira" "$here/fuzz_io.hpp" -newer "$bin" -print -quit)" ]; then
+# Every target: the mesh parsers (fuzz_io.hpp) and the volume and point readers
+# (fuzz_volume.hpp), each with its keyword dictionary (dict/<target>.dict) and a copy of its
+# committed corpus (corpus/<target>/), which holds the reproducers of issue 14.
+targets="obj off ply stl inr inr_gz binvox points"
+build_target() {  # build_target NAME: (re)builds $out/fuzz_NAME when a source is newer
+  local bin="$out/fuzz_$1"
+  if [ ! -x "$bin" ] || [ "$here/fuzz_$1.cpp" -nt "$bin" ] || \
+     [ -n "$(find "$root/include/hmira" "$here/fuzz_io.hpp" "$here/fuzz_volume.hpp" -newer "$bin" -print -quit)" ]; then
     echo "fuzz: building $bin"
     "$cxx" -std=c++20 -O1 -g -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined \
-      -I"$root/include" "$here/fuzz_$fmt.cpp" -o "$bin"
+      -I"$root/include" "$here/fuzz_$1.cpp" -o "$bin" -lz
   fi
+}
+if [ "${HMIRA_FUZZ_ONLY_BUILD:-0}" = 1 ]; then
+  for fmt in $targets; do build_target "$fmt"; done
+  exit $status
+fi
+for fmt in $targets; do
+  build_target "$fmt"
+  bin="$out/fuzz_$fmt"
   work="$out/corpus-$fmt"
   rm -rf "$work"; mkdir -p "$work" "$out/artifacts-$fmt"
   cp "$here/corpus/$fmt/"* "$work/"
   echo "fuzz: $fmt for ${seconds}s"
   if ! "$bin" -seed="${HMIRA_FUZZ_SEED:-1}" -max_total_time="$seconds" -max_len=65536 -rss_limit_mb=2048 -timeout=10 \
-        -artifact_prefix="$out/artifacts-$fmt/" -print_final_stats=1 "$work" > "$out/fuzz_$fmt.log" 2>&1; then
+        -dict="$here/dict/$fmt.dict" -artifact_prefix="$out/artifacts-$fmt/" -print_final_stats=1 "$work" > "$out/fuzz_$fmt.log" 2>&1; then
     echo "fuzz: $fmt FAILED, see $out/fuzz_$fmt.log and $out/artifacts-$fmt/" >&2
     tail -30 "$out/fuzz_$fmt.log" >&2
     status=1

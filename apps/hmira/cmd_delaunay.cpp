@@ -6,6 +6,7 @@
 
 #include <hmira/algorithms/conversion/delaunay_triangulation.hpp>
 #include <hmira/io/detail/files.hpp>
+#include <hmira/io/points.hpp>
 
 #include "cli.hpp"
 
@@ -18,40 +19,9 @@ struct delaunay_args {
 };
 
 /// x y [z] per line, separated by blanks or commas; '#' starts a comment; in a .csv the first
-/// line may be a header.
+/// line may be a header (hmira/io/points.hpp).
 hmira::result<std::vector<hmira::vec3<double>>> read_points_text(const std::string& path, bool csv) {
-    auto file = hmira::io::detail::input_file::open(path);
-    if (!file) return file.error();
-    std::vector<hmira::vec3<double>> pts;
-    hmira::io::detail::line_reader lines(file->text());
-    std::string_view line;
-    while (lines.next(line)) {
-        if (auto hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
-        double v[3] = {0, 0, 0};
-        int n = 0;
-        const char* p = line.data();
-        const char* end = p + line.size();
-        bool bad = false;
-        while (p < end) {
-            while (p < end && (*p == ' ' || *p == '\t' || *p == ',' || *p == ';')) ++p;
-            if (p >= end) break;
-            if (n == 3) break;  // extra columns are ignored
-            const char* s = (*p == '+') ? p + 1 : p;
-            auto r = std::from_chars(s, end, v[n]);
-            if (r.ec != std::errc() || r.ptr == s) {
-                bad = true;
-                break;
-            }
-            p = r.ptr;
-            ++n;
-        }
-        if (bad && csv && lines.line_number() == 1 && pts.empty()) continue;  // a header
-        if (bad || (n > 0 && n < 2))
-            return hmira::fail(hmira::errc::parse_error, path + ":" + std::to_string(lines.line_number()) + ": expected 'x y [z]', found '" +
-                                                              std::string(line.substr(0, 60)) + "'");
-        if (n >= 2) pts.push_back({v[0], v[1], v[2]});
-    }
-    return pts;
+    return hmira::io::read_points_text(path, {.csv = csv});
 }
 
 hmira::result<std::vector<hmira::vec3<double>>> read_points(const std::string& path) {

@@ -12,6 +12,7 @@
 #include <hmira/algorithms/topology/mesh_topology.hpp>
 #include <hmira/grids/bit_grid.hpp>
 #include <hmira/grids/dense_grid.hpp>
+#include <hmira/io/points.hpp>
 #include <hmira/io/volume/binvox.hpp>
 #include <hmira/io/volume/inr.hpp>
 #include <hmira/io/volume/raw.hpp>
@@ -180,6 +181,73 @@ TEST(InrVolume, gzip_volume_reads_when_zlib_is_available) {
     ASSERT_FALSE(g);
     EXPECT_EQ(g.error().code, hmira::errc::unsupported);
 #endif
+}
+
+TEST(Binvox, read_binvox_gives_back_what_write_binvox_wrote) {
+    temp_dir tmp;
+    hmira::bit_grid g({{6, 6, 6}, {1, 2, 3}, {0.5, 0.5, 0.5}});
+    std::mt19937 rng(5);
+    for (std::size_t k = 0; k < 6; ++k)
+        for (std::size_t j = 0; j < 6; ++j)
+            for (std::size_t i = 0; i < 6; ++i) g.set(i, j, k, rng() % 3 == 0);
+    const auto p = tmp.path / "g.binvox";
+    ASSERT_TRUE(hmira::io::write_binvox(g, p));
+    auto back = hmira::io::read_binvox(p);
+    ASSERT_TRUE(back) << back.error().message;
+    EXPECT_EQ(back->dims(), (hmira::grid_dims{6, 6, 6}));
+    EXPECT_NEAR(back->origin().y, 2.0, 1e-12);
+    EXPECT_NEAR(back->spacing().z, 0.5, 1e-12);
+    for (std::size_t k = 0; k < 6; ++k)
+        for (std::size_t j = 0; j < 6; ++j)
+            for (std::size_t i = 0; i < 6; ++i) EXPECT_EQ(back->value(i, j, k), g.value(i, j, k));
+}
+
+TEST(Binvox, bad_binvox_files_are_named_errors_and_allocate_nothing_large) {
+    const std::string head = "#binvox 1\ndim 2 2 2\ntranslate 0 0 0\nscale 1\ndata\n";
+    auto expect_error = [](const std::string& bytes, const std::string& words) {
+        auto g = hmira::io::parse_binvox(bytes, "v.binvox");
+        ASSERT_FALSE(g) << words;
+        EXPECT_EQ(g.error().code, hmira::errc::parse_error);
+        EXPECT_NE(g.error().message.find(words), std::string::npos) << g.error().message;
+    };
+    EXPECT_TRUE(hmira::io::parse_binvox(head + std::string("\x01\x08", 2), "v.binvox"));
+    expect_error(head + std::string("\x01\x07", 2), "the runs cover 7 of the 8 voxels");
+    expect_error(head + std::string("\x01\x08\x00\x01", 4), "v.binvox: byte offset " + std::to_string(head.size() + 2) + ": the runs cover more than");
+    expect_error(head + std::string("\x02\x08", 2), "voxel value 2");
+    expect_error(head + std::string("\x01\x00\x01\x08", 4), "a run of length 0");
+    expect_error("#binvox 1\ndim 1025 1025 1025\ndata\n", "v.binvox:2: a binvox dimension must be a whole number from 1 to 1024");
+    expect_error("#binvox 1\ndim 2 2 2\nscale nan\ndata\n", "v.binvox:3: expected 'scale <s>'");
+    expect_error("#binvox 1\ndim 2 2 2\ntranslate 0 inf 0\ndata\n", "v.binvox:3: expected 'translate");
+    // 1024^3 voxels declared, 2 bytes of runs: refused before any grid is made.
+    expect_error("#binvox 1\ndim 1024 1024 1024\ndata\n" + std::string("\x01\xff", 2), "the runs cover 255 of the 1073741824 voxels");
+}
+
+TEST(PointsText, xyz_and_csv_read_with_lines_named_and_non_finite_refused) {
+    auto pts = hmira::io::parse_points_text("# a comment\n1 2 3\n4,5\n\n6;7;8;9\n", "p.xyz");
+    ASSERT_TRUE(pts) << pts.error().message;
+    ASSERT_EQ(pts->size(), 3u);
+    EXPECT_EQ((*pts)[1].z, 0.0);
+    EXPECT_EQ((*pts)[2].z, 8.0);
+    auto csv = hmira::io::parse_points_text("x,y,z\n1,2,3\n", "p.csv", true);
+    ASSERT_TRUE(csv);
+    EXPECT_EQ(csv->size(), 1u);
+    auto bad = hmira::io::parse_points_text("1 2 3\n4\n", "p.xyz");
+    ASSERT_FALSE(bad);
+    EXPECT_NE(bad.error().message.find("p.xyz:2: expected 'x y [z]'"), std::string::npos) << bad.error().message;
+    auto nan = hmira::io::parse_points_text("1 2 3\n4 nan 6\n", "p.xyz");
+    ASSERT_FALSE(nan);
+    EXPECT_NE(nan.error().message.find("p.xyz:2: point 1 has a coordinate that is not finite"), std::string::npos) << nan.error().message;
+    temp_dir tmp;
+    const auto zero = tmp.path / "zero.xyz";
+    fs::create_symlink("/dev/zero", zero);
+    auto capped = hmira::io::read_points_text(zero, {.max_input_bytes = 1 << 20});
+    ASSERT_FALSE(capped);
+    EXPECT_NE(capped.error().message.find("input limit of 1048576 bytes"), std::string::npos) << capped.error().message;
+    const auto zb = tmp.path / "zero.binvox";
+    fs::create_symlink("/dev/zero", zb);
+    auto capped_binvox = hmira::io::read_binvox(zb, {.max_input_bytes = 1 << 20});
+    ASSERT_FALSE(capped_binvox);
+    EXPECT_NE(capped_binvox.error().message.find("input limit of 1048576 bytes"), std::string::npos) << capped_binvox.error().message;
 }
 
 // ---- hostile volumes (issue 14: D3, D4, D7, D8) -------------------------------------------------
