@@ -4,6 +4,9 @@
 
 #include <unistd.h>
 
+#include <csignal>
+#include <cstring>
+
 #include <cerrno>
 #include <charconv>
 #include <cmath>
@@ -118,6 +121,36 @@ bool refuse_non_finite(const hmira::face_vertex_mesh& mesh, const std::string& p
     }
     code = ok;
     return true;
+}
+
+namespace {
+
+extern "C" void remove_temporaries_and_die(int sig) {
+    hmira::io::detail::unlink_live_temporaries();
+    // SA_RESETHAND restored the default action: the signal, unblocked on return, ends us.
+    ::raise(sig);
+}
+
+int signal_to_raise = 0;
+void raise_test_signal() {
+    if (signal_to_raise != 0) ::raise(std::exchange(signal_to_raise, 0));
+}
+
+}  // namespace
+
+void install_signal_cleanup() {
+    struct sigaction sa {};
+    sa.sa_handler = remove_temporaries_and_die;
+    sigemptyset(&sa.sa_mask);
+    sa.sa_flags = SA_RESETHAND;
+    for (int sig : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&sa.sa_mask, sig);  // one cleanup at a time
+    for (int sig : {SIGINT, SIGTERM, SIGHUP}) ::sigaction(sig, &sa, nullptr);
+    if (const char* s = std::getenv("HMIRA_TEST_SIGNAL_DURING_WRITE")) {
+        const std::string name = s;
+        signal_to_raise = name == "INT" ? SIGINT : name == "TERM" ? SIGTERM : name == "HUP" ? SIGHUP : name == "KILL" ? SIGKILL : 0;
+        if (signal_to_raise != 0) hmira::io::detail::write_hooks.after_first_chunk = raise_test_signal;
+    }
+    if (const char* s = std::getenv("HMIRA_TEST_NAMED_TEMPORARY"); s && std::string(s) == "1") hmira::io::detail::write_hooks.named_temporary_only = true;
 }
 
 void say(const common_options& o, const std::string& line) {

@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include <hmira/io/detail/atomic_write.hpp>
 #include <hmira/io/mesh_io.hpp>
 #include <hmira/meshes/face_vertex_mesh.hpp>
 #include <hmira/meshes/halfedge_mesh.hpp>
@@ -77,6 +78,13 @@ int input_exit_code(const hmira::error& e);
 /// uses it: prints one line naming the first such vertex (file order), sets `code` to
 /// invalid_input and returns false.
 bool refuse_non_finite(const hmira::face_vertex_mesh& mesh, const std::string& path, const std::string& what, int& code);
+
+/// Installs handlers for SIGINT, SIGTERM and SIGHUP that remove the temporary files of writes
+/// in progress (the named ones; unnamed O_TMPFILE ones vanish by themselves) and then end the
+/// process by the same signal, so the caller sees what killed it. Also applies the test hooks
+/// HMIRA_TEST_SIGNAL_DURING_WRITE=INT|TERM|HUP|KILL (raise that signal once the first chunk
+/// of an output is written) and HMIRA_TEST_NAMED_TEMPORARY=1 (no O_TMPFILE).
+void install_signal_cleanup();
 
 /// Prints a line on stdout unless quiet.
 void say(const common_options& o, const std::string& line);

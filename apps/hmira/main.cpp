@@ -27,6 +27,7 @@ const char* exit_codes_text =
 
 int main(int argc, char** argv) {
     using namespace hmira_cli;
+    install_signal_cleanup();
     CLI::App app{"hmira: generic polygon-mesh algorithms on mesh files (OBJ, OFF, PLY, STL)", "hmira"};
     app.require_subcommand(1);
     app.footer(std::string("\n") + exit_codes_text + "\nRun 'hmira <subcommand> --help' for a subcommand's options and an example.");
