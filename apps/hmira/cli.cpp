@@ -110,6 +110,31 @@ CLI::Validator whole_number(std::uint64_t lo, std::uint64_t hi) {
         "INT " + bounds);
 }
 
+CLI::Validator byte_count() {
+    return CLI::Validator(
+        [](std::string& text) -> std::string {
+            const std::string wanted = "expected a size in bytes, optionally with K, M, G or T (KiB, MiB, GiB, TiB), got '" + printable(text.substr(0, 40)) + "'";
+            std::uint64_t n = 0;
+            const char* b = text.data();
+            const char* e = b + text.size();
+            const auto r = std::from_chars(b, e, n);
+            if (r.ec != std::errc() || r.ptr == b) return wanted;
+            std::string unit(r.ptr, e);
+            if (unit.size() == 3 && unit.substr(1) == "iB") unit.resize(1);
+            int shift = 0;
+            if (unit == "K") shift = 10;
+            else if (unit == "M") shift = 20;
+            else if (unit == "G") shift = 30;
+            else if (unit == "T") shift = 40;
+            else if (!unit.empty()) return wanted;
+            if (n == 0) return "expected at least 1 byte, got 0";
+            if (shift > 0 && n > (std::numeric_limits<std::uint64_t>::max() >> shift)) return wanted + " (too large)";
+            text = std::to_string(n << shift);
+            return {};
+        },
+        "BYTES");
+}
+
 bool refuse_non_finite(const hmira::face_vertex_mesh& mesh, const std::string& path, const std::string& what, int& code) {
     for (auto v : mesh.vertices()) {
         const auto p = mesh.position(v);

@@ -46,6 +46,9 @@ struct common_options {
 CLI::Validator finite_number(std::string rule = {}, std::function<bool(double)> holds = {});
 /// The check of an integer option: a whole number in [lo, hi], bounds printed as written.
 CLI::Validator whole_number(std::uint64_t lo, std::uint64_t hi);
+/// The check of a size option: a whole number of bytes, optionally with a binary suffix (K, M,
+/// G, T, or KiB, MiB, GiB, TiB: powers of 1024), at least 1; rewrites the value to bytes.
+CLI::Validator byte_count();
 
 /// `text` safe to print on one line: control characters (a newline in a file name) become
 /// escapes such as \n or \x1b.
@@ -58,6 +61,7 @@ struct command {
     std::string example;  ///< shown at the end of --help
     int order = 100;      ///< position in `hmira --help`
     std::function<std::function<int(const common_options&)>(CLI::App& sub)> setup;
+    bool reads_files = true;  ///< has --max-input-bytes (all but generate)
 };
 
 /// Adds a command to the tool; call from a static initialiser in the command's file.

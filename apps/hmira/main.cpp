@@ -41,6 +41,11 @@ int main(int argc, char** argv) {
         CLI::App* sub = app.add_subcommand(c.name, c.summary);
         sub->add_option("--threads", common.threads, "worker threads (0: all cores)")->check(whole_number(0, 4096));
         sub->add_flag("-q,--quiet", common.quiet, "print nothing but errors");
+        if (c.reads_files)
+            sub->add_option("--max-input-bytes", common.max_input_bytes,
+                            "largest input read from a pipe, device or FIFO, e.g. 512M (regular files: their size)")
+                ->default_str("4G")
+                ->transform(byte_count());
         sub->footer("\nExample:\n  " + c.example + "\n\n" + exit_codes_text);
         auto run = c.setup(*sub);
         sub->callback([&chosen, run] { chosen = run; });

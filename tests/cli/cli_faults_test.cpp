@@ -434,4 +434,56 @@ TEST(cli_faults, a_temporary_that_cannot_be_created_is_reported_with_the_reason)
     EXPECT_GT(reason.size(), 3u) << r.err;
 }
 
+// ---- --max-input-bytes ---------------------------------------------------------------------------
+
+TEST(cli_faults, every_reading_subcommand_takes_max_input_bytes_with_binary_suffixes) {
+    scratch_dir dir;
+    for (const std::string sub : {"info", "validate", "convert", "flip", "delaunay", "mc", "truncate", "bevel", "extrude", "voxelize"}) {
+        const auto r = hmira(dir, sub + " --help");
+        EXPECT_NE(r.out.find("--max-input-bytes"), std::string::npos) << sub;
+        EXPECT_NE(r.out.find("=4G"), std::string::npos) << sub;
+    }
+    EXPECT_EQ(hmira(dir, "generate --help").out.find("--max-input-bytes"), std::string::npos) << "generate reads nothing";
+    hmira_test::write_bytes(dir / "c.off", cube_off);
+    for (const std::string ok : {"1", "512", "1K", "64M", "4G", "1T", "2KiB", "3MiB", "4GiB", "1TiB", "18446744073709551615"})
+        EXPECT_EQ(hmira(dir, "info c.off --max-input-bytes " + ok).code, 0) << ok;
+    for (const std::string bad : {"0", "-1", "nan", "inf", "1.5G", "4X", "G", "1Gi", "16777216T", "18446744073709551616", "''"}) {
+        SCOPED_TRACE(bad);
+        const auto r = hmira(dir, "info c.off --max-input-bytes " + bad);
+        EXPECT_EQ(r.code, 2);
+        EXPECT_TRUE(one_line_error(r, "--max-input-bytes"));
+    }
+}
+
+/// Runs `hmira <args>` with `input` (a FIFO in `dir`) fed `bytes` by a background writer.
+run_result hmira_from_fifo(const scratch_dir& dir, const std::string& fifo, const std::string& bytes, const std::string& args) {
+    hmira_test::write_bytes(dir / "feed", bytes);
+    std::filesystem::remove(dir / fifo);
+    EXPECT_EQ(::mkfifo((dir / fifo).c_str(), 0600), 0);
+    // The writer may meet a reader that stopped early: its own failure does not matter.
+    const std::string feed = "(cat '" + (dir / "feed").string() + "' > '" + (dir / fifo).string() + "' 2>/dev/null &) ; ";
+    auto r = hmira(dir, args, feed);
+    std::filesystem::remove(dir / fifo);
+    std::filesystem::remove(dir / "feed");
+    return r;
+}
+
+TEST(cli_faults, a_fifo_input_under_the_cap_is_read) {
+    scratch_dir dir;
+    const auto r = hmira_from_fifo(dir, "p.off", cube_off, "info p.off --max-input-bytes 1M");
+    EXPECT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.out.find("vertices:        8"), std::string::npos) << r.out;
+}
+
+// Enable once the readers honour read_options::max_input_bytes (the io-readers work of issue
+// 14): the CLI already passes the option through.
+TEST(cli_faults, DISABLED_a_fifo_input_over_the_cap_is_refused_with_exit_1) {
+    scratch_dir dir;
+    std::string big = cube_off;
+    big += std::string(4096, '\n');  // blank lines after the mesh: the cap, not the parser, must stop it
+    const auto r = hmira_from_fifo(dir, "p.off", big, "info p.off --max-input-bytes 1K");
+    EXPECT_EQ(r.code, 1) << r.err;
+    EXPECT_TRUE(one_line_error(r, "p.off"));
+}
+
 }  // namespace
