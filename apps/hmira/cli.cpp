@@ -4,6 +4,9 @@
 
 #include <unistd.h>
 
+#include <csignal>
+#include <cstring>
+
 #include <cerrno>
 #include <charconv>
 #include <cmath>
@@ -107,6 +110,31 @@ CLI::Validator whole_number(std::uint64_t lo, std::uint64_t hi) {
         "INT " + bounds);
 }
 
+CLI::Validator byte_count() {
+    return CLI::Validator(
+        [](std::string& text) -> std::string {
+            const std::string wanted = "expected a size in bytes, optionally with K, M, G or T (KiB, MiB, GiB, TiB), got '" + printable(text.substr(0, 40)) + "'";
+            std::uint64_t n = 0;
+            const char* b = text.data();
+            const char* e = b + text.size();
+            const auto r = std::from_chars(b, e, n);
+            if (r.ec != std::errc() || r.ptr == b) return wanted;
+            std::string unit(r.ptr, e);
+            if (unit.size() == 3 && unit.substr(1) == "iB") unit.resize(1);
+            int shift = 0;
+            if (unit == "K") shift = 10;
+            else if (unit == "M") shift = 20;
+            else if (unit == "G") shift = 30;
+            else if (unit == "T") shift = 40;
+            else if (!unit.empty()) return wanted;
+            if (n == 0) return "expected at least 1 byte, got 0";
+            if (shift > 0 && n > (std::numeric_limits<std::uint64_t>::max() >> shift)) return wanted + " (too large)";
+            text = std::to_string(n << shift);
+            return {};
+        },
+        "BYTES");
+}
+
 bool refuse_non_finite(const hmira::face_vertex_mesh& mesh, const std::string& path, const std::string& what, int& code) {
     for (auto v : mesh.vertices()) {
         const auto p = mesh.position(v);
@@ -118,6 +146,36 @@ bool refuse_non_finite(const hmira::face_vertex_mesh& mesh, const std::string& p
     }
     code = ok;
     return true;
+}
+
+namespace {
+
+extern "C" void remove_temporaries_and_die(int sig) {
+    hmira::io::detail::unlink_live_temporaries();
+    // SA_RESETHAND restored the default action: the signal, unblocked on return, ends us.
+    ::raise(sig);
+}
+
+int signal_to_raise = 0;
+void raise_test_signal() {
+    if (signal_to_raise != 0) ::raise(std::exchange(signal_to_raise, 0));
+}
+
+}  // namespace
+
+void install_signal_cleanup() {
+    struct sigaction sa {};
+    sa.sa_handler = remove_temporaries_and_die;
+    sigemptyset(&sa.sa_mask);
+    sa.sa_flags = SA_RESETHAND;
+    for (int sig : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&sa.sa_mask, sig);  // one cleanup at a time
+    for (int sig : {SIGINT, SIGTERM, SIGHUP}) ::sigaction(sig, &sa, nullptr);
+    if (const char* s = std::getenv("HMIRA_TEST_SIGNAL_DURING_WRITE")) {
+        const std::string name = s;
+        signal_to_raise = name == "INT" ? SIGINT : name == "TERM" ? SIGTERM : name == "HUP" ? SIGHUP : name == "KILL" ? SIGKILL : 0;
+        if (signal_to_raise != 0) hmira::io::detail::write_hooks.after_first_chunk = raise_test_signal;
+    }
+    if (const char* s = std::getenv("HMIRA_TEST_NAMED_TEMPORARY"); s && std::string(s) == "1") hmira::io::detail::write_hooks.named_temporary_only = true;
 }
 
 void say(const common_options& o, const std::string& line) {

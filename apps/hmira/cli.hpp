@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include <hmira/io/detail/atomic_write.hpp>
 #include <hmira/io/mesh_io.hpp>
 #include <hmira/meshes/face_vertex_mesh.hpp>
 #include <hmira/meshes/halfedge_mesh.hpp>
@@ -45,6 +46,9 @@ struct common_options {
 CLI::Validator finite_number(std::string rule = {}, std::function<bool(double)> holds = {});
 /// The check of an integer option: a whole number in [lo, hi], bounds printed as written.
 CLI::Validator whole_number(std::uint64_t lo, std::uint64_t hi);
+/// The check of a size option: a whole number of bytes, optionally with a binary suffix (K, M,
+/// G, T, or KiB, MiB, GiB, TiB: powers of 1024), at least 1; rewrites the value to bytes.
+CLI::Validator byte_count();
 
 /// `text` safe to print on one line: control characters (a newline in a file name) become
 /// escapes such as \n or \x1b.
@@ -57,6 +61,7 @@ struct command {
     std::string example;  ///< shown at the end of --help
     int order = 100;      ///< position in `hmira --help`
     std::function<std::function<int(const common_options&)>(CLI::App& sub)> setup;
+    bool reads_files = true;  ///< has --max-input-bytes (all but generate)
 };
 
 /// Adds a command to the tool; call from a static initialiser in the command's file.
@@ -77,6 +82,13 @@ int input_exit_code(const hmira::error& e);
 /// uses it: prints one line naming the first such vertex (file order), sets `code` to
 /// invalid_input and returns false.
 bool refuse_non_finite(const hmira::face_vertex_mesh& mesh, const std::string& path, const std::string& what, int& code);
+
+/// Installs handlers for SIGINT, SIGTERM and SIGHUP that remove the temporary files of writes
+/// in progress (the named ones; unnamed O_TMPFILE ones vanish by themselves) and then end the
+/// process by the same signal, so the caller sees what killed it. Also applies the test hooks
+/// HMIRA_TEST_SIGNAL_DURING_WRITE=INT|TERM|HUP|KILL (raise that signal once the first chunk
+/// of an output is written) and HMIRA_TEST_NAMED_TEMPORARY=1 (no O_TMPFILE).
+void install_signal_cleanup();
 
 /// Prints a line on stdout unless quiet.
 void say(const common_options& o, const std::string& line);

@@ -24,12 +24,12 @@ hmira::result<std::vector<hmira::vec3<double>>> read_points_text(const std::stri
     return hmira::io::read_points_text(path, {.csv = csv});
 }
 
-hmira::result<std::vector<hmira::vec3<double>>> read_points(const std::string& path) {
+hmira::result<std::vector<hmira::vec3<double>>> read_points(const std::string& path, const common_options& o) {
     std::string ext = std::filesystem::path(path).extension().string();
     for (auto& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     if (ext == ".xyz" || ext == ".txt" || ext == ".csv") return read_points_text(path, ext == ".csv");
     if (ext == ".ply") {
-        auto soup = hmira::io::read_soup(path);
+        auto soup = hmira::io::read_soup(path, {.max_input_bytes = o.max_input_bytes});
         if (!soup) return soup.error();
         std::vector<hmira::vec3<double>> pts;
         pts.reserve(soup->points.size());
@@ -42,7 +42,7 @@ hmira::result<std::vector<hmira::vec3<double>>> read_points(const std::string& p
 }
 
 int run_delaunay(const delaunay_args& a, const common_options& o) {
-    auto pts = read_points(a.input);
+    auto pts = read_points(a.input, o);
     if (!pts) return report(input_exit_code(pts.error()), pts.error().message);
     hmira::face_vertex_mesh m;
     auto r = hmira::delaunay_triangulation(m, *pts);

@@ -38,6 +38,7 @@ const bool registered = register_command({
         sub.add_option("output", a->output, "mesh file to write (.obj .off .ply .stl)")->required();
         sub.add_option("--scale", a->scale, "multiply every coordinate by this")->capture_default_str()->check(finite_number("> 0", [](double x) { return x > 0; }));
         return [a](const common_options& o) { return run_generate(*a, o); };
-    }});
+    },
+    /* reads_files = */ false});
 
 }  // namespace

@@ -80,16 +80,15 @@ int run_voxelize(const voxelize_args& a, const common_options& o) {
         if (ext == ".binvox") {
             if (auto w = hmira::io::write_binvox(voxels->voxels, a.output); !w) return report(exit_code_for(w.error()), w.error().message);
         } else {
-            // The sidecar first: if it cannot be written, no raw file appears either.
+            // The sidecar is written in full first but committed last: a failure anywhere leaves
+            // both old files as they were, and no sidecar ever describes a .raw not yet there.
             const std::string sidecar = a.output + ".txt";
             const auto text = raw_sidecar(*grid, std::filesystem::path(a.output).filename().string(), voxels->voxels.count());
-            auto s = hmira::io::detail::write_file_atomically(sidecar, [&](std::ostream& out) { return bool(out << text); });
-            if (!s) return report(exit_code_for(s.error()), s.error().message);
-            if (auto w = hmira::io::write_raw(voxels->voxels, a.output); !w) {
-                std::error_code ec;
-                std::filesystem::remove(sidecar, ec);
-                return report(exit_code_for(w.error()), w.error().message);
-            }
+            auto staged = hmira::io::detail::staged_file::write(sidecar, [&](std::ostream& out) { return bool(out << text); });
+            if (!staged) return report(exit_code_for(staged.error()), staged.error().message);
+            if (auto w = hmira::io::write_raw(voxels->voxels, a.output); !w) return report(exit_code_for(w.error()), w.error().message);
+            if (auto c = staged->commit(); !c)
+                return report(exit_code_for(c.error()), c.error().message + " (" + a.output + " was replaced; run again to update its sidecar)");
         }
     }
     const auto& g = *grid;

@@ -27,6 +27,7 @@ const char* exit_codes_text =
 
 int main(int argc, char** argv) {
     using namespace hmira_cli;
+    install_signal_cleanup();
     CLI::App app{"hmira: generic polygon-mesh algorithms on mesh files (OBJ, OFF, PLY, STL)", "hmira"};
     app.require_subcommand(1);
     app.footer(std::string("\n") + exit_codes_text + "\nRun 'hmira <subcommand> --help' for a subcommand's options and an example.");
@@ -40,6 +41,11 @@ int main(int argc, char** argv) {
         CLI::App* sub = app.add_subcommand(c.name, c.summary);
         sub->add_option("--threads", common.threads, "worker threads (0: all cores)")->check(whole_number(0, 4096));
         sub->add_flag("-q,--quiet", common.quiet, "print nothing but errors");
+        if (c.reads_files)
+            sub->add_option("--max-input-bytes", common.max_input_bytes,
+                            "largest input read from a pipe, device or FIFO, e.g. 512M (regular files: their size)")
+                ->default_str("4G")
+                ->transform(byte_count());
         sub->footer("\nExample:\n  " + c.example + "\n\n" + exit_codes_text);
         auto run = c.setup(*sub);
         sub->callback([&chosen, run] { chosen = run; });
