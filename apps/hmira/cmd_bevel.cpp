@@ -135,7 +135,7 @@ int run_bevel(const bevel_args& a, const common_options& o) {
             if (a.vertices_all) {
                 for (auto v : mesh.vertices()) chosen.push_back(v);
             } else {
-                for (auto i : a.vertices) chosen.emplace_back(i);
+                chosen = file_vertices(mesh, a.vertices);
             }
             auto r = hmira::bevel_vertices(mesh, chosen, options);
             if (!r) {
