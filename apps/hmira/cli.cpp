@@ -2,6 +2,8 @@
 // Shared plumbing of the subcommands (see cli.hpp).
 #include "cli.hpp"
 
+#include <hmira/algorithms/repair/repair_polygon_soup.hpp>
+
 #include <unistd.h>
 
 #include <csignal>
@@ -201,10 +203,11 @@ int save(const hmira::face_vertex_mesh& mesh, const std::string& path, const hmi
     return ok;
 }
 
-std::optional<hmira::halfedge_mesh> to_halfedge(const hmira::face_vertex_mesh& mesh, const std::string& path, int& code) {
+std::optional<hmira::halfedge_mesh> to_halfedge(const hmira::face_vertex_mesh& mesh, const std::string& path, int& code, std::string* repairs) {
     // Dense file order in, dense file order out: from_polygons numbers vertices and faces as given.
     std::vector<hmira::vec3<double>> points;
-    std::vector<std::uint32_t> offsets{0}, corners;
+    std::vector<std::uint64_t> offsets{0};
+    std::vector<std::uint32_t> corners;
     std::vector<std::uint32_t> dense(mesh.vertex_index_bound(), 0);
     points.reserve(mesh.vertex_count());
     for (auto v : mesh.vertices()) {
@@ -213,18 +216,44 @@ std::optional<hmira::halfedge_mesh> to_halfedge(const hmira::face_vertex_mesh& m
     }
     for (auto f : mesh.faces()) {
         for (auto v : mesh.face_vertices(f)) corners.push_back(dense[v.index]);
-        offsets.push_back(static_cast<std::uint32_t>(corners.size()));
+        offsets.push_back(corners.size());
     }
-    auto built = hmira::halfedge_mesh::from_polygons(points, offsets, corners);
+    // Repair what a halfedge mesh cannot hold; the file's vertices keep their numbers.
+    auto repaired = hmira::repair_polygon_soup(points.size(), offsets, corners);
+    // The face-vertex mesh refused degenerate faces when the file was read, so no face is dropped
+    // here and face i stays the file's face i (what --face N names).
+    if (!repaired || repaired->face_count() != mesh.face_count() || repaired->corners.size() > std::size_t{0xffffffffu}) {
+        code = report(invalid_input, path + ": cannot edit this mesh: " + (repaired ? "a degenerate face or too many corners" : repaired.error().message));
+        return std::nullopt;
+    }
+    for (auto v : repaired->copied_from) points.push_back(points[v]);
+    const std::vector<std::uint32_t> offsets32(repaired->face_offsets.begin(), repaired->face_offsets.end());
+    auto built = hmira::halfedge_mesh::from_polygons(points, offsets32, repaired->corners);
     if (!built) {
         std::string why = built.error().message;
         if (why.rfind("from_polygons: ", 0) == 0) why = why.substr(15);
-        code = report(invalid_input, path + ": cannot edit this mesh: " + why +
-                                         " (editing needs a manifold, consistently oriented mesh; 'hmira validate' lists the problems)");
+        code = report(invalid_input, path + ": cannot edit this mesh: " + why);
         return std::nullopt;
     }
+    if (!repaired->copied_from.empty()) {
+        auto source = built->add_vertex_property<std::uint32_t>("v:file_vertex");
+        for (auto v : built->vertices()) source[v] = static_cast<std::uint32_t>(repaired->source_vertex(v.index));
+    }
+    if (repairs) *repairs = repaired->report.clean() ? "" : repaired->report.summary();
     code = ok;
     return std::move(*built);
+}
+
+std::vector<hmira::vertex_handle> file_vertices(const hmira::halfedge_mesh& mesh, std::span<const std::size_t> indices) {
+    std::vector<hmira::vertex_handle> out;
+    for (auto i : indices) out.emplace_back(i);
+    if (auto source = mesh.get_vertex_property<std::uint32_t>("v:file_vertex")) {
+        std::vector<char> wanted(mesh.vertex_index_bound(), 0);
+        for (auto i : indices) wanted[i] = 1;
+        for (auto v : mesh.vertices())  // copies: a different index, standing for a wanted one
+            if (const auto from = (*source)[v]; from != v.index && from < wanted.size() && wanted[from]) out.push_back(v);
+    }
+    return out;
 }
 
 hmira::face_vertex_mesh to_face_vertex(const hmira::halfedge_mesh& mesh, std::span<const std::pair<hmira::vertex_handle, hmira::vertex_handle>> exchange) {
@@ -263,8 +292,10 @@ int run_edit(const loaded_mesh& loaded, const std::string& input, const std::str
     {
         auto bar = stage_bar(bar_label, o, loaded.mesh.face_count());
         bar.update(0, 3);
-        auto mesh = to_halfedge(loaded.mesh, input, code);
+        std::string repairs;
+        auto mesh = to_halfedge(loaded.mesh, input, code, &repairs);
         if (!mesh) return code;
+        if (!repairs.empty()) say(o, input + ": repaired for editing: " + repairs);
         before = counts_of(*mesh);
         bar.update(1, 3);
         auto outcome = edit(*mesh, code);

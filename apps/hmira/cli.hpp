@@ -110,7 +110,15 @@ int save(const hmira::face_vertex_mesh& mesh, const std::string& path, const hmi
 /// indices given on the command line name the file's elements. A mesh the halfedge mesh cannot
 /// hold (non-manifold edge or vertex, inconsistent orientation, degenerate face) prints a
 /// one-line error naming the element and sets `code` to invalid_input.
-std::optional<hmira::halfedge_mesh> to_halfedge(const hmira::face_vertex_mesh& mesh, const std::string& path, int& code);
+/// A file the halfedge mesh cannot hold as it is is repaired first (hmira::repair_polygon_soup)
+/// and `repairs`, if given, gets the one-line summary ("" when nothing was repaired). Copies of
+/// split vertices come after the file's vertices; file_vertices() translates vertex indices
+/// given on the command line.
+std::optional<hmira::halfedge_mesh> to_halfedge(const hmira::face_vertex_mesh& mesh, const std::string& path, int& code,
+                                                std::string* repairs = nullptr);
+/// The vertices of a mesh from to_halfedge that stand for the file's vertices `indices`: each
+/// one and every copy a repair made of it.
+std::vector<hmira::vertex_handle> file_vertices(const hmira::halfedge_mesh& mesh, std::span<const std::size_t> indices);
 
 /// The live vertices and faces of `mesh`, renumbered densely in index order: vertices that were
 /// in the input keep their relative order and come first, new ones follow. Each pair in

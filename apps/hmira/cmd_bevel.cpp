@@ -135,7 +135,7 @@ int run_bevel(const bevel_args& a, const common_options& o) {
             if (a.vertices_all) {
                 for (auto v : mesh.vertices()) chosen.push_back(v);
             } else {
-                for (auto i : a.vertices) chosen.emplace_back(i);
+                chosen = file_vertices(mesh, a.vertices);
             }
             // Vertex-only bevel runs truncate underneath: say what the user asked for, and why.
             const std::string mode = a.vertices_all ? "bevel --vertices-all" : "bevel --vertex";

@@ -26,7 +26,7 @@ int run_truncate(const truncate_args& a, const common_options& o) {
     return run_edit(*loaded, a.input, a.output, "truncating " + a.input, o, [&](hmira::halfedge_mesh& mesh, int& c) -> std::optional<edit_outcome> {
         const hmira::truncate_options options{.fraction = a.fraction, .distance = a.distance};
         std::vector<hmira::vertex_handle> chosen;
-        for (auto i : a.vertices) chosen.emplace_back(i);
+        chosen = file_vertices(mesh, a.vertices);
         auto r = a.all ? hmira::truncate_all(mesh, options) : hmira::truncate(mesh, chosen, options);
         if (!r) {
             c = report(input_exit_code(r.error()), a.input + ": " + r.error().message);  // the options were checked up front

@@ -72,30 +72,30 @@ struct soup_repair_report {
                detached_faces.count == 0 && flipped_faces.count == 0 && orientation_cuts == 0 && added_vertices == 0;
     }
 
-    /// One line listing what was done ("dropped 2 degenerate faces (3, 17); flipped 5 faces
-    /// (0, 1, ...); ..."), or "no repair needed".
+    /// One line listing what was done, e.g. "dropped 2 degenerate faces (3, 17); flipped 5
+    /// faces (0, 1, 4, 9, 12); split 1 vertex (0) into 1 extra copy", or "no repair needed".
     std::string summary() const {
         std::string s;
+        auto plural = [](std::size_t n, const char* one, const char* many) { return std::to_string(n) + " " + (n == 1 ? one : many); };
         auto list = [](const repair_count& c) {
             std::string t = " (";
             for (std::size_t i = 0; i < c.first.size(); ++i) t += (i ? ", " : "") + std::to_string(c.first[i]);
             return t + (c.first.size() < c.count ? ", ...)" : ")");
         };
-        auto add = [&](const repair_count& c, const std::string& what) {
-            if (c.count == 0) return;
-            s += (s.empty() ? "" : "; ") + what + " " + std::to_string(c.count) + list(c);
-        };
-        add(degenerate_faces, "dropped degenerate faces");
-        add(merged_corners, "merged repeated corners in faces");
-        if (nonmanifold_edges)
-            s += (s.empty() ? "" : "; ") + std::to_string(nonmanifold_edges) + " non-manifold edges";
-        add(nonmanifold_edge_faces, dropped_faces > degenerate_faces.count ? "dropped their extra faces" : "cut their extra faces free");
-        add(detached_faces, "detached faces");
-        add(flipped_faces, "flipped faces");
-        if (orientation_cuts) s += (s.empty() ? "" : "; ") + std::to_string(orientation_cuts) + " edges opened where no orientation agrees";
+        auto add = [&](const std::string& part) { s += (s.empty() ? "" : "; ") + part; };
+        if (degenerate_faces.count) add("dropped " + plural(degenerate_faces.count, "degenerate face", "degenerate faces") + list(degenerate_faces));
+        if (merged_corners.count) add("merged repeated corners in " + plural(merged_corners.count, "face", "faces") + list(merged_corners));
+        if (nonmanifold_edge_faces.count) {
+            const bool dropped = dropped_faces > degenerate_faces.count;
+            add(plural(nonmanifold_edges, "non-manifold edge", "non-manifold edges") + ": " + (dropped ? "dropped " : "cut free ") +
+                plural(nonmanifold_edge_faces.count, "extra face", "extra faces") + list(nonmanifold_edge_faces));
+        }
+        if (detached_faces.count) add("detached " + plural(detached_faces.count, "face", "faces") + list(detached_faces));
+        if (flipped_faces.count) add("flipped " + plural(flipped_faces.count, "face", "faces") + list(flipped_faces));
+        if (orientation_cuts) add("opened " + plural(orientation_cuts, "edge", "edges") + " where no orientation agrees");
         if (added_vertices)
-            s += (s.empty() ? "" : "; ") + std::string("split vertices ") + std::to_string(split_vertices.count) + list(split_vertices) +
-                 " into " + std::to_string(added_vertices) + " extra copies";
+            add("split " + plural(split_vertices.count, "vertex", "vertices") + list(split_vertices) + " into " +
+                plural(added_vertices, "extra copy", "extra copies"));
         return s.empty() ? "no repair needed" : s;
     }
 };
