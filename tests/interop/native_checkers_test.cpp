@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <random>
 #include <sstream>
 #include <string>
@@ -225,11 +226,26 @@ TYPED_TEST(native_checkers, agree_with_validate_after_random_edit_sequences) {
             else s.triangle_step();
         }
         EXPECT_GT(s.applied, 20u) << "seed " << seed << ": too few steps applied to mean anything";
+        std::printf("seed %llu: %zu steps applied, %zu refused; V %zu, F %zu\n", static_cast<unsigned long long>(seed), s.applied,
+                    s.refused, static_cast<std::size_t>(T::vertex_count(s.mesh)), static_cast<std::size_t>(T::face_count(s.mesh)));
         // And once more with the deleted elements gone.
         compact(s.mesh);
         EXPECT_TRUE(both_agree_valid(s.mesh)) << "after garbage collection, seed " << seed;
         EXPECT_GT(T::face_count(s.mesh), 0u);
     }
+}
+
+TYPED_TEST(native_checkers, agree_that_a_broken_face_loop_is_broken) {
+    // The checkers are not vacuous: a face loop with one halfedge claiming no face is caught
+    // by both.
+    using T = hmira::default_traits<TypeParam>;
+    auto m = mesh_from<TypeParam>(grid(3, 3, true));
+    ASSERT_TRUE(both_agree_valid(m));
+    auto faces = T::faces(m);
+    const auto h = T::face_halfedge(m, *faces.begin());
+    T::set_face(m, T::next(m, h), T::null_face());
+    EXPECT_FALSE(hmira::validate(m, {.check_geometry = false}).empty());
+    EXPECT_FALSE(native_check(m));
 }
 
 }  // namespace
