@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -18,16 +19,20 @@
 #include <tuple>
 #include <vector>
 
+#include <unistd.h>
+
 #include <hmira/adapters/adapted_mesh.hpp>
 #include <hmira/algorithms/conversion/delaunay_triangulation.hpp>
 #include <hmira/algorithms/conversion/marching_cubes.hpp>
 #include <hmira/algorithms/conversion/voxelize.hpp>
+#include <hmira/algorithms/editing/editing.hpp>
 #include <hmira/algorithms/euler/euler.hpp>
 #include <hmira/algorithms/generators/grid.hpp>
 #include <hmira/algorithms/generators/platonic_solids.hpp>
 #include <hmira/algorithms/generators/torus.hpp>
 #include <hmira/algorithms/geometry/vertex_normals.hpp>
 #include <hmira/algorithms/orientation/flip_normals.hpp>
+#include <hmira/algorithms/primitives/primitives.hpp>
 #include <hmira/algorithms/topology/mesh_topology.hpp>
 #include <hmira/algorithms/validation/validate.hpp>
 #include <hmira/grids/dense_grid.hpp>
@@ -125,6 +130,23 @@ HMIRA_ROW(row_euler, "Euler operators (make/kill vertex, edge-vertex, edge-face)
           (M & m, typename T::halfedge_handle h), hmira::make_edge_face<M, T>(m, h, h));
 HMIRA_ROW(row_euler_ring, "Euler ring operators (make/kill face-ring, edge-ring)", "algorithms/euler/euler.hpp", hmira::euler_ring_mutable_mesh,
           (M & m, typename T::halfedge_handle h), hmira::make_face_kill_ring<M, T>(m, h));
+HMIRA_ROW(row_split_vertex, "split_vertex, join_vertices (general vertex split and its inverse)", "algorithms/euler/split_vertex.hpp",
+          hmira::euler_mutable_mesh, (M & m, typename T::halfedge_handle h, const hmira::vec3<typename T::scalar>& p),
+          hmira::split_vertex<M, T>(m, h, h, p));
+HMIRA_ROW(row_add_vertex_face, "add_vertex, add_face (primitives)", "algorithms/primitives/primitives.hpp", hmira::mesh_builder,
+          (M & m, const hmira::vec3<typename T::scalar>& p), hmira::add_vertex<M, T>(m, p));
+HMIRA_ROW(row_edge_primitives, "add_edge, remove_edge (primitives)", "algorithms/primitives/primitives.hpp", hmira::halfedge_mutable_mesh,
+          (M & m, typename T::halfedge_handle h), hmira::remove_edge<M, T>(m, h));
+HMIRA_ROW(row_remove_face, "remove_face (primitive)", "algorithms/primitives/primitives.hpp", hmira::face_erasable_mesh,
+          (M & m, typename T::face_handle f), hmira::remove_face<M, T>(m, f));
+HMIRA_ROW(row_remove_vertex, "remove_vertex (primitive)", "algorithms/primitives/primitives.hpp", hmira::vertex_erasable_mesh,
+          (M & m, typename T::vertex_handle v), hmira::remove_vertex<M, T>(m, v));
+HMIRA_ROW(row_truncate, "truncate, truncate_all", "algorithms/editing/truncate.hpp", hmira::truncatable_mesh, (M & m, typename T::vertex_handle v),
+          hmira::truncate<M, T>(m, v));
+HMIRA_ROW(row_bevel, "bevel, bevel_vertices", "algorithms/editing/bevel.hpp", hmira::bevelable_mesh, (M & m, typename T::edge_handle e),
+          hmira::bevel<M, T>(m, e));
+HMIRA_ROW(row_extrude, "extrude", "algorithms/editing/extrude.hpp", hmira::extrudable_mesh, (M & m, typename T::face_handle f),
+          hmira::extrude<M, T>(m, f));
 HMIRA_ROW(row_marching_cubes, "marching_cubes (into the mesh)", "algorithms/conversion/marching_cubes.hpp", hmira::mesh_builder,
           (M & m, const hmira::dense_grid<float>& g), hmira::marching_cubes<M, T>(m, g));
 HMIRA_ROW(row_voxelize, "voxelize", "algorithms/conversion/voxelize.hpp", hmira::voxelize_mesh, (const M& m, const hmira::grid_geometry& g),
@@ -143,7 +165,8 @@ HMIRA_ROW(row_adapt_indexed, "adapt, adapt_indexed (adjacency from an index)", "
 template <class... Rs>
 struct row_list {};
 using rows = row_list<row_triangle_solids, row_polygon_solids, row_torus, row_grid, row_validate, row_topology, row_flip,
-                      row_vertex_normals, row_euler, row_euler_ring, row_marching_cubes, row_voxelize, row_delaunay, row_read,
+                      row_vertex_normals, row_euler, row_euler_ring, row_split_vertex, row_add_vertex_face, row_edge_primitives,
+                      row_remove_face, row_remove_vertex, row_truncate, row_bevel, row_extrude, row_marching_cubes, row_voxelize, row_delaunay, row_read,
                       row_write, row_adapt_brute, row_adapt_indexed>;
 
 // ---- the capabilities of concepts.hpp: one row each -------------------------------------------
@@ -372,15 +395,199 @@ void run_claims() {
     }
 }
 
+template <class M, class T = hmira::default_traits<M>>
+M icosahedron() {
+    M m;
+    EXPECT_TRUE(hmira::generate_icosahedron(m));
+    return m;
+}
+
+template <class M, class T = hmira::default_traits<M>>
+::testing::AssertionResult valid_closed(const M& m) {
+    const auto problems = hmira::validate(m);
+    if (!problems.empty()) return ::testing::AssertionFailure() << column<M>::title << ": " << problems.front().message;
+    const auto chi = hmira::mesh_topology(m).euler_characteristic;
+    if (chi != 2) return ::testing::AssertionFailure() << column<M>::title << ": Euler characteristic " << chi << ", expected 2";
+    return ::testing::AssertionSuccess();
+}
+
+// The editing, Euler and primitive rows, run on an icosahedron (V 12, E 30, F 20) for every
+// model that claims them; every mutation is validated.
+template <class M>
+void run_editing_claims() {
+    using T = hmira::default_traits<M>;
+    const auto first_vertex = [](const M& m) {
+        auto all = T::vertices(m);
+        return *all.begin();
+    };
+    const auto first_face = [](const M& m) {
+        auto all = T::faces(m);
+        return *all.begin();
+    };
+    if constexpr (row_split_vertex::supported<M>) {
+        auto m = icosahedron<M>();
+        auto split = hmira::split_vertex(m, T::face_halfedge(m, first_face(m)), T::face_halfedge(m, first_face(m)), {0.1, 0.1, 0.1});
+        ASSERT_TRUE(split) << column<M>::title << ": " << split.error().message;
+        EXPECT_EQ(T::vertex_count(m), 13u) << column<M>::title;
+        auto join = hmira::join_vertices(m, split->halfedge);
+        ASSERT_TRUE(join) << column<M>::title << ": " << join.error().message;
+        EXPECT_EQ(T::vertex_count(m), 12u) << column<M>::title;
+        EXPECT_TRUE(valid_closed(m));
+    }
+    if constexpr (row_add_vertex_face::supported<M>) {
+        auto m = icosahedron<M>();
+        hmira::add_vertex(m, {5, 5, 5});
+        EXPECT_EQ(T::vertex_count(m), 13u) << column<M>::title;
+    }
+    if constexpr (row_remove_vertex::supported<M>) {
+        // Five faces and the vertex; on a model with edges, its five spokes too.
+        auto m = icosahedron<M>();
+        auto r = hmira::remove_vertex(m, first_vertex(m));
+        ASSERT_TRUE(r) << column<M>::title << ": " << r.error().message;
+        EXPECT_EQ(r->faces, 5u) << column<M>::title;
+        EXPECT_EQ(r->edges, hmira::halfedge_mutable_mesh<M> ? 5u : 0u) << column<M>::title;
+        EXPECT_EQ(r->vertices, 1u) << column<M>::title;
+        EXPECT_EQ(T::face_count(m), 15u) << column<M>::title;
+        EXPECT_TRUE(hmira::validate(m).empty()) << column<M>::title;
+    }
+    if constexpr (row_remove_face::supported<M> && row_add_vertex_face::supported<M>) {
+        auto m = icosahedron<M>();
+        const auto f = first_face(m);
+        std::vector<typename T::vertex_handle> corners;
+        for (auto v : T::face_vertices(m, f)) corners.push_back(v);
+        auto r = hmira::remove_face(m, f);
+        ASSERT_TRUE(r) << column<M>::title << ": " << r.error().message;
+        EXPECT_EQ(T::face_count(m), 19u) << column<M>::title;
+        EXPECT_TRUE(hmira::validate(m).empty()) << column<M>::title;
+        ASSERT_TRUE(hmira::add_face(m, std::span<const typename T::vertex_handle>(corners))) << column<M>::title;
+        EXPECT_TRUE(valid_closed(m));
+    }
+    if constexpr (row_edge_primitives::supported<M>) {
+        auto m = icosahedron<M>();
+        auto r = hmira::remove_edge(m, T::face_halfedge(m, first_face(m)));
+        ASSERT_TRUE(r) << column<M>::title << ": " << r.error().message;
+        EXPECT_EQ(T::face_count(m), 18u) << column<M>::title;
+        EXPECT_TRUE(hmira::validate(m).empty()) << column<M>::title;
+        // Every vertex of a closed mesh is interior: a wire edge there is refused.
+        auto closed = icosahedron<M>();
+        const auto h = T::face_halfedge(closed, first_face(closed));
+        EXPECT_FALSE(hmira::add_edge(closed, T::target(closed, h), T::target(closed, T::next(closed, T::next(closed, h)))));
+    }
+    if constexpr (row_truncate::supported<M>) {
+        auto m = icosahedron<M>();
+        auto r = hmira::truncate(m, first_vertex(m));
+        ASSERT_TRUE(r) << column<M>::title << ": " << r.error().message;
+        EXPECT_EQ(T::vertex_count(m), 16u) << column<M>::title;  // one corner becomes five
+        EXPECT_EQ(T::face_count(m), 21u) << column<M>::title;
+        EXPECT_TRUE(valid_closed(m));
+    }
+    if constexpr (row_bevel::supported<M>) {
+        auto m = icosahedron<M>();
+        auto r = hmira::bevel(m, T::edge(m, T::face_halfedge(m, first_face(m))));
+        ASSERT_TRUE(r) << column<M>::title << ": " << r.error().message;
+        EXPECT_EQ(r->strip_faces.size(), 1u) << column<M>::title;
+        EXPECT_GT(T::face_count(m), 20u) << column<M>::title;
+        EXPECT_TRUE(valid_closed(m));
+    }
+    if constexpr (row_extrude::supported<M>) {
+        auto m = icosahedron<M>();
+        auto r = hmira::extrude(m, first_face(m));
+        ASSERT_TRUE(r) << column<M>::title << ": " << r.error().message;
+        EXPECT_EQ(r->side_faces.size(), 3u) << column<M>::title;
+        EXPECT_EQ(T::vertex_count(m), 15u) << column<M>::title;
+        EXPECT_EQ(T::face_count(m), 23u) << column<M>::title;
+        EXPECT_TRUE(valid_closed(m));
+    }
+}
+
+// Each model's voxelization of the icosahedron must agree with face_vertex_mesh's of the same
+// scalar type (float models round the generator's positions, which moves voxels on the edge).
+template <class S>
+std::size_t reference_voxels() {
+    auto m = icosahedron<hmira::basic_face_vertex_mesh<S>>();
+    auto g = hmira::voxel_grid_around(m, 8);
+    auto v = hmira::voxelize(m, *g);
+    return v ? v->voxels.count() : 0;
+}
+
+// The conversion and I/O rows, run on small inputs for every model that claims them (so on
+// OpenMesh and CGAL too, not only compiled for them).
+template <class M>
+void run_conversion_claims(std::size_t column_number) {
+    using T = hmira::default_traits<M>;
+    const std::string title = column<M>::title;
+    if constexpr (row_write::supported<M> && row_read::supported<M>) {
+        const auto mesh = icosahedron<M>();
+        const auto dir = std::filesystem::temp_directory_path();
+        for (const char* ext : {".obj", ".off"}) {
+            const auto path = dir / ("hmira_feature_table_" + std::to_string(::getpid()) + "_" + std::to_string(column_number) + ext);
+            const bool obj = std::string(ext) == ".obj";
+            auto w = obj ? hmira::io::write_obj(mesh, path) : hmira::io::write_off(mesh, path);
+            ASSERT_TRUE(w) << title << ": " << w.error().message;
+            M back;
+            auto r = obj ? hmira::io::read_obj(back, path) : hmira::io::read_off(back, path);
+            std::filesystem::remove(path);
+            ASSERT_TRUE(r) << title << ": " << r.error().message;
+            EXPECT_EQ(T::vertex_count(back), 12u) << title << ext;
+            EXPECT_EQ(T::face_count(back), 20u) << title << ext;
+            EXPECT_TRUE(valid_closed(back)) << ext;
+        }
+    }
+    if constexpr (row_marching_cubes::supported<M>) {
+        // A sphere of radius 1.8 sampled on 7^3 points: one closed surface.
+        hmira::dense_grid<float> field(hmira::grid_geometry{.dims = {7, 7, 7}, .origin = {-3, -3, -3}, .spacing = {1, 1, 1}});
+        for (std::size_t k = 0; k < 7; ++k)
+            for (std::size_t j = 0; j < 7; ++j)
+                for (std::size_t i = 0; i < 7; ++i) {
+                    const double x = double(i) - 3, y = double(j) - 3, z = double(k) - 3;
+                    field.set(i, j, k, float(std::sqrt(x * x + y * y + z * z) - 1.8));
+                }
+        M m;
+        auto r = hmira::marching_cubes(m, field);
+        ASSERT_TRUE(r) << title << ": " << r.error().message;
+        EXPECT_GT(r->faces.size(), 20u) << title;
+        EXPECT_EQ(T::face_count(m), r->faces.size()) << title;
+        EXPECT_TRUE(valid_closed(m));
+    }
+    if constexpr (row_voxelize::supported<M>) {
+        const auto m = icosahedron<M>();
+        auto g = hmira::voxel_grid_around(m, 8);
+        ASSERT_TRUE(g) << title;
+        auto v = hmira::voxelize(m, *g);
+        ASSERT_TRUE(v) << title << ": " << v.error().message;
+        EXPECT_TRUE(v->filled) << title;
+        EXPECT_EQ(v->triangles, 20u) << title;
+        EXPECT_EQ(v->voxels.count(), reference_voxels<typename T::scalar>()) << title;
+        EXPECT_GT(v->voxels.count(), 0u) << title;
+    }
+    if constexpr (row_delaunay::supported<M>) {
+        // Four cocircular corners and a point inside: the four triangles fanning from it.
+        const points2 points{{0, 0}, {2, 0}, {2, 2}, {0, 2}, {1, 0.8}};
+        M m;
+        auto r = hmira::delaunay_triangulation(m, points);
+        ASSERT_TRUE(r) << title << ": " << r.error().message;
+        EXPECT_EQ(T::vertex_count(m), 5u) << title;
+        EXPECT_EQ(T::face_count(m), 4u) << title;
+        EXPECT_EQ(r->hull.size(), 4u) << title;
+        EXPECT_TRUE(hmira::validate(m).empty()) << title;
+    }
+}
+
 template <class... Ms>
 void run_all(model_list<Ms...>) {
+    std::size_t n = 0;
     auto one = [&]<class M>() {
-        if constexpr (std::default_initializable<M> && hmira::mesh_builder<M>) run_claims<M>();
+        ++n;
+        if constexpr (std::default_initializable<M> && hmira::mesh_builder<M>) {
+            run_claims<M>();
+            run_editing_claims<M>();
+            run_conversion_claims<M>(n);
+        }
     };
     (one.template operator()<Ms>(), ...);
 }
 
-TEST(feature_table, the_claims_hold_when_run_on_an_icosahedron) { run_all(models{}); }
+TEST(feature_table, the_claims_hold_when_run_on_small_meshes) { run_all(models{}); }
 
 // Capability rows must name exactly the concepts of concepts.hpp, so the table grows with it.
 TEST(feature_table, capability_rows_are_exactly_the_concepts_of_concepts_hpp) {
@@ -415,13 +622,25 @@ TEST(feature_table, the_committed_table_is_the_one_the_compiler_computed) {
             }
         }
     }
-    // A column of the committed table that this build cannot compute (OpenMesh or CGAL absent)
-    // is not checked here; the full CI configuration checks it.
-    for (const auto& [section, t] : committed)
-        for (const auto& [row, cells] : t)
-            for (const auto& [col, cell] : cells)
-                if (!now.count(section) || !now.at(section).count(row) || !now.at(section).at(row).count(col))
-                    not_built.push_back(col);
+    // The other direction: the committed table has no section or row this test does not
+    // compute, and no column but the optional models'. A column this build cannot compute
+    // (OpenMesh or CGAL absent) is not checked here; the full CI configuration checks it.
+    const std::set<std::string> optional_columns{"OpenMesh PolyMesh", "OpenMesh TriMesh", "CGAL Surface_mesh"};
+    for (const auto& [section, t] : committed) {
+        EXPECT_TRUE(now.count(section)) << "the committed table has a section '" << section << "' that the test does not compute";
+        if (!now.count(section)) continue;
+        for (const auto& [row, cells] : t) {
+            EXPECT_TRUE(now.at(section).count(row)) << section << ": the committed table has a row '" << row << "' that the test does not know";
+            if (!now.at(section).count(row)) continue;
+            for (const auto& [col, cell] : cells) {
+                EXPECT_TRUE(cell == "yes" || cell == "no" || col == "needs" || col == "header")
+                    << section << " / " << row << " / " << col << ": '" << cell << "' is neither yes nor no";
+                if (now.at(section).at(row).count(col)) continue;
+                EXPECT_TRUE(optional_columns.count(col)) << "the committed table has a column '" << col << "' that the test does not know";
+                not_built.push_back(col);
+            }
+        }
+    }
     if (!not_built.empty()) std::printf("note: %zu committed cells not computable in this build (optional models absent)\n", not_built.size());
 }
 
