@@ -1,0 +1,346 @@
+// hmira/algorithms/holes/fill_hole.hpp
+// Hole filling: a boundary loop closed by a triangle patch of minimal dihedral bend, then
+// minimal area (Liepa 2003), or, for long loops, by a triangulation of its projection.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "../../concepts.hpp"
+#include "../../core/result.hpp"
+#include "../../core/vec3.hpp"
+#include "../triangle/triangle_common.hpp"
+#include "../triangulation/triangulate_polygon.hpp"
+
+namespace hmira {
+
+/// How fill_hole triangulates a loop.
+struct fill_hole_options {
+    /// Loops of at most this many edges get Liepa's O(n^3) dynamic programme; longer ones the
+    /// O(n^2) triangulation of the loop projected on its best-fit plane (refused when that
+    /// projection is not a simple polygon).
+    std::size_t max_dynamic_programming_edges = 200;
+};
+
+/// What fill_hole added.
+template <class M, class T = default_traits<M>>
+struct fill_hole_result {
+    std::vector<typename T::face_handle> faces;  ///< the patch's triangles (loop edges - 2 of them)
+};
+
+namespace detail::holes {
+
+inline vec3<double> unit_normal(const vec3<double>& a, const vec3<double>& b, const vec3<double>& c) {
+    const auto n = cross(b - a, c - a);
+    const double l = std::sqrt(dot(n, n));
+    return l > 0 ? n / l : vec3<double>{};
+}
+inline double area(const vec3<double>& a, const vec3<double>& b, const vec3<double>& c) {
+    const auto n = cross(b - a, c - a);
+    return 0.5 * std::sqrt(dot(n, n));
+}
+/// 1 - cos of the angle between two unit normals: 0 flat, 2 folded back. Monotone in the angle.
+inline double bend(const vec3<double>& n, const vec3<double>& m) {
+    if (dot(n, n) == 0 || dot(m, m) == 0) return 0;
+    return 1 - dot(n, m);
+}
+
+/// Liepa's weight: the largest bend first, then the area.
+struct weight {
+    double bend = 0, area = 0;
+    bool operator<(const weight& o) const {
+        // Bends equal within rounding compare by area, so flat holes get the smallest patch.
+        if (std::fabs(bend - o.bend) > 1e-12) return bend < o.bend;
+        return area < o.area;
+    }
+};
+
+}  // namespace detail::holes
+
+/// Fills the boundary loop of `boundary_halfedge` (a halfedge with no face) with triangles.
+///
+/// Loops of up to `options.max_dynamic_programming_edges` edges are triangulated by Liepa's
+/// dynamic programme: among all triangulations of the loop that add no edge the mesh already
+/// has, the one whose largest dihedral bend (between patch triangles and with the faces
+/// around the loop) is smallest, then whose area is smallest. Longer loops are triangulated
+/// in the plane of their Newell normal (triangulate_polygon), which must see them as a simple
+/// polygon. New faces are wound like the faces around the hole.
+///
+/// \pre the mesh is a valid surface; the loop visits each vertex once.
+/// \post the loop is closed: E + (n - 3), F + (n - 2), V unchanged; genus unchanged.
+/// Errors (mesh unchanged): errc::invalid_handle; errc::topology when the halfedge has a face,
+/// the loop passes a vertex twice, has fewer than three edges, or every triangulation would
+/// duplicate an existing edge; errc::unsupported when a long loop's projection is not simple.
+/// Complexity: O(n^3) time and O(n^2) memory by the dynamic programme; O(n^2) typical for
+/// the projected fallback; plus O(n^2 valence) to find edges the patch must not repeat.
+template <class M, class T = default_traits<M>>
+    requires triangle_operable_mesh<M, T>
+[[nodiscard]] result<fill_hole_result<M, T>> fill_hole(M& mesh, typename T::halfedge_handle boundary_halfedge,
+                                                       const fill_hole_options& options = {}) {
+    namespace de = detail::euler;
+    namespace dt = detail::triangle_ops;
+    namespace dh = detail::holes;
+    using H = typename T::halfedge_handle;
+    using V = typename T::vertex_handle;
+    if (!de::usable<M, T>(mesh, boundary_halfedge))
+        return fail(errc::invalid_handle, "fill_hole: " + de::name<M, T>("halfedge", mesh, boundary_halfedge) + " does not exist",
+                    de::index_of<M, T>(mesh, boundary_halfedge));
+    if (T::face(mesh, boundary_halfedge) != T::null_face())
+        return fail(errc::topology, "fill_hole: " + de::name<M, T>("halfedge", mesh, boundary_halfedge) + " is not on a boundary",
+                    de::index_of<M, T>(mesh, boundary_halfedge));
+    // The loop: h[i] runs from v[i] to v[i + 1].
+    std::vector<H> h;
+    std::vector<V> v;
+    {
+        auto x = boundary_halfedge;
+        do {
+            h.push_back(x);
+            v.push_back(T::target(mesh, T::opposite(mesh, x)));
+            x = T::next(mesh, x);
+        } while (x != boundary_halfedge);
+    }
+    const std::size_t n = h.size();
+    if (n < 3) return fail(errc::topology, "fill_hole: the loop has fewer than three edges", de::index_of<M, T>(mesh, boundary_halfedge));
+    {
+        std::vector<V> sorted = v;
+        std::sort(sorted.begin(), sorted.end(), [&](V a, V b) { return T::vertex_index(mesh, a) < T::vertex_index(mesh, b); });
+        for (std::size_t i = 1; i < n; ++i)
+            if (sorted[i] == sorted[i - 1])
+                return fail(errc::topology, "fill_hole: the loop passes " + de::name<M, T>("vertex", mesh, sorted[i]) + " twice",
+                            de::index_of<M, T>(mesh, sorted[i]));
+    }
+    std::vector<vec3<double>> p(n);
+    for (std::size_t i = 0; i < n; ++i) p[i] = dt::position_of<M, T>(mesh, v[i]);
+    for (const auto& q : p)
+        if (!dt::finite(q)) return fail(errc::invalid_argument, "fill_hole: a loop vertex is not finite", de::index_of<M, T>(mesh, boundary_halfedge));
+    // Pairs already joined by an edge (other than along the loop) cannot be diagonals.
+    std::vector<char> joined(n * n, 0);
+    for (std::size_t i = 0; i < n; ++i) {
+        const auto s = T::vertex_halfedge(mesh, v[i]);
+        auto x = s;
+        do {
+            const auto w = T::target(mesh, x);
+            for (std::size_t j = 0; j < n; ++j)
+                if (v[j] == w) joined[i * n + j] = 1;
+            x = T::next(mesh, T::opposite(mesh, x));
+        } while (x != s);
+    }
+    // Normal of the face across loop edge (i, i + 1), for the bend at the patch's rim.
+    std::vector<vec3<double>> rim(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const auto o = T::opposite(mesh, h[i]);
+        rim[i] = dh::unit_normal(dt::position_of<M, T>(mesh, T::target(mesh, T::opposite(mesh, o))),
+                                 dt::position_of<M, T>(mesh, T::target(mesh, o)),
+                                 dt::position_of<M, T>(mesh, T::target(mesh, T::next(mesh, o))));
+    }
+
+    // triangles (i, k, j) in loop order, i < k < j.
+    std::vector<std::array<std::size_t, 3>> tris;
+    if (n <= options.max_dynamic_programming_edges) {
+        const double inf = std::numeric_limits<double>::infinity();
+        std::vector<dh::weight> W(n * n, dh::weight{inf, inf});
+        std::vector<std::size_t> K(n * n, n);
+        for (std::size_t i = 0; i + 1 < n; ++i) W[i * n + i + 1] = {0, 0};
+        // Normal of the triangle that the best solution of (i, j) puts on edge (i, j).
+        auto inner_normal = [&](std::size_t i, std::size_t j) {
+            if (j == i + 1) return rim[i];
+            const auto k = K[i * n + j];
+            return dh::unit_normal(p[i], p[k], p[j]);
+        };
+        for (std::size_t len = 2; len < n; ++len)
+            for (std::size_t i = 0; i + len < n; ++i) {
+                const std::size_t j = i + len;
+                // (i, j) becomes an edge: not allowed if the mesh has it already (except the
+                // loop's own closing edge (0, n-1)).
+                if (!(i == 0 && j == n - 1) && joined[i * n + j]) continue;
+                dh::weight best{inf, inf};
+                std::size_t best_k = n;
+                for (std::size_t k = i + 1; k < j; ++k) {
+                    const auto& a = W[i * n + k];
+                    const auto& b = W[k * n + j];
+                    if (a.bend == inf || b.bend == inf) continue;
+                    const auto nk = dh::unit_normal(p[i], p[k], p[j]);
+                    double bend = std::max(a.bend, b.bend);
+                    bend = std::max(bend, dh::bend(nk, inner_normal(i, k)));
+                    bend = std::max(bend, dh::bend(nk, inner_normal(k, j)));
+                    if (i == 0 && j == n - 1) bend = std::max(bend, dh::bend(nk, rim[n - 1]));
+                    const dh::weight w{bend, a.area + b.area + dh::area(p[i], p[k], p[j])};
+                    if (w < best) {
+                        best = w;
+                        best_k = k;
+                    }
+                }
+                W[i * n + j] = best;
+                K[i * n + j] = best_k;
+            }
+        if (K[n - 1] == n)
+            return fail(errc::topology, "fill_hole: every triangulation of the loop would repeat an edge the mesh already has",
+                        de::index_of<M, T>(mesh, boundary_halfedge));
+        std::vector<std::array<std::size_t, 2>> stack{{0, n - 1}};
+        while (!stack.empty()) {
+            const auto [i, j] = stack.back();
+            stack.pop_back();
+            const auto k = K[i * n + j];
+            tris.push_back({i, k, j});
+            if (k > i + 1) stack.push_back({i, k});
+            if (j > k + 1) stack.push_back({k, j});
+        }
+    } else {
+        // Project on the loop's Newell plane; the loop runs against the patch's winding.
+        vec3<double> nn{};
+        for (std::size_t i = 0; i < n; ++i) nn += cross(p[i], p[(i + 1) % n]);
+        const double ax = std::fabs(nn.x), ay = std::fabs(nn.y), az = std::fabs(nn.z);
+        const int k = ax >= ay && ax >= az ? 0 : (ay >= az ? 1 : 2);
+        int u = (k + 1) % 3, w = (k + 2) % 3;
+        if (nn[std::size_t(k)] < 0) std::swap(u, w);
+        std::vector<point2> pts(n);
+        for (std::size_t i = 0; i < n; ++i) pts[i] = {p[i][std::size_t(u)], p[i][std::size_t(w)]};
+        std::vector<std::vector<std::size_t>> loops(1);
+        for (std::size_t i = 0; i < n; ++i) loops[0].push_back(i);
+        auto t = triangulate_polygon(pts, loops);
+        if (!t)
+            return fail(errc::unsupported, "fill_hole: a loop of " + std::to_string(n) +
+                                               " edges is too long for the dynamic programme and its projection is not simple: " + t.error().message,
+                        de::index_of<M, T>(mesh, boundary_halfedge));
+        for (auto tri : *t) {
+            std::sort(tri.begin(), tri.end());
+            const std::array<std::array<std::size_t, 2>, 3> sides{{{tri[0], tri[1]}, {tri[1], tri[2]}, {tri[0], tri[2]}}};
+            for (const auto& s : sides)
+                if (s[1] != s[0] + 1 && !(s[0] == 0 && s[1] == n - 1) && joined[s[0] * n + s[1]])
+                    return fail(errc::unsupported, "fill_hole: the projected triangulation of a long loop repeats an existing edge",
+                                de::index_of<M, T>(mesh, boundary_halfedge));
+            tris.push_back(tri);
+        }
+        // Ear clipping gives no interval order; rebuild one: the triangle on each interval.
+        std::vector<std::size_t> on(n * n, n);
+        for (const auto& tri : tris) on[tri[0] * n + tri[2]] = tri[1];
+        tris.clear();
+        std::vector<std::array<std::size_t, 2>> stack{{0, n - 1}};
+        while (!stack.empty()) {
+            const auto [i, j] = stack.back();
+            stack.pop_back();
+            const auto m = on[i * n + j];
+            if (m == n) return fail(errc::unsupported, "fill_hole: internal: projected triangulation is not a fan of intervals");
+            tris.push_back({i, m, j});
+            if (m > i + 1) stack.push_back({i, m});
+            if (j > m + 1) stack.push_back({m, j});
+        }
+    }
+
+    // Build: one face over the whole loop, then cut off each interval's sub-loop by a
+    // diagonal, top down; what is left of a piece is its triangle. The loop's halfedges already
+    // run in the patch's winding.
+    fill_hole_result<M, T> out;
+    const auto g0 = T::new_face(mesh);
+    for (const auto x : h) T::set_face(mesh, x, g0);
+    T::set_face_halfedge(mesh, g0, h[n - 1]);
+    // close[i * n + j]: the halfedge v[j] -> v[i] closing the piece of interval (i, j), and its face.
+    struct piece {
+        std::size_t i, j;
+        H close;
+        typename T::face_handle face;
+    };
+    std::vector<std::size_t> split_at(n * n, n);
+    for (const auto& t : tris) split_at[t[0] * n + t[2]] = t[1];
+    std::vector<piece> todo{{0, n - 1, h[n - 1], g0}};
+    while (!todo.empty()) {
+        const piece pc = todo.back();
+        todo.pop_back();
+        out.faces.push_back(pc.face);
+        const auto k = split_at[pc.i * n + pc.j];
+        H into_k = h[k - 1];  // v[k-1] -> v[k]
+        H from_i = h[pc.i];   // v[i] -> v[i+1]
+        if (k > pc.i + 1) {   // cut (i, k): e = v[k] -> v[i] closes the sub-piece
+            const auto e = T::new_edge(mesh, v[k], v[pc.i]);
+            const auto eo = T::opposite(mesh, e);
+            const auto g = T::new_face(mesh);
+            T::set_next(mesh, h[k - 1], e);
+            T::set_next(mesh, e, h[pc.i]);
+            T::set_next(mesh, pc.close, eo);
+            T::set_next(mesh, eo, h[k]);
+            T::set_face(mesh, e, g);
+            for (std::size_t s = pc.i; s < k; ++s) T::set_face(mesh, h[s], g);
+            T::set_face_halfedge(mesh, g, e);
+            T::set_face(mesh, eo, pc.face);
+            T::set_face_halfedge(mesh, pc.face, pc.close);
+            todo.push_back({pc.i, k, e, g});
+            into_k = eo;
+            from_i = eo;
+        }
+        if (pc.j > k + 1) {  // cut (k, j): e2 = v[j] -> v[k] closes the sub-piece
+            const auto e2 = T::new_edge(mesh, v[pc.j], v[k]);
+            const auto e2o = T::opposite(mesh, e2);
+            const auto g = T::new_face(mesh);
+            T::set_next(mesh, h[pc.j - 1], e2);
+            T::set_next(mesh, e2, h[k]);
+            T::set_next(mesh, into_k, e2o);
+            T::set_next(mesh, e2o, pc.close);
+            T::set_face(mesh, e2, g);
+            for (std::size_t s = k; s < pc.j; ++s) T::set_face(mesh, h[s], g);
+            T::set_face_halfedge(mesh, g, e2);
+            T::set_face(mesh, e2o, pc.face);
+            T::set_face_halfedge(mesh, pc.face, pc.close);
+            todo.push_back({k, pc.j, e2, g});
+        }
+        (void)from_i;
+    }
+    // The loop's vertices stored boundary halfedges that now have a face.
+    for (std::size_t i = 0; i < n; ++i) dt::refresh_vertex_halfedge<M, T>(mesh, v[i], h[i]);
+    return out;
+}
+
+/// What fill_holes did.
+struct fill_holes_result {
+    std::size_t filled = 0;       ///< loops closed
+    std::size_t skipped = 0;      ///< loops longer than max_size, or refused by fill_hole
+    std::size_t faces_added = 0;  ///< triangles in all patches
+};
+
+/// Fills every boundary loop of at most `max_size` edges with fill_hole. A loop that fill_hole
+/// refuses is left open and counted in `skipped` (each refusal leaves the mesh unchanged).
+/// Errors: errc::invalid_argument for max_size < 3.
+/// Complexity: O(H) to find the loops, H the halfedges, plus fill_hole's cost per loop.
+template <class M, class T = default_traits<M>>
+    requires triangle_operable_mesh<M, T> && halfedge_index_mesh<M, T>
+[[nodiscard]] result<fill_holes_result> fill_holes(M& mesh, std::size_t max_size, const fill_hole_options& options = {}) {
+    if (max_size < 3) return fail(errc::invalid_argument, "fill_holes: option max_size must be at least 3, got " + std::to_string(max_size));
+    using H = typename T::halfedge_handle;
+    std::vector<H> loops;
+    std::vector<std::size_t> sizes;
+    std::vector<char> seen(T::halfedge_index_bound(mesh), 0);
+    for (auto x : T::halfedges(mesh)) {
+        const H hx = x;
+        if (T::face(mesh, hx) != T::null_face() || seen[T::halfedge_index(mesh, hx)]) continue;
+        std::size_t len = 0;
+        auto y = hx;
+        do {
+            seen[T::halfedge_index(mesh, y)] = 1;
+            ++len;
+            y = T::next(mesh, y);
+        } while (y != hx);
+        loops.push_back(hx);
+        sizes.push_back(len);
+    }
+    fill_holes_result out;
+    for (std::size_t l = 0; l < loops.size(); ++l) {
+        if (sizes[l] > max_size) {
+            ++out.skipped;
+            continue;
+        }
+        auto r = fill_hole<M, T>(mesh, loops[l], options);
+        if (!r) {
+            ++out.skipped;
+            continue;
+        }
+        ++out.filled;
+        out.faces_added += r->faces.size();
+    }
+    return out;
+}
+
+}  // namespace hmira
