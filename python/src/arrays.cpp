@@ -179,6 +179,7 @@ nb::tuple marching_cubes(const mc_volume& volume, double iso, const std::vector<
     bool swapped = false;
     {
         nb::gil_scoped_release release;
+        cpp_timer timer;
         if (dt == nb::dtype<float>()) r = extract<float>(volume, sp, org, options, swapped);
         else if (dt == nb::dtype<double>()) r = extract<double>(volume, sp, org, options, swapped);
         else if (dt == nb::dtype<std::uint8_t>()) r = extract<std::uint8_t>(volume, sp, org, options, swapped);
@@ -275,6 +276,7 @@ nb::tuple voxelize(const vertex_array& vertices, nb::handle faces, std::optional
     hmira::grid_geometry geometry;
     {
         nb::gil_scoped_release release;
+        cpp_timer timer;
         r = [&]() -> hmira::result<hmira::voxelization> {
             hmira::face_vertex_mesh mesh;
             auto built = hmira::io::assign_from_soup(mesh, soup, [](std::size_t) { return std::string("voxelize"); });
@@ -328,6 +330,7 @@ nb::object delaunay(const point_array& points, bool voronoi) {
     hmira::result<hmira::delaunay_triangles> r = hmira::fail(hmira::errc::invalid_argument, "");
     {
         nb::gil_scoped_release release;
+        cpp_timer timer;
         const hmira::delaunay_options options{.voronoi = voronoi, .brio = true};
         if (dim == 2) {
             // (n, 2) doubles in C order are n std::array<double, 2>: read in place.
@@ -376,6 +379,8 @@ void write_polygons(const std::string& path, const vertex_array& vertices, nb::h
 }  // namespace
 
 void bind_arrays(nb::module_& m) {
+    m.def("_last_cpp_seconds", [] { return last_cpp_seconds(); },
+          "Seconds the last marching_cubes / voxelize / delaunay_triangulation / read_mesh spent in C++ (for bench/python).");
     m.def("marching_cubes", &marching_cubes, nb::arg("volume"), nb::arg("iso") = 0.0, nb::kw_only(),
           nb::arg("spacing") = std::vector<double>{1, 1, 1}, nb::arg("origin") = std::vector<double>{0, 0, 0},
           nb::arg("inside") = "below", nb::arg("threads") = 0u, MC_DOC);

@@ -90,6 +90,7 @@ void read(py_mesh& self, const std::string& path, bool weld_stl) {
     hmira::result<hmira::io::read_report> r = hmira::fail(hmira::errc::invalid_argument, "");
     {
         nb::gil_scoped_release release;
+        cpp_timer timer;
         hmira::io::read_options options;
         options.weld_stl = weld_stl;
         r = hmira::io::read_mesh(fresh, path, options);
