@@ -145,6 +145,8 @@ def _faces_arg(faces: Any) -> Any:
             raise ValueError(f"faces must be an (m, k) integer array or a list of polygons, got shape {faces.shape}")
         if faces.dtype.kind not in "iu":
             raise ValueError(f"faces must hold integers, got dtype {faces.dtype}")
+        if faces.dtype == np.int32:
+            return np.ascontiguousarray(faces)  # read in place (marching_cubes' output)
         return np.ascontiguousarray(faces, dtype=np.int64)
     return faces
 

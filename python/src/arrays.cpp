@@ -226,16 +226,27 @@ hmira::io::polygon_soup to_soup(const nb::ndarray<const double, nb::ndim<2>, nb:
             value_error(std::string(who) + ": face " + std::to_string(f) + " uses vertex " + std::to_string(idx) + ", out of range [0, " + std::to_string(nv) + ")");
         soup.indices.push_back(static_cast<std::uint32_t>(idx));
     };
-    nb::ndarray<const std::int64_t, nb::ndim<2>, nb::c_contig, nb::device::cpu> array;
-    if (nb::try_cast(faces, array) && !nb::isinstance<nb::list>(faces) && !nb::isinstance<nb::tuple>(faces)) {
+    // (m, k) arrays of int32 (what marching_cubes returns) or int64 are read in place.
+    auto from_array = [&](const auto& array) {
         const std::size_t m = array.shape(0), k = array.shape(1);
         soup.indices.reserve(m * k);
         soup.face_offsets.reserve(m + 1);
         for (std::size_t f = 0; f < m; ++f) {
-            for (std::size_t c = 0; c < k; ++c) push(array.data()[f * k + c], f);
+            for (std::size_t c = 0; c < k; ++c) push(static_cast<long long>(array.data()[f * k + c]), f);
             soup.face_offsets.push_back(static_cast<std::uint32_t>(soup.indices.size()));
         }
-        return soup;
+    };
+    if (!nb::isinstance<nb::list>(faces) && !nb::isinstance<nb::tuple>(faces)) {
+        nb::ndarray<const std::int32_t, nb::ndim<2>, nb::c_contig, nb::device::cpu> narrow;
+        if (nb::try_cast(faces, narrow, false)) {
+            from_array(narrow);
+            return soup;
+        }
+        nb::ndarray<const std::int64_t, nb::ndim<2>, nb::c_contig, nb::device::cpu> wide;
+        if (nb::try_cast(faces, wide)) {
+            from_array(wide);
+            return soup;
+        }
     }
     std::size_t f = 0;
     for (nb::handle polygon : faces) {
