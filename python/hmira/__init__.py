@@ -80,7 +80,7 @@ class VertexView(np.ndarray):
 
     def __getitem__(self, key: Any) -> Any:
         result = self._plain()[key]
-        if isinstance(result, np.ndarray) and result.base is not None and np.shares_memory(result, self):
+        if isinstance(result, np.ndarray) and result.base is not None and np.may_share_memory(result, self):
             result = result.view(VertexView)
             result._mesh_ref, result._version = self._mesh_ref, self._version
         return result
