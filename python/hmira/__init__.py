@@ -80,7 +80,7 @@ class VertexView(np.ndarray):
 
     def __getitem__(self, key: Any) -> Any:
         result = self._plain()[key]
-        if isinstance(result, np.ndarray) and result.base is not None and np.shares_memory(result, self):
+        if isinstance(result, np.ndarray) and result.base is not None and np.may_share_memory(result, self):
             result = result.view(VertexView)
             result._mesh_ref, result._version = self._mesh_ref, self._version
         return result
@@ -145,6 +145,8 @@ def _faces_arg(faces: Any) -> Any:
             raise ValueError(f"faces must be an (m, k) integer array or a list of polygons, got shape {faces.shape}")
         if faces.dtype.kind not in "iu":
             raise ValueError(f"faces must hold integers, got dtype {faces.dtype}")
+        if faces.dtype == np.int32:
+            return np.ascontiguousarray(faces)  # read in place (marching_cubes' output)
         return np.ascontiguousarray(faces, dtype=np.int64)
     return faces
 

@@ -179,6 +179,7 @@ nb::tuple marching_cubes(const mc_volume& volume, double iso, const std::vector<
     bool swapped = false;
     {
         nb::gil_scoped_release release;
+        cpp_timer timer;
         if (dt == nb::dtype<float>()) r = extract<float>(volume, sp, org, options, swapped);
         else if (dt == nb::dtype<double>()) r = extract<double>(volume, sp, org, options, swapped);
         else if (dt == nb::dtype<std::uint8_t>()) r = extract<std::uint8_t>(volume, sp, org, options, swapped);
@@ -225,16 +226,27 @@ hmira::io::polygon_soup to_soup(const nb::ndarray<const double, nb::ndim<2>, nb:
             value_error(std::string(who) + ": face " + std::to_string(f) + " uses vertex " + std::to_string(idx) + ", out of range [0, " + std::to_string(nv) + ")");
         soup.indices.push_back(static_cast<std::uint32_t>(idx));
     };
-    nb::ndarray<const std::int64_t, nb::ndim<2>, nb::c_contig, nb::device::cpu> array;
-    if (nb::try_cast(faces, array) && !nb::isinstance<nb::list>(faces) && !nb::isinstance<nb::tuple>(faces)) {
+    // (m, k) arrays of int32 (what marching_cubes returns) or int64 are read in place.
+    auto from_array = [&](const auto& array) {
         const std::size_t m = array.shape(0), k = array.shape(1);
         soup.indices.reserve(m * k);
         soup.face_offsets.reserve(m + 1);
         for (std::size_t f = 0; f < m; ++f) {
-            for (std::size_t c = 0; c < k; ++c) push(array.data()[f * k + c], f);
+            for (std::size_t c = 0; c < k; ++c) push(static_cast<long long>(array.data()[f * k + c]), f);
             soup.face_offsets.push_back(static_cast<std::uint32_t>(soup.indices.size()));
         }
-        return soup;
+    };
+    if (!nb::isinstance<nb::list>(faces) && !nb::isinstance<nb::tuple>(faces)) {
+        nb::ndarray<const std::int32_t, nb::ndim<2>, nb::c_contig, nb::device::cpu> narrow;
+        if (nb::try_cast(faces, narrow, false)) {
+            from_array(narrow);
+            return soup;
+        }
+        nb::ndarray<const std::int64_t, nb::ndim<2>, nb::c_contig, nb::device::cpu> wide;
+        if (nb::try_cast(faces, wide)) {
+            from_array(wide);
+            return soup;
+        }
     }
     std::size_t f = 0;
     for (nb::handle polygon : faces) {
@@ -275,6 +287,7 @@ nb::tuple voxelize(const vertex_array& vertices, nb::handle faces, std::optional
     hmira::grid_geometry geometry;
     {
         nb::gil_scoped_release release;
+        cpp_timer timer;
         r = [&]() -> hmira::result<hmira::voxelization> {
             hmira::face_vertex_mesh mesh;
             auto built = hmira::io::assign_from_soup(mesh, soup, [](std::size_t) { return std::string("voxelize"); });
@@ -328,6 +341,7 @@ nb::object delaunay(const point_array& points, bool voronoi) {
     hmira::result<hmira::delaunay_triangles> r = hmira::fail(hmira::errc::invalid_argument, "");
     {
         nb::gil_scoped_release release;
+        cpp_timer timer;
         const hmira::delaunay_options options{.voronoi = voronoi, .brio = true};
         if (dim == 2) {
             // (n, 2) doubles in C order are n std::array<double, 2>: read in place.
@@ -376,6 +390,8 @@ void write_polygons(const std::string& path, const vertex_array& vertices, nb::h
 }  // namespace
 
 void bind_arrays(nb::module_& m) {
+    m.def("_last_cpp_seconds", [] { return last_cpp_seconds(); },
+          "Seconds the last marching_cubes / voxelize / delaunay_triangulation / read_mesh spent in C++ (for bench/python).");
     m.def("marching_cubes", &marching_cubes, nb::arg("volume"), nb::arg("iso") = 0.0, nb::kw_only(),
           nb::arg("spacing") = std::vector<double>{1, 1, 1}, nb::arg("origin") = std::vector<double>{0, 0, 0},
           nb::arg("inside") = "below", nb::arg("threads") = 0u, MC_DOC);

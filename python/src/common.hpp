@@ -84,6 +84,18 @@ private:
     std::optional<nb::python_error> error_;
 };
 
+/// Seconds the last heavy call spent in the C++ algorithm itself (argument conversion and
+/// result wrapping excluded): what bench/python compares the Python call's time with.
+inline double& last_cpp_seconds() {
+    static double seconds = 0;
+    return seconds;
+}
+/// Times its scope into last_cpp_seconds().
+struct cpp_timer {
+    std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
+    ~cpp_timer() { last_cpp_seconds() = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); }
+};
+
 /// Registers the translator from hmira_failure to Python exceptions.
 void register_errors(nb::module_& m);
 void bind_arrays(nb::module_& m);

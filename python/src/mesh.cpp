@@ -90,6 +90,7 @@ void read(py_mesh& self, const std::string& path, bool weld_stl) {
     hmira::result<hmira::io::read_report> r = hmira::fail(hmira::errc::invalid_argument, "");
     {
         nb::gil_scoped_release release;
+        cpp_timer timer;
         hmira::io::read_options options;
         options.weld_stl = weld_stl;
         r = hmira::io::read_mesh(fresh, path, options);
@@ -100,9 +101,12 @@ void read(py_mesh& self, const std::string& path, bool weld_stl) {
 
 void write(const py_mesh& self, const std::string& path, bool ascii, bool big_endian, bool float32, bool attributes) {
     hmira::result<void> r;
+    // Holding the storage makes a topology change from another thread, while the GIL is
+    // released here, copy the mesh instead of changing what is being written.
+    const std::shared_ptr<const halfedge_mesh> keep = self.mesh;
     {
         nb::gil_scoped_release release;
-        r = hmira::io::write_mesh(self.get(), path, write_options_from(ascii, big_endian, float32, attributes));
+        r = hmira::io::write_mesh(*keep, path, write_options_from(ascii, big_endian, float32, attributes));
     }
     check(r);
 }
@@ -192,7 +196,7 @@ nb::dict truncate(py_mesh& self, std::optional<std::vector<long long>> vertices,
     if (all) for (auto v : m0.vertices()) vs.push_back(v);
     else for (long long i : *vertices) vs.push_back(vertex_arg(m0, i, "truncate"));
     const hmira::truncate_options o{.fraction = fraction.value_or(1.0 / 3.0), .distance = distance.value_or(0.0)};
-    // Checked on a copy of nothing: truncate leaves the mesh unchanged on error.
+    // truncate() checks everything before its first change: on error the mesh is unchanged.
     auto& m = self.for_topology_change();
     auto r = take(hmira::truncate(m, vs, o));
     compact(m);
