@@ -30,7 +30,6 @@ import { LineSegmentsGeometry } from 'three/addons/lines/LineSegmentsGeometry.js
 export const palette = {
     background: 0xf4f5f7,
     surface: 0x9fb4cf,
-    back: 0xd8b48a,
     edge: 0x30343a,
     boundary: 0xff2000,
     nonManifold: 0xff00ff,
