@@ -4,12 +4,19 @@
 # `hmira view`, and screenshots it in headless Chromium into docs/gallery/<name>.png. Each PNG
 # carries the commands that made it in a tEXt chunk ("hmira-command"); docs/gallery/README.md
 # lists them too.
-#   scripts/gallery.sh [build-dir]     (default build; needs build/apps/hmira/hmira with the viewer)
+#   scripts/gallery.sh [build-dir]     (default build)
+# On a fresh clone (after scripts/install-deps.sh) it builds what it needs: the viewer bundle
+# (viewer/build.sh: npm ci + esbuild) and the hmira tool in <build-dir>.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
+mkdir -p "${1:-$root/build}"
 build="$(cd "${1:-$root/build}" && pwd)"
 hmira="$build/apps/hmira/hmira"
-[ -x "$hmira" ] || { echo "gallery: $hmira not built (cmake --build $build --target hmira_cli)" >&2; exit 1; }
+bash "$root/viewer/build.sh" > /dev/null
+if [ ! -f "$build/CMakeCache.txt" ]; then
+  cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DHMIRA_BUILD_APPS=ON -DHMIRA_BUILD_TESTS=OFF > /dev/null
+fi
+cmake --build "$build" --target hmira_cli > /dev/null
 out="$root/docs/gallery"
 work="$build/gallery"
 rm -rf "$work"

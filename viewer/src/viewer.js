@@ -30,7 +30,6 @@ import { LineSegmentsGeometry } from 'three/addons/lines/LineSegmentsGeometry.js
 export const palette = {
     background: 0xf4f5f7,
     surface: 0x9fb4cf,
-    back: 0xd8b48a,
     edge: 0x30343a,
     boundary: 0xff2000,
     nonManifold: 0xff00ff,
@@ -78,6 +77,26 @@ function edgeIndices(triangles, mask) {
     return lines;
 }
 
+// Area-weighted vertex normals, in plain typed-array loops (a few times faster than
+// BufferGeometry.computeVertexNormals on a million triangles).
+function vertexNormals(positions, triangles) {
+    const p = positions, normals = new Float32Array(p.length);
+    for (let t = 0; t < triangles.length; t += 3) {
+        const a = 3 * triangles[t], b = 3 * triangles[t + 1], c = 3 * triangles[t + 2];
+        const ux = p[b] - p[a], uy = p[b + 1] - p[a + 1], uz = p[b + 2] - p[a + 2];
+        const vx = p[c] - p[a], vy = p[c + 1] - p[a + 1], vz = p[c + 2] - p[a + 2];
+        const nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
+        normals[a] += nx; normals[a + 1] += ny; normals[a + 2] += nz;
+        normals[b] += nx; normals[b + 1] += ny; normals[b + 2] += nz;
+        normals[c] += nx; normals[c + 1] += ny; normals[c + 2] += nz;
+    }
+    for (let i = 0; i < normals.length; i += 3) {
+        const length = Math.hypot(normals[i], normals[i + 1], normals[i + 2]) || 1;
+        normals[i] /= length; normals[i + 1] /= length; normals[i + 2] /= length;
+    }
+    return normals;
+}
+
 // Highlighted edges are drawn 3 px wide (quads, not GL lines, which are 1 px everywhere).
 const highlightMaterials = [];
 function wideLines(positions, indices, color, order) {
@@ -110,7 +129,7 @@ function buildMesh(entry, index) {
     const normals = buffer(prefix + 'normals', Float32Array);
     const colors = buffer(prefix + 'colors', Uint8Array);
     const scene = new Scene();
-    const part = { entry, scene, surface: null, edges: null, highlights: [], fileNormals: !!normals };
+    const part = { entry, scene, surface: null, edges: null, highlights: [] };
 
     if (triangles.length === 0) {
         const geometry = new BufferGeometry();
@@ -257,7 +276,9 @@ function start() {
             if (p.surface) {
                 p.surface.material.flatShading = !state.smooth;
                 p.surface.material.needsUpdate = true;
-                if (state.smooth && !p.fileNormals && !p.surface.geometry.getAttribute('normal')) p.surface.geometry.computeVertexNormals();
+                const geometry = p.surface.geometry;
+                if (state.smooth && !geometry.getAttribute('normal'))
+                    geometry.setAttribute('normal', new BufferAttribute(vertexNormals(geometry.getAttribute('position').array, geometry.getIndex().array), 3));
                 if (state.edges) p.makeEdges();
                 if (p.edges) p.edges.visible = state.edges;
             }
