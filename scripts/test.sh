@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The README's test command: installs what is missing, then builds and runs the whole suite
-# twice (plain with -Wall -Wextra -Werror, then under AddressSanitizer + UBSan), and builds a
-# small consumer project against the installed package.
+# twice (plain with -Wall -Wextra -Werror, then under AddressSanitizer + UBSan), runs the viewer
+# tests in headless Chromium and the Python package's tests in a fresh venv, fuzzes each parser
+# briefly, and builds a small consumer project against the installed package.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 jobs=$(nproc 2>/dev/null || echo 2)
@@ -9,6 +10,9 @@ start=$(date +%s)
 
 bash scripts/install-deps.sh
 bash scripts/test-data.sh build/test-data
+# The viewer's JavaScript (three.js, pinned by viewer/package-lock.json) is bundled by esbuild
+# before configuring, so `hmira view` (and the Python package) embed it.
+bash viewer/build.sh
 
 common=(-G Ninja -DHMIRA_WERROR=ON -DHMIRA_BUILD_TESTS=ON -DHMIRA_BUILD_APPS=ON -DHMIRA_BUILD_EXAMPLES=ON
         -DHMIRA_TEST_DATA_DIR="$PWD/build/test-data")
@@ -18,6 +22,14 @@ cmake -S . -B build/test "${common[@]}" -DCMAKE_BUILD_TYPE=Release -DHMIRA_BUILD
 cmake --build build/test -j"$jobs"
 (cd build/test && ctest --output-on-failure -j"$jobs" --timeout 600)
 echo "plain pass finished after $(( $(date +%s) - start )) s"
+
+echo "== viewer pages in headless Chromium (Playwright from PyPI drives Debian's chromium)"
+bash tests/browser/run.sh build/test
+echo "browser tests finished after $(( $(date +%s) - start )) s"
+
+echo "== Python package: pip install . into a fresh venv, type-stub check, pytest"
+HMIRA_TEST_DATA="$PWD/build/test-data" HMIRA_CLI="$PWD/build/test/apps/hmira/hmira" bash scripts/python.sh
+echo "python pass finished after $(( $(date +%s) - start )) s"
 
 echo "== API reference (Doxygen; fails on any undocumented public entity)"
 bash scripts/docs.sh build/docs
