@@ -4,7 +4,9 @@
 // the C++ vectors (no copy on the way out).
 #include "common.hpp"
 
+#include <bit>
 #include <cmath>
+#include <cstring>
 #include <cstdint>
 #include <limits>
 #include <string>
@@ -314,15 +316,33 @@ nb::tuple voxelize(const vertex_array& vertices, nb::handle faces, std::optional
     auto v = take(std::move(r));
     const auto d = geometry.dims;
     // Fortran order: [i, j, k] indexes x, y, z, and each row of x stays contiguous.
+    static_assert(std::endian::native == std::endian::little, "the bit expansion table assumes little endian");
     std::vector<std::uint8_t> cells(d[0] * d[1] * d[2]);
     {
         nb::gil_scoped_release release;
-        for (std::size_t k = 0; k < d[2]; ++k)
-            for (std::size_t j = 0; j < d[1]; ++j) {
-                const std::uint64_t* row = v.voxels.row(j, k);
-                std::uint8_t* out = &cells[d[0] * (j + d[1] * k)];
-                for (std::size_t i = 0; i < d[0]; ++i) out[i] = static_cast<std::uint8_t>((row[i >> 6] >> (i & 63)) & 1u);
-            }
+        // Eight voxels at a time: each byte of bits expands to eight bool bytes by table.
+        static const auto expand = [] {
+            std::array<std::uint64_t, 256> t{};
+            for (unsigned b = 0; b < 256; ++b)
+                for (unsigned q = 0; q < 8; ++q)
+                    if ((b >> q) & 1u) t[b] |= std::uint64_t(1) << (8 * q);
+            return t;
+        }();
+        hmira::detail::with_thread_count(threads, [&] {
+            hmira::detail::parallel_chunks(d[2], 1, [&](std::size_t k0, std::size_t k1) {
+                for (std::size_t k = k0; k < k1; ++k)
+                    for (std::size_t j = 0; j < d[1]; ++j) {
+                        const std::uint64_t* row = v.voxels.row(j, k);
+                        std::uint8_t* out = &cells[d[0] * (j + d[1] * k)];
+                        const std::size_t full = d[0] / 8;
+                        for (std::size_t q = 0; q < full; ++q) {
+                            const auto byte = static_cast<unsigned>((row[q >> 3] >> (8 * (q & 7))) & 0xffu);
+                            std::memcpy(out + 8 * q, &expand[byte], 8);  // little-endian: bit q -> byte q
+                        }
+                        for (std::size_t i = 8 * full; i < d[0]; ++i) out[i] = static_cast<std::uint8_t>((row[i >> 6] >> (i & 63)) & 1u);
+                    }
+            });
+        });
     }
     auto* owned = new std::vector<std::uint8_t>(std::move(cells));
     nb::capsule owner(owned, [](void* p) noexcept { delete static_cast<std::vector<std::uint8_t>*>(p); });
