@@ -220,3 +220,12 @@ def test_render_never_leaves_a_partial_file(tmp_path, monkeypatch):
         hmira.render(box(1, 1, 1), out)
     assert out.read_bytes() == b"old"
     assert sorted(os.listdir(tmp_path)) == ["keep.png"]
+
+
+def test_without_the_bundle_view_says_how_to_build_it(monkeypatch, tmp_path):
+    monkeypatch.setattr(hmira._core, "_viewer_bundle_available", lambda: False)
+    for call in (lambda: hmira.view(box(1, 1, 1)), lambda: hmira.render(box(1, 1, 1), tmp_path / "x.png")):
+        with pytest.raises(RuntimeError, match=r"without the viewer bundle: run viewer/build.sh"):
+            call()
+    assert "run viewer/build.sh" in box(1, 1, 1)._repr_html_()
+    assert not (tmp_path / "x.png").exists()
