@@ -235,22 +235,38 @@ def _screenshot(chromium: str, url: str, work: str, width: int, height: int, tim
     except ImportError:
         sync_playwright = None
     if sync_playwright is not None:
-        errors = []
-        with sync_playwright() as p:
-            browser = p.chromium.launch_persistent_context(profile, executable_path=chromium, args=CHROMIUM_FLAGS, headless=True,
-                                                           viewport={"width": width, "height": height})
-            try:
-                page = browser.new_page()
-                page.on("pageerror", lambda e: errors.append(str(e)))
-                page.goto(url, wait_until="commit", timeout=timeout * 1000)
-                page.wait_for_function("window.hmiraRenderDone === true || window.hmiraError !== undefined",
-                                       timeout=timeout * 1000, polling=20)
-                failure = page.evaluate("window.hmiraError")
-                if failure is not None or errors:
-                    raise RuntimeError(f"render: the viewer page failed in Chromium: {failure or errors[0]}")
-                return page.screenshot()
-            finally:
-                browser.close()
+        try:
+            return _playwright_screenshot(sync_playwright, chromium, url, profile, width, height, timeout)
+        except RuntimeError:
+            raise
+        except Exception as error:  # Playwright's own errors (launch failed, timeout): one clear line
+            first = (str(error).strip().splitlines() or [type(error).__name__])[0]
+            raise RuntimeError(f"render: Chromium ({chromium}) failed under Playwright: {first}") from error
+    return _cli_screenshot(chromium, url, work, profile, width, height, timeout)
+
+
+def _playwright_screenshot(sync_playwright: Any, chromium: str, url: str, profile: str, width: int, height: int,
+                           timeout: float) -> bytes:
+    """The screenshot once the page sets window.hmiraRenderDone (or raises on a script error)."""
+    errors = []
+    with sync_playwright() as p:
+        browser = p.chromium.launch_persistent_context(profile, executable_path=chromium, args=CHROMIUM_FLAGS, headless=True,
+                                                       viewport={"width": width, "height": height})
+        try:
+            page = browser.new_page()
+            page.on("pageerror", lambda e: errors.append(str(e)))
+            page.goto(url, wait_until="commit", timeout=timeout * 1000)
+            page.wait_for_function("window.hmiraRenderDone === true || window.hmiraError !== undefined",
+                                   timeout=timeout * 1000, polling=20)
+            failure = page.evaluate("window.hmiraError")
+            if failure is not None or errors:
+                raise RuntimeError(f"render: the viewer page failed in Chromium: {failure or errors[0]}")
+            return page.screenshot()
+        finally:
+            browser.close()
+
+
+def _cli_screenshot(chromium: str, url: str, work: str, profile: str, width: int, height: int, timeout: float) -> bytes:
     out = os.path.join(work, "shot.png")
     command = [chromium, *CHROMIUM_FLAGS, f"--user-data-dir={profile}", "--hide-scrollbars", f"--window-size={width},{height}",
                "--virtual-time-budget=30000", "--run-all-compositor-stages-before-draw", f"--screenshot={out}", url]

@@ -5,10 +5,11 @@ These need the viewer bundle compiled in (scripts/python.sh runs viewer/build.sh
 render(), Chromium; a missing piece fails the test with the reason instead of skipping it."""
 import base64
 import html
-import io
+import importlib.util
 import json
 import os
 import re
+import sys
 
 import numpy as np
 import pytest
@@ -211,15 +212,34 @@ def test_render_compare_draws_one_mesh_in_each_half(tmp_path):
     assert not mask[:, 236:244].any(), "the two halves' meshes should not touch the middle"
 
 
+def without_playwright(monkeypatch):
+    """render() then takes Chromium's own --screenshot path (as where Playwright is not installed)."""
+    for name in ("playwright", "playwright.sync_api"):
+        monkeypatch.setitem(sys.modules, name, None)
+
+
 def test_render_never_leaves_a_partial_file(tmp_path, monkeypatch):
     out = tmp_path / "keep.png"
     out.write_bytes(b"old")
     monkeypatch.setenv("HMIRA_CHROMIUM", "/bin/false")  # 'runs' but writes no screenshot
-    monkeypatch.setitem(__import__("sys").modules, "playwright", None)  # the --screenshot path
-    with pytest.raises(RuntimeError, match="without a screenshot"):
-        hmira.render(box(1, 1, 1), out)
+    with monkeypatch.context() as patch:
+        without_playwright(patch)
+        with pytest.raises(RuntimeError, match="exited with 1 without a screenshot"):
+            hmira.render(box(1, 1, 1), out)
+    if importlib.util.find_spec("playwright") is not None:  # and the Playwright path, where it is installed
+        with pytest.raises(RuntimeError, match="failed under Playwright"):
+            hmira.render(box(1, 1, 1), out)
     assert out.read_bytes() == b"old"
     assert sorted(os.listdir(tmp_path)) == ["keep.png"]
+
+
+def test_render_without_playwright_uses_chromium_screenshot(tmp_path, monkeypatch):
+    chromium_or_fail()
+    without_playwright(monkeypatch)
+    out = tmp_path / "cube.png"
+    hmira.render(box(1, 1, 1), out, view="front", size=(300, 200))
+    w, h = extent(mesh_pixels(out))
+    assert mesh_pixels(out).shape == (200, 300) and 0.8 < w / h < 1.25 and 0.1 < mesh_pixels(out).mean() < 0.9
 
 
 def test_without_the_bundle_view_says_how_to_build_it(monkeypatch, tmp_path):
