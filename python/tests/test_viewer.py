@@ -249,3 +249,16 @@ def test_without_the_bundle_view_says_how_to_build_it(monkeypatch, tmp_path):
             call()
     assert "run viewer/build.sh" in box(1, 1, 1)._repr_html_()
     assert not (tmp_path / "x.png").exists()
+
+
+def test_removed_vertices_are_left_out():
+    mesh = box(1, 1, 1)
+    _, spoke = mesh.make_edge_vertex(mesh.find_halfedge(0, 1), [5.0, 5.0, 5.0])  # a dangling edge far away
+    mesh.kill_edge_vertex(spoke)  # ... removed again: its slot stays until collect_garbage
+    assert mesh._positions().shape[0] == 9 and mesh.vertex_count == 8
+    page = hmira.view(mesh).html
+    positions = buffer_of(page, 0, "positions", np.float32).reshape(-1, 3)
+    assert positions.shape == (8, 3)
+    np.testing.assert_array_equal(positions.max(axis=0), [0.5, 0.5, 0.5])  # the far point is not in the box
+    assert scene_of(page)["meshes"][0]["info"]["vertices"] == 8
+    assert mesh._positions().shape[0] == 9  # the shown mesh is a compacted copy; this one is untouched
