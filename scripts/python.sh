@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The Python package's check: builds and installs `hmira` with `pip install .` into a fresh
 # venv (nanobind + scikit-build-core from PyPI), checks that the committed type stubs equal
-# what nanobind's stubgen makes now, and runs the pytest suite.
+# what nanobind's stubgen makes now, and runs the pytest suite. It builds the viewer bundle first
+# (viewer/build.sh: node and npm), so hmira.view and hmira.render are tested, never skipped.
 #   HMIRA_TEST_DATA  libcgal-demo data (default: build/test-data, as scripts/test-data.sh makes it)
 #   HMIRA_CLI        the C++ `hmira` binary the tests compare with (unset: those comparisons skip)
 #   HMIRA_PY_VENV    where the venv goes (default: build/python-venv; always made anew)
@@ -18,6 +19,9 @@ rm -rf "$venv"
 python3 -m venv "$venv"
 "$venv/bin/python" -m pip install -q --upgrade pip
 "$venv/bin/python" -m pip install -q -r python/requirements-test.txt
+
+echo "== viewer bundle (viewer/build.sh), compiled into hmira._core for hmira.view and hmira.render"
+viewer/build.sh
 
 echo "== pip install . (builds hmira._core)"
 # The build requirements (pinned in pyproject.toml) are already in the venv from the

@@ -35,7 +35,9 @@ __all__ = [
     "marching_cubes",
     "mesh_topology",
     "read_mesh",
+    "render",
     "truncate",
+    "view",
     "voxelize",
     "write_mesh",
 ]
@@ -211,6 +213,12 @@ class Mesh(_core.MeshCore):
 
     def __repr__(self) -> str:
         return f"hmira.Mesh(vertices={self.vertex_count}, faces={self.face_count})"
+
+    def _repr_html_(self) -> str:
+        """Jupyter shows the mesh in the viewer (see :func:`hmira.view`)."""
+        from . import viewer
+
+        return viewer.repr_html(self)
 
     def truncate(self, vertices: Optional[Sequence[int]] = None, *, all: bool = False,
                  fraction: Optional[float] = None, distance: Optional[float] = None) -> dict:
@@ -447,3 +455,6 @@ def bevel(mesh: Mesh, edges: Optional[Sequence[Tuple[int, int]]] = None, **optio
 def extrude(mesh: Mesh, faces: Optional[Sequence[int]] = None, **options: Any) -> dict:
     """``mesh.extrude(faces, **options)``: see :meth:`Mesh.extrude`."""
     return mesh.extrude(faces, **options)
+
+
+from .viewer import render, view  # noqa: E402  (viewer.py uses Mesh)

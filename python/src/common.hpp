@@ -100,5 +100,6 @@ struct cpp_timer {
 void register_errors(nb::module_& m);
 void bind_arrays(nb::module_& m);
 void bind_mesh(nb::module_& m);
+void bind_viewer(nb::module_& m);
 
 }  // namespace hmira_py

@@ -21,4 +21,5 @@ NB_MODULE(_core, m) {
     hmira_py::register_errors(m);
     hmira_py::bind_arrays(m);
     hmira_py::bind_mesh(m);
+    hmira_py::bind_viewer(m);
 }
