@@ -16,6 +16,7 @@
 namespace {
 
 inline std::uint64_t calls = 0;
+inline std::uint64_t whole_mesh_ranges = 0;  // vertices(), faces(), edges(), halfedges(): O(mesh) each
 
 /// halfedge_mesh's traits with every navigation and mutation call counted.
 struct counting_traits : hmira::mesh_traits<hmira::halfedge_mesh> {
@@ -46,6 +47,10 @@ struct counting_traits : hmira::mesh_traits<hmira::halfedge_mesh> {
     static void erase_edge(mesh& m, E e) { ++calls; base::erase_edge(m, e); }
     static void erase_face(mesh& m, F f) { ++calls; base::erase_face(m, f); }
     static void erase_vertex(mesh& m, V v) { ++calls; base::erase_vertex(m, v); }
+    static auto vertices(const mesh& m) { ++whole_mesh_ranges; return base::vertices(m); }
+    static auto faces(const mesh& m) { ++whole_mesh_ranges; return base::faces(m); }
+    static auto edges(const mesh& m) { ++whole_mesh_ranges; return base::edges(m); }
+    static auto halfedges(const mesh& m) { ++whole_mesh_ranges; return base::halfedges(m); }
 };
 using CT = counting_traits;
 static_assert(hmira::extrudable_mesh<hmira::halfedge_mesh, CT>);
@@ -60,23 +65,34 @@ template <class Op>
 std::uint64_t count_calls(std::size_t rings, Op op) {
     auto m = torus(rings);
     calls = 0;
+    whole_mesh_ranges = 0;
     op(m);
+    // A local edit never enumerates the mesh (index bounds, O(1), are allowed).
+    EXPECT_EQ(whole_mesh_ranges, 0u) << "a whole-mesh range was read inside a local edit";
     EXPECT_TRUE(hmira_test::is_valid(m));
     return calls;
 }
 
+TEST(editing_locality, the_range_counter_sees_a_whole_mesh_scan) {
+    // truncate_all enumerates the vertices by design: the counter must notice.
+    auto m = torus(8);
+    whole_mesh_ranges = 0;
+    ASSERT_TRUE((hmira::truncate_all<hmira::halfedge_mesh, CT>(m)));
+    EXPECT_GT(whole_mesh_ranges, 0u);
+}
+
 TEST(editing_locality, truncate_bevel_and_extrude_cost_does_not_grow_with_mesh_size) {
     auto truncate_first = [](hmira::halfedge_mesh& m) {
-        ASSERT_TRUE((hmira::truncate<hmira::halfedge_mesh, CT>(m, *CT::vertices(m).begin())));
+        ASSERT_TRUE((hmira::truncate<hmira::halfedge_mesh, CT>(m, *hmira::default_traits<hmira::halfedge_mesh>::vertices(m).begin())));
     };
     auto extrude_first = [](hmira::halfedge_mesh& m) {
-        ASSERT_TRUE((hmira::extrude<hmira::halfedge_mesh, CT>(m, *CT::faces(m).begin(), {.distance = 0.1})));
+        ASSERT_TRUE((hmira::extrude<hmira::halfedge_mesh, CT>(m, *hmira::default_traits<hmira::halfedge_mesh>::faces(m).begin(), {.distance = 0.1})));
     };
     auto bevel_first = [](hmira::halfedge_mesh& m) {
-        ASSERT_TRUE((hmira::bevel<hmira::halfedge_mesh, CT>(m, *CT::edges(m).begin(), {.width = 0.05})));
+        ASSERT_TRUE((hmira::bevel<hmira::halfedge_mesh, CT>(m, *hmira::default_traits<hmira::halfedge_mesh>::edges(m).begin(), {.width = 0.05})));
     };
     auto region_of_two = [](hmira::halfedge_mesh& m) {
-        auto it = CT::faces(m).begin();
+        auto it = hmira::default_traits<hmira::halfedge_mesh>::faces(m).begin();
         const auto f0 = *it;
         const auto f1 = CT::face(m, CT::opposite(m, CT::face_halfedge(m, f0)));
         const CT::face_handle fs[] = {f0, f1};

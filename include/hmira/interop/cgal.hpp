@@ -224,6 +224,11 @@ struct mesh_traits<CGAL::Surface_mesh<P>> {
         m.set_halfedge(v, m.opposite(out));
     }
     static void set_face_halfedge(mesh& m, FH f, HH h) { m.set_halfedge(f, h); }
+    /// The halfedge Surface_mesh stores for v (incoming), read and written as is, so that an
+    /// edit's rollback restores exactly what set_vertex_halfedge changed.
+    static HH stored_vertex_halfedge(const mesh& m, VH v) { return m.halfedge(v); }
+    /// Writes back a value read by stored_vertex_halfedge.
+    static void restore_vertex_halfedge(mesh& m, VH v, HH stored) { m.set_halfedge(v, stored); }
     static HH new_edge(mesh& m, VH a, VH b) {
         const HH h = m.add_edge(a, b);  // target b
         m.set_face(h, mesh::null_face());

@@ -213,6 +213,14 @@ struct traits_base {
         if (!m.has_vertex_status()) m.request_vertex_status();
         m.status(v).set_deleted(true);
     }
+    /// Requests the status bits erasing needs, so that an edit can erase (or roll back) later
+    /// without allocating. Called by the editing functions before their first change.
+    static void prepare_erase(Mesh& m) {
+        if (!m.has_edge_status()) m.request_edge_status();
+        if (!m.has_halfedge_status()) m.request_halfedge_status();
+        if (!m.has_face_status()) m.request_face_status();
+        if (!m.has_vertex_status()) m.request_vertex_status();
+    }
 
 private:
     template <class R>

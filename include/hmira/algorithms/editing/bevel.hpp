@@ -132,7 +132,9 @@ result<void> bevel_build(M& mesh, const Plan& plan, Out& out) {
         const auto s = split_edge<M, T>(mesh, h, lerp(a, b, sl.t));
         if (!s) return s.error();
         out.vertices.push_back(s.value().vertex);
-        if (sl.t_back < 0 || sl.t + sl.t_back == 1.0) continue;
+        // Meeting slides share their point in a flat bevel; a rounded one needs both (their end
+        // edges would otherwise join the same two vertices twice).
+        if (sl.t_back < 0 || (sl.t + sl.t_back == 1.0 && plan.segments == 1)) continue;
         const auto s2 = split_edge<M, T>(mesh, s.value().second, lerp(a, b, 1 - sl.t_back));
         if (!s2) return s2.error();
         out.vertices.push_back(s2.value().vertex);

@@ -64,7 +64,14 @@ public:
     }
     void record_target(const M& m, H h) { entries_.push_back({kind::target, h, H{}, T::target(m, h), F{}, 0}); }
     void record_face(const M& m, H h) { entries_.push_back({kind::face, h, H{}, V{}, T::face(m, h), 0}); }
-    void record_vertex_halfedge(const M& m, V v) { entries_.push_back({kind::vertex_halfedge, H{}, T::vertex_halfedge(m, v), v, F{}, 0}); }
+    void record_vertex_halfedge(const M& m, V v) {
+        // A model whose vertex_halfedge is derived from what it stores (CGAL keeps an incoming
+        // halfedge) offers the stored value as is; the rollback writes that back.
+        if constexpr (requires { T::stored_vertex_halfedge(m, v); })
+            entries_.push_back({kind::vertex_halfedge, H{}, T::stored_vertex_halfedge(m, v), v, F{}, 0});
+        else
+            entries_.push_back({kind::vertex_halfedge, H{}, T::vertex_halfedge(m, v), v, F{}, 0});
+    }
     void record_face_halfedge(const M& m, F f) { entries_.push_back({kind::face_halfedge, H{}, T::face_halfedge(m, f), V{}, f, 0}); }
     void record_position(const M& m, V v) {
         positions_.reserve(positions_.size() + 1);
@@ -104,10 +111,18 @@ public:
     void rollback(M& m) noexcept {
         for (auto it = entries_.rbegin(); it != entries_.rend(); ++it) {
             switch (it->what) {
-            case kind::next: T::set_next(m, it->h, it->old_h); break;
+            case kind::next:
+                // A new halfedge had no next yet; it is erased below.
+                if (it->old_h != T::null_halfedge()) T::set_next(m, it->h, it->old_h);
+                break;
             case kind::target: T::set_target(m, it->h, it->v); break;
             case kind::face: T::set_face(m, it->h, it->f); break;
-            case kind::vertex_halfedge: T::set_vertex_halfedge(m, it->v, it->old_h); break;
+            case kind::vertex_halfedge:
+                if constexpr (requires { T::restore_vertex_halfedge(m, it->v, it->old_h); })
+                    T::restore_vertex_halfedge(m, it->v, it->old_h);
+                else
+                    T::set_vertex_halfedge(m, it->v, it->old_h);
+                break;
             case kind::face_halfedge: T::set_face_halfedge(m, it->f, it->old_h); break;
             case kind::position:
                 if constexpr (position_mutable_mesh<M, T>) T::set_position(m, it->v, positions_[it->position]);

@@ -1,0 +1,428 @@
+// Atomicity of truncate, bevel and extrude (issue 13, item 1): every call either succeeds
+// with a valid mesh, or fails with the mesh unchanged as seen through the traits (the same live
+// handles with the same indices, connectivity and positions). Checked three ways: seeded
+// random selections on awkward meshes; a failure injected into the k-th inner operator call;
+// std::bad_alloc thrown from the k-th raw mutation, for every k of an edit.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <new>
+#include <random>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "editing/editing_support.hpp"
+#include "euler/euler_support.hpp"
+
+namespace {
+
+/// Every live element with its links and position, keyed by index. Index bounds, garbage and
+/// change counters are left out: the contract lets those differ after a rollback.
+struct live_state {
+    std::vector<long long> data;
+    std::vector<std::array<double, 3>> positions;
+    bool operator==(const live_state&) const = default;
+};
+
+template <class M, class T = hmira::default_traits<M>>
+live_state take_state(const M& m) {
+    live_state s;
+    auto hi = [&](typename T::halfedge_handle h) { return h == T::null_halfedge() ? -1LL : (long long)T::halfedge_index(m, h); };
+    auto fi = [&](typename T::face_handle f) { return f == T::null_face() ? -1LL : (long long)T::face_index(m, f); };
+    s.data.push_back((long long)T::vertex_count(m));
+    s.data.push_back((long long)T::edge_count(m));
+    s.data.push_back((long long)T::face_count(m));
+    for (auto v : T::vertices(m)) {
+        s.data.push_back((long long)T::vertex_index(m, v));
+        s.data.push_back(hi(T::vertex_halfedge(m, v)));
+        const auto p = T::position(m, v);
+        s.positions.push_back({double(p[0]), double(p[1]), double(p[2])});
+    }
+    for (auto h : T::halfedges(m)) {
+        s.data.push_back(hi(h));
+        s.data.push_back(hi(T::next(m, h)));
+        s.data.push_back(hi(T::prev(m, h)));
+        s.data.push_back((long long)T::vertex_index(m, T::target(m, h)));
+        s.data.push_back(fi(T::face(m, h)));
+    }
+    for (auto f : T::faces(m)) {
+        s.data.push_back(fi(f));
+        s.data.push_back(hi(T::face_halfedge(m, f)));
+        if constexpr (hmira::inner_ring_mesh<M, T>) {
+            std::vector<long long> rings;
+            for (auto r : T::inner_rings(m, f)) rings.push_back(hi(r));
+            std::sort(rings.begin(), rings.end());
+            s.data.insert(s.data.end(), rings.begin(), rings.end());
+        }
+        s.data.push_back(-2);
+    }
+    return s;
+}
+
+/// The model's traits, with test hooks: the k-th inner operator call of an edit fails
+/// (fail_inner_call, read by the editing code), or the k-th raw mutation throws bad_alloc.
+template <class M>
+struct faulty_traits : hmira::default_traits<M> {
+    using base = hmira::default_traits<M>;
+    using H = typename base::halfedge_handle;
+    using V = typename base::vertex_handle;
+    using F = typename base::face_handle;
+    using E = typename base::edge_handle;
+    using P = hmira::vec3<typename base::scalar>;
+    static inline long long fail_inner_at = -1, throw_at = -1;  // countdowns; -1: off
+    static inline long long inner_calls = 0, mutations = 0;
+    static void reset() { fail_inner_at = throw_at = -1; inner_calls = mutations = 0; }
+    static bool fail_inner_call() {
+        ++inner_calls;
+        return fail_inner_at >= 0 && fail_inner_at-- == 0;
+    }
+    static void tick() {
+        ++mutations;
+        if (throw_at >= 0 && throw_at-- == 0) throw std::bad_alloc();
+    }
+    static void set_next(M& m, H h, H n) { tick(); base::set_next(m, h, n); }
+    static void set_target(M& m, H h, V v) { tick(); base::set_target(m, h, v); }
+    static void set_face(M& m, H h, F f) { tick(); base::set_face(m, h, f); }
+    static void set_vertex_halfedge(M& m, V v, H h) { tick(); base::set_vertex_halfedge(m, v, h); }
+    static void set_face_halfedge(M& m, F f, H h) { tick(); base::set_face_halfedge(m, f, h); }
+    static void set_position(M& m, V v, const P& p) { tick(); base::set_position(m, v, p); }
+    static H new_edge(M& m, V a, V b) { tick(); return base::new_edge(m, a, b); }
+    static F new_face(M& m) { tick(); return base::new_face(m); }
+    static V add_vertex(M& m, const P& p) { tick(); return base::add_vertex(m, p); }
+    // Erasing only marks an element on every model and never allocates; the journal relies
+    // on that (its commit erases last), so erasures are counted but never throw.
+    static void erase_edge(M& m, E e) { ++mutations; base::erase_edge(m, e); }
+    static void erase_face(M& m, F f) { ++mutations; base::erase_face(m, f); }
+    static void erase_vertex(M& m, V v) { ++mutations; base::erase_vertex(m, v); }
+};
+
+template <class M>
+struct atomic_test : ::testing::Test {};
+TYPED_TEST_SUITE(atomic_test, hmira_test::all_models);
+
+#define HMIRA_REQUIRE_EDITING(M)                                                   \
+    if constexpr (!hmira::extrudable_mesh<M>) {                                    \
+        GTEST_SKIP() << "not an editable model (no Euler operators or triangles only)"; \
+        return;                                                                    \
+    }
+
+template <class M, class T = hmira::default_traits<M>>
+std::vector<typename T::vertex_handle> all_vertices(const M& m) {
+    std::vector<typename T::vertex_handle> out;
+    for (auto v : T::vertices(m)) out.push_back(v);
+    return out;
+}
+template <class M, class T = hmira::default_traits<M>>
+std::vector<typename T::edge_handle> all_edge_handles(const M& m) {
+    std::vector<typename T::edge_handle> out;
+    for (auto e : T::edges(m)) out.push_back(e);
+    return out;
+}
+template <class M, class T = hmira::default_traits<M>>
+std::vector<typename T::face_handle> all_face_handles(const M& m) {
+    std::vector<typename T::face_handle> out;
+    for (auto f : T::faces(m)) out.push_back(f);
+    return out;
+}
+
+/// One edit, named for messages, applied through traits T to a selection chosen by `rng`.
+enum class edit_kind { truncate, bevel1, bevel2, bevel3, extrude_region, extrude_individual };
+constexpr edit_kind all_edits[] = {edit_kind::truncate, edit_kind::bevel1, edit_kind::bevel2,
+                                   edit_kind::bevel3, edit_kind::extrude_region, edit_kind::extrude_individual};
+const char* name_of(edit_kind k) {
+    switch (k) {
+    case edit_kind::truncate: return "truncate";
+    case edit_kind::bevel1: return "bevel segments=1";
+    case edit_kind::bevel2: return "bevel segments=2";
+    case edit_kind::bevel3: return "bevel segments=3";
+    case edit_kind::extrude_region: return "extrude region";
+    case edit_kind::extrude_individual: return "extrude individual";
+    }
+    return "?";
+}
+
+/// A selection and options, fixed before the call so that the same edit can be replayed.
+template <class M>
+struct planned_edit {
+    using T = hmira::default_traits<M>;
+    edit_kind kind{};
+    std::vector<typename T::vertex_handle> vertices = {};
+    std::vector<typename T::edge_handle> edges = {};
+    std::vector<typename T::face_handle> faces = {};
+    double amount = 0.1;
+    bool clamp = true;
+};
+
+template <class M>
+planned_edit<M> plan_edit(const M& m, edit_kind kind, std::mt19937& rng, bool everything = false) {
+    planned_edit<M> p;
+    p.kind = kind;
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    auto pick = [&](auto all) {
+        std::shuffle(all.begin(), all.end(), rng);
+        if (!everything) all.resize(std::min<std::size_t>(all.size(), 1 + rng() % 5));
+        return all;
+    };
+    switch (kind) {
+    case edit_kind::truncate:
+        p.vertices = pick(all_vertices(m));
+        p.amount = u(rng) < 0.2 ? 0.5 : 0.05 + 0.9 * u(rng);
+        break;
+    case edit_kind::bevel1:
+    case edit_kind::bevel2:
+    case edit_kind::bevel3:
+        p.edges = pick(all_edge_handles(m));
+        p.amount = 0.02 + 0.6 * u(rng);
+        p.clamp = u(rng) < 0.8;
+        break;
+    case edit_kind::extrude_region:
+    case edit_kind::extrude_individual:
+        p.faces = pick(all_face_handles(m));
+        p.amount = (u(rng) < 0.5 ? -1 : 1) * (0.05 + u(rng));
+        break;
+    }
+    return p;
+}
+
+/// Runs the planned edit through traits T; returns the error, if any.
+template <class M, class T>
+std::optional<hmira::error> run(M& m, const planned_edit<M>& p) {
+    auto err = [](const auto& r) -> std::optional<hmira::error> {
+        if (r) return std::nullopt;
+        return r.error();
+    };
+    switch (p.kind) {
+    case edit_kind::truncate: return err(hmira::truncate<M, T>(m, p.vertices, {.fraction = p.amount}));
+    case edit_kind::bevel1: return err(hmira::bevel<M, T>(m, p.edges, {.width = p.amount, .segments = 1, .clamp_overlap = p.clamp}));
+    case edit_kind::bevel2: return err(hmira::bevel<M, T>(m, p.edges, {.width = p.amount, .segments = 2, .clamp_overlap = p.clamp}));
+    case edit_kind::bevel3: return err(hmira::bevel<M, T>(m, p.edges, {.width = p.amount, .segments = 3, .clamp_overlap = p.clamp}));
+    case edit_kind::extrude_region:
+        return err(hmira::extrude<M, T>(m, p.faces, {.distance = p.amount, .mode = hmira::extrude_mode::region}));
+    case edit_kind::extrude_individual:
+        return err(hmira::extrude<M, T>(m, p.faces, {.distance = p.amount, .mode = hmira::extrude_mode::individual}));
+    }
+    return std::nullopt;
+}
+
+/// The meshes the suites try: closed and convex, genus 1, open with near-degenerate geometry,
+/// and holes cut diagonally so that vertices are pinched between two boundary gaps.
+struct named_shape {
+    std::string name;
+    hmira_test::face_list shape;
+};
+std::vector<named_shape> shapes() {
+    std::vector<named_shape> out;
+    out.push_back({"box 2x2x1", hmira_test::lattice_box(2, 2, 1)});
+    out.push_back({"torus 6x4", hmira_test::torus(6, 4)});
+    auto g = hmira_test::grid(4, 3);
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> jitter(-0.2, 0.2);
+    for (auto& p : g.points) {
+        p.x += jitter(rng);
+        p.y += jitter(rng);
+        p.z += 0.3 * jitter(rng);
+    }
+    g.points[6].x = g.points[7].x - 1e-7;  // a near-zero edge
+    g.points[6].y = g.points[7].y;
+    out.push_back({"jittered open grid with a tiny edge", g});
+    // Faces 6 and 12 of a 5x5 grid touch at one corner only: removing the faces around that
+    // corner pinches it.
+    out.push_back({"grid with diagonal holes (pinched)", hmira_test::without_faces(hmira_test::grid(5, 5), [](std::size_t f) {
+                       return f == 7 || f == 11 || f == 18 || f == 22;
+                   })});
+    return out;
+}
+
+template <class M>
+std::string describe(const M& m, const planned_edit<M>& p) {
+    using T = hmira::default_traits<M>;
+    std::ostringstream o;
+    o << name_of(p.kind) << " amount " << p.amount << (p.clamp ? "" : " unclamped") << "; vertices";
+    for (auto v : p.vertices) o << ' ' << T::vertex_index(m, v);
+    o << "; edges";
+    for (auto e : p.edges) o << ' ' << T::edge_index(m, e);
+    o << "; faces";
+    for (auto f : p.faces) o << ' ' << T::face_index(m, f);
+    return o.str();
+}
+
+template <class M>
+bool build(M& m, const hmira_test::face_list& g) {
+    return hmira_test::add_face_list(m, g);
+}
+
+TYPED_TEST(atomic_test, random_edits_either_succeed_validly_or_change_nothing) {
+    using M = TypeParam;
+    HMIRA_REQUIRE_EDITING(M)
+    else {
+        using T = hmira::default_traits<M>;
+        std::mt19937 rng(1313);
+        std::size_t succeeded = 0, refused = 0;
+        for (const auto& s : shapes()) {
+            M base;
+            if (!build(base, s.shape)) continue;  // the model refuses the shape (pinched): nothing to edit
+            const long long chi = hmira_test::count_euler(base).lhs();
+            const std::size_t base_problems = hmira::validate<M, T>(base, {.check_geometry = false}).size();
+            for (auto kind : all_edits)
+                for (int trial = 0; trial < 12; ++trial) {
+                    M m = base;
+                    const auto p = plan_edit(m, kind, rng, trial == 0);
+                    const auto before = take_state(m);
+                    const auto e = run<M, T>(m, p);
+                    SCOPED_TRACE(s.name + ", " + name_of(kind) + ", trial " + std::to_string(trial));
+                    if (e) {
+                        ++refused;
+                        EXPECT_FALSE(e->message.empty());
+                        ASSERT_TRUE(take_state(m) == before) << "refused (" << e->message << ") but changed the mesh";
+                        continue;
+                    }
+                    ++succeeded;
+                    // A pinched input stays pinched where it was not edited: the same problems.
+                    const auto problems = hmira::validate<M, T>(m, {.check_geometry = false});
+                    ASSERT_EQ(problems.size(), base_problems) << describe(base, p) << hmira_test::describe(problems);
+                    for (const auto& q : problems) ASSERT_NE(q.message.find("separate fans"), std::string::npos) << q.message;
+                    ASSERT_EQ(hmira_test::count_euler(m).lhs(), chi) << "Euler-Poincare changed";
+                    if (s.name == "box 2x2x1" && (kind == edit_kind::truncate || (kind == edit_kind::bevel1 && p.clamp))) {
+                        EXPECT_TRUE((hmira_test::faces_point_outward<M, T>(m, {1, 1, 0.5})));
+                    }
+                }
+        }
+        EXPECT_GT(succeeded, 50u);
+        EXPECT_GT(refused, 5u);  // the pinched vertices and boundary edges must be refused sometimes
+    }
+}
+
+/// Runs the edit once to count its inner calls and raw mutations, then once per k with the
+/// k-th of them failing; each failed run must leave the mesh exactly as it was, and a later
+/// clean run must still succeed.
+template <class M>
+void check_every_fault(const M& base, const planned_edit<M>& p, const std::string& what) {
+    using FT = faulty_traits<M>;
+    SCOPED_TRACE(what);
+    FT::reset();
+    {
+        M m = base;
+        const auto e = run<M, FT>(m, p);
+        ASSERT_FALSE(e) << e->message;
+        ASSERT_TRUE(hmira_test::is_valid(m, {.check_geometry = false}));
+    }
+    const long long inner = FT::inner_calls, raw = FT::mutations;
+    ASSERT_GT(inner, 0);
+    ASSERT_GT(raw, 0);
+    const auto before = take_state(base);
+    for (long long k = 0; k < inner; ++k) {
+        M m = base;
+        FT::reset();
+        FT::fail_inner_at = k;
+        const auto e = run<M, FT>(m, p);
+        ASSERT_TRUE(e) << "inner call " << k << " was made to fail but the edit succeeded";
+        ASSERT_TRUE(take_state(m) == before) << "inner call " << k << " of " << inner << " failed: mesh changed";
+        FT::reset();
+        ASSERT_FALSE((run<M, FT>(m, p))) << "the edit no longer applies after the rollback of inner call " << k;
+        ASSERT_TRUE(hmira_test::is_valid(m, {.check_geometry = false}));
+    }
+    long long throwing = 0;
+    for (long long k = 0; k < raw; ++k) {
+        M m = base;
+        FT::reset();
+        FT::throw_at = k;
+        bool threw = false;
+        try {
+            (void)run<M, FT>(m, p);
+        } catch (const std::bad_alloc&) {
+            threw = true;
+        }
+        if (!threw) continue;  // the k-th mutation is an erasure, which never throws
+        ++throwing;
+        ASSERT_TRUE(take_state(m) == before) << "bad_alloc from mutation " << k << " of " << raw << ": mesh changed";
+        FT::reset();
+        ASSERT_FALSE((run<M, FT>(m, p))) << "the edit no longer applies after the rollback of mutation " << k;
+        ASSERT_TRUE(hmira_test::is_valid(m, {.check_geometry = false}));
+    }
+    EXPECT_GT(throwing, raw / 2);
+}
+
+TYPED_TEST(atomic_test, a_failure_or_bad_alloc_at_every_step_of_an_edit_leaves_the_mesh_unchanged) {
+    using M = TypeParam;
+    HMIRA_REQUIRE_EDITING(M)
+    else {
+        using T = hmira::default_traits<M>;
+        M box;
+        ASSERT_TRUE(build(box, hmira_test::lattice_box(2, 1, 1)));
+        M open;
+        ASSERT_TRUE(build(open, hmira_test::grid(3, 2)));
+        std::mt19937 rng(99);
+        for (auto kind : all_edits) {
+            // Deterministic selections of a few elements (the whole box for one bevel).
+            auto p = plan_edit(box, kind, rng);
+            if (kind == edit_kind::bevel3) {  // the three edges of one corner: a grid-filled patch
+                p.edges.clear();
+                const auto v = *T::vertices(box).begin();
+                auto h = T::vertex_halfedge(box, v);
+                for (int i = 0; i < 3; ++i, h = T::next(box, T::opposite(box, h))) p.edges.push_back(T::edge(box, h));
+            }
+            p.clamp = true;
+            if (kind == edit_kind::truncate) p.amount = 0.3;
+            if (kind == edit_kind::bevel1 || kind == edit_kind::bevel2 || kind == edit_kind::bevel3) p.amount = 0.2;
+            if (kind == edit_kind::extrude_region) {  // two faces sharing an edge
+                const auto f = all_face_handles<M, T>(box)[0];
+                p.faces = {f, T::face(box, T::opposite(box, T::face_halfedge(box, f)))};
+            }
+            check_every_fault(box, p, std::string("box, ") + name_of(kind));
+        }
+        // Boundary vertices and an open region.
+        planned_edit<M> t{.kind = edit_kind::truncate, .vertices = all_vertices<M, T>(open), .edges = {}, .faces = {}, .amount = 0.25, .clamp = true};
+        check_every_fault(open, t, "open grid, truncate all");
+        planned_edit<M> x{.kind = edit_kind::extrude_region, .vertices = {}, .edges = {}, .faces = all_face_handles<M, T>(open), .amount = 0.5, .clamp = true};
+        check_every_fault(open, x, "open grid, extrude all as a region");
+    }
+}
+
+/// Every line of include/ that discards a call's result with (void) or dereferences a call's
+/// result with ->, which for a result<T> would throw or hide an error.
+TEST(atomic_source, no_result_is_discarded_or_dereferenced_unchecked_in_include) {
+    const std::filesystem::path root = std::filesystem::path(HMIRA_SOURCE_DIR) / "include";
+    ASSERT_TRUE(std::filesystem::is_directory(root)) << root;
+    const std::regex discarded(R"(\(void\)\s*[A-Za-z_][A-Za-z_0-9:]*\s*(<[^;]*>)?\s*\()");
+    const std::regex arrow_on_call(R"([A-Za-z_0-9>]\s*\([^()]*(\([^()]*\)[^()]*)*\)\s*->\s*[A-Za-z_])");
+    // `*begin()` and the like dereference iterators, not results.
+    const std::regex star_on_call(R"((=|return|\()\s*\*\s*(?!begin\b|end\b)[A-Za-z_][A-Za-z_0-9:]*\s*(<[^;]*>)?\s*\()");
+    std::vector<std::string> hits;
+    std::size_t files = 0;
+    for (const auto& entry : std::filesystem::recursive_directory_iterator(root)) {
+        if (!entry.is_regular_file() || entry.path().extension() != ".hpp") continue;
+        ++files;
+        std::ifstream in(entry.path());
+        std::string line;
+        for (int n = 1; std::getline(in, line); ++n) {
+            const auto code = line.substr(0, line.find("//"));
+            // A trailing return type (`[...](...) -> T {`, `auto f(...) -> T`) is no dereference.
+            const bool trailing_return =
+                std::regex_search(code, std::regex(R"(\)\s*->\s*(decltype\b|[A-Za-z_:]+\s*<[^;]*>\s*(\{|$|requires)|[A-Za-z_:]+\s*(\{|$|requires)))"));
+            if (std::regex_search(code, discarded) || (!trailing_return && std::regex_search(code, arrow_on_call)) ||
+                std::regex_search(code, star_on_call))
+                hits.push_back(entry.path().lexically_relative(root).string() + ":" + std::to_string(n) + ": " + line);
+        }
+    }
+    EXPECT_GT(files, 50u);
+    std::ostringstream all;
+    for (const auto& h : hits) all << "\n  " << h;
+    EXPECT_TRUE(hits.empty()) << hits.size() << " line(s):" << all.str();
+}
+
+TEST(atomic_source, the_pattern_catches_the_forms_it_forbids) {
+    // The same expressions as above, on known lines: the check must be able to fail.
+    const std::regex discarded(R"(\(void\)\s*[A-Za-z_][A-Za-z_0-9:]*\s*(<[^;]*>)?\s*\()");
+    const std::regex arrow_on_call(R"([A-Za-z_0-9>]\s*\([^()]*(\([^()]*\)[^()]*)*\)\s*->\s*[A-Za-z_])");
+    EXPECT_TRUE(std::regex_search("(void)make_edge_face<M, T>(m, a, b);", discarded));
+    EXPECT_TRUE(std::regex_search("(void)kill_edge_face<M, T>(m, T::opposite(m, h));", discarded));
+    EXPECT_TRUE(std::regex_search("const auto ux = make_edge_vertex<M, T>(m, c, p)->halfedge;", arrow_on_call));
+    EXPECT_TRUE(std::regex_search("x = make_edge_face<M, T>(mesh, h0, h1)->face;", arrow_on_call));
+    EXPECT_FALSE(std::regex_search("(void)m;", discarded));
+}
+
+}  // namespace
