@@ -44,6 +44,8 @@ struct smooth_result {
     std::size_t moved = 0;  ///< vertices free to move
 };
 
+/// A mesh the smoothers can run on: halfedge navigation (neighbours, boundary), movable
+/// positions, dense vertex indices. Every halfedge model qualifies, TriMesh included.
 template <class M, class T = default_traits<M>>
 concept smoothable_mesh = halfedge_navigable_mesh<M, T> && position_mutable_mesh<M, T> && vertex_index_mesh<M, T>;
 
