@@ -23,7 +23,9 @@ struct loop_options {
 
 /// What loop_subdivide did.
 struct loop_result {
-    std::size_t vertices = 0, edges = 0, faces = 0;  ///< counts after the last level
+    std::size_t vertices = 0;  ///< vertices after the last level
+    std::size_t edges = 0;     ///< edges after the last level
+    std::size_t faces = 0;     ///< faces after the last level
 };
 
 /// Whether every face of the mesh is a triangle without rings. O(F).

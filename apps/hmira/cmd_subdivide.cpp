@@ -1,0 +1,44 @@
+// apps/hmira/cmd_subdivide.cpp
+// `hmira subdivide`: Loop subdivision of a triangle mesh, k levels (each quadruples the faces).
+#include <hmira/algorithms/subdivision/loop.hpp>
+
+#include "cli.hpp"
+
+namespace {
+
+using namespace hmira_cli;
+
+struct subdivide_args {
+    std::string input, output, scheme = "loop";
+    std::size_t levels = 1;
+};
+
+int run_subdivide(const subdivide_args& a, const common_options& o) {
+    int code = ok;
+    auto loaded = load(a.input, o, code);
+    if (!loaded) return code;
+    return run_edit(*loaded, a.input, a.output, "subdividing " + a.input, o,
+                    [&](hmira::halfedge_mesh& mesh, int& c) -> std::optional<edit_outcome> {
+                        auto r = hmira::loop_subdivide(mesh, {.levels = a.levels});
+                        if (!r) {
+                            c = report(exit_code_for(r.error()), a.input + ": " + r.error().message);
+                            return std::nullopt;
+                        }
+                        return edit_outcome{"subdivided " + count_of(a.levels, "level", "levels") + " (" + a.scheme + ")", {}};
+                    });
+}
+
+const bool registered = register_command({
+    "subdivide", "Subdivide a triangle mesh (Loop), k levels",
+    "hmira subdivide bunny.off smooth.off --scheme loop -k 2", 86,
+    [](CLI::App& sub) {
+        auto a = std::make_shared<subdivide_args>();
+        sub.add_option("input", a->input, "triangle mesh file to read (manifold, consistently oriented)")->required();
+        sub.add_option("output", a->output, "mesh file to write: the input's vertices first, in file order, then the new ones")->required();
+        sub.add_option("--scheme", a->scheme, "subdivision scheme (loop)")->check(CLI::IsMember({"loop"}));
+        sub.add_option("-k,--levels", a->levels, "levels of subdivision, 1 to 10 (each multiplies the faces by 4)")
+            ->check(CLI::Range(std::size_t(1), std::size_t(10)));
+        return [a](const common_options& o) { return run_subdivide(*a, o); };
+    }});
+
+}  // namespace

@@ -1,0 +1,58 @@
+// `hmira subdivide` end to end: a tetrahedron, two Loop levels, has 4 * 16 faces and
+// 4 + 6 + 24 = 34 vertices (read back with the library); a quad mesh is refused in one line
+// with exit code 1; an unknown scheme is a usage error.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+
+#include <hmira/io/mesh_io.hpp>
+#include <hmira/meshes/face_vertex_mesh.hpp>
+
+#include "io/io_support.hpp"
+
+namespace {
+
+using hmira_test::scratch_dir;
+
+struct run_result {
+    int code = -1;
+    std::string out, err;
+};
+
+run_result hmira(const scratch_dir& dir, const std::string& args) {
+    const auto out = dir / ".stdout", err = dir / ".stderr";
+    const std::string cmd = "cd '" + dir.path().string() + "' && '" + std::string(HMIRA_CLI) + "' " + args + " >'" + out.string() +
+                            "' 2>'" + err.string() + "' </dev/null";
+    const int status = std::system(cmd.c_str());
+    run_result r;
+    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    r.out = hmira_test::read_bytes(out);
+    r.err = hmira_test::read_bytes(err);
+    return r;
+}
+
+TEST(cli_subdivide, two_loop_levels_of_a_tetrahedron) {
+    scratch_dir dir;
+    hmira_test::write_bytes(dir / "tet.off", "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n");
+    const auto r = hmira(dir, "subdivide tet.off out.off --scheme loop -k 2");
+    ASSERT_EQ(r.code, 0) << r.err;
+    hmira::face_vertex_mesh m;
+    ASSERT_TRUE(hmira::io::read_mesh(m, dir / "out.off"));
+    EXPECT_EQ(m.face_count(), 64u);
+    EXPECT_EQ(m.vertex_count(), 34u);  // 4 + 6 edges, then 10 + 24 edges
+}
+
+TEST(cli_subdivide, refusals) {
+    scratch_dir dir;
+    hmira_test::write_bytes(dir / "quad.off", "OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n");
+    auto r = hmira(dir, "subdivide quad.off out.off");
+    EXPECT_EQ(r.code, 1) << r.err;
+    EXPECT_NE(r.err.find("face 0 is not a triangle"), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "out.off"));
+    r = hmira(dir, "subdivide quad.off out.off --scheme butterfly");
+    EXPECT_EQ(r.code, 2) << r.err;
+}
+
+}  // namespace
