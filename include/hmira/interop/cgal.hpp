@@ -239,6 +239,12 @@ struct mesh_traits<CGAL::Surface_mesh<P>> {
     static void erase_edge(mesh& m, EH e) { if (!m.is_removed(e)) m.remove_edge(e); }
     static void erase_face(mesh& m, FH f) { if (!m.is_removed(f)) m.remove_face(f); }
     static void erase_vertex(mesh& m, VH v) { if (!m.is_removed(v)) m.remove_vertex(v); }
+    /// Whether the element was removed (Surface_mesh's is_removed), for an index below the
+    /// bound. O(1).
+    static bool is_removed(const mesh& m, VH v) { return m.is_removed(v); }
+    static bool is_removed(const mesh& m, FH f) { return m.is_removed(f); }
+    static bool is_removed(const mesh& m, EH e) { return m.is_removed(e); }
+    static bool is_removed(const mesh& m, HH h) { return m.is_removed(m.edge(h)); }
 };
 
 }  // namespace hmira

@@ -213,6 +213,12 @@ struct traits_base {
         if (!m.has_vertex_status()) m.request_vertex_status();
         m.status(v).set_deleted(true);
     }
+    /// Whether the element is marked deleted in OpenMesh's status (false while that status is
+    /// not requested: nothing can have been deleted). O(1).
+    static bool is_removed(const Mesh& m, VH v) { return m.has_vertex_status() && m.status(v).deleted(); }
+    static bool is_removed(const Mesh& m, FH f) { return m.has_face_status() && m.status(f).deleted(); }
+    static bool is_removed(const Mesh& m, EH e) { return m.has_edge_status() && m.status(e).deleted(); }
+    static bool is_removed(const Mesh& m, HH h) { return m.has_edge_status() && m.status(m.edge_handle(h)).deleted(); }
     /// Requests the status bits erasing needs, so that an edit can erase (or roll back) later
     /// without allocating. Called by the editing functions before their first change.
     static void prepare_erase(Mesh& m) {

@@ -369,8 +369,8 @@ result<bevel_result<M, T>> bevel(M& mesh, const R& edges, const bevel_options& o
     de::index_set bevelled;
     for (auto e0 : edges) {
         const typename T::edge_handle e = e0;
-        if (T::edge_index(mesh, e) >= T::edge_index_bound(mesh))
-            return fail(errc::invalid_handle, "bevel: edge " + std::to_string(T::edge_index(mesh, e)) + " does not exist",
+        if (T::edge_index(mesh, e) >= T::edge_index_bound(mesh) || du::known_removed<M, T>(mesh, e))
+            return fail(errc::invalid_handle, "bevel: edge " + std::to_string(T::edge_index(mesh, e)) + " does not exist (out of range or deleted)",
                         static_cast<long long>(T::edge_index(mesh, e)));
         const auto h = T::edge_halfedge(mesh, e);
         if (T::face(mesh, h) == T::null_face() || T::face(mesh, T::opposite(mesh, h)) == T::null_face())

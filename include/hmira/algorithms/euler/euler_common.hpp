@@ -4,6 +4,7 @@
 // Include hmira/algorithms/euler/euler.hpp for all operators at once.
 #pragma once
 
+#include <concepts>
 #include <cstddef>
 #include <ranges>
 #include <string>
@@ -78,24 +79,36 @@ std::string name(const char* kind, const M& m, Handle h) {
     return out;
 }
 
-/// A handle the operator can work with: not null and, where the model has indices, in range.
-/// (A deleted element cannot be told apart through the traits; passing one is undefined.)
+/// Whether the traits can tell that x was erased (optional query `T::is_removed(m, x)`:
+/// hmira's deleted flags, OpenMesh's status, CGAL's is_removed) and say it was. A model
+/// without the query cannot tell; passing it a deleted element stays undefined there.
+template <class M, class T, class Handle>
+bool known_removed(const M& m, Handle x) {
+    if constexpr (requires { { T::is_removed(m, x) } -> std::convertible_to<bool>; }) return T::is_removed(m, x);
+    else { (void)m; (void)x; return false; }
+}
+
+/// A handle the operator can work with: not null, where the model has indices in range, and
+/// not erased where the model can tell (known_removed).
 template <class M, class T>
 bool usable(const M& m, typename T::halfedge_handle h) {
     if (h == T::null_halfedge()) return false;
-    if constexpr (halfedge_index_mesh<M, T>) return T::halfedge_index(m, h) < T::halfedge_index_bound(m);
-    else return true;
+    if constexpr (halfedge_index_mesh<M, T>)
+        if (T::halfedge_index(m, h) >= T::halfedge_index_bound(m)) return false;
+    return !known_removed<M, T>(m, h);
 }
 template <class M, class T>
 bool usable(const M& m, typename T::vertex_handle v) {
-    if constexpr (vertex_index_mesh<M, T>) return T::vertex_index(m, v) < T::vertex_index_bound(m);
-    else { (void)m; (void)v; return true; }
+    if constexpr (vertex_index_mesh<M, T>)
+        if (T::vertex_index(m, v) >= T::vertex_index_bound(m)) return false;
+    return !known_removed<M, T>(m, v);
 }
 template <class M, class T>
 bool usable(const M& m, typename T::face_handle f) {
     if (f == T::null_face()) return false;
-    if constexpr (face_index_mesh<M, T>) return T::face_index(m, f) < T::face_index_bound(m);
-    else return true;
+    if constexpr (face_index_mesh<M, T>)
+        if (T::face_index(m, f) >= T::face_index_bound(m)) return false;
+    return !known_removed<M, T>(m, f);
 }
 
 template <class M, class T>

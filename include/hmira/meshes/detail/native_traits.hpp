@@ -85,6 +85,13 @@ struct native_halfedge_traits : native_element_traits<Mesh> {
     static void erase_edge(mesh& m, edge_handle e) { m.erase_edge(e); }
     static void erase_face(mesh& m, face_handle f) { m.erase_face(f); }
     static void erase_vertex(mesh& m, vertex_handle v) { m.erase_vertex(v); }
+
+    /// Whether the element was erased (optional traits query: operators refuse such handles
+    /// with errc::invalid_handle). Meaningful for an index below the bound. O(1).
+    static bool is_removed(const mesh& m, vertex_handle v) { return !m.is_valid(v); }
+    static bool is_removed(const mesh& m, face_handle f) { return !m.is_valid(f); }
+    static bool is_removed(const mesh& m, edge_handle e) { return !m.is_valid(e); }
+    static bool is_removed(const mesh& m, halfedge_handle h) { return !m.is_valid(h); }
 };
 
 }  // namespace hmira::detail
