@@ -20,14 +20,14 @@ struct delaunay_args {
 
 /// x y [z] per line, separated by blanks or commas; '#' starts a comment; in a .csv the first
 /// line may be a header (hmira/io/points.hpp).
-hmira::result<std::vector<hmira::vec3<double>>> read_points_text(const std::string& path, bool csv) {
-    return hmira::io::read_points_text(path, {.csv = csv});
+hmira::result<std::vector<hmira::vec3<double>>> read_points_text(const std::string& path, bool csv, std::uint64_t max_input_bytes) {
+    return hmira::io::read_points_text(path, {.csv = csv, .max_input_bytes = max_input_bytes});
 }
 
 hmira::result<std::vector<hmira::vec3<double>>> read_points(const std::string& path, const common_options& o) {
     std::string ext = std::filesystem::path(path).extension().string();
     for (auto& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    if (ext == ".xyz" || ext == ".txt" || ext == ".csv") return read_points_text(path, ext == ".csv");
+    if (ext == ".xyz" || ext == ".txt" || ext == ".csv") return read_points_text(path, ext == ".csv", o.max_input_bytes);
     if (ext == ".ply") {
         auto soup = hmira::io::read_soup(path, {.max_input_bytes = o.max_input_bytes});
         if (!soup) return soup.error();

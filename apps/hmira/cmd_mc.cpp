@@ -84,8 +84,8 @@ std::optional<hmira::grid_geometry> raw_geometry(const mc_args& a, int& code) {
     return g;
 }
 
-hmira::result<any_grid> read_raw_volume(const mc_args& a, const hmira::grid_geometry& g) {
-    const hmira::io::raw_options r{.big_endian = a.endian == "big"};
+hmira::result<any_grid> read_raw_volume(const mc_args& a, const hmira::grid_geometry& g, std::uint64_t max_input_bytes) {
+    const hmira::io::raw_options r{.big_endian = a.endian == "big", .max_input_bytes = max_input_bytes};
     auto as = [&]<class T>(T) -> hmira::result<any_grid> {
         auto grid = hmira::io::read_raw<T>(a.source, g, r);
         if (!grid) return grid.error();
@@ -101,14 +101,14 @@ hmira::result<any_grid> read_raw_volume(const mc_args& a, const hmira::grid_geom
     return as(float{});
 }
 
-hmira::result<hmira::dense_grid<float>> make_grid(const mc_args& a) {
+hmira::result<hmira::dense_grid<float>> make_grid(const mc_args& a, std::uint64_t max_input_bytes) {
     if (a.source == "sphere") return hmira::sample_function(hmira::cube_geometry(a.resolution, -1.5, 1.5), hmira::sphere_field{});
     if (a.source == "torus") return hmira::sample_function(hmira::cube_geometry(a.resolution, -1.5, 1.5), hmira::torus_field{});
     if (a.source == "gyroid") return hmira::sample_function(hmira::cube_geometry(a.resolution, -6.0, 6.0), hmira::gyroid_field{});
     const std::filesystem::path p(a.source);
     std::error_code ec;
     if (std::filesystem::is_directory(p, ec)) return hmira::fail(hmira::errc::io_error, a.source + ": is a directory, not a volume file");
-    if (ends_with_lower(a.source, ".inr") || ends_with_lower(a.source, ".inr.gz")) return hmira::io::read_inr(p);
+    if (ends_with_lower(a.source, ".inr") || ends_with_lower(a.source, ".inr.gz")) return hmira::io::read_inr(p, {.max_input_bytes = max_input_bytes});
     return hmira::fail(hmira::errc::invalid_argument, a.source + ": not a shape name (sphere, torus, gyroid) nor a .inr, .inr.gz or .raw volume");
 }
 
@@ -121,8 +121,8 @@ int run_mc(const mc_args& a, const common_options& o) {
         int code = ok;
         const auto g = raw_geometry(a, code);
         if (!g) return code;
-        grid = read_raw_volume(a, *g);
-    } else if (auto g = make_grid(a)) {
+        grid = read_raw_volume(a, *g, o.max_input_bytes);
+    } else if (auto g = make_grid(a, o.max_input_bytes)) {
         grid = any_grid(std::move(*g));
     } else {
         grid = g.error();

@@ -134,7 +134,7 @@ public:
         for (;;) {
             if (b.size() == b.capacity()) {
                 if (b.size() > max_bytes)
-                    return fail(errc::io_error, name + ": not a regular file, and longer than the input limit of " + std::to_string(max_bytes) +
+                    return fail(errc::unsupported, name + ": not a regular file, and longer than the input limit of " + std::to_string(max_bytes) +
                                                     " bytes (max_input_bytes)");
                 if (!b.grow_towards(limit))
                     return fail(errc::io_error, name + ": not enough memory to read it (" + std::to_string(b.size()) + " bytes so far)");
