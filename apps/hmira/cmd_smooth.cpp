@@ -49,9 +49,9 @@ const bool registered = register_command({
         sub.add_option("output", a->output, "mesh file to write (same vertices and faces, moved)")->required();
         sub.add_option("--method", a->method, "taubin (keeps the volume) or laplacian (shrinks)")->check(CLI::IsMember({"taubin", "laplacian"}));
         sub.add_option("--weights", a->weights, "uniform or cotangent (triangles only)")->check(CLI::IsMember({"uniform", "cotangent"}));
-        sub.add_option("--iterations", a->iterations, "smoothing steps (Taubin: lambda/mu pairs)");
-        sub.add_option("--lambda", a->lambda, "step size, in (0, 1]");
-        sub.add_option("--mu", a->mu, "Taubin's inflating step, in [-1, -lambda)");
+        sub.add_option("--iterations", a->iterations, "smoothing steps (Taubin: lambda/mu pairs)")->check(whole_number(0, 1000000));
+        sub.add_option("--lambda", a->lambda, "step size, in (0, 1]")->check(finite_number("in (0, 1]", [](double x) { return x > 0 && x <= 1; }));
+        sub.add_option("--mu", a->mu, "Taubin's inflating step, in [-1, -lambda)")->check(finite_number("in [-1, 0)", [](double x) { return x >= -1 && x < 0; }));
         sub.add_flag("--move-boundary", a->move_boundary, "let boundary vertices move too");
         sub.add_option("--fix", a->fixed, "keep vertex N exactly where it is (0-based, file order; repeatable, or N,M,...)")
             ->delimiter(',')

@@ -51,7 +51,7 @@ void expect_one_line_error(const run_result& r, const std::string& part) {
     EXPECT_NE(r.err.find(part), std::string::npos) << "'" << part << "' not in: " << r.err;
 }
 
-const std::vector<std::string> subcommands = {"info", "validate", "convert", "generate", "flip", "delaunay", "mc", "truncate", "bevel", "extrude", "voxelize"};
+const std::vector<std::string> subcommands = {"info", "validate", "convert", "generate", "flip", "delaunay", "mc", "truncate", "bevel", "extrude", "voxelize", "view", "triangulate", "fill-holes", "subdivide", "smooth"};
 
 TEST(cli, every_subcommand_has_help_with_an_example_and_the_common_options) {
     scratch_dir dir;
