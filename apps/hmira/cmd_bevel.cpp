@@ -161,9 +161,12 @@ int run_bevel(const bevel_args& a, const common_options& o) {
             c = report(input_exit_code(r.error()), a.input + ": " + with_edge_ends(r.error(), mesh));
             return std::nullopt;
         }
-        char width[32];
-        std::snprintf(width, sizeof width, "%.6g", r->width);
-        return edit_outcome{"bevelled " + count_of(chosen->size(), "edge", "edges") + " at width " + width, {}};
+        // The requested width, the smallest one the clamp left, and how many edges it limited.
+        char widths[96];
+        std::snprintf(widths, sizeof widths, "width %.6g requested, smallest used %.6g", r.value().requested_width, r.value().width);
+        return edit_outcome{"bevelled " + count_of(chosen->size(), "edge", "edges") + ": " + widths + ", " +
+                                count_of(r.value().limited_edges, "edge", "edges") + " limited by the clamp",
+                            {}};
     });
 }
 

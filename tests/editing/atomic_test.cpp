@@ -382,6 +382,46 @@ TYPED_TEST(atomic_test, a_failure_or_bad_alloc_at_every_step_of_an_edit_leaves_t
     }
 }
 
+TYPED_TEST(atomic_test, deleted_handles_are_refused_as_invalid_handles_where_the_model_can_tell) {
+    using M = TypeParam;
+    HMIRA_REQUIRE_EDITING(M)
+    else {
+        using T = hmira::default_traits<M>;
+        M m;
+        ASSERT_TRUE(build(m, hmira_test::lattice_box(1, 1, 1)));
+        // Grow a spike out of a corner and kill it again: its vertex and edge are now deleted.
+        const auto corner = T::face_halfedge(m, *T::faces(m).begin());
+        const auto spike = hmira::make_edge_vertex<M, T>(m, corner, {0.5, 0.5, 3});
+        ASSERT_TRUE(spike);
+        const auto dead_vertex = spike.value().vertex;
+        const auto dead_halfedge = spike.value().halfedge;
+        const auto dead_edge = T::edge(m, dead_halfedge);
+        ASSERT_TRUE((hmira::kill_edge_vertex<M, T>(m, dead_halfedge)));
+        const auto before = take_state(m);
+        const typename T::vertex_handle vs[] = {dead_vertex};
+        auto t = hmira::truncate<M, T>(m, vs);
+        ASSERT_FALSE(t);
+        EXPECT_EQ(t.error().code, hmira::errc::invalid_handle) << t.error().message;
+        auto b = hmira::bevel<M, T>(m, dead_edge);
+        ASSERT_FALSE(b);
+        EXPECT_EQ(b.error().code, hmira::errc::invalid_handle) << b.error().message;
+        auto e = hmira::make_edge_vertex<M, T>(m, dead_halfedge, {0, 0, 0});
+        ASSERT_FALSE(e);
+        EXPECT_EQ(e.error().code, hmira::errc::invalid_handle) << e.error().message;
+        auto k = hmira::kill_edge_vertex<M, T>(m, dead_halfedge);
+        ASSERT_FALSE(k);
+        EXPECT_EQ(k.error().code, hmira::errc::invalid_handle) << k.error().message;
+        EXPECT_TRUE(take_state(m) == before);
+        // A deleted face: merge two faces with killEF and extrude the one that went.
+        const auto h = T::face_halfedge(m, *T::faces(m).begin());
+        const auto gone = T::face(m, h);  // killEF(h) keeps the face across h
+        ASSERT_TRUE((hmira::kill_edge_face<M, T>(m, h)));
+        auto x = hmira::extrude<M, T>(m, gone, {.distance = 1});
+        ASSERT_FALSE(x);
+        EXPECT_EQ(x.error().code, hmira::errc::invalid_handle) << x.error().message;
+    }
+}
+
 /// Every line of include/ that discards a call's result with (void) or dereferences a call's
 /// result with ->, which for a result<T> would throw or hide an error.
 TEST(atomic_source, no_result_is_discarded_or_dereferenced_unchecked_in_include) {
