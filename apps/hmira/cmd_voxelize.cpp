@@ -25,6 +25,8 @@ struct voxelize_args {
     /// an iso-surface of the voxels (hmira mc) closed.
     std::size_t padding = 2;
     bool surface = false;
+    /// surface or conservative (--surface is an alias of --mode surface).
+    std::string mode = "conservative";
     bool fill_open = false;
 };
 
@@ -66,7 +68,8 @@ int run_voxelize(const voxelize_args& a, const common_options& o) {
     auto grid = hmira::voxel_grid_around(mesh, a.resolution, a.padding);
     // --resolution and --padding were checked on the command line: what is left is the mesh.
     if (!grid) return report(input_exit_code(grid.error()), a.input + ": " + grid.error().message);
-    const hmira::voxelize_options options{.mode = a.surface ? hmira::voxelize_mode::surface : hmira::voxelize_mode::solid,
+    const bool surface = a.surface || a.mode == "surface";
+    const hmira::voxelize_options options{.mode = surface ? hmira::voxelize_mode::surface : hmira::voxelize_mode::solid,
                                           .open_mesh = a.fill_open ? hmira::open_mesh_fill::winding_number : hmira::open_mesh_fill::surface_only,
                                           .allow_degenerate = true,
                                           .threads = static_cast<unsigned>(o.threads)};
@@ -117,7 +120,10 @@ const bool registered = register_command({
             ->capture_default_str()
             ->check(whole_number(1, 2048));
         sub.add_option("--padding", a->padding, "voxels added on every side of the bounding box (the outer one of 2 stays empty even where the surface lies on the box)")->capture_default_str()->check(whole_number(0, 1024));
-        sub.add_flag("--surface", a->surface, "only the voxels the surface touches (default: solid, also the inside of a closed mesh)");
+        auto* mode = sub.add_option("--mode", a->mode,
+                       "surface: the voxels the surface touches; conservative (default): those and every voxel whose centre is inside a closed mesh")
+            ->check(CLI::IsMember({"surface", "conservative"}));
+        sub.add_flag("--surface", a->surface, "alias of --mode surface")->excludes(mode);
         sub.add_flag("--fill-open", a->fill_open, "solid mode on a mesh with holes: fill where the winding number is at least 1/2 (default: surface only, with a note)");
         return [a](const common_options& o) { return run_voxelize(*a, o); };
     }});

@@ -376,7 +376,7 @@ def write_mesh(path: Any, mesh: Any, *, ascii: bool = False, big_endian: bool = 
 
 
 def voxelize(vertices: Any, faces: Any = None, *, resolution: Optional[int] = None, pitch: Optional[float] = None,
-             mode: str = "solid", fill_open: bool = False, threads: int = 0) -> Tuple[np.ndarray, np.ndarray, float]:
+             mode: str = "conservative", fill_open: bool = False, threads: int = 0) -> Tuple[np.ndarray, np.ndarray, float]:
     """Voxelize a triangle or polygon mesh on a cubic grid around its bounding box.
 
     Parameters
@@ -387,9 +387,10 @@ def voxelize(vertices: Any, faces: Any = None, *, resolution: Optional[int] = No
         Voxels along the longest side of the bounding box (default 256, as the CLI).
     pitch : float, keyword-only
         Voxel size instead of `resolution`.
-    mode : {"solid", "surface"}, keyword-only
-        "surface": the voxels the surface touches (exact triangle-box test); "solid" (the
-        CLI's default): those plus every voxel whose centre lies inside a closed mesh.
+    mode : {"conservative", "surface"}, keyword-only
+        The CLI's ``--mode``. "surface": the voxels the surface touches (exact triangle-box
+        test); "conservative" (the default, a solid): those plus every voxel whose centre lies
+        inside a closed mesh.
     fill_open : bool, keyword-only
         Solid mode on a mesh with holes: fill where the winding number is at least 1/2
         (default: surface voxels only, as the CLI).

@@ -274,7 +274,7 @@ using vertex_array = nb::ndarray<const double, nb::ndim<2>, nb::c_contig, nb::de
 
 nb::tuple voxelize(const vertex_array& vertices, nb::handle faces, std::optional<std::size_t> resolution, std::optional<double> pitch,
                    const std::string& mode, bool fill_open, unsigned threads) {
-    if (mode != "solid" && mode != "surface") value_error("voxelize: mode must be 'solid' or 'surface', got '" + mode + "'");
+    if (mode != "conservative" && mode != "surface") value_error("voxelize: mode must be 'conservative' or 'surface', got '" + mode + "'");
     if (resolution && pitch) value_error("voxelize: give resolution or pitch, not both");
     if (resolution && *resolution == 0) value_error("voxelize: resolution must be at least 1");
     if (pitch && !(*pitch > 0 && std::isfinite(*pitch))) value_error("voxelize: pitch must be finite and > 0");
@@ -416,7 +416,7 @@ void bind_arrays(nb::module_& m) {
           nb::arg("spacing") = std::vector<double>{1, 1, 1}, nb::arg("origin") = std::vector<double>{0, 0, 0},
           nb::arg("inside") = "below", nb::arg("threads") = 0u, MC_DOC);
     m.def("_voxelize", &voxelize, nb::arg("vertices"), nb::arg("faces"), nb::kw_only(), nb::arg("resolution") = nb::none(),
-          nb::arg("pitch") = nb::none(), nb::arg("mode") = "solid", nb::arg("fill_open") = false, nb::arg("threads") = 0u,
+          nb::arg("pitch") = nb::none(), nb::arg("mode") = "conservative", nb::arg("fill_open") = false, nb::arg("threads") = 0u,
           "Voxelizes (vertices, faces); see hmira.voxelize.");
     m.def("delaunay_triangulation", &delaunay, nb::arg("points"), nb::kw_only(), nb::arg("voronoi") = false, DELAUNAY_DOC);
     m.def("_write_polygons", &write_polygons, nb::arg("path"), nb::arg("vertices"), nb::arg("faces"), nb::kw_only(),

@@ -33,7 +33,7 @@ def test_grid_layout_origin_and_pitch():
 
 def test_solid_box_fills_its_voxels_and_nothing_beyond_the_first_padding_layer():
     v, f = box_mesh()
-    grid, _, pitch = hmira.voxelize(v, f, resolution=20, mode="solid")
+    grid, _, pitch = hmira.voxelize(v, f, resolution=20, mode="conservative")
     # The box covers voxels 2..21 x 2..11 x 2..6 exactly; its faces lie on voxel boundaries, so
     # the voxels just outside touch it too and may be set (the first padding layer), no further.
     assert grid[2:22, 2:12, 2:7].all()
@@ -99,9 +99,9 @@ def test_bad_arguments_raise_value_error():
 def test_real_mesh_matches_the_cli(data, cli, tmp_path, name, surface):
     path = data / "meshes" / name
     mesh = hmira.read_mesh(path)
-    grid, origin, pitch = hmira.voxelize(mesh, resolution=48, mode="surface" if surface else "solid")
+    grid, origin, pitch = hmira.voxelize(mesh, resolution=48, mode="surface" if surface else "conservative")
     out = tmp_path / "v.raw"
-    args = ["voxelize", path, out, "-n", "48", "-q"] + (["--surface"] if surface else [])
+    args = ["voxelize", path, out, "-n", "48", "-q", "--mode", "surface" if surface else "conservative"]
     run_cli(cli, *args)
     sidecar = dict(line.split(": ", 1) for line in (tmp_path / "v.raw.txt").read_text().splitlines() if ": " in line and not line.startswith("#"))
     dims = [int(x) for x in sidecar["dims"].split(",")]

@@ -607,6 +607,13 @@ TEST(cli, voxelize_a_cube_sets_the_voxels_its_geometry_predicts) {
                 set += v == 1;
             }
     EXPECT_EQ(set, n * n * n - (n - 2) * (n - 2) * (n - 2));
+    // --mode surface is --surface; --mode conservative (the default) adds the inside.
+    ASSERT_EQ(hmira(dir, "voxelize c.obj m.raw -n 16 --padding 0 --mode surface -q").code, 0);
+    EXPECT_EQ(hmira_test::read_bytes(dir / "m.raw"), raw);
+    ASSERT_EQ(hmira(dir, "voxelize c.obj cons.raw -n 16 --padding 0 --mode conservative -q").code, 0);
+    EXPECT_EQ(hmira_test::read_bytes(dir / "cons.raw"), std::string(n * n * n, '\1'));
+    expect_refused(dir, "voxelize c.obj x.raw --mode centre", 2, "--mode", "x.raw");
+    expect_refused(dir, "voxelize c.obj x.raw --mode surface --surface", 2, "--surface", "x.raw");
     const auto sidecar = hmira_test::read_bytes(dir / "s.raw.txt");
     for (const char* line : {"dims: 16,16,16\n", "type: uint8\n", "spacing: 0.125,0.125,0.125\n", "origin: -0.9375,-0.9375,-0.9375"})
         EXPECT_NE(sidecar.find(line), std::string::npos) << line << " not in:\n" << sidecar;
