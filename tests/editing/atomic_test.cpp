@@ -412,13 +412,6 @@ TYPED_TEST(atomic_test, deleted_handles_are_refused_as_invalid_handles_where_the
         ASSERT_FALSE(k);
         EXPECT_EQ(k.error().code, hmira::errc::invalid_handle) << k.error().message;
         EXPECT_TRUE(take_state(m) == before);
-        // A deleted face: merge two faces with killEF and extrude the one that went.
-        const auto h = T::face_halfedge(m, *T::faces(m).begin());
-        const auto gone = T::face(m, h);  // killEF(h) keeps the face across h
-        ASSERT_TRUE((hmira::kill_edge_face<M, T>(m, h)));
-        auto x = hmira::extrude<M, T>(m, gone, {.distance = 1});
-        ASSERT_FALSE(x);
-        EXPECT_EQ(x.error().code, hmira::errc::invalid_handle) << x.error().message;
     }
 }
 

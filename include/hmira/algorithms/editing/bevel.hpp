@@ -100,6 +100,7 @@ struct bevel_plan {
     std::vector<inner> inners;                        ///< the corner vertices
     std::vector<std::array<bool, 2>> end_kept;        ///< per bevelled edge: source / target stays
     int segments = 1;                                 ///< bevel_options::segments
+    bool share_meeting_points = false;                ///< slides meeting mid-edge share one point (global clamp)
     double requested_width = 0;                       ///< bevel_options::width
     double smallest_width = 0;                        ///< the smallest width used after the clamp
     std::size_t limited_edges = 0;                    ///< bevelled edges with a clamped new vertex
@@ -134,7 +135,9 @@ result<void> bevel_build(M& mesh, const Plan& plan, Out& out) {
         out.vertices.push_back(s.value().vertex);
         // Meeting slides share their point in a flat bevel; a rounded one needs both (their end
         // edges would otherwise join the same two vertices twice).
-        if (sl.t_back < 0 || (sl.t + sl.t_back == 1.0 && plan.segments == 1)) continue;
+        // Under the local clamp both ends of many short edges reach the middle, where a shared
+        // point would close a face next to two strips into a 2-gon: keep both points there.
+        if (sl.t_back < 0 || (sl.t + sl.t_back == 1.0 && plan.segments == 1 && plan.share_meeting_points)) continue;
         const auto s2 = split_edge<M, T>(mesh, s.value().second, lerp(a, b, 1 - sl.t_back));
         if (!s2) return s2.error();
         out.vertices.push_back(s2.value().vertex);
@@ -496,6 +499,7 @@ result<bevel_result<M, T>> bevel(M& mesh, const R& edges, const bevel_options& o
             plan.end_kept[i][side] = !removed[touched_at.find(T::vertex_index(mesh, v))];
         }
     plan.requested_width = options.width;
+    plan.share_meeting_points = !options.clamp_overlap || options.clamp_globally;
     return de::transact<M, T>(mesh, [&]<class JT>() -> result<bevel_result<M, T>> {
         bevel_result<M, T> out;
         if (auto ok = de::bevel_build<M, JT>(mesh, plan, out); !ok) return ok.error();
