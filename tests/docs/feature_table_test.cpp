@@ -32,7 +32,12 @@
 #include <hmira/algorithms/generators/torus.hpp>
 #include <hmira/algorithms/geometry/vertex_normals.hpp>
 #include <hmira/algorithms/orientation/flip_normals.hpp>
+#include <hmira/algorithms/holes/fill_hole.hpp>
 #include <hmira/algorithms/primitives/primitives.hpp>
+#include <hmira/algorithms/smoothing/laplacian_smooth.hpp>
+#include <hmira/algorithms/subdivision/loop.hpp>
+#include <hmira/algorithms/triangle/triangle.hpp>
+#include <hmira/algorithms/triangulation/triangulate_faces.hpp>
 #include <hmira/algorithms/topology/mesh_topology.hpp>
 #include <hmira/algorithms/validation/validate.hpp>
 #include <hmira/grids/dense_grid.hpp>
@@ -147,6 +152,24 @@ HMIRA_ROW(row_bevel, "bevel, bevel_vertices", "algorithms/editing/bevel.hpp", hm
           hmira::bevel<M, T>(m, e));
 HMIRA_ROW(row_extrude, "extrude", "algorithms/editing/extrude.hpp", hmira::extrudable_mesh, (M & m, typename T::face_handle f),
           hmira::extrude<M, T>(m, f));
+HMIRA_ROW(row_flip_edge, "flip_edge, is_flip_ok", "algorithms/triangle/flip_edge.hpp", hmira::triangle_operable_mesh,
+          (M & m, typename T::halfedge_handle h), hmira::flip_edge<M, T>(m, h));
+HMIRA_ROW(row_split_edge, "split_edge", "algorithms/triangle/split_edge.hpp", hmira::triangle_operable_mesh, (M & m, typename T::halfedge_handle h),
+          hmira::split_edge<M, T>(m, h));
+HMIRA_ROW(row_split_face, "split_face", "algorithms/triangle/split_face.hpp", hmira::triangle_operable_mesh, (M & m, typename T::face_handle f),
+          hmira::split_face<M, T>(m, f));
+HMIRA_ROW(row_collapse_edge, "collapse_edge, is_collapse_ok", "algorithms/triangle/collapse_edge.hpp", hmira::triangle_operable_mesh,
+          (M & m, typename T::halfedge_handle h), hmira::collapse_edge<M, T>(m, h));
+HMIRA_ROW(row_face_triangles, "face_triangles (one face's triangles, rings included)", "algorithms/triangulation/triangulate_faces.hpp",
+          hmira::face_triangulable_mesh, (const M& m, typename T::face_handle f), hmira::face_triangles<M, T>(m, f));
+HMIRA_ROW(row_triangulate_faces, "triangulate_faces", "algorithms/triangulation/triangulate_faces.hpp", hmira::triangulable_mesh, (M & m),
+          hmira::triangulate_faces<M, T>(m));
+HMIRA_ROW(row_fill_hole, "fill_hole", "algorithms/holes/fill_hole.hpp", hmira::triangle_operable_mesh, (M & m, typename T::halfedge_handle h),
+          hmira::fill_hole<M, T>(m, h));
+HMIRA_ROW(row_fill_holes, "fill_holes", "algorithms/holes/fill_hole.hpp", hmira::hole_fillable_mesh, (M & m), hmira::fill_holes<M, T>(m, 3));
+HMIRA_ROW(row_loop, "loop_subdivide", "algorithms/subdivision/loop.hpp", hmira::loop_subdividable_mesh, (M & m), hmira::loop_subdivide<M, T>(m));
+HMIRA_ROW(row_smooth, "laplacian_smooth, taubin_smooth", "algorithms/smoothing/laplacian_smooth.hpp", hmira::smoothable_mesh, (M & m),
+          hmira::taubin_smooth<M, T>(m));
 HMIRA_ROW(row_marching_cubes, "marching_cubes (into the mesh)", "algorithms/conversion/marching_cubes.hpp", hmira::mesh_builder,
           (M & m, const hmira::dense_grid<float>& g), hmira::marching_cubes<M, T>(m, g));
 HMIRA_ROW(row_voxelize, "voxelize", "algorithms/conversion/voxelize.hpp", hmira::voxelize_mesh, (const M& m, const hmira::grid_geometry& g),
@@ -166,7 +189,9 @@ template <class... Rs>
 struct row_list {};
 using rows = row_list<row_triangle_solids, row_polygon_solids, row_torus, row_grid, row_validate, row_topology, row_flip,
                       row_vertex_normals, row_euler, row_euler_ring, row_split_vertex, row_add_vertex_face, row_edge_primitives,
-                      row_remove_face, row_remove_vertex, row_truncate, row_bevel, row_extrude, row_marching_cubes, row_voxelize, row_delaunay, row_read,
+                      row_remove_face, row_remove_vertex, row_truncate, row_bevel, row_extrude, row_flip_edge, row_split_edge,
+                      row_split_face, row_collapse_edge, row_face_triangles, row_triangulate_faces, row_fill_hole, row_fill_holes,
+                      row_loop, row_smooth, row_marching_cubes, row_voxelize, row_delaunay, row_read,
                       row_write, row_adapt_brute, row_adapt_indexed>;
 
 // ---- the capabilities of concepts.hpp: one row each -------------------------------------------
@@ -500,6 +525,121 @@ void run_editing_claims() {
     }
 }
 
+using counts_t = std::array<std::size_t, 3>;
+template <class M, class T = hmira::default_traits<M>>
+auto first_halfedge_of(const M& m) {
+    return T::face_halfedge(m, *T::faces(m).begin());
+}
+template <class M, class T = hmira::default_traits<M>>
+counts_t vef_counts(const M& m) {
+    return {T::vertex_count(m), T::edge_count(m), T::face_count(m)};
+}
+
+// The triangle operators, triangulation, hole filling, subdivision and smoothing rows, run on an
+// icosahedron (V 12, E 30, F 20) for every model that claims them; every mutation is validated.
+template <class M>
+void run_everyday_claims() {
+    using T = hmira::default_traits<M>;
+    const std::string title = column<M>::title;
+    const auto first_face = [](const M& m) { return *T::faces(m).begin(); };
+    if constexpr (row_flip_edge::supported<M>) {
+        auto m = icosahedron<M>();
+        EXPECT_TRUE(hmira::is_flip_ok(m, first_halfedge_of(m))) << title;
+        auto r = hmira::flip_edge(m, first_halfedge_of(m));
+        ASSERT_TRUE(r) << title << ": " << r.error().message;
+        EXPECT_TRUE(valid_closed(m));
+        EXPECT_EQ(vef_counts(m), (counts_t{12, 30, 20})) << title;
+        ASSERT_TRUE(hmira::flip_edge(m, r->halfedge)) << title;  // its own inverse
+        EXPECT_TRUE(valid_closed(m));
+    }
+    if constexpr (row_split_edge::supported<M> && row_collapse_edge::supported<M>) {
+        auto m = icosahedron<M>();
+        auto r = hmira::split_edge(m, first_halfedge_of(m));
+        ASSERT_TRUE(r) << title << ": " << r.error().message;
+        EXPECT_EQ(vef_counts(m), (counts_t{13, 33, 22})) << title;  // one vertex, both triangles cut
+        EXPECT_TRUE(valid_closed(m));
+        EXPECT_TRUE(hmira::is_collapse_ok(m, r->halfedge)) << title;
+        auto c = hmira::collapse_edge(m, r->halfedge);  // the inverse
+        ASSERT_TRUE(c) << title << ": " << c.error().message;
+        EXPECT_EQ(vef_counts(m), (counts_t{12, 30, 20})) << title;
+        EXPECT_TRUE(valid_closed(m));
+    }
+    if constexpr (row_split_face::supported<M>) {
+        auto m = icosahedron<M>();
+        auto r = hmira::split_face(m, first_face(m));
+        ASSERT_TRUE(r) << title << ": " << r.error().message;
+        EXPECT_EQ(vef_counts(m), (counts_t{13, 33, 22})) << title;
+        EXPECT_TRUE(valid_closed(m));
+    }
+    if constexpr (row_face_triangles::supported<M>) {
+        const auto m = icosahedron<M>();
+        auto r = hmira::face_triangles(m, first_face(m));
+        ASSERT_TRUE(r) << title << ": " << r.error().message;
+        EXPECT_EQ(r->size(), 1u) << title;
+    }
+    if constexpr (row_triangulate_faces::supported<M> && row_polygon_solids::supported<M>) {
+        M cube;
+        ASSERT_TRUE(hmira::generate_cube(cube)) << title;
+        auto r = hmira::triangulate_faces(cube);
+        ASSERT_TRUE(r) << title << ": " << r.error().message;
+        EXPECT_EQ(r->faces_cut, 6u) << title;
+        EXPECT_EQ(vef_counts(cube), (counts_t{8, 18, 12})) << title;
+        EXPECT_TRUE(valid_closed(cube));
+    }
+    if constexpr (row_fill_hole::supported<M> && row_remove_face::supported<M>) {
+        auto m = icosahedron<M>();
+        const auto h = first_halfedge_of(m);
+        ASSERT_TRUE(hmira::remove_face(m, first_face(m))) << title;
+        EXPECT_TRUE(hmira::validate(m).empty()) << title;
+        auto r = hmira::fill_hole(m, h);  // h now borders the hole
+        ASSERT_TRUE(r) << title << ": " << r.error().message;
+        EXPECT_EQ(r->faces.size(), 1u) << title;
+        EXPECT_EQ(vef_counts(m), (counts_t{12, 30, 20})) << title;
+        EXPECT_TRUE(valid_closed(m));
+    }
+    if constexpr (row_fill_holes::supported<M> && row_remove_face::supported<M>) {
+        auto m = icosahedron<M>();
+        ASSERT_TRUE(hmira::remove_face(m, first_face(m))) << title;
+        auto r = hmira::fill_holes(m, 3);
+        ASSERT_TRUE(r) << title << ": " << r.error().message;
+        EXPECT_EQ(r->filled, 1u) << title;
+        EXPECT_EQ(r->faces_added, 1u) << title;
+        EXPECT_TRUE(valid_closed(m));
+    }
+    if constexpr (row_loop::supported<M>) {
+        auto m = icosahedron<M>();
+        auto r = hmira::loop_subdivide(m);
+        ASSERT_TRUE(r) << title << ": " << r.error().message;
+        EXPECT_EQ(vef_counts(m), (counts_t{42, 120, 80})) << title;  // V + E, 2E + 3F, 4F
+        EXPECT_TRUE(valid_closed(m));
+    }
+    if constexpr (row_smooth::supported<M>) {
+        // The icosahedron's vertices lie on one sphere; a uniform Laplacian step pulls each one
+        // inward, and Taubin's inflating step brings most of it back.
+        const auto radius = [](const M& m) {
+            double r = 0;
+            for (auto v : T::vertices(m)) {
+                const auto p = T::position(m, v);
+                r += std::sqrt(double(p[0]) * double(p[0]) + double(p[1]) * double(p[1]) + double(p[2]) * double(p[2]));
+            }
+            return r / double(T::vertex_count(m));
+        };
+        auto m = icosahedron<M>();
+        const double r0 = radius(m);
+        auto l = hmira::laplacian_smooth(m);
+        ASSERT_TRUE(l) << title << ": " << l.error().message;
+        EXPECT_EQ(l->moved, 12u) << title;
+        EXPECT_LT(radius(m), 0.9 * r0) << title;
+        EXPECT_TRUE(valid_closed(m));
+        auto t = icosahedron<M>();
+        auto r = hmira::taubin_smooth(t, {.iterations = 1});
+        ASSERT_TRUE(r) << title << ": " << r.error().message;
+        EXPECT_GT(radius(t), 0.9 * r0) << title;  // 0.724 after the lambda step, 0.936 after mu
+        EXPECT_LT(radius(t), r0) << title;
+        EXPECT_TRUE(valid_closed(t));
+    }
+}
+
 // Each model's voxelization of the icosahedron must agree with face_vertex_mesh's of the same
 // scalar type (float models round the generator's positions, which moves voxels on the edge).
 template <class S>
@@ -581,6 +721,7 @@ void run_all(model_list<Ms...>) {
         if constexpr (std::default_initializable<M> && hmira::mesh_builder<M>) {
             run_claims<M>();
             run_editing_claims<M>();
+            run_everyday_claims<M>();
             run_conversion_claims<M>(n);
         }
     };

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include <hmira/algorithms/triangulation/triangulate_faces.hpp>
 #include <hmira/concepts.hpp>
 
 namespace hmira_test {
@@ -62,22 +63,31 @@ using point3 = std::array<double, 3>;
 
 /// Faces as loops of positions, each rotated to start at its smallest position: compares two
 /// meshes independently of vertex numbering and face order. `round` maps coordinates first
-/// (for example to float for STL).
+/// (for example to float for STL). `triangulate`: polygons become the triangles the STL writer
+/// is specified to write (face_triangles), so an STL file read back compares equal.
 template <class M, class T = hmira::default_traits<M>, class Round>
-std::multiset<std::vector<point3>> geometric_faces(const M& mesh, Round round, bool fan_triangulate = false) {
+std::multiset<std::vector<point3>> geometric_faces(const M& mesh, Round round, bool triangulate = false) {
     std::multiset<std::vector<point3>> out;
     for (auto f : T::faces(mesh)) {
         std::vector<point3> loop;
-        for (auto v : T::face_vertices(mesh, f)) {
+        auto at = [&](typename T::vertex_handle v) {
             const auto p = T::position(mesh, v);
-            loop.push_back({round(double(p[0])), round(double(p[1])), round(double(p[2]))});
-        }
+            return point3{round(double(p[0])), round(double(p[1])), round(double(p[2]))};
+        };
+        for (auto v : T::face_vertices(mesh, f)) loop.push_back(at(v));
         auto canon = [](std::vector<point3> l) {
             std::rotate(l.begin(), std::min_element(l.begin(), l.end()), l.end());
             return l;
         };
-        if (fan_triangulate) {
-            for (std::size_t i = 1; i + 1 < loop.size(); ++i) out.insert(canon({loop[0], loop[i], loop[i + 1]}));
+        if (triangulate && loop.size() > 3) {
+            if constexpr (hmira::face_triangulable_mesh<M, T>) {
+                auto tris = hmira::face_triangles<M, T>(mesh, f);
+                EXPECT_TRUE(tris) << tris.error().message;
+                if (tris)
+                    for (const auto& t : *tris) out.insert(canon({at(t[0]), at(t[1]), at(t[2])}));
+            } else {
+                for (std::size_t i = 1; i + 1 < loop.size(); ++i) out.insert(canon({loop[0], loop[i], loop[i + 1]}));
+            }
         } else {
             out.insert(canon(loop));
         }

@@ -15,6 +15,7 @@
 
 #include "../concepts.hpp"
 #include "../core/result.hpp"
+#include "detail/face_loops.hpp"
 #include "detail/files.hpp"
 #include "detail/polygon_soup.hpp"
 #include "detail/text_format.hpp"
@@ -179,11 +180,13 @@ result<read_report> read_obj(M& mesh, const std::filesystem::path& path, const r
     return finish_read<M, T>(mesh, std::move(*soup), path.string(), "obj", 0, options);
 }
 
-/// Writes OBJ through `out`: `v` lines (with `r g b` when there are colours), `vn` lines
+/// Writes OBJ through `out` (false, with nothing written, if a face has inner rings: see
+/// write_obj): `v` lines (with `r g b` when there are colours), `vn` lines
 /// when there are normals, then 1-based `f` lines.
 template <class M, class T = default_traits<M>>
     requires writable_mesh<M, T>
 bool write_obj_to(const M& mesh, std::ostream& stream, const write_options& options = {}) {
+    if (!detail::refuse_ringed_faces<M, T>(mesh, "OBJ")) return false;  // before any byte is written
     using S = typename T::scalar;
     detail::chunked_output out(stream);
     auto& b = out.buffer();
@@ -248,10 +251,13 @@ std::string format_obj(const M& mesh, const write_options& options = {}) {
 }
 
 /// Writes the mesh as OBJ, atomically: a failure leaves any existing file untouched.
-/// Complexity: O(V + C). Errors: errc::io_error.
+/// Complexity: O(V + C). Errors: errc::unsupported naming a face with inner rings (OBJ has one
+/// loop per face, and a ring is never dropped silently; triangulate_faces first), with no file
+/// written; errc::io_error.
 template <class M, class T = default_traits<M>>
     requires writable_mesh<M, T>
 result<void> write_obj(const M& mesh, const std::filesystem::path& path, const write_options& options = {}) {
+    if (auto ok = detail::refuse_ringed_faces<M, T>(mesh, "OBJ"); !ok) return ok.error();
     return detail::write_file_atomically(path, [&](std::ostream& o) { return write_obj_to<M, T>(mesh, o, options); });
 }
 

@@ -13,6 +13,7 @@
 
 #include "../concepts.hpp"
 #include "../core/result.hpp"
+#include "detail/face_loops.hpp"
 #include "detail/files.hpp"
 #include "detail/polygon_soup.hpp"
 #include "detail/text_format.hpp"
@@ -143,10 +144,12 @@ result<read_report> read_off(M& mesh, const std::filesystem::path& path, const r
     return finish_read<M, T>(mesh, std::move(*soup), path.string(), "off", 0, options);
 }
 
-/// Writes OFF through `out`: "[C][N]OFF" as the attributes require, colours as 0..255 RGBA.
+/// Writes OFF through `out` (false, with nothing written, if a face has inner rings: see
+/// write_off): "[C][N]OFF" as the attributes require, colours as 0..255 RGBA.
 template <class M, class T = default_traits<M>>
     requires writable_mesh<M, T>
 bool write_off_to(const M& mesh, std::ostream& stream, const write_options& options = {}) {
+    if (!detail::refuse_ringed_faces<M, T>(mesh, "OFF")) return false;  // before any byte is written
     using S = typename T::scalar;
     detail::chunked_output out(stream);
     auto& b = out.buffer();
@@ -206,10 +209,13 @@ std::string format_off(const M& mesh, const write_options& options = {}) {
     return std::move(s).str();
 }
 
-/// Writes the mesh as OFF, atomically. Complexity O(V + C). Errors: errc::io_error.
+/// Writes the mesh as OFF, atomically. Complexity O(V + C). Errors: errc::unsupported naming a
+/// face with inner rings (OFF has one loop per face, and a ring is never dropped silently;
+/// triangulate_faces first), with no file written; errc::io_error.
 template <class M, class T = default_traits<M>>
     requires writable_mesh<M, T>
 result<void> write_off(const M& mesh, const std::filesystem::path& path, const write_options& options = {}) {
+    if (auto ok = detail::refuse_ringed_faces<M, T>(mesh, "OFF"); !ok) return ok.error();
     return detail::write_file_atomically(path, [&](std::ostream& o) { return write_off_to<M, T>(mesh, o, options); });
 }
 

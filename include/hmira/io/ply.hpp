@@ -19,6 +19,7 @@
 
 #include "../concepts.hpp"
 #include "../core/result.hpp"
+#include "detail/face_loops.hpp"
 #include "detail/files.hpp"
 #include "detail/polygon_soup.hpp"
 #include "detail/text_format.hpp"
@@ -594,12 +595,13 @@ result<read_report> read_ply(M& mesh, const std::filesystem::path& path, const r
     return finish_read<M, T>(mesh, std::move(*soup), path.string(), std::string("ply (") + to_string(h->encoding) + ")", 0, options);
 }
 
-/// Writes PLY through `out` in the chosen encoding: x y z (the mesh's scalar type unless
+/// Writes PLY through `out` (false, nothing written, if a face has inner rings; see write_ply) in the chosen encoding: x y z (the mesh's scalar type unless
 /// options say otherwise), nx ny nz and red green blue alpha when there are attributes, and
 /// faces as "list uchar int vertex_indices" ("list uint int" if a face has > 255 vertices).
 template <class M, class T = default_traits<M>>
     requires writable_mesh<M, T>
 bool write_ply_to(const M& mesh, std::ostream& stream, const write_options& options = {}) {
+    if (!detail::refuse_ringed_faces<M, T>(mesh, "PLY")) return false;  // before any byte is written
     using S = typename T::scalar;
     detail::chunked_output out(stream);
     auto& b = out.buffer();
@@ -695,10 +697,13 @@ std::string format_ply(const M& mesh, const write_options& options = {}) {
     return std::move(s).str();
 }
 
-/// Writes the mesh as PLY, atomically. Complexity O(V + C). Errors: errc::io_error.
+/// Writes the mesh as PLY, atomically. Complexity O(V + C). Errors: errc::unsupported naming a
+/// face with inner rings (PLY has one loop per face, and a ring is never dropped silently;
+/// triangulate_faces first), with no file written; errc::io_error.
 template <class M, class T = default_traits<M>>
     requires writable_mesh<M, T>
 result<void> write_ply(const M& mesh, const std::filesystem::path& path, const write_options& options = {}) {
+    if (auto ok = detail::refuse_ringed_faces<M, T>(mesh, "PLY"); !ok) return ok.error();
     return detail::write_file_atomically(path, [&](std::ostream& o) { return write_ply_to<M, T>(mesh, o, options); });
 }
 

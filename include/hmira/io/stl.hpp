@@ -1,7 +1,8 @@
 // hmira/io/stl.hpp
 // STL, ASCII and binary. STL stores loose triangles, so the reader welds corners whose
 // coordinates are exactly equal into shared vertices (a hash of the float bit patterns,
-// expected O(1) per corner) to give a connected mesh; the writer fan-triangulates polygons.
+// expected O(1) per corner) to give a connected mesh; the writer writes each face as its
+// triangles (face_triangles: concave faces and inner rings handled exactly).
 #pragma once
 
 #include <algorithm>
@@ -17,6 +18,7 @@
 
 #include "../concepts.hpp"
 #include "../core/result.hpp"
+#include "detail/face_loops.hpp"
 #include "detail/files.hpp"
 #include "detail/polygon_soup.hpp"
 #include "detail/text_format.hpp"
@@ -271,29 +273,24 @@ result<read_report> read_stl(M& mesh, const std::filesystem::path& path, const r
     return finish_read<M, T>(mesh, std::move(s->soup), path.string(), s->binary ? "stl (binary)" : "stl (ascii)", s->dropped_triangles, options);
 }
 
-/// Writes STL through `out`; polygons are fan-triangulated, facet normals computed from the
-/// corners (zero for degenerate triangles). Per-vertex attributes cannot be stored.
-template <class M, class T = default_traits<M>>
-    requires writable_mesh<M, T>
-bool write_stl_to(const M& mesh, std::ostream& stream, const write_options& options = {}) {
+namespace detail {
+
+/// Writes STL through `out`, with the triangles `plan` gives (detail::plan_stl_triangles);
+/// facet normals are computed from the corners (zero for degenerate triangles).
+template <class M, class T>
+bool write_stl_planned(const M& mesh, std::ostream& stream, const stl_triangles<M, T>& plan, const write_options& options) {
     using S = typename T::scalar;
-    detail::chunked_output out(stream);
+    chunked_output out(stream);
     auto& b = out.buffer();
     const bool ascii = options.stl == stl_encoding::ascii;
-    std::uint64_t triangles = 0;
-    for (auto f : T::faces(mesh)) {
-        std::size_t k = 0;
-        for (auto v : T::face_vertices(mesh, f)) (void)v, ++k;
-        if (k >= 3) triangles += k - 2;
-    }
     if (ascii) {
         b += "solid hmira\n";
     } else {
-        if (triangles > UINT32_MAX) return false;
+        if (plan.total > UINT32_MAX) return false;
         char header[80] = {};
         std::memcpy(header, "binary STL written by hmira", 27);
         b.append(header, 80);
-        std::uint32_t n = static_cast<std::uint32_t>(triangles);
+        std::uint32_t n = static_cast<std::uint32_t>(plan.total);
         if constexpr (std::endian::native == std::endian::big) n = __builtin_bswap32(n);
         b.append(reinterpret_cast<const char*>(&n), 4);
     }
@@ -301,34 +298,53 @@ bool write_stl_to(const M& mesh, std::ostream& stream, const write_options& opti
         if constexpr (std::endian::native == std::endian::big) x = std::bit_cast<float>(__builtin_bswap32(std::bit_cast<std::uint32_t>(x)));
         b.append(reinterpret_cast<const char*>(&x), 4);
     };
-    std::vector<vec3<S>> loop;
-    for (auto f : T::faces(mesh)) {
-        loop.clear();
-        for (auto v : T::face_vertices(mesh, f)) loop.push_back(static_cast<vec3<S>>(T::position(mesh, v)));
-        for (std::size_t i = 1; i + 1 < loop.size(); ++i) {
-            const std::array<vec3<S>, 3> tri{loop[0], loop[i], loop[i + 1]};
-            const auto n = normalized(cross(tri[1] - tri[0], tri[2] - tri[0]));
-            if (ascii) {
-                b += "  facet normal ";
+    auto put_triangle = [&](const std::array<vec3<S>, 3>& tri) {
+        const auto n = normalized(cross(tri[1] - tri[0], tri[2] - tri[0]));
+        if (ascii) {
+            b += "  facet normal ";
+            for (std::size_t k = 0; k < 3; ++k) {
+                if (k) b += ' ';
+                append_number(b, static_cast<float>(n[k]));
+            }
+            b += "\n    outer loop\n";
+            for (const auto& q : tri) {
+                b += "      vertex ";
                 for (std::size_t k = 0; k < 3; ++k) {
                     if (k) b += ' ';
-                    detail::append_number(b, static_cast<float>(n[k]));
+                    append_number(b, static_cast<float>(q[k]));
                 }
-                b += "\n    outer loop\n";
-                for (const auto& q : tri) {
-                    b += "      vertex ";
-                    for (std::size_t k = 0; k < 3; ++k) {
-                        if (k) b += ' ';
-                        detail::append_number(b, static_cast<float>(q[k]));
-                    }
-                    b += '\n';
+                b += '\n';
+            }
+            b += "    endloop\n  endfacet\n";
+        } else {
+            for (std::size_t k = 0; k < 3; ++k) put_float(static_cast<float>(n[k]));
+            for (const auto& q : tri)
+                for (std::size_t k = 0; k < 3; ++k) put_float(static_cast<float>(q[k]));
+            b.append(2, '\0');
+        }
+    };
+    auto at = [&](typename T::vertex_handle v) { return static_cast<vec3<S>>(T::position(mesh, v)); };
+    std::size_t planned_face = 0, next_triangle = 0;
+    std::array<vec3<S>, 3> tri;
+    for (auto f : T::faces(mesh)) {
+        std::size_t k = 0;
+        bool plain = !has_inner_rings<M, T>(mesh, f);
+        if (plain)
+            for (auto v : T::face_vertices(mesh, f)) {
+                if (k == 3) {
+                    plain = false;
+                    break;
                 }
-                b += "    endloop\n  endfacet\n";
-            } else {
-                for (std::size_t k = 0; k < 3; ++k) put_float(static_cast<float>(n[k]));
-                for (const auto& q : tri)
-                    for (std::size_t k = 0; k < 3; ++k) put_float(static_cast<float>(q[k]));
-                b.append(2, '\0');
+                tri[k++] = at(v);
+            }
+        if (plain && k == 3) {
+            put_triangle(tri);
+        } else {
+            // The plan lists the faces that are not plain triangles in this same order.
+            const std::size_t end = next_triangle + plan.counts[planned_face++];
+            for (; next_triangle < end; ++next_triangle) {
+                const auto& t = plan.triangles[next_triangle];
+                put_triangle({at(t[0]), at(t[1]), at(t[2])});
             }
         }
         if (!out.maybe_flush()) return false;
@@ -337,21 +353,42 @@ bool write_stl_to(const M& mesh, std::ostream& stream, const write_options& opti
     return out.flush();
 }
 
-/// STL bytes of the mesh (see write_stl_to).
+}  // namespace detail
+
+/// Writes STL through `out`. Triangles are written as they are; every other face (concave, or
+/// with inner rings) as its face_triangles, and a face without area as a zero-area fan (see
+/// detail::plan_stl_triangles). Facet normals are computed from the corners (zero for
+/// degenerate triangles). Per-vertex attributes cannot be stored.
+/// Returns false, having written nothing, when a face's projection is not simple; write_stl
+/// gives the error naming the face.
+template <class M, class T = default_traits<M>>
+    requires writable_mesh<M, T>
+bool write_stl_to(const M& mesh, std::ostream& stream, const write_options& options = {}) {
+    auto plan = detail::plan_stl_triangles<M, T>(mesh);
+    if (!plan) return false;
+    return detail::write_stl_planned<M, T>(mesh, stream, *plan, options);
+}
+
+/// STL bytes of the mesh (see write_stl_to); empty when a face is refused.
 template <class M, class T = default_traits<M>>
     requires writable_mesh<M, T>
 std::string format_stl(const M& mesh, const write_options& options = {}) {
     std::ostringstream s;
-    write_stl_to<M, T>(mesh, s, options);
+    if (!write_stl_to<M, T>(mesh, s, options)) return {};
     return std::move(s).str();
 }
 
-/// Writes the mesh as STL, atomically. Coordinates become float. Complexity O(C).
-/// Errors: errc::io_error.
+/// Writes the mesh as STL, atomically. Coordinates become float. Faces are triangulated as
+/// write_stl_to says, before the file is touched.
+/// Complexity: O(C) for triangle meshes; face_triangles' cost on the other faces.
+/// Errors: errc::topology (or the code face_triangles gives) naming a face whose projection
+/// is not simple, with no file written and any existing file unchanged; errc::io_error.
 template <class M, class T = default_traits<M>>
     requires writable_mesh<M, T>
 result<void> write_stl(const M& mesh, const std::filesystem::path& path, const write_options& options = {}) {
-    return detail::write_file_atomically(path, [&](std::ostream& o) { return write_stl_to<M, T>(mesh, o, options); });
+    auto plan = detail::plan_stl_triangles<M, T>(mesh);
+    if (!plan) return plan.error();
+    return detail::write_file_atomically(path, [&](std::ostream& o) { return detail::write_stl_planned<M, T>(mesh, o, *plan, options); });
 }
 
 }  // namespace hmira::io

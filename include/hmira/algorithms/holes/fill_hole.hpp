@@ -301,12 +301,17 @@ struct fill_holes_result {
     std::size_t faces_added = 0;  ///< triangles in all patches
 };
 
+/// A mesh fill_holes can run on: the triangle operators, and halfedge indices to mark the
+/// boundary halfedges already visited.
+template <class M, class T = default_traits<M>>
+concept hole_fillable_mesh = triangle_operable_mesh<M, T> && halfedge_index_mesh<M, T>;
+
 /// Fills every boundary loop of at most `max_size` edges with fill_hole. A loop that fill_hole
 /// refuses is left open and counted in `skipped` (each refusal leaves the mesh unchanged).
 /// Errors: errc::invalid_argument for max_size < 3.
 /// Complexity: O(H) to find the loops, H the halfedges, plus fill_hole's cost per loop.
 template <class M, class T = default_traits<M>>
-    requires triangle_operable_mesh<M, T> && halfedge_index_mesh<M, T>
+    requires hole_fillable_mesh<M, T>
 [[nodiscard]] result<fill_holes_result> fill_holes(M& mesh, std::size_t max_size, const fill_hole_options& options = {}) {
     if (max_size < 3) return fail(errc::invalid_argument, "fill_holes: option max_size must be at least 3, got " + std::to_string(max_size));
     using H = typename T::halfedge_handle;

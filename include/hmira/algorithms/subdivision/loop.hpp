@@ -122,6 +122,11 @@ void loop_level(M& mesh) {
 
 }  // namespace detail::subdivision
 
+/// A mesh loop_subdivide can run on: the triangle operators, and dense vertex and face indices
+/// for its per-level arrays.
+template <class M, class T = default_traits<M>>
+concept loop_subdividable_mesh = triangle_operable_mesh<M, T> && vertex_index_mesh<M, T> && face_index_mesh<M, T>;
+
 /// Loop subdivision, `options.levels` times. Each level splits every edge at its edge point
 /// (3/8 of each end plus 1/8 of each opposite corner; the midpoint on a boundary), flips the
 /// new edges that join an old vertex to a new one (so each triangle becomes four), and moves
@@ -135,7 +140,7 @@ void loop_level(M& mesh) {
 /// errc::invalid_argument for more than 10 levels (a million-fold growth).
 /// Complexity O(F) per level (each operator is O(1) or O(valence)), so O(4^levels F).
 template <class M, class T = default_traits<M>>
-    requires triangle_operable_mesh<M, T> && vertex_index_mesh<M, T> && face_index_mesh<M, T>
+    requires loop_subdividable_mesh<M, T>
 [[nodiscard]] result<loop_result> loop_subdivide(M& mesh, const loop_options& options = {}) {
     if (options.levels > 10)
         return fail(errc::invalid_argument, "loop_subdivide: option levels must be at most 10, got " + std::to_string(options.levels));

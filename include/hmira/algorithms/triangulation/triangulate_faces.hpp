@@ -112,6 +112,11 @@ template <class M, class T = default_traits<M>>
     return out;
 }
 
+/// A mesh triangulate_faces can cut: faces it can read (face_triangulable_mesh) and the Euler
+/// operators to add the diagonals.
+template <class M, class T = default_traits<M>>
+concept triangulable_mesh = face_triangulable_mesh<M, T> && euler_mutable_mesh<M, T>;
+
 /// What triangulate_faces did.
 struct triangulate_faces_result {
     std::size_t faces_cut = 0;        ///< faces that were not triangles (or had rings)
@@ -126,7 +131,7 @@ struct triangulate_faces_result {
 /// Errors (mesh unchanged): those of face_triangles, naming the first refused face.
 /// Complexity: O(sum over faces of n_f^2) typical, n_f the face's corners.
 template <class M, class T = default_traits<M>>
-    requires face_triangulable_mesh<M, T> && euler_mutable_mesh<M, T>
+    requires triangulable_mesh<M, T>
 [[nodiscard]] result<triangulate_faces_result> triangulate_faces(M& mesh) {
     namespace dt = detail::triangulation;
     using V = typename T::vertex_handle;
