@@ -4,6 +4,7 @@
 // and the old vertices moved by Loop's vertex rule. Boundaries follow the cubic B-spline.
 #pragma once
 
+#include <cassert>
 #include <cmath>
 #include <cstddef>
 #include <numbers>
@@ -110,8 +111,9 @@ void loop_level(M& mesh) {
     for (const auto x : cuts) {
         const bool a_old = old(T::target(mesh, T::opposite(mesh, x))), b_old = old(T::target(mesh, x));
         if (a_old != b_old) {
-            auto r = flip_edge<M, T>(mesh, x);
-            (void)r;  // cannot fail after the splits: both sides are triangles, the far corners new and unjoined
+            // Cannot fail after the splits: both sides are triangles, the far corners new and unjoined.
+            [[maybe_unused]] const bool flipped = static_cast<bool>(flip_edge<M, T>(mesh, x));
+            assert(flipped);
         }
     }
     for (auto v : T::vertices(mesh)) {
