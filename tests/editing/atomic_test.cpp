@@ -402,12 +402,15 @@ TYPED_TEST(atomic_test, deleted_handles_are_refused_as_invalid_handles_where_the
         auto t = hmira::truncate<M, T>(m, vs);
         ASSERT_FALSE(t);
         EXPECT_EQ(t.error().code, hmira::errc::invalid_handle) << t.error().message;
+        EXPECT_TRUE(take_state(m) == before) << "truncate";
         auto b = hmira::bevel<M, T>(m, dead_edge);
         ASSERT_FALSE(b);
         EXPECT_EQ(b.error().code, hmira::errc::invalid_handle) << b.error().message;
+        EXPECT_TRUE(take_state(m) == before) << "bevel";
         auto e = hmira::make_edge_vertex<M, T>(m, dead_halfedge, {0, 0, 0});
         ASSERT_FALSE(e);
         EXPECT_EQ(e.error().code, hmira::errc::invalid_handle) << e.error().message;
+        EXPECT_TRUE(take_state(m) == before) << "make_edge_vertex";
         auto k = hmira::kill_edge_vertex<M, T>(m, dead_halfedge);
         ASSERT_FALSE(k);
         EXPECT_EQ(k.error().code, hmira::errc::invalid_handle) << k.error().message;

@@ -165,7 +165,8 @@ template <class M, class T = default_traits<M>>
     requires triangle_operable_mesh<M, T>
 bool is_collapse_ok(const M& mesh, typename T::halfedge_handle h, const collapse_edge_options& options = {}) {
     if (!detail::euler::usable<M, T>(mesh, h)) return false;
-    return *detail::triangle_ops::collapse_refusal<M, T>(mesh, h, options) == '\0';
+    const char* refusal = detail::triangle_ops::collapse_refusal<M, T>(mesh, h, options);
+    return refusal[0] == '\0';
 }
 
 /// Collapses the edge of h = a->b: a is removed, b survives at the position the options give
