@@ -13,27 +13,16 @@
 #include <hmira/meshes/face_vertex_mesh.hpp>
 
 #include "io/io_support.hpp"
+#include "support/cli_runner.hpp"
 #include "support/checks.hpp"
 
 namespace {
 
 using hmira_test::scratch_dir;
 
-struct run_result {
-    int code = -1;
-    std::string out, err;
-};
+using hmira_test::run_result;
 
-run_result hmira(const scratch_dir& dir, const std::string& args) {
-    const auto out = dir / ".stdout", err = dir / ".stderr";
-    const std::string cmd = "cd '" + dir.path().string() + "' && '" + std::string(HMIRA_CLI) + "' " + args + " >'" + out.string() + "' 2>'" + err.string() + "' </dev/null";
-    const int status = std::system(cmd.c_str());
-    run_result r;
-    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    r.out = hmira_test::read_bytes(out);
-    r.err = hmira_test::read_bytes(err);
-    return r;
-}
+run_result hmira(const scratch_dir& dir, const std::string& args) { return hmira_test::run_cli(HMIRA_CLI, dir, args); }
 
 std::size_t lines(const std::string& s) { return static_cast<std::size_t>(std::count(s.begin(), s.end(), '\n')); }
 
