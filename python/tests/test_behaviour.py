@@ -22,10 +22,22 @@ def gyroid(n):
 
 @pytest.fixture(scope="module")
 def long_volume():
+    """A volume whose single-threaded marching cubes takes at least a second on this machine,
+    so that the 50 ms interrupt polling is small against it (a fast machine meshes 192^3 in
+    60 ms): the gyroid is tiled along axis 0 until the call is long enough."""
     vol = gyroid(192)
+    seconds = _seconds(lambda: hmira.marching_cubes(vol, 0.0, threads=1))
+    if seconds < 1.0:
+        copies = min(24, int(np.ceil(1.0 / max(seconds, 1e-3))))
+        vol = np.ascontiguousarray(np.tile(vol, (copies, 1, 1)))
+        seconds = _seconds(lambda: hmira.marching_cubes(vol, 0.0, threads=1))
+    return vol, seconds
+
+
+def _seconds(call):
     start = time.perf_counter()
-    hmira.marching_cubes(vol, 0.0, threads=1)
-    return vol, time.perf_counter() - start
+    call()
+    return time.perf_counter() - start
 
 
 def test_another_thread_runs_during_a_long_call(long_volume):
@@ -66,16 +78,20 @@ def test_ctrl_c_interrupts_a_long_marching_cubes(long_volume):
 
 def test_ctrl_c_interrupts_a_long_voxelization():
     v, f = hmira.marching_cubes(gyroid(96), 0.0)
-    start = time.perf_counter()
-    hmira.voxelize(v, f, resolution=400, threads=1, mode="surface")
-    seconds = time.perf_counter() - start
+    # Grow the resolution until the call takes at least half a second (time grows about as
+    # resolution^2 for a surface voxelization), so the 50 ms polling is small against it.
+    resolution = 400
+    seconds = _seconds(lambda: hmira.voxelize(v, f, resolution=resolution, threads=1, mode="surface"))
+    if seconds < 0.5:
+        resolution = min(900, int(resolution * np.sqrt(0.5 / max(seconds, 1e-3))) + 1)
+        seconds = _seconds(lambda: hmira.voxelize(v, f, resolution=resolution, threads=1, mode="surface"))
     timer = threading.Timer(seconds / 10, _thread.interrupt_main)
     timer.start()
     start = time.perf_counter()
     with pytest.raises(KeyboardInterrupt):
-        hmira.voxelize(v, f, resolution=400, threads=1, mode="surface")
+        hmira.voxelize(v, f, resolution=resolution, threads=1, mode="surface")
     timer.join()
-    assert time.perf_counter() - start < seconds * 0.7
+    assert time.perf_counter() - start < seconds * 0.7, (resolution, seconds)
 
 
 def rss_bytes():
