@@ -166,6 +166,32 @@ public:
         return {};
     }
 
+    /// Removes several vertices and every face that uses any of them, in one pass over the
+    /// faces: O(F_all x V_face + k) for k vertices, where k calls of remove_vertex cost k times
+    /// that. Fails, with the mesh unchanged, if a vertex does not exist or is named twice.
+    result<void> remove_vertices(std::span<const vertex_handle> vs) {
+        for (std::size_t i = 0; i < vs.size(); ++i) {
+            if (!is_valid(vs[i])) {  // marking as we go makes a repeat look deleted too
+                for (std::size_t k = 0; k < i; ++k) vertex_deleted_[vs[k].index] = 0;
+                return fail(errc::invalid_handle,
+                            "remove_vertices: vertex " + std::to_string(vs[i].index) + " does not exist or is named twice", vs[i].index);
+            }
+            vertex_deleted_[vs[i].index] = 1;
+        }
+        for (std::size_t f = 0; f < face_index_bound(); ++f) {
+            if (face_deleted_[f]) continue;
+            for (std::size_t c = face_begin_[f]; c < face_begin_[f + 1]; ++c)
+                if (vertex_deleted_[corners_[c].index]) {
+                    face_deleted_[f] = 1;
+                    ++deleted_faces_;
+                    break;
+                }
+        }
+        deleted_vertices_ += vs.size();
+        ++changes_;
+        return {};
+    }
+
     /// Whether deleted elements wait for collect_garbage().
     bool has_garbage() const noexcept { return deleted_vertices_ + deleted_faces_ > 0; }
 
@@ -255,6 +281,7 @@ struct mesh_traits<basic_face_vertex_mesh<Scalar>> : detail::native_element_trai
     static void reverse_face(mesh& m, face_handle f) { m.reverse_face(f); }
     static result<void> remove_face(mesh& m, face_handle f) { return m.remove_face(f); }
     static result<void> remove_vertex(mesh& m, vertex_handle v) { return m.remove_vertex(v); }
+    static result<void> remove_vertices(mesh& m, std::span<const vertex_handle> vs) { return m.remove_vertices(vs); }
 };
 
 }  // namespace hmira
