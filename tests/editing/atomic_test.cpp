@@ -415,6 +415,18 @@ TYPED_TEST(atomic_test, deleted_handles_are_refused_as_invalid_handles_where_the
         ASSERT_FALSE(k);
         EXPECT_EQ(k.error().code, hmira::errc::invalid_handle) << k.error().message;
         EXPECT_TRUE(take_state(m) == before);
+        // A deleted face: killEF(h) keeps h's own face and deletes the one across h (this case
+        // once took face(h), which survives, and so wrongly saw the extrude succeed).
+        const auto h = T::face_halfedge(m, *T::faces(m).begin());
+        const auto gone = T::face(m, T::opposite(m, h));
+        ASSERT_NE(gone, T::null_face());
+        ASSERT_TRUE((hmira::kill_edge_face<M, T>(m, h)));
+        ASSERT_TRUE((T::is_removed(m, gone)));
+        const auto after_kill = take_state(m);
+        auto x = hmira::extrude<M, T>(m, gone, {.distance = 1});
+        ASSERT_FALSE(x);
+        EXPECT_EQ(x.error().code, hmira::errc::invalid_handle) << x.error().message;
+        EXPECT_TRUE(take_state(m) == after_kill) << "extrude";
     }
 }
 

@@ -282,6 +282,10 @@ struct mesh_traits<basic_face_vertex_mesh<Scalar>> : detail::native_element_trai
     static result<void> remove_face(mesh& m, face_handle f) { return m.remove_face(f); }
     static result<void> remove_vertex(mesh& m, vertex_handle v) { return m.remove_vertex(v); }
     static result<void> remove_vertices(mesh& m, std::span<const vertex_handle> vs) { return m.remove_vertices(vs); }
+    /// Whether the element was removed (optional traits query: operators refuse such handles
+    /// with errc::invalid_handle). Meaningful for an index below the bound. O(1).
+    static bool is_removed(const mesh& m, vertex_handle v) { return !m.is_valid(v); }
+    static bool is_removed(const mesh& m, face_handle f) { return !m.is_valid(f); }
 };
 
 }  // namespace hmira

@@ -140,29 +140,52 @@ private:
 };
 
 /// The outgoing halfedges of v in rotation order (h -> next(opposite(h))), starting at the
-/// stored one (a boundary halfedge when v is on the boundary). O(V_adjacentV).
+/// stored one (a boundary halfedge when v is on the boundary), or an error if the links are
+/// corrupt: a step reaches a halfedge that does not leave v, or the walk does not come back to
+/// its start within as many steps as the mesh has halfedges (a cycle that misses the start).
+/// A valid rotation visits each outgoing halfedge once, so no valid mesh is refused, however
+/// high the degree. `what` names the calling function.
+/// Cost O(V_adjacentV) on a valid mesh; on corrupt links at most O(H_all) steps and memory.
+template <class M, class T>
+result<std::vector<typename T::halfedge_handle>> checked_outgoing(const M& m, typename T::vertex_handle v, const char* what) {
+    namespace de = detail::euler;
+    std::vector<typename T::halfedge_handle> out;
+    const auto start = T::vertex_halfedge(m, v);
+    if (start == T::null_halfedge()) return out;
+    const std::size_t bound = T::halfedge_index_bound(m);
+    auto corrupt = [&](const std::string& why) {
+        return fail(errc::topology, std::string(what) + ": the edges around " + de::name<M, T>("vertex", m, v) + " are corrupt (" + why + ")",
+                    de::index_of<M, T>(m, v));
+    };
+    auto h = start;
+    do {
+        if (T::target(m, T::opposite(m, h)) != v)
+            return corrupt("halfedge " + std::to_string(T::halfedge_index(m, h)) + " of its rotation does not leave it");
+        if (out.size() >= bound)
+            return corrupt("its rotation does not return to halfedge " + std::to_string(T::halfedge_index(m, start)) + " within " +
+                           std::to_string(bound) + " steps");
+        out.push_back(h);
+        h = T::next(m, T::opposite(m, h));
+    } while (h != start);
+    return out;
+}
+
+/// The outgoing halfedges of v in rotation order, as checked_outgoing() gives them, for a
+/// vertex already checked (check_corner_vertex(), which calls checked_outgoing()) whose links
+/// only the edit itself has changed since. Unchecked: with corrupt links it stops after
+/// H_all steps with a partial rotation, which its precondition excludes. O(V_adjacentV).
+/// \pre checked_outgoing(m, v) succeeds.
 template <class M, class T>
 std::vector<typename T::halfedge_handle> outgoing(const M& m, typename T::vertex_handle v) {
     std::vector<typename T::halfedge_handle> out;
     const auto start = T::vertex_halfedge(m, v);
     if (start == T::null_halfedge()) return out;
+    const std::size_t bound = T::halfedge_index_bound(m);
     auto h = start;
     do {
         out.push_back(h);
         h = T::next(m, T::opposite(m, h));
-    } while (h != start && out.size() <= 1u << 20);
-    return out;
-}
-
-/// The same rotation, starting at `first` (an outgoing halfedge of its source).
-template <class M, class T>
-std::vector<typename T::halfedge_handle> outgoing_from(const M& m, typename T::halfedge_handle first) {
-    std::vector<typename T::halfedge_handle> out;
-    auto h = first;
-    do {
-        out.push_back(h);
-        h = T::next(m, T::opposite(m, h));
-    } while (h != first && out.size() <= 1u << 20);
+    } while (h != start && out.size() < bound);
     return out;
 }
 
@@ -174,7 +197,9 @@ result<void> check_corner_vertex(const M& m, typename T::vertex_handle v, const 
     if (!de::usable<M, T>(m, v))
         return fail(errc::invalid_handle, std::string(what) + ": " + de::name<M, T>("vertex", m, v) + " does not exist",
                     de::index_of<M, T>(m, v));
-    const auto hs = outgoing<M, T>(m, v);
+    const auto rotation = checked_outgoing<M, T>(m, v, what);
+    if (!rotation) return rotation.error();
+    const auto& hs = rotation.value();
     if (hs.empty())
         return fail(errc::topology, std::string(what) + ": " + de::name<M, T>("vertex", m, v) + " is isolated; there is no corner to cut",
                     de::index_of<M, T>(m, v));
