@@ -15,6 +15,8 @@
 #include <string>
 #include <vector>
 
+#include <hmira/algorithms/primitives/primitives.hpp>
+
 #include "editing/editing_support.hpp"
 #include "euler/euler_support.hpp"
 
@@ -255,6 +257,55 @@ bool build(M& m, const hmira_test::face_list& g) {
     return hmira_test::add_face_list(m, g);
 }
 
+/// The cube [-1,1]^3 whose top face (y = 1) has a square inner ring of half-size a, built
+/// with Euler operators (a chain of makeEV into the top, makeEF closing the square, killEmakeR
+/// on the chain's first edge). With `plugged` the square stays a face of its own (V 12, E 16,
+/// F 7, R 1); without, it is removed and the ring borders a hole in the top (F 6).
+/// Returns the ringed face.
+template <class M, class T = hmira::default_traits<M>>
+typename T::face_handle ringed_cube(M& m, double a, bool plugged) {
+    using S = typename T::scalar;
+    auto cube = hmira::generate_cube(m);
+    EXPECT_TRUE(cube);
+    const auto corner = T::face_halfedge(m, cube.value().faces[5]);
+    const hmira::vec3<S> q[4] = {{S(-a), 1, S(-a)}, {S(-a), 1, S(a)}, {S(a), 1, S(a)}, {S(a), 1, S(-a)}};
+    auto p0 = hmira::make_edge_vertex<M, T>(m, corner, q[0]);
+    EXPECT_TRUE(p0);
+    auto prev = p0.value().halfedge;
+    for (int i = 1; i < 4; ++i) {
+        auto next = hmira::make_edge_vertex<M, T>(m, prev, q[i]);
+        EXPECT_TRUE(next);
+        prev = next.value().halfedge;
+    }
+    EXPECT_TRUE((hmira::make_edge_face<M, T>(m, prev, p0.value().halfedge)));
+    const auto ring = hmira::kill_edge_make_ring<M, T>(m, p0.value().halfedge);
+    EXPECT_TRUE(ring);
+    const auto top = T::face(m, ring.value().ring);
+    if (!plugged) {
+        EXPECT_TRUE((hmira::remove_face<M, T>(m, T::face(m, T::opposite(m, ring.value().ring)))));
+    }
+    return top;
+}
+
+/// The bases the random suite edits: the shapes above, and on a model with inner rings a cube
+/// whose top has a ring, plugged by a face or open.
+template <class M>
+std::vector<std::pair<std::string, M>> bases() {
+    std::vector<std::pair<std::string, M>> out;
+    for (const auto& s : shapes()) {
+        M m;
+        if (build(m, s.shape)) out.emplace_back(s.name, std::move(m));  // a model may refuse a pinched shape
+    }
+    if constexpr (hmira::euler_ring_mutable_mesh<M>) {
+        for (bool plugged : {true, false}) {
+            M m;
+            ringed_cube(m, 0.5, plugged);
+            out.emplace_back(plugged ? "cube with a plugged ring in its top" : "cube with an open ring in its top", std::move(m));
+        }
+    }
+    return out;
+}
+
 TYPED_TEST(atomic_test, random_edits_either_succeed_validly_or_change_nothing) {
     using M = TypeParam;
     HMIRA_REQUIRE_EDITING(M)
@@ -262,9 +313,11 @@ TYPED_TEST(atomic_test, random_edits_either_succeed_validly_or_change_nothing) {
         using T = hmira::default_traits<M>;
         std::mt19937 rng(1313);
         std::size_t succeeded = 0, refused = 0;
-        for (const auto& s : shapes()) {
-            M base;
-            if (!build(base, s.shape)) continue;  // the model refuses the shape (pinched): nothing to edit
+        std::size_t ringed = 0;
+        for (const auto& [name, base] : bases<M>()) {
+            const struct { const std::string& name; } s{name};
+            if constexpr (hmira::inner_ring_mesh<M, T>)
+                for (auto f : T::faces(base)) ringed += std::ranges::empty(T::inner_rings(base, f)) ? 0 : 1;
             const long long chi = hmira_test::count_euler(base).lhs();
             const std::size_t base_problems = hmira::validate<M, T>(base, {.check_geometry = false}).size();
             for (auto kind : all_edits)
@@ -293,6 +346,9 @@ TYPED_TEST(atomic_test, random_edits_either_succeed_validly_or_change_nothing) {
         }
         EXPECT_GT(succeeded, 50u);
         EXPECT_GT(refused, 5u);  // the pinched vertices and boundary edges must be refused sometimes
+        if constexpr (hmira::euler_ring_mutable_mesh<M>) {
+            EXPECT_EQ(ringed, 2u) << "both ringed bases were edited";
+        }
     }
 }
 
@@ -379,6 +435,29 @@ TYPED_TEST(atomic_test, a_failure_or_bad_alloc_at_every_step_of_an_edit_leaves_t
         check_every_fault(open, t, "open grid, truncate all");
         planned_edit<M> x{.kind = edit_kind::extrude_region, .vertices = {}, .edges = {}, .faces = all_face_handles<M, T>(open), .amount = 0.5, .clamp = true};
         check_every_fault(open, x, "open grid, extrude all as a region");
+        if constexpr (hmira::euler_ring_mutable_mesh<M, T>) {
+            // Faces with holes: the ringed face extruded both ways, the ring's vertices cut
+            // where the ring borders a hole, the ring's edges bevelled where it holds a plug.
+            M plugged;
+            const auto top = ringed_cube<M, T>(plugged, 0.5, true);
+            for (auto mode : {edit_kind::extrude_region, edit_kind::extrude_individual}) {
+                planned_edit<M> e{.kind = mode, .vertices = {}, .edges = {}, .faces = {top}, .amount = 0.5, .clamp = true};
+                check_every_fault(plugged, e, std::string("ringed top, ") + name_of(mode));
+            }
+            std::vector<typename T::edge_handle> ring_edges;
+            std::vector<typename T::vertex_handle> ring_vertices;
+            const auto r = *T::inner_rings(plugged, top).begin();
+            auto h = r;
+            do {
+                ring_edges.push_back(T::edge(plugged, h));
+                ring_vertices.push_back(T::target(plugged, h));
+                h = T::next(plugged, h);
+            } while (h != r);
+            planned_edit<M> b{.kind = edit_kind::bevel1, .vertices = {}, .edges = ring_edges, .faces = {}, .amount = 0.1, .clamp = true};
+            check_every_fault(plugged, b, "plugged ring, bevel its edges");
+            planned_edit<M> t2{.kind = edit_kind::truncate, .vertices = ring_vertices, .edges = {}, .faces = {}, .amount = 0.25, .clamp = true};
+            check_every_fault(plugged, t2, "plugged ring, truncate its vertices");
+        }
     }
 }
 
