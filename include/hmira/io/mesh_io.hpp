@@ -104,8 +104,10 @@ inline result<polygon_soup> read_soup(const std::filesystem::path& path, const r
 /// file repaired as repair_polygon_soup does (unless options.repair is false), and the report
 /// says what was repaired: degenerate faces dropped, faces on non-manifold edges cut free or
 /// dropped, faces flipped, non-manifold vertices split (copies follow the file's vertices, see
-/// read_report::copied_from). The mesh object is kept (OpenMesh keeps its requested
-/// properties): it is cleared only once the file is parsed and repaired.
+/// read_report::copied_from). The mesh object is kept: it is emptied only once the file is
+/// parsed and repaired, and keeps the user's properties (emptied, then sized to the new
+/// elements): named properties on hmira's meshes, requested and added ones on OpenMesh,
+/// property maps on Surface_mesh.
 /// On any error the mesh is unchanged. Complexity O(bytes + C log d + mesh insertions), C
 /// corners, d the largest vertex degree.
 /// Errors: errc::io_error, errc::unsupported, the format's parse errors; without repair, a

@@ -563,6 +563,27 @@ public:
     }
     /// Removes everything, properties included.
     void clear() { *this = basic_halfedge_mesh(); }
+    /// Removes every element and keeps the named properties (emptied, their defaults kept), as
+    /// OpenMesh's clear() does: what reading a file into a mesh uses. The change count keeps
+    /// growing, so an index built before sees that it is stale. Invalidates all handles. O(1)
+    /// besides freeing the storage.
+    void clear_elements() {
+        auto vertex_props = std::move(vertex_props_);
+        auto edge_props = std::move(edge_props_);
+        auto halfedge_props = std::move(halfedge_props_);
+        auto face_props = std::move(face_props_);
+        const auto changes = changes_;
+        *this = basic_halfedge_mesh();
+        vertex_props_ = std::move(vertex_props);
+        vertex_props_.resize(0);
+        edge_props_ = std::move(edge_props);
+        edge_props_.resize(0);
+        halfedge_props_ = std::move(halfedge_props);
+        halfedge_props_.resize(0);
+        face_props_ = std::move(face_props);
+        face_props_.resize(0);
+        changes_ = changes + 1;
+    }
 
     /// Grows on every change of connectivity or of the element set.
     std::uint64_t change_count() const noexcept { return changes_; }

@@ -107,24 +107,38 @@ inline std::uint8_t to_byte(double c) {
 
 }  // namespace detail
 
-/// Builds a fresh mesh from the soup and moves it into `mesh` only if every face was accepted.
-/// `face_origin(i)` describes where face i came from, for the error message. Attributes are
-/// stored as properties when the mesh has named properties.
-/// Complexity: O(V + C) mesh insertions for C face corners.
-template <class M, class T = default_traits<M>, class Origin>
-    requires readable_mesh<M, T>
-result<void> assign_from_soup(M& mesh, const polygon_soup& soup, Origin&& face_origin) {
+namespace detail {
+
+/// Empties a mesh that is about to be read into, keeping what the user set up on it where the
+/// model allows: hmira's meshes (clear_elements) and OpenMesh (clear) keep their named and
+/// requested properties, emptied; Surface_mesh keeps its property maps. Another model is
+/// assigned a default-constructed one.
+template <class M>
+void clear_for_reading(M& mesh) {
+    if constexpr (requires { mesh.clear_elements(); })
+        mesh.clear_elements();
+    else if constexpr (requires { mesh.clear_without_removing_property_maps(); })
+        mesh.clear_without_removing_property_maps();
+    else if constexpr (requires { mesh.clear(); })
+        mesh.clear();
+    else
+        mesh = M{};
+}
+
+/// Adds the soup's vertices and faces to `mesh`; the first refused face's error, named by
+/// `face_origin`, or the new vertices.
+template <class M, class T, class Origin>
+result<std::vector<typename T::vertex_handle>> add_soup(M& mesh, const polygon_soup& soup, Origin& face_origin) {
     using S = typename T::scalar;
-    M fresh;
     std::vector<typename T::vertex_handle> vs;
     vs.reserve(soup.points.size());
     for (const auto& p : soup.points)
-        vs.push_back(T::add_vertex(fresh, vec3<S>{static_cast<S>(p[0]), static_cast<S>(p[1]), static_cast<S>(p[2])}));
+        vs.push_back(T::add_vertex(mesh, vec3<S>{static_cast<S>(p[0]), static_cast<S>(p[1]), static_cast<S>(p[2])}));
     std::vector<typename T::vertex_handle> corners;
     for (std::size_t f = 0; f < soup.face_count(); ++f) {
         corners.clear();
         for (auto k = soup.face_offsets[f]; k < soup.face_offsets[f + 1]; ++k) corners.push_back(vs[soup.indices[k]]);
-        auto added = T::add_face(fresh, std::span<const typename T::vertex_handle>(corners));
+        auto added = T::add_face(mesh, std::span<const typename T::vertex_handle>(corners));
         if (!added) {
             auto e = added.error();
             e.message = face_origin(f) + ": face " + std::to_string(f) + " rejected: " + e.message;
@@ -132,25 +146,40 @@ result<void> assign_from_soup(M& mesh, const polygon_soup& soup, Origin&& face_o
             return e;
         }
     }
-    detail::store_attribute_properties<M, T>(fresh, soup.attributes, vs);
-    mesh = std::move(fresh);
+    return vs;
+}
+
+}  // namespace detail
+
+/// Fills `mesh` from the soup only if every face is accepted; on error the mesh is unchanged.
+/// The soup is first built into a fresh mesh of the same type. A model that can be emptied
+/// while keeping its properties (hmira's clear_elements, see detail::clear_for_reading) is
+/// then emptied and built again, so the user's object and its named properties stay; any
+/// other model is move-assigned the fresh mesh. `face_origin(i)` describes where face i came
+/// from, for the error message. Attributes are stored as properties when the mesh has named
+/// properties.
+/// Complexity: O(V + C) mesh insertions for C face corners (twice when the object is kept).
+template <class M, class T = default_traits<M>, class Origin>
+    requires readable_mesh<M, T>
+result<void> assign_from_soup(M& mesh, const polygon_soup& soup, Origin&& face_origin) {
+    M fresh;
+    auto vs = detail::add_soup<M, T>(fresh, soup, face_origin);
+    if (!vs) return vs.error();
+    if constexpr (requires { mesh.clear_elements(); }) {
+        fresh = M{};  // free it before building the same again into the user's mesh
+        detail::clear_for_reading(mesh);
+        // The same faces in the same order into an empty mesh of the same type: accepted again.
+        vs = detail::add_soup<M, T>(mesh, soup, face_origin);
+        if (!vs) return vs.error();
+        detail::store_attribute_properties<M, T>(mesh, soup.attributes, vs.value());
+    } else {
+        detail::store_attribute_properties<M, T>(fresh, soup.attributes, vs.value());
+        mesh = std::move(fresh);
+    }
     return {};
 }
 
 namespace detail {
-
-/// Empties a mesh that is about to be read into, keeping what the user set up on it where the
-/// model allows: OpenMesh's clear() keeps requested and added properties (values reset), and
-/// Surface_mesh keeps its property maps. hmira's meshes start afresh.
-template <class M>
-void clear_for_reading(M& mesh) {
-    if constexpr (requires { mesh.clear_without_removing_property_maps(); })
-        mesh.clear_without_removing_property_maps();
-    else if constexpr (requires { mesh.clear(); })
-        mesh.clear();
-    else
-        mesh = M{};
-}
 
 /// The first thing a repair changed, as "face 12: <why>", for refusing a file without repair.
 inline std::pair<long long, std::string> first_repair(const soup_repair_report& r) {
