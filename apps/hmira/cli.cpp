@@ -9,6 +9,7 @@
 #include <csignal>
 #include <cstring>
 
+#include <algorithm>
 #include <cerrno>
 #include <charconv>
 #include <cmath>
@@ -197,6 +198,67 @@ std::optional<loaded_mesh> load(const std::string& path, const common_options& o
     return out;
 }
 
+std::optional<loaded_mesh> load_for_edit(const std::string& path, const common_options& o, int& code) {
+    loaded_mesh out;
+    progress_bar bar("reading " + path, o);
+    auto soup = hmira::io::read_soup(path, {.progress = bar.callback(), .max_input_bytes = o.max_input_bytes});
+    if (!soup) {
+        code = report(input_exit_code(soup.error()), soup.error().message);
+        return std::nullopt;
+    }
+    // Drop what no polygon mesh holds: faces with fewer than 3 distinct corners, or a repeated
+    // corner (face_vertex_mesh refuses those; the half-edge readers drop them too).
+    hmira::io::polygon_soup kept;
+    kept.points = std::move(soup->points);
+    kept.attributes = std::move(soup->attributes);
+    kept.face_offsets.assign(1, 0);
+    std::vector<std::size_t> file_face, dropped;
+    std::vector<std::uint32_t> seen;
+    for (std::size_t f = 0; f < soup->face_count(); ++f) {
+        seen.assign(soup->indices.begin() + static_cast<std::ptrdiff_t>(soup->face_offsets[f]),
+                    soup->indices.begin() + static_cast<std::ptrdiff_t>(soup->face_offsets[f + 1]));
+        std::sort(seen.begin(), seen.end());
+        if (seen.size() < 3 || std::adjacent_find(seen.begin(), seen.end()) != seen.end()) {
+            dropped.push_back(f);
+            continue;
+        }
+        kept.indices.insert(kept.indices.end(), soup->indices.begin() + static_cast<std::ptrdiff_t>(soup->face_offsets[f]),
+                            soup->indices.begin() + static_cast<std::ptrdiff_t>(soup->face_offsets[f + 1]));
+        kept.face_offsets.push_back(kept.indices.size());
+        file_face.push_back(f);
+    }
+    auto built = hmira::io::assign_from_soup(out.mesh, kept, [&](std::size_t) { return path; });
+    if (!built) {
+        code = report(input_exit_code(built.error()), built.error().message);
+        return std::nullopt;
+    }
+    out.report.file_vertices = kept.points.size();
+    out.file_faces = soup->face_count();
+    out.report.attributes = std::move(kept.attributes);
+    if (!dropped.empty()) {
+        out.repairs = std::to_string(dropped.size()) + (dropped.size() == 1 ? " degenerate face" : " degenerate faces") + " dropped (file face";
+        for (std::size_t i = 0; i < dropped.size() && i < 3; ++i) out.repairs += (i ? ", " : " ") + std::to_string(dropped[i]);
+        out.repairs += dropped.size() > 3 ? ", ...)" : ")";
+        out.file_face = std::move(file_face);
+    }
+    code = ok;
+    return out;
+}
+
+bool file_faces_to_loaded(const loaded_mesh& loaded, std::vector<std::size_t>& faces, const std::string& path, int& code) {
+    code = ok;
+    if (loaded.file_face.empty()) return true;
+    for (auto& f : faces) {
+        const auto at = std::lower_bound(loaded.file_face.begin(), loaded.file_face.end(), f);
+        if (at == loaded.file_face.end() || *at != f) {
+            code = report(usage, "--face: face " + std::to_string(f) + " of " + path + " is degenerate (fewer than 3 distinct corners) and was dropped; there is nothing to edit");
+            return false;
+        }
+        f = static_cast<std::size_t>(at - loaded.file_face.begin());
+    }
+    return true;
+}
+
 int save(const hmira::face_vertex_mesh& mesh, const std::string& path, const hmira::io::write_options& options, const common_options&) {
     auto w = hmira::io::write_mesh(mesh, path, options);
     if (!w) return report(exit_code_for(w.error()), w.error().message);
@@ -295,6 +357,7 @@ int run_edit(const loaded_mesh& loaded, const std::string& input, const std::str
         std::string repairs;
         auto mesh = to_halfedge(loaded.mesh, input, code, &repairs);
         if (!mesh) return code;
+        if (!loaded.repairs.empty()) repairs = repairs.empty() ? loaded.repairs : loaded.repairs + "; " + repairs;
         if (!repairs.empty()) say(o, input + ": repaired for editing: " + repairs);
         before = counts_of(*mesh);
         bar.update(1, 3);

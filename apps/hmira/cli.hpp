@@ -98,8 +98,22 @@ void say(const common_options& o, const std::string& line);
 struct loaded_mesh {
     hmira::face_vertex_mesh mesh;
     hmira::io::read_report report;
+    /// load_for_edit(): the repairs already made on reading ("" if none), for the one-line note.
+    std::string repairs = {};
+    /// load_for_edit(): face i of `mesh` is the file's face file_face[i]; empty when no face
+    /// was dropped (then face i is the file's face i).
+    std::vector<std::size_t> file_face = {};
+    /// load_for_edit(): how many faces the file has, dropped ones included (what --face N counts).
+    std::size_t file_faces = 0;
 };
 std::optional<loaded_mesh> load(const std::string& path, const common_options& o, int& code);
+/// load() for the editing subcommands: faces with fewer than 3 distinct corners are dropped
+/// (as reading into a half-edge model does) instead of refusing the file; `repairs` and
+/// `file_face` say what went. validate and info use load(), which describes the file as it is.
+std::optional<loaded_mesh> load_for_edit(const std::string& path, const common_options& o, int& code);
+/// Turns face indices of the input file (--face N) into faces of a load_for_edit() mesh; a
+/// face that was dropped, or out of range, is a usage error naming it.
+bool file_faces_to_loaded(const loaded_mesh& loaded, std::vector<std::size_t>& faces, const std::string& path, int& code);
 /// Writes atomically; prints the error and returns the exit code (ok on success).
 int save(const hmira::face_vertex_mesh& mesh, const std::string& path, const hmira::io::write_options& options, const common_options& o);
 

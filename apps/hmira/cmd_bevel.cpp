@@ -125,7 +125,7 @@ int run_bevel(const bevel_args& a, const common_options& o) {
     if (vertex_mode && a.segments != 1) return report(usage, "bevel: vertex-only mode (--vertex, --vertices-all) makes flat cuts only; drop --segments");
     if (vertex_mode && a.no_clamp) return report(usage, "bevel: vertex-only mode always stops cuts at the middle of an edge; drop --no-clamp");
     int code = ok;
-    auto loaded = load(a.input, o, code);
+    auto loaded = load_for_edit(a.input, o, code);
     if (!loaded) return code;
     if (!check_indices(a.vertices, loaded->mesh.vertex_count(), "vertex", "--vertex", a.input, code)) return code;
     return run_edit(*loaded, a.input, a.output, "bevelling " + a.input, o, [&](hmira::halfedge_mesh& mesh, int& c) -> std::optional<edit_outcome> {

@@ -61,15 +61,17 @@ int run_extrude(const extrude_args& a, const common_options& o) {
         direction = hmira::vec3<double>{(*d)[0], (*d)[1], (*d)[2]};
     }
     int code = ok;
-    auto loaded = load(a.input, o, code);
+    auto loaded = load_for_edit(a.input, o, code);
     if (!loaded) return code;
-    if (!check_indices(a.faces, loaded->mesh.face_count(), "face", "--face", a.input, code)) return code;
+    if (!check_indices(a.faces, loaded->file_faces, "face", "--face", a.input, code)) return code;
+    auto faces = a.faces;  // the file's face numbers, as faces of the loaded mesh
+    if (!file_faces_to_loaded(*loaded, faces, a.input, code)) return code;
     return run_edit(*loaded, a.input, a.output, "extruding " + a.input, o, [&](hmira::halfedge_mesh& mesh, int& c) -> std::optional<edit_outcome> {
         std::vector<hmira::face_handle> chosen;
         if (a.all) {
             for (auto f : mesh.faces()) chosen.push_back(f);
         } else {
-            for (auto i : a.faces) chosen.emplace_back(i);
+            for (auto i : faces) chosen.emplace_back(i);
         }
         const hmira::extrude_options options{.distance = a.distance,
                                              .direction = direction,

@@ -16,7 +16,7 @@ struct fill_holes_args {
 
 int run_fill_holes(const fill_holes_args& a, const common_options& o) {
     int code = ok;
-    auto loaded = load(a.input, o, code);
+    auto loaded = load_for_edit(a.input, o, code);
     if (!loaded) return code;
     return run_edit(*loaded, a.input, a.output, "filling holes in " + a.input, o,
                     [&](hmira::halfedge_mesh& mesh, int& c) -> std::optional<edit_outcome> {

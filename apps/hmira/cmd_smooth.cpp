@@ -19,7 +19,7 @@ struct smooth_args {
 
 int run_smooth(const smooth_args& a, const common_options& o) {
     int code = ok;
-    auto loaded = load(a.input, o, code);
+    auto loaded = load_for_edit(a.input, o, code);
     if (!loaded) return code;
     if (!check_indices(a.fixed, loaded->mesh.vertex_count(), "vertex", "--fix", a.input, code)) return code;
     const auto w = a.weights == "cotangent" ? hmira::laplacian_weights::cotangent : hmira::laplacian_weights::uniform;

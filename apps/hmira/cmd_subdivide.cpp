@@ -15,7 +15,7 @@ struct subdivide_args {
 
 int run_subdivide(const subdivide_args& a, const common_options& o) {
     int code = ok;
-    auto loaded = load(a.input, o, code);
+    auto loaded = load_for_edit(a.input, o, code);
     if (!loaded) return code;
     return run_edit(*loaded, a.input, a.output, "subdividing " + a.input, o,
                     [&](hmira::halfedge_mesh& mesh, int& c) -> std::optional<edit_outcome> {

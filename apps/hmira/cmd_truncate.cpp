@@ -20,7 +20,7 @@ struct truncate_args {
 int run_truncate(const truncate_args& a, const common_options& o) {
     if (a.vertices.empty() && !a.all) return report(usage, "truncate: choose the vertices with --vertex N (repeatable) or --all");
     int code = ok;
-    auto loaded = load(a.input, o, code);
+    auto loaded = load_for_edit(a.input, o, code);
     if (!loaded) return code;
     if (!check_indices(a.vertices, loaded->mesh.vertex_count(), "vertex", "--vertex", a.input, code)) return code;
     return run_edit(*loaded, a.input, a.output, "truncating " + a.input, o, [&](hmira::halfedge_mesh& mesh, int& c) -> std::optional<edit_outcome> {

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <array>
 #include <bit>
 #include <cmath>
@@ -765,6 +766,41 @@ TEST(cli, editing_refuses_bad_selections_unknown_options_and_non_manifold_input)
     }
     // Missing input.
     expect_refused(dir, "truncate nothere.obj t.obj --all", 3, "nothere.obj", "t.obj");
+}
+
+TEST(cli, edits_drop_degenerate_faces_with_a_note_while_validate_and_info_describe_the_file_as_it_is) {
+    scratch_dir dir;
+    // Face 2 repeats vertex 1: no polygon mesh holds it. Faces 0, 1 and 3 form an open square
+    // and a triangle on it.
+    hmira_test::write_bytes(dir / "deg.off", "OFF\n5 4 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0.5 0.5 1\n3 0 1 2\n3 0 2 3\n3 1 1 2\n3 2 1 4\n");
+    for (const std::string cmd : {"truncate deg.off t.off --vertex 2", "truncate deg.off t.off --all", "extrude deg.off t.off --face 1",
+                                  "extrude deg.off t.off --face 3", "bevel deg.off t.off --edge 0,2", "smooth deg.off t.off",
+                                  "subdivide deg.off t.off", "fill-holes deg.off t.off"}) {
+        SCOPED_TRACE(cmd);
+        std::filesystem::remove(dir / "t.off");
+        const auto r = hmira(dir, cmd);
+        EXPECT_EQ(r.code, 0) << r.err;
+        EXPECT_NE(r.out.find("deg.off: repaired for editing: 1 degenerate face dropped (file face 2)"), std::string::npos) << r.out;
+        EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n') - std::count(r.out.begin(), r.out.end(), '\r'), 2) << "one note line and one result line:\n" << r.out;
+        ASSERT_TRUE(std::filesystem::exists(dir / "t.off"));
+        const auto out = read_back(dir / "t.off");
+        EXPECT_TRUE(hmira_test::is_valid(out, {.check_geometry = false}));
+    }
+    // --face N still names the file's face N: face 3 is the triangle (a quad of side walls
+    // around it), face 2 is gone, face 4 never existed.
+    ASSERT_EQ(hmira(dir, "extrude deg.off t.off --face 3 --distance 1").code, 0);
+    const auto x = read_back(dir / "t.off");
+    EXPECT_EQ(x.face_count(), 3u + 3u);  // 3 kept faces, the triangle moved, 3 side walls
+    expect_refused(dir, "extrude deg.off t2.off --face 2", 2, "--face: face 2 of deg.off is degenerate (fewer than 3 distinct corners) and was dropped", "t2.off");
+    expect_refused(dir, "extrude deg.off t2.off --face 4", 2, "--face: face 4 does not exist: deg.off has 4 faces (0..3", "t2.off");
+    // validate and info describe the file as it is: the degenerate face is named, nothing repaired.
+    const auto v = hmira(dir, "validate deg.off");
+    EXPECT_NE(v.code, 0);
+    EXPECT_NE((v.out + v.err).find("face 2"), std::string::npos) << v.out << v.err;
+    EXPECT_EQ((v.out + v.err).find("repaired"), std::string::npos) << v.out << v.err;
+    const auto i = hmira(dir, "info deg.off");
+    EXPECT_NE((i.out + i.err).find("face 2"), std::string::npos) << i.out << i.err;
+    EXPECT_EQ((i.out + i.err).find("repaired"), std::string::npos) << i.out << i.err;
 }
 
 TEST(cli, editing_and_voxelizing_real_cgal_demo_meshes) {
