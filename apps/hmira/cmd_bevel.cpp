@@ -60,8 +60,17 @@ hmira::vec3<double> face_normal(const hmira::halfedge_mesh& m, hmira::face_handl
     return n;
 }
 
+/// The file's index of v: a copy that repair on read made of a split vertex stands for its
+/// original.
+std::size_t file_index(const hmira::halfedge_mesh& m, hmira::vertex_handle v) {
+    if (auto source = m.get_vertex_property<std::uint32_t>("v:file_vertex")) return (*source)[v];
+    return v.index;
+}
+
 /// The edges to bevel, from the command line; prints the error and sets `code` on failure.
-std::optional<std::vector<hmira::edge_handle>> select_edges(const bevel_args& a, const hmira::halfedge_mesh& m, int& code) {
+/// `file_vertices_count` is the file's vertex count (copies of split vertices come after it).
+std::optional<std::vector<hmira::edge_handle>> select_edges(const bevel_args& a, const hmira::halfedge_mesh& m, std::size_t file_vertices_count,
+                                                            int& code) {
     std::vector<hmira::edge_handle> out;
     if (a.all || a.angle >= 0) {
         // Only edges between two faces can be bevelled: boundary edges are skipped.
@@ -94,15 +103,24 @@ std::optional<std::vector<hmira::edge_handle>> select_edges(const bevel_args& a,
             code = report(usage, "--edge " + text + ": expected two vertex indices A,B (0-based, in file order)");
             return std::nullopt;
         }
-        if (!check_indices({(*ends)[0], (*ends)[1]}, m.vertex_count(), "vertex", "--edge " + text, a.input, code)) return std::nullopt;
-        const auto h = m.find_halfedge(hmira::vertex_handle((*ends)[0]), hmira::vertex_handle((*ends)[1]));
-        if (!h) {
+        if (!check_indices({(*ends)[0], (*ends)[1]}, file_vertices_count, "vertex", "--edge " + text, a.input, code)) return std::nullopt;
+        // A vertex the repair on read split has copies: every edge joining a copy of A to a copy
+        // of B is the file's edge A,B.
+        const std::size_t one_a[] = {(*ends)[0]}, one_b[] = {(*ends)[1]};
+        const auto from = file_vertices(m, one_a), to = file_vertices(m, one_b);
+        bool joined = false;
+        for (auto va : from)
+            for (auto vb : to)
+                if (const auto h = m.find_halfedge(va, vb)) {
+                    joined = true;
+                    const auto e = m.edge(h);
+                    if (std::find(out.begin(), out.end(), e) == out.end()) out.push_back(e);  // "0,1" and "1,0" are one edge
+                }
+        if (!joined) {
             code = report(usage, "--edge " + text + ": vertices " + std::to_string((*ends)[0]) + " and " + std::to_string((*ends)[1]) + " of " + a.input +
                                      " are not joined by an edge");
             return std::nullopt;
         }
-        const auto e = m.edge(h);
-        if (std::find(out.begin(), out.end(), e) == out.end()) out.push_back(e);  // "0,1" and "1,0" are one edge
     }
     code = ok;
     return out;
@@ -114,7 +132,8 @@ std::string with_edge_ends(const hmira::error& e, const hmira::halfedge_mesh& m)
     const std::string prefix = "bevel: edge " + std::to_string(e.element) + " ";
     if (e.element < 0 || static_cast<std::size_t>(e.element) >= m.edge_index_bound() || e.message.rfind(prefix, 0) != 0) return e.message;
     const auto ends = m.edge_vertices(hmira::edge_handle(static_cast<std::size_t>(e.element)));
-    return "bevel: edge " + std::to_string(ends[0].index) + "," + std::to_string(ends[1].index) + " " + e.message.substr(prefix.size());
+    return "bevel: edge " + std::to_string(file_index(m, ends[0])) + "," + std::to_string(file_index(m, ends[1])) + " " +
+           e.message.substr(prefix.size());
 }
 
 int run_bevel(const bevel_args& a, const common_options& o) {
@@ -154,7 +173,7 @@ int run_bevel(const bevel_args& a, const common_options& o) {
             }
             return edit_outcome{"bevelled " + count_of(r->vertex_faces.size(), "vertex", "vertices"), {}};
         }
-        auto chosen = select_edges(a, mesh, c);
+        auto chosen = select_edges(a, mesh, loaded->mesh.vertex_count(), c);
         if (!chosen) return std::nullopt;
         auto r = hmira::bevel(mesh, *chosen, options);
         if (!r) {

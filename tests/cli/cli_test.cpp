@@ -755,7 +755,8 @@ TEST(cli, editing_refuses_bad_selections_unknown_options_and_non_manifold_input)
     expect_refused(dir, "extrude c.obj t.obj --face 0 --mode sideways", 2, "--mode", "t.obj");
     // Operations the mesh does not allow: invalid input, the library's reason.
     hmira_test::write_bytes(dir / "square.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 3\n");
-    expect_refused(dir, "bevel square.off t.off --edge 0,1", 1, "square.off: bevel: edge 0,1 is on the boundary", "t.off");
+    hmira_test::write_bytes(dir / "straight.off", "OFF\n5 1 0\n0 0 0\n1 0 0\n2 0 0\n2 1 0\n0 1 0\n5 0 1 2 3 4\n");
+    expect_refused(dir, "bevel straight.off t.off --edge 0,1", 1, "straight.off: bevel: the edges of a face corner at vertex 1 are collinear", "t.off");
     // Three triangles on one edge: repaired for editing (the third face cut free), with a note.
     hmira_test::write_bytes(dir / "fin.off", "OFF\n5 3 0\n0 0 0\n1 0 0\n0 1 0\n0 -1 0\n0 0 1\n3 0 1 2\n3 1 0 3\n3 0 1 4\n");
     for (const std::string cmd : {"truncate fin.off t.off --all", "truncate fin.off t.off --vertex 2", "extrude fin.off t.off --face 0"}) {

@@ -49,7 +49,8 @@ struct bevel_options {
 template <class M, class T = default_traits<M>>
 struct bevel_result {
     /// The strip faces, `segments` per bevelled edge (one for a strip whose two end vertices
-    /// stay), edge by edge in input order, each from its F_L side.
+    /// stay, unless the edge is on the boundary), edge by edge in input order, each from its
+    /// F_L side (a boundary edge's: from the side of its face).
     std::vector<typename T::face_handle> strip_faces;
     /// The patches closing vertices where three or more bevelled edges meet (a triangle at a
     /// cube corner; with segments > 1 every face of its grid fill), and vertex-only mode's faces.
@@ -104,6 +105,9 @@ struct bevel_plan {
     double requested_width = 0;                       ///< bevel_options::width
     double smallest_width = 0;                        ///< the smallest width used after the clamp
     std::size_t limited_edges = 0;                    ///< bevelled edges with a clamped new vertex
+    /// Per bevelled edge: it is a boundary edge (sel holds its halfedge in its one face, the
+    /// strip lies in that face and the edge itself stays as the strip's boundary side).
+    std::vector<bool> on_boundary;
 };
 
 /// Builds the bevel planned in `plan` (see bevel()). Run inside a transaction (T journaled);
@@ -150,10 +154,16 @@ result<void> bevel_build(M& mesh, const Plan& plan, Out& out) {
     }
     // 3. Each bevelled edge: cut the quad (p, v, w, q) off each side, then join the two quads.
     std::vector<H> strip_side(sel.size());  // a halfedge of each strip, on its F_L long side
+    //    A boundary edge has one face: its quad (u, w, q, p) is the whole strip, and the edge
+    //    stays as the strip's boundary side.
     for (std::size_t i = 0; i < sel.size(); ++i) {
         const auto h = sel[i], o = T::opposite(mesh, h);
         const auto left = mef<M, T>(mesh, T::prev(mesh, T::prev(mesh, h)), T::next(mesh, h));
         if (!left) return left.error();
+        if (plan.on_boundary[i]) {
+            strip_side[i] = T::opposite(mesh, left.value().halfedge);
+            continue;
+        }
         if (auto right = mef<M, T>(mesh, T::prev(mesh, T::prev(mesh, o)), T::next(mesh, o)); !right) return right.error();
         strip_side[i] = T::opposite(mesh, left.value().halfedge);  // q -> p, inside the strip
         if (auto ok = kef<M, T>(mesh, h); !ok) return ok.error();
@@ -178,6 +188,7 @@ result<void> bevel_build(M& mesh, const Plan& plan, Out& out) {
         int uses = 0;               // strips ending in this edge (2 at a mitre or pass-through)
         H side{};                   // its halfedge in the first such strip (no edge dies before it is split)
         std::vector<V> arc;         // a, the arc points, b
+        bool straight = false;      // a boundary strip ends in it: its points are evenly spaced on it
     };
     struct strip_end {
         bool pointed = false;  // the end vertex stayed: the strip ends in it
@@ -196,17 +207,20 @@ result<void> bevel_build(M& mesh, const Plan& plan, Out& out) {
         if (it == end_edge_at.end()) {
             const auto& here = side == 0 ? ends[i].first : ends[i].second;
             const auto& there = side == 0 ? ends[i].second : ends[i].first;
-            end_edges.push_back({a, b, here, normalized(there - here), 0, along, {}});
+            end_edges.push_back({a, b, here, normalized(there - here), 0, along, {}, false});
             it = end_edge_at.emplace(key, end_edges.size() - 1).first;
         }
         auto& ee = end_edges[it->second];
         ++ee.uses;
+        if (plan.on_boundary[i]) ee.straight = true;
         strip_ends[i][side] = {false, V{}, it->second, ee.a != a};
     };
     for (std::size_t i = 0; i < sel.size(); ++i) {
         const auto qp = strip_side[i];
         strip_face[i] = T::face(mesh, qp);
-        // The strip's loop: q -> p -> (p', or kept s -> p') -> q' -> (q, or kept t -> q).
+        // The strip's loop: q -> p -> (p', or kept s -> p') -> q' -> (q, or kept t -> q); a
+        // boundary strip's: q -> p -> u -> w -> q, where u and w stay but p-u and w-q are end
+        // edges (end_kept is false for it).
         if (end_kept[i][0]) strip_ends[i][0] = {true, T::target(mesh, T::next(mesh, qp)), 0, false};
         else add_end(i, 0, T::next(mesh, qp), T::target(mesh, qp), T::target(mesh, T::next(mesh, qp)));
         const auto back = T::prev(mesh, qp);
@@ -234,7 +248,9 @@ result<void> bevel_build(M& mesh, const Plan& plan, Out& out) {
     //    line nearest to the end edge's midpoint (a quarter circle at a three-edge corner).
     for (auto& ee : end_edges) {
         const auto pa = pos<M, T>(mesh, ee.a), pb = pos<M, T>(mesh, ee.b);
-        const auto ctrl = ee.uses >= 2 ? ee.v : ee.v + ee.dir * dot((pa + pb) / 2.0 - ee.v, ee.dir);
+        // A boundary strip has one face to be tangent to: flat, its control point the end
+        // edge's midpoint (arc_point is then linear in t).
+        const auto ctrl = ee.straight ? (pa + pb) / 2.0 : ee.uses >= 2 ? ee.v : ee.v + ee.dir * dot((pa + pb) / 2.0 - ee.v, ee.dir);
         auto x = ee.side;
         const bool forward = du::source<M, T>(mesh, x) == ee.a;
         std::vector<V> arc{du::source<M, T>(mesh, x)};
@@ -314,7 +330,28 @@ result<void> bevel_build(M& mesh, const Plan& plan, Out& out) {
 /// - Otherwise (the vertex also has edges away from the bevel, e.g. a degree-4 vertex of a
 ///   grid with one bevelled edge) the vertex stays where it is, with those edges, and the
 ///   strip ends in it: the strip face then has the vertex as a pointed end.
-/// V/E/F: a cube edge with segments = 1 gives V + 2, E + 3, F + 1 (8/12/6 -> 10/15/7).
+/// V/E/F: a cube edge with segments = 1 gives V + 2, E + 3, F + 1 (8/12/6 -> 10/15/7); with
+/// segments = s, V + 2s, E + 3s, F + s.
+///
+/// Boundary edges (one face) bevel too, as in 3D editors: the strip lies in the one face,
+/// between the edge and a new edge at `width` inside it, and the edge stays as the strip's
+/// boundary side. Its end vertices stay where they are (the strip runs along the boundary up
+/// to them); their corners in the face get new points as above, and the end edges (end
+/// vertex to new point) carry a straight, evenly divided profile: the strip is s parallel
+/// bands. The boundary keeps its shape, so a flat mesh keeps its area exactly.
+/// - One boundary edge whose ends have an unbevelled edge in the face's corner (e.g. inside
+///   a grid's side): V + 2s, E + 3s, F + s.
+/// - A run of k boundary edges through vertices of degree 3: neighbouring strips share the
+///   point slid along the edge between them: V + (k + 1)s, E + (2k + 1)s, F + ks; a whole
+///   boundary loop of k edges (corner vertices of degree 2 get a point inside the corner,
+///   shared by both strips as a mitre): V + ks, E + 2ks, F + ks.
+/// - Where a bevelled boundary edge meets a bevelled interior edge, the vertex stays, the
+///   corner between them gets one point inside the face, and the interior strip ends in the
+///   vertex (a pointed end, as at a vertex that keeps edges away from the bevel): for the
+///   grid vertex of degree 3 with its interior edge and one boundary edge bevelled, and the
+///   far ends kept, V + 5 + 2(s - 1), E + 7 + 3(s - 1), F + 2 + (s - 1).
+/// - An interior edge ending on the boundary is as before: its end goes when every corner
+///   there is next to the bevel, closed by one boundary edge through its two new points.
 ///
 /// With segments = n > 1 the flat result above is rounded:
 /// - Every end edge (where a strip meets its end vertex's replacement) is split once into n
@@ -343,6 +380,8 @@ result<void> bevel_build(M& mesh, const Plan& plan, Out& out) {
 /// At the clamp limit new points from both ends of an edge may coincide; the result is still
 /// valid topologically, but faces of zero area can occur there.
 ///
+/// Boundary edges' strips are listed from the side of their face.
+///
 /// Complexity O(sum of the end vertices' degrees and the touched faces' degrees) per edge =
 /// O(V_adjacentV), plus O(k) expected for the selection and slide lookups of k edges (hash
 /// tables), for segments = 1; with n segments add O(k log k) for the end-edge table, O(n^2)
@@ -352,8 +391,8 @@ result<void> bevel_build(M& mesh, const Plan& plan, Out& out) {
 /// smallest width used and how many edges were limited.
 /// Atomic: on any error, or when an allocation throws, the mesh is unchanged (see
 /// detail/transaction.hpp). Errors (mesh unchanged): errc::invalid_argument for options out of range or an empty
-/// selection; errc::invalid_handle for a missing edge; errc::unsupported for a boundary edge
-/// (a bevelled edge needs a face on both sides) or a degenerate corner (collinear edges);
+/// selection; errc::invalid_handle for a missing edge; errc::unsupported for an edge with no
+/// face on either side (a wire edge) or a degenerate corner (collinear edges);
 /// errc::topology / errc::non_manifold for end vertices truncate() would reject.
 template <class M, class T = default_traits<M>, class R>
     requires bevelable_mesh<M, T> && range_of_handles<R, typename T::edge_handle>
@@ -375,12 +414,17 @@ result<bevel_result<M, T>> bevel(M& mesh, const R& edges, const bevel_options& o
         if (T::edge_index(mesh, e) >= T::edge_index_bound(mesh) || du::known_removed<M, T>(mesh, e))
             return fail(errc::invalid_handle, "bevel: edge " + std::to_string(T::edge_index(mesh, e)) + " does not exist (out of range or deleted)",
                         static_cast<long long>(T::edge_index(mesh, e)));
-        const auto h = T::edge_halfedge(mesh, e);
-        if (T::face(mesh, h) == T::null_face() || T::face(mesh, T::opposite(mesh, h)) == T::null_face())
+        auto h = T::edge_halfedge(mesh, e);
+        const bool no_left = T::face(mesh, h) == T::null_face(), no_right = T::face(mesh, T::opposite(mesh, h)) == T::null_face();
+        if (no_left && no_right)
             return fail(errc::unsupported, "bevel: edge " + std::to_string(T::edge_index(mesh, e)) +
-                                               " is on the boundary; only edges between two faces are bevelled",
+                                               " has no face on either side (a wire edge); there is no face to hold the strip",
                         static_cast<long long>(T::edge_index(mesh, e)));
-        if (bevelled.insert(T::edge_index(mesh, e))) sel.push_back(h);
+        if (no_left) h = T::opposite(mesh, h);  // a boundary edge's strip lies in its one face
+        if (bevelled.insert(T::edge_index(mesh, e))) {
+            sel.push_back(h);
+            plan.on_boundary.push_back(no_left || no_right);
+        }
     }
     if (sel.empty()) return fail(errc::invalid_argument, "bevel: no edge selected");
     auto edge_of = [&](H h) { return T::edge_index(mesh, T::edge(mesh, h)); };
@@ -437,6 +481,11 @@ result<bevel_result<M, T>> bevel(M& mesh, const R& edges, const bevel_options& o
         for (std::size_t i = 0; i < d; ++i)
             if (!near[i]) removed[k] = false;
     }
+    // A bevelled boundary edge's strip runs along the boundary up to its ends: they stay.
+    for (std::size_t i = 0; i < sel.size(); ++i)
+        if (plan.on_boundary[i])
+            for (auto v : {du::source<M, T>(mesh, sel[i]), T::target(mesh, sel[i])})
+                removed[touched_at.find(T::vertex_index(mesh, v))] = false;
     // Clamp: each new vertex reaches at most half way along the edges it lies on or projects
     // onto (a slid vertex at the far end would collapse the face beside the strip). Its own
     // limit, as a width: `limit` per slide and per inner point.
@@ -496,7 +545,8 @@ result<bevel_result<M, T>> bevel(M& mesh, const R& edges, const bevel_options& o
     for (std::size_t i = 0; i < sel.size(); ++i)
         for (int side = 0; side < 2; ++side) {
             const auto v = side == 0 ? du::source<M, T>(mesh, sel[i]) : T::target(mesh, sel[i]);
-            plan.end_kept[i][side] = !removed[touched_at.find(T::vertex_index(mesh, v))];
+            // A boundary strip's ends stay, yet its ends are edges (p-u, w-q) for the profile.
+            plan.end_kept[i][side] = !plan.on_boundary[i] && !removed[touched_at.find(T::vertex_index(mesh, v))];
         }
     plan.requested_width = options.width;
     plan.share_meeting_points = !options.clamp_overlap || options.clamp_globally;

@@ -32,6 +32,19 @@ namespace hmira::detail::editing {
 // prev() reads a stored link in O(1) (true of every shipped model), and erase_* and setters do
 // not allocate once an erasure has happened (OpenMesh's status bits are requested before the
 // first change, through the traits' optional prepare_erase()).
+//
+// Elements made by the edit itself need no undo (the rollback erases them): a change to an
+// element whose index is at or above the index bound the mesh had when the edit began is not
+// journaled. That keeps a whole-mesh edit's journal to the changes of the old elements (a
+// third of the entries for truncate_all), which is what made such edits slow (memory).
+
+/// Makes room for one more element of v, growing geometrically: reserve(size() + 1) alone
+/// reallocates on every call (libstdc++ reserves exactly), which made a journal of n entries
+/// cost O(n^2). Amortised O(1).
+template <class X>
+void reserve_one_more(std::vector<X>& v) {
+    if (v.size() == v.capacity()) v.reserve(std::max<std::size_t>(16, 2 * v.capacity()));
+}
 
 /// Every raw mutation of one edit, in order, and what undoes it.
 template <class M, class T>
@@ -57,14 +70,27 @@ public:
         std::size_t seq;
     };
 
+    /// Remembers the index bounds: elements at or above them are made by the edit.
+    explicit journal(const M& m)
+        : halfedge_bound_(T::halfedge_index_bound(m)), vertex_bound_(T::vertex_index_bound(m)), face_bound_(T::face_index_bound(m)) {}
+
     void record_next(const M& m, H h, H n) {
-        prev_.reserve(prev_.size() + 1);
-        entries_.push_back({kind::next, h, T::next(m, h), V{}, F{}, 0});
-        prev_.push_back({n, T::prev(m, n), prev_.size()});
+        if (old(m, n)) {
+            reserve_one_more(prev_);
+            if (old(m, h)) entries_.push_back({kind::next, h, T::next(m, h), V{}, F{}, 0});
+            prev_.push_back({n, T::prev(m, n), prev_.size()});
+        } else if (old(m, h)) {
+            entries_.push_back({kind::next, h, T::next(m, h), V{}, F{}, 0});
+        }
     }
-    void record_target(const M& m, H h) { entries_.push_back({kind::target, h, H{}, T::target(m, h), F{}, 0}); }
-    void record_face(const M& m, H h) { entries_.push_back({kind::face, h, H{}, V{}, T::face(m, h), 0}); }
+    void record_target(const M& m, H h) {
+        if (old(m, h)) entries_.push_back({kind::target, h, H{}, T::target(m, h), F{}, 0});
+    }
+    void record_face(const M& m, H h) {
+        if (old(m, h)) entries_.push_back({kind::face, h, H{}, V{}, T::face(m, h), 0});
+    }
     void record_vertex_halfedge(const M& m, V v) {
+        if (!old(m, v)) return;
         // A model whose vertex_halfedge is derived from what it stores (CGAL keeps an incoming
         // halfedge) offers the stored value as is; the rollback writes that back.
         if constexpr (requires { T::stored_vertex_halfedge(m, v); })
@@ -72,9 +98,12 @@ public:
         else
             entries_.push_back({kind::vertex_halfedge, H{}, T::vertex_halfedge(m, v), v, F{}, 0});
     }
-    void record_face_halfedge(const M& m, F f) { entries_.push_back({kind::face_halfedge, H{}, T::face_halfedge(m, f), V{}, f, 0}); }
+    void record_face_halfedge(const M& m, F f) {
+        if (old(m, f)) entries_.push_back({kind::face_halfedge, H{}, T::face_halfedge(m, f), V{}, f, 0});
+    }
     void record_position(const M& m, V v) {
-        positions_.reserve(positions_.size() + 1);
+        if (!old(m, v)) return;
+        reserve_one_more(positions_);
         entries_.push_back({kind::position, H{}, H{}, v, F{}, positions_.size()});
         positions_.push_back(T::position(m, v));
     }
@@ -83,9 +112,9 @@ public:
     /// Room for one more created element, reserved before the model creates it (so that
     /// recording it cannot throw after it exists).
     void reserve_created() {
-        made_vertices_.reserve(made_vertices_.size() + 1);
-        made_edges_.reserve(made_edges_.size() + 1);
-        made_faces_.reserve(made_faces_.size() + 1);
+        reserve_one_more(made_vertices_);
+        reserve_one_more(made_edges_);
+        reserve_one_more(made_faces_);
     }
     void created(V v) { made_vertices_.push_back(v); }
     void created(E e) { made_edges_.push_back(e); }
@@ -160,6 +189,12 @@ public:
     }
 
 private:
+    // Whether x existed when the edit began (a reused slot counts as old: journaled, harmless).
+    bool old(const M& m, H h) const { return T::halfedge_index(m, h) < halfedge_bound_; }
+    bool old(const M& m, V v) const { return T::vertex_index(m, v) < vertex_bound_; }
+    bool old(const M& m, F f) const { return T::face_index(m, f) < face_bound_; }
+
+    std::size_t halfedge_bound_, vertex_bound_, face_bound_;
     std::vector<entry> entries_;
     std::vector<old_prev> prev_;
     std::vector<P> positions_;
@@ -236,7 +271,7 @@ template <class M, class T, class Body>
 auto transact(M& m, Body&& body) -> decltype(body.template operator()<journaled_traits<M, T>>()) {
     using JT = journaled_traits<M, T>;
     if constexpr (requires { T::prepare_erase(m); }) T::prepare_erase(m);
-    journal<M, T> j;
+    journal<M, T> j(m);
     struct activation {
         journal<M, T>* saved;
         explicit activation(journal<M, T>* now) : saved(JT::active) { JT::active = now; }
