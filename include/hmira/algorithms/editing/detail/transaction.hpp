@@ -33,6 +33,14 @@ namespace hmira::detail::editing {
 // not allocate once an erasure has happened (OpenMesh's status bits are requested before the
 // first change, through the traits' optional prepare_erase()).
 
+/// Makes room for one more element in `v` before anything that must not be followed by a
+/// throwing push_back happens. Grows geometrically: reserve(size() + 1) would reallocate on
+/// every call (libstdc++ reserves exactly what is asked) and make an edit quadratic.
+template <class Vec>
+void room_for_one(Vec& v) {
+    if (v.size() == v.capacity()) v.reserve(2 * v.capacity() + 16);
+}
+
 /// Every raw mutation of one edit, in order, and what undoes it.
 template <class M, class T>
 class journal {
@@ -58,7 +66,7 @@ public:
     };
 
     void record_next(const M& m, H h, H n) {
-        prev_.reserve(prev_.size() + 1);
+        room_for_one(prev_);
         entries_.push_back({kind::next, h, T::next(m, h), V{}, F{}, 0});
         prev_.push_back({n, T::prev(m, n), prev_.size()});
     }
@@ -74,7 +82,7 @@ public:
     }
     void record_face_halfedge(const M& m, F f) { entries_.push_back({kind::face_halfedge, H{}, T::face_halfedge(m, f), V{}, f, 0}); }
     void record_position(const M& m, V v) {
-        positions_.reserve(positions_.size() + 1);
+        room_for_one(positions_);
         entries_.push_back({kind::position, H{}, H{}, v, F{}, positions_.size()});
         positions_.push_back(T::position(m, v));
     }
@@ -83,9 +91,9 @@ public:
     /// Room for one more created element, reserved before the model creates it (so that
     /// recording it cannot throw after it exists).
     void reserve_created() {
-        made_vertices_.reserve(made_vertices_.size() + 1);
-        made_edges_.reserve(made_edges_.size() + 1);
-        made_faces_.reserve(made_faces_.size() + 1);
+        room_for_one(made_vertices_);
+        room_for_one(made_edges_);
+        room_for_one(made_faces_);
     }
     void created(V v) { made_vertices_.push_back(v); }
     void created(E e) { made_edges_.push_back(e); }
