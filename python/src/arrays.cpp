@@ -9,6 +9,10 @@
 #include <cstring>
 #include <cstdint>
 #include <limits>
+#include <memory>
+#include <optional>
+#include <ranges>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -272,13 +276,96 @@ namespace {
 
 using vertex_array = nb::ndarray<const double, nb::ndim<2>, nb::c_contig, nb::device::cpu>;
 
+/// (V, F) numpy arrays seen as a mesh in place, without building one: what voxelize reads
+/// when the faces come as an (m, k) integer array. The indices must have been checked.
+template <class I>
+struct array_mesh {
+    const double* points;
+    std::size_t vertices;
+    const I* corners;
+    std::size_t faces, corners_per_face;
+};
+
+/// The traits of array_mesh: handles are the array indices.
+template <class I>
+struct array_mesh_traits {
+    using M = array_mesh<I>;
+    using vertex_handle = std::size_t;
+    using face_handle = std::size_t;
+    using scalar = double;
+    static auto vertices(const M& m) { return std::views::iota(std::size_t(0), m.vertices); }
+    static std::size_t vertex_count(const M& m) { return m.vertices; }
+    static auto faces(const M& m) { return std::views::iota(std::size_t(0), m.faces); }
+    static std::size_t face_count(const M& m) { return m.faces; }
+    static std::span<const I> face_vertices(const M& m, std::size_t f) {
+        return {m.corners + f * m.corners_per_face, m.corners_per_face};
+    }
+    static vec3<double> position(const M& m, std::size_t v) { return {m.points[3 * v], m.points[3 * v + 1], m.points[3 * v + 2]}; }
+    static std::size_t vertex_index(const M&, std::size_t v) { return v; }
+    static std::size_t vertex_index_bound(const M& m) { return m.vertices; }
+};
+
+/// The first corner of `faces` (an (m, k) array) outside [0, vertices), as a ValueError
+/// naming the face, as to_soup reports it.
+template <class I>
+void check_corners(const I* corners, std::size_t faces, std::size_t k, std::size_t vertices, const char* who) {
+    std::size_t bad = faces * k;
+    {
+        nb::gil_scoped_release release;
+        for (std::size_t c = 0; c < faces * k; ++c)
+            if (corners[c] < 0 || std::size_t(corners[c]) >= vertices) {
+                bad = c;
+                break;
+            }
+    }
+    if (bad < faces * k)
+        value_error(std::string(who) + ": face " + std::to_string(bad / k) + " uses vertex " + std::to_string(corners[bad]) +
+                    ", out of range [0, " + std::to_string(vertices) + ")");
+}
+
+/// The first vertex with a NaN or infinite coordinate, as a ValueError naming it (as to_soup).
+void check_points(const double* points, std::size_t vertices, const char* who) {
+    std::size_t bad = vertices;
+    {
+        nb::gil_scoped_release release;
+        for (std::size_t c = 0; c < 3 * vertices; ++c)
+            if (!std::isfinite(points[c])) {
+                bad = c / 3;
+                break;
+            }
+    }
+    if (bad < vertices) value_error(std::string(who) + ": vertex " + std::to_string(bad) + " has a non-finite coordinate");
+}
+
 nb::tuple voxelize(const vertex_array& vertices, nb::handle faces, std::optional<std::size_t> resolution, std::optional<double> pitch,
                    const std::string& mode, bool fill_open, unsigned threads) {
     if (mode != "conservative" && mode != "surface") value_error("voxelize: mode must be 'conservative' or 'surface', got '" + mode + "'");
     if (resolution && pitch) value_error("voxelize: give resolution or pitch, not both");
     if (resolution && *resolution == 0) value_error("voxelize: resolution must be at least 1");
     if (pitch && !(*pitch > 0 && std::isfinite(*pitch))) value_error("voxelize: pitch must be finite and > 0");
-    const auto soup = to_soup(vertices, faces, "voxelize");
+    if (vertices.shape(1) != 3)
+        value_error("voxelize: vertices must have shape (n, 3), got (" + std::to_string(vertices.shape(0)) + ", " +
+                    std::to_string(vertices.shape(1)) + ")");
+    // (m, k) int32 or int64 faces (marching_cubes' output, trimesh's) are read in place as a
+    // mesh; anything else (lists of polygons) goes through a soup and a face_vertex_mesh.
+    nb::ndarray<const std::int32_t, nb::ndim<2>, nb::c_contig, nb::device::cpu> narrow;
+    nb::ndarray<const std::int64_t, nb::ndim<2>, nb::c_contig, nb::device::cpu> wide;
+    const bool is_list = nb::isinstance<nb::list>(faces) || nb::isinstance<nb::tuple>(faces);
+    const bool in_place_narrow = !is_list && nb::try_cast(faces, narrow, false);
+    const bool in_place_wide = !is_list && !in_place_narrow && nb::try_cast(faces, wide, false);
+    std::optional<array_mesh<std::int32_t>> narrow_mesh;
+    std::optional<array_mesh<std::int64_t>> wide_mesh;
+    std::optional<hmira::io::polygon_soup> soup;
+    if (in_place_narrow || in_place_wide) check_points(vertices.data(), vertices.shape(0), "voxelize");
+    if (in_place_narrow) {
+        check_corners(narrow.data(), narrow.shape(0), narrow.shape(1), vertices.shape(0), "voxelize");
+        narrow_mesh = array_mesh<std::int32_t>{vertices.data(), vertices.shape(0), narrow.data(), narrow.shape(0), narrow.shape(1)};
+    } else if (in_place_wide) {
+        check_corners(wide.data(), wide.shape(0), wide.shape(1), vertices.shape(0), "voxelize");
+        wide_mesh = array_mesh<std::int64_t>{vertices.data(), vertices.shape(0), wide.data(), wide.shape(0), wide.shape(1)};
+    } else {
+        soup = to_soup(vertices, faces, "voxelize");
+    }
     interrupt_watch watch;
     const hmira::voxelize_options options{.mode = mode == "surface" ? hmira::voxelize_mode::surface : hmira::voxelize_mode::solid,
                                           .open_mesh = fill_open ? hmira::open_mesh_fill::winding_number : hmira::open_mesh_fill::surface_only,
@@ -289,12 +376,10 @@ nb::tuple voxelize(const vertex_array& vertices, nb::handle faces, std::optional
     hmira::grid_geometry geometry;
     {
         nb::gil_scoped_release release;
-        cpp_timer timer;
-        r = [&]() -> hmira::result<hmira::voxelization> {
-            hmira::face_vertex_mesh mesh;
-            auto built = hmira::io::assign_from_soup(mesh, soup, [](std::size_t) { return std::string("voxelize"); });
-            if (!built) return built.error();
-            auto g = hmira::voxel_grid_around(mesh, resolution.value_or(256), 2);
+        // The C++ work timed for bench/python: the grid around the mesh and the voxelization.
+        auto run = [&]<class M, class T>(const M& mesh) -> hmira::result<hmira::voxelization> {
+            cpp_timer timer;
+            auto g = hmira::voxel_grid_around<M, T>(mesh, resolution.value_or(256), 2);
             if (!g) return g.error();
             geometry = *g;
             if (pitch) {
@@ -309,15 +394,26 @@ nb::tuple voxelize(const vertex_array& vertices, nb::handle faces, std::optional
                     geometry.origin[a] = centre - 0.5 * double(geometry.dims[a] - 1) * *pitch;
                 }
             }
-            return hmira::voxelize(mesh, geometry, options);
-        }();
+            return hmira::voxelize<M, T>(mesh, geometry, options);
+        };
+        if (narrow_mesh) {
+            r = run.template operator()<array_mesh<std::int32_t>, array_mesh_traits<std::int32_t>>(*narrow_mesh);
+        } else if (wide_mesh) {
+            r = run.template operator()<array_mesh<std::int64_t>, array_mesh_traits<std::int64_t>>(*wide_mesh);
+        } else {
+            hmira::face_vertex_mesh mesh;
+            auto built = hmira::io::assign_from_soup(mesh, *soup, [](std::size_t) { return std::string("voxelize"); });
+            if (built) r = run.template operator()<hmira::face_vertex_mesh, hmira::default_traits<hmira::face_vertex_mesh>>(mesh);
+            else r = built.error();
+        }
     }
     watch.rethrow();
     auto v = take(std::move(r));
     const auto d = geometry.dims;
     // Fortran order: [i, j, k] indexes x, y, z, and each row of x stays contiguous.
     static_assert(std::endian::native == std::endian::little, "the bit expansion table assumes little endian");
-    std::vector<std::uint8_t> cells(d[0] * d[1] * d[2]);
+    // Every byte is written below: no zeroing first.
+    std::unique_ptr<std::uint8_t[]> cells(new std::uint8_t[d[0] * d[1] * d[2]]);
     {
         nb::gil_scoped_release release;
         // Eight voxels at a time: each byte of bits expands to eight bool bytes by table.
@@ -333,7 +429,7 @@ nb::tuple voxelize(const vertex_array& vertices, nb::handle faces, std::optional
                 for (std::size_t k = k0; k < k1; ++k)
                     for (std::size_t j = 0; j < d[1]; ++j) {
                         const std::uint64_t* row = v.voxels.row(j, k);
-                        std::uint8_t* out = &cells[d[0] * (j + d[1] * k)];
+                        std::uint8_t* out = cells.get() + d[0] * (j + d[1] * k);
                         const std::size_t full = d[0] / 8;
                         for (std::size_t q = 0; q < full; ++q) {
                             const auto byte = static_cast<unsigned>((row[q >> 3] >> (8 * (q & 7))) & 0xffu);
@@ -344,11 +440,11 @@ nb::tuple voxelize(const vertex_array& vertices, nb::handle faces, std::optional
             });
         });
     }
-    auto* owned = new std::vector<std::uint8_t>(std::move(cells));
-    nb::capsule owner(owned, [](void* p) noexcept { delete static_cast<std::vector<std::uint8_t>*>(p); });
+    auto* owned = cells.release();
+    nb::capsule owner(owned, [](void* p) noexcept { delete[] static_cast<std::uint8_t*>(p); });
     const std::size_t shape[3] = {d[0], d[1], d[2]};
     const std::int64_t strides[3] = {1, std::int64_t(d[0]), std::int64_t(d[0] * d[1])};
-    nb::ndarray<nb::numpy, bool, nb::ndim<3>> grid(reinterpret_cast<bool*>(owned->data()), 3, shape, owner, strides);
+    nb::ndarray<nb::numpy, bool, nb::ndim<3>> grid(reinterpret_cast<bool*>(owned), 3, shape, owner, strides);
     auto origin = nb::make_tuple(geometry.origin.x, geometry.origin.y, geometry.origin.z);
     return nb::make_tuple(grid, origin, geometry.spacing.x, v.filled, v.note);
 }

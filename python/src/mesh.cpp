@@ -37,21 +37,86 @@ struct py_mesh {
     std::shared_ptr<halfedge_mesh> mesh = std::make_shared<halfedge_mesh>();
     /// Bumped by every change that may move or renumber the positions.
     std::uint64_t version = 0;
+    /// Calls running with the GIL released: readers of the mesh, and at most one writer (then
+    /// no reader). Read and changed only with the GIL held, so plain counters suffice; another
+    /// thread's call on a mesh in use raises instead of racing with it.
+    mutable int readers = 0;
+    bool writing = false;
 
-    halfedge_mesh& get() { return *mesh; }
-    const halfedge_mesh& get() const { return *mesh; }
+    halfedge_mesh& get() {
+        refuse_while_writing();
+        return *mesh;
+    }
+    const halfedge_mesh& get() const {
+        refuse_while_writing();
+        return *mesh;
+    }
+    void refuse_while_writing() const {
+        if (writing) throw std::runtime_error("Mesh: another thread is changing this mesh (a call on it is still running)");
+    }
+    void refuse_while_in_use() const {
+        refuse_while_writing();
+        if (readers > 0) throw std::runtime_error("Mesh: another thread is reading this mesh (a call on it is still running)");
+    }
 
     /// Call before a topology change: a view exported earlier keeps the old storage.
     halfedge_mesh& for_topology_change() {
+        refuse_while_in_use();
         if (mesh.use_count() > 1) mesh = std::make_shared<halfedge_mesh>(*mesh);
         ++version;
         return *mesh;
     }
     void replace(halfedge_mesh&& fresh) {
+        refuse_while_in_use();
         mesh = std::make_shared<halfedge_mesh>(std::move(fresh));
         ++version;
     }
 };
+
+/// Compacts after an edit so that vertex and face indices stay dense (0 .. n-1), as the CLI
+/// writes them; returns nothing the caller needs.
+void compact(halfedge_mesh& m) { (void)m.collect_garbage(); }
+
+/// Runs `read(mesh)` with the GIL released (the mesh is marked as being read meanwhile).
+template <class Read>
+auto read_without_gil(const py_mesh& self, Read&& read) {
+    const auto keep = std::shared_ptr<const halfedge_mesh>(self.mesh);
+    self.refuse_while_writing();
+    struct reading {
+        const py_mesh& s;
+        explicit reading(const py_mesh& m) : s(m) { ++s.readers; }
+        ~reading() { --s.readers; }
+    } mark(self);
+    nb::gil_scoped_release release;
+    return read(*keep);
+}
+
+/// Runs `change(mesh, progress)` with the GIL released, Ctrl-C watched through `progress`
+/// (the change must pass it to the C++ options) and the mesh marked as being written. The
+/// storage is first moved away from exported views when `topology` is set. A Ctrl-C raises
+/// KeyboardInterrupt (the change, cancelled, has rolled back); an error raises ValueError.
+template <class Change>
+auto change_without_gil(py_mesh& self, bool topology, Change&& change) {
+    halfedge_mesh& m = topology ? self.for_topology_change() : (self.refuse_while_in_use(), *self.mesh);
+    interrupt_watch watch;
+    struct writing {
+        py_mesh& s;
+        explicit writing(py_mesh& m) : s(m) { s.writing = true; }
+        ~writing() { s.writing = false; }
+    } mark(self);
+    auto r = [&] {
+        nb::gil_scoped_release release;
+        cpp_timer timer;
+        const bool had_garbage = m.has_garbage();
+        auto done = change(m, watch.callback());
+        // A rolled-back edit leaves what it made as garbage after the live elements: dropping
+        // it gives back the same dense indices (unless the mesh had garbage of its own).
+        if (!done && !had_garbage) compact(m);
+        return done;
+    }();
+    watch.rethrow();
+    return take(std::move(r));
+}
 
 using vertex_array = nb::ndarray<const double, nb::ndim<2>, nb::c_contig, nb::device::cpu>;
 
@@ -80,8 +145,13 @@ long long idx(auto h) { return h.index == UINT32_MAX ? -1 : static_cast<long lon
 void set_polygons(py_mesh& self, const vertex_array& vertices, nb::handle faces) {
     const auto soup = to_soup(vertices, faces, "Mesh");
     halfedge_mesh fresh;
-    // The readers' own soup-to-mesh path, so construction gets whatever repair they do.
-    check(hmira::io::assign_from_soup(fresh, soup, [](std::size_t) { return std::string("Mesh"); }));
+    hmira::result<void> built;
+    {
+        // The readers' own soup-to-mesh path, so construction gets whatever repair they do.
+        nb::gil_scoped_release release;
+        built = hmira::io::assign_from_soup(fresh, soup, [](std::size_t) { return std::string("Mesh"); });
+    }
+    check(built);
     self.replace(std::move(fresh));
 }
 
@@ -100,15 +170,8 @@ void read(py_mesh& self, const std::string& path, bool weld_stl) {
 }
 
 void write(const py_mesh& self, const std::string& path, bool ascii, bool big_endian, bool float32, bool attributes) {
-    hmira::result<void> r;
-    // Holding the storage makes a topology change from another thread, while the GIL is
-    // released here, copy the mesh instead of changing what is being written.
-    const std::shared_ptr<const halfedge_mesh> keep = self.mesh;
-    {
-        nb::gil_scoped_release release;
-        r = hmira::io::write_mesh(*keep, path, write_options_from(ascii, big_endian, float32, attributes));
-    }
-    check(r);
+    const auto options = write_options_from(ascii, big_endian, float32, attributes);
+    check(read_without_gil(self, [&](const halfedge_mesh& m) { return hmira::io::write_mesh(m, path, options); }));
 }
 
 nb::ndarray<nb::numpy, double, nb::ndim<2>> positions(py_mesh& self) {
@@ -160,14 +223,17 @@ struct topology {
 };
 
 topology topology_of(const py_mesh& self) {
-    const auto s = hmira::mesh_topology(self.get());
+    const auto s = read_without_gil(self, [](const halfedge_mesh& m) { return hmira::mesh_topology(m); });
     return {s.vertices, s.edges, s.faces, s.components, s.boundary_loops, s.boundary_edges, s.isolated_vertices,
             s.non_manifold_edges, s.genus, s.euler_characteristic, s.closed()};
 }
 
 std::vector<std::string> validate(const py_mesh& self, bool relaxed) {
     std::vector<std::string> out;
-    for (auto& p : hmira::validate(self.get(), {.relaxed = relaxed, .check_geometry = true, .max_problems = 1000}))
+    auto problems = read_without_gil(self, [&](const halfedge_mesh& m) {
+        return hmira::validate(m, {.relaxed = relaxed, .check_geometry = true, .max_problems = 1000});
+    });
+    for (auto& p : problems)
         out.push_back(std::move(p.message));
     return out;
 }
@@ -177,16 +243,13 @@ nb::ndarray<nb::numpy, double, nb::ndim<2>> normals(const py_mesh& self, const s
     if (weighting == "angle") o.weighting = hmira::normal_weighting::angle;
     else if (weighting == "area") o.weighting = hmira::normal_weighting::area;
     else value_error("vertex_normals: weighting must be 'angle' or 'area', got '" + weighting + "'");
-    auto n = hmira::vertex_normals(self.get(), o);
+    auto n = read_without_gil(self, [&](const halfedge_mesh& m) { return hmira::vertex_normals(m, o); });
     const std::size_t count = n.size();
     auto* owned = new std::vector<vec3<double>>(std::move(n));
     nb::capsule owner(owned, [](void* p) noexcept { delete static_cast<std::vector<vec3<double>>*>(p); });
     return nb::ndarray<nb::numpy, double, nb::ndim<2>>(reinterpret_cast<double*>(owned->data()), {count, 3}, owner);
 }
 
-/// Compacts after an edit so that vertex and face indices stay dense (0 .. n-1), as the CLI
-/// writes them; returns nothing the caller needs.
-void compact(halfedge_mesh& m) { (void)m.collect_garbage(); }
 
 nb::dict truncate(py_mesh& self, std::optional<std::vector<long long>> vertices, bool all, std::optional<double> fraction,
                   std::optional<double> distance) {
@@ -195,11 +258,14 @@ nb::dict truncate(py_mesh& self, std::optional<std::vector<long long>> vertices,
     std::vector<hmira::vertex_handle> vs;
     if (all) for (auto v : m0.vertices()) vs.push_back(v);
     else for (long long i : *vertices) vs.push_back(vertex_arg(m0, i, "truncate"));
-    const hmira::truncate_options o{.fraction = fraction.value_or(1.0 / 3.0), .distance = distance.value_or(0.0)};
-    // truncate() checks everything before its first change: on error the mesh is unchanged.
-    auto& m = self.for_topology_change();
-    auto r = take(hmira::truncate(m, vs, o));
-    compact(m);
+    // truncate() is atomic: on error or Ctrl-C the mesh is unchanged.
+    const auto r = change_without_gil(self, true, [&](halfedge_mesh& m, hmira::progress_function progress) {
+        const hmira::truncate_options o{.fraction = fraction.value_or(1.0 / 3.0), .distance = distance.value_or(0.0),
+                                        .progress = std::move(progress)};
+        auto made = hmira::truncate(m, vs, o);
+        if (made) compact(m);
+        return made;
+    });
     nb::dict d;
     d["faces"] = r.faces.size();
     d["vertices"] = r.vertices.size();
@@ -211,15 +277,13 @@ nb::dict bevel(py_mesh& self, std::optional<std::vector<std::pair<long long, lon
     auto& m0 = self.get();
     const int ways = int(edges.has_value()) + int(all) + int(angle.has_value()) + int(vertices.has_value()) + int(vertices_all);
     if (ways != 1) value_error("bevel: choose edges, all=True or angle=DEG, or vertices / vertices_all=True (exactly one)");
-    const hmira::bevel_options o{.width = width, .segments = segments, .clamp_overlap = !no_clamp};
-    hmira::result<hmira::bevel_result<halfedge_mesh>> r = hmira::fail(hmira::errc::invalid_argument, "");
-    if (vertices || vertices_all) {
-        std::vector<hmira::vertex_handle> vs;
+    std::vector<hmira::vertex_handle> vs;
+    std::vector<hmira::edge_handle> es;
+    const bool vertex_mode = vertices || vertices_all;
+    if (vertex_mode) {
         if (vertices_all) for (auto v : m0.vertices()) vs.push_back(v);
         else for (long long i : *vertices) vs.push_back(vertex_arg(m0, i, "bevel"));
-        r = hmira::bevel_vertices(self.for_topology_change(), vs, o);
     } else {
-        std::vector<hmira::edge_handle> es;
         if (edges) {
             for (auto [a, b] : *edges) {
                 const auto h = m0.find_halfedge(vertex_arg(m0, a, "bevel"), vertex_arg(m0, b, "bevel"));
@@ -245,10 +309,14 @@ nb::dict bevel(py_mesh& self, std::optional<std::vector<std::pair<long long, lon
             if (es.empty()) value_error(angle ? "bevel: no edge has a dihedral angle of at least " + std::to_string(*angle) + " degrees"
                                               : std::string("bevel: the mesh has no edge between two faces"));
         }
-        r = hmira::bevel(self.for_topology_change(), es, o);
     }
-    auto b = take(std::move(r));
-    compact(self.get());
+    const auto b = change_without_gil(self, true, [&](halfedge_mesh& m, hmira::progress_function progress) {
+        const hmira::bevel_options o{.width = width, .segments = segments, .clamp_overlap = !no_clamp, .clamp_globally = false,
+                                     .progress = std::move(progress)};
+        auto made = vertex_mode ? hmira::bevel_vertices(m, vs, o) : hmira::bevel(m, es, o);
+        if (made) compact(m);
+        return made;
+    });
     nb::dict d;
     d["strip_faces"] = b.strip_faces.size();
     d["vertex_faces"] = b.vertex_faces.size();
@@ -265,11 +333,16 @@ nb::dict extrude(py_mesh& self, std::optional<std::vector<long long>> faces, boo
     std::vector<hmira::face_handle> fs;
     if (all) for (auto f : m0.faces()) fs.push_back(f);
     else for (long long i : *faces) fs.push_back(face_arg(m0, i, "extrude"));
-    hmira::extrude_options o{.distance = distance, .direction = std::nullopt,
-                             .mode = mode == "individual" ? hmira::extrude_mode::individual : hmira::extrude_mode::region};
-    if (direction) o.direction = point_arg(*direction, "extrude: direction");
-    auto r = take(hmira::extrude(self.for_topology_change(), fs, o));
-    compact(self.get());
+    std::optional<vec3<double>> towards;
+    if (direction) towards = point_arg(*direction, "extrude: direction");
+    const auto r = change_without_gil(self, true, [&](halfedge_mesh& m, hmira::progress_function progress) {
+        const hmira::extrude_options o{.distance = distance, .direction = towards,
+                                       .mode = mode == "individual" ? hmira::extrude_mode::individual : hmira::extrude_mode::region,
+                                       .progress = std::move(progress)};
+        auto made = hmira::extrude(m, fs, o);
+        if (made) compact(m);
+        return made;
+    });
     nb::dict d;
     d["top_faces"] = r.top_faces.size();
     d["side_faces"] = r.side_faces.size();
@@ -306,7 +379,9 @@ void bind_mesh(nb::module_& m) {
         .def("_set_polygons", &set_polygons, nb::arg("vertices"), nb::arg("faces"),
              "Replaces the content by (vertices, faces); faces an (m, k) integer array or a sequence of polygons.")
         .def("_read", &read, nb::arg("path"), nb::kw_only(), nb::arg("weld_stl") = true, "Replaces the content by a mesh file's.")
-        .def("_assign", [](py_mesh& self, const py_mesh& other) { self.replace(halfedge_mesh(other.get())); }, nb::arg("other"),
+        .def("_assign", [](py_mesh& self, const py_mesh& other) {
+                 self.replace(read_without_gil(other, [](const halfedge_mesh& m) { return halfedge_mesh(m); }));
+             }, nb::arg("other"),
              "Replaces the content by a copy of `other`'s.")
         .def("_positions", &positions, "The positions as a writable (n, 3) float64 view (unchecked; see Mesh.vertices).")
         .def_prop_ro("_topology_version", [](const py_mesh& s) { return s.version; }, "Bumped by every topology change.")
@@ -333,10 +408,20 @@ attributes : bool, keyword-only
         .def("topology", &topology_of, "V, E, F, genus, components and boundary loops (a Topology).")
         .def("validate", &validate, nb::kw_only(), nb::arg("relaxed") = false,
              "The mesh's problems, one message each; an empty list for a valid mesh.")
-        .def("flip", [](py_mesh& s) { return hmira::flip_normals(s.get()); }, "Reverse every face's winding; returns the faces flipped.")
+        .def("flip", [](py_mesh& s) {
+                 // The positions do not move: views stay valid (no topology change for them).
+                 return change_without_gil(s, false, [](halfedge_mesh& m, const hmira::progress_function&) {
+                     return hmira::result<std::size_t>(hmira::flip_normals(m));
+                 });
+             }, "Reverse every face's winding; returns the faces flipped.")
         .def("vertex_normals", &normals, nb::kw_only(), nb::arg("weighting") = "angle",
              "Unit vertex normals (n, 3), faces weighted by corner angle ('angle') or area ('area').")
-        .def("collect_garbage", [](py_mesh& s) { compact(s.for_topology_change()); },
+        .def("collect_garbage", [](py_mesh& s) {
+                 change_without_gil(s, true, [](halfedge_mesh& m, const hmira::progress_function&) {
+                     compact(m);
+                     return hmira::result<bool>(true);
+                 });
+             },
              "Drop deleted elements and renumber densely (after kill operators).")
         .def("_truncate", &truncate, nb::arg("vertices") = nb::none(), nb::kw_only(), nb::arg("all") = false,
              nb::arg("fraction") = nb::none(), nb::arg("distance") = nb::none())

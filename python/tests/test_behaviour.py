@@ -94,6 +94,127 @@ def test_ctrl_c_interrupts_a_long_voxelization():
     assert time.perf_counter() - start < seconds * 0.7, (resolution, seconds)
 
 
+EDITS = {
+    "truncate": lambda m: m.truncate(all=True, fraction=0.25),
+    "bevel": lambda m: m.bevel(all=True, width=0.01),
+    "extrude": lambda m: m.extrude(all=True, mode="individual", distance=0.1),
+}
+
+
+@pytest.fixture(scope="module")
+def long_edit_mesh():
+    """A gyroid surface whose truncate(all=True) takes at least a second on this machine (the
+    time grows about as n^2 for an n^3 volume), so the 50 ms interrupt polling is small
+    against it; bevel and extrude of every element take about as long."""
+    n = 48
+    while True:
+        v, f = hmira.marching_cubes(gyroid(n), 0.0)
+        mesh = hmira.Mesh(v, f)
+        seconds = _seconds(lambda: EDITS["truncate"](mesh.copy()))
+        if seconds >= 1.0 or n >= 400:
+            return mesh, seconds
+        n = min(400, int(n * np.sqrt(1.2 / max(seconds, 1e-3))) + 1)
+
+
+@pytest.mark.parametrize("edit", sorted(EDITS))
+def test_ctrl_c_interrupts_a_long_edit_and_leaves_the_mesh_unchanged(long_edit_mesh, edit):
+    mesh, _ = long_edit_mesh
+    m = mesh.copy()
+    seconds = _seconds(lambda: EDITS[edit](mesh.copy()))
+    vertices, faces = np.array(m.vertices), m.faces.copy()
+    timer = threading.Timer(seconds / 10, _thread.interrupt_main)
+    timer.start()
+    start = time.perf_counter()
+    with pytest.raises(KeyboardInterrupt):
+        EDITS[edit](m)
+    elapsed = time.perf_counter() - start
+    timer.join()
+    assert elapsed < seconds * 0.7, (elapsed, seconds)
+    # Rolled back: the same vertices and faces, in the same order, and still a valid mesh.
+    assert np.array_equal(m.vertices, vertices)
+    assert np.array_equal(m.faces, faces)
+    assert m.validate() == []
+    # The mesh still takes the whole edit afterwards (a bevel clamped at half of a marching
+    # cubes' tiny edges may make faces of zero area, as bevel() documents).
+    EDITS[edit](m)
+    assert [p for p in m.validate() if not p.endswith("zero area")] == []
+
+
+def _other_thread_progress_during(call, min_seconds):
+    """Runs `call` repeatedly for at least `min_seconds` while another thread wakes every
+    millisecond and takes a time stamp, which needs the GIL. Returns the stamps taken well
+    inside the calls (their middle 80%: none while a call holds the GIL) and the time spent in
+    calls."""
+    stamps, windows = [], []
+    stop = threading.Event()
+
+    def stamp():
+        while not stop.is_set():
+            stamps.append(time.perf_counter())
+            time.sleep(0.001)
+
+    t = threading.Thread(target=stamp)
+    t.start()
+    time.sleep(0.02)
+    total = 0.0
+    while total < min_seconds:
+        start = time.perf_counter()
+        call()
+        end = time.perf_counter()
+        windows.append((start + 0.1 * (end - start), end - 0.1 * (end - start)))
+        total += end - start
+    stop.set()
+    t.join()
+    inside = sum(1 for s in stamps if any(a < s < b for a, b in windows))
+    return inside, total
+
+
+@pytest.mark.parametrize("call", ["truncate", "bevel", "extrude", "topology", "validate", "vertex_normals", "write", "copy", "flip"])
+def test_another_thread_runs_during_a_long_mesh_call(long_edit_mesh, tmp_path, call):
+    mesh, _ = long_edit_mesh
+    m = mesh.copy()
+    calls = {
+        "truncate": lambda: EDITS["truncate"](m.copy()),
+        "bevel": lambda: EDITS["bevel"](m.copy()),
+        "extrude": lambda: EDITS["extrude"](m.copy()),
+        "topology": m.topology,
+        "validate": m.validate,
+        "vertex_normals": m.vertex_normals,
+        "write": lambda: m.write(str(tmp_path / "m.ply")),
+        "copy": m.copy,
+        "flip": m.flip,
+    }
+    inside, total = _other_thread_progress_during(calls[call], 0.3)
+    # Released, the other thread stamps about once a millisecond (less on a loaded machine);
+    # held, it cannot stamp at all inside a call.
+    assert inside >= max(3, 0.02 * total / 0.001), (inside, total)
+
+
+def test_a_mesh_in_use_by_another_thread_refuses_calls_instead_of_racing(long_edit_mesh):
+    mesh, _ = long_edit_mesh
+    m = mesh.copy()
+    started, refused, answered = threading.Event(), [], []
+
+    def edit():
+        started.set()
+        EDITS["truncate"](m)
+
+    t = threading.Thread(target=edit)
+    t.start()
+    started.wait()
+    time.sleep(0.05)
+    for call in (m.topology, lambda: m.vertices, lambda: m.truncate([0]), m.copy):
+        try:
+            call()
+            answered.append(call)
+        except RuntimeError as e:
+            refused.append(str(e))
+    t.join()
+    assert len(refused) == 4, (refused, answered)
+    assert all("another thread" in r for r in refused), refused
+    assert m.validate() == []
+
+
 def rss_bytes():
     with open("/proc/self/statm") as f:
         return int(f.read().split()[1]) * os.sysconf("SC_PAGE_SIZE")

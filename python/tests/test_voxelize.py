@@ -109,3 +109,42 @@ def test_real_mesh_matches_the_cli(data, cli, tmp_path, name, surface):
     assert grid.shape == tuple(dims)
     np.testing.assert_array_equal(grid, cli_grid)
     np.testing.assert_allclose(origin, [float(x) for x in sidecar["origin"].split()[0].split(",")], rtol=1e-12)
+
+
+@pytest.mark.parametrize("name", ["sphere", "bunny00.off", "elephant.off", "cheese.off", "fandisk.off"])
+def test_faces_read_in_place_give_the_same_voxels_as_the_mesh_path(data, name):
+    # (m, k) int32/int64 face arrays are voxelized in place, without building a mesh; a list of
+    # polygons still goes through a soup and a face_vertex_mesh (the path every input took
+    # before). Every mode must give the same grid either way.
+    if name == "sphere":
+        v, f = sphere_mesh(n=48)
+    else:
+        path = data / "meshes" / name
+        if not path.exists():
+            pytest.skip(f"{name} not in the test data")
+        m = hmira.read_mesh(path)
+        v, f = np.array(m.vertices), m.faces
+    polygons = [list(map(int, row)) for row in f]
+    extent = float(np.ptp(v, axis=0).max())
+    for options in (dict(resolution=48), dict(resolution=40, mode="surface"), dict(resolution=31, fill_open=True),
+                    dict(pitch=extent / 29)):
+        want = hmira.voxelize(v, polygons, **options)
+        for faces in (np.ascontiguousarray(f, dtype=np.int32), np.ascontiguousarray(f, dtype=np.int64)):
+            got = hmira.voxelize(v, faces, **options)
+            assert np.array_equal(got[0], want[0]), (name, options, faces.dtype)
+            assert np.array_equal(got[1], want[1]) and got[2] == want[2]
+
+
+def test_faces_read_in_place_are_checked():
+    v, f = sphere_mesh(n=16)
+    bad = np.array(f, dtype=np.int64)
+    bad[7, 2] = len(v)
+    with pytest.raises(ValueError, match=f"voxelize: face 7 uses vertex {len(v)}, out of range"):
+        hmira.voxelize(v, bad, resolution=8)
+    bad[7, 2] = -1
+    with pytest.raises(ValueError, match="voxelize: face 7 uses vertex -1, out of range"):
+        hmira.voxelize(v, bad.astype(np.int32), resolution=8)
+    nan = v.copy()
+    nan[3, 1] = np.nan
+    with pytest.raises(ValueError, match="voxelize: vertex 3 has a non-finite coordinate"):
+        hmira.voxelize(nan, f, resolution=8)

@@ -43,6 +43,9 @@ struct bevel_options {
     /// With clamp_overlap: shrink the width uniformly for the whole call to the smallest local
     /// limit instead (every strip equally wide, as before the local clamp).
     bool clamp_globally = false;
+    /// Called every 1024 bevelled edges, from the calling thread; returning false cancels: the
+    /// mesh is rolled back and the error (errc::unsupported) ends in "cancelled".
+    progress_function progress = {};
 };
 
 /// What a bevel created.
@@ -113,7 +116,7 @@ struct bevel_plan {
 /// Builds the bevel planned in `plan` (see bevel()). Run inside a transaction (T journaled);
 /// an inner failure is passed on.
 template <class M, class T, class Plan, class Out>
-result<void> bevel_build(M& mesh, const Plan& plan, Out& out) {
+result<void> bevel_build(M& mesh, const Plan& plan, Out& out, const progress_function& report) {
     namespace du = ::hmira::detail::euler;
     using H = typename T::halfedge_handle;
     using V = typename T::vertex_handle;
@@ -156,7 +159,9 @@ result<void> bevel_build(M& mesh, const Plan& plan, Out& out) {
     std::vector<H> strip_side(sel.size());  // a halfedge of each strip, on its F_L long side
     //    A boundary edge has one face: its quad (u, w, q, p) is the whole strip, and the edge
     //    stays as the strip's boundary side.
+    edit_progress progress(report, sel.size(), "bevel");
     for (std::size_t i = 0; i < sel.size(); ++i) {
+        if (auto ok = progress.step(); !ok) return ok.error();
         const auto h = sel[i], o = T::opposite(mesh, h);
         const auto left = mef<M, T>(mesh, T::prev(mesh, T::prev(mesh, h)), T::next(mesh, h));
         if (!left) return left.error();
@@ -389,7 +394,8 @@ result<void> bevel_build(M& mesh, const Plan& plan, Out& out) {
 /// halfedge of the grid fill is found by walking the current face), for O(k n^2) new elements.
 /// Clamp: see bevel_options::clamp_overlap; the result reports the requested width, the
 /// smallest width used and how many edges were limited.
-/// Atomic: on any error, or when an allocation throws, the mesh is unchanged (see
+/// Atomic: on any error, when an allocation throws, or when options.progress cancels
+/// ("bevel: cancelled"), the mesh is unchanged (see
 /// detail/transaction.hpp). Errors (mesh unchanged): errc::invalid_argument for options out of range or an empty
 /// selection; errc::invalid_handle for a missing edge; errc::unsupported for an edge with no
 /// face on either side (a wire edge) or a degenerate corner (collinear edges);
@@ -552,7 +558,7 @@ result<bevel_result<M, T>> bevel(M& mesh, const R& edges, const bevel_options& o
     plan.share_meeting_points = !options.clamp_overlap || options.clamp_globally;
     return de::transact<M, T>(mesh, [&]<class JT>() -> result<bevel_result<M, T>> {
         bevel_result<M, T> out;
-        if (auto ok = de::bevel_build<M, JT>(mesh, plan, out); !ok) return ok.error();
+        if (auto ok = de::bevel_build<M, JT>(mesh, plan, out, options.progress); !ok) return ok.error();
         return out;
     });
 }
@@ -577,7 +583,7 @@ result<bevel_result<M, T>> bevel_vertices(M& mesh, const R& vertices, const beve
         return fail(errc::unsupported, "bevel_vertices: only segments = 1 (a flat cut) is supported in vertex-only mode");
     if (!(options.width > 0) || !detail::editing::finite(options.width))
         return fail(errc::invalid_argument, "bevel_vertices: width must be finite and > 0");
-    auto r = truncate<M, T>(mesh, vertices, {.fraction = 1.0 / 3.0, .distance = options.width});
+    auto r = truncate<M, T>(mesh, vertices, {.fraction = 1.0 / 3.0, .distance = options.width, .progress = options.progress});
     if (!r) return r.error();
     bevel_result<M, T> out;
     for (auto f : r.value().faces)

@@ -36,6 +36,10 @@ struct extrude_options {
     /// region's area-weighted mean normal. A given direction is normalised.
     std::optional<vec3<double>> direction = std::nullopt;
     extrude_mode mode = extrude_mode::region;  ///< see extrude_mode
+    /// Called every 1024 faces (individual mode) or outline edges (region mode), from the
+    /// calling thread; returning false cancels: the mesh is rolled back and the error
+    /// (errc::unsupported) ends in "cancelled".
+    progress_function progress = {};
 };
 
 /// What an extrusion created.
@@ -148,7 +152,8 @@ result<void> extrude_one(M& m, typename T::face_handle f, const vec3<double>& d,
 /// plus the outline vertices' fans.
 template <class M, class T, class Out>
 result<void> extrude_region(M& m, const std::vector<typename T::face_handle>& faces, const index_set& in_region,
-                            const std::vector<typename T::halfedge_handle>& outline, const vec3<double>& d, Out& out) {
+                            const std::vector<typename T::halfedge_handle>& outline, const vec3<double>& d, Out& out,
+                            const progress_function& report) {
     using H = typename T::halfedge_handle;
     using F = typename T::face_handle;
     auto in_r = [&](F f) { return f != T::null_face() && in_region.contains(T::face_index(m, f)); };
@@ -177,7 +182,9 @@ result<void> extrude_region(M& m, const std::vector<typename T::face_handle>& fa
         left[i] = by_target.find(T::vertex_index(m, T::target(m, T::opposite(m, outline[i]))));
     // 1. Split every outline vertex; `down[i]` runs from v_i to its copy.
     std::vector<H> down(k);
+    edit_progress progress(report, 2 * k, "extrude");
     for (std::size_t i = 0; i < k; ++i) {
+        if (auto ok = progress.step(); !ok) return ok.error();
         if (auto ok = inner_call_allowed<T>("split_vertex"); !ok) return ok.error();
         const auto r = split_vertex<M, T>(m, h0[i], h1[i], to_point<M, T>(place[i]));
         if (!r) return r.error();
@@ -186,6 +193,7 @@ result<void> extrude_region(M& m, const std::vector<typename T::face_handle>& fa
     }
     // 2. One wall per outline edge: its face's loop reads ... -> v' -> v -> u -> u' -> ...
     for (std::size_t i = 0; i < k; ++i) {
+        if (auto ok = progress.step(); !ok) return ok.error();
         const auto up_v = T::opposite(m, down[i]);  // v' -> v
         const auto r = mef<M, T>(m, T::prev(m, up_v), down[left[i]]);
         if (!r) return r.error();
@@ -224,8 +232,8 @@ result<void> extrude_region(M& m, const std::vector<typename T::face_handle>& fa
 /// Complexity: O(n) for a face of degree n; region mode O(R log R) for R corners of the
 /// region's faces (the pinch check sorts the outline; the rest is hashed, expected O(R);
 /// local: nothing outside the region and its outline fans is read).
-/// Atomic: on any error, or when an allocation throws, the mesh is unchanged (see
-/// detail/transaction.hpp).
+/// Atomic: on any error, when an allocation throws, or when options.progress cancels
+/// (errc::unsupported, "extrude: cancelled"), the mesh is unchanged (see detail/transaction.hpp).
 /// Errors (mesh unchanged): errc::invalid_argument for a zero, NaN or infinite distance, a
 /// zero direction or a zero normal, an empty selection; errc::invalid_handle for a missing
 /// face; errc::topology for a region that is not connected, has no outline (a whole closed
@@ -266,8 +274,11 @@ result<extrude_result<M, T>> extrude(M& mesh, const R& faces, const extrude_opti
         }
         return de::transact<M, T>(mesh, [&]<class JT>() -> result<extrude_result<M, T>> {
             extrude_result<M, T> out;
-            for (std::size_t i = 0; i < fs.size(); ++i)
+            de::edit_progress progress(options.progress, fs.size(), "extrude");
+            for (std::size_t i = 0; i < fs.size(); ++i) {
+                if (auto ok = progress.step(); !ok) return ok.error();
                 if (auto ok = de::extrude_one<M, JT>(mesh, fs[i], moves[i], out); !ok) return ok.error();
+            }
             return out;
         });
     }
@@ -318,7 +329,7 @@ result<extrude_result<M, T>> extrude(M& mesh, const R& faces, const extrude_opti
     }
     return de::transact<M, T>(mesh, [&]<class JT>() -> result<extrude_result<M, T>> {
         extrude_result<M, T> out;
-        if (auto ok = de::extrude_region<M, JT>(mesh, fs, in_region, outline, dir * options.distance, out); !ok) return ok.error();
+        if (auto ok = de::extrude_region<M, JT>(mesh, fs, in_region, outline, dir * options.distance, out, options.progress); !ok) return ok.error();
         return out;
     });
 }

@@ -26,6 +26,9 @@ concept truncatable_mesh = editable_mesh<M, T>;
 struct truncate_options {
     double fraction = 1.0 / 3.0;  ///< in (0, 1); used when distance is 0
     double distance = 0.0;        ///< > 0: absolute distance along each edge, overrides fraction
+    /// Called every 1024 cut points and new faces, from the calling thread; returning false
+    /// cancels: the mesh is rolled back and the error (errc::unsupported) ends in "cancelled".
+    progress_function progress = {};
 };
 
 /// What truncating one vertex created.
@@ -83,7 +86,9 @@ result<void> truncate_checked(M& m, const std::vector<typename T::vertex_handle>
             const double tw = both ? cut_parameter<M, T>(m, T::opposite(m, h), o, true) : 0.0;
             cuts.push_back({h, tv, tw, both});
         }
+    edit_progress progress(o.progress, cuts.size() + vs.size(), "truncate");
     for (const auto& c : cuts) {
+        if (auto ok = progress.step(); !ok) return ok.error();
         const auto a = pos<M, T>(m, detail::euler::source<M, T>(m, c.h));
         const auto b = pos<M, T>(m, T::target(m, c.h));
         const auto s = split_edge<M, T>(m, c.h, lerp(a, b, c.t_from));
@@ -95,6 +100,7 @@ result<void> truncate_checked(M& m, const std::vector<typename T::vertex_handle>
         out.vertices.push_back(s2.value().vertex);
     }
     for (auto v : vs) {
+        if (auto ok = progress.step(); !ok) return ok.error();
         const auto f = replace_vertex_by_polygon<M, T>(m, v);
         if (!f) return f.error();
         out.faces.push_back(f.value());
@@ -115,8 +121,8 @@ result<void> truncate_checked(M& m, const std::vector<typename T::vertex_handle>
 /// corner is cut off by a single new edge (V + 1, E + 1, F + 0).
 ///
 /// Complexity O(sum of the degrees of the vertices) = O(V_adjacentV) per vertex, plus
-/// O(k) expected for the selection of k vertices (hashing). Atomic: on any error, or when an
-/// allocation throws, the mesh is unchanged (see detail/transaction.hpp). Errors (mesh unchanged): errc::invalid_argument for options out
+/// O(k) expected for the selection of k vertices (hashing). Atomic: on any error, when an
+/// allocation throws, or when options.progress cancels, the mesh is unchanged (see detail/transaction.hpp). Errors (mesh unchanged): errc::invalid_argument for options out
 /// of range; errc::invalid_handle for a missing vertex; errc::topology for an isolated vertex
 /// or a vertex of degree 1; errc::non_manifold for a vertex with several boundary gaps.
 template <class M, class T = default_traits<M>, class R>

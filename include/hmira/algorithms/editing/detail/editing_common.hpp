@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "../../../concepts.hpp"
+#include "../../../core/progress.hpp"
 #include "../../../core/result.hpp"
 #include "../../../core/vec3.hpp"
 #include "../../euler/euler.hpp"
@@ -29,6 +30,35 @@ concept editable_mesh = euler_mutable_mesh<M, T> && positioned_mesh<M, T> && ver
                         edge_index_mesh<M, T> && face_index_mesh<M, T> && halfedge_index_mesh<M, T>;
 
 namespace detail::editing {
+
+/// An edit's progress reports: counts the elements it has built and calls the caller's
+/// progress_function once every `block` of them (a few thousand Euler operators, so the check
+/// costs nothing next to the edit), from the one thread that edits. Returning false from the
+/// callback makes step() fail with "<what>: cancelled"; the edit returns that error and its
+/// transaction rolls the mesh back.
+class edit_progress {
+public:
+    static constexpr std::size_t block = 1024;
+
+    /// `total` elements make up the edit (the fraction reported is done / total).
+    edit_progress(const progress_function& report, std::size_t total, const char* what)
+        : report_(report), total_(total ? total : 1), what_(what) {}
+
+    /// Counts one element done; an error once the callback has asked to stop. O(1) except at
+    /// the end of a block, where it adds the callback's own cost.
+    result<void> step() {
+        if (!report_ || ++done_ % block != 0) return {};
+        if (!report_(done_ >= total_ ? 1.0 : double(done_) / double(total_)))
+            return fail(errc::unsupported, std::string(what_) + ": cancelled");
+        return {};
+    }
+
+private:
+    const progress_function& report_;
+    std::size_t total_;
+    std::size_t done_ = 0;
+    const char* what_;
+};
 
 template <class M, class T>
 using point = vec3<typename T::scalar>;
