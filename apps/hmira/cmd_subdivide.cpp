@@ -1,5 +1,7 @@
 // apps/hmira/cmd_subdivide.cpp
-// `hmira subdivide`: Loop subdivision of a triangle mesh, k levels (each quadruples the faces).
+// `hmira subdivide`: Loop subdivision of a triangle mesh or Catmull-Clark subdivision of any
+// polygon mesh, k levels (each quadruples the faces, after Catmull-Clark's first).
+#include <hmira/algorithms/subdivision/catmull_clark.hpp>
 #include <hmira/algorithms/subdivision/loop.hpp>
 
 #include "cli.hpp"
@@ -19,9 +21,14 @@ int run_subdivide(const subdivide_args& a, const common_options& o) {
     if (!loaded) return code;
     return run_edit(*loaded, a.input, a.output, "subdividing " + a.input, o,
                     [&](hmira::halfedge_mesh& mesh, int& c) -> std::optional<edit_outcome> {
-                        auto r = hmira::loop_subdivide(mesh, {.levels = a.levels});
-                        if (!r) {
-                            c = report(exit_code_for(r.error()), a.input + ": " + r.error().message);
+                        std::optional<hmira::error> failed;
+                        if (a.scheme == "loop") {
+                            if (auto r = hmira::loop_subdivide(mesh, {.levels = a.levels}); !r) failed = r.error();
+                        } else if (auto r = hmira::catmull_clark_subdivide(mesh, {.levels = a.levels}); !r) {
+                            failed = r.error();
+                        }
+                        if (failed) {
+                            c = report(exit_code_for(*failed), a.input + ": " + failed->message);
                             return std::nullopt;
                         }
                         return edit_outcome{"subdivided " + count_of(a.levels, "level", "levels") + " (" + a.scheme + ")", {}};
@@ -29,14 +36,15 @@ int run_subdivide(const subdivide_args& a, const common_options& o) {
 }
 
 const bool registered = register_command({
-    "subdivide", "Subdivide a triangle mesh (Loop), k levels",
+    "subdivide", "Subdivide a mesh (Loop for triangles, Catmull-Clark for any polygons), k levels",
     "hmira subdivide bunny.off smooth.off --scheme loop -k 2", 86,
     [](CLI::App& sub) {
         auto a = std::make_shared<subdivide_args>();
-        sub.add_option("input", a->input, "triangle mesh file to read (manifold, consistently oriented)")->required();
+        sub.add_option("input", a->input, "mesh file to read (manifold, consistently oriented; triangles for loop)")->required();
         sub.add_option("output", a->output, "mesh file to write: the input's vertices first, in file order, then the new ones")->required();
-        sub.add_option("--scheme", a->scheme, "subdivision scheme (loop)")->check(CLI::IsMember({"loop"}));
-        sub.add_option("-k,--levels", a->levels, "levels of subdivision, 1 to 10 (each multiplies the faces by 4)")
+        sub.add_option("--scheme", a->scheme, "subdivision scheme: loop (triangles) or catmull-clark (any polygons, quads out)")
+            ->check(CLI::IsMember({"loop", "catmull-clark"}));
+        sub.add_option("-k,--levels", a->levels, "levels of subdivision, 1 to 10 (each multiplies the faces by 4; catmull-clark's first makes one quad per face corner)")
             ->check(CLI::Range(std::size_t(1), std::size_t(10)));
         return [a](const common_options& o) { return run_subdivide(*a, o); };
     }});

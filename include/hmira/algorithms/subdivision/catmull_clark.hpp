@@ -1,0 +1,304 @@
+// hmira/algorithms/subdivision/catmull_clark.hpp
+// Catmull-Clark subdivision of any polygon mesh, boundaries included, built from the local
+// operators: every edge split at its edge point, then each face cut into quads around a new
+// face-centre vertex (make_edge_vertex, then make_edge_face), and the old vertices moved.
+#pragma once
+
+#include <algorithm>
+#include <cassert>
+#include <concepts>
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+#include "../../core/progress.hpp"
+#include "../euler/make_edge_face.hpp"
+#include "../euler/make_edge_vertex.hpp"
+#include "../triangle/split_edge.hpp"
+
+namespace hmira {
+
+/// Options of catmull_clark_subdivide.
+struct catmull_clark_options {
+    /// Levels of subdivision (the first makes one quad per face corner, each further one
+    /// multiplies the faces by 4). At most 10.
+    std::size_t levels = 1;
+    /// Called between blocks of work with the fraction done; returning false cancels (error
+    /// errc::unsupported, "catmull_clark_subdivide: cancelled", mesh unchanged). With a
+    /// callback the mesh is copied once before the first change, so that a cancellation can
+    /// restore it; without one nothing can interrupt the levels and no copy is made.
+    progress_function progress = {};
+};
+
+/// What catmull_clark_subdivide did.
+struct catmull_clark_result {
+    std::size_t vertices = 0;  ///< vertices after the last level
+    std::size_t edges = 0;     ///< edges after the last level
+    std::size_t faces = 0;     ///< faces after the last level
+};
+
+/// A mesh catmull_clark_subdivide can run on: the Euler operators (so polygons of any degree,
+/// which excludes triangles-only models), movable positions, dense vertex, edge and face
+/// indices for its per-level arrays, and copies (to restore the mesh on cancellation).
+/// halfedge_mesh, winged_edge_mesh, OpenMesh PolyMesh and CGAL Surface_mesh qualify.
+template <class M, class T = default_traits<M>>
+concept catmull_clark_subdividable_mesh = euler_mutable_mesh<M, T> && position_mutable_mesh<M, T> && vertex_index_mesh<M, T> &&
+                                          edge_index_mesh<M, T> && face_index_mesh<M, T> && std::copy_constructible<M> &&
+                                          std::is_move_assignable_v<M>;
+
+namespace detail::subdivision {
+
+/// Element counts of a mesh, and what one Catmull-Clark level makes of them.
+struct cc_counts {
+    std::uint64_t vertices = 0, edges = 0, faces = 0, corners = 0;  // corners: sum of face degrees
+    cc_counts next() const { return {vertices + edges + faces, 2 * edges + corners, corners, 4 * corners}; }
+};
+
+/// The per-level arrays, sized once for the largest level so that no level allocates after
+/// the mesh starts changing.
+template <class M, class T>
+struct cc_workspace {
+    std::vector<vec3<double>> old_position, face_point, face_sum, edge_point, neighbour_sum, boundary_sum, vertex_point;
+    std::vector<std::uint32_t> valence, boundary_edges;
+    std::vector<typename T::face_handle> faces;
+    std::vector<typename T::halfedge_handle> edges, corners;
+
+    void reserve(std::size_t vertex_bound, std::size_t edge_count, std::size_t face_bound, std::size_t max_degree) {
+        for (auto* a : {&old_position, &face_sum, &neighbour_sum, &boundary_sum, &vertex_point}) a->reserve(vertex_bound);
+        valence.reserve(vertex_bound);
+        boundary_edges.reserve(vertex_bound);
+        face_point.reserve(face_bound);
+        faces.reserve(face_bound);
+        edge_point.reserve(edge_count);
+        edges.reserve(edge_count);
+        corners.reserve(max_degree);
+    }
+};
+
+/// One Catmull-Clark level. Preconditions established by the caller for the whole mesh: no
+/// face has inner rings; every edge has a face on at least one side, and two different faces
+/// when it has two; `w` and the mesh have room for this level. Returns false when `gate`
+/// cancels, which it does only between blocks (the caller then restores its copy).
+template <class M, class T>
+bool catmull_clark_level(M& mesh, cc_workspace<M, T>& w, progress_gate& gate) {
+    namespace dt = detail::triangle_ops;
+    using H = typename T::halfedge_handle;
+    using F = typename T::face_handle;
+    constexpr std::size_t block = 1u << 14;
+
+    const std::size_t vertex_bound = T::vertex_index_bound(mesh);
+    // Every new position is computed first, in flat arrays indexed by element index, from the
+    // old positions only: the operators below then never read a position.
+    auto zero = [](auto& a, std::size_t n) { a.assign(n, {}); };
+    zero(w.old_position, vertex_bound);
+    zero(w.face_sum, vertex_bound);
+    zero(w.neighbour_sum, vertex_bound);
+    zero(w.boundary_sum, vertex_bound);
+    zero(w.vertex_point, vertex_bound);
+    zero(w.valence, vertex_bound);
+    zero(w.boundary_edges, vertex_bound);
+    zero(w.face_point, T::face_index_bound(mesh));
+    w.faces.clear();
+    w.edges.clear();
+    w.edge_point.clear();
+    for (auto v : T::vertices(mesh)) w.old_position[T::vertex_index(mesh, v)] = dt::position_of<M, T>(mesh, v);
+
+    // Face points (centroids), and each vertex's sum of the face points around it.
+    std::size_t done = 0;
+    for (auto f : T::faces(mesh)) {
+        w.faces.push_back(f);
+        const H start = T::face_halfedge(mesh, f);
+        vec3<double> c{};
+        std::size_t n = 0;
+        H x = start;
+        do {
+            c += w.old_position[T::vertex_index(mesh, T::target(mesh, x))];
+            ++n;
+            x = T::next(mesh, x);
+        } while (x != start);
+        c = c / double(n);
+        w.face_point[T::face_index(mesh, f)] = c;
+        do {
+            w.face_sum[T::vertex_index(mesh, T::target(mesh, x))] += c;
+            x = T::next(mesh, x);
+        } while (x != start);
+        if (++done % block == 0 && !gate.advance(1)) return false;
+    }
+
+    // Edge points; each vertex's valence, sum of neighbours, and boundary neighbours.
+    for (auto e : T::edges(mesh)) {
+        const H h = T::edge_halfedge(mesh, e), o = T::opposite(mesh, h);
+        const std::size_t a = T::vertex_index(mesh, T::target(mesh, o)), b = T::vertex_index(mesh, T::target(mesh, h));
+        const F fh = T::face(mesh, h), fo = T::face(mesh, o);
+        const vec3<double> pa = w.old_position[a], pb = w.old_position[b];
+        w.neighbour_sum[a] += pb;
+        w.neighbour_sum[b] += pa;
+        ++w.valence[a];
+        ++w.valence[b];
+        w.edges.push_back(h);
+        if (fh == T::null_face() || fo == T::null_face()) {
+            w.edge_point.push_back((pa + pb) * 0.5);
+            w.boundary_sum[a] += pb;
+            w.boundary_sum[b] += pa;
+            ++w.boundary_edges[a];
+            ++w.boundary_edges[b];
+        } else {
+            w.edge_point.push_back((pa + pb + w.face_point[T::face_index(mesh, fh)] + w.face_point[T::face_index(mesh, fo)]) * 0.25);
+        }
+        if (++done % block == 0 && !gate.advance(1)) return false;
+    }
+
+    // Vertex points. Interior, valence n: ((n - 2) S + (sum of neighbours) / n + (sum of face
+    // points) / n) / n, which is Catmull and Clark's (Q + 2R + (n - 3) S) / n. On the boundary
+    // (two boundary edges): 3/4 S + 1/8 of each boundary neighbour, the cubic B-spline rule.
+    // A vertex with more boundary edges (two boundary fans meet there) has no curve to follow
+    // and stays where it is, as an isolated vertex does.
+    for (std::size_t i = 0; i < vertex_bound; ++i) {
+        const vec3<double> s = w.old_position[i];
+        const double n = double(w.valence[i]);
+        if (w.boundary_edges[i] == 0 && w.valence[i] > 0)
+            w.vertex_point[i] = (s * (n - 2) + w.neighbour_sum[i] / n + w.face_sum[i] / n) / n;
+        else if (w.boundary_edges[i] == 2)
+            w.vertex_point[i] = s * 0.75 + w.boundary_sum[i] * 0.125;
+        else
+            w.vertex_point[i] = s;
+    }
+
+    // Edge splits: each edge gets its edge point; the faces beside it just gain the vertex.
+    // (The public operator's checks cost O(1) here; the preconditions above make them pass.)
+    for (std::size_t i = 0; i < w.edges.size(); ++i) {
+        auto r = split_edge<M, T>(mesh, w.edges[i], {.position = w.edge_point[i], .split_triangles = false});
+        assert(r);
+        (void)r.value();  // cannot fail: the halfedge is live and the position finite
+        if ((i + 1) % block == 0 && !gate.advance(1)) return false;
+    }
+    // Each face, now a 2n-gon alternating old vertices and edge points, becomes n quads: a
+    // spike from the first edge point to the face point, then an edge from the face point to
+    // each further edge point, each closing one quad (make_edge_face walks only that quad).
+    using S = typename T::scalar;
+    for (std::size_t i = 0; i < w.faces.size(); ++i) {
+        const F f = w.faces[i];
+        w.corners.clear();
+        const H start = T::face_halfedge(mesh, f);
+        H x = start;
+        do {
+            if (T::vertex_index(mesh, T::target(mesh, x)) >= vertex_bound) w.corners.push_back(x);
+            x = T::next(mesh, x);
+        } while (x != start);
+        const vec3<double>& c = w.face_point[T::face_index(mesh, f)];
+        auto spike = make_edge_vertex<M, T>(mesh, w.corners[0], vec3<S>{S(c.x), S(c.y), S(c.z)});
+        assert(spike);
+        const H into_centre = spike.value().halfedge;  // cannot fail: corners[0] is a live halfedge
+        for (std::size_t k = 1; k < w.corners.size(); ++k) {
+            auto quad = make_edge_face<M, T>(mesh, into_centre, w.corners[k]);
+            assert(quad);
+            (void)quad.value();  // cannot fail: both corners lie on f's outer loop, at different vertices
+        }
+        if ((i + 1) % block == 0 && !gate.advance(1)) return false;
+    }
+    for (auto v : T::vertices(mesh)) {
+        const std::size_t i = T::vertex_index(mesh, v);
+        if (i < vertex_bound) dt::set_position<M, T>(mesh, v, w.vertex_point[i]);
+    }
+    return true;
+}
+
+}  // namespace detail::subdivision
+
+/// Catmull-Clark subdivision, `options.levels` times, on any polygon mesh. Each level puts a
+/// face point at each face's centroid; splits each edge at its edge point (the average of its
+/// two ends and the two face points beside it; the midpoint on a boundary); joins each face
+/// point to the edge points around it, so a face of degree n becomes n quads; and moves each
+/// old vertex S of valence n to (Q + 2R + (n - 3) S) / n, with Q the average of the face
+/// points around it and R the average of its edges' midpoints.
+///
+/// Boundaries follow the cubic B-spline of the boundary polygon: a boundary edge point is the
+/// edge's midpoint and a boundary vertex moves to 3/4 of itself plus 1/8 of each of its two
+/// boundary neighbours, so the boundary curve depends on the boundary alone and two meshes
+/// sharing a boundary stay joined. A vertex where two boundary fans meet, and an isolated
+/// vertex, stay where they are.
+///
+/// \pre no face has inner rings; every edge has a face on at least one side, and different
+///      faces when it has two.
+/// \post per level: V + E + F vertices, 2 E + C edges and C faces (C the sum of the face
+///       degrees), every face a quad; genus and boundary loops unchanged. Old vertices keep
+///       their handles; faces keep theirs (each old face is one of its quads).
+/// Errors (mesh unchanged): errc::unsupported for a face with inner rings (naming it);
+/// errc::topology for an edge without faces or with the same face on both sides (naming it);
+/// errc::invalid_argument for more than 10 levels, or when the result would need more than
+/// 2^31 halfedges; errc::unsupported, "cancelled", when options.progress returns false.
+/// The mesh and the working arrays are sized for the last level before the first change, so
+/// std::bad_alloc comes before any change (a model's user property arrays excepted, which
+/// grow element by element).
+/// Complexity O(C) per level (every operator is O(1) or O(face degree)), so O(4^levels C);
+/// plus O(V + E + F) for the copy when a progress callback is given.
+template <class M, class T = default_traits<M>>
+    requires catmull_clark_subdividable_mesh<M, T>
+[[nodiscard]] result<catmull_clark_result> catmull_clark_subdivide(M& mesh, const catmull_clark_options& options = {}) {
+    namespace de = detail::euler;
+    namespace ds = detail::subdivision;
+    if (options.levels > 10)
+        return fail(errc::invalid_argument,
+                    "catmull_clark_subdivide: option levels must be at most 10, got " + std::to_string(options.levels));
+    ds::cc_counts counts{T::vertex_count(mesh), T::edge_count(mesh), T::face_count(mesh), 0};
+    std::size_t max_degree = 4;
+    for (auto f : T::faces(mesh)) {
+        if (de::has_rings<M, T>(mesh, f))
+            return fail(errc::unsupported,
+                        "catmull_clark_subdivide: " + de::name<M, T>("face", mesh, f) + " has inner rings (triangulate_faces or fill them first)",
+                        de::index_of<M, T>(mesh, f));
+        const std::size_t degree = detail::triangle_ops::loop_length<M, T>(mesh, T::face_halfedge(mesh, f), std::size_t(-1));
+        counts.corners += degree;
+        max_degree = std::max(max_degree, degree);
+    }
+    for (auto e : T::edges(mesh)) {
+        const auto h = T::edge_halfedge(mesh, e), o = T::opposite(mesh, h);
+        const auto fh = T::face(mesh, h), fo = T::face(mesh, o);
+        if (fh == fo)
+            return fail(errc::topology,
+                        "catmull_clark_subdivide: edge " + std::to_string(T::edge_index(mesh, e)) +
+                            (fh == T::null_face() ? " has no face on either side" : " has the same face on both sides"),
+                        (long long)T::edge_index(mesh, e));
+    }
+    // The counts of every level are known now: the mesh and the per-level arrays are sized for
+    // the last one up front, so nothing allocates once the mesh has started to change.
+    const ds::cc_counts first = counts;
+    ds::cc_counts largest_input = counts;
+    std::uint64_t blocks = 0;
+    for (std::size_t l = 0; l < options.levels; ++l) {
+        largest_input = counts;
+        blocks += (2 * counts.edges + 2 * counts.faces) / (1u << 14);
+        counts = counts.next();
+        if (2 * counts.edges >= (std::uint64_t(1) << 31))
+            return fail(errc::invalid_argument, "catmull_clark_subdivide: " + std::to_string(options.levels) +
+                                                    " levels would make more than 2^31 halfedges, more than a mesh index holds");
+    }
+    if (options.levels == 0) return catmull_clark_result{T::vertex_count(mesh), T::edge_count(mesh), T::face_count(mesh)};
+    const std::size_t vertex_bound = T::vertex_index_bound(mesh) + std::size_t(counts.vertices - first.vertices);
+    const std::size_t edge_bound = T::edge_index_bound(mesh) + std::size_t(counts.edges - first.edges);
+    const std::size_t face_bound = T::face_index_bound(mesh) + std::size_t(counts.faces - first.faces);
+    if constexpr (requires { T::reserve(mesh, std::size_t{}, std::size_t{}, std::size_t{}); })
+        T::reserve(mesh, vertex_bound, edge_bound, face_bound);
+    ds::cc_workspace<M, T> work;
+    work.reserve(vertex_bound - std::size_t(counts.vertices - largest_input.vertices), std::size_t(largest_input.edges),
+                 face_bound - std::size_t(counts.faces - largest_input.faces), max_degree);
+
+    detail::progress_gate gate(options.progress, std::size_t(blocks));
+    // Without a callback nothing can stop a level half way: its preconditions hold for the
+    // whole mesh and hold again after it. With one, a copy taken before the first change is
+    // what a cancellation restores.
+    std::vector<M> backup;
+    if (options.progress) backup.push_back(mesh);
+    for (std::size_t l = 0; l < options.levels; ++l) {
+        if (!ds::catmull_clark_level<M, T>(mesh, work, gate)) {
+            mesh = std::move(backup.front());
+            return fail(errc::unsupported, "catmull_clark_subdivide: cancelled");
+        }
+    }
+    return catmull_clark_result{T::vertex_count(mesh), T::edge_count(mesh), T::face_count(mesh)};
+}
+
+}  // namespace hmira
