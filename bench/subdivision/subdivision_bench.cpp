@@ -1,19 +1,33 @@
-// One Loop subdivision level of a triangulated torus of 2 * 724^2 ~ 1.05M triangles: hmira's
-// loop_subdivide on halfedge_mesh and (generic, same code) on OpenMesh TriMesh and CGAL
-// Surface_mesh, beside OpenMesh's LoopT subdivider and CGAL's Loop_subdivision, in one run.
-// The mesh is copied outside the timed region. Each case runs one iteration (a level takes seconds).
+// One subdivision level of ~1M-face tori, in one run, on the same input for every case:
+// - Loop, on a triangulated torus of 2 * 724^2 ~ 1.05M triangles: hmira's loop_subdivide on
+//   halfedge_mesh and (generic, same code) on OpenMesh TriMesh and CGAL Surface_mesh, beside
+//   OpenMesh's LoopT and CGAL's Loop_subdivision;
+// - Catmull-Clark, on a torus of 1024^2 ~ 1.05M quads: catmull_clark_subdivide on
+//   halfedge_mesh, OpenMesh PolyMesh and Surface_mesh, beside OpenMesh's CatmullClarkT and
+//   CGAL's CatmullClark_subdivision.
+// The mesh is copied outside the timed region; each case runs one iteration per repetition (a
+// level takes a fraction of a second to seconds) and is repeated 3 times. After the run the
+// medians are compared: hmira on halfedge_mesh / each peer (target <= 0.5), and hmira generic
+// on OpenMesh and CGAL / hmira on halfedge_mesh (target <= 1.1). Run single-threaded.
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <map>
 #include <numbers>
+#include <string>
 #include <vector>
 
+#include <hmira/algorithms/subdivision/catmull_clark.hpp>
 #include <hmira/algorithms/subdivision/loop.hpp>
 #include <hmira/meshes/halfedge_mesh.hpp>
 
 #ifdef HMIRA_BENCH_WITH_OPENMESH
-#include <OpenMesh/Tools/Subdivider/Uniform/LoopT.hh>
+// The interop header first: CatmullClarkT.hh uses OpenMesh's property handles without including them.
 #include <hmira/interop/openmesh.hpp>
+#include <OpenMesh/Tools/Subdivider/Uniform/CatmullClarkT.hh>
+#include <OpenMesh/Tools/Subdivider/Uniform/LoopT.hh>
 #endif
 #ifdef HMIRA_BENCH_WITH_CGAL
 #include <CGAL/Simple_cartesian.h>
@@ -23,47 +37,79 @@
 
 namespace {
 
-constexpr std::size_t n = 724;
-
-/// The torus as points and triangles (each quad cut along a diagonal).
+/// A torus as points and faces: n x n quads, or each quad cut along a diagonal.
 struct soup {
     std::vector<hmira::vec3<double>> points;
-    std::vector<std::array<std::size_t, 3>> tris;
+    std::vector<std::vector<std::size_t>> faces;
 };
-const soup& torus() {
-    static const soup s = [] {
-        soup t;
-        for (std::size_t i = 0; i < n; ++i)
-            for (std::size_t j = 0; j < n; ++j) {
-                const double u = 2 * std::numbers::pi * double(i) / double(n), v = 2 * std::numbers::pi * double(j) / double(n);
-                t.points.push_back({(2 + 0.7 * std::cos(v)) * std::cos(u), (2 + 0.7 * std::cos(v)) * std::sin(u), 0.7 * std::sin(v)});
+soup make_torus(std::size_t n, bool triangles) {
+    soup t;
+    for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t j = 0; j < n; ++j) {
+            const double u = 2 * std::numbers::pi * double(i) / double(n), v = 2 * std::numbers::pi * double(j) / double(n);
+            t.points.push_back({(2 + 0.7 * std::cos(v)) * std::cos(u), (2 + 0.7 * std::cos(v)) * std::sin(u), 0.7 * std::sin(v)});
+        }
+    auto id = [n](std::size_t i, std::size_t j) { return (i % n) * n + (j % n); };
+    for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t j = 0; j < n; ++j) {
+            if (triangles) {
+                t.faces.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+                t.faces.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+            } else {
+                t.faces.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
             }
-        auto id = [](std::size_t i, std::size_t j) { return (i % n) * n + (j % n); };
-        for (std::size_t i = 0; i < n; ++i)
-            for (std::size_t j = 0; j < n; ++j) {
-                t.tris.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
-                t.tris.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
-            }
-        return t;
-    }();
+        }
+    return t;
+}
+const soup& triangle_torus() {
+    static const soup s = make_torus(724, true);
+    return s;
+}
+const soup& quad_torus() {
+    static const soup s = make_torus(1024, false);
     return s;
 }
 
 template <class M, class T = hmira::default_traits<M>>
-M build() {
+M build(const soup& s) {
     M m;
     std::vector<typename T::vertex_handle> vs;
-    for (const auto& p : torus().points) vs.push_back(T::add_vertex(m, {typename T::scalar(p.x), typename T::scalar(p.y), typename T::scalar(p.z)}));
-    for (const auto& t : torus().tris) {
-        const std::array<typename T::vertex_handle, 3> c{vs[t[0]], vs[t[1]], vs[t[2]]};
+    for (const auto& p : s.points) vs.push_back(T::add_vertex(m, {typename T::scalar(p.x), typename T::scalar(p.y), typename T::scalar(p.z)}));
+    std::vector<typename T::vertex_handle> c;
+    for (const auto& f : s.faces) {
+        c.clear();
+        for (auto i : f) c.push_back(vs[i]);
         (void)T::add_face(m, std::span<const typename T::vertex_handle>(c));
     }
     return m;
 }
 
+/// One case's timing: the median of its repetitions, collected for the ratio summary.
+std::map<std::string, std::vector<double>>& seconds_by_case() {
+    static std::map<std::string, std::vector<double>> s;
+    return s;
+}
+
+template <class M>
+void hmira_catmull_clark(benchmark::State& state) {
+    const M base = build<M>(quad_torus());
+    for (auto _ : state) {
+        state.PauseTiming();
+        M m = base;
+        state.ResumeTiming();
+        auto r = hmira::catmull_clark_subdivide(m);
+        benchmark::DoNotOptimize(r);
+        state.PauseTiming();
+        if (!r || r->faces != 4 * quad_torus().faces.size()) state.SkipWithError("wrong face count");
+        state.ResumeTiming();
+    }
+    state.counters["faces_in"] = double(quad_torus().faces.size());
+}
+BENCHMARK(hmira_catmull_clark<hmira::halfedge_mesh>)->Name("catmull_clark/hmira/halfedge_mesh")->Unit(benchmark::kMillisecond)->Iterations(1);
+
 template <class M>
 void hmira_loop(benchmark::State& state) {
-    const M base = build<M>();
+    const M base = build<M>(triangle_torus());
     for (auto _ : state) {
         state.PauseTiming();
         M m = base;
@@ -71,10 +117,10 @@ void hmira_loop(benchmark::State& state) {
         auto r = hmira::loop_subdivide(m);
         benchmark::DoNotOptimize(r);
         state.PauseTiming();
-        if (!r || r->faces != 4 * torus().tris.size()) state.SkipWithError("wrong face count");
+        if (!r || r->faces != 4 * triangle_torus().faces.size()) state.SkipWithError("wrong face count");
         state.ResumeTiming();
     }
-    state.counters["faces_in"] = double(torus().tris.size());
+    state.counters["faces_in"] = double(triangle_torus().faces.size());
 }
 BENCHMARK(hmira_loop<hmira::halfedge_mesh>)->Name("loop/hmira/halfedge_mesh")->Unit(benchmark::kMillisecond)->Iterations(1);
 
@@ -82,7 +128,7 @@ BENCHMARK(hmira_loop<hmira::halfedge_mesh>)->Name("loop/hmira/halfedge_mesh")->U
 using om_tri = OpenMesh::TriMesh_ArrayKernelT<>;
 BENCHMARK(hmira_loop<om_tri>)->Name("loop/hmira/openmesh_tri")->Unit(benchmark::kMillisecond)->Iterations(1);
 void openmesh_loop(benchmark::State& state) {
-    const om_tri base = build<om_tri>();
+    const om_tri base = build<om_tri>(triangle_torus());
     for (auto _ : state) {
         state.PauseTiming();
         om_tri m = base;
@@ -92,31 +138,117 @@ void openmesh_loop(benchmark::State& state) {
         loop(1);
         state.PauseTiming();
         loop.detach();
-        if (m.n_faces() != 4 * torus().tris.size()) state.SkipWithError("wrong face count");
+        if (m.n_faces() != 4 * triangle_torus().faces.size()) state.SkipWithError("wrong face count");
         state.ResumeTiming();
     }
 }
 BENCHMARK(openmesh_loop)->Name("loop/openmesh/LoopT")->Unit(benchmark::kMillisecond)->Iterations(1);
+
+using om_poly = OpenMesh::PolyMesh_ArrayKernelT<>;
+BENCHMARK(hmira_catmull_clark<om_poly>)->Name("catmull_clark/hmira/openmesh_poly")->Unit(benchmark::kMillisecond)->Iterations(1);
+void openmesh_catmull_clark(benchmark::State& state) {
+    const om_poly base = build<om_poly>(quad_torus());
+    for (auto _ : state) {
+        state.PauseTiming();
+        om_poly m = base;
+        OpenMesh::Subdivider::Uniform::CatmullClarkT<om_poly> cc;
+        cc.attach(m);
+        state.ResumeTiming();
+        cc(1);
+        state.PauseTiming();
+        cc.detach();
+        if (m.n_faces() != 4 * quad_torus().faces.size()) state.SkipWithError("wrong face count");
+        state.ResumeTiming();
+    }
+}
+BENCHMARK(openmesh_catmull_clark)->Name("catmull_clark/openmesh/CatmullClarkT")->Unit(benchmark::kMillisecond)->Iterations(1);
 #endif
 
 #ifdef HMIRA_BENCH_WITH_CGAL
 using cgal_mesh = CGAL::Surface_mesh<CGAL::Simple_cartesian<double>::Point_3>;
 BENCHMARK(hmira_loop<cgal_mesh>)->Name("loop/hmira/cgal_surface_mesh")->Unit(benchmark::kMillisecond)->Iterations(1);
 void cgal_loop(benchmark::State& state) {
-    const cgal_mesh base = build<cgal_mesh>();
+    const cgal_mesh base = build<cgal_mesh>(triangle_torus());
     for (auto _ : state) {
         state.PauseTiming();
         cgal_mesh m = base;
         state.ResumeTiming();
         CGAL::Subdivision_method_3::Loop_subdivision(m, CGAL::parameters::number_of_iterations(1));
         state.PauseTiming();
-        if (m.number_of_faces() != 4 * torus().tris.size()) state.SkipWithError("wrong face count");
+        if (m.number_of_faces() != 4 * triangle_torus().faces.size()) state.SkipWithError("wrong face count");
         state.ResumeTiming();
     }
 }
 BENCHMARK(cgal_loop)->Name("loop/cgal/Loop_subdivision")->Unit(benchmark::kMillisecond)->Iterations(1);
+
+BENCHMARK(hmira_catmull_clark<cgal_mesh>)->Name("catmull_clark/hmira/cgal_surface_mesh")->Unit(benchmark::kMillisecond)->Iterations(1);
+void cgal_catmull_clark(benchmark::State& state) {
+    const cgal_mesh base = build<cgal_mesh>(quad_torus());
+    for (auto _ : state) {
+        state.PauseTiming();
+        cgal_mesh m = base;
+        state.ResumeTiming();
+        CGAL::Subdivision_method_3::CatmullClark_subdivision(m, CGAL::parameters::number_of_iterations(1));
+        state.PauseTiming();
+        if (m.number_of_faces() != 4 * quad_torus().faces.size()) state.SkipWithError("wrong face count");
+        state.ResumeTiming();
+    }
+}
+BENCHMARK(cgal_catmull_clark)->Name("catmull_clark/cgal/CatmullClark_subdivision")->Unit(benchmark::kMillisecond)->Iterations(1);
 #endif
+
+/// Console output as usual, and each single run's CPU time kept for the summary: on a shared
+/// machine the wall time of a single-threaded run mostly measures the other processes.
+class collecting_reporter : public benchmark::ConsoleReporter {
+public:
+    void ReportRuns(const std::vector<Run>& runs) override {
+        for (const auto& r : runs)
+            if (r.run_type == Run::RT_Iteration && !r.error_occurred && r.iterations > 0)
+                seconds_by_case()[r.run_name.function_name].push_back(r.cpu_accumulated_time / double(r.iterations));
+        ConsoleReporter::ReportRuns(runs);
+    }
+};
+
+double median_of(const std::string& name) {
+    auto it = seconds_by_case().find(name);
+    if (it == seconds_by_case().end() || it->second.empty()) return 0;
+    auto v = it->second;
+    std::sort(v.begin(), v.end());
+    return v[v.size() / 2];
+}
+
+void print_ratio(const std::string& label, const std::string& a, const std::string& b, double target) {
+    const double ta = median_of(a), tb = median_of(b);
+    if (ta <= 0 || tb <= 0) return;
+    std::printf("%-58s %7.1f ms / %7.1f ms = %5.2f  (target <= %.1f)%s\n", label.c_str(), ta * 1e3, tb * 1e3, ta / tb, target,
+                ta / tb <= target ? "" : "  MISSED");
+}
 
 }  // namespace
 
-BENCHMARK_MAIN();
+int main(int argc, char** argv) {
+    // Three repetitions unless the command line says otherwise; the summary uses medians.
+    std::vector<char*> args(argv, argv + argc);
+    std::string reps = "--benchmark_repetitions=3";
+    bool has_reps = false;
+    for (int i = 1; i < argc; ++i) has_reps |= std::string(argv[i]).rfind("--benchmark_repetitions", 0) == 0;
+    if (!has_reps) args.insert(args.begin() + 1, reps.data());
+    int n = int(args.size());
+    benchmark::Initialize(&n, args.data());
+    if (benchmark::ReportUnrecognizedArguments(n, args.data())) return 1;
+    collecting_reporter reporter;
+    benchmark::RunSpecifiedBenchmarks(&reporter);
+    std::printf("\nMedian CPU-time ratios (one level, ~1M faces in):\n");
+    for (const std::string scheme : {"loop", "catmull_clark"}) {
+        const std::string own = scheme + "/hmira/halfedge_mesh";
+        const std::string om = scheme == "loop" ? "loop/openmesh/LoopT" : "catmull_clark/openmesh/CatmullClarkT";
+        const std::string cg = scheme == "loop" ? "loop/cgal/Loop_subdivision" : "catmull_clark/cgal/CatmullClark_subdivision";
+        print_ratio(scheme + ": hmira halfedge_mesh / OpenMesh", own, om, 0.5);
+        print_ratio(scheme + ": hmira halfedge_mesh / CGAL", own, cg, 0.5);
+        print_ratio(scheme + ": hmira on OpenMesh / hmira halfedge_mesh",
+                    scheme + (scheme == "loop" ? "/hmira/openmesh_tri" : "/hmira/openmesh_poly"), own, 1.1);
+        print_ratio(scheme + ": hmira on CGAL / hmira halfedge_mesh", scheme + "/hmira/cgal_surface_mesh", own, 1.1);
+    }
+    benchmark::Shutdown();
+    return 0;
+}

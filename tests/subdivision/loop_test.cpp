@@ -137,6 +137,24 @@ TYPED_TEST(loop_test, icosahedron_vertices_converge_to_the_limit_positions) {
     }
 }
 
+TYPED_TEST(loop_test, levels_that_would_overflow_the_indices_are_refused_and_the_mesh_is_unchanged) {
+    using M = TypeParam;
+    HMIRA_REQUIRE_TRIANGLE_OPS(M)
+    else {
+        // 8192 triangles * 4^10 = 2^33 faces: refused before anything is allocated.
+        M m = mesh_from<M>(triangulated(torus(64, 64)));
+        const auto before = take_snapshot(m);
+        auto r = hmira::loop_subdivide(m, {.levels = 10});
+        ASSERT_FALSE(r);
+        EXPECT_EQ(r.error().code, hmira::errc::invalid_argument);
+        EXPECT_NE(r.error().message.find("2^31"), std::string::npos) << r.error().message;
+        EXPECT_EQ(take_snapshot(m), before);
+        r = hmira::loop_subdivide(m, {.levels = 11});
+        ASSERT_FALSE(r);
+        EXPECT_EQ(take_snapshot(m), before);
+    }
+}
+
 TYPED_TEST(loop_test, a_mesh_with_a_quad_is_refused_and_unchanged) {
     using M = TypeParam;
     HMIRA_REQUIRE_TRIANGLE_OPS(M)

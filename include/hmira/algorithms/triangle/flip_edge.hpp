@@ -26,6 +26,41 @@ bool is_flip_ok(const M& mesh, typename T::halfedge_handle h) {
     return dt::find_halfedge<M, T>(mesh, c, d) == T::null_halfedge();
 }
 
+namespace detail::triangle_ops {
+
+/// The link changes of flip_edge, without its checks: for callers that established
+/// is_flip_ok for a whole batch of edges up front (Loop subdivision). O(1).
+template <class M, class T>
+void flip_links(M& mesh, typename T::halfedge_handle h) {
+    const auto o = T::opposite(mesh, h);
+    const auto hn = T::next(mesh, h), hp = T::prev(mesh, h);
+    const auto on = T::next(mesh, o), op = T::prev(mesh, o);
+    const auto f0 = T::face(mesh, h), f1 = T::face(mesh, o);
+    const auto a = T::target(mesh, o), b = T::target(mesh, h);
+    const auto c = T::target(mesh, hn), d = T::target(mesh, on);
+    const bool a_stores_h = T::vertex_halfedge(mesh, a) == h;
+    const bool b_stores_o = T::vertex_halfedge(mesh, b) == o;
+
+    T::set_target(mesh, h, c);
+    T::set_target(mesh, o, d);
+    T::set_next(mesh, hp, on);
+    T::set_next(mesh, on, h);
+    T::set_next(mesh, h, hp);
+    T::set_next(mesh, op, hn);
+    T::set_next(mesh, hn, o);
+    T::set_next(mesh, o, op);
+    T::set_face(mesh, on, f0);
+    T::set_face(mesh, hn, f1);
+    T::set_face_halfedge(mesh, f0, h);
+    T::set_face_halfedge(mesh, f1, o);
+    // Both faces are interior, so a and b keep whatever boundary halfedge they store; only a
+    // stored halfedge that now leaves another vertex must change.
+    if (a_stores_h) T::set_vertex_halfedge(mesh, a, on);
+    if (b_stores_o) T::set_vertex_halfedge(mesh, b, hn);
+}
+
+}  // namespace detail::triangle_ops
+
 /// What flip_edge changed.
 template <class M, class T = default_traits<M>>
 struct flip_edge_result {
@@ -55,31 +90,7 @@ template <class M, class T = default_traits<M>>
                     "flip_edge: the edge of " + de::name<M, T>("halfedge", mesh, h) +
                         " is not between two triangles, or its opposite vertices are already joined",
                     de::index_of<M, T>(mesh, h));
-    const auto o = T::opposite(mesh, h);
-    const auto hn = T::next(mesh, h), hp = T::prev(mesh, h);
-    const auto on = T::next(mesh, o), op = T::prev(mesh, o);
-    const auto f0 = T::face(mesh, h), f1 = T::face(mesh, o);
-    const auto a = T::target(mesh, o), b = T::target(mesh, h);
-    const auto c = T::target(mesh, hn), d = T::target(mesh, on);
-    const bool a_stores_h = T::vertex_halfedge(mesh, a) == h;
-    const bool b_stores_o = T::vertex_halfedge(mesh, b) == o;
-
-    T::set_target(mesh, h, c);
-    T::set_target(mesh, o, d);
-    T::set_next(mesh, hp, on);
-    T::set_next(mesh, on, h);
-    T::set_next(mesh, h, hp);
-    T::set_next(mesh, op, hn);
-    T::set_next(mesh, hn, o);
-    T::set_next(mesh, o, op);
-    T::set_face(mesh, on, f0);
-    T::set_face(mesh, hn, f1);
-    T::set_face_halfedge(mesh, f0, h);
-    T::set_face_halfedge(mesh, f1, o);
-    // Both faces are interior, so a and b keep whatever boundary halfedge they store; only a
-    // stored halfedge that now leaves another vertex must change.
-    if (a_stores_h) T::set_vertex_halfedge(mesh, a, on);
-    if (b_stores_o) T::set_vertex_halfedge(mesh, b, hn);
+    detail::triangle_ops::flip_links<M, T>(mesh, h);
     return flip_edge_result<M, T>{h};
 }
 
