@@ -655,10 +655,10 @@ result<marching_cubes_output<M, T>> marching_cubes(M& mesh, const G& grid, const
     const std::size_t total = tri->positions.size() + tri->triangles.size();
     const std::size_t block = std::max<std::size_t>(total / 64, 1);
     std::size_t done = 0;
-    // Reports after every `block` elements; false once the caller cancels.
+    // Reports after every `block` elements and after the last; false once the caller cancels.
     auto keep_going = [&] {
         ++done;
-        if (!options.progress || done % block != 0) return true;
+        if (!options.progress || (done % block != 0 && done != total)) return true;
         return options.progress(0.5 + 0.5 * double(done) / double(total));
     };
     auto undo = [&] {
