@@ -294,6 +294,25 @@ class Mesh(_core.MeshCore):
         return self._extrude(None if faces is None else [int(f) for f in faces], all=all, distance=distance,
                              direction=d, mode=mode)
 
+    def smooth(self, method: str = "taubin", **options: Any) -> int:
+        """Smooth the vertex positions in place, as ``hmira smooth``: ``method`` "taubin"
+        (:meth:`taubin_smooth`, keeps the volume) or "laplacian" (:meth:`laplacian_smooth`);
+        ``options`` are that method's keywords. Returns the number of vertices free to move.
+
+        Examples
+        --------
+        >>> import hmira
+        >>> m = hmira.Mesh([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]],
+        ...                [[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]])
+        >>> m.smooth("laplacian", iterations=2, fixed_vertices=[0])
+        3
+        """
+        if method == "taubin":
+            return self.taubin_smooth(**options)
+        if method == "laplacian":
+            return self.laplacian_smooth(**options)
+        raise ValueError(f"smooth: method must be 'taubin' or 'laplacian', got {method!r}")
+
     @classmethod
     def from_trimesh(cls, tm: Any) -> "Mesh":
         """A Mesh from a ``trimesh.Trimesh`` (or anything with ``.vertices`` and ``.faces``)."""

@@ -138,6 +138,66 @@ class MeshCore:
     def __init__(self) -> None:
         """An empty mesh."""
 
+    def is_flip_ok(self, halfedge: int) -> bool:
+        """
+        Whether flip_edge(halfedge) is allowed: two triangles on either side, no edge between the two opposite vertices yet.
+        """
+
+    def flip_edge(self, halfedge: int) -> int:
+        """
+        Turns the edge between two triangles to join their opposite vertices; returns the flipped halfedge. Its own inverse.
+        """
+
+    def split_edge(self, halfedge: int, *, position: Sequence[float] | None = None, split_triangles: bool = True) -> tuple:
+        """
+        A new vertex on the edge (at its midpoint by default), the triangles beside it split; returns (vertex, halfedge from the new vertex to the old target). collapse_edge(halfedge, placement='target') undoes it.
+        """
+
+    def split_face(self, face: int, *, position: Sequence[float] | None = None) -> tuple:
+        """
+        Splits a triangle into three at a new vertex (its centroid by default); returns (vertex, halfedge).
+        """
+
+    def is_collapse_ok(self, halfedge: int, *, placement: str = 'midpoint', position: Sequence[float] | None = None, check_geometry: bool = False) -> bool:
+        """
+        Whether collapse_edge(halfedge) is allowed: the link condition and the boundary rules, and with check_geometry no face turned over.
+        """
+
+    def collapse_edge(self, halfedge: int, *, placement: str = 'midpoint', position: Sequence[float] | None = None, check_geometry: bool = False) -> int:
+        """
+        Merges the halfedge's source into its target, which survives at `placement` ('midpoint', 'target', 'source' or 'given' with position); returns the surviving vertex. Deleted slots stay until collect_garbage().
+        """
+
+    def triangulate_faces(self) -> dict:
+        """
+        Triangulates every polygon (inner rings included, robust on concave faces); returns {'faces_cut', 'triangles_added'}.
+        """
+
+    def fill_hole(self, boundary_halfedge: int, *, max_dynamic_programming_edges: int = 200) -> list[int]:
+        """
+        Closes the boundary loop of a boundary halfedge with triangles (minimal area, maximal dihedral, Liepa 2003); returns the new faces.
+        """
+
+    def fill_holes(self, max_size: int, *, max_dynamic_programming_edges: int = 200) -> dict:
+        """
+        Fills every hole of at most max_size boundary edges; returns {'filled', 'skipped', 'faces_added'}.
+        """
+
+    def subdivide(self, *, scheme: str = 'loop', levels: int = 1) -> dict:
+        """
+        Subdivides `levels` times with `scheme` ('loop' for triangle meshes); returns the counts after the last level.
+        """
+
+    def laplacian_smooth(self, *, iterations: int = 1, lambda_: float = 0.5, weights: str = 'uniform', fix_boundary: bool = True, fixed_vertices: Sequence[int] | None = None) -> int:
+        """
+        Laplacian smoothing (uniform or cotangent weights, step lambda_ in (0, 1]); returns the number of vertices free to move.
+        """
+
+    def taubin_smooth(self, *, iterations: int = 10, lambda_: float = 0.5, mu: float = -0.53, weights: str = 'uniform', fix_boundary: bool = True, fixed_vertices: Sequence[int] | None = None) -> int:
+        """
+        Taubin lambda/mu smoothing (keeps the volume); returns the number of vertices free to move.
+        """
+
     def write(self, path: str, *, ascii: bool = False, big_endian: bool = False, float32: bool = False, attributes: bool = True) -> None:
         """
         Write the mesh to a file (OBJ, OFF, PLY or STL by extension), atomically.

@@ -16,6 +16,11 @@
 #include <hmira/algorithms/editing/editing.hpp>
 #include <hmira/algorithms/euler/euler.hpp>
 #include <hmira/algorithms/geometry/vertex_normals.hpp>
+#include <hmira/algorithms/holes/fill_hole.hpp>
+#include <hmira/algorithms/smoothing/laplacian_smooth.hpp>
+#include <hmira/algorithms/subdivision/loop.hpp>
+#include <hmira/algorithms/triangle/triangle.hpp>
+#include <hmira/algorithms/triangulation/triangulate_faces.hpp>
 #include <hmira/algorithms/orientation/flip_normals.hpp>
 #include <hmira/algorithms/topology/mesh_topology.hpp>
 #include <hmira/algorithms/validation/validate.hpp>
@@ -350,6 +355,159 @@ nb::dict extrude(py_mesh& self, std::optional<std::vector<long long>> faces, boo
     return d;
 }
 
+// ---- The everyday operations (issue 18): local triangle operators, triangulation, hole
+// filling, subdivision, smoothing. Local operators change the mesh in place and keep deleted
+// slots until collect_garbage(), as the Euler operators do; the whole-mesh operations run on a
+// copy that replaces the mesh only on success, so an error leaves it unchanged.
+
+std::optional<vec3<double>> optional_point(const std::optional<std::vector<double>>& p, const char* who) {
+    if (!p) return std::nullopt;
+    return point_arg(*p, who);
+}
+
+hmira::collapse_edge_options collapse_options(const std::string& placement, const std::optional<std::vector<double>>& position,
+                                              bool check_geometry, const char* who) {
+    hmira::collapse_edge_options o;
+    o.check_geometry = check_geometry;
+    if (placement == "midpoint") o.placement = hmira::collapse_placement::midpoint;
+    else if (placement == "target") o.placement = hmira::collapse_placement::target;
+    else if (placement == "source") o.placement = hmira::collapse_placement::source;
+    else if (placement == "given") o.placement = hmira::collapse_placement::given;
+    else value_error(std::string(who) + ": placement must be 'midpoint', 'target', 'source' or 'given', got '" + placement + "'");
+    if ((o.placement == hmira::collapse_placement::given) != position.has_value())
+        value_error(std::string(who) + ": give position exactly when placement='given'");
+    if (position) o.position = point_arg(*position, who);
+    return o;
+}
+
+/// Runs a whole-mesh operation on a copy that replaces the mesh on success.
+template <class Op>
+auto on_copy(py_mesh& self, Op&& op) {
+    return change_without_gil(self, true, [&](halfedge_mesh& m, const hmira::progress_function&) {
+        halfedge_mesh work = m;
+        auto r = op(work);
+        if (r) {
+            m = std::move(work);
+            compact(m);
+        }
+        return r;
+    });
+}
+
+hmira::laplacian_weights weights_arg(const std::string& w, const char* who) {
+    if (w == "uniform") return hmira::laplacian_weights::uniform;
+    if (w == "cotangent") return hmira::laplacian_weights::cotangent;
+    value_error(std::string(who) + ": weights must be 'uniform' or 'cotangent', got '" + w + "'");
+}
+
+std::vector<std::size_t> fixed_arg(const halfedge_mesh& m, const std::optional<std::vector<long long>>& fixed, const char* who) {
+    std::vector<std::size_t> out;
+    if (fixed)
+        for (long long i : *fixed) out.push_back(vertex_arg(m, i, who).index);
+    return out;
+}
+
+void bind_everyday(nb::class_<py_mesh>& c) {
+    c.def("is_flip_ok", [](const py_mesh& s, long long h) {
+             const auto hh = halfedge_arg(s.get(), h, "is_flip_ok");
+             return read_without_gil(s, [&](const halfedge_mesh& m) { return hmira::is_flip_ok(m, hh); });
+         }, nb::arg("halfedge"), "Whether flip_edge(halfedge) is allowed: two triangles on either side, no edge between the two opposite vertices yet.")
+     .def("flip_edge", [](py_mesh& s, long long h) {
+             const auto hh = halfedge_arg(s.get(), h, "flip_edge");
+             const auto r = change_without_gil(s, true, [&](halfedge_mesh& m, const hmira::progress_function&) { return hmira::flip_edge(m, hh); });
+             return idx(r.halfedge);
+         }, nb::arg("halfedge"),
+         "Turns the edge between two triangles to join their opposite vertices; returns the flipped halfedge. Its own inverse.")
+     .def("split_edge", [](py_mesh& s, long long h, std::optional<std::vector<double>> position, bool split_triangles) {
+             const auto hh = halfedge_arg(s.get(), h, "split_edge");
+             const hmira::split_edge_options o{.position = optional_point(position, "split_edge"), .split_triangles = split_triangles};
+             const auto r = change_without_gil(s, true, [&](halfedge_mesh& m, const hmira::progress_function&) { return hmira::split_edge(m, hh, o); });
+             return nb::make_tuple(idx(r.vertex), idx(r.halfedge));
+         }, nb::arg("halfedge"), nb::kw_only(), nb::arg("position") = nb::none(), nb::arg("split_triangles") = true,
+         "A new vertex on the edge (at its midpoint by default), the triangles beside it split; returns (vertex, halfedge from the new "
+         "vertex to the old target). collapse_edge(halfedge, placement='target') undoes it.")
+     .def("split_face", [](py_mesh& s, long long f, std::optional<std::vector<double>> position) {
+             const auto ff = face_arg(s.get(), f, "split_face");
+             const hmira::split_face_options o{.position = optional_point(position, "split_face")};
+             const auto r = change_without_gil(s, true, [&](halfedge_mesh& m, const hmira::progress_function&) { return hmira::split_face(m, ff, o); });
+             return nb::make_tuple(idx(r.vertex), idx(r.halfedge));
+         }, nb::arg("face"), nb::kw_only(), nb::arg("position") = nb::none(),
+         "Splits a triangle into three at a new vertex (its centroid by default); returns (vertex, halfedge).")
+     .def("is_collapse_ok", [](const py_mesh& s, long long h, const std::string& placement, std::optional<std::vector<double>> position,
+                               bool check_geometry) {
+             const auto hh = halfedge_arg(s.get(), h, "is_collapse_ok");
+             const auto o = collapse_options(placement, position, check_geometry, "is_collapse_ok");
+             return read_without_gil(s, [&](const halfedge_mesh& m) { return hmira::is_collapse_ok(m, hh, o); });
+         }, nb::arg("halfedge"), nb::kw_only(), nb::arg("placement") = "midpoint", nb::arg("position") = nb::none(),
+         nb::arg("check_geometry") = false,
+         "Whether collapse_edge(halfedge) is allowed: the link condition and the boundary rules, and with check_geometry no face turned over.")
+     .def("collapse_edge", [](py_mesh& s, long long h, const std::string& placement, std::optional<std::vector<double>> position,
+                              bool check_geometry) {
+             const auto hh = halfedge_arg(s.get(), h, "collapse_edge");
+             const auto o = collapse_options(placement, position, check_geometry, "collapse_edge");
+             const auto r = change_without_gil(s, true, [&](halfedge_mesh& m, const hmira::progress_function&) { return hmira::collapse_edge(m, hh, o); });
+             return idx(r.vertex);
+         }, nb::arg("halfedge"), nb::kw_only(), nb::arg("placement") = "midpoint", nb::arg("position") = nb::none(),
+         nb::arg("check_geometry") = false,
+         "Merges the halfedge's source into its target, which survives at `placement` ('midpoint', 'target', 'source' or 'given' "
+         "with position); returns the surviving vertex. Deleted slots stay until collect_garbage().")
+     .def("triangulate_faces", [](py_mesh& s) {
+             const auto r = on_copy(s, [](halfedge_mesh& m) { return hmira::triangulate_faces(m); });
+             nb::dict d;
+             d["faces_cut"] = r.faces_cut;
+             d["triangles_added"] = r.triangles_added;
+             return d;
+         }, "Triangulates every polygon (inner rings included, robust on concave faces); returns {'faces_cut', 'triangles_added'}.")
+     .def("fill_hole", [](py_mesh& s, long long h, std::size_t max_dynamic_programming_edges) {
+             const auto hh = halfedge_arg(s.get(), h, "fill_hole");
+             const hmira::fill_hole_options o{.max_dynamic_programming_edges = max_dynamic_programming_edges};
+             const auto r = change_without_gil(s, true, [&](halfedge_mesh& m, const hmira::progress_function&) { return hmira::fill_hole(m, hh, o); });
+             std::vector<long long> faces;
+             for (auto f : r.faces) faces.push_back(idx(f));
+             return faces;
+         }, nb::arg("boundary_halfedge"), nb::kw_only(), nb::arg("max_dynamic_programming_edges") = 200,
+         "Closes the boundary loop of a boundary halfedge with triangles (minimal area, maximal dihedral, Liepa 2003); returns the new faces.")
+     .def("fill_holes", [](py_mesh& s, std::size_t max_size, std::size_t max_dynamic_programming_edges) {
+             const hmira::fill_hole_options o{.max_dynamic_programming_edges = max_dynamic_programming_edges};
+             const auto r = on_copy(s, [&](halfedge_mesh& m) { return hmira::fill_holes(m, max_size, o); });
+             nb::dict d;
+             d["filled"] = r.filled;
+             d["skipped"] = r.skipped;
+             d["faces_added"] = r.faces_added;
+             return d;
+         }, nb::arg("max_size"), nb::kw_only(), nb::arg("max_dynamic_programming_edges") = 200,
+         "Fills every hole of at most max_size boundary edges; returns {'filled', 'skipped', 'faces_added'}.")
+     .def("subdivide", [](py_mesh& s, const std::string& scheme, std::size_t levels) {
+             if (scheme == "catmull-clark" || scheme == "sqrt3")
+                 value_error("subdivide: scheme '" + scheme + "' is not supported yet (supported: 'loop')");
+             if (scheme != "loop") value_error("subdivide: unknown scheme '" + scheme + "' (supported: 'loop')");
+             const auto r = on_copy(s, [&](halfedge_mesh& m) { return hmira::loop_subdivide(m, {.levels = levels}); });
+             nb::dict d;
+             d["vertices"] = r.vertices;
+             d["edges"] = r.edges;
+             d["faces"] = r.faces;
+             return d;
+         }, nb::kw_only(), nb::arg("scheme") = "loop", nb::arg("levels") = 1,
+         "Subdivides `levels` times with `scheme` ('loop' for triangle meshes); returns the counts after the last level.")
+     .def("laplacian_smooth", [](py_mesh& s, std::size_t iterations, double lambda, const std::string& weights, bool fix_boundary,
+                                 std::optional<std::vector<long long>> fixed_vertices) {
+             const hmira::laplacian_smooth_options o{.iterations = iterations, .lambda = lambda, .weights = weights_arg(weights, "laplacian_smooth"),
+                                                     .fix_boundary = fix_boundary, .fixed_vertices = fixed_arg(s.get(), fixed_vertices, "laplacian_smooth")};
+             // Positions move in place: the vertices view stays valid and sees them move.
+             return change_without_gil(s, false, [&](halfedge_mesh& m, const hmira::progress_function&) { return hmira::laplacian_smooth(m, o); }).moved;
+         }, nb::kw_only(), nb::arg("iterations") = 1, nb::arg("lambda_") = 0.5, nb::arg("weights") = "uniform", nb::arg("fix_boundary") = true,
+         nb::arg("fixed_vertices") = nb::none(),
+         "Laplacian smoothing (uniform or cotangent weights, step lambda_ in (0, 1]); returns the number of vertices free to move.")
+     .def("taubin_smooth", [](py_mesh& s, std::size_t iterations, double lambda, double mu, const std::string& weights, bool fix_boundary,
+                              std::optional<std::vector<long long>> fixed_vertices) {
+             const hmira::taubin_smooth_options o{.iterations = iterations, .lambda = lambda, .mu = mu, .weights = weights_arg(weights, "taubin_smooth"),
+                                                  .fix_boundary = fix_boundary, .fixed_vertices = fixed_arg(s.get(), fixed_vertices, "taubin_smooth")};
+             return change_without_gil(s, false, [&](halfedge_mesh& m, const hmira::progress_function&) { return hmira::taubin_smooth(m, o); }).moved;
+         }, nb::kw_only(), nb::arg("iterations") = 10, nb::arg("lambda_") = 0.5, nb::arg("mu") = -0.53, nb::arg("weights") = "uniform",
+         nb::arg("fix_boundary") = true, nb::arg("fixed_vertices") = nb::none(),
+         "Taubin lambda/mu smoothing (keeps the volume); returns the number of vertices free to move.");
+}
+
 constexpr const char* MESH_DOC = R"doc(A polygon mesh backed by hmira's half-edge mesh (the compiled part of
 hmira.Mesh; use hmira.Mesh, which adds the checked `vertices` view).)doc";
 
@@ -374,7 +532,9 @@ void bind_mesh(nb::module_& m) {
                    ", components=" + std::to_string(t.components) + ", boundary_loops=" + std::to_string(t.boundary_loops) + ")";
         });
 
-    nb::class_<py_mesh>(m, "MeshCore", MESH_DOC, nb::is_weak_referenceable())
+    auto core = nb::class_<py_mesh>(m, "MeshCore", MESH_DOC, nb::is_weak_referenceable());
+    bind_everyday(core);
+    core
         .def(nb::init<>(), "An empty mesh.")
         .def("_set_polygons", &set_polygons, nb::arg("vertices"), nb::arg("faces"),
              "Replaces the content by (vertices, faces); faces an (m, k) integer array or a sequence of polygons.")
