@@ -18,6 +18,7 @@
 #include <hmira/algorithms/geometry/vertex_normals.hpp>
 #include <hmira/algorithms/holes/fill_hole.hpp>
 #include <hmira/algorithms/smoothing/laplacian_smooth.hpp>
+#include <hmira/algorithms/subdivision/catmull_clark.hpp>
 #include <hmira/algorithms/subdivision/loop.hpp>
 #include <hmira/algorithms/triangle/triangle.hpp>
 #include <hmira/algorithms/triangulation/triangulate_faces.hpp>
@@ -478,17 +479,27 @@ void bind_everyday(nb::class_<py_mesh>& c) {
          }, nb::arg("max_size"), nb::kw_only(), nb::arg("max_dynamic_programming_edges") = 200,
          "Fills every hole of at most max_size boundary edges; returns {'filled', 'skipped', 'faces_added'}.")
      .def("subdivide", [](py_mesh& s, const std::string& scheme, std::size_t levels) {
-             if (scheme == "catmull-clark" || scheme == "sqrt3")
-                 value_error("subdivide: scheme '" + scheme + "' is not supported yet (supported: 'loop')");
-             if (scheme != "loop") value_error("subdivide: unknown scheme '" + scheme + "' (supported: 'loop')");
-             const auto r = on_copy(s, [&](halfedge_mesh& m) { return hmira::loop_subdivide(m, {.levels = levels}); });
+             if (scheme == "sqrt3")
+                 value_error("subdivide: scheme 'sqrt3' is not supported yet (supported: 'loop', 'catmull-clark')");
+             if (scheme != "loop" && scheme != "catmull-clark")
+                 value_error("subdivide: unknown scheme '" + scheme + "' (supported: 'loop', 'catmull-clark')");
              nb::dict d;
-             d["vertices"] = r.vertices;
-             d["edges"] = r.edges;
-             d["faces"] = r.faces;
+             const auto counts = [&](const auto& r) {
+                 d["vertices"] = r.vertices;
+                 d["edges"] = r.edges;
+                 d["faces"] = r.faces;
+             };
+             if (scheme == "loop")
+                 counts(on_copy(s, [&](halfedge_mesh& m) { return hmira::loop_subdivide(m, {.levels = levels}); }));
+             else
+                 counts(on_copy(s, [&](halfedge_mesh& m) { return hmira::catmull_clark_subdivide(m, {.levels = levels}); }));
              return d;
          }, nb::kw_only(), nb::arg("scheme") = "loop", nb::arg("levels") = 1,
-         "Subdivides `levels` times with `scheme` ('loop' for triangle meshes); returns the counts after the last level.")
+         "Subdivides `levels` times with `scheme`: 'loop' (triangle meshes) or 'catmull-clark' (any polygon mesh,\n"
+         "boundaries included); returns the counts after the last level.\n\n"
+         ">>> m = hmira.Mesh([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]], [[0, 1, 2, 3]])\n"
+         ">>> m.subdivide(scheme='catmull-clark')\n"
+         "{'vertices': 9, 'edges': 12, 'faces': 4}")
      .def("laplacian_smooth", [](py_mesh& s, std::size_t iterations, double lambda, const std::string& weights, bool fix_boundary,
                                  std::optional<std::vector<long long>> fixed_vertices) {
              const hmira::laplacian_smooth_options o{.iterations = iterations, .lambda = lambda, .weights = weights_arg(weights, "laplacian_smooth"),

@@ -199,14 +199,32 @@ def test_loop_subdivision_counts_and_schemes():
     assert counts(m) == (34, 96, 64)
     assert m.validate() == [] and m.topology().genus == 0
     before = state(m)
-    with pytest.raises(ValueError, match="scheme 'catmull-clark' is not supported yet"):
-        m.subdivide(scheme="catmull-clark")
+    with pytest.raises(ValueError, match="scheme 'sqrt3' is not supported yet"):
+        m.subdivide(scheme="sqrt3")
     with pytest.raises(ValueError, match="unknown scheme 'butterfly'"):
         m.subdivide(scheme="butterfly")
     q = cube()
     with pytest.raises(ValueError, match="loop_subdivide"):
         q.subdivide()  # quads: Loop needs triangles
     assert state(m) == before and counts(q) == (8, 12, 6)
+
+
+def test_catmull_clark_counts_on_a_cube_and_an_open_quad():
+    # One level: V + E + F vertices, 2E + (sum of face degrees) edges, (sum of degrees) faces.
+    q = cube()
+    r = q.subdivide(scheme="catmull-clark")
+    assert r == {"vertices": 8 + 12 + 6, "edges": 2 * 12 + 24, "faces": 24}
+    assert counts(q) == (26, 48, 24) and q.validate() == [] and q.topology().genus == 0
+    # Two levels: 26 + 48 + 24 = 98 vertices, 96 quads (the CLI test's figures).
+    assert q.subdivide(scheme="catmull-clark")["faces"] == 96 and counts(q)[0] == 98
+    # An open quad: edge points are the edge midpoints, the face point its centre, and each
+    # corner moves by the boundary B-spline rule 3/4 v + 1/8 (each boundary neighbour).
+    p = hmira.Mesh([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]], [[0, 1, 2, 3]])
+    assert p.subdivide(scheme="catmull-clark") == {"vertices": 9, "edges": 12, "faces": 4}
+    expected = sorted([(0.125, 0.125, 0.0), (0.875, 0.125, 0.0), (0.875, 0.875, 0.0), (0.125, 0.875, 0.0),
+                       (0.5, 0.0, 0.0), (1.0, 0.5, 0.0), (0.5, 1.0, 0.0), (0.0, 0.5, 0.0), (0.5, 0.5, 0.0)])
+    assert sorted(tuple(float(c) for c in v) for v in np.array(p.vertices)) == expected
+    assert p.validate() == []
 
 
 def test_subdivide_on_a_real_mesh_matches_the_cli(data, cli, tmp_path):
