@@ -185,7 +185,12 @@ class MeshCore:
 
     def subdivide(self, *, scheme: str = 'loop', levels: int = 1) -> dict:
         """
-        Subdivides `levels` times with `scheme` ('loop' for triangle meshes); returns the counts after the last level.
+        Subdivides `levels` times with `scheme`: 'loop' (triangle meshes) or 'catmull-clark' (any polygon mesh,
+        boundaries included); returns the counts after the last level.
+
+        >>> m = hmira.Mesh([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]], [[0, 1, 2, 3]])
+        >>> m.subdivide(scheme='catmull-clark')
+        {'vertices': 9, 'edges': 12, 'faces': 4}
         """
 
     def laplacian_smooth(self, *, iterations: int = 1, lambda_: float = 0.5, weights: str = 'uniform', fix_boundary: bool = True, fixed_vertices: Sequence[int] | None = None) -> int:
