@@ -167,10 +167,15 @@ def test_failed_edits_leave_the_mesh_and_arguments_unchanged():
         m.bevel([(0, 6)])
     with pytest.raises(ValueError, match="one of them"):
         m.truncate()
-    open_cube = hmira.Mesh(CUBE_V, CUBE_F[1:])
-    with pytest.raises(ValueError, match="boundary"):
-        open_cube.bevel([(0, 1)])
     assert state(m) == before and faces == [0, 99] and m.validate() == []
+    # A boundary edge bevels (the strip lies in its one face): one face, two vertices, three
+    # edges more for one segment, and the mesh stays valid.
+    open_cube = hmira.Mesh(CUBE_V, CUBE_F[1:])
+    t = open_cube.topology()
+    open_cube.bevel([(0, 1)], width=0.1)
+    u = open_cube.topology()
+    assert (u.vertices - t.vertices, u.edges - t.edges, u.faces - t.faces) == (2, 3, 1)
+    assert open_cube.validate() == [] and u.boundary_loops == 1
 
 
 def test_copy_is_independent():
