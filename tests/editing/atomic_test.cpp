@@ -19,51 +19,9 @@
 
 #include "editing/editing_support.hpp"
 #include "euler/euler_support.hpp"
+#include "support/snapshot.hpp"
 
 namespace {
-
-/// Every live element with its links and position, keyed by index. Index bounds, garbage and
-/// change counters are left out: the contract lets those differ after a rollback.
-struct live_state {
-    std::vector<long long> data;
-    std::vector<std::array<double, 3>> positions;
-    bool operator==(const live_state&) const = default;
-};
-
-template <class M, class T = hmira::default_traits<M>>
-live_state take_state(const M& m) {
-    live_state s;
-    auto hi = [&](typename T::halfedge_handle h) { return h == T::null_halfedge() ? -1LL : (long long)T::halfedge_index(m, h); };
-    auto fi = [&](typename T::face_handle f) { return f == T::null_face() ? -1LL : (long long)T::face_index(m, f); };
-    s.data.push_back((long long)T::vertex_count(m));
-    s.data.push_back((long long)T::edge_count(m));
-    s.data.push_back((long long)T::face_count(m));
-    for (auto v : T::vertices(m)) {
-        s.data.push_back((long long)T::vertex_index(m, v));
-        s.data.push_back(hi(T::vertex_halfedge(m, v)));
-        const auto p = T::position(m, v);
-        s.positions.push_back({double(p[0]), double(p[1]), double(p[2])});
-    }
-    for (auto h : T::halfedges(m)) {
-        s.data.push_back(hi(h));
-        s.data.push_back(hi(T::next(m, h)));
-        s.data.push_back(hi(T::prev(m, h)));
-        s.data.push_back((long long)T::vertex_index(m, T::target(m, h)));
-        s.data.push_back(fi(T::face(m, h)));
-    }
-    for (auto f : T::faces(m)) {
-        s.data.push_back(fi(f));
-        s.data.push_back(hi(T::face_halfedge(m, f)));
-        if constexpr (hmira::inner_ring_mesh<M, T>) {
-            std::vector<long long> rings;
-            for (auto r : T::inner_rings(m, f)) rings.push_back(hi(r));
-            std::sort(rings.begin(), rings.end());
-            s.data.insert(s.data.end(), rings.begin(), rings.end());
-        }
-        s.data.push_back(-2);
-    }
-    return s;
-}
 
 /// The model's traits, with test hooks: the k-th inner operator call of an edit fails
 /// (fail_inner_call, read by the editing code), or the k-th raw mutation throws bad_alloc.
@@ -324,13 +282,13 @@ TYPED_TEST(atomic_test, random_edits_either_succeed_validly_or_change_nothing) {
                 for (int trial = 0; trial < 12; ++trial) {
                     M m = base;
                     const auto p = plan_edit(m, kind, rng, trial == 0);
-                    const auto before = take_state(m);
+                    const auto before = hmira_test::snapshot(m);
                     const auto e = run<M, T>(m, p);
                     SCOPED_TRACE(s.name + ", " + name_of(kind) + ", trial " + std::to_string(trial));
                     if (e) {
                         ++refused;
                         EXPECT_FALSE(e->message.empty());
-                        ASSERT_TRUE(take_state(m) == before) << "refused (" << e->message << ") but changed the mesh";
+                        ASSERT_TRUE(hmira_test::snapshot(m) == before) << "refused (" << e->message << ") but changed the mesh";
                         continue;
                     }
                     ++succeeded;
@@ -369,14 +327,14 @@ void check_every_fault(const M& base, const planned_edit<M>& p, const std::strin
     const long long inner = FT::inner_calls, raw = FT::mutations;
     ASSERT_GT(inner, 0);
     ASSERT_GT(raw, 0);
-    const auto before = take_state(base);
+    const auto before = hmira_test::snapshot(base);
     for (long long k = 0; k < inner; ++k) {
         M m = base;
         FT::reset();
         FT::fail_inner_at = k;
         const auto e = run<M, FT>(m, p);
         ASSERT_TRUE(e) << "inner call " << k << " was made to fail but the edit succeeded";
-        ASSERT_TRUE(take_state(m) == before) << "inner call " << k << " of " << inner << " failed: mesh changed";
+        ASSERT_TRUE(hmira_test::snapshot(m) == before) << "inner call " << k << " of " << inner << " failed: mesh changed";
         FT::reset();
         ASSERT_FALSE((run<M, FT>(m, p))) << "the edit no longer applies after the rollback of inner call " << k;
         ASSERT_TRUE(hmira_test::is_valid(m, {.check_geometry = false}));
@@ -394,7 +352,7 @@ void check_every_fault(const M& base, const planned_edit<M>& p, const std::strin
         }
         if (!threw) continue;  // the k-th mutation is an erasure, which never throws
         ++throwing;
-        ASSERT_TRUE(take_state(m) == before) << "bad_alloc from mutation " << k << " of " << raw << ": mesh changed";
+        ASSERT_TRUE(hmira_test::snapshot(m) == before) << "bad_alloc from mutation " << k << " of " << raw << ": mesh changed";
         FT::reset();
         ASSERT_FALSE((run<M, FT>(m, p))) << "the edit no longer applies after the rollback of mutation " << k;
         ASSERT_TRUE(hmira_test::is_valid(m, {.check_geometry = false}));
@@ -476,24 +434,24 @@ TYPED_TEST(atomic_test, deleted_handles_are_refused_as_invalid_handles_where_the
         const auto dead_halfedge = spike.value().halfedge;
         const auto dead_edge = T::edge(m, dead_halfedge);
         ASSERT_TRUE((hmira::kill_edge_vertex<M, T>(m, dead_halfedge)));
-        const auto before = take_state(m);
+        const auto before = hmira_test::snapshot(m);
         const typename T::vertex_handle vs[] = {dead_vertex};
         auto t = hmira::truncate<M, T>(m, vs);
         ASSERT_FALSE(t);
         EXPECT_EQ(t.error().code, hmira::errc::invalid_handle) << t.error().message;
-        EXPECT_TRUE(take_state(m) == before) << "truncate";
+        EXPECT_TRUE(hmira_test::snapshot(m) == before) << "truncate";
         auto b = hmira::bevel<M, T>(m, dead_edge);
         ASSERT_FALSE(b);
         EXPECT_EQ(b.error().code, hmira::errc::invalid_handle) << b.error().message;
-        EXPECT_TRUE(take_state(m) == before) << "bevel";
+        EXPECT_TRUE(hmira_test::snapshot(m) == before) << "bevel";
         auto e = hmira::make_edge_vertex<M, T>(m, dead_halfedge, {0, 0, 0});
         ASSERT_FALSE(e);
         EXPECT_EQ(e.error().code, hmira::errc::invalid_handle) << e.error().message;
-        EXPECT_TRUE(take_state(m) == before) << "make_edge_vertex";
+        EXPECT_TRUE(hmira_test::snapshot(m) == before) << "make_edge_vertex";
         auto k = hmira::kill_edge_vertex<M, T>(m, dead_halfedge);
         ASSERT_FALSE(k);
         EXPECT_EQ(k.error().code, hmira::errc::invalid_handle) << k.error().message;
-        EXPECT_TRUE(take_state(m) == before);
+        EXPECT_TRUE(hmira_test::snapshot(m) == before);
         // A deleted face: killEF(h) keeps h's own face and deletes the one across h (this case
         // once took face(h), which survives, and so wrongly saw the extrude succeed).
         const auto h = T::face_halfedge(m, *T::faces(m).begin());
@@ -501,11 +459,11 @@ TYPED_TEST(atomic_test, deleted_handles_are_refused_as_invalid_handles_where_the
         ASSERT_NE(gone, T::null_face());
         ASSERT_TRUE((hmira::kill_edge_face<M, T>(m, h)));
         ASSERT_TRUE((T::is_removed(m, gone)));
-        const auto after_kill = take_state(m);
+        const auto after_kill = hmira_test::snapshot(m);
         auto x = hmira::extrude<M, T>(m, gone, {.distance = 1});
         ASSERT_FALSE(x);
         EXPECT_EQ(x.error().code, hmira::errc::invalid_handle) << x.error().message;
-        EXPECT_TRUE(take_state(m) == after_kill) << "extrude";
+        EXPECT_TRUE(hmira_test::snapshot(m) == after_kill) << "extrude";
     }
 }
 
