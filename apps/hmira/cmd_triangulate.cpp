@@ -14,6 +14,7 @@ using namespace hmira_cli;
 
 struct triangulate_args {
     std::string input, output;
+    bool delaunay = false;
 };
 
 int run_triangulate(const triangulate_args& a, const common_options& o) {
@@ -26,7 +27,7 @@ int run_triangulate(const triangulate_args& a, const common_options& o) {
     std::vector<std::pair<hmira::face_handle, std::vector<tri>>> cuts;
     for (auto f : mesh.faces()) {
         if (mesh.face_vertices(f).size() == 3) continue;
-        auto t = hmira::face_triangles(mesh, f);
+        auto t = hmira::face_triangles(mesh, f, {.delaunay = a.delaunay});
         if (!t) return report(invalid_input, a.input + ": " + t.error().message);
         cuts.emplace_back(f, std::move(*t));
     }
@@ -52,6 +53,8 @@ const bool registered = register_command({
         auto a = std::make_shared<triangulate_args>();
         sub.add_option("input", a->input, "mesh file to read")->required();
         sub.add_option("output", a->output, "mesh file to write (may be the input: it is replaced atomically)")->required();
+        sub.add_flag("--delaunay", a->delaunay,
+                     "flip each face's diagonals to its constrained Delaunay triangulation (largest smallest angle)");
         return [a](const common_options& o) { return run_triangulate(*a, o); };
     }});
 

@@ -168,9 +168,9 @@ class MeshCore:
         Merges the halfedge's source into its target, which survives at `placement` ('midpoint', 'target', 'source' or 'given' with position); returns the surviving vertex. Deleted slots stay until collect_garbage().
         """
 
-    def triangulate_faces(self) -> dict:
+    def triangulate_faces(self, *, delaunay: bool = False) -> dict:
         """
-        Triangulates every polygon (inner rings included, robust on concave faces); returns {'faces_cut', 'triangles_added'}.
+        Triangulates every polygon (inner rings included, robust on concave faces); with delaunay=True each face's diagonals are its constrained Delaunay ones (largest smallest angle). Returns {'faces_cut', 'triangles_added'}.
         """
 
     def fill_hole(self, boundary_halfedge: int, *, max_dynamic_programming_edges: int = 200) -> list[int]:

@@ -452,13 +452,15 @@ void bind_everyday(nb::class_<py_mesh>& c) {
          nb::arg("check_geometry") = false,
          "Merges the halfedge's source into its target, which survives at `placement` ('midpoint', 'target', 'source' or 'given' "
          "with position); returns the surviving vertex. Deleted slots stay until collect_garbage().")
-     .def("triangulate_faces", [](py_mesh& s) {
-             const auto r = on_copy(s, [](halfedge_mesh& m) { return hmira::triangulate_faces(m); });
+     .def("triangulate_faces", [](py_mesh& s, bool delaunay) {
+             const auto r = on_copy(s, [&](halfedge_mesh& m) { return hmira::triangulate_faces(m, {.delaunay = delaunay}); });
              nb::dict d;
              d["faces_cut"] = r.faces_cut;
              d["triangles_added"] = r.triangles_added;
              return d;
-         }, "Triangulates every polygon (inner rings included, robust on concave faces); returns {'faces_cut', 'triangles_added'}.")
+         }, nb::kw_only(), nb::arg("delaunay") = false,
+         "Triangulates every polygon (inner rings included, robust on concave faces); with delaunay=True each face's diagonals "
+         "are its constrained Delaunay ones (largest smallest angle). Returns {'faces_cut', 'triangles_added'}.")
      .def("fill_hole", [](py_mesh& s, long long h, std::size_t max_dynamic_programming_edges) {
              const auto hh = halfedge_arg(s.get(), h, "fill_hole");
              const hmira::fill_hole_options o{.max_dynamic_programming_edges = max_dynamic_programming_edges};

@@ -142,6 +142,16 @@ def test_triangulate_faces_cuts_every_polygon():
     assert signed_volume(np.array(m.vertices), m.faces) == pytest.approx(1.0)
 
 
+def test_triangulate_faces_delaunay_joins_the_obtuse_corners():
+    # A rhombus whose corners 0 and 2 are obtuse (about 118 degrees): the Delaunay diagonal
+    # is 0-2, whatever diagonal ear clipping picked.
+    v = np.array([[0, 0, 0], [3, -5, 0], [6, 0, 0], [3, 5, 0]], dtype=float)
+    m = hmira.Mesh(v, [[0, 1, 2, 3]])
+    assert m.triangulate_faces(delaunay=True) == {"faces_cut": 1, "triangles_added": 1}
+    assert all(0 in f and 2 in f for f in m.faces.tolist())
+    assert m.validate() == []
+
+
 def test_fill_hole_closes_the_loop_of_a_boundary_halfedge():
     m = hmira.Mesh(TETRA_V, TETRA_F[:3])  # an open tetrahedron: one triangular hole
     h = halfedge_between(m, 1, 2)  # the hole's side (the removed face ran 1 -> 2 -> 3)

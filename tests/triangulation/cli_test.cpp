@@ -51,6 +51,31 @@ TEST(cli_triangulate, a_concave_face_and_a_quad_become_triangles_of_the_same_are
     EXPECT_NEAR(area(m), 4.0, 1e-12);
 }
 
+TEST(cli_triangulate, delaunay_picks_the_diagonal_between_the_obtuse_corners) {
+    scratch_dir dir;
+    // A rhombus whose corners 1 and 3 are obtuse (about 118 degrees): ear clipping from
+    // corner 1 cuts the long diagonal 4-2 (file numbers), the Delaunay one is the short 1-3.
+    hmira_test::write_bytes(dir / "in.obj", "v 0 0 0\nv 3 -5 0\nv 6 0 0\nv 3 5 0\nf 1 2 3 4\n");
+    auto diagonal_joins = [&](const char* args, std::size_t a, std::size_t b) {
+        const auto r = hmira(dir, args);
+        EXPECT_EQ(r.code, 0) << r.err;
+        hmira::face_vertex_mesh m;
+        EXPECT_TRUE(hmira::io::read_mesh(m, dir / "out.obj"));
+        EXPECT_EQ(m.face_count(), 2u);
+        for (auto f : m.faces()) {
+            bool has_a = false, has_b = false;
+            for (auto v : m.face_vertices(f)) {
+                has_a |= v.index == a;
+                has_b |= v.index == b;
+            }
+            if (!has_a || !has_b) return false;
+        }
+        return m.face_count() == 2;
+    };
+    EXPECT_TRUE(diagonal_joins("triangulate in.obj out.obj", 1, 3));
+    EXPECT_TRUE(diagonal_joins("triangulate --delaunay in.obj out.obj", 0, 2));
+}
+
 TEST(cli_triangulate, a_self_crossing_face_is_refused_by_index_and_nothing_is_written) {
     scratch_dir dir;
     hmira_test::write_bytes(dir / "in.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 5 0 0\nv 7 1 0\nv 7 0 0\nv 5 1.5 0\nf 1 2 3\nf 4 5 6 7\n");

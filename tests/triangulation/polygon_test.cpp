@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <limits>
+#include <map>
 #include <numbers>
 #include <random>
 #include <vector>
@@ -181,6 +182,181 @@ TEST(triangulate_polygon, random_polygons_with_holes_are_covered_exactly_without
             }
     }
     EXPECT_GT(with_holes, 100u);
+}
+
+/// Checks a triangulation of one counter-clockwise loop without looking at every pair: every
+/// loop edge is used once, every other edge twice in opposite directions, every triangle is
+/// counter-clockwise, and the areas add up exactly. A disc whose triangles all wind positively
+/// and whose boundary is the simple loop covers each point once, so nothing overlaps.
+void expect_exact_disc(const std::vector<point2>& p, const std::vector<std::size_t>& loop, const std::vector<std::array<std::size_t, 3>>& tris) {
+    ASSERT_EQ(tris.size(), loop.size() - 2);
+    std::map<std::pair<std::size_t, std::size_t>, int> uses;
+    long long sum = 0;
+    for (const auto& t : tris) {
+        const long long a = cross(p[t[0]], p[t[1]], p[t[2]]);
+        ASSERT_GE(a, 0) << "a triangle is wound clockwise";
+        sum += a;
+        for (int k = 0; k < 3; ++k) ++uses[{t[k], t[(k + 1) % 3]}];
+    }
+    ASSERT_EQ(sum, twice_area(p, loop));
+    for (std::size_t i = 0; i < loop.size(); ++i) {
+        const std::pair<std::size_t, std::size_t> e{loop[i], loop[(i + 1) % loop.size()]};
+        ASSERT_EQ(uses[e], 1) << "loop edge " << i;
+        uses.erase(e);
+    }
+    for (const auto& [e, n] : uses) {
+        ASSERT_EQ(n, 1) << "edge " << e.first << "-" << e.second << " used twice the same way";
+        ASSERT_EQ(uses.count({e.second, e.first}), 1u) << "inner edge " << e.first << "-" << e.second << " has no twin";
+    }
+}
+
+/// The in-circle determinant of d against counter-clockwise a, b, c, in integers (the test's
+/// own, not the library's): positive when d lies strictly inside.
+int incircle_sign(const point2& a, const point2& b, const point2& c, const point2& d) {
+    using i128 = __int128;
+    const i128 adx = i128(a[0] - d[0]), ady = i128(a[1] - d[1]), bdx = i128(b[0] - d[0]), bdy = i128(b[1] - d[1]),
+               cdx = i128(c[0] - d[0]), cdy = i128(c[1] - d[1]);
+    const i128 det = (adx * adx + ady * ady) * (bdx * cdy - cdx * bdy) + (bdx * bdx + bdy * bdy) * (cdx * ady - adx * cdy) +
+                     (cdx * cdx + cdy * cdy) * (adx * bdy - bdx * ady);
+    return (det > 0) - (det < 0);
+}
+
+/// The smallest angle of any triangle of positive area, in radians.
+double smallest_angle(const std::vector<point2>& p, const std::vector<std::array<std::size_t, 3>>& tris) {
+    double best = std::numbers::pi;
+    for (const auto& t : tris) {
+        if (cross(p[t[0]], p[t[1]], p[t[2]]) == 0) continue;
+        for (int k = 0; k < 3; ++k) {
+            const auto& o = p[t[k]];
+            const auto& u = p[t[(k + 1) % 3]];
+            const auto& v = p[t[(k + 2) % 3]];
+            const double ux = u[0] - o[0], uy = u[1] - o[1], vx = v[0] - o[0], vy = v[1] - o[1];
+            best = std::min(best, std::atan2(std::fabs(ux * vy - uy * vx), ux * vx + uy * vy));
+        }
+    }
+    return best;
+}
+
+TEST(triangulate_polygon, the_delaunay_option_gives_locally_delaunay_triangles_with_a_larger_smallest_angle) {
+    std::mt19937_64 rng(20261202);
+    std::size_t improved = 0;
+    for (int round = 0; round < 300; ++round) {
+        const auto poly = make_polygon(rng);
+        long long expected = 0;
+        for (const auto& l : poly.loops) expected += twice_area(poly.points, l);
+        auto plain = hmira::triangulate_polygon(poly.points, poly.loops);
+        auto r = hmira::triangulate_polygon(poly.points, poly.loops, {.delaunay = true});
+        ASSERT_TRUE(plain && r) << "round " << round;
+        ASSERT_EQ(r->size(), plain->size()) << "round " << round;
+        long long sum = 0;
+        std::map<std::pair<std::size_t, std::size_t>, std::pair<std::size_t, int>> side;  // -> triangle, corner opposite
+        for (std::size_t i = 0; i < r->size(); ++i) {
+            const auto& t = (*r)[i];
+            const long long a = cross(poly.points[t[0]], poly.points[t[1]], poly.points[t[2]]);
+            ASSERT_GE(a, 0) << "round " << round;
+            sum += a;
+            for (int k = 0; k < 3; ++k) side[{t[k], t[(k + 1) % 3]}] = {i, (k + 2) % 3};
+        }
+        ASSERT_EQ(sum, expected) << "round " << round;
+        for (std::size_t i = 0; i < r->size(); ++i)
+            for (std::size_t j = i + 1; j < r->size(); ++j) {
+                if (cross(poly.points[(*r)[i][0]], poly.points[(*r)[i][1]], poly.points[(*r)[i][2]]) == 0 ||
+                    cross(poly.points[(*r)[j][0]], poly.points[(*r)[j][1]], poly.points[(*r)[j][2]]) == 0)
+                    continue;
+                ASSERT_FALSE(overlap(poly.points, (*r)[i], (*r)[j])) << "round " << round << ": triangles " << i << " and " << j;
+            }
+        // Locally Delaunay: across every inner side of two proper triangles forming a convex
+        // quadrilateral, the far corner is not strictly inside the circumcircle.
+        for (const auto& [e, tk] : side) {
+            const auto it = side.find({e.second, e.first});
+            if (it == side.end()) continue;
+            const auto& t = (*r)[tk.first];
+            const auto& u = (*r)[it->second.first];
+            const auto& P = poly.points;
+            const auto a = e.first, b = e.second, c = t[std::size_t(tk.second)], d = u[std::size_t(it->second.second)];
+            if (cross(P[a], P[b], P[c]) <= 0 || cross(P[b], P[a], P[d]) <= 0 || cross(P[d], P[c], P[a]) <= 0 || cross(P[c], P[d], P[b]) <= 0)
+                continue;
+            ASSERT_LE(incircle_sign(P[a], P[b], P[c], P[d]), 0) << "round " << round << ": side " << a << "-" << b;
+        }
+        const double before = smallest_angle(poly.points, *plain), after = smallest_angle(poly.points, *r);
+        EXPECT_GE(after, before - 1e-12) << "round " << round;
+        improved += after > before + 1e-9;
+    }
+    EXPECT_GT(improved, 100u);  // ear clipping leaves slivers that the flips remove
+}
+
+TEST(triangulate_polygon, random_loops_on_a_small_lattice_are_refused_exactly_when_not_simple) {
+    // Corners on a 5 x 5 lattice: collinear runs, touching edges, repeated corners and folds
+    // are everywhere. The library's verdict must match the test's own all-pairs check.
+    std::mt19937_64 rng(7);
+    std::uniform_int_distribution<int> coord(0, 4), size(3, 9);
+    std::vector<point2> lattice;
+    for (int y = 0; y < 5; ++y)
+        for (int x = 0; x < 5; ++x) lattice.push_back({double(x), double(y)});
+    std::size_t accepted = 0, refused = 0;
+    for (int round = 0; round < 20000; ++round) {
+        std::vector<std::size_t> loop;
+        const int n = size(rng);
+        for (int i = 0; i < n; ++i) loop.push_back(std::size_t(coord(rng) * 5 + coord(rng)));
+        const loops_t loops{loop};
+        auto r = hmira::triangulate_polygon(lattice, loops);
+        if (simple(lattice, loops) && twice_area(lattice, loop) > 0) {
+            ASSERT_TRUE(r) << "round " << round << ": " << r.error().message;
+            expect_exact_disc(lattice, loop, *r);
+            ++accepted;
+        } else {
+            ASSERT_FALSE(r) << "round " << round << ": a loop that is not simple, or is clockwise or flat, was triangulated";
+            EXPECT_EQ(r.error().code, hmira::errc::topology) << r.error().message;
+            ++refused;
+        }
+    }
+    EXPECT_GT(accepted, 500u);
+    EXPECT_GT(refused, 500u);
+}
+
+TEST(triangulate_polygon, big_jagged_polygons_take_near_linear_time_and_stay_exact) {
+    // Star-shaped loops with many corners: a smooth circle, alternating spikes (half the
+    // corners reflex) and random radii (reflex corners everywhere). All-pairs tests would take
+    // minutes here; the sweep and the box tree take well under a second each (ctest TIMEOUT).
+#ifdef HMIRA_SANITIZER_BUILD
+    const std::size_t n = 20000;
+#else
+    const std::size_t n = 200000;
+#endif
+    std::mt19937_64 rng(11);
+    std::uniform_real_distribution<double> unit(0, 1);
+    for (int kind = 0; kind < 3; ++kind) {
+        std::vector<point2> p;
+        std::vector<std::size_t> loop;
+        for (std::size_t i = 0; i < n; ++i) {
+            const double a = 2 * std::numbers::pi * double(i) / double(n);
+            const double rad = 1e6 * (kind == 0 ? 1.0 : kind == 1 ? (i % 2 ? 0.5 : 1.0) : 0.7 + 0.3 * unit(rng));
+            loop.push_back(p.size());
+            p.push_back({std::round(rad * std::cos(a)), std::round(rad * std::sin(a))});
+        }
+        auto r = hmira::triangulate_polygon(p, loops_t{loop});
+        ASSERT_TRUE(r) << "kind " << kind << ": " << r.error().message;
+        expect_exact_disc(p, loop, *r);
+    }
+}
+
+TEST(triangulate_polygon, a_polygon_with_thousands_of_holes_is_refused_in_bounded_time) {
+    // Each hole is checked against every other (and bridged past them): quadratic in the
+    // holes, so 20,000 of them must hit the work limit and be refused, not run for an hour.
+    std::vector<point2> p{{0, 0}, {1000, 0}, {1000, 1000}, {0, 1000}};
+    loops_t loops{{0, 1, 2, 3}};
+    for (int y = 0; y < 200; ++y)
+        for (int x = 0; x < 100; ++x) {
+            const double x0 = 5.0 * x + 2, y0 = 5.0 * y + 2;
+            loops.push_back({p.size(), p.size() + 1, p.size() + 2});  // clockwise
+            p.push_back({x0, y0});
+            p.push_back({x0, y0 + 1});
+            p.push_back({x0 + 1, y0});
+        }
+    auto r = hmira::triangulate_polygon(p, loops);
+    ASSERT_FALSE(r);
+    EXPECT_EQ(r.error().code, hmira::errc::unsupported);
+    EXPECT_NE(r.error().message.find("60004 corners are too intricate"), std::string::npos) << r.error().message;
 }
 
 TEST(triangulate_polygon, a_nearly_degenerate_sliver_is_triangulated_exactly) {

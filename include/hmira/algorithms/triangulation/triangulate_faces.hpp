@@ -91,17 +91,20 @@ result<face_polygon<M, T>> project_face(const M& m, typename T::face_handle f) {
 /// face without projected area; errc::topology when the projection is not a simple polygon
 /// with holes (self-crossing, repeated corner, ring outside its face); errc::invalid_argument
 /// for non-finite coordinates.
-/// Complexity: that of triangulate_polygon on the face's corners (O(n^2) typical).
+/// With options.delaunay the diagonals are flipped to the constrained Delaunay triangulation
+/// in that plane (triangulate_polygon_options::delaunay).
+/// Complexity: that of triangulate_polygon on the face's corners (O(n log n) typical).
 template <class M, class T = default_traits<M>>
     requires face_triangulable_mesh<M, T>
-[[nodiscard]] result<std::vector<std::array<typename T::vertex_handle, 3>>> face_triangles(const M& mesh, typename T::face_handle f) {
+[[nodiscard]] result<std::vector<std::array<typename T::vertex_handle, 3>>> face_triangles(const M& mesh, typename T::face_handle f,
+                                                                                          const triangulate_polygon_options& options = {}) {
     namespace dt = detail::triangulation;
     using out_t = std::vector<std::array<typename T::vertex_handle, 3>>;
     auto poly = dt::project_face<M, T>(mesh, f);
     if (!poly) return poly.error();
     if (poly->loops.size() == 1 && poly->loops[0].size() == 3)
         return out_t{{poly->vertices[0], poly->vertices[1], poly->vertices[2]}};
-    auto tris = triangulate_polygon(poly->points, poly->loops);
+    auto tris = triangulate_polygon(poly->points, poly->loops, options);
     if (!tris) {
         auto e = tris.error();
         return fail(e.code, "face " + std::to_string(T::face_index(mesh, f)) + ": " + e.message, (long long)T::face_index(mesh, f));
@@ -128,11 +131,13 @@ struct triangulate_faces_result {
 /// diagonal makeEF. Every face is triangulated on paper first, so a refused face leaves the
 /// mesh unchanged.
 /// \post every face is a triangle without rings; V unchanged; the surface is the same point set.
+/// With options.delaunay each face's diagonals are the constrained Delaunay ones in its plane.
 /// Errors (mesh unchanged): those of face_triangles, naming the first refused face.
-/// Complexity: O(sum over faces of n_f^2) typical, n_f the face's corners.
+/// Complexity: O(sum over faces of n_f^2), n_f the face's corners: each diagonal finds its
+/// corners by walking the face (face_triangles alone is O(n_f log n_f) typical).
 template <class M, class T = default_traits<M>>
     requires triangulable_mesh<M, T>
-[[nodiscard]] result<triangulate_faces_result> triangulate_faces(M& mesh) {
+[[nodiscard]] result<triangulate_faces_result> triangulate_faces(M& mesh, const triangulate_polygon_options& options = {}) {
     namespace dt = detail::triangulation;
     using V = typename T::vertex_handle;
     using H = typename T::halfedge_handle;
@@ -150,7 +155,7 @@ template <class M, class T = default_traits<M>>
         }
         auto poly = dt::project_face<M, T>(mesh, f);
         if (!poly) return poly.error();
-        auto tris = triangulate_polygon(poly->points, poly->loops);
+        auto tris = triangulate_polygon(poly->points, poly->loops, options);
         if (!tris) {
             auto e = tris.error();
             return fail(e.code, "triangulate_faces: face " + std::to_string(T::face_index(mesh, f)) + ": " + e.message,
