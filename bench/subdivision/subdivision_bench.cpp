@@ -23,6 +23,8 @@
 #include <hmira/algorithms/subdivision/loop.hpp>
 #include <hmira/meshes/halfedge_mesh.hpp>
 
+#include "support/peer_bench.hpp"
+
 #ifdef HMIRA_BENCH_WITH_OPENMESH
 // The interop header first: CatmullClarkT.hh uses OpenMesh's property handles without including them.
 #include <hmira/interop/openmesh.hpp>
@@ -37,56 +39,15 @@
 
 namespace {
 
-/// A torus as points and faces: n x n quads, or each quad cut along a diagonal.
-struct soup {
-    std::vector<hmira::vec3<double>> points;
-    std::vector<std::vector<std::size_t>> faces;
-};
-soup make_torus(std::size_t n, bool triangles) {
-    soup t;
-    for (std::size_t i = 0; i < n; ++i)
-        for (std::size_t j = 0; j < n; ++j) {
-            const double u = 2 * std::numbers::pi * double(i) / double(n), v = 2 * std::numbers::pi * double(j) / double(n);
-            t.points.push_back({(2 + 0.7 * std::cos(v)) * std::cos(u), (2 + 0.7 * std::cos(v)) * std::sin(u), 0.7 * std::sin(v)});
-        }
-    auto id = [n](std::size_t i, std::size_t j) { return (i % n) * n + (j % n); };
-    for (std::size_t i = 0; i < n; ++i)
-        for (std::size_t j = 0; j < n; ++j) {
-            if (triangles) {
-                t.faces.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
-                t.faces.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
-            } else {
-                t.faces.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
-            }
-        }
-    return t;
-}
+using hmira_bench::build;
+using hmira_bench::soup;
+
 const soup& triangle_torus() {
-    static const soup s = make_torus(724, true);
+    static const soup s = hmira_bench::make_torus(724, true);
     return s;
 }
 const soup& quad_torus() {
-    static const soup s = make_torus(1024, false);
-    return s;
-}
-
-template <class M, class T = hmira::default_traits<M>>
-M build(const soup& s) {
-    M m;
-    std::vector<typename T::vertex_handle> vs;
-    for (const auto& p : s.points) vs.push_back(T::add_vertex(m, {typename T::scalar(p.x), typename T::scalar(p.y), typename T::scalar(p.z)}));
-    std::vector<typename T::vertex_handle> c;
-    for (const auto& f : s.faces) {
-        c.clear();
-        for (auto i : f) c.push_back(vs[i]);
-        (void)T::add_face(m, std::span<const typename T::vertex_handle>(c));
-    }
-    return m;
-}
-
-/// One case's timing: the median of its repetitions, collected for the ratio summary.
-std::map<std::string, std::vector<double>>& seconds_by_case() {
-    static std::map<std::string, std::vector<double>> s;
+    static const soup s = hmira_bench::make_torus(1024, false);
     return s;
 }
 
@@ -197,47 +158,11 @@ void cgal_catmull_clark(benchmark::State& state) {
 BENCHMARK(cgal_catmull_clark)->Name("catmull_clark/cgal/CatmullClark_subdivision")->Unit(benchmark::kMillisecond)->Iterations(1);
 #endif
 
-/// Console output as usual, and each single run's CPU time kept for the summary: on a shared
-/// machine the wall time of a single-threaded run mostly measures the other processes.
-class collecting_reporter : public benchmark::ConsoleReporter {
-public:
-    void ReportRuns(const std::vector<Run>& runs) override {
-        for (const auto& r : runs)
-            if (r.run_type == Run::RT_Iteration && !r.error_occurred && r.iterations > 0)
-                seconds_by_case()[r.run_name.function_name].push_back(r.cpu_accumulated_time / double(r.iterations));
-        ConsoleReporter::ReportRuns(runs);
-    }
-};
-
-double median_of(const std::string& name) {
-    auto it = seconds_by_case().find(name);
-    if (it == seconds_by_case().end() || it->second.empty()) return 0;
-    auto v = it->second;
-    std::sort(v.begin(), v.end());
-    return v[v.size() / 2];
-}
-
-void print_ratio(const std::string& label, const std::string& a, const std::string& b, double target) {
-    const double ta = median_of(a), tb = median_of(b);
-    if (ta <= 0 || tb <= 0) return;
-    std::printf("%-58s %7.1f ms / %7.1f ms = %5.2f  (target <= %.1f)%s\n", label.c_str(), ta * 1e3, tb * 1e3, ta / tb, target,
-                ta / tb <= target ? "" : "  MISSED");
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
-    // Three repetitions unless the command line says otherwise; the summary uses medians.
-    std::vector<char*> args(argv, argv + argc);
-    std::string reps = "--benchmark_repetitions=3";
-    bool has_reps = false;
-    for (int i = 1; i < argc; ++i) has_reps |= std::string(argv[i]).rfind("--benchmark_repetitions", 0) == 0;
-    if (!has_reps) args.insert(args.begin() + 1, reps.data());
-    int n = int(args.size());
-    benchmark::Initialize(&n, args.data());
-    if (benchmark::ReportUnrecognizedArguments(n, args.data())) return 1;
-    collecting_reporter reporter;
-    benchmark::RunSpecifiedBenchmarks(&reporter);
+    if (int rc = hmira_bench::run_benchmarks(argc, argv); rc != 0) return rc;
+    using hmira_bench::print_ratio;
     std::printf("\nMedian CPU-time ratios (one level, ~1M faces in):\n");
     for (const std::string scheme : {"loop", "catmull_clark"}) {
         const std::string own = scheme + "/hmira/halfedge_mesh";

@@ -7,6 +7,8 @@
 #include <cmath>
 #include <cstddef>
 #include <string>
+#include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 #include "../../concepts.hpp"
@@ -133,8 +135,8 @@ struct triangulate_faces_result {
 /// \post every face is a triangle without rings; V unchanged; the surface is the same point set.
 /// With options.delaunay each face's diagonals are the constrained Delaunay ones in its plane.
 /// Errors (mesh unchanged): those of face_triangles, naming the first refused face.
-/// Complexity: O(sum over faces of n_f^2), n_f the face's corners: each diagonal finds its
-/// corners by walking the face (face_triangles alone is O(n_f log n_f) typical).
+/// Complexity: O(sum over faces of n_f log n_f) typical, n_f the face's corners: each cut walks
+/// the shorter part of its piece. Faces with inner rings: O(n_f) per cut and per bridge.
 template <class M, class T = default_traits<M>>
     requires triangulable_mesh<M, T>
 [[nodiscard]] result<triangulate_faces_result> triangulate_faces(M& mesh, const triangulate_polygon_options& options = {}) {
@@ -167,8 +169,20 @@ template <class M, class T = default_traits<M>>
     for (auto& pl : plans) {
         const auto& pts = pl.polygon.points;
         const auto& vs = pl.polygon.vertices;
-        // Point index of each vertex of this face (a vertex appears once per face).
+        // Point index of each vertex of this face (a vertex appears once per face), and the
+        // pieces cut so far: scans on small faces, hash lookups on big ones.
+        const bool big = vs.size() > 32;
+        std::unordered_map<std::size_t, std::size_t> point_by_vertex;
+        if constexpr (vertex_index_mesh<M, T>)
+            if (big)
+                for (std::size_t i = 0; i < vs.size(); ++i) point_by_vertex.emplace(T::vertex_index(mesh, vs[i]), i);
         auto point_of = [&](V v) {
+            if constexpr (vertex_index_mesh<M, T>) {
+                if (big) {
+                    const auto it = point_by_vertex.find(T::vertex_index(mesh, v));
+                    return it == point_by_vertex.end() ? vs.size() : it->second;
+                }
+            }
             for (std::size_t i = 0; i < vs.size(); ++i)
                 if (vs[i] == v) return i;
             return vs.size();
@@ -190,7 +204,17 @@ template <class M, class T = default_traits<M>>
         std::sort(diagonals.begin(), diagonals.end());
         diagonals.erase(std::unique(diagonals.begin(), diagonals.end()), diagonals.end());
         std::vector<F> pieces{pl.face};
-        auto is_piece = [&](F g) { return std::find(pieces.begin(), pieces.end(), g) != pieces.end(); };
+        std::unordered_set<std::size_t> piece_ids;
+        if (big) piece_ids.insert(T::face_index(mesh, pl.face));
+        auto is_piece = [&](F g) {
+            return big ? piece_ids.count(T::face_index(mesh, g)) > 0 : std::find(pieces.begin(), pieces.end(), g) != pieces.end();
+        };
+        auto add_piece = [&](F g) {
+            if (big)
+                piece_ids.insert(T::face_index(mesh, g));
+            else
+                pieces.push_back(g);
+        };
         // The corner (halfedge into v) of a piece whose angle at v holds the direction to w.
         auto corner = [&](std::size_t v, std::size_t w) {
             const auto start = T::vertex_halfedge(mesh, vs[v]);
@@ -208,20 +232,38 @@ template <class M, class T = default_traits<M>>
             } while (x != start);
             return fallback;
         };
-        auto same_loop = [&](H a, H b) {
-            auto x = a;
-            do {
-                if (x == b) return true;
-                x = T::next(mesh, x);
-            } while (x != a);
-            return false;
+        // Whether b follows a on its loop, walking from both ends at once so that the cost is
+        // that of the shorter part: +1 when next(a) .. b is shorter, -1 when next(b) .. a is,
+        // 0 when they lie on different loops. make_edge_face re-points the part after its first
+        // corner, so passing the shorter part first makes every cut cost O(min part), and the
+        // whole face O(n log n) rather than O(n^2).
+        auto shorter_side = [&](H a, H b) {
+            auto x = T::next(mesh, a), y = T::next(mesh, b);
+            bool x_done = false, y_done = false;
+            while (!x_done || !y_done) {
+                if (!x_done) {
+                    if (x == b) return 1;
+                    x_done = x == a;
+                    x = T::next(mesh, x);
+                }
+                if (!y_done) {
+                    if (y == a) return -1;
+                    y_done = y == b;
+                    y = T::next(mesh, y);
+                }
+            }
+            return 0;
         };
+        const std::size_t rings = pl.polygon.loops.size() - 1;
         for (const auto& d : diagonals) {
             const H ca = corner(d[0], d[1]), cb = corner(d[1], d[0]);
-            if (same_loop(ca, cb)) {
-                auto r = make_edge_face<M, T>(mesh, ca, cb);
+            if (const int side = shorter_side(ca, cb); side != 0) {
+                // With inner rings the cut keeps its first corner's side as the old face (which
+                // keeps the rings), as the bridges expect; without, the shorter part goes first.
+                const bool swap = side < 0 && rings == 0;
+                auto r = swap ? make_edge_face<M, T>(mesh, cb, ca) : make_edge_face<M, T>(mesh, ca, cb);
                 if (!r) return fail(r.error().code, "triangulate_faces: internal: " + r.error().message);  // unreachable on a valid mesh
-                pieces.push_back(r->face);
+                add_piece(r->face);
                 ++out.triangles_added;
             } else {
                 if constexpr (euler_ring_mutable_mesh<M, T>) {
