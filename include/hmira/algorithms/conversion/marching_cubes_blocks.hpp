@@ -1,0 +1,193 @@
+// hmira/algorithms/conversion/marching_cubes_blocks.hpp
+// Marching cubes of a grid too large for memory, one block at a time: each block's vertices
+// carry a global key, and merge_blocks() welds the blocks into exactly the whole-grid mesh.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <numeric>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "../../core/result.hpp"
+#include "../../core/vec3.hpp"
+#include "../../grids/voxel_grid.hpp"
+#include "marching_cubes.hpp"
+
+namespace hmira {
+
+/// Where a block lies in the whole grid.
+struct grid_block {
+    grid_dims offset{0, 0, 0};  ///< global index of the block's sample (0, 0, 0)
+    grid_dims whole{0, 0, 0};   ///< dimensions of the whole grid
+};
+
+/// Options of marching_cubes_block(): those of marching_cubes_options without normals (a
+/// gradient at a block's border would need a second sample of overlap).
+struct marching_cubes_block_options {
+    double iso = 0.0;                           ///< the iso value; any finite value
+    iso_inside inside = iso_inside::below;      ///< which side of `iso` is inside
+    unsigned threads = 0;                       ///< worker threads (0: all); the output does not depend on it
+};
+
+/// One block's share of the surface. `keys[v]` names vertex v in the whole grid:
+/// for the crossing on the edge from sample (i, j, k) along axis a (0, 1, 2), and for the
+/// extra centre vertex of cube (i, j, k) with a = 3, key = ((k * ny + j) * 4 + a) * nx + i in
+/// the whole grid's dimensions (nx, ny, nz). `cubes[t]` is the key (k * ny + j) * nx + i of the
+/// cube that made triangle t. Neither depends on the chunking.
+template <class S = float>
+struct block_triangles {
+    std::vector<vec3<S>> positions;                       ///< one per vertex, as the whole grid computes it
+    std::vector<std::uint64_t> keys;                      ///< one global key per vertex, increasing
+    std::vector<std::array<std::uint32_t, 3>> triangles;  ///< indices into positions, counter-clockwise seen from outside
+    std::vector<std::uint64_t> cubes;                     ///< cube key of each triangle, non-decreasing
+};
+
+/// The marching cubes of the cubes whose first sample lies in a block of a larger grid.
+///
+/// `block` holds the block's samples plus one sample of overlap on its high sides (none where
+/// it reaches the end of the whole grid), with the whole grid's origin and spacing: sample
+/// (i, j, k) of `block` is sample `where.offset + (i, j, k)` of the whole grid. Blocks whose
+/// core ranges tile the grid, each given with that overlap, together contain every cube once.
+/// Positions, triangles and decisions are computed exactly as marching_cubes_indexed() does
+/// on the whole grid, so merge_blocks() of the blocks equals the whole-grid result. A block
+/// with a dimension below 2 has no cubes and returns an empty result.
+///
+/// Complexity: O(N) for the block's N samples, as marching_cubes_indexed().
+/// \pre none (checked: the block lies inside `where.whole`).
+/// Errors (invalid_argument): the block does not fit in the whole grid at its offset; the
+/// whole grid too large for 64-bit keys; those of marching_cubes_indexed(), prefixed with the
+/// block's offset ("marching_cubes_block at (64, 0, 128): ...").
+template <class S = float, voxel_grid G>
+result<block_triangles<S>> marching_cubes_block(const G& block, const grid_block& where, const marching_cubes_block_options& options = {}) {
+    const grid_dims d = block.dims();
+    const std::string who = "marching_cubes_block at (" + std::to_string(where.offset[0]) + ", " +
+                            std::to_string(where.offset[1]) + ", " + std::to_string(where.offset[2]) + ")";
+    double whole_size = 4;
+    for (int a = 0; a < 3; ++a) {
+        if (where.offset[a] > where.whole[a] || d[a] > where.whole[a] - where.offset[a])
+            return fail(errc::invalid_argument, who + ": a block of " + std::to_string(d[a]) + " samples along " +
+                                                    std::string(1, "xyz"[a]) + " does not fit in the whole grid's " +
+                                                    std::to_string(where.whole[a]));
+        whole_size *= double(where.whole[a]);
+    }
+    if (whole_size >= 0x1p63) return fail(errc::invalid_argument, who + ": whole grid too large for 64-bit keys");
+    block_triangles<S> out;
+    if (d[0] < 2 || d[1] < 2 || d[2] < 2) return out;
+    if (!std::isfinite(options.iso)) return fail(errc::invalid_argument, who + ": the iso value must be finite");
+    if (auto ok = check_grid_geometry(geometry_of(block), "marching_cubes", 2); !ok)
+        return fail(ok.error().code, who + ": " + ok.error().message);
+
+    detail::mc::block_tags tags{where.offset, where.whole, &out.keys, &out.cubes};
+    const marching_cubes_options mc{.iso = options.iso, .inside = options.inside, .threads = options.threads};
+    result<indexed_triangles<S>> tri = fail(errc::invalid_argument, "");
+    detail::with_thread_count(options.threads, [&] {
+        detail::mc::extractor<G> ex(block, mc);
+        ex.set_block(&tags);
+        tri = ex.template run<S>();
+    });
+    if (!tri) return fail(tri.error().code, who + ": " + tri.error().message, tri.error().element);
+    out.positions = std::move(tri->positions);
+    out.triangles = std::move(tri->triangles);
+    return out;
+}
+
+/// Welds blocks by key into one indexed triangle list.
+///
+/// When the blocks tile a grid (as marching_cubes_block() describes), the result equals
+/// marching_cubes_indexed() of the whole grid element for element: the same vertices in the
+/// same order with bit-identical positions, and the same triangles in the same order. The
+/// blocks may come in any order.
+///
+/// Complexity: O((V + T) log(V + T)) for V block vertices and T triangles in all; memory
+/// O(V + T).
+/// \pre none (checked below).
+/// Errors (invalid_argument): a block whose arrays disagree in length or whose triangle
+/// names a missing vertex; two blocks giving one key different positions; two blocks holding
+/// the same cube (the blocks overlap); unsupported: more than 2^32 - 1 vertices.
+template <class S>
+result<indexed_triangles<S>> merge_blocks(std::span<const block_triangles<S>> blocks) {
+    std::size_t n_vertices = 0, n_triangles = 0;
+    for (std::size_t b = 0; b < blocks.size(); ++b) {
+        const auto& blk = blocks[b];
+        if (blk.keys.size() != blk.positions.size() || blk.cubes.size() != blk.triangles.size())
+            return fail(errc::invalid_argument, "merge_blocks: block " + std::to_string(b) + " has " +
+                                                    std::to_string(blk.positions.size()) + " positions, " + std::to_string(blk.keys.size()) +
+                                                    " keys, " + std::to_string(blk.triangles.size()) + " triangles and " +
+                                                    std::to_string(blk.cubes.size()) + " cube keys");
+        for (std::size_t t = 0; t < blk.triangles.size(); ++t)
+            for (auto v : blk.triangles[t])
+                if (v >= blk.positions.size())
+                    return fail(errc::invalid_argument, "merge_blocks: block " + std::to_string(b) + " triangle " +
+                                                            std::to_string(t) + " names vertex " + std::to_string(v) + " of " +
+                                                            std::to_string(blk.positions.size()));
+        n_vertices += blk.positions.size();
+        n_triangles += blk.triangles.size();
+    }
+
+    // Every (key, block, local index), sorted by key: equal keys become one vertex.
+    struct ref {
+        std::uint64_t key;
+        std::uint32_t block, local;
+    };
+    std::vector<ref> refs;
+    refs.reserve(n_vertices);
+    for (std::size_t b = 0; b < blocks.size(); ++b)
+        for (std::size_t v = 0; v < blocks[b].keys.size(); ++v)
+            refs.push_back({blocks[b].keys[v], std::uint32_t(b), std::uint32_t(v)});
+    std::sort(refs.begin(), refs.end(), [](const ref& a, const ref& b) { return a.key < b.key; });
+
+    std::vector<std::vector<std::uint32_t>> global(blocks.size());
+    for (std::size_t b = 0; b < blocks.size(); ++b) global[b].resize(blocks[b].keys.size());
+    indexed_triangles<S> out;
+    for (std::size_t r = 0; r < refs.size(); ++r) {
+        const auto& p = blocks[refs[r].block].positions[refs[r].local];
+        if (r == 0 || refs[r].key != refs[r - 1].key) {
+            if (out.positions.size() == std::numeric_limits<std::uint32_t>::max())
+                return fail(errc::unsupported, "merge_blocks: more than 2^32 - 1 vertices");
+            out.positions.push_back(p);
+        } else if (std::memcmp(&out.positions.back(), &p, sizeof p) != 0) {
+            return fail(errc::invalid_argument, "merge_blocks: blocks " + std::to_string(refs[r - 1].block) + " and " +
+                                                    std::to_string(refs[r].block) + " give vertex key " + std::to_string(refs[r].key) +
+                                                    " different positions");
+        }
+        global[refs[r].block][refs[r].local] = std::uint32_t(out.positions.size() - 1);
+    }
+    refs = {};
+
+    // Triangles in cube order; a block's own triangles are already in it, so a stable sort
+    // keeps each cube's triangles in table order.
+    struct tri_ref {
+        std::uint64_t cube;
+        std::uint32_t block, local;
+    };
+    std::vector<tri_ref> tris;
+    tris.reserve(n_triangles);
+    for (std::size_t b = 0; b < blocks.size(); ++b)
+        for (std::size_t t = 0; t < blocks[b].cubes.size(); ++t) tris.push_back({blocks[b].cubes[t], std::uint32_t(b), std::uint32_t(t)});
+    std::stable_sort(tris.begin(), tris.end(), [](const tri_ref& a, const tri_ref& b) { return a.cube < b.cube; });
+    out.triangles.reserve(tris.size());
+    for (std::size_t t = 0; t < tris.size(); ++t) {
+        if (t && tris[t].cube == tris[t - 1].cube && tris[t].block != tris[t - 1].block)
+            return fail(errc::invalid_argument, "merge_blocks: blocks " + std::to_string(tris[t - 1].block) + " and " +
+                                                    std::to_string(tris[t].block) + " both hold cube " + std::to_string(tris[t].cube) +
+                                                    " (the blocks overlap)");
+        const auto& tri = blocks[tris[t].block].triangles[tris[t].local];
+        const auto& map = global[tris[t].block];
+        out.triangles.push_back({map[tri[0]], map[tri[1]], map[tri[2]]});
+    }
+    return out;
+}
+
+/// The same for a std::vector of blocks.
+template <class S>
+result<indexed_triangles<S>> merge_blocks(const std::vector<block_triangles<S>>& blocks) {
+    return merge_blocks(std::span<const block_triangles<S>>(blocks));
+}
+
+}  // namespace hmira
