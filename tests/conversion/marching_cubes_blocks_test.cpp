@@ -259,3 +259,51 @@ TEST(MarchingCubesBlocks, thin_blocks_are_empty_and_overlapping_blocks_are_refus
 }
 
 }  // namespace
+
+namespace {
+
+TEST(MarchingCubesBlocks, slab_by_slab_equals_whole_grid_for_every_slab_thickness) {
+    const auto g = box(n_side - 5, n_side / 2 + 1, n_side / 2 + 3);
+    auto grid = hmira::sample_function(g, [](hmira::vec3<double> p) {
+        const double s = 7.0;
+        return std::sin(s * p.x) * std::cos(s * p.y) + std::sin(s * p.y) * std::cos(s * p.z) + std::sin(s * p.z) * std::cos(s * p.x);
+    });
+    ASSERT_TRUE(grid);
+    for (auto inside : {hmira::iso_inside::below, hmira::iso_inside::above}) {
+        auto whole = hmira::marching_cubes_indexed<double>(*grid, {.iso = 0.05, .inside = inside});
+        ASSERT_TRUE(whole);
+        for (std::size_t slab : {std::size_t(1), std::size_t(2), std::size_t(5), std::size_t(13), g.dims[2] - 2, g.dims[2] + 4}) {
+            std::size_t fetched = 0;
+            auto fetch = [&](std::size_t k0, std::size_t count, std::vector<float>& out) -> hmira::result<void> {
+                const auto begin = grid->values().begin() + std::ptrdiff_t(k0 * g.dims[0] * g.dims[1]);
+                out.assign(begin, begin + std::ptrdiff_t(count * g.dims[0] * g.dims[1]));
+                fetched += count;
+                return {};
+            };
+            auto r = hmira::marching_cubes_by_slabs<double, float>(g, slab, fetch, {.iso = 0.05, .inside = inside});
+            ASSERT_TRUE(r) << r.error().message;
+            const std::string what = "slab " + std::to_string(slab);
+            ASSERT_EQ(r->positions.size(), whole->positions.size()) << what;
+            EXPECT_EQ(std::memcmp(r->positions.data(), whole->positions.data(), whole->positions.size() * sizeof(whole->positions[0])), 0) << what;
+            EXPECT_TRUE(r->triangles == whole->triangles) << what;
+            // Every slice is read once, plus one per slab border.
+            const std::size_t slabs = (g.dims[2] - 1 + std::min(slab, g.dims[2]) - 1) / std::min(slab, g.dims[2]);
+            EXPECT_EQ(fetched, g.dims[2] + slabs - 1) << what;
+        }
+    }
+}
+
+TEST(MarchingCubesBlocks, slab_fetch_error_is_returned) {
+    const auto g = box(6, 6, 9);
+    auto fetch = [&](std::size_t k0, std::size_t count, std::vector<float>& out) -> hmira::result<void> {
+        if (k0 >= 4) return hmira::fail(hmira::errc::io_error, "disk on fire at slice " + std::to_string(k0));
+        out.assign(count * 36, k0 ? 1.0f : -1.0f);
+        return {};
+    };
+    auto r = hmira::marching_cubes_by_slabs<float, float>(g, 2, fetch);
+    ASSERT_FALSE(r);
+    EXPECT_EQ(r.error().code, hmira::errc::io_error);
+    EXPECT_EQ(r.error().message, "disk on fire at slice 4");
+}
+
+}  // namespace

@@ -16,6 +16,7 @@
 
 #include "../../core/result.hpp"
 #include "../../core/vec3.hpp"
+#include "../../grids/dense_grid.hpp"
 #include "../../grids/voxel_grid.hpp"
 #include "marching_cubes.hpp"
 
@@ -188,6 +189,82 @@ result<indexed_triangles<S>> merge_blocks(std::span<const block_triangles<S>> bl
 template <class S>
 result<indexed_triangles<S>> merge_blocks(const std::vector<block_triangles<S>>& blocks) {
     return merge_blocks(std::span<const block_triangles<S>>(blocks));
+}
+
+/// Marching cubes of a grid read a z-slab at a time, with a few slabs in memory at once.
+///
+/// `fetch(k0, count, samples)` fills the std::vector<T> `samples` with z-slices k0 ..
+/// k0 + count - 1 of the whole grid (x fastest, `count * nx * ny` samples) and returns a
+/// result<void>; its error is returned as is. Slabs of `slab_slices` cubes (at least 1) are
+/// read with one slice of overlap, meshed by marching_cubes_block(), and welded on the fly:
+/// the result equals marching_cubes_indexed() of the whole grid element for element.
+///
+/// Memory: one slab of samples (slab_slices + 1 slices of T), its bit rows, one slab's block
+/// mesh and the output (sizeof(vec3<S>) per vertex, 12 bytes per triangle).
+/// Complexity: O(N) for N samples, each slice but the slab borders read once.
+/// \pre none. Errors: those of fetch and marching_cubes_block(); invalid_argument for a
+/// geometry check_grid_geometry() refuses or a fetch that returns the wrong sample count.
+template <class S = float, class T, class Fetch>
+result<indexed_triangles<S>> marching_cubes_by_slabs(const grid_geometry& whole, std::size_t slab_slices, Fetch&& fetch,
+                                                     const marching_cubes_block_options& options = {}) {
+    if (auto ok = check_grid_geometry(whole, "marching_cubes_by_slabs", 2); !ok) return ok.error();
+    slab_slices = std::max<std::size_t>(slab_slices, 1);
+    const std::size_t nx = whole.dims[0], ny = whole.dims[1], nz = whole.dims[2];
+    const std::uint64_t plane_keys = std::uint64_t(ny) * 4 * nx;  // keys per z-plane of rows
+    indexed_triangles<S> out;
+    std::vector<T> samples;
+    // The previous slab: its triangles wait until the vertices on its top plane, which the
+    // next slab emits (so that the vertex order is the whole grid's), have global indices.
+    block_triangles<S> pending;
+    std::size_t pending_base = 0, pending_emitted = 0;
+    auto flush_pending = [&](const block_triangles<S>* next, std::size_t next_base) -> result<void> {
+        for (const auto& t : pending.triangles) {
+            std::array<std::uint32_t, 3> g;
+            for (int c = 0; c < 3; ++c) {
+                if (t[c] < pending_emitted) {
+                    g[c] = std::uint32_t(pending_base + t[c]);
+                    continue;
+                }
+                const std::uint64_t key = pending.keys[t[c]];
+                if (!next) return fail(errc::invalid_argument, "marching_cubes_by_slabs: the last slab left a vertex unemitted");
+                const auto it = std::lower_bound(next->keys.begin(), next->keys.end(), key);
+                if (it == next->keys.end() || *it != key)
+                    return fail(errc::invalid_argument, "marching_cubes_by_slabs: vertex key " + std::to_string(key) +
+                                                            " missing from the next slab (fetch returned different samples?)");
+                g[c] = std::uint32_t(next_base + std::size_t(it - next->keys.begin()));
+            }
+            out.triangles.push_back(g);
+        }
+        pending = {};
+        return {};
+    };
+    for (std::size_t k0 = 0; k0 + 1 < nz; k0 += slab_slices) {
+        const std::size_t count = std::min(slab_slices + 1, nz - k0);
+        samples.clear();
+        if (auto r = fetch(k0, count, samples); !r) return r.error();
+        if (samples.size() != count * nx * ny)
+            return fail(errc::invalid_argument, "marching_cubes_by_slabs: fetch gave " + std::to_string(samples.size()) + " samples for " +
+                                                    std::to_string(count) + " slices of " + std::to_string(nx) + " x " + std::to_string(ny));
+        auto view = make_grid_view(std::span<const T>(samples), {{nx, ny, count}, whole.origin, whole.spacing});
+        if (!view) return view.error();
+        auto blk = marching_cubes_block<S>(*view, {.offset = {0, 0, k0}, .whole = whole.dims}, options);
+        if (!blk) return blk.error();
+        // Vertices on the top plane belong to the next slab's rows, unless this is the last.
+        const bool last = k0 + count == nz;
+        const std::uint64_t top = std::uint64_t(k0 + count - 1) * plane_keys;
+        const std::size_t emitted =
+            last ? blk->keys.size() : std::size_t(std::lower_bound(blk->keys.begin(), blk->keys.end(), top) - blk->keys.begin());
+        const std::size_t base = out.positions.size();
+        if (base + emitted > std::numeric_limits<std::uint32_t>::max())
+            return fail(errc::unsupported, "marching_cubes_by_slabs: more than 2^32 - 1 vertices");
+        if (auto r = flush_pending(&*blk, base); !r) return r.error();
+        out.positions.insert(out.positions.end(), blk->positions.begin(), blk->positions.begin() + std::ptrdiff_t(emitted));
+        pending = std::move(*blk);
+        pending_base = base;
+        pending_emitted = emitted;
+    }
+    if (auto r = flush_pending(nullptr, 0); !r) return r.error();
+    return out;
 }
 
 }  // namespace hmira
