@@ -10,9 +10,10 @@ The mesh is merged in two ways:
 
 * ``out=None``: the client gathers every chunk's keyed mesh and welds them in C++ (memory in
   the client: all chunks' vertices and triangles, about 2x the output).
-* ``out="mesh.ply"``: streaming. Chunks are computed a window at a time (on the scheduler in
-  use) and their vertices and triangles appended to two temporary files as they arrive; the
-  client keeps only one window of chunk meshes and the global ids of the vertices that lie on
+* ``out="mesh.ply"``: streaming. Chunks are computed a window at a time on the local
+  schedulers, or all at once on a distributed Client (each result released once written),
+  and their vertices and triangles appended to two temporary files in chunk order; the
+  client keeps a window of chunk meshes and the global ids of the vertices that lie on inner
   chunk faces (the only ones two chunks share). A second pass writes the PLY header, with its
   counts, and copies the two files behind it, then renames the result into place.
 
@@ -163,8 +164,36 @@ def _shared_mask(keys, shape, chunks):
     return shared
 
 
-def _stream_ply(path, shape, chunks, tasks, window):
+def _results_in_order(tasks, window):
+    """Yields the tasks' results in order, holding few of them at once.
+
+    On a distributed Client, every task is submitted at once (so neighbouring chunks of a lazy
+    field are made once) and each result is released as soon as it has been consumed; on the
+    local schedulers, tasks run a window at a time.
+    """
     import dask
+
+    try:
+        from distributed import default_client
+        client = default_client()
+    except (ImportError, ValueError):
+        client = None
+    if client is not None and dask.config.get("scheduler", None) in (None, "dask.distributed", "distributed"):
+        futures = client.compute(tasks)
+        try:
+            for i in range(len(futures)):
+                result = futures[i].result()
+                futures[i].release()
+                futures[i] = None
+                yield result
+        finally:
+            client.cancel([f for f in futures if f is not None])
+        return
+    for w0 in range(0, len(tasks), window):
+        yield from dask.compute(*tasks[w0:w0 + window])
+
+
+def _stream_ply(path, shape, chunks, tasks, window):
 
     directory = os.path.dirname(os.path.abspath(path))
     vfile = tempfile.NamedTemporaryFile(dir=directory, prefix=".hmira-vertices-", delete=False)
@@ -175,34 +204,33 @@ def _stream_ply(path, shape, chunks, tasks, window):
         n_vertices = 0
         n_faces = 0
         face_dtype = np.dtype([("n", "u1"), ("v", "<i4", (3,))])
-        for w0 in range(0, len(tasks), window):
-            for positions, keys, triangles, _cubes in dask.compute(*tasks[w0:w0 + window]):
-                ids = np.empty(len(keys), dtype=np.int64)
-                shared = _shared_mask(keys, shape, chunks)
-                fresh = ~shared
-                ids[fresh] = n_vertices + np.arange(int(fresh.sum()))
-                n_vertices += int(fresh.sum())
-                new_rows = [np.flatnonzero(fresh)]
-                extra = []
-                for row in np.flatnonzero(shared):
-                    k = int(keys[row])
-                    got = shared_ids.get(k)
-                    if got is None:
-                        got = shared_ids[k] = n_vertices + len(extra)
-                        extra.append(row)
-                    ids[row] = got
-                n_vertices += len(extra)
-                new_rows.append(np.asarray(extra, dtype=np.int64))
-                order = np.concatenate(new_rows)
-                # Rows in the order of their new ids: the fresh ones first, then new shared ones.
-                vfile.write(np.ascontiguousarray(positions[order], dtype="<f8").tobytes())
-                if n_vertices > np.iinfo(np.int32).max:
-                    raise ValueError("hmira.dask.marching_cubes: more than 2^31 - 1 vertices do not fit int32 PLY indices")
-                f = np.empty(len(triangles), dtype=face_dtype)
-                f["n"] = 3
-                f["v"] = ids[triangles]
-                ffile.write(f.tobytes())
-                n_faces += len(triangles)
+        for positions, keys, triangles, _cubes in _results_in_order(tasks, window):
+            ids = np.empty(len(keys), dtype=np.int64)
+            shared = _shared_mask(keys, shape, chunks)
+            fresh = ~shared
+            ids[fresh] = n_vertices + np.arange(int(fresh.sum()))
+            n_vertices += int(fresh.sum())
+            new_rows = [np.flatnonzero(fresh)]
+            extra = []
+            for row in np.flatnonzero(shared):
+                k = int(keys[row])
+                got = shared_ids.get(k)
+                if got is None:
+                    got = shared_ids[k] = n_vertices + len(extra)
+                    extra.append(row)
+                ids[row] = got
+            n_vertices += len(extra)
+            new_rows.append(np.asarray(extra, dtype=np.int64))
+            order = np.concatenate(new_rows)
+            # Rows in the order of their new ids: the fresh ones first, then new shared ones.
+            vfile.write(np.ascontiguousarray(positions[order], dtype="<f8").tobytes())
+            if n_vertices > np.iinfo(np.int32).max:
+                raise ValueError("hmira.dask.marching_cubes: more than 2^31 - 1 vertices do not fit int32 PLY indices")
+            f = np.empty(len(triangles), dtype=face_dtype)
+            f["n"] = 3
+            f["v"] = ids[triangles]
+            ffile.write(f.tobytes())
+            n_faces += len(triangles)
         vfile.close()
         ffile.close()
         header = ("ply\nformat binary_little_endian 1.0\ncomment hmira.dask.marching_cubes\n"
