@@ -41,6 +41,17 @@ def peak_rss_mib():
     return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0
 
 
+def vm_hwm_mib():
+    """The process's own peak RSS (VmHWM). getrusage's ru_maxrss survives fork and exec, so a
+    worker spawned by a big client would report the client's peak: run the scale part in a
+    fresh process (run.sh does), and read this as well."""
+    with open("/proc/self/status") as fh:
+        for line in fh:
+            if line.startswith("VmHWM:"):
+                return int(line.split()[1]) / 1024.0
+    return float("nan")
+
+
 def read_ply(path):
     with open(path, "rb") as fh:
         head = fh.read(4096)
@@ -87,7 +98,9 @@ def scale(n, chunk, period, memory_limit, keep):
         t0 = time.perf_counter()
         hmira.dask.marching_cubes(field, 0.0, out=out, window=4)
         wall = time.perf_counter() - t0
+        client_rss_after_mesh = peak_rss_mib()
         rss = client.run(peak_rss_mib)
+        hwm = client.run(vm_hwm_mib)
         workers_after = set(client.scheduler_info()["workers"])
     v, f = read_ply(out)
     nv, nf = len(v), len(f)
@@ -100,7 +113,9 @@ def scale(n, chunk, period, memory_limit, keep):
         "n": n, "chunk": chunk, "period": period, "memory_limit": memory_limit,
         "wall_s": round(wall, 2), "vertices": nv, "triangles": nf, "triangles_per_s": round(nf / wall),
         "ply_bytes": size, "worker_peak_rss_mib": {w.rsplit(":", 1)[-1]: round(r, 1) for w, r in rss.items()},
-        "workers_restarted": workers_before != workers_after, "client_peak_rss_mib": round(peak_rss_mib(), 1),
+        "worker_vm_hwm_mib": {w.rsplit(":", 1)[-1]: round(r, 1) for w, r in hwm.items()},
+        "workers_restarted": workers_before != workers_after, "client_peak_rss_mib_meshing": round(client_rss_after_mesh, 1),
+        "client_peak_rss_mib_with_weld_check": round(peak_rss_mib(), 1),
         "welded": welded, "weld_check": why,
     }
 

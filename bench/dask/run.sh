@@ -16,4 +16,10 @@ if ! "$venv/bin/python" -c "import hmira.dask, distributed" 2>/dev/null; then
   exit 1
 fi
 echo "machine: $(nproc) cores, $(free -g | awk '/Mem:/ {print $2}') GiB, load $(cut -d' ' -f1-3 /proc/loadavg)"
+# The two parts in separate processes: a worker's getrusage peak would otherwise include the
+# client's peak from the comparison (ru_maxrss survives fork and exec).
+if [ $# -eq 0 ]; then
+  "$venv/bin/python" bench/dask/bench.py --part compare
+  exec "$venv/bin/python" bench/dask/bench.py --part scale
+fi
 exec "$venv/bin/python" bench/dask/bench.py "$@"

@@ -165,7 +165,7 @@ def marching_cubes(darr, iso: float = 0.0, *, spacing: Sequence[float] = (1.0, 1
     darr, tasks = _block_tasks(darr, iso, spacing, origin, inside)
     if out is None:
         blocks = dask.compute(*tasks)
-        return _core._merge_blocks(list(blocks))
+        return _core._merge_blocks(list(blocks), whole=list(darr.shape))
     _stream_ply(os.fspath(out), darr.shape, darr.chunks, tasks, window or 2 * (os.cpu_count() or 1))
     return None
 

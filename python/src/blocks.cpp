@@ -94,7 +94,9 @@ using positions_array = nb::ndarray<const double, nb::ndim<2>, nb::c_contig, nb:
 using keys_array = nb::ndarray<const std::uint64_t, nb::ndim<1>, nb::c_contig, nb::device::cpu>;
 using triangles_array = nb::ndarray<const std::int32_t, nb::ndim<2>, nb::c_contig, nb::device::cpu>;
 
-nb::tuple merge_blocks(const std::vector<std::tuple<positions_array, keys_array, triangles_array, keys_array>>& blocks) {
+nb::tuple merge_blocks(const std::vector<std::tuple<positions_array, keys_array, triangles_array, keys_array>>& blocks,
+                       const std::vector<std::size_t>& whole) {
+    const hmira::grid_dims grid = index_triple(whole, "whole");
     std::vector<hmira::block_triangles<double>> in(blocks.size());
     for (std::size_t b = 0; b < blocks.size(); ++b) {
         const auto& [pos, keys, tris, cubes] = blocks[b];
@@ -111,6 +113,7 @@ nb::tuple merge_blocks(const std::vector<std::tuple<positions_array, keys_array,
                 out.triangles[t][c] = v < 0 ? std::numeric_limits<std::uint32_t>::max() : std::uint32_t(v);
             }
         out.cubes.assign(cubes.data(), cubes.data() + cubes.shape(0));
+        out.whole = grid;
     }
     hmira::result<hmira::indexed_triangles<double>> r = hmira::fail(hmira::errc::invalid_argument, "");
     {
@@ -132,7 +135,7 @@ void bind_blocks(nb::module_& m) {
           nb::arg("whole"), nb::arg("spacing"), nb::arg("origin"), nb::arg("inside") = "below", nb::arg("threads") = 1u,
           "Marching cubes of one C-ordered block (plus one sample of overlap on its high sides) at `offset` in a volume of "
           "shape `whole`: (positions, keys, triangles, cube keys); see hmira.dask.");
-    m.def("_merge_blocks", &merge_blocks, nb::arg("blocks"),
+    m.def("_merge_blocks", &merge_blocks, nb::arg("blocks"), nb::kw_only(), nb::arg("whole"),
           "Welds (positions, keys, triangles, cube keys) blocks into the whole volume's (vertices, faces); see hmira.dask.");
 }
 
