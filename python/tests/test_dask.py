@@ -217,3 +217,20 @@ def test_docs_page_example_runs(tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
     for code in blocks:
         exec(compile(code, str(page), "exec"), {})
+
+
+@pytest.mark.parametrize("name,iso", [("skull_2.9.inr", 2.9), ("liver.inr.gz", 0.5)])
+def test_skull_and_liver_chunked_equal_whole_volume(data, name, iso):
+    from conftest import read_inr
+
+    vol, spacing = read_inr(data / "images" / name)
+    # A C-ordered central crop keeps the run short; random chunks up to 64 samples.
+    vol = np.ascontiguousarray(vol[tuple(slice(max(0, (n - 96) // 2), max(0, (n - 96) // 2) + 96) for n in vol.shape)])
+    ref_v, ref_f = hmira.marching_cubes(vol, iso, spacing=spacing, inside="above")
+    assert len(ref_f) > 1000
+    rng = np.random.default_rng(len(name))
+    for _ in range(2):
+        chunks = tuple(random_chunks(n, rng) for n in vol.shape)
+        v, f = hmira.dask.marching_cubes(da.from_array(vol, chunks=chunks), iso, spacing=spacing, inside="above")
+        np.testing.assert_array_equal(v, ref_v, err_msg=str(chunks))
+        np.testing.assert_array_equal(f, ref_f, err_msg=str(chunks))
