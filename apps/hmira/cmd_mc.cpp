@@ -1,16 +1,20 @@
 // apps/hmira/cmd_mc.cpp
 // `hmira mc`: marching cubes on a named implicit shape (sphere, torus, gyroid) sampled on an
 // n^3 grid, or on a volume file (.inr, .inr.gz, or .raw with its grid given on the command
-// line), writing the iso-surface as a mesh.
+// line), writing the iso-surface as a mesh. A .raw or uncompressed .inr file is read slab by
+// slab (pread), so its size is not bounded by memory; the output is the same.
 #include <cstdint>
 #include <filesystem>
+#include <ranges>
 #include <variant>
 
 #include <hmira/algorithms/conversion/marching_cubes.hpp>
+#include <hmira/algorithms/conversion/marching_cubes_blocks.hpp>
 #include <hmira/grids/implicit_shapes.hpp>
 #include <hmira/grids/sample.hpp>
 #include <hmira/io/volume/inr.hpp>
 #include <hmira/io/volume/raw.hpp>
+#include <hmira/io/volume/slab_reader.hpp>
 
 #include "cli.hpp"
 
@@ -26,6 +30,29 @@ struct mc_args {
     bool normals = false;
     // .raw volumes only
     std::string dims, type = "float32", spacing, origin, endian = "little";
+    std::size_t slab_slices = 0;  // 0: as many as fit in slab_bytes
+};
+
+/// Samples read at once by the slab-by-slab path when --slab-slices is not given.
+constexpr std::size_t slab_bytes = std::size_t(64) << 20;
+
+/// An indexed triangle list seen as a mesh, for the writers (handles are indices).
+struct triangle_list_traits {
+    using M = hmira::indexed_triangles<double>;
+    using vertex_handle = std::size_t;
+    using face_handle = std::size_t;
+    using scalar = double;
+    static auto vertices(const M& m) { return std::views::iota(std::size_t(0), m.positions.size()); }
+    static std::size_t vertex_count(const M& m) { return m.positions.size(); }
+    static auto faces(const M& m) { return std::views::iota(std::size_t(0), m.triangles.size()); }
+    static std::size_t face_count(const M& m) { return m.triangles.size(); }
+    static auto face_vertices(const M& m, std::size_t f) {
+        const auto& t = m.triangles[f];
+        return std::array<std::size_t, 3>{t[0], t[1], t[2]};
+    }
+    static hmira::vec3<double> position(const M& m, std::size_t v) { return m.positions[v]; }
+    static std::size_t vertex_index(const M&, std::size_t v) { return v; }
+    static std::size_t vertex_index_bound(const M& m) { return m.positions.size(); }
 };
 
 /// A volume of any sample type read_raw supports; marching cubes runs on it as it is.
@@ -112,16 +139,82 @@ hmira::result<hmira::dense_grid<float>> make_grid(const mc_args& a, std::uint64_
     return hmira::fail(hmira::errc::invalid_argument, a.source + ": not a shape name (sphere, torus, gyroid) nor a .inr, .inr.gz or .raw volume");
 }
 
+/// The layout of a volume file that can be read slab by slab: a regular .raw file, or a
+/// regular .inr file without gzip; nullopt for anything else (the whole-volume path then
+/// reads it and reports its errors as before).
+std::optional<hmira::io::volume_layout> slab_layout(const mc_args& a, const std::optional<hmira::grid_geometry>& raw) {
+    std::error_code ec;
+    if (a.normals || !std::filesystem::is_regular_file(a.source, ec)) return std::nullopt;  // normals need whole gradients
+    std::optional<hmira::io::volume_layout> l;
+    if (raw) {
+        using hmira::io::sample_type;
+        const sample_type type = a.type == "uint8" ? sample_type::uint8 : a.type == "int8" ? sample_type::int8
+                               : a.type == "uint16" ? sample_type::uint16 : a.type == "int16" ? sample_type::int16
+                               : a.type == "uint32" ? sample_type::uint32 : a.type == "int32" ? sample_type::int32
+                               : a.type == "float64" ? sample_type::float64 : sample_type::float32;
+        l = hmira::io::volume_layout{.geometry = *raw, .type = type, .big_endian = a.endian == "big", .data_offset = 0};
+    } else if (ends_with_lower(a.source, ".inr")) {
+        if (auto r = hmira::io::read_inr_layout(a.source)) l = *r;
+    }
+    if (!l || l->geometry.dims[0] < 2 || l->geometry.dims[1] < 2 || l->geometry.dims[2] < 2) return std::nullopt;
+    return l;
+}
+
+/// Marching cubes of a volume file read slab by slab: peak memory is one slab of samples
+/// (64 MiB unless --slab-slices says otherwise) plus the output mesh (24 bytes per vertex, 12
+/// per triangle). The mesh equals the whole-volume path's. nullopt: the file does not suit
+/// (see slab_layout); otherwise the exit code.
+std::optional<int> run_mc_by_slabs(const mc_args& a, const common_options& o, const std::optional<hmira::grid_geometry>& raw) {
+    const auto layout = slab_layout(a, raw);
+    if (!layout) return std::nullopt;
+    auto reader = hmira::io::volume_slab_reader::open(a.source, *layout);
+    if (!reader) return std::nullopt;  // a size mismatch: the whole-volume reader names it as usual
+    const hmira::marching_cubes_block_options opt{.iso = a.iso,
+                                                  .inside = a.inside == "above" ? hmira::iso_inside::above : hmira::iso_inside::below,
+                                                  .threads = static_cast<unsigned>(o.threads)};
+    const auto& g = layout->geometry;
+    auto run = [&]<class T>(T) -> hmira::result<hmira::indexed_triangles<double>> {
+        const std::size_t plane = g.dims[0] * g.dims[1] * sizeof(T);
+        const std::size_t slices = a.slab_slices ? a.slab_slices : std::max<std::size_t>(1, slab_bytes / plane);
+        auto fetch = [&](std::size_t k0, std::size_t count, std::vector<T>& out) { return reader->read_slices(k0, count, out); };
+        return hmira::marching_cubes_by_slabs<double, T>(g, slices, fetch, opt);
+    };
+    hmira::result<hmira::indexed_triangles<double>> tri = hmira::fail(hmira::errc::invalid_argument, "");
+    // .inr samples become float, as read_inr makes them; .raw samples stay as stored.
+    using hmira::io::sample_type;
+    if (!raw) tri = run(float{});
+    else switch (layout->type) {
+        case sample_type::uint8: tri = run(std::uint8_t{}); break;
+        case sample_type::int8: tri = run(std::int8_t{}); break;
+        case sample_type::uint16: tri = run(std::uint16_t{}); break;
+        case sample_type::int16: tri = run(std::int16_t{}); break;
+        case sample_type::uint32: tri = run(std::uint32_t{}); break;
+        case sample_type::int32: tri = run(std::int32_t{}); break;
+        case sample_type::float64: tri = run(double{}); break;
+        case sample_type::float32: tri = run(float{}); break;
+    }
+    if (!tri) return report(input_exit_code(tri.error()), tri.error().message);
+    if (auto w = hmira::io::write_mesh<hmira::indexed_triangles<double>, triangle_list_traits>(*tri, a.output); !w)
+        return report(exit_code_for(w.error()), w.error().message);
+    say(o, a.output + ": " + std::to_string(tri->positions.size()) + " vertices, " + std::to_string(tri->triangles.size()) + " triangles");
+    return ok;
+}
+
 int run_mc(const mc_args& a, const common_options& o) {
     const bool raw = ends_with_lower(a.source, ".raw");
     if (!raw && (!a.dims.empty() || !a.spacing.empty() || !a.origin.empty()))
         return report(usage, "--dims, --spacing and --origin describe .raw volumes only; " + a.source + " is not one");
+    if (a.slab_slices && !raw && !ends_with_lower(a.source, ".inr"))
+        return report(usage, "--slab-slices applies to .raw and .inr volumes only; " + a.source + " is not one");
     hmira::result<any_grid> grid = hmira::fail(hmira::errc::invalid_argument, "");
     if (raw) {
         int code = ok;
         const auto g = raw_geometry(a, code);
         if (!g) return code;
+        if (auto done = run_mc_by_slabs(a, o, g)) return *done;
         grid = read_raw_volume(a, *g, o.max_input_bytes);
+    } else if (auto done = run_mc_by_slabs(a, o, std::nullopt)) {
+        return *done;
     } else if (auto g = make_grid(a, o.max_input_bytes)) {
         grid = any_grid(std::move(*g));
     } else {
@@ -165,6 +258,10 @@ const bool registered = register_command({
             ->check(CLI::IsMember({"uint8", "int8", "uint16", "int16", "uint32", "int32", "float32", "float64"}));
         sub.add_option("--spacing", a->spacing, ".raw: distance between samples, one for all axes or X,Y,Z (default 1)")->type_name("H|X,Y,Z");
         sub.add_option("--origin", a->origin, ".raw: position of sample (0, 0, 0) (default 0,0,0)")->type_name("X,Y,Z");
+        sub.add_option("--slab-slices", a->slab_slices,
+                       ".raw/.inr: z-slices read at a time (default: 64 MiB worth); the file is read slab by slab, so memory "
+                       "holds a slab plus the output mesh, whatever the volume's size (not with --normals)")
+            ->check(whole_number(1, 1000000));
         sub.add_option("--endian", a->endian, ".raw: byte order of multi-byte samples")->capture_default_str()->check(CLI::IsMember({"little", "big"}));
         sub.footer("\nA .raw volume (x fastest, no header) needs its grid on the command line, e.g.\n"
                    "  hmira mc ct.raw ct.ply --dims 256,256,128 --type int16 --spacing 0.5,0.5,1 --iso 300 --inside above\n"

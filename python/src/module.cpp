@@ -14,6 +14,8 @@ void register_errors(nb::module_&) {
     });
 }
 
+void bind_blocks(nb::module_& m);  // blocks.cpp: marching cubes by blocks for hmira.dask
+
 }  // namespace hmira_py
 
 NB_MODULE(_core, m) {
@@ -22,4 +24,5 @@ NB_MODULE(_core, m) {
     hmira_py::bind_arrays(m);
     hmira_py::bind_mesh(m);
     hmira_py::bind_viewer(m);
+    hmira_py::bind_blocks(m);
 }

@@ -60,6 +60,24 @@ struct indexed_triangles {
 
 namespace detail::mc {
 
+/// Where a block lies in a larger grid, and where the extractor records the global keys of
+/// what it writes (marching_cubes_blocks.hpp). Positions then use global sample indices, so
+/// they are bit for bit those of the whole grid.
+struct block_tags {
+    std::array<std::size_t, 3> offset{0, 0, 0};  ///< global index of the block's sample (0, 0, 0)
+    std::array<std::size_t, 3> whole{0, 0, 0};   ///< dimensions of the whole grid
+    std::vector<std::uint64_t>* vertex_keys = nullptr;    ///< one per output vertex
+    std::vector<std::uint64_t>* triangle_cubes = nullptr;  ///< one per output triangle
+    /// Vertices sort by key exactly as the whole grid orders them: rows (z, y), then x-, y-,
+    /// z-edges and cube centres (axis 3), each by increasing x.
+    std::uint64_t vertex_key(std::size_t i, std::size_t j, std::size_t k, int axis) const noexcept {
+        return ((std::uint64_t(k + offset[2]) * whole[1] + (j + offset[1])) * 4 + std::uint64_t(axis)) * whole[0] + (i + offset[0]);
+    }
+    std::uint64_t cube_key(std::size_t i, std::size_t j, std::size_t k) const noexcept {
+        return (std::uint64_t(k + offset[2]) * whole[1] + (j + offset[1])) * whole[0] + (i + offset[0]);
+    }
+};
+
 /// Crossing points keep this fraction of an edge away from its samples, so that a sample equal
 /// to the iso value never makes vertices on different edges coincide.
 inline constexpr double edge_margin = 1.0 / 512;
@@ -162,6 +180,8 @@ public:
         above_ = o.inside == iso_inside::above;
         if constexpr (contiguous_voxel_grid<G>) data_ = grid.data();
     }
+    /// Makes the extractor work as one block of a larger grid; `tags` outlives run().
+    void set_block(const block_tags* tags) noexcept { tags_ = tags; }
 
     template <class S>
     result<indexed_triangles<S>> run() {
@@ -240,6 +260,10 @@ public:
         out.positions.resize(vbase_[rows]);
         out.triangles.resize(tbase_[rows]);
         if (opt_.normals) out.normals.resize(vbase_[rows]);
+        if (tags_) {
+            tags_->vertex_keys->resize(vbase_[rows]);
+            tags_->triangle_cubes->resize(tbase_[rows]);
+        }
 
         // Pass 3: every row writes its vertices and its cubes' triangles into the slots
         // counted above, so the output order is the same whatever the schedule.
@@ -389,7 +413,9 @@ private:
         t = std::clamp(t, edge_margin, 1.0 - edge_margin);
         const auto o = grid_.origin();
         const auto sp = grid_.spacing();
-        vec3<double> p{double(i), double(j), double(k)};
+        const std::size_t gi = tags_ ? i + tags_->offset[0] : i, gj = tags_ ? j + tags_->offset[1] : j,
+                          gk = tags_ ? k + tags_->offset[2] : k;
+        vec3<double> p{double(gi), double(gj), double(gk)};
         p[static_cast<std::size_t>(axis)] += t;
         pos = {o.x + p.x * sp.x, o.y + p.y * sp.y, o.z + p.z * sp.z};
         if (normal) {
@@ -413,6 +439,7 @@ private:
         const bool normals = !out.normals.empty();
         edge_point(i, j, k, axis, p, normals ? &n : nullptr);
         store(id, p, normals ? &n : nullptr, out);
+        if (tags_) (*tags_->vertex_keys)[id] = tags_->vertex_key(i, j, k, axis);
     }
 
     // The extra vertex of a loop that needs one: the mean of the loop's crossings.
@@ -432,6 +459,7 @@ private:
         }
         sum_p /= count;
         store(id, sum_p, normals ? &sum_n : nullptr, out);
+        if (tags_) (*tags_->vertex_keys)[id] = tags_->vertex_key(i, j, k, 3);
     }
 
     template <class S>
@@ -504,8 +532,10 @@ private:
                 const int q = edge_mask[e];
                 id[e] = static_cast<std::uint32_t>(base[q] + rank(m + q * W, p + q * (W + 1), i + std::size_t(edge_step[e])));
             }
-            for (unsigned n = 0; n < entry.count; ++n)
+            for (unsigned n = 0; n < entry.count; ++n) {
+                if (tags_) (*tags_->triangle_cubes)[t] = tags_->cube_key(i, j, k);
                 out.triangles[t++] = {id[entry.edges[3 * n]], id[entry.edges[3 * n + 1]], id[entry.edges[3 * n + 2]]};
+            }
         });
     }
 
@@ -514,6 +544,7 @@ private:
     const typename G::value_type* data_ = nullptr;
     std::size_t nx_ = 0, ny_ = 0, nz_ = 0, words_ = 0;
     bool above_ = false;
+    const block_tags* tags_ = nullptr;
     std::vector<std::uint64_t> bits_;
     std::vector<std::uint32_t> xcount_, ycount_, zcount_;
     std::vector<std::uint64_t> vbase_, tbase_;
