@@ -68,12 +68,16 @@ void hmira_triangulate(benchmark::State& state, const soup& (*input)()) {
         state.ResumeTiming();
     }
 }
-BENCHMARK_CAPTURE(hmira_triangulate<hmira::halfedge_mesh>, quads, quads)->Name("quads/hmira/halfedge_mesh")->Unit(benchmark::kMillisecond)->Iterations(1);
-BENCHMARK_CAPTURE(hmira_triangulate<hmira::halfedge_mesh>, jagged, jagged)->Name("jagged/hmira/halfedge_mesh")->Unit(benchmark::kMillisecond)->Iterations(1);
+template <class M>
+void hmira_quads(benchmark::State& state) { hmira_triangulate<M>(state, quads); }
+template <class M>
+void hmira_jagged(benchmark::State& state) { hmira_triangulate<M>(state, jagged); }
+BENCHMARK(hmira_quads<hmira::halfedge_mesh>)->Name("quads/hmira/halfedge_mesh")->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(hmira_jagged<hmira::halfedge_mesh>)->Name("jagged/hmira/halfedge_mesh")->Unit(benchmark::kMillisecond)->Iterations(1);
 
 #ifdef HMIRA_BENCH_WITH_OPENMESH
 using om_poly = OpenMesh::PolyMesh_ArrayKernelT<>;
-BENCHMARK_CAPTURE(hmira_triangulate<om_poly>, quads, quads)->Name("quads/hmira/openmesh_poly")->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(hmira_quads<om_poly>)->Name("quads/hmira/openmesh_poly")->Unit(benchmark::kMillisecond)->Iterations(1);
 void openmesh_fan(benchmark::State& state) {
     const om_poly base = hmira_bench::build<om_poly>(quads());
     for (auto _ : state) {
@@ -91,8 +95,8 @@ BENCHMARK(openmesh_fan)->Name("quads/openmesh/triangulate")->Unit(benchmark::kMi
 
 #ifdef HMIRA_BENCH_WITH_CGAL
 using cgal_mesh = CGAL::Surface_mesh<CGAL::Simple_cartesian<double>::Point_3>;
-BENCHMARK_CAPTURE(hmira_triangulate<cgal_mesh>, quads, quads)->Name("quads/hmira/cgal_surface_mesh")->Unit(benchmark::kMillisecond)->Iterations(1);
-BENCHMARK_CAPTURE(hmira_triangulate<cgal_mesh>, jagged, jagged)->Name("jagged/hmira/cgal_surface_mesh")->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(hmira_quads<cgal_mesh>)->Name("quads/hmira/cgal_surface_mesh")->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(hmira_jagged<cgal_mesh>)->Name("jagged/hmira/cgal_surface_mesh")->Unit(benchmark::kMillisecond)->Iterations(1);
 void cgal_triangulate(benchmark::State& state, const soup& (*input)()) {
     const cgal_mesh base = hmira_bench::build<cgal_mesh>(input());
     for (auto _ : state) {
