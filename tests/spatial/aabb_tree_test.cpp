@@ -1,6 +1,7 @@
 // aabb_tree: closest_point and ray_intersect agree with a brute-force scan (written here with
 // other formulas: plane projection plus segment clamping, plane hit plus same-side tests) on
 // random triangle soups and on real meshes; an empty tree misses; bad positions are refused.
+// The quality tool (bench/quality): Hausdorff 0 to itself, the shift to a translated copy.
 
 #include <gtest/gtest.h>
 
@@ -12,6 +13,8 @@
 #include <hmira/algorithms/spatial/aabb_tree.hpp>
 #include <hmira/io/mesh_io.hpp>
 #include <hmira/meshes/halfedge_mesh.hpp>
+
+#include "quality/quality.hpp"
 
 namespace {
 
@@ -243,4 +246,60 @@ TEST(aabb_tree, non_finite_positions_are_refused_by_name) {
     EXPECT_NE(r.error().message.find("vertex 2"), std::string::npos) << r.error().message;
 }
 
+// A unit square in two triangles, lifted by z; a second copy shifted far enough along z that
+// every sample's nearest point is straight across.
+hmira_bench::quality::triangle_soup square(double z) {
+    return {{{0, 0, z}, {1, 0, z}, {1, 1, z}, {0, 1, z}}, {{0, 1, 2}, {0, 2, 3}}};
+}
+
+TEST(mesh_quality, hausdorff_of_a_surface_with_itself_is_zero) {
+    const soup s = random_soup(50, 9);
+    const hmira_bench::quality::triangle_soup q{s.points, s.triangles};
+    const auto h = hmira_bench::quality::hausdorff(q, q, 10, 20000);
+    EXPECT_LT(h.symmetric(), 1e-12);  // zero up to the rounding of the sample positions
+    EXPECT_GE(h.a_to_b.samples, 20000u);
+    EXPECT_GE(h.b_to_a.samples, 20000u);
+}
+
+TEST(mesh_quality, hausdorff_of_a_translated_copy_is_the_translation_length) {
+    const auto a = square(0), b = square(0.3);
+    const auto h = hmira_bench::quality::hausdorff(a, b, 10, 5000);
+    EXPECT_NEAR(h.symmetric(), 0.3, 1e-12);
+    EXPECT_NEAR(h.a_to_b.mean, 0.3, 1e-12);
+    EXPECT_NEAR(h.b_to_a.max, 0.3, 1e-12);
+    // Real mesh: each sample's distance to the shifted copy is at most the shift, and the
+    // vertices (on flat parts) reach almost all of it.
+    const auto dir = data_dir();
+    if (dir.empty() || !std::filesystem::exists(dir / "fandisk.off")) GTEST_SKIP() << "run scripts/test-data.sh first";
+    hmira::halfedge_mesh m;
+    ASSERT_TRUE(hmira::io::read_mesh(m, dir / "fandisk.off"));
+    const auto s = hmira_bench::quality::soup_of(m);
+    auto t = s;
+    const v3 shift{0.01, -0.02, 0.02};  // length 0.03 on a model about 5 units across
+    for (auto& p : t.points) p = p + shift;
+    const auto g = hmira_bench::quality::hausdorff(s, t, 10, 200000);
+    EXPECT_LE(g.symmetric(), 0.03 + 1e-12);
+    EXPECT_GT(g.symmetric(), 0.029);
+}
+
+TEST(mesh_quality, triangle_and_edge_statistics_have_the_known_values) {
+    // An equilateral triangle and a right isosceles one.
+    const hmira_bench::quality::triangle_soup s{
+        {{0, 0, 0}, {1, 0, 0}, {0.5, std::sqrt(3.0) / 2, 0}, {0, 0, 1}, {1, 0, 1}, {0, 1, 1}}, {{0, 1, 2}, {3, 4, 5}}};
+    const auto q = hmira_bench::quality::measure_triangles(s);
+    ASSERT_EQ(q.min_angles.size(), 2u);
+    EXPECT_NEAR(q.min_angles[0], 45, 1e-9);
+    EXPECT_NEAR(q.min_angles[1], 60, 1e-9);
+    EXPECT_NEAR(q.aspects[0], 1, 1e-9);
+    // Right isosceles with legs 1: R = sqrt(2)/2, r = (2 - sqrt(2))/2.
+    EXPECT_NEAR(q.aspects[1], (std::sqrt(2.0) / 2) / (2 - std::sqrt(2.0)), 1e-9);
+    const auto e = hmira_bench::quality::measure_edges(s);
+    EXPECT_EQ(e.count, 6u);
+    EXPECT_NEAR(e.max, std::sqrt(2.0), 1e-12);
+    EXPECT_NEAR(e.fraction_within(0.99, 1.01), 5.0 / 6.0, 1e-12);
+    const auto text = hmira_bench::quality::describe("two", s, 1.0);
+    EXPECT_NE(text.find("2 triangles"), std::string::npos) << text;
+}
+
 }  // namespace
+
