@@ -61,7 +61,7 @@ struct hausdorff_result {
     double symmetric() const { return std::max(a_to_b.max, b_to_a.max); }
 };
 
-/// Samples `from` with its vertices plus max(per_triangle, ceil(min_samples / triangles))
+/// Samples `from` with its vertices (those a triangle uses) plus max(per_triangle, ceil(min_samples / triangles))
 /// uniformly random points per triangle (fixed seed: the same input gives the same answer)
 /// and measures their distance to the surface in `to`. Runs on `threads` threads.
 inline one_sided sample_distance(const triangle_soup& from, const hmira::aabb_tree& to, std::size_t per_triangle = 10,
@@ -76,6 +76,9 @@ inline one_sided sample_distance(const triangle_soup& from, const hmira::aabb_tr
         std::size_t n = 0;
     };
     std::vector<partial> parts(threads);
+    // Only the vertices a triangle uses: a model may keep deleted vertices below its bound.
+    std::vector<char> used(from.points.size(), 0);
+    for (const auto& tri : from.triangles) used[tri[0]] = used[tri[1]] = used[tri[2]] = 1;
     auto work = [&](unsigned t) {
         partial& p = parts[t];
         auto add = [&](const vec3<double>& q) {
@@ -96,7 +99,8 @@ inline one_sided sample_distance(const triangle_soup& from, const hmira::aabb_tr
                 add(a + (b - a) * u + (c - a) * v);
             }
         }
-        for (std::size_t i = t; i < from.points.size(); i += threads) add(from.points[i]);
+        for (std::size_t i = t; i < from.points.size(); i += threads)
+            if (used[i]) add(from.points[i]);
     };
     std::vector<std::thread> pool;
     for (unsigned t = 1; t < threads; ++t) pool.emplace_back(work, t);
@@ -204,7 +208,10 @@ inline std::string describe(const char* label, const triangle_soup& s, double ta
     const auto e = measure_edges(s);
     std::string out;
     char line[512];
-    std::snprintf(line, sizeof line, "%s: %zu vertices, %zu triangles, %zu edges\n", label, s.points.size(),
+    std::vector<char> used(s.points.size(), 0);
+    for (const auto& t : s.triangles) used[t[0]] = used[t[1]] = used[t[2]] = 1;
+    const auto vertices = std::size_t(std::count(used.begin(), used.end(), 1));
+    std::snprintf(line, sizeof line, "%s: %zu vertices, %zu triangles, %zu edges\n", label, vertices,
                   s.triangles.size(), e.count);
     out += line;
     std::snprintf(line, sizeof line, "  min angle (deg): min %.2f  p1 %.2f  p5 %.2f  median %.2f  max %.2f\n",
