@@ -335,8 +335,10 @@ private:
 /// the vertex); errc::unsupported for polygon input on a model that cannot triangulate
 /// (triangles only is fine), and for a cancellation ("decimate: cancelled"); the errors of
 /// triangulate_faces.
-/// Complexity O((V + E) log E) collapses and queue updates, each collapse O(d^2) for the
-/// valence d around it; plus O(V + E + F) for the copy when a progress callback is given.
+/// Complexity O(V + E + F) to set up plus O(E log E) to queue every edge; each collapse then
+/// costs O(d^2) for the checks and the refused neighbours (d the valence around it) and
+/// O(d log E) for the queue updates. Plus O(V + E + F) for the copy when a progress callback
+/// is given. Memory: 80 bytes of quadric and 1 byte of flags per vertex, about 24 bytes per edge.
 template <class M, class T = default_traits<M>>
     requires decimatable_mesh<M, T>
 [[nodiscard]] result<decimate_result> decimate(M& mesh, const decimate_options& options) {
