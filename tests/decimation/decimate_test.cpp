@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -256,6 +257,43 @@ TYPED_TEST(decimate_test, max_error_stops_before_any_collapse_that_exceeds_it) {
         auto s = hmira::decimate(coarse, {.max_error = 0.1});
         ASSERT_TRUE(s) << s.error().message;
         EXPECT_LT(s.value().faces, r.value().faces);
+    }
+}
+
+/// Longest edge over the height onto it, 1 for an equilateral triangle (computed here, not by
+/// the library).
+template <class M, class T = hmira::default_traits<M>>
+double worst_aspect_ratio(const M& m) {
+    double worst = 0;
+    for (auto f : T::faces(m)) {
+        std::vector<hmira::vec3<double>> p;
+        for (auto v : T::face_vertices(m, f)) {
+            const auto q = T::position(m, v);
+            p.push_back({double(q[0]), double(q[1]), double(q[2])});
+        }
+        const double area2 = hmira::norm(hmira::cross(p[1] - p[0], p[2] - p[0]));
+        const double longest = std::max({hmira::squared_norm(p[1] - p[0]), hmira::squared_norm(p[2] - p[1]), hmira::squared_norm(p[0] - p[2])});
+        worst = std::max(worst, longest / area2 * std::sqrt(3.0) / 2);
+    }
+    return worst;
+}
+
+TYPED_TEST(decimate_test, no_face_ends_thinner_than_the_aspect_limit) {
+    using M = TypeParam;
+    HMIRA_REQUIRE_TRIANGLE_OPS(M)
+    else {
+        using T = hmira::default_traits<M>;
+        M m = mesh_from<M>(bumpy_torus(16 * scale, 10 * scale, false, 13));
+        const double before = worst_aspect_ratio(m);
+        ASSERT_LT(before, 4.0);
+        M free = m;
+        ASSERT_TRUE(hmira::decimate(free, {.target_ratio = 0.1}));
+        EXPECT_GT(worst_aspect_ratio(free), 4.0);  // the limit below has work to do
+        auto r = hmira::decimate(m, {.target_ratio = 0.1, .max_normal_angle = 180, .max_aspect_ratio = 4});
+        ASSERT_TRUE(r) << r.error().message;
+        EXPECT_TRUE(valid_topology(m));
+        EXPECT_LE(worst_aspect_ratio(m), 4.0 + 1e-9);
+        EXPECT_LT(T::face_count(m), T::face_count(mesh_from<M>(bumpy_torus(16 * scale, 10 * scale, false, 13))) / 2);
     }
 }
 
