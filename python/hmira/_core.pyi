@@ -203,6 +203,19 @@ class MeshCore:
         Taubin lambda/mu smoothing (keeps the volume); returns the number of vertices free to move.
         """
 
+    def decimate(self, *, target_faces: int | None = None, target_ratio: float | None = None, max_error: float | None = None, keep_boundary: bool = True, max_normal_angle: float = 90.0, max_aspect_ratio: float = float('inf'), locked_vertices: Sequence[int] | None = None) -> dict:
+        """
+        Quadric error decimation (Garland-Heckbert) until the first target reached: target_faces, target_ratio
+        (of the faces) or max_error (a distance). Polygons are triangulated first. Boundary vertices stay
+        unless keep_boundary=False; locked_vertices never move. Returns {'faces', 'vertices', 'collapses',
+        'triangulated', 'stopped_by', 'error', 'note'}; vertices are renumbered densely afterwards.
+
+        >>> m = hmira.Mesh([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [0.5, 0.5, 0]],
+        ...                [[0, 1, 4], [1, 2, 4], [2, 3, 4], [3, 0, 4]])
+        >>> m.decimate(target_faces=2)['faces']
+        2
+        """
+
     def write(self, path: str, *, ascii: bool = False, big_endian: bool = False, float32: bool = False, attributes: bool = True) -> None:
         """
         Write the mesh to a file (OBJ, OFF, PLY or STL by extension), atomically.

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include <hmira/algorithms/decimation/decimate.hpp>
 #include <hmira/algorithms/editing/editing.hpp>
 #include <hmira/algorithms/euler/euler.hpp>
 #include <hmira/algorithms/geometry/vertex_normals.hpp>
@@ -521,6 +522,44 @@ void bind_everyday(nb::class_<py_mesh>& c) {
          "Taubin lambda/mu smoothing (keeps the volume); returns the number of vertices free to move.");
 }
 
+// ---- decimate (issue 19): one self-contained block --------------------------------------------
+void bind_decimate(nb::class_<py_mesh>& c) {
+    c.def("decimate", [](py_mesh& s, std::optional<std::size_t> target_faces, std::optional<double> target_ratio,
+                         std::optional<double> max_error, bool keep_boundary, double max_normal_angle, double max_aspect_ratio,
+                         std::optional<std::vector<long long>> locked_vertices) {
+            hmira::decimate_options o{.target_faces = target_faces, .target_ratio = target_ratio, .max_error = max_error,
+                                      .keep_boundary = keep_boundary, .max_normal_angle = max_normal_angle,
+                                      .max_aspect_ratio = max_aspect_ratio, .locked_vertices = fixed_arg(s.get(), locked_vertices, "decimate")};
+            const auto r = change_without_gil(s, true, [&](halfedge_mesh& m, hmira::progress_function progress) {
+                o.progress = std::move(progress);  // Ctrl-C cancels; decimate then restores the mesh
+                auto done = hmira::decimate(m, o);
+                if (done) compact(m);
+                return done;
+            });
+            nb::dict d;
+            d["faces"] = r.faces;
+            d["vertices"] = r.vertices;
+            d["collapses"] = r.collapses;
+            d["triangulated"] = r.triangulated;
+            d["stopped_by"] = r.stopped_by == hmira::decimate_stop::target_faces ? "target_faces"
+                              : r.stopped_by == hmira::decimate_stop::max_error ? "max_error"
+                                                                                 : "constraints";
+            d["error"] = r.error;
+            d["note"] = r.note;
+            return d;
+        }, nb::kw_only(), nb::arg("target_faces") = nb::none(), nb::arg("target_ratio") = nb::none(), nb::arg("max_error") = nb::none(),
+        nb::arg("keep_boundary") = true, nb::arg("max_normal_angle") = 90.0,
+        nb::arg("max_aspect_ratio") = std::numeric_limits<double>::infinity(), nb::arg("locked_vertices") = nb::none(),
+        "Quadric error decimation (Garland-Heckbert) until the first target reached: target_faces, target_ratio\n"
+        "(of the faces) or max_error (a distance). Polygons are triangulated first. Boundary vertices stay\n"
+        "unless keep_boundary=False; locked_vertices never move. Returns {'faces', 'vertices', 'collapses',\n"
+        "'triangulated', 'stopped_by', 'error', 'note'}; vertices are renumbered densely afterwards.\n\n"
+        ">>> m = hmira.Mesh([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [0.5, 0.5, 0]],\n"
+        "...                [[0, 1, 4], [1, 2, 4], [2, 3, 4], [3, 0, 4]])\n"
+        ">>> m.decimate(target_faces=2)['faces']\n"
+        "2");
+}
+
 constexpr const char* MESH_DOC = R"doc(A polygon mesh backed by hmira's half-edge mesh (the compiled part of
 hmira.Mesh; use hmira.Mesh, which adds the checked `vertices` view).)doc";
 
@@ -547,6 +586,7 @@ void bind_mesh(nb::module_& m) {
 
     auto core = nb::class_<py_mesh>(m, "MeshCore", MESH_DOC, nb::is_weak_referenceable());
     bind_everyday(core);
+    bind_decimate(core);
     core
         .def(nb::init<>(), "An empty mesh.")
         .def("_set_polygons", &set_polygons, nb::arg("vertices"), nb::arg("faces"),

@@ -35,6 +35,7 @@
 #include <hmira/algorithms/holes/fill_hole.hpp>
 #include <hmira/algorithms/primitives/primitives.hpp>
 #include <hmira/algorithms/smoothing/laplacian_smooth.hpp>
+#include <hmira/algorithms/decimation/decimate.hpp>
 #include <hmira/algorithms/subdivision/catmull_clark.hpp>
 #include <hmira/algorithms/subdivision/loop.hpp>
 #include <hmira/algorithms/triangle/triangle.hpp>
@@ -171,6 +172,8 @@ HMIRA_ROW(row_fill_holes, "fill_holes", "algorithms/holes/fill_hole.hpp", hmira:
 HMIRA_ROW(row_loop, "loop_subdivide", "algorithms/subdivision/loop.hpp", hmira::loop_subdividable_mesh, (M & m), hmira::loop_subdivide<M, T>(m));
 HMIRA_ROW(row_catmull_clark, "catmull_clark_subdivide", "algorithms/subdivision/catmull_clark.hpp", hmira::catmull_clark_subdividable_mesh,
           (M & m), hmira::catmull_clark_subdivide<M, T>(m));
+HMIRA_ROW(row_decimate, "decimate (quadric error)", "algorithms/decimation/decimate.hpp", hmira::decimatable_mesh, (M & m),
+          hmira::decimate<M, T>(m, {.target_faces = 10}));
 HMIRA_ROW(row_smooth, "laplacian_smooth, taubin_smooth", "algorithms/smoothing/laplacian_smooth.hpp", hmira::smoothable_mesh, (M & m),
           hmira::taubin_smooth<M, T>(m));
 HMIRA_ROW(row_marching_cubes, "marching_cubes (into the mesh)", "algorithms/conversion/marching_cubes.hpp", hmira::mesh_builder,
@@ -194,7 +197,7 @@ using rows = row_list<row_triangle_solids, row_polygon_solids, row_torus, row_gr
                       row_vertex_normals, row_euler, row_euler_ring, row_split_vertex, row_add_vertex_face, row_edge_primitives,
                       row_remove_face, row_remove_vertex, row_truncate, row_bevel, row_extrude, row_flip_edge, row_split_edge,
                       row_split_face, row_collapse_edge, row_face_triangles, row_triangulate_faces, row_fill_hole, row_fill_holes,
-                      row_loop, row_catmull_clark, row_smooth, row_marching_cubes, row_voxelize, row_delaunay, row_read,
+                      row_loop, row_catmull_clark, row_decimate, row_smooth, row_marching_cubes, row_voxelize, row_delaunay, row_read,
                       row_write, row_adapt_brute, row_adapt_indexed>;
 
 // ---- the capabilities of concepts.hpp: one row each -------------------------------------------
@@ -621,6 +624,13 @@ void run_everyday_claims() {
         auto r = hmira::catmull_clark_subdivide(m);
         ASSERT_TRUE(r) << title << ": " << r.error().message;
         EXPECT_EQ(vef_counts(m), (counts_t{62, 120, 60})) << title;  // V + E + F, 2E + 3F, 3F
+        EXPECT_TRUE(valid_closed(m));
+    }
+    if constexpr (row_decimate::supported<M>) {
+        auto m = icosahedron<M>();
+        auto r = hmira::decimate(m, {.target_faces = 16});
+        ASSERT_TRUE(r) << title << ": " << r.error().message;
+        EXPECT_EQ(vef_counts(m), (counts_t{10, 24, 16})) << title;  // two collapses, each -1 V, -3 E, -2 F
         EXPECT_TRUE(valid_closed(m));
     }
     if constexpr (row_smooth::supported<M>) {
