@@ -3,7 +3,7 @@
 // least 95% of the edges; the result passes validate() and the model's own checker; vertices
 // stay on the input surface; boundaries, feature edges found by angle and user-selected feature
 // edges keep their vertices and their polylines exactly; bad options and cancellation change
-// nothing. Real meshes (elephant, fandisk, bunny) on halfedge_mesh.
+// nothing. Real meshes (elephant, fandisk, bunny) on halfedge_mesh. `hmira remesh` end to end.
 
 #include <gtest/gtest.h>
 
@@ -23,6 +23,13 @@
 #include <hmira/io/mesh_io.hpp>
 
 #include "triangle/triangle_support.hpp"
+
+#ifdef HMIRA_CLI
+#include <hmira/meshes/face_vertex_mesh.hpp>
+
+#include "io/io_support.hpp"
+#include "support/cli_runner.hpp"
+#endif
 
 namespace {
 
@@ -401,5 +408,52 @@ TEST(remeshing_real_meshes, edges_reach_the_band_and_features_stay_on_real_meshe
         EXPECT_LT(worst, 1e-9 * (1 + L));
     }
 }
+
+#ifdef HMIRA_CLI
+hmira_test::run_result hmira_cli(const hmira_test::scratch_dir& dir, const std::string& args) {
+    return hmira_test::run_cli(HMIRA_CLI, dir, args);
+}
+
+/// A 6 x 6 square of triangles as OFF text.
+std::string square_off() {
+    const auto g = grid(6, 6, true);
+    std::string s = "OFF\n" + std::to_string(g.points.size()) + " " + std::to_string(g.faces.size()) + " 0\n";
+    for (const auto& p : g.points) s += std::to_string(p.x) + " " + std::to_string(p.y) + " 0\n";
+    for (const auto& f : g.faces) s += "3 " + std::to_string(f[0]) + " " + std::to_string(f[1]) + " " + std::to_string(f[2]) + "\n";
+    return s;
+}
+
+TEST(cli_remesh, remeshes_to_the_length_and_keeps_the_square) {
+    hmira_test::scratch_dir dir;
+    hmira_test::write_bytes(dir / "square.off", square_off());
+    const auto r = hmira_cli(dir, "remesh square.off fine.off --length 0.4 -k 4");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.out.find("remeshed to edge length 0.4"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("24 feature edges kept"), std::string::npos) << r.out;
+    hmira::halfedge_mesh m;
+    ASSERT_TRUE(hmira::io::read_mesh(m, dir / "fine.off"));
+    EXPECT_TRUE(hmira_test::is_valid(m));
+    EXPECT_GE(fraction_in_band(m, 0.4), 0.9);
+    const auto positions = all_positions(m);
+    for (double c : {0.0, 6.0})
+        for (double d : {0.0, 6.0}) EXPECT_TRUE(positions.count({c, d, 0.0}));
+}
+
+TEST(cli_remesh, bad_options_and_polygons_are_refused_and_nothing_is_written) {
+    hmira_test::scratch_dir dir;
+    hmira_test::write_bytes(dir / "square.off", square_off());
+    for (const char* args : {"--length nan", "--length -1", "--length 0", "--length inf", "--features 200", "-k 0",
+                             "--length 1e-9"}) {
+        const auto r = hmira_cli(dir, std::string("remesh square.off out.off ") + args);
+        EXPECT_EQ(r.code, 2) << args << ": " << r.err;
+        EXPECT_FALSE(std::filesystem::exists(dir / "out.off")) << args;
+    }
+    hmira_test::write_bytes(dir / "quad.off", "OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n");
+    const auto q = hmira_cli(dir, "remesh quad.off out.off");
+    EXPECT_EQ(q.code, 1) << q.err;
+    EXPECT_NE(q.err.find("not a triangle"), std::string::npos) << q.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "out.off"));
+}
+#endif
 
 }  // namespace
