@@ -375,7 +375,7 @@ TEST(remeshing_real_meshes, edges_reach_the_band_and_features_stay_on_real_meshe
         const char* name;
         std::optional<double> features;
     };
-#ifdef HMIRA_SANITIZE
+#ifdef HMIRA_SANITIZER_BUILD
     const run runs[] = {{"elephant.off", std::nullopt}, {"fandisk.off", 45.0}};
 #else
     const run runs[] = {{"elephant.off", std::nullopt}, {"fandisk.off", 45.0}, {"bunny00.off", std::nullopt}};
