@@ -216,6 +216,18 @@ class MeshCore:
         2
         """
 
+    def remesh(self, *, target_edge_length: float | None = None, iterations: int = 5, feature_angle: float | None = None, feature_edges: Sequence[int] | None = None) -> dict:
+        """
+        Isotropic remeshing of a triangle mesh towards target_edge_length (default: the mean edge length):
+        `iterations` rounds of split, collapse, flip and tangential relaxation with projection onto the input.
+        The boundary is kept, and so are edges sharper than feature_angle degrees and the edges listed in
+        feature_edges (edge indices). Returns {'splits', 'collapses', 'flips', 'feature_edges'}.
+
+        >>> m = hmira.Mesh([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]], [[0, 1, 2], [0, 2, 3]])
+        >>> m.remesh(target_edge_length=0.25)['feature_edges']
+        4
+        """
+
     def write(self, path: str, *, ascii: bool = False, big_endian: bool = False, float32: bool = False, attributes: bool = True) -> None:
         """
         Write the mesh to a file (OBJ, OFF, PLY or STL by extension), atomically.

@@ -18,6 +18,7 @@
 #include <hmira/algorithms/euler/euler.hpp>
 #include <hmira/algorithms/geometry/vertex_normals.hpp>
 #include <hmira/algorithms/holes/fill_hole.hpp>
+#include <hmira/algorithms/remeshing/isotropic_remeshing.hpp>
 #include <hmira/algorithms/smoothing/laplacian_smooth.hpp>
 #include <hmira/algorithms/subdivision/catmull_clark.hpp>
 #include <hmira/algorithms/subdivision/loop.hpp>
@@ -560,6 +561,51 @@ void bind_decimate(nb::class_<py_mesh>& c) {
         "2");
 }
 
+// ---- Isotropic remeshing (issue 19): Mesh.remesh, on a copy (the library works on one) that
+// replaces the mesh on success; Ctrl-C cancels through the progress hook.
+void bind_remesh(nb::class_<py_mesh>& c) {
+    c.def("remesh", [](py_mesh& s, std::optional<double> target_edge_length, std::size_t iterations, std::optional<double> feature_angle,
+                       std::optional<std::vector<long long>> feature_edges) {
+             std::vector<std::size_t> features;
+             if (feature_edges)
+                 for (long long e : *feature_edges) {
+                     if (e < 0) value_error("remesh: feature_edges names edge " + std::to_string(e) + ", which does not exist");
+                     features.push_back(std::size_t(e));
+                 }
+             const auto r = change_without_gil(s, true, [&](halfedge_mesh& m, hmira::progress_function progress) {
+                 double length = target_edge_length.value_or(0.0);
+                 if (!target_edge_length) {  // the mean edge length
+                     using T = hmira::default_traits<halfedge_mesh>;
+                     double sum = 0;
+                     for (auto e : T::edges(m)) {
+                         const auto ends = T::edge_vertices(m, e);
+                         sum += hmira::norm(m.position(ends[0]) - m.position(ends[1]));
+                     }
+                     length = m.edge_count() ? sum / double(m.edge_count()) : 1.0;
+                 }
+                 auto done = hmira::isotropic_remeshing(m, {.target_edge_length = length, .iterations = iterations,
+                                                            .feature_angle = feature_angle, .feature_edges = features,
+                                                            .progress = std::move(progress)});
+                 if (done) compact(m);
+                 return done;
+             });
+             nb::dict d;
+             d["splits"] = r.splits;
+             d["collapses"] = r.collapses;
+             d["flips"] = r.flips;
+             d["feature_edges"] = r.feature_edges;
+             return d;
+         }, nb::kw_only(), nb::arg("target_edge_length") = nb::none(), nb::arg("iterations") = 5, nb::arg("feature_angle") = nb::none(),
+         nb::arg("feature_edges") = nb::none(),
+         "Isotropic remeshing of a triangle mesh towards target_edge_length (default: the mean edge length):\n"
+         "`iterations` rounds of split, collapse, flip and tangential relaxation with projection onto the input.\n"
+         "The boundary is kept, and so are edges sharper than feature_angle degrees and the edges listed in\n"
+         "feature_edges (edge indices). Returns {'splits', 'collapses', 'flips', 'feature_edges'}.\n\n"
+         ">>> m = hmira.Mesh([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]], [[0, 1, 2], [0, 2, 3]])\n"
+         ">>> m.remesh(target_edge_length=0.25)['feature_edges']\n"
+         "4");
+}
+
 constexpr const char* MESH_DOC = R"doc(A polygon mesh backed by hmira's half-edge mesh (the compiled part of
 hmira.Mesh; use hmira.Mesh, which adds the checked `vertices` view).)doc";
 
@@ -587,6 +633,9 @@ void bind_mesh(nb::module_& m) {
     auto core = nb::class_<py_mesh>(m, "MeshCore", MESH_DOC, nb::is_weak_referenceable());
     bind_everyday(core);
     bind_decimate(core);
+}
+
+    bind_remesh(core);
     core
         .def(nb::init<>(), "An empty mesh.")
         .def("_set_polygons", &set_polygons, nb::arg("vertices"), nb::arg("faces"),

@@ -34,8 +34,10 @@
 #include <hmira/algorithms/orientation/flip_normals.hpp>
 #include <hmira/algorithms/holes/fill_hole.hpp>
 #include <hmira/algorithms/primitives/primitives.hpp>
+#include <hmira/algorithms/remeshing/isotropic_remeshing.hpp>
 #include <hmira/algorithms/smoothing/laplacian_smooth.hpp>
 #include <hmira/algorithms/decimation/decimate.hpp>
+#include <hmira/algorithms/spatial/aabb_tree.hpp>
 #include <hmira/algorithms/subdivision/catmull_clark.hpp>
 #include <hmira/algorithms/subdivision/loop.hpp>
 #include <hmira/algorithms/triangle/triangle.hpp>
@@ -176,6 +178,10 @@ HMIRA_ROW(row_decimate, "decimate (quadric error)", "algorithms/decimation/decim
           hmira::decimate<M, T>(m, {.target_faces = 10}));
 HMIRA_ROW(row_smooth, "laplacian_smooth, taubin_smooth", "algorithms/smoothing/laplacian_smooth.hpp", hmira::smoothable_mesh, (M & m),
           hmira::taubin_smooth<M, T>(m));
+HMIRA_ROW(row_remesh, "isotropic_remeshing", "algorithms/remeshing/isotropic_remeshing.hpp", hmira::remeshable_mesh, (M & m),
+          hmira::isotropic_remeshing<M, T>(m, {.target_edge_length = 1}));
+HMIRA_ROW(row_aabb_tree, "aabb_tree_from_mesh (closest_point, ray_intersect)", "algorithms/spatial/aabb_tree.hpp",
+          hmira::aabb_tree_source_mesh, (const M& m), hmira::aabb_tree_from_mesh<M, T>(m));
 HMIRA_ROW(row_marching_cubes, "marching_cubes (into the mesh)", "algorithms/conversion/marching_cubes.hpp", hmira::mesh_builder,
           (M & m, const hmira::dense_grid<float>& g), hmira::marching_cubes<M, T>(m, g));
 HMIRA_ROW(row_voxelize, "voxelize", "algorithms/conversion/voxelize.hpp", hmira::voxelize_mesh, (const M& m, const hmira::grid_geometry& g),
@@ -197,7 +203,7 @@ using rows = row_list<row_triangle_solids, row_polygon_solids, row_torus, row_gr
                       row_vertex_normals, row_euler, row_euler_ring, row_split_vertex, row_add_vertex_face, row_edge_primitives,
                       row_remove_face, row_remove_vertex, row_truncate, row_bevel, row_extrude, row_flip_edge, row_split_edge,
                       row_split_face, row_collapse_edge, row_face_triangles, row_triangulate_faces, row_fill_hole, row_fill_holes,
-                      row_loop, row_catmull_clark, row_decimate, row_smooth, row_marching_cubes, row_voxelize, row_delaunay, row_read,
+                      row_loop, row_catmull_clark, row_decimate, row_smooth, row_remesh, row_aabb_tree, row_marching_cubes, row_voxelize, row_delaunay, row_read,
                       row_write, row_adapt_brute, row_adapt_indexed>;
 
 // ---- the capabilities of concepts.hpp: one row each -------------------------------------------
@@ -657,6 +663,27 @@ void run_everyday_claims() {
         EXPECT_GT(radius(t), 0.9 * r0) << title;  // 0.724 after the lambda step, 0.936 after mu
         EXPECT_LT(radius(t), r0) << title;
         EXPECT_TRUE(valid_closed(t));
+    }
+    if constexpr (row_remesh::supported<M>) {
+        // The icosahedron's edges are about 1.05 long; a target of 0.5 splits them all.
+        auto m = icosahedron<M>();
+        auto r = hmira::isotropic_remeshing(m, {.target_edge_length = 0.5, .iterations = 2});
+        ASSERT_TRUE(r) << title << ": " << r.error().message;
+        EXPECT_GT(T::face_count(m), 20u) << title;
+        EXPECT_TRUE(valid_closed(m));
+    }
+    if constexpr (row_aabb_tree::supported<M>) {
+        auto m = icosahedron<M>();
+        auto tree = hmira::aabb_tree_from_mesh(m);
+        ASSERT_TRUE(tree) << title;
+        EXPECT_EQ(tree->size(), 20u) << title;
+        // A vertex is on the surface; the centre is inside, nearer a face than any vertex.
+        const auto p = T::position(m, *T::vertices(m).begin());
+        const hmira::vec3<double> corner{double(p[0]), double(p[1]), double(p[2])};
+        EXPECT_EQ(tree->closest_point(corner).distance, 0.0) << title;
+        const double centre = tree->closest_point({0, 0, 0}).distance;
+        EXPECT_GT(centre, 0.5 * hmira::norm(corner)) << title;
+        EXPECT_LT(centre, hmira::norm(corner)) << title;
     }
 }
 

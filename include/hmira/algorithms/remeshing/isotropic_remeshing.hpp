@@ -7,6 +7,7 @@
 #include <concepts>
 #include <cstddef>
 #include <optional>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,15 @@
 #include "detail/remesher.hpp"
 
 namespace hmira {
+
+namespace detail::remeshing {
+/// A number as a message shows it: 6 significant digits, exponent when needed ("1e-07").
+inline std::string number(double x) {
+    std::ostringstream s;
+    s << x;
+    return s.str();
+}
+}  // namespace detail::remeshing
 
 /// Options of isotropic_remeshing.
 struct isotropic_remeshing_options {
@@ -84,10 +94,10 @@ template <class M, class T = default_traits<M>>
     const double L = options.target_edge_length;
     if (!(std::isfinite(L) && L > 0))
         return fail(errc::invalid_argument, "isotropic_remeshing: option target_edge_length must be a finite number > 0, got " +
-                                                std::to_string(L));
+                                                detail::remeshing::number(L));
     if (options.feature_angle && !(*options.feature_angle >= 0 && *options.feature_angle <= 180))
         return fail(errc::invalid_argument, "isotropic_remeshing: option feature_angle must lie in [0, 180] degrees, got " +
-                                                std::to_string(*options.feature_angle));
+                                                detail::remeshing::number(*options.feature_angle));
     for (auto v : T::vertices(mesh))
         if (!detail::triangle_ops::finite(detail::triangle_ops::position_of<M, T>(mesh, v)))
             return fail(errc::invalid_argument,
@@ -108,8 +118,8 @@ template <class M, class T = default_traits<M>>
     }
     const double expected_faces = area / (std::sqrt(3.0) / 4 * L * L);
     if (!(expected_faces <= double(options.max_faces)))
-        return fail(errc::invalid_argument, "isotropic_remeshing: option target_edge_length " + std::to_string(L) +
-                                                " would make about " + std::to_string(expected_faces) +
+        return fail(errc::invalid_argument, "isotropic_remeshing: option target_edge_length " + detail::remeshing::number(L) +
+                                                " would make about " + detail::remeshing::number(expected_faces) +
                                                 " triangles, more than max_faces " + std::to_string(options.max_faces));
     std::vector<char> feature(T::edge_index_bound(mesh), 0);
     for (const auto i : options.feature_edges) {

@@ -310,13 +310,17 @@ private:
     std::vector<node> nodes_;
 };
 
+/// A mesh an aabb_tree can be built from: face loops, positions, dense vertex and face indices.
+template <class M, class T = default_traits<M>>
+concept aabb_tree_source_mesh =
+    face_vertex_range_mesh<M, T> && positioned_mesh<M, T> && vertex_index_mesh<M, T> && face_index_mesh<M, T>;
+
 /// An aabb_tree over the faces of a mesh; a polygon face is cut into a fan from its first
 /// vertex, every piece carrying the face's index T::face_index(mesh, f).
 /// Errors: errc::invalid_argument naming the vertex for a non-finite position.
 /// Complexity O(n log n) for n triangles.
 template <class M, class T = default_traits<M>>
-    requires face_vertex_range_mesh<M, T> && positioned_mesh<M, T> && vertex_index_mesh<M, T> &&
-             face_index_mesh<M, T>
+    requires aabb_tree_source_mesh<M, T>
 [[nodiscard]] result<aabb_tree> aabb_tree_from_mesh(const M& mesh) {
     std::vector<vec3<double>> points(T::vertex_index_bound(mesh));
     for (auto v : T::vertices(mesh)) {

@@ -1,0 +1,459 @@
+// isotropic_remeshing on every half-edge model (halfedge_mesh, winged_edge_mesh, OpenMesh
+// TriMesh and PolyMesh, CGAL Surface_mesh): edge lengths reach [4/5, 4/3] of the target for at
+// least 95% of the edges; the result passes validate() and the model's own checker; vertices
+// stay on the input surface; boundaries, feature edges found by angle and user-selected feature
+// edges keep their vertices and their polylines exactly; bad options and cancellation change
+// nothing. Real meshes (elephant, fandisk, bunny) on halfedge_mesh. `hmira remesh` end to end.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <limits>
+#include <map>
+#include <numbers>
+#include <optional>
+#include <set>
+
+#include <hmira/algorithms/generators/platonic_solids.hpp>
+#include <hmira/algorithms/remeshing/isotropic_remeshing.hpp>
+#include <hmira/algorithms/subdivision/loop.hpp>
+#include <hmira/io/mesh_io.hpp>
+
+#include "triangle/triangle_support.hpp"
+
+#ifdef HMIRA_CLI
+#include <hmira/meshes/face_vertex_mesh.hpp>
+
+#include "io/io_support.hpp"
+#include "support/cli_runner.hpp"
+#endif
+
+namespace {
+
+using namespace hmira_test;
+using v3 = hmira::vec3<double>;
+
+#define HMIRA_REQUIRE_REMESHABLE(M)                                                                  \
+    if constexpr (!hmira::remeshable_mesh<M> || !::hmira_test::indexed_halfedge_model<M>) {        \
+        GTEST_SKIP() << "not a remeshable_mesh";                                                     \
+        return;                                                                                      \
+    }
+
+template <class M>
+class remeshing_test : public ::testing::Test {};
+TYPED_TEST_SUITE(remeshing_test, all_models);
+
+template <class M, class T = hmira::default_traits<M>>
+v3 at(const M& m, typename T::vertex_handle v) {
+    const auto p = T::position(m, v);
+    return {double(p[0]), double(p[1]), double(p[2])};
+}
+
+/// Fraction of the edges with length in [4/5 L, 4/3 L], measured here.
+template <class M, class T = hmira::default_traits<M>>
+double fraction_in_band(const M& m, double L) {
+    std::size_t in = 0, all = 0;
+    for (auto e : T::edges(m)) {
+        const auto ends = T::edge_vertices(m, e);
+        const double l = hmira::norm(at(m, ends[0]) - at(m, ends[1]));
+        in += l >= 0.8 * L && l <= 4.0 / 3.0 * L;
+        ++all;
+    }
+    return all ? double(in) / double(all) : 0;
+}
+
+template <class M, class T = hmira::default_traits<M>>
+bool all_triangles(const M& m) {
+    for (auto f : T::faces(m))
+        if (std::ranges::distance(T::face_vertices(m, f)) != 3) return false;
+    return true;
+}
+
+/// Positions of the vertices on a boundary edge.
+template <class M, class T = hmira::default_traits<M>>
+std::set<std::array<double, 3>> boundary_positions(const M& m) {
+    std::set<std::array<double, 3>> out;
+    for (auto h : T::halfedges(m))
+        if (T::face(m, h) == T::null_face()) {
+            const auto p = at(m, T::target(m, h));
+            out.insert({p.x, p.y, p.z});
+        }
+    return out;
+}
+
+template <class M, class T = hmira::default_traits<M>>
+std::set<std::array<double, 3>> all_positions(const M& m) {
+    std::set<std::array<double, 3>> out;
+    for (auto v : T::vertices(m)) {
+        const auto p = at(m, v);
+        out.insert({p.x, p.y, p.z});
+    }
+    return out;
+}
+
+template <class M, class T = hmira::default_traits<M>>
+M unit_sphere() {
+    M m;
+    EXPECT_TRUE(hmira::generate_icosahedron(m));
+    EXPECT_TRUE(hmira::loop_subdivide(m, {.levels = 2}));
+    for (auto v : T::vertices(m)) {
+        auto p = T::position(m, v);
+        const auto l = std::sqrt(double(hmira::dot(p, p)));
+        T::set_position(m, v, p / typename T::scalar(l));
+    }
+    return m;
+}
+
+/// The unit cube [0, 1]^3 as 12 triangles, wound outward.
+face_list cube() {
+    face_list c;
+    for (int i = 0; i < 8; ++i) c.points.push_back({double(i & 1), double((i >> 1) & 1), double((i >> 2) & 1)});
+    const std::size_t quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+    for (const auto& q : quads) {
+        c.faces.push_back({q[0], q[1], q[2]});
+        c.faces.push_back({q[0], q[2], q[3]});
+    }
+    return c;
+}
+
+/// Whether the output vertices lying on segment [a, b] (within eps) form a chain of output
+/// edges from a to b, with a and b among them.
+template <class M, class T = hmira::default_traits<M>>
+::testing::AssertionResult polyline_intact(const M& m, const v3& a, const v3& b, double eps) {
+    std::vector<std::pair<double, typename T::vertex_handle>> on;
+    const v3 d = b - a;
+    const double l2 = hmira::dot(d, d);
+    for (auto v : T::vertices(m)) {
+        const v3 p = at(m, v);
+        const double t = hmira::dot(p - a, d) / l2;
+        if (t < -eps || t > 1 + eps) continue;
+        if (hmira::norm(a + d * t - p) <= eps) on.push_back({t, v});
+    }
+    std::sort(on.begin(), on.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+    if (on.size() < 2 || std::abs(on.front().first) > eps || std::abs(on.back().first - 1) > eps)
+        return ::testing::AssertionFailure() << "an end of the polyline is gone (" << on.size() << " vertices on it)";
+    for (std::size_t i = 0; i + 1 < on.size(); ++i)
+        if (hmira_test::find_halfedge<M, T>(m, on[i].second, on[i + 1].second) == T::null_halfedge())
+            return ::testing::AssertionFailure() << "vertices " << i << " and " << i + 1 << " on the polyline are not joined";
+    return ::testing::AssertionSuccess();
+}
+
+TYPED_TEST(remeshing_test, a_sphere_reaches_the_target_length_and_stays_on_the_surface) {
+    using M = TypeParam;
+    HMIRA_REQUIRE_REMESHABLE(M)
+    else {
+        using T = hmira::default_traits<M>;
+        M m = unit_sphere<M>();
+        const double L = 0.1;
+        auto r = hmira::isotropic_remeshing(m, {.target_edge_length = L, .iterations = 5});
+        ASSERT_TRUE(r) << r.error().message;
+        EXPECT_GT(r->splits, 0u);
+        EXPECT_GT(r->collapses, 0u);
+        EXPECT_GT(r->flips, 0u);
+        EXPECT_EQ(r->feature_edges, 0u);
+        EXPECT_TRUE(hmira_test::is_valid(m));
+        EXPECT_TRUE(natively_valid(m));
+        EXPECT_TRUE(all_triangles(m));
+        EXPECT_EQ(chi(m), 2);
+        EXPECT_GE(fraction_in_band(m, L), 0.95);
+        // Area 4 pi over an equilateral triangle of side L: about 2900 triangles.
+        EXPECT_GT(T::face_count(m), 2000u);
+        EXPECT_LT(T::face_count(m), 4000u);
+        // On the input polytope (320 triangles inscribed in the unit sphere).
+        for (auto v : T::vertices(m)) {
+            const double radius = hmira::norm(at(m, v));
+            EXPECT_GT(radius, 0.97);
+            EXPECT_LT(radius, 1 + 1e-6);
+        }
+    }
+}
+
+TYPED_TEST(remeshing_test, an_open_grid_keeps_its_boundary_polyline_and_its_plane) {
+    using M = TypeParam;
+    HMIRA_REQUIRE_REMESHABLE(M)
+    else {
+        using T = hmira::default_traits<M>;
+        M m = mesh_from<M>(grid(6, 6, true));
+        const auto before = boundary_positions(m);
+        const double L = 0.4;
+        auto r = hmira::isotropic_remeshing(m, {.target_edge_length = L, .iterations = 4});
+        ASSERT_TRUE(r) << r.error().message;
+        EXPECT_EQ(r->feature_edges, 24u);  // the boundary
+        EXPECT_TRUE(hmira_test::is_valid(m));
+        EXPECT_TRUE(natively_valid(m));
+        EXPECT_EQ(chi(m), 1);
+        const auto after = boundary_positions(m);
+        for (const auto& p : before) EXPECT_TRUE(after.count(p)) << p[0] << " " << p[1];
+        // Only the boundary's own segments were split: every boundary vertex is on the square.
+        for (const auto& p : after) {
+            EXPECT_TRUE(p[0] == 0 || p[0] == 6 || p[1] == 0 || p[1] == 6) << p[0] << " " << p[1];
+            EXPECT_EQ(p[2], 0.0);
+        }
+        for (const auto& [a, b] : {std::pair<v3, v3>{{0, 0, 0}, {6, 0, 0}}, {{6, 0, 0}, {6, 6, 0}}, {{6, 6, 0}, {0, 6, 0}},
+                                   {{0, 6, 0}, {0, 0, 0}}})
+            EXPECT_TRUE(polyline_intact(m, a, b, 1e-9));
+        for (auto v : T::vertices(m)) EXPECT_LT(std::abs(at(m, v).z), 1e-9);
+        EXPECT_GE(fraction_in_band(m, L), 0.9);  // a small patch: the boundary's short halves weigh more
+    }
+}
+
+TYPED_TEST(remeshing_test, a_cube_keeps_its_corners_and_edges_as_features_by_angle) {
+    using M = TypeParam;
+    HMIRA_REQUIRE_REMESHABLE(M)
+    else {
+        using T = hmira::default_traits<M>;
+        M m = mesh_from<M>(cube());
+        auto r = hmira::isotropic_remeshing(m, {.target_edge_length = 0.15, .iterations = 5, .feature_angle = 45.0});
+        ASSERT_TRUE(r) << r.error().message;
+        EXPECT_EQ(r->feature_edges, 12u);  // the cube's edges, not the face diagonals
+        EXPECT_TRUE(hmira_test::is_valid(m));
+        EXPECT_TRUE(natively_valid(m));
+        EXPECT_EQ(chi(m), 2);
+        const auto positions = all_positions(m);
+        for (int i = 0; i < 8; ++i) EXPECT_TRUE(positions.count({double(i & 1), double((i >> 1) & 1), double((i >> 2) & 1)}));
+        for (int i = 0; i < 8; ++i)
+            for (int k : {1, 2, 4})
+                if (!(i & k)) {
+                    const v3 a{double(i & 1), double((i >> 1) & 1), double((i >> 2) & 1)};
+                    const int j = i | k;
+                    const v3 b{double(j & 1), double((j >> 1) & 1), double((j >> 2) & 1)};
+                    EXPECT_TRUE(polyline_intact(m, a, b, 1e-6)) << i << "-" << j;
+                }
+        // Every vertex on the cube's surface.
+        for (auto v : T::vertices(m)) {
+            const v3 p = at(m, v);
+            const double outside = std::max({std::abs(p.x - 0.5), std::abs(p.y - 0.5), std::abs(p.z - 0.5)});
+            EXPECT_NEAR(outside, 0.5, 1e-6);
+        }
+        EXPECT_GE(fraction_in_band(m, 0.15), 0.9);
+    }
+}
+
+TYPED_TEST(remeshing_test, user_selected_feature_edges_keep_their_polyline) {
+    using M = TypeParam;
+    HMIRA_REQUIRE_REMESHABLE(M)
+    else {
+        using T = hmira::default_traits<M>;
+        M m = mesh_from<M>(grid(6, 6, true));
+        // The interior line y = 3, chosen by position here.
+        std::vector<std::size_t> line;
+        for (auto e : T::edges(m)) {
+            const auto ends = T::edge_vertices(m, e);
+            if (at(m, ends[0]).y == 3 && at(m, ends[1]).y == 3) line.push_back(T::edge_index(m, e));
+        }
+        ASSERT_EQ(line.size(), 6u);
+        auto r = hmira::isotropic_remeshing(m, {.target_edge_length = 0.4, .iterations = 4, .feature_edges = line});
+        ASSERT_TRUE(r) << r.error().message;
+        EXPECT_EQ(r->feature_edges, 30u);
+        EXPECT_TRUE(hmira_test::is_valid(m));
+        EXPECT_TRUE(natively_valid(m));
+        const auto positions = all_positions(m);
+        for (int i = 0; i <= 6; ++i) EXPECT_TRUE(positions.count({double(i), 3.0, 0.0})) << i;
+        EXPECT_TRUE(polyline_intact(m, v3{0, 3, 0}, v3{6, 3, 0}, 1e-9));
+    }
+}
+
+TYPED_TEST(remeshing_test, bad_options_and_bad_input_change_nothing) {
+    using M = TypeParam;
+    HMIRA_REQUIRE_REMESHABLE(M)
+    else {
+        using T = hmira::default_traits<M>;
+        M m = unit_sphere<M>();
+        const auto before = take_snapshot(m);
+        const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+        const std::vector<std::pair<hmira::isotropic_remeshing_options, const char*>> bad = {
+            {{.target_edge_length = 0}, "target_edge_length"},
+            {{.target_edge_length = -1}, "target_edge_length"},
+            {{.target_edge_length = nan}, "target_edge_length"},
+            {{.target_edge_length = inf}, "target_edge_length"},
+            {{.target_edge_length = 1e-6}, "max_faces"},
+            {{.target_edge_length = 0.1, .feature_angle = 200.0}, "feature_angle"},
+            {{.target_edge_length = 0.1, .feature_angle = nan}, "feature_angle"},
+            {{.target_edge_length = 0.1, .feature_edges = {1u << 30}}, "feature_edges"},
+        };
+        for (const auto& [options, name] : bad) {
+            auto r = hmira::isotropic_remeshing(m, options);
+            ASSERT_FALSE(r) << name;
+            EXPECT_EQ(r.error().code, hmira::errc::invalid_argument);
+            EXPECT_NE(r.error().message.find(name), std::string::npos) << r.error().message;
+            EXPECT_EQ(take_snapshot(m), before) << name;
+        }
+        // A non-finite position, named by its vertex.
+        M n = unit_sphere<M>();
+        const auto vertices = T::vertices(n);
+        const auto v = *vertices.begin();
+        T::set_position(n, v, {typename T::scalar(nan), 0, 0});
+        const auto n_before = take_snapshot(n);
+        auto r = hmira::isotropic_remeshing(n, {.target_edge_length = 0.1});
+        ASSERT_FALSE(r);
+        EXPECT_NE(r.error().message.find("vertex " + std::to_string(T::vertex_index(n, v))), std::string::npos)
+            << r.error().message;
+        // A quad, where the model can hold one.
+        if constexpr (!requires { requires T::triangles_only; }) {
+            M q = mesh_from<M>(grid(2, 2, false));
+            const auto q_before = take_snapshot(q);
+            auto rq = hmira::isotropic_remeshing(q, {.target_edge_length = 0.5});
+            ASSERT_FALSE(rq);
+            EXPECT_EQ(rq.error().code, hmira::errc::unsupported);
+            EXPECT_NE(rq.error().message.find("not a triangle"), std::string::npos) << rq.error().message;
+            EXPECT_EQ(take_snapshot(q), q_before);
+        }
+        (void)n_before;
+    }
+}
+
+TYPED_TEST(remeshing_test, cancelling_changes_nothing_and_progress_reaches_one) {
+    using M = TypeParam;
+    HMIRA_REQUIRE_REMESHABLE(M)
+    else {
+        M m = unit_sphere<M>();
+        const auto before = take_snapshot(m);
+        int calls = 0;
+        auto r = hmira::isotropic_remeshing(m, {.target_edge_length = 0.1, .progress = [&](double) { return ++calls < 3; }});
+        ASSERT_FALSE(r);
+        EXPECT_NE(r.error().message.find("cancelled"), std::string::npos) << r.error().message;
+        EXPECT_EQ(calls, 3);
+        EXPECT_EQ(take_snapshot(m), before);
+        std::vector<double> seen;
+        auto ok = hmira::isotropic_remeshing(m, {.target_edge_length = 0.1, .progress = [&](double f) {
+                                                     seen.push_back(f);
+                                                     return true;
+                                                 }});
+        ASSERT_TRUE(ok) << ok.error().message;
+        ASSERT_FALSE(seen.empty());
+        EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
+        EXPECT_EQ(seen.back(), 1.0);
+    }
+}
+
+TYPED_TEST(remeshing_test, the_same_input_gives_the_same_mesh) {
+    using M = TypeParam;
+    HMIRA_REQUIRE_REMESHABLE(M)
+    else {
+        M a = unit_sphere<M>(), b = unit_sphere<M>();
+        ASSERT_TRUE(hmira::isotropic_remeshing(a, {.target_edge_length = 0.12, .iterations = 3}));
+        ASSERT_TRUE(hmira::isotropic_remeshing(b, {.target_edge_length = 0.12, .iterations = 3}));
+        EXPECT_EQ(take_snapshot(a), take_snapshot(b));
+    }
+}
+
+std::filesystem::path data_dir() {
+    const char* d = std::getenv("HMIRA_TEST_DATA");
+    return d ? std::filesystem::path(d) / "meshes" : std::filesystem::path();
+}
+
+/// Vertices on an edge whose faces' normals differ by more than `degrees`, or on the
+/// boundary: computed here from positions, independently of the library.
+std::set<std::array<double, 3>> feature_positions(const hmira::halfedge_mesh& m, double degrees) {
+    using T = hmira::default_traits<hmira::halfedge_mesh>;
+    std::map<std::pair<std::size_t, std::size_t>, std::vector<v3>> normals;
+    for (auto f : T::faces(m)) {
+        std::vector<std::size_t> c;
+        for (auto v : T::face_vertices(m, f)) c.push_back(T::vertex_index(m, v));
+        std::vector<v3> p;
+        for (auto v : T::face_vertices(m, f)) p.push_back(at(m, v));
+        const v3 n = hmira::normalized(hmira::cross(p[1] - p[0], p[2] - p[0]));
+        for (int k = 0; k < 3; ++k) normals[{std::min(c[k], c[(k + 1) % 3]), std::max(c[k], c[(k + 1) % 3])}].push_back(n);
+    }
+    std::vector<v3> pos(T::vertex_index_bound(m));
+    for (auto v : T::vertices(m)) pos[T::vertex_index(m, v)] = at(m, v);
+    std::set<std::array<double, 3>> out;
+    const double limit = std::cos(degrees * std::numbers::pi / 180);
+    for (const auto& [e, ns] : normals)
+        if (ns.size() == 1 || hmira::dot(ns[0], ns[1]) < limit)
+            for (auto i : {e.first, e.second}) out.insert({pos[i].x, pos[i].y, pos[i].z});
+    return out;
+}
+
+TEST(remeshing_real_meshes, edges_reach_the_band_and_features_stay_on_real_meshes) {
+    const auto dir = data_dir();
+    if (dir.empty() || !std::filesystem::exists(dir / "elephant.off")) GTEST_SKIP() << "run scripts/test-data.sh first";
+    struct run {
+        const char* name;
+        std::optional<double> features;
+    };
+#ifdef HMIRA_SANITIZER_BUILD
+    const run runs[] = {{"elephant.off", std::nullopt}, {"fandisk.off", 45.0}};
+#else
+    const run runs[] = {{"elephant.off", std::nullopt}, {"fandisk.off", 45.0}, {"bunny00.off", std::nullopt}};
+#endif
+    using T = hmira::default_traits<hmira::halfedge_mesh>;
+    for (const auto& [name, features] : runs) {
+        SCOPED_TRACE(name);
+        hmira::halfedge_mesh m;
+        ASSERT_TRUE(hmira::io::read_mesh(m, dir / name));
+        double sum = 0;
+        for (auto e : T::edges(m)) {
+            const auto ends = T::edge_vertices(m, e);
+            sum += hmira::norm(at(m, ends[0]) - at(m, ends[1]));
+        }
+        const double L = sum / double(T::edge_count(m));
+        const auto kept = features ? feature_positions(m, *features) : boundary_positions(m);
+        const auto tree = hmira::aabb_tree_from_mesh(m);
+        ASSERT_TRUE(tree);
+        auto r = hmira::isotropic_remeshing(m, {.target_edge_length = L, .iterations = 5, .feature_angle = features});
+        ASSERT_TRUE(r) << r.error().message;
+        EXPECT_TRUE(valid_topology(m));
+        EXPECT_TRUE(all_triangles(m));
+        const double band = fraction_in_band(m, L);
+        EXPECT_GE(band, 0.95) << "edges within [4/5, 4/3] L";
+        const auto positions = all_positions(m);
+        for (const auto& p : kept) ASSERT_TRUE(positions.count(p)) << "feature vertex " << p[0] << " " << p[1] << " " << p[2];
+        // Every vertex on the input surface (projected, or a kept or split feature vertex).
+        double worst = 0;
+        for (auto v : T::vertices(m)) worst = std::max(worst, tree->closest_point(at(m, v)).distance);
+        EXPECT_LT(worst, 1e-9 * (1 + L));
+    }
+}
+
+#ifdef HMIRA_CLI
+hmira_test::run_result hmira_cli(const hmira_test::scratch_dir& dir, const std::string& args) {
+    return hmira_test::run_cli(HMIRA_CLI, dir, args);
+}
+
+/// A 6 x 6 square of triangles as OFF text.
+std::string square_off() {
+    const auto g = grid(6, 6, true);
+    std::string s = "OFF\n" + std::to_string(g.points.size()) + " " + std::to_string(g.faces.size()) + " 0\n";
+    for (const auto& p : g.points) s += std::to_string(p.x) + " " + std::to_string(p.y) + " 0\n";
+    for (const auto& f : g.faces) s += "3 " + std::to_string(f[0]) + " " + std::to_string(f[1]) + " " + std::to_string(f[2]) + "\n";
+    return s;
+}
+
+TEST(cli_remesh, remeshes_to_the_length_and_keeps_the_square) {
+    hmira_test::scratch_dir dir;
+    hmira_test::write_bytes(dir / "square.off", square_off());
+    const auto r = hmira_cli(dir, "remesh square.off fine.off --length 0.4 -k 4");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.out.find("remeshed to edge length 0.4"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("24 feature edges kept"), std::string::npos) << r.out;
+    hmira::halfedge_mesh m;
+    ASSERT_TRUE(hmira::io::read_mesh(m, dir / "fine.off"));
+    EXPECT_TRUE(hmira_test::is_valid(m));
+    EXPECT_GE(fraction_in_band(m, 0.4), 0.9);
+    const auto positions = all_positions(m);
+    for (double c : {0.0, 6.0})
+        for (double d : {0.0, 6.0}) EXPECT_TRUE(positions.count({c, d, 0.0}));
+}
+
+TEST(cli_remesh, bad_options_and_polygons_are_refused_and_nothing_is_written) {
+    hmira_test::scratch_dir dir;
+    hmira_test::write_bytes(dir / "square.off", square_off());
+    for (const char* args : {"--length nan", "--length -1", "--length 0", "--length inf", "--features 200", "-k 0",
+                             "--length 1e-9"}) {
+        const auto r = hmira_cli(dir, std::string("remesh square.off out.off ") + args);
+        EXPECT_EQ(r.code, 2) << args << ": " << r.err;
+        EXPECT_FALSE(std::filesystem::exists(dir / "out.off")) << args;
+    }
+    hmira_test::write_bytes(dir / "quad.off", "OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n");
+    const auto q = hmira_cli(dir, "remesh quad.off out.off");
+    EXPECT_EQ(q.code, 1) << q.err;
+    EXPECT_NE(q.err.find("not a triangle"), std::string::npos) << q.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "out.off"));
+}
+#endif
+
+}  // namespace
