@@ -61,7 +61,7 @@ result<face_polygon<M, T>> project_face(const M& m, typename T::face_handle f) {
             add_loop(ring);
         }
     }
-    const std::string name = "face " + std::to_string(T::face_index(m, f));
+    auto name = [&] { return "face " + std::to_string(T::face_index(m, f)); };
     vec3<double> n{};
     const auto& outer = out.loops[0];
     for (std::size_t i = 0; i < outer.size(); ++i) {
@@ -70,15 +70,64 @@ result<face_polygon<M, T>> project_face(const M& m, typename T::face_handle f) {
         n += vec3<double>{(a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y)};
     }
     if (!std::isfinite(n.x) || !std::isfinite(n.y) || !std::isfinite(n.z))
-        return fail(errc::invalid_argument, name + " has a corner that is not finite", (long long)T::face_index(m, f));
+        return fail(errc::invalid_argument, name() + " has a corner that is not finite", (long long)T::face_index(m, f));
     const double ax = std::fabs(n.x), ay = std::fabs(n.y), az = std::fabs(n.z);
     if (ax == 0 && ay == 0 && az == 0)
-        return fail(errc::degenerate_face, name + " has no area to project (its corners are collinear)", (long long)T::face_index(m, f));
+        return fail(errc::degenerate_face, name() + " has no area to project (its corners are collinear)", (long long)T::face_index(m, f));
     const int k = ax >= ay && ax >= az ? 0 : (ay >= az ? 1 : 2);
     int u = (k + 1) % 3, v = (k + 2) % 3;
     if (n[std::size_t(k)] < 0) std::swap(u, v);
     out.points.reserve(p.size());
     for (const auto& q : p) out.points.push_back({q[std::size_t(u)], q[std::size_t(v)]});
+    return out;
+}
+
+/// A ringless face of four corners, decided without building its polygon: its corners in
+/// face_vertices order and the first corner of the diagonal to cut, to corner from + 2. Only
+/// strictly convex quads (all four turns left in the projection project_face uses, exact) take
+/// this path: there ear clipping's first ear cuts 1-3, and the Delaunay option picks 0-2 when
+/// corner 2 lies inside the circle through 3, 0, 1. Anything else (more corners, concave,
+/// degenerate, not finite) gives from = -1: the general path.
+template <class M, class T>
+struct quad_cut {
+    std::array<typename T::vertex_handle, 4> corner;  // default-initialised: OpenMesh handles have an explicit default constructor
+    int from = -1;
+};
+
+template <class M, class T>
+quad_cut<M, T> convex_quad_cut(const M& m, typename T::face_handle f, bool delaunay) {
+    quad_cut<M, T> out;
+    std::size_t n = 0;
+    for (auto v : T::face_vertices(m, f)) {
+        if (n == 4) return out;
+        out.corner[n++] = v;
+    }
+    if (n != 4) return out;
+    std::array<vec3<double>, 4> p;
+    for (std::size_t k = 0; k < 4; ++k) {
+        const vec3<typename T::scalar> q = T::position(m, out.corner[k]);
+        p[k] = {double(q.x), double(q.y), double(q.z)};
+    }
+    vec3<double> nn{};  // the Newell normal, as project_face computes it
+    for (std::size_t i = 0; i < 4; ++i) {
+        const auto& a = p[i];
+        const auto& b = p[(i + 1) % 4];
+        nn += vec3<double>{(a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y)};
+    }
+    if (!std::isfinite(nn.x) || !std::isfinite(nn.y) || !std::isfinite(nn.z)) return out;
+    const double ax = std::fabs(nn.x), ay = std::fabs(nn.y), az = std::fabs(nn.z);
+    if (ax == 0 && ay == 0 && az == 0) return out;
+    const int k = ax >= ay && ax >= az ? 0 : (ay >= az ? 1 : 2);
+    int u = (k + 1) % 3, v = (k + 2) % 3;
+    if (nn[std::size_t(k)] < 0) std::swap(u, v);
+    std::array<point2, 4> q;
+    for (std::size_t i = 0; i < 4; ++i) {
+        q[i] = {p[i][std::size_t(u)], p[i][std::size_t(v)]};
+        if (!predicates::in_predicate_range(q[i][0]) || !predicates::in_predicate_range(q[i][1])) return out;
+    }
+    for (std::size_t i = 0; i < 4; ++i)
+        if (orient(q[(i + 3) % 4], q[i], q[(i + 1) % 4]) <= 0) return out;
+    out.from = delaunay && predicates::incircle(q[3][0], q[3][1], q[0][0], q[0][1], q[1][0], q[1][1], q[2][0], q[2][1]) > 0 ? 0 : 1;
     return out;
 }
 
@@ -102,6 +151,12 @@ template <class M, class T = default_traits<M>>
                                                                                           const triangulate_polygon_options& options = {}) {
     namespace dt = detail::triangulation;
     using out_t = std::vector<std::array<typename T::vertex_handle, 3>>;
+    if (!detail::euler::has_rings<M, T>(mesh, f)) {
+        if (const auto q = dt::convex_quad_cut<M, T>(mesh, f, options.delaunay); q.from >= 0) {
+            const auto c = [&](int k) { return q.corner[std::size_t((q.from + k) % 4)]; };
+            return out_t{{c(2), c(3), c(0)}, {c(0), c(1), c(2)}};  // the diagonal c(0)-c(2), in ear clipping's order
+        }
+    }
     auto poly = dt::project_face<M, T>(mesh, f);
     if (!poly) return poly.error();
     if (poly->loops.size() == 1 && poly->loops[0].size() == 3)
@@ -146,14 +201,19 @@ template <class M, class T = default_traits<M>>
     using F = typename T::face_handle;
     struct plan {
         F face;
-        dt::face_polygon<M, T> polygon;
-        std::vector<std::array<std::size_t, 3>> triangles;
+        dt::quad_cut<M, T> quad;  // a convex quad's cut (quad.from >= 0), or the general plan below
+        dt::face_polygon<M, T> polygon{};
+        std::vector<std::array<std::size_t, 3>> triangles{};
     };
     std::vector<plan> plans;
     for (auto f : T::faces(mesh)) {
         if (!detail::euler::has_rings<M, T>(mesh, f)) {
             const auto h = T::face_halfedge(mesh, f);
             if (T::next(mesh, T::next(mesh, T::next(mesh, h))) == h) continue;
+            if (auto q = dt::convex_quad_cut<M, T>(mesh, f, options.delaunay); q.from >= 0) {
+                plans.push_back({f, q});
+                continue;
+            }
         }
         auto poly = dt::project_face<M, T>(mesh, f);
         if (!poly) return poly.error();
@@ -163,10 +223,27 @@ template <class M, class T = default_traits<M>>
             return fail(e.code, "triangulate_faces: face " + std::to_string(T::face_index(mesh, f)) + ": " + e.message,
                         (long long)T::face_index(mesh, f));
         }
-        plans.push_back({f, std::move(*poly), std::move(*tris)});
+        plans.push_back({f, dt::quad_cut<M, T>(), std::move(*poly), std::move(*tris)});
     }
     triangulate_faces_result out;
     for (auto& pl : plans) {
+        if (pl.quad.from >= 0) {
+            // The face's halfedges into the diagonal's two corners.
+            const auto from = std::size_t(pl.quad.from);
+            H into_a = T::null_halfedge(), into_b = T::null_halfedge();
+            const H start = T::face_halfedge(mesh, pl.face);
+            H x = start;
+            do {
+                if (T::target(mesh, x) == pl.quad.corner[from]) into_a = x;
+                if (T::target(mesh, x) == pl.quad.corner[from + 2]) into_b = x;
+                x = T::next(mesh, x);
+            } while (x != start);
+            auto r = make_edge_face<M, T>(mesh, into_a, into_b);
+            if (!r) return fail(r.error().code, "triangulate_faces: internal: " + r.error().message);  // unreachable on a valid mesh
+            ++out.triangles_added;
+            ++out.faces_cut;
+            continue;
+        }
         const auto& pts = pl.polygon.points;
         const auto& vs = pl.polygon.vertices;
         // Point index of each vertex of this face (a vertex appears once per face), and the
