@@ -154,6 +154,13 @@ hmira::halfedge_mesh bulk_halfedge(const face_list& g) {
     if (!r) std::abort();
     return std::move(*r);
 }
+// halfedge_mesh's traits as they were before they offered reserve and reverse_orientation:
+// the "before" side of the build and flip rows, measured in the same run.
+struct halfedge_traits_before : hmira::mesh_traits<hmira::halfedge_mesh> {
+    static void reserve(hmira::halfedge_mesh&, std::size_t, std::size_t, std::size_t) = delete;
+    static void reverse_orientation(hmira::halfedge_mesh&) = delete;
+};
+
 template <class M>
 M built(const face_list& g) {
     M m;
@@ -499,6 +506,20 @@ void run_pairs(int rounds) {
         auto bulk = [g] { return seconds([&] { auto m = bulk_halfedge(*g); sink = double(m.edge_count()); }); };
         auto one_by_one = [g] { return seconds([&] { auto m = built<hmira::halfedge_mesh>(*g); sink = double(m.edge_count()); }); };
         auto he_ring = [he] { return seconds([&] { sink = one_ring_sum(*he).x; }); };
+        auto one_by_one_before = [g] {
+            return seconds([&] {
+                hmira::halfedge_mesh m;
+                build_through_traits<hmira::halfedge_mesh, halfedge_traits_before>(m, *g);
+                sink = double(m.edge_count());
+            });
+        };
+        auto he_flip = [he] { return seconds([&] { sink = double(hmira::flip_normals(*he)); }); };
+        auto he_flip_before = [he] {
+            return seconds([&] { sink = double(hmira::flip_normals<hmira::halfedge_mesh, halfedge_traits_before>(*he)); });
+        };
+        (void)one_by_one_before;  // the peers' sections use these when their libraries are found
+        (void)he_flip;
+        (void)he_flip_before;
 #ifdef HMIRA_BENCH_WITH_OPENMESH
         auto om = std::make_shared<om_mesh>(om_built(*g));
         auto om_native_build = [g] {
@@ -512,7 +533,8 @@ void run_pairs(int rounds) {
         };
         auto om_native_ring = [om] { return seconds([&] { sink = om_one_ring_native(*om).x; }); };
         pairs.push_back({"build", mesh, "OpenMesh add_face", "halfedge_mesh::from_polygons", om_native_build, bulk, 0.5});
-        pairs.push_back({"build", mesh, "OpenMesh add_face", "halfedge_mesh add_face (one at a time)", om_native_build, one_by_one, 0});
+        pairs.push_back({"build", mesh, "OpenMesh add_face", "halfedge_mesh add_face (one at a time)", om_native_build, one_by_one, 0.5});
+        pairs.push_back({"build", mesh, "OpenMesh add_face", "halfedge_mesh add_face, before (no reserve)", om_native_build, one_by_one_before, 0});
         pairs.push_back({"build", mesh, "OpenMesh add_face", "OpenMesh via hmira traits", om_native_build, om_traits_build, 1.05});
         pairs.push_back({"one_ring", mesh, "OpenMesh vv_range", "OpenMesh via hmira traits", om_native_ring,
                          [om] { return seconds([&] { sink = one_ring_sum(*om).x; }); }, 1.05});
@@ -543,7 +565,9 @@ void run_pairs(int rounds) {
         auto cgal_native_ring = [cg] { return seconds([&] { sink = cgal_one_ring_native(*cg).x; }); };
         pairs.push_back({"build", mesh, "CGAL polygon_soup_to_polygon_mesh", "halfedge_mesh::from_polygons", cgal_soup_build, bulk, 0.5});
         pairs.push_back({"build", mesh, "CGAL soup, checked is_polygon_soup_a_polygon_mesh", "halfedge_mesh::from_polygons", cgal_soup_checked, bulk, 0});
-        pairs.push_back({"build", mesh, "CGAL polygon_soup_to_polygon_mesh", "halfedge_mesh add_face (one at a time)", cgal_soup_build, one_by_one, 0});
+        pairs.push_back({"build", mesh, "CGAL polygon_soup_to_polygon_mesh", "halfedge_mesh add_face (one at a time)", cgal_soup_build, one_by_one, 0.5});
+        pairs.push_back({"build", mesh, "CGAL add_face", "halfedge_mesh add_face (one at a time)", cgal_native_add, one_by_one, 0.5});
+        pairs.push_back({"build", mesh, "CGAL add_face", "halfedge_mesh add_face, before (no reserve)", cgal_native_add, one_by_one_before, 0});
         pairs.push_back({"build", mesh, "CGAL add_face", "CGAL via hmira traits", cgal_native_add, cgal_traits_add, 1.05});
         pairs.push_back({"one_ring", mesh, "CGAL vertices_around_target", "CGAL via hmira traits", cgal_native_ring,
                          [cg] { return seconds([&] { sink = one_ring_sum(*cg).x; }); }, 1.05});
@@ -554,6 +578,10 @@ void run_pairs(int rounds) {
         pairs.push_back({"flip", mesh, "CGAL PMP::reverse_face_orientations", "hmira::flip_normals on CGAL",
                          [cg] { return seconds([&] { CGAL::Polygon_mesh_processing::reverse_face_orientations(*cg); }); },
                          [cg] { return seconds([&] { sink = double(hmira::flip_normals(*cg)); }); }, 0});
+        pairs.push_back({"flip", mesh, "CGAL PMP::reverse_face_orientations", "halfedge_mesh flip_normals (one pass)",
+                         [cg] { return seconds([&] { CGAL::Polygon_mesh_processing::reverse_face_orientations(*cg); }); }, he_flip, 1.0});
+        pairs.push_back({"flip", mesh, "CGAL PMP::reverse_face_orientations", "halfedge_mesh flip_normals, before (generic)",
+                         [cg] { return seconds([&] { CGAL::Polygon_mesh_processing::reverse_face_orientations(*cg); }); }, he_flip_before, 0});
 #endif
         for (std::size_t i = first; i < pairs.size(); ++i) pairs[i].repeat = reps;
     }

@@ -15,6 +15,8 @@
 #include <string>
 #include <ctime>
 
+#include <sys/resource.h>
+
 #ifdef __GLIBC__
 #include <malloc.h>
 #endif
@@ -49,20 +51,29 @@ double cpu_now() {
 /// time also counts the time other processes held the core, which says nothing of the edit.
 struct timing {
     double cpu = 0, wall = 0;
+    long faults = 0;  // minor page faults during the call (fresh memory touched)
 };
+
+long minor_faults() {
+    rusage u{};
+    getrusage(RUSAGE_THREAD, &u);
+    return u.ru_minflt;
+}
 
 template <class Edit>
 timing seconds(M m, Edit edit) {
+    const long f0 = minor_faults();
     const double c0 = cpu_now();
     const auto t0 = std::chrono::steady_clock::now();
     const bool ok = edit(m);
     const auto t1 = std::chrono::steady_clock::now();
     const double c1 = cpu_now();
+    const long f1 = minor_faults();
     if (!ok) {
         std::fprintf(stderr, "edit failed\n");
         std::exit(1);
     }
-    return {c1 - c0, std::chrono::duration<double>(t1 - t0).count()};
+    return {c1 - c0, std::chrono::duration<double>(t1 - t0).count(), f1 - f0};
 }
 
 bool truncate_all(M& m) { return hmira::truncate_all(m, {.fraction = 0.3}).has_value(); }
@@ -109,7 +120,7 @@ double median(std::vector<double> xs) {
 /// The median CPU time of `repeats` calls after one untimed warm-up call (each call's CPU time in `all`, the median wall time
 /// in `wall`).
 template <class Edit>
-double median_seconds(const M& m, Edit edit, int repeats, std::vector<double>& all, double& wall) {
+double median_seconds(const M& m, Edit edit, int repeats, std::vector<double>& all, double& wall, long* faults = nullptr) {
     all.clear();
     (void)seconds(m, edit);  // warm-up: the heap grows to this size once, untimed
     std::vector<double> walls;
@@ -117,6 +128,7 @@ double median_seconds(const M& m, Edit edit, int repeats, std::vector<double>& a
         const timing t = seconds(m, edit);
         all.push_back(t.cpu);
         walls.push_back(t.wall);
+        if (faults) *faults = t.faults;
     }
     wall = median(walls);
     return median(all);
@@ -184,10 +196,12 @@ int main(int argc, char** argv) {
             const M m = torus(side);
             const double k = double(e.elements(m));
             double wall = 0;
-            const double t = median_seconds(m, e.run, repeats, runs, wall);
+            long faults = 0;
+            const double t = median_seconds(m, e.run, repeats, runs, wall, &faults);
             pts.push_back({double(T::face_count(m)), k, t});
-            std::printf("%-34s faces %8.0f elements %8.0f  median cpu %7.3f s %7.1f ns/element (runs %s), wall %7.3f s\n",
-                        e.name, double(T::face_count(m)), k, t, t / k * 1e9, list(runs).c_str(), wall);
+            std::printf("%-34s faces %8.0f elements %8.0f  median cpu %7.3f s %7.1f ns/element (runs %s), wall %7.3f s, "
+                        "%.2f page faults/element\n",
+                        e.name, double(T::face_count(m)), k, t, t / k * 1e9, list(runs).c_str(), wall, double(faults) / k);
         }
         double lo = 1e300, hi = 0;
         for (const auto& p : pts) {

@@ -2,6 +2,7 @@
 // changes sign, the mesh stays valid, and flipping twice gives back the original.
 #include <gtest/gtest.h>
 
+#include <hmira/algorithms/euler/euler.hpp>
 #include <hmira/algorithms/generators/platonic_solids.hpp>
 #include <hmira/algorithms/orientation/flip_normals.hpp>
 #include <hmira/algorithms/topology/mesh_topology.hpp>
@@ -104,6 +105,47 @@ TEST(flip_normals, flipped_halfedge_boundary_accepts_faces_of_the_new_orientatio
     ASSERT_TRUE(right) << right.error().message;
     EXPECT_TRUE(hmira_test::is_valid(m));
     EXPECT_EQ(mesh_topology(m).boundary_loops, 1u);
+}
+
+// halfedge_mesh flips in one pass over its halfedge array (traits' reverse_orientation); the
+// generic algorithm (re-linking through set_next) must give exactly the same links, boundary
+// vertices included, also with deleted elements waiting for collection.
+struct generic_flip_traits : mesh_traits<halfedge_mesh> {
+    static void reverse_orientation(halfedge_mesh&) = delete;  // forces the generic algorithm
+};
+
+TEST(flip_normals, one_pass_halfedge_flip_equals_the_generic_algorithm) {
+    auto meshes = sample_meshes<halfedge_mesh>();
+    {
+        halfedge_mesh m;  // with garbage: a face and its edges deleted, not collected
+        ASSERT_TRUE(hmira_test::add_face_list(m, hmira_test::grid(6, 5)));
+        const face_handle f(7);
+        for (auto h : m.face_halfedges(f))
+            if (!m.is_boundary(m.opposite(h))) {
+                ASSERT_TRUE(kill_edge_face(m, h));  // merges the neighbour in; edge and face deleted
+                break;
+            }
+        ASSERT_TRUE(m.has_garbage());
+        meshes.push_back(std::move(m));
+    }
+    for (auto& mesh : meshes) {
+        halfedge_mesh fast = mesh, slow = mesh;
+        EXPECT_EQ(flip_normals(fast), mesh.face_count());
+        EXPECT_EQ((flip_normals<halfedge_mesh, generic_flip_traits>(slow)), mesh.face_count());
+        ASSERT_TRUE(hmira_test::is_valid(fast));
+        for (auto h : mesh.halfedges()) {
+            EXPECT_EQ(fast.target(h), slow.target(h)) << h.index;
+            EXPECT_EQ(fast.next(h), slow.next(h)) << h.index;
+            EXPECT_EQ(fast.prev(h), slow.prev(h)) << h.index;
+            EXPECT_EQ(fast.face(h), slow.face(h)) << h.index;
+            EXPECT_EQ(fast.target(h), mesh.source(h)) << h.index;  // really reversed
+        }
+        for (auto v : mesh.vertices()) {
+            EXPECT_EQ(fast.vertex_halfedge(v), slow.vertex_halfedge(v)) << v.index;
+            EXPECT_EQ(fast.is_boundary(v), mesh.is_boundary(v)) << v.index;
+        }
+        EXPECT_GT(fast.change_count(), mesh.change_count());
+    }
 }
 
 }  // namespace

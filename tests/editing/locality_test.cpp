@@ -7,6 +7,8 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <random>
+#include <set>
 
 #include <hmira/algorithms/generators/torus.hpp>
 #include <hmira/meshes/halfedge_mesh.hpp>
@@ -105,6 +107,30 @@ TEST(editing_locality, truncate_bevel_and_extrude_cost_does_not_grow_with_mesh_s
           std::tuple{"bevel", count_calls(8, bevel_first), count_calls(400, bevel_first)}}) {
         EXPECT_GT(small, 0u) << name;
         EXPECT_EQ(small, large) << name << ": traits calls differ between 64 and 3200 faces";
+    }
+}
+
+// The selections' index_set hashes sparse indices and turns into a bitmap when they are dense
+// (a whole-mesh selection); both ways, and back to hashing when a far index arrives, it must
+// answer exactly as a std::set does.
+TEST(editing_index_set, dense_sparse_and_mixed_sets_answer_like_std_set) {
+    std::mt19937_64 rng(7);
+    for (int trial = 0; trial < 60; ++trial) {
+        hmira::detail::editing::index_set s;
+        std::set<std::size_t> ref;
+        const std::size_t range = trial % 3 == 0 ? 1000 : trial % 3 == 1 ? 100000 : 100000000;
+        const int n = 200 + static_cast<int>(rng() % 3000);
+        for (int i = 0; i < n; ++i) {
+            std::size_t x = trial % 5 == 0 ? static_cast<std::size_t>(i) : rng() % range;  // in order, as a whole mesh
+            if (i % 97 == 96) x = rng() % (range * 1000);                                    // now and then a far one
+            ASSERT_EQ(s.insert(x), ref.insert(x).second) << "trial " << trial << " index " << x;
+            ASSERT_EQ(s.size(), ref.size());
+        }
+        for (int q = 0; q < 2000; ++q) {
+            const std::size_t x = rng() % (2 * range);
+            ASSERT_EQ(s.contains(x), ref.count(x) > 0) << "trial " << trial << " index " << x;
+        }
+        for (auto x : ref) ASSERT_TRUE(s.contains(x)) << "trial " << trial << " lost " << x;
     }
 }
 

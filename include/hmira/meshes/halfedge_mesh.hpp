@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "../concepts.hpp"
@@ -482,6 +483,29 @@ public:
 
     ///@}
 
+    /// Reverses the winding of every face in one pass over the halfedge array (what
+    /// flip_normals uses): each edge's two halfedges swap targets and each halfedge swaps next
+    /// and prev, all within the edge's pair of records; then each vertex takes the opposite of
+    /// its outgoing halfedge, or on the boundary the boundary halfedge that entered it (now
+    /// leaving it). Faces keep their outer halfedge and inner rings; handles stay valid.
+    /// O(H_all + V_all), no scratch memory.
+    void reverse_orientation() noexcept {
+        for (std::size_t h = 0; h + 1 < halfedges_.size(); h += 2) {
+            auto& a = halfedges_[h];
+            auto& b = halfedges_[h + 1];
+            std::swap(a.target, b.target);
+            std::swap(a.next, a.prev);
+            std::swap(b.next, b.prev);
+        }
+        for (std::size_t v = 0; v < vertex_out_.size(); ++v) {
+            const auto h = vertex_out_[v];
+            if (h.is_null() || (deleted_vertices_ && vertex_deleted_[v])) continue;
+            const auto& rec = halfedges_[h.index];
+            vertex_out_[v] = rec.face.is_null() ? rec.next : opposite(h);
+        }
+        ++changes_;
+    }
+
     /// Whether deleted elements wait for collect_garbage().
     bool has_garbage() const noexcept { return deleted_vertices_ + deleted_edges_ + deleted_faces_ > 0; }
 
@@ -629,6 +653,11 @@ struct mesh_traits<basic_halfedge_mesh<Scalar>> : detail::native_halfedge_traits
     static auto inner_rings(const mesh& m, face_handle f) { return m.inner_rings(f); }
     static void add_inner_ring(mesh& m, face_handle f, halfedge_handle h) { m.add_inner_ring(f, h); }
     static void remove_inner_ring(mesh& m, face_handle f, halfedge_handle h) { m.remove_inner_ring(f, h); }
+    /// Optional (not a concept requirement): flip_normals in one pass over the halfedges.
+    static void reverse_orientation(mesh& m) noexcept { m.reverse_orientation(); }
+    /// Optional (not a concept requirement): room for this many elements (index bounds), which
+    /// the edits and subdivision use before they grow the mesh.
+    static void reserve(mesh& m, std::size_t vertices, std::size_t edges, std::size_t faces) { m.reserve(vertices, edges, faces); }
 };
 
 }  // namespace hmira

@@ -158,6 +158,7 @@ result<void> extrude_region(M& m, const std::vector<typename T::face_handle>& fa
     using F = typename T::face_handle;
     auto in_r = [&](F f) { return f != T::null_face() && in_region.contains(T::face_index(m, f)); };
     const std::size_t k = outline.size();
+    reserve_growth<M, T>(m, k, 2 * k, k);  // V + b, E + 2b, F + b
     // Read phase. For g_i = u -> v: the corners of the split at v, and which outline halfedge
     // ends at u (its split makes the wall's other vertical edge).
     std::vector<H> h0(k), h1(k);
@@ -265,7 +266,15 @@ result<extrude_result<M, T>> extrude(M& mesh, const R& faces, const extrude_opti
     if (fs.empty()) return fail(errc::invalid_argument, "extrude: no face selected");
     if (options.mode == extrude_mode::individual || fs.size() == 1) {
         std::vector<vec3<double>> moves;
+        std::size_t corners = 0;  // V + n, E + 2n, F + n for n corners over all loops
         for (auto f : fs) {
+            for (auto start : de::face_loops<M, T>(mesh, f)) {
+                auto h = start;
+                do {
+                    ++corners;
+                    h = T::next(mesh, h);
+                } while (h != start);
+            }
             const auto n = de::area_vector_with_rings<M, T>(mesh, f);
             if (!options.direction && !(norm(n) > 0))
                 return fail(errc::invalid_argument, "extrude: " + detail::euler::name<M, T>("face", mesh, f) + " has zero area, so no normal",
@@ -274,6 +283,7 @@ result<extrude_result<M, T>> extrude(M& mesh, const R& faces, const extrude_opti
         }
         return de::transact<M, T>(mesh, [&]<class JT>() -> result<extrude_result<M, T>> {
             extrude_result<M, T> out;
+            de::reserve_growth<M, JT>(mesh, corners, 2 * corners, corners);
             de::edit_progress progress(options.progress, fs.size(), "extrude");
             for (std::size_t i = 0; i < fs.size(); ++i) {
                 if (auto ok = progress.step(); !ok) return ok.error();

@@ -86,6 +86,15 @@ result<void> truncate_checked(M& m, const std::vector<typename T::vertex_handle>
             const double tw = both ? cut_parameter<M, T>(m, T::opposite(m, h), o, true) : 0.0;
             cuts.push_back({h, tv, tw, both});
         }
+    // Each cut makes one or two points, each by split_edge (slots: V + 1, E + 2, F + 1); each
+    // vertex of degree d then makes d edges and d faces (mef), one more on the boundary,
+    // before merging them (kef).
+    std::size_t points = 0, degrees = 0;
+    for (const auto& c : cuts) {
+        points += (c.both && c.t_from + c.t_to < 1.0) ? 2 : 1;
+        degrees += c.both ? 2 : 1;
+    }
+    reserve_growth<M, T>(m, points, 2 * points + degrees, points + degrees + vs.size());
     edit_progress progress(o.progress, cuts.size() + vs.size(), "truncate");
     for (const auto& c : cuts) {
         if (auto ok = progress.step(); !ok) return ok.error();

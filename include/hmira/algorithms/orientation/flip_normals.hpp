@@ -37,10 +37,16 @@ std::size_t flip_normals(M& mesh) {
 /// Reverses the winding of every face of a halfedge model: each halfedge's direction is
 /// reversed (next <-> prev, target <-> source); faces keep their halfedges, each vertex gets an
 /// outgoing halfedge again (a boundary one on the boundary), inner rings stay attached.
-/// Returns the number of faces flipped. Complexity O(H_all + V_all), with O(H_all) scratch.
+/// Returns the number of faces flipped. Complexity O(H_all + V_all), with O(H_all) scratch,
+/// or none on a model whose traits offer reverse_orientation(mesh) (halfedge_mesh: one pass
+/// over its halfedge array, as the two halfedges of an edge lie side by side).
 template <class M, class T = default_traits<M>>
     requires halfedge_flip_mesh<M, T> && (!face_reversible_mesh<M, T>)
 std::size_t flip_normals(M& mesh) {
+    if constexpr (requires { T::reverse_orientation(mesh); }) {
+        T::reverse_orientation(mesh);
+        return T::face_count(mesh);
+    }
     using H = typename T::halfedge_handle;
     const std::size_t nh = T::halfedge_index_bound(mesh);
     std::vector<H> old_prev(nh);

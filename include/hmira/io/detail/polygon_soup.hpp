@@ -244,6 +244,10 @@ result<read_report> build_from_soup(M& mesh, polygon_soup&& soup, const std::str
         }
         // Nothing below can fail: the repaired soup is one every half-edge model holds.
         detail::clear_for_reading(mesh);
+        // Room for every element up front (edges: half the corners, plus room for boundaries), so that the build
+        // does not reallocate the mesh's arrays as it grows.
+        if constexpr (requires { T::reserve(mesh, std::size_t{}, std::size_t{}, std::size_t{}); })
+            T::reserve(mesh, repaired->vertex_count, repaired->corners.size() / 2 + repaired->vertex_count, repaired->face_count());
         std::vector<VH> vs;
         vs.reserve(repaired->vertex_count);
         for (std::size_t v = 0; v < repaired->vertex_count; ++v) {

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <algorithm>
+#include <bit>
 #include <concepts>
 #include <cmath>
 #include <cstddef>
@@ -75,14 +76,44 @@ point<M, T> to_point(const vec3<double>& p) {
     return {static_cast<S>(p.x), static_cast<S>(p.y), static_cast<S>(p.z)};
 }
 
-/// A set of element indices for selections: open addressing with linear probing, so that
-/// selections stay local (no array sized by the whole mesh) at expected O(1) per insert or
-/// lookup, O(k) for k elements (the table doubles at half load).
+/// Room for an edit that creates up to this many vertices, edges and faces, in the mesh
+/// (the traits' optional reserve, as index bounds) and in the active journal (JT's optional
+/// reserve_journal), so that a whole-mesh edit never reallocates half way: growing vectors of
+/// millions of elements copied them and faulted in fresh pages, which made such edits
+/// superlinear. Only when the edit grows the mesh by at least an eighth: a loop of small
+/// edits would otherwise reallocate (exact reserve) on every call. Only capacity changes.
+template <class M, class T>
+void reserve_growth(M& m, std::size_t vertices, std::size_t edges, std::size_t faces) {
+    if constexpr (requires { T::reserve(m, vertices, edges, faces); T::edge_index_bound(m); }) {
+        const std::size_t nv = T::vertex_index_bound(m), ne = T::edge_index_bound(m), nf = T::face_index_bound(m);
+        if (8 * (vertices + edges + faces) >= nv + ne + nf) T::reserve(m, nv + vertices, ne + edges, nf + faces);
+    }
+    if constexpr (requires { T::reserve_journal(vertices, edges, faces); }) T::reserve_journal(vertices, edges, faces);
+}
+
+/// A set of element indices for selections, O(k) memory for k elements, so that selections
+/// stay local (no array sized by the whole mesh). Sparse sets hash (open addressing, linear
+/// probing, the table doubles at half load); a set whose indices are dense (the largest index
+/// below 64 * 4 times the count, as when a whole mesh is selected) is a bitmap instead, which
+/// keeps neighbouring indices in one cache line: hashed, a million-element selection missed
+/// the cache on every lookup and made whole-mesh edits superlinear. Expected O(1) per insert
+/// or lookup, amortised.
 class index_set {
 public:
     /// Adds i; returns whether it was new. Expected O(1), amortised.
     bool insert(std::size_t i) {
-        if (2 * (size_ + 1) > slots_.size()) grow();
+        if (dense_) {
+            if (i / 64 >= bits_.size() && !grow_bits(i)) return insert(i);  // became sparse: hashed now
+            const std::uint64_t bit = std::uint64_t{1} << (i % 64);
+            if (bits_[i / 64] & bit) return false;
+            bits_[i / 64] |= bit;
+            ++size_;
+            return true;
+        }
+        if (2 * (size_ + 1) > slots_.size()) {
+            grow(i);
+            if (dense_) return insert(i);
+        }
         std::size_t s = slot(i);
         while (slots_[s] != empty) {
             if (slots_[s] == i) return false;
@@ -90,10 +121,12 @@ public:
         }
         slots_[s] = i;
         ++size_;
+        if (i > max_) max_ = i;
         return true;
     }
     /// Whether i was inserted. Expected O(1).
     bool contains(std::size_t i) const {
+        if (dense_) return i / 64 < bits_.size() && (bits_[i / 64] >> (i % 64) & 1u);
         if (slots_.empty()) return false;
         for (std::size_t s = slot(i); slots_[s] != empty; s = (s + 1) & (slots_.size() - 1))
             if (slots_[s] == i) return true;
@@ -104,12 +137,23 @@ public:
 
 private:
     static constexpr std::size_t empty = ~std::size_t{0};
+    // A bitmap may use up to this many 64-bit words per element (as much memory as the table).
+    static constexpr std::size_t words_per_element = 4;
     std::size_t slot(std::size_t i) const {
         // Fibonacci hashing spreads consecutive indices over the table.
         return static_cast<std::size_t>((static_cast<std::uint64_t>(i) * 0x9E3779B97F4A7C15ull) >> shift_);
     }
-    void grow() {
+    /// Doubles the table, or turns it into a bitmap when the indices (with `next`) are dense.
+    void grow(std::size_t next) {
         std::vector<std::size_t> old = std::move(slots_);
+        const std::size_t top = std::max(max_, next);
+        if (size_ >= 64 && top / 64 + 1 <= words_per_element * (size_ + 1)) {
+            dense_ = true;
+            bits_.assign(top / 64 + 1, 0);
+            for (auto i : old)
+                if (i != empty) bits_[i / 64] |= std::uint64_t{1} << (i % 64);
+            return;
+        }
         const std::size_t n = old.empty() ? 16 : 2 * old.size();
         slots_.assign(n, empty);
         shift_ = 64;
@@ -118,9 +162,32 @@ private:
         for (auto i : old)
             if (i != empty) insert(i);
     }
+    /// Makes the bitmap reach index i if that keeps it dense (geometric growth); otherwise
+    /// moves the set back into a hash table and returns false.
+    bool grow_bits(std::size_t i) {
+        const std::size_t need = i / 64 + 1, limit = words_per_element * (size_ + 1);
+        if (need <= limit) {
+            bits_.resize(std::max(need, std::min(2 * bits_.size(), limit)), 0);
+            return true;
+        }
+        std::vector<std::uint64_t> old = std::move(bits_);
+        bits_.clear();
+        dense_ = false;
+        std::size_t n = 16;
+        while (n < 2 * (size_ + 1)) n *= 2;
+        slots_.assign(2 * n, empty);
+        shift_ = 64;
+        for (std::size_t c = slots_.size(); c > 1; c >>= 1) --shift_;
+        size_ = 0;
+        for (std::size_t w = 0; w < old.size(); ++w)
+            for (std::uint64_t b = old[w]; b != 0; b &= b - 1) insert(64 * w + static_cast<std::size_t>(std::countr_zero(b)));
+        return false;
+    }
     std::vector<std::size_t> slots_;
-    std::size_t size_ = 0;
+    std::vector<std::uint64_t> bits_;
+    std::size_t size_ = 0, max_ = 0;
     unsigned shift_ = 64;
+    bool dense_ = false;
 };
 
 /// A map from element indices to small values (positions in a local array), open addressing

@@ -46,6 +46,34 @@ void reserve_one_more(std::vector<X>& v) {
     if (v.size() == v.capacity()) v.reserve(std::max<std::size_t>(16, 2 * v.capacity()));
 }
 
+/// An append-only list in chunks that double up to 64k elements: unlike a vector it never
+/// copies what it holds, so a journal of tens of millions of entries (a whole-mesh edit) needs
+/// no transient 3x of its size, whose fresh pages made such edits superlinear. Amortised O(1).
+template <class X>
+class chunked_log {
+public:
+    void push_back(const X& x) {
+        if (chunks_.empty() || chunks_.back().size() == chunks_.back().capacity()) {
+            std::vector<X> c;
+            c.reserve(chunks_.empty() ? 16 : std::min<std::size_t>(2 * chunks_.back().capacity(), std::size_t{1} << 16));
+            chunks_.push_back(std::move(c));
+        }
+        chunks_.back().push_back(x);
+        ++size_;
+    }
+    std::size_t size() const { return size_; }
+    /// Calls f on every element, newest first.
+    template <class F>
+    void for_each_newest_first(F&& f) const {
+        for (auto c = chunks_.rbegin(); c != chunks_.rend(); ++c)
+            for (auto it = c->rbegin(); it != c->rend(); ++it) f(*it);
+    }
+
+private:
+    std::vector<std::vector<X>> chunks_;
+    std::size_t size_ = 0;
+};
+
 /// Every raw mutation of one edit, in order, and what undoes it.
 template <class M, class T>
 class journal {
@@ -62,8 +90,7 @@ public:
         H h{};  // the halfedge changed (next, target, face), or the ring's halfedge
         H old_h{};
         V v{};
-        F f{};
-        std::size_t position = 0;  // index into positions_ for kind::position
+        F f{};  // (kind::position: the old position is the next one of positions_, newest first)
     };
     struct old_prev {
         H x, prev;
@@ -77,37 +104,37 @@ public:
     void record_next(const M& m, H h, H n) {
         if (old(m, n)) {
             reserve_one_more(prev_);
-            if (old(m, h)) entries_.push_back({kind::next, h, T::next(m, h), V{}, F{}, 0});
+            if (old(m, h)) entries_.push_back({kind::next, h, T::next(m, h), V{}, F{}});
             prev_.push_back({n, T::prev(m, n), prev_.size()});
         } else if (old(m, h)) {
-            entries_.push_back({kind::next, h, T::next(m, h), V{}, F{}, 0});
+            entries_.push_back({kind::next, h, T::next(m, h), V{}, F{}});
         }
     }
     void record_target(const M& m, H h) {
-        if (old(m, h)) entries_.push_back({kind::target, h, H{}, T::target(m, h), F{}, 0});
+        if (old(m, h)) entries_.push_back({kind::target, h, H{}, T::target(m, h), F{}});
     }
     void record_face(const M& m, H h) {
-        if (old(m, h)) entries_.push_back({kind::face, h, H{}, V{}, T::face(m, h), 0});
+        if (old(m, h)) entries_.push_back({kind::face, h, H{}, V{}, T::face(m, h)});
     }
     void record_vertex_halfedge(const M& m, V v) {
         if (!old(m, v)) return;
         // A model whose vertex_halfedge is derived from what it stores (CGAL keeps an incoming
         // halfedge) offers the stored value as is; the rollback writes that back.
         if constexpr (requires { T::stored_vertex_halfedge(m, v); })
-            entries_.push_back({kind::vertex_halfedge, H{}, T::stored_vertex_halfedge(m, v), v, F{}, 0});
+            entries_.push_back({kind::vertex_halfedge, H{}, T::stored_vertex_halfedge(m, v), v, F{}});
         else
-            entries_.push_back({kind::vertex_halfedge, H{}, T::vertex_halfedge(m, v), v, F{}, 0});
+            entries_.push_back({kind::vertex_halfedge, H{}, T::vertex_halfedge(m, v), v, F{}});
     }
     void record_face_halfedge(const M& m, F f) {
-        if (old(m, f)) entries_.push_back({kind::face_halfedge, H{}, T::face_halfedge(m, f), V{}, f, 0});
+        if (old(m, f)) entries_.push_back({kind::face_halfedge, H{}, T::face_halfedge(m, f), V{}, f});
     }
     void record_position(const M& m, V v) {
         if (!old(m, v)) return;
         reserve_one_more(positions_);
-        entries_.push_back({kind::position, H{}, H{}, v, F{}, positions_.size()});
+        entries_.push_back({kind::position, H{}, H{}, v, F{}});
         positions_.push_back(T::position(m, v));
     }
-    void record_ring(F f, H h, bool added) { entries_.push_back({added ? kind::ring_added : kind::ring_removed, h, H{}, V{}, f, 0}); }
+    void record_ring(F f, H h, bool added) { entries_.push_back({added ? kind::ring_added : kind::ring_removed, h, H{}, V{}, f}); }
 
     /// Room for one more created element, reserved before the model creates it (so that
     /// recording it cannot throw after it exists).
@@ -115,6 +142,14 @@ public:
         reserve_one_more(made_vertices_);
         reserve_one_more(made_edges_);
         reserve_one_more(made_faces_);
+    }
+    /// Room for that many more created elements (the edit's estimate; more still fit).
+    void reserve_created(std::size_t vertices, std::size_t edges, std::size_t faces) {
+        made_vertices_.reserve(made_vertices_.size() + vertices);
+        made_edges_.reserve(made_edges_.size() + edges);
+        made_faces_.reserve(made_faces_.size() + faces);
+        erase_edges_.reserve(erase_edges_.size() + edges);  // the edits kill about as many as they make
+        erase_faces_.reserve(erase_faces_.size() + faces);
     }
     void created(V v) { made_vertices_.push_back(v); }
     void created(E e) { made_edges_.push_back(e); }
@@ -138,7 +173,9 @@ public:
     /// Undoes everything recorded, newest first; then re-links the stored prev of every
     /// halfedge that set_next reached, and erases the created elements. Allocates nothing.
     void rollback(M& m) noexcept {
-        for (auto it = entries_.rbegin(); it != entries_.rend(); ++it) {
+        std::size_t position = positions_.size();
+        entries_.for_each_newest_first([&](const entry& e) {
+            const entry* it = &e;
             switch (it->what) {
             case kind::next:
                 // A new halfedge had no next yet; it is erased below.
@@ -154,7 +191,8 @@ public:
                 break;
             case kind::face_halfedge: T::set_face_halfedge(m, it->f, it->old_h); break;
             case kind::position:
-                if constexpr (position_mutable_mesh<M, T>) T::set_position(m, it->v, positions_[it->position]);
+                --position;
+                if constexpr (position_mutable_mesh<M, T>) T::set_position(m, it->v, positions_[position]);
                 break;
             case kind::ring_added:
                 if constexpr (inner_ring_mutable_mesh<M, T>) T::remove_inner_ring(m, it->f, it->h);
@@ -163,7 +201,7 @@ public:
                 if constexpr (inner_ring_mutable_mesh<M, T>) T::add_inner_ring(m, it->f, it->h);
                 break;
             }
-        }
+        });
         // set_next(h, n) also set prev(n) = h. The first recorded prev of each n is its value
         // before the edit; set_next(prev, n) restores it (and sets next(prev) = n, its old value).
         std::sort(made_edges_.begin(), made_edges_.end(),
@@ -195,7 +233,7 @@ private:
     bool old(const M& m, F f) const { return T::face_index(m, f) < face_bound_; }
 
     std::size_t halfedge_bound_, vertex_bound_, face_bound_;
-    std::vector<entry> entries_;
+    chunked_log<entry> entries_;
     std::vector<old_prev> prev_;
     std::vector<P> positions_;
     std::vector<V> made_vertices_;
@@ -239,6 +277,10 @@ struct journaled_traits : T {
     {
         active->record_ring(f, h, false);
         T::remove_inner_ring(m, f, h);
+    }
+    /// Journal room for an edit that creates that many elements (see reserve_growth).
+    static void reserve_journal(std::size_t vertices, std::size_t edges, std::size_t faces) {
+        active->reserve_created(vertices, edges, faces);
     }
     static H new_edge(M& m, V a, V b) {
         active->reserve_created();

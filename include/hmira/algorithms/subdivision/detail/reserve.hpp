@@ -10,8 +10,8 @@
 namespace hmira::detail::subdivision {
 
 /// Room for this many vertices, edges and faces (index bounds), so that the levels never
-/// reallocate the mesh: the traits' optional reserve (winged_edge_mesh, OpenMesh, CGAL), else
-/// the model's member reserve(vertices, edges, faces) (halfedge_mesh, whose traits do not
+/// reallocate the mesh: the traits' optional reserve (halfedge_mesh, winged_edge_mesh, OpenMesh, CGAL), else
+/// the model's member reserve(vertices, edges, faces) (a model whose traits do not
 /// forward it), else nothing. Only capacity changes.
 template <class M, class T>
 void reserve_room(M& mesh, std::size_t vertices, std::size_t edges, std::size_t faces) {
