@@ -339,7 +339,8 @@ void check_points(const double* points, std::size_t vertices, const char* who) {
 
 nb::tuple voxelize(const vertex_array& vertices, nb::handle faces, std::optional<std::size_t> resolution, std::optional<double> pitch,
                    const std::string& mode, bool fill_open, unsigned threads) {
-    if (mode != "conservative" && mode != "surface") value_error("voxelize: mode must be 'conservative' or 'surface', got '" + mode + "'");
+    if (mode != "conservative" && mode != "surface" && mode != "centres")
+        value_error("voxelize: mode must be 'conservative', 'centres' or 'surface', got '" + mode + "'");
     if (resolution && pitch) value_error("voxelize: give resolution or pitch, not both");
     if (resolution && *resolution == 0) value_error("voxelize: resolution must be at least 1");
     if (pitch && !(*pitch > 0 && std::isfinite(*pitch))) value_error("voxelize: pitch must be finite and > 0");
@@ -367,7 +368,9 @@ nb::tuple voxelize(const vertex_array& vertices, nb::handle faces, std::optional
         soup = to_soup(vertices, faces, "voxelize");
     }
     interrupt_watch watch;
-    const hmira::voxelize_options options{.mode = mode == "surface" ? hmira::voxelize_mode::surface : hmira::voxelize_mode::solid,
+    const hmira::voxelize_options options{.mode = mode == "surface"  ? hmira::voxelize_mode::surface
+                                                  : mode == "centres" ? hmira::voxelize_mode::centres
+                                                                      : hmira::voxelize_mode::solid,
                                           .open_mesh = fill_open ? hmira::open_mesh_fill::winding_number : hmira::open_mesh_fill::surface_only,
                                           .allow_degenerate = true,
                                           .threads = threads,
