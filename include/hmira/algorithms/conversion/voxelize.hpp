@@ -272,9 +272,54 @@ inline void fill_window(const std::vector<tri>& tris, const std::vector<std::uin
         const double c = dot(n, p[0]);
         const double slack = 0.5 * (std::abs(n[u]) + std::abs(n[v])) / std::abs(n[d]);
         const detail::triangle_box_tester tester(p[0], p[1], p[2], 0.5);
+        // The separating axes that do not involve d (the shadow's edge normals in the (u, v)
+        // plane) give the same answer for every voxel of a column: a column whose square is
+        // outside the shadow is skipped; one whose square lies inside it needs only the plane
+        // test, since every point of the plane over the square is then on the triangle.
+        double axis_u[3], axis_v[3], lo2[3], hi2[3];
+        for (int e = 0; e < 3; ++e) {
+            const vec3<double> ed = p[(e + 1) % 3] - p[e];
+            axis_u[e] = -ed[v];
+            axis_v[e] = ed[u];
+            const double pa = axis_u[e] * p[0][u] + axis_v[e] * p[0][v], pb = axis_u[e] * p[1][u] + axis_v[e] * p[1][v],
+                         pc = axis_u[e] * p[2][u] + axis_v[e] * p[2][v];
+            const double r = 0.5 * (std::abs(axis_u[e]) + std::abs(axis_v[e]));
+            lo2[e] = std::min({pa, pb, pc}) - r;
+            hi2[e] = std::max({pa, pb, pc}) + r;
+        }
+        const double plane_r = 0.5 * (std::abs(n.x) + std::abs(n.y) + std::abs(n.z));
+        const double plane_lo = std::min({dot(n, p[0]), dot(n, p[1]), dot(n, p[2])}) - plane_r;
+        const double plane_hi = std::max({dot(n, p[0]), dot(n, p[1]), dot(n, p[2])}) + plane_r;
+        double width[3], margin[3];
+        for (int e = 0; e < 3; ++e) {
+            width[e] = std::abs(axis_u[e]) + std::abs(axis_v[e]);
+            margin[e] = 1e-9 * (std::abs(lo2[e]) + std::abs(hi2[e]) + width[e]);
+        }
         long long idx[3];
-        for (long long iu = r0[u]; iu <= r1[u]; ++iu)
-            for (long long iv = r0[v]; iv <= r1[v]; ++iv) {
+        for (long long iu = r0[u]; iu <= r1[u]; ++iu) {
+            // The columns of this row whose square can meet the shadow: each edge axis bounds
+            // iv to an interval (widened by one; the test per column below decides).
+            double vlo = double(r0[v]), vhi = double(r1[v]);
+            for (int e = 0; e < 3; ++e) {
+                const double base = axis_u[e] * double(iu);
+                if (axis_v[e] > 0) {
+                    vlo = std::max(vlo, (lo2[e] - base) / axis_v[e] - 1);
+                    vhi = std::min(vhi, (hi2[e] - base) / axis_v[e] + 1);
+                } else if (axis_v[e] < 0) {
+                    vlo = std::max(vlo, (hi2[e] - base) / axis_v[e] - 1);
+                    vhi = std::min(vhi, (lo2[e] - base) / axis_v[e] + 1);
+                }
+            }
+            if (!(vlo <= vhi)) continue;
+            const long long iv0 = std::max<long long>(r0[v], -fast_floor(-vlo)), iv1 = std::min<long long>(r1[v], fast_floor(vhi));
+            for (long long iv = iv0; iv <= iv1; ++iv) {
+                bool outside = false, inner = true;
+                for (int e = 0; e < 3; ++e) {
+                    const double q = axis_u[e] * double(iu) + axis_v[e] * double(iv);
+                    outside |= (q < lo2[e]) | (q > hi2[e]);
+                    inner &= (q >= lo2[e] + width[e] + margin[e]) & (q <= hi2[e] - width[e] - margin[e]);
+                }
+                if (outside) continue;
                 const double w = (c - n[u] * double(iu) - n[v] * double(iv)) / n[d];
                 long long w0, w1;
                 if (!clamp_index(std::max(w - slack, bl[d]) - 0.5, std::min(w + slack, bh[d]) + 0.5, static_cast<long long>(dims[d]), w0, w1))
@@ -285,9 +330,16 @@ inline void fill_window(const std::vector<tri>& tris, const std::vector<std::uin
                 idx[v] = iv;
                 for (long long iw = w0; iw <= w1; ++iw) {
                     idx[d] = iw;
-                    if (tester.overlaps({double(idx[0]), double(idx[1]), double(idx[2])})) set_voxel(idx[0], idx[1], idx[2]);
+                    const vec3<double> centre{double(idx[0]), double(idx[1]), double(idx[2])};
+                    if (inner) {
+                        const double q = dot(n, centre);
+                        if (q >= plane_lo && q <= plane_hi) set_voxel(idx[0], idx[1], idx[2]);
+                    } else if (tester.overlaps(centre)) {
+                        set_voxel(idx[0], idx[1], idx[2]);
+                    }
                 }
             }
+        }
     };
 
     const std::size_t row_blocks = job.crossings ? dims[1] * dims[2] : 0;
