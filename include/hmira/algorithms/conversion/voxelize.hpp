@@ -235,10 +235,9 @@ inline void fill_window(const std::vector<tri>& tris, const std::vector<std::uin
     const long long nx = static_cast<long long>(dims[0]), ny = static_cast<long long>(dims[1]), nz = static_cast<long long>(dims[2]);
     const std::size_t words = out.words_per_row();
     const std::size_t count = subset ? subset->size() : tris.size();
-    // Crossing marks go straight into the output when nothing else is set there; else into
-    // their own bits, merged by the prefix XOR.
-    std::vector<std::uint64_t> own_toggles(job.crossings && job.surface ? words * dims[1] * dims[2] : 0, 0);
-    std::uint64_t* toggles = job.crossings ? (job.surface ? own_toggles.data() : out.words().data()) : nullptr;
+    // Crossing marks go straight into the output, turned into inside bits by a prefix XOR
+    // before the surface voxels are ORed in: no second grid.
+    std::uint64_t* toggles = job.crossings ? out.words().data() : nullptr;
 
     auto set_voxel = [&](long long i, long long j, long long k) {
         // Neighbouring triangles share most voxels: read first, and pay for the atomic OR only
@@ -342,16 +341,12 @@ inline void fill_window(const std::vector<tri>& tris, const std::vector<std::uin
         }
     };
 
-    const std::size_t row_blocks = job.crossings ? dims[1] * dims[2] : 0;
-    (void)row_blocks;
     with_thread_count(threads, [&] {
-        // Surface voxels and ray crossings, one triangle at a time.
-        parallel_chunks(count, 1024, [&](std::size_t t0, std::size_t t1) {
+        // Ray crossings, one triangle at a time.
+        if (toggles) parallel_chunks(count, 1024, [&](std::size_t t0, std::size_t t1) {
             for (std::size_t t = t0; t < t1; ++t) {
                 if ((t - t0) % 1024 == 0 && !gate.advance(std::min<std::size_t>(1024, t1 - t))) return;
                 const tri& tr = tris[subset ? (*subset)[t] : t];
-                if (job.surface && !tr.degenerate) surface_voxels(tr);
-                if (!toggles) continue;
                 const crossing_triangle ct(tr.p[0], tr.p[1], tr.p[2]);
                 if (ct.xmin - 1 >= double(lo[0] + nx)) continue;  // crosses no ray before the window's end
                 // Rays along x through voxel centres (j, k) in the window; voxels beyond the
@@ -374,10 +369,9 @@ inline void fill_window(const std::vector<tri>& tris, const std::vector<std::uin
                 for (std::size_t r = q0; r < q1; ++r) {
                     if ((r - q0) % 256 == 0 && !gate.advance(std::min<std::size_t>(256, q1 - r))) return;
                     std::uint64_t carry = 0;
-                    std::uint64_t* tg = toggles + r * words;
-                    std::uint64_t* row = out.row(r % dims[1], r / dims[1]);
+                    std::uint64_t* row = toggles + r * words;
                     for (std::size_t w = 0; w < words; ++w) {
-                        std::uint64_t x = tg[w];
+                        std::uint64_t x = row[w];
                         x ^= x << 1;
                         x ^= x << 2;
                         x ^= x << 4;
@@ -387,12 +381,21 @@ inline void fill_window(const std::vector<tri>& tris, const std::vector<std::uin
                         if (carry) x = ~x;
                         carry = x >> 63;
                         if (w + 1 == words) x &= last;
-                        if (tg == row) row[w] = x;
-                        else row[w] |= x;
+                        row[w] = x;
                     }
                 }
             });
         }
+        if (gate.cancelled()) return;
+        // Surface voxels, one triangle at a time (most are found set already inside a solid).
+        if (job.surface) parallel_chunks(count, 1024, [&](std::size_t t0, std::size_t t1) {
+            for (std::size_t t = t0; t < t1; ++t) {
+                if ((t - t0) % 1024 == 0 && !gate.advance(std::min<std::size_t>(1024, t1 - t))) return;
+                const tri& tr = tris[subset ? (*subset)[t] : t];
+                if (!tr.degenerate) surface_voxels(tr);
+            }
+        });
+        if (gate.cancelled()) return;
         if (job.winding) {
             // Between two surface voxels along a row the side cannot change without crossing
             // the surface, except through a hole: one winding number per run of empty voxels.
@@ -481,7 +484,8 @@ result<voxelization> voxelize(const M& mesh, const grid_geometry& grid, const vo
     auto job = detail::vox::plan(options, g->closed, out.note, out.filled);
     if (!job) return job.error();
     const std::size_t rows = job->crossings || job->winding ? grid.dims[1] * grid.dims[2] : 0;
-    detail::progress_gate gate(options.progress, g->tris.size() + rows);
+    const std::size_t passes = std::size_t(job->surface) + std::size_t(job->crossings);
+    detail::progress_gate gate(options.progress, passes * g->tris.size() + rows);
     detail::vox::fill_window(g->tris, nullptr, {0, 0, 0}, out.voxels, *job, options.threads, gate);
     if (gate.cancelled()) return fail(errc::unsupported, "voxelize: cancelled");
     return out;
