@@ -11,6 +11,7 @@
 #include <random>
 
 #include <hmira/algorithms/conversion/voxelize.hpp>
+#include <hmira/algorithms/conversion/voxelize_blocks.hpp>
 #include <hmira/io/off.hpp>
 #include <hmira/meshes/face_vertex_mesh.hpp>
 
@@ -173,6 +174,106 @@ TEST(VoxelizeCentres, an_open_mesh_is_refused_or_reported_as_the_options_say) {
     ASSERT_TRUE(surface);
     EXPECT_FALSE(surface->filled);
     EXPECT_NE(surface->note.find("surface voxels only"), std::string::npos);
+}
+
+// Every voxel of `block` equals the whole grid's.
+::testing::AssertionResult block_matches(const hmira::bit_grid& whole, const hmira::voxel_block& block, const hmira::bit_grid& got) {
+    if (got.dims() != block.dims) return ::testing::AssertionFailure() << "block dims differ";
+    for (std::size_t k = 0; k < block.dims[2]; ++k)
+        for (std::size_t j = 0; j < block.dims[1]; ++j)
+            for (std::size_t i = 0; i < block.dims[0]; ++i)
+                if (got.value(i, j, k) != whole.value(block.lo[0] + i, block.lo[1] + j, block.lo[2] + k))
+                    return ::testing::AssertionFailure() << "voxel " << block.lo[0] + i << ' ' << block.lo[1] + j << ' ' << block.lo[2] + k
+                                                         << " of block at " << block.lo[0] << ' ' << block.lo[1] << ' ' << block.lo[2];
+    return ::testing::AssertionSuccess();
+}
+
+#if defined(HMIRA_SANITIZER_BUILD)
+constexpr std::size_t block_res = 40;
+constexpr int block_trials = 2;
+#else
+constexpr std::size_t block_res = 96;
+constexpr int block_trials = 5;
+#endif
+
+class BlocksOnRealMesh : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(BlocksOnRealMesh, blocks_of_random_sizes_equal_the_whole_grid_in_every_mode) {
+    const auto mesh = read(GetParam());
+    if (mesh.face_count() == 0) GTEST_SKIP() << "test data not found: " << GetParam();
+    const auto g = hmira::voxel_grid_around(mesh, block_res, 2);
+    ASSERT_TRUE(g);
+    std::mt19937_64 rng(42);
+    std::uniform_int_distribution<std::size_t> size(1, 64);
+    for (auto mode : {hmira::voxelize_mode::centres, hmira::voxelize_mode::solid, hmira::voxelize_mode::surface}) {
+        const hmira::voxelize_options options{.mode = mode, .allow_degenerate = true};
+        auto whole = hmira::voxelize(mesh, *g, options);
+        ASSERT_TRUE(whole);
+        for (int trial = 0; trial < block_trials; ++trial) {
+            // Sizes that do not divide the grid, single slabs, and the whole grid in one block.
+            hmira::grid_dims bs{size(rng), size(rng), size(rng)};
+            if (trial == 0) bs = {g->dims[0], g->dims[1], 1};
+            if (trial == 1) bs = g->dims;
+            std::size_t blocks = 0, set = 0;
+            auto r = hmira::voxelize_blocks(mesh, *g, bs, options, [&](const hmira::voxel_block& b, hmira::voxelization&& v) {
+                ++blocks;
+                set += v.voxels.count();
+                EXPECT_EQ(v.filled, whole->filled);
+                EXPECT_TRUE(block_matches(whole->voxels, b, v.voxels)) << GetParam() << " mode " << int(mode) << " block size " << bs[0]
+                                                                       << ' ' << bs[1] << ' ' << bs[2];
+                return !HasFailure();
+            });
+            ASSERT_TRUE(r) << r.error().message;
+            EXPECT_EQ(set, whole->voxels.count());
+            std::size_t expected = 1;
+            for (int a = 0; a < 3; ++a) expected *= (g->dims[a] + bs[a] - 1) / bs[a];
+            EXPECT_EQ(blocks, expected);
+        }
+        // Single blocks computed alone, anywhere in the grid.
+        for (int trial = 0; trial < 2 * block_trials; ++trial) {
+            hmira::voxel_block b;
+            for (int a = 0; a < 3; ++a) {
+                b.lo[a] = std::uniform_int_distribution<std::size_t>(0, g->dims[a] - 1)(rng);
+                b.dims[a] = std::uniform_int_distribution<std::size_t>(1, g->dims[a] - b.lo[a])(rng);
+            }
+            auto v = hmira::voxelize_block(mesh, *g, b, options);
+            ASSERT_TRUE(v) << v.error().message;
+            EXPECT_TRUE(block_matches(whole->voxels, b, v->voxels));
+            EXPECT_EQ(v->voxels.origin().x, g->origin.x + double(b.lo[0]) * g->spacing.x);
+        }
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Closed, BlocksOnRealMesh, ::testing::Values("elephant.off", "fandisk.off", "sphere966.off"));
+
+TEST(VoxelizeBlocks, octahedron_on_voxel_centres_in_one_voxel_blocks_and_bad_blocks_are_refused) {
+    const auto mesh = octahedron(10, 5);
+    const hmira::grid_geometry g{{21, 21, 21}, {0, 0, 0}, {1, 1, 1}};
+    for (auto mode : {hmira::voxelize_mode::centres, hmira::voxelize_mode::solid}) {
+        auto whole = hmira::voxelize(mesh, g, {.mode = mode});
+        ASSERT_TRUE(whole);
+        std::size_t set = 0;
+        auto r = hmira::voxelize_blocks(mesh, g, {1, 1, 1}, {.mode = mode}, [&](const hmira::voxel_block& b, hmira::voxelization&& v) {
+            set += v.voxels.count();
+            EXPECT_EQ(v.voxels.value(0, 0, 0), whole->voxels.value(b.lo[0], b.lo[1], b.lo[2])) << int(mode) << " at " << b.lo[0] << ' ' << b.lo[1] << ' ' << b.lo[2];
+            return true;
+        });
+        ASSERT_TRUE(r);
+        EXPECT_EQ(set, whole->voxels.count());
+    }
+    auto outside = hmira::voxelize_block(mesh, g, {{20, 0, 0}, {2, 1, 1}});
+    ASSERT_FALSE(outside);
+    EXPECT_EQ(outside.error().code, hmira::errc::invalid_argument);
+    EXPECT_NE(outside.error().message.find("along x"), std::string::npos) << outside.error().message;
+    auto empty = hmira::voxelize_block(mesh, g, {{0, 0, 0}, {1, 0, 1}});
+    ASSERT_FALSE(empty);
+    EXPECT_NE(empty.error().message.find("along y"), std::string::npos);
+    auto zero = hmira::voxelize_blocks(mesh, g, {0, 4, 4}, {}, [](const hmira::voxel_block&, hmira::voxelization&&) { return true; });
+    ASSERT_FALSE(zero);
+    // Stopping early hands over no more blocks.
+    std::size_t seen = 0;
+    ASSERT_TRUE(hmira::voxelize_blocks(mesh, g, {7, 7, 7}, {}, [&](const hmira::voxel_block&, hmira::voxelization&&) { return ++seen < 3; }));
+    EXPECT_EQ(seen, 3u);
 }
 
 }  // namespace

@@ -226,15 +226,19 @@ struct window_job {
     bool winding = false;    // the winding-number fill between surface voxels (open mesh)
 };
 
-/// Voxelizes triangles `subset` of `tris` (all of them when subset is null) into `out`, whose
-/// voxel (0, 0, 0) is voxel `lo` of the whole grid; the rays of the parity fill start at
-/// -infinity, so a window gets the same bits as the whole grid has there.
-inline void fill_window(const std::vector<tri>& tris, const std::vector<std::uint32_t>* subset, const std::array<long long, 3>& lo,
-                        bit_grid& out, const window_job& job, unsigned threads, progress_gate& gate) {
+/// Voxelizes `tris` into `out`, whose voxel (0, 0, 0) is voxel `lo` of the whole grid: the
+/// surface voxels of triangles `surface_subset`, the crossings of triangles `crossing_subset`
+/// (all triangles where a subset is null). The rays of the parity fill start at -infinity, so
+/// a window gets the same bits as the whole grid has there when crossing_subset holds every
+/// triangle whose shadow meets the window's rows.
+inline void fill_window(const std::vector<tri>& tris, const std::vector<std::uint32_t>* surface_subset,
+                        const std::vector<std::uint32_t>* crossing_subset, const std::array<long long, 3>& lo, bit_grid& out,
+                        const window_job& job, unsigned threads, progress_gate& gate) {
     const grid_dims dims = out.dims();
     const long long nx = static_cast<long long>(dims[0]), ny = static_cast<long long>(dims[1]), nz = static_cast<long long>(dims[2]);
     const std::size_t words = out.words_per_row();
-    const std::size_t count = subset ? subset->size() : tris.size();
+    const std::size_t surface_count = surface_subset ? surface_subset->size() : tris.size();
+    const std::size_t crossing_count = crossing_subset ? crossing_subset->size() : tris.size();
     // Crossing marks go straight into the output, turned into inside bits by a prefix XOR
     // before the surface voxels are ORed in: no second grid.
     std::uint64_t* toggles = job.crossings ? out.words().data() : nullptr;
@@ -250,8 +254,13 @@ inline void fill_window(const std::vector<tri>& tris, const std::vector<std::uin
     // each column only the few voxels within the plane's range over the column can touch it.
     // Coordinates here are the window's.
     auto surface_voxels = [&](const tri& tr) {
-        vec3<double> p[3];
-        for (int c = 0; c < 3; ++c) p[c] = {tr.p[c].x - double(lo[0]), tr.p[c].y - double(lo[1]), tr.p[c].z - double(lo[2])};
+        // Whole-grid coordinates, so that a window rounds exactly as the whole grid does.
+        const vec3<double>* p = tr.p;
+        auto window_range = [&](std::size_t a, double from, double to, long long& r0, long long& r1) {
+            r0 = std::max<long long>(lo[a], -fast_floor(-from));
+            r1 = std::min<long long>(lo[a] + static_cast<long long>(dims[a]) - 1, fast_floor(to));
+            return r0 <= r1;
+        };
         vec3<double> bl = p[0], bh = p[0];
         for (int c = 1; c < 3; ++c)
             for (std::size_t a = 0; a < 3; ++a) {
@@ -260,9 +269,12 @@ inline void fill_window(const std::vector<tri>& tris, const std::vector<std::uin
             }
         long long r0[3], r1[3];
         for (std::size_t a = 0; a < 3; ++a)
-            if (!clamp_index(bl[a] - 0.5, bh[a] + 0.5, static_cast<long long>(dims[a]), r0[a], r1[a])) return;
-        if (r0[0] == r1[0] && r0[1] == r1[1] && r0[2] == r1[2]) {  // inside one voxel's box
-            set_voxel(r0[0], r0[1], r0[2]);
+            if (!window_range(a, bl[a] - 0.5, bh[a] + 0.5, r0[a], r1[a])) return;
+        bool one_box = true;  // the triangle lies in one voxel's box (not merely clamped to one by the window)
+        for (std::size_t a = 0; a < 3; ++a)
+            one_box &= r0[a] == r1[a] && bl[a] >= double(r0[a]) - 0.5 && bh[a] <= double(r0[a]) + 0.5;
+        if (one_box) {
+            set_voxel(r0[0] - lo[0], r0[1] - lo[1], r0[2] - lo[2]);
             return;
         }
         const vec3<double> n = cross(p[1] - p[0], p[2] - p[0]);
@@ -321,8 +333,7 @@ inline void fill_window(const std::vector<tri>& tris, const std::vector<std::uin
                 if (outside) continue;
                 const double w = (c - n[u] * double(iu) - n[v] * double(iv)) / n[d];
                 long long w0, w1;
-                if (!clamp_index(std::max(w - slack, bl[d]) - 0.5, std::min(w + slack, bh[d]) + 0.5, static_cast<long long>(dims[d]), w0, w1))
-                    continue;
+                if (!window_range(d, std::max(w - slack, bl[d]) - 0.5, std::min(w + slack, bh[d]) + 0.5, w0, w1)) continue;
                 w0 = std::max(w0, r0[d]);
                 w1 = std::min(w1, r1[d]);
                 idx[u] = iu;
@@ -332,9 +343,9 @@ inline void fill_window(const std::vector<tri>& tris, const std::vector<std::uin
                     const vec3<double> centre{double(idx[0]), double(idx[1]), double(idx[2])};
                     if (inner) {
                         const double q = dot(n, centre);
-                        if (q >= plane_lo && q <= plane_hi) set_voxel(idx[0], idx[1], idx[2]);
+                        if (q >= plane_lo && q <= plane_hi) set_voxel(idx[0] - lo[0], idx[1] - lo[1], idx[2] - lo[2]);
                     } else if (tester.overlaps(centre)) {
-                        set_voxel(idx[0], idx[1], idx[2]);
+                        set_voxel(idx[0] - lo[0], idx[1] - lo[1], idx[2] - lo[2]);
                     }
                 }
             }
@@ -343,10 +354,10 @@ inline void fill_window(const std::vector<tri>& tris, const std::vector<std::uin
 
     with_thread_count(threads, [&] {
         // Ray crossings, one triangle at a time.
-        if (toggles) parallel_chunks(count, 1024, [&](std::size_t t0, std::size_t t1) {
+        if (toggles) parallel_chunks(crossing_count, 1024, [&](std::size_t t0, std::size_t t1) {
             for (std::size_t t = t0; t < t1; ++t) {
                 if ((t - t0) % 1024 == 0 && !gate.advance(std::min<std::size_t>(1024, t1 - t))) return;
-                const tri& tr = tris[subset ? (*subset)[t] : t];
+                const tri& tr = tris[crossing_subset ? (*crossing_subset)[t] : t];
                 const crossing_triangle ct(tr.p[0], tr.p[1], tr.p[2]);
                 if (ct.xmin - 1 >= double(lo[0] + nx)) continue;  // crosses no ray before the window's end
                 // Rays along x through voxel centres (j, k) in the window; voxels beyond the
@@ -388,10 +399,10 @@ inline void fill_window(const std::vector<tri>& tris, const std::vector<std::uin
         }
         if (gate.cancelled()) return;
         // Surface voxels, one triangle at a time (most are found set already inside a solid).
-        if (job.surface) parallel_chunks(count, 1024, [&](std::size_t t0, std::size_t t1) {
+        if (job.surface) parallel_chunks(surface_count, 1024, [&](std::size_t t0, std::size_t t1) {
             for (std::size_t t = t0; t < t1; ++t) {
                 if ((t - t0) % 1024 == 0 && !gate.advance(std::min<std::size_t>(1024, t1 - t))) return;
-                const tri& tr = tris[subset ? (*subset)[t] : t];
+                const tri& tr = tris[surface_subset ? (*surface_subset)[t] : t];
                 if (!tr.degenerate) surface_voxels(tr);
             }
         });
@@ -486,7 +497,7 @@ result<voxelization> voxelize(const M& mesh, const grid_geometry& grid, const vo
     const std::size_t rows = job->crossings || job->winding ? grid.dims[1] * grid.dims[2] : 0;
     const std::size_t passes = std::size_t(job->surface) + std::size_t(job->crossings);
     detail::progress_gate gate(options.progress, passes * g->tris.size() + rows);
-    detail::vox::fill_window(g->tris, nullptr, {0, 0, 0}, out.voxels, *job, options.threads, gate);
+    detail::vox::fill_window(g->tris, nullptr, nullptr, {0, 0, 0}, out.voxels, *job, options.threads, gate);
     if (gate.cancelled()) return fail(errc::unsupported, "voxelize: cancelled");
     return out;
 }
