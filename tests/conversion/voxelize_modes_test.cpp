@@ -148,6 +148,10 @@ TEST_P(CentresOnRealMesh, count_is_within_half_a_percent_of_the_volume_and_solid
     const double h = g->spacing.x;
     const double measured = double(centres->voxels.count()) * h * h * h;
     EXPECT_NEAR(measured / volume, 1.0, 0.005) << GetParam() << ": " << centres->voxels.count() << " voxels";
+#if defined(HMIRA_SANITIZER_BUILD)
+    // Keeps the sanitizer run short: the big meshes only check the count there.
+    if (mesh.face_count() > 20000) return;
+#endif
     // solid (conservative) is exactly surface | centres.
     auto solid = hmira::voxelize(mesh, *g, {.mode = hmira::voxelize_mode::solid, .allow_degenerate = true});
     auto surface = hmira::voxelize(mesh, *g, {.mode = hmira::voxelize_mode::surface, .allow_degenerate = true});
