@@ -298,9 +298,6 @@ inline void fill_window(const std::vector<tri>& tris, const std::vector<std::uin
             lo2[e] = std::min({pa, pb, pc}) - r;
             hi2[e] = std::max({pa, pb, pc}) + r;
         }
-        const double plane_r = 0.5 * (std::abs(n.x) + std::abs(n.y) + std::abs(n.z));
-        const double plane_lo = std::min({dot(n, p[0]), dot(n, p[1]), dot(n, p[2])}) - plane_r;
-        const double plane_hi = std::max({dot(n, p[0]), dot(n, p[1]), dot(n, p[2])}) + plane_r;
         double width[3], margin[3];
         for (int e = 0; e < 3; ++e) {
             width[e] = std::abs(axis_u[e]) + std::abs(axis_v[e]);
@@ -342,8 +339,7 @@ inline void fill_window(const std::vector<tri>& tris, const std::vector<std::uin
                     idx[d] = iw;
                     const vec3<double> centre{double(idx[0]), double(idx[1]), double(idx[2])};
                     if (inner) {
-                        const double q = dot(n, centre);
-                        if (q >= plane_lo && q <= plane_hi) set_voxel(idx[0] - lo[0], idx[1] - lo[1], idx[2] - lo[2]);
+                        if (tester.meets_plane(centre)) set_voxel(idx[0] - lo[0], idx[1] - lo[1], idx[2] - lo[2]);
                     } else if (tester.overlaps(centre)) {
                         set_voxel(idx[0] - lo[0], idx[1] - lo[1], idx[2] - lo[2]);
                     }
