@@ -25,7 +25,7 @@ struct voxelize_args {
     /// an iso-surface of the voxels (hmira mc) closed.
     std::size_t padding = 2;
     bool surface = false;
-    /// surface or conservative (--surface is an alias of --mode surface).
+    /// surface, conservative or centres (--surface is an alias of --mode surface).
     std::string mode = "conservative";
     bool fill_open = false;
 };
@@ -68,8 +68,10 @@ int run_voxelize(const voxelize_args& a, const common_options& o) {
     auto grid = hmira::voxel_grid_around(mesh, a.resolution, a.padding);
     // --resolution and --padding were checked on the command line: what is left is the mesh.
     if (!grid) return report(input_exit_code(grid.error()), a.input + ": " + grid.error().message);
-    const bool surface = a.surface || a.mode == "surface";
-    const hmira::voxelize_options options{.mode = surface ? hmira::voxelize_mode::surface : hmira::voxelize_mode::solid,
+    const std::string mode = a.surface ? "surface" : a.mode;
+    const hmira::voxelize_options options{.mode = mode == "surface"  ? hmira::voxelize_mode::surface
+                                                  : mode == "centres" ? hmira::voxelize_mode::centres
+                                                                      : hmira::voxelize_mode::solid,
                                           .open_mesh = a.fill_open ? hmira::open_mesh_fill::winding_number : hmira::open_mesh_fill::surface_only,
                                           .allow_degenerate = true,
                                           .threads = static_cast<unsigned>(o.threads)};
@@ -99,7 +101,7 @@ int run_voxelize(const voxelize_args& a, const common_options& o) {
     std::snprintf(spacing, sizeof spacing, "%.6g", g.spacing.x);
     std::string line = a.input + ": " + std::to_string(g.dims[0]) + " x " + std::to_string(g.dims[1]) + " x " + std::to_string(g.dims[2]) +
                        " voxels of size " + spacing + ", " + std::to_string(voxels->voxels.count()) + " set (" +
-                       (voxels->filled ? "solid" : "surface") + ") -> " + a.output;
+                       (voxels->filled ? (mode == "centres" ? "centres" : "solid") : "surface") + ") -> " + a.output;
     if (ext == ".raw") line += " (grid in " + a.output + ".txt)";
     say(o, line);
     if (!voxels->note.empty()) say(o, "note: " + voxels->note);
@@ -121,10 +123,11 @@ const bool registered = register_command({
             ->check(whole_number(1, 2048));
         sub.add_option("--padding", a->padding, "voxels added on every side of the bounding box (the outer one of 2 stays empty even where the surface lies on the box)")->capture_default_str()->check(whole_number(0, 1024));
         auto* mode = sub.add_option("--mode", a->mode,
-                       "surface: the voxels the surface touches; conservative (default): those and every voxel whose centre is inside a closed mesh")
-            ->check(CLI::IsMember({"surface", "conservative"}));
+                       "surface: the voxels the surface touches; conservative (default): those and every voxel whose centre is inside a closed mesh "
+                       "(for collision); centres: exactly the voxels whose centre is inside (for volume, as VTK's stencil)")
+            ->check(CLI::IsMember({"surface", "conservative", "centres"}));
         sub.add_flag("--surface", a->surface, "alias of --mode surface")->excludes(mode);
-        sub.add_flag("--fill-open", a->fill_open, "solid mode on a mesh with holes: fill where the winding number is at least 1/2 (default: surface only, with a note)");
+        sub.add_flag("--fill-open", a->fill_open, "conservative or centres mode on a mesh with holes: fill where the winding number is at least 1/2 (default: surface only, with a note)");
         return [a](const common_options& o) { return run_voxelize(*a, o); };
     }});
 

@@ -1,6 +1,8 @@
-// hmira solid voxelization of armadillo, elephant and a generated closed ~2M-triangle mesh at
-// 256^3 and 512^3, with 1 and 2 threads. `--export DIR` writes the meshes (raw float64
-// vertices, int32 triangles) and grids for peers.py, with hmira's solid and surface counts.
+// hmira voxelization (conservative solid and centres modes) of sphere966 (few large
+// triangles), armadillo, elephant and a generated closed ~2M-triangle mesh at 256^3 and
+// 512^3, with 1 and 2 threads. `--export DIR` writes the meshes (raw float64 vertices, int32
+// triangles) and grids for peers.py, with hmira's solid, surface and centres counts and the
+// centres bits (DIR/<mesh>_<res>.centres: the bit_grid's words, rows padded to 64 bits).
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -12,6 +14,7 @@
 #include <map>
 #include <numbers>
 #include <string>
+#include <utility>
 
 #include <hmira/algorithms/conversion/marching_cubes.hpp>
 #include <hmira/algorithms/conversion/voxelize.hpp>
@@ -57,10 +60,10 @@ const hmira::face_vertex_mesh& get(const std::string& name) {
     return cache.emplace(name, std::move(m)).first->second;
 }
 
-const char* meshes[] = {"armadillo", "elephant", "generated2M"};
+const char* meshes[] = {"sphere966", "armadillo", "elephant", "generated2M"};
 const std::size_t resolutions[] = {256, 512};
 
-void bm_voxelize(benchmark::State& state, std::string name, std::size_t res) {
+void bm_voxelize(benchmark::State& state, std::string name, std::size_t res, hmira::voxelize_mode mode) {
     const auto& m = get(name);
     const auto threads = static_cast<unsigned>(state.range(0));
 #if defined(HMIRA_HAS_TBB)
@@ -69,7 +72,7 @@ void bm_voxelize(benchmark::State& state, std::string name, std::size_t res) {
     const auto geo = *hmira::voxel_grid_around(m, res, 1);
     std::size_t count = 0;
     for (auto _ : state) {
-        auto v = hmira::voxelize(m, geo, {.allow_degenerate = true, .threads = threads});
+        auto v = hmira::voxelize(m, geo, {.mode = mode, .allow_degenerate = true, .threads = threads});
         if (!v || !v->filled) state.SkipWithError("not filled");
         else benchmark::DoNotOptimize(v->voxels.words().data());
         if (v) count = v->voxels.count();
@@ -98,9 +101,15 @@ int export_meshes(const std::filesystem::path& dir) {
             const auto geo = *hmira::voxel_grid_around(m, res, 1);
             auto solid = hmira::voxelize(m, geo, {.allow_degenerate = true});
             auto surface = hmira::voxelize(m, geo, {.mode = hmira::voxelize_mode::surface, .allow_degenerate = true});
+            auto centres = hmira::voxelize(m, geo, {.mode = hmira::voxelize_mode::centres, .allow_degenerate = true});
+            {
+                std::ofstream bits(dir / (std::string(name) + "_" + std::to_string(res) + ".centres"), std::ios::binary);
+                const auto w = centres->voxels.words();
+                bits.write(reinterpret_cast<const char*>(w.data()), std::streamsize(w.size() * sizeof(std::uint64_t)));
+            }
             manifest << name << ' ' << res << ' ' << m.vertex_count() << ' ' << m.face_count() << ' ' << geo.dims[0] << ' '
                      << geo.dims[1] << ' ' << geo.dims[2] << ' ' << geo.origin.x << ' ' << geo.origin.y << ' ' << geo.origin.z
-                     << ' ' << geo.spacing.x << ' ' << solid->voxels.count() << ' ' << surface->voxels.count() << '\n';
+                     << ' ' << geo.spacing.x << ' ' << solid->voxels.count() << ' ' << surface->voxels.count() << ' ' << centres->voxels.count() << '\n';
         }
     }
     return 0;
@@ -111,10 +120,13 @@ int export_meshes(const std::filesystem::path& dir) {
 int main(int argc, char** argv) {
     for (int a = 1; a + 1 < argc; ++a)
         if (std::strcmp(argv[a], "--export") == 0) return export_meshes(argv[a + 1]);
+    const std::pair<const char*, hmira::voxelize_mode> modes[] = {{"hmira_voxelize", hmira::voxelize_mode::solid},
+                                                                  {"hmira_voxelize_centres", hmira::voxelize_mode::centres}};
+    for (const auto& [prefix, mode] : modes)
     for (const char* name : meshes)
         for (std::size_t res : resolutions)
-            benchmark::RegisterBenchmark((std::string("hmira_voxelize/") + name + "/" + std::to_string(res)).c_str(), bm_voxelize,
-                                         std::string(name), res)
+            benchmark::RegisterBenchmark((std::string(prefix) + "/" + name + "/" + std::to_string(res)).c_str(), bm_voxelize,
+                                         std::string(name), res, mode)
                 ->Arg(1)
                 ->Arg(2)
                 ->Unit(benchmark::kMillisecond)

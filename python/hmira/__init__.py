@@ -406,12 +406,13 @@ def voxelize(vertices: Any, faces: Any = None, *, resolution: Optional[int] = No
         Voxels along the longest side of the bounding box (default 256, as the CLI).
     pitch : float, keyword-only
         Voxel size instead of `resolution`.
-    mode : {"conservative", "surface"}, keyword-only
+    mode : {"conservative", "centres", "surface"}, keyword-only
         The CLI's ``--mode``. "surface": the voxels the surface touches (exact triangle-box
-        test); "conservative" (the default, a solid): those plus every voxel whose centre lies
-        inside a closed mesh.
+        test); "conservative" (the default, a solid for collision): those plus every voxel
+        whose centre lies inside a closed mesh; "centres": exactly the voxels whose centre lies
+        inside (exact test; for volume, as VTK's stencil and scikit-image count it).
     fill_open : bool, keyword-only
-        Solid mode on a mesh with holes: fill where the winding number is at least 1/2
+        Conservative or centres mode on a mesh with holes: fill where the winding number is at least 1/2
         (default: surface voxels only, as the CLI).
     threads : int, keyword-only
         Worker threads (0: all cores).

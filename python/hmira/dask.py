@@ -30,7 +30,7 @@ import numpy as np
 
 from . import _core
 
-__all__ = ["marching_cubes"]
+__all__ = ["marching_cubes", "voxelize"]
 
 _DTYPES = (np.float32, np.float64, np.uint8, np.uint16, np.int16)
 
@@ -286,5 +286,5 @@ def _stream_ply(path, shape, chunks, tasks, window):
             os.unlink(final)
 
 
-# s5-voxel adds hmira.dask.voxelize in python/hmira/_dask_voxelize.py; the lead imports it here
-# at merge time:  from ._dask_voxelize import voxelize  # noqa: E402,F401
+# Chunked voxelization lives in its own module; hmira.dask exposes it beside marching_cubes.
+from ._dask_voxelize import voxelize  # noqa: E402,F401

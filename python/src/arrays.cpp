@@ -4,6 +4,8 @@
 // the C++ vectors (no copy on the way out).
 #include "common.hpp"
 
+#include <nanobind/stl/array.h>
+
 #include <bit>
 #include <cmath>
 #include <cstring>
@@ -19,6 +21,7 @@
 #include <hmira/algorithms/conversion/delaunay_triangulation.hpp>
 #include <hmira/algorithms/conversion/marching_cubes.hpp>
 #include <hmira/algorithms/conversion/voxelize.hpp>
+#include <hmira/algorithms/conversion/voxelize_blocks.hpp>
 #include <hmira/io/mesh_io.hpp>
 #include <hmira/meshes/face_vertex_mesh.hpp>
 
@@ -337,116 +340,195 @@ void check_points(const double* points, std::size_t vertices, const char* who) {
     if (bad < vertices) value_error(std::string(who) + ": vertex " + std::to_string(bad) + " has a non-finite coordinate");
 }
 
+/// The grid hmira.voxelize uses: `resolution` voxels (256 by default) along the longest side
+/// plus two empty layers, or voxels of size `pitch` over the same centred box.
+template <class M, class T>
+hmira::result<hmira::grid_geometry> voxel_grid_for(const M& mesh, std::optional<std::size_t> resolution, std::optional<double> pitch) {
+    auto g = hmira::voxel_grid_around<M, T>(mesh, resolution.value_or(256), 2);
+    if (!g || !pitch) return g;
+    hmira::grid_geometry geometry = *g;
+    // The box voxel_grid_around centres on the mesh, with the voxel size given.
+    for (int a = 0; a < 3; ++a) {
+        const double centre = g->origin[a] + 0.5 * double(g->dims[a] - 1) * g->spacing[a];
+        const double extent = double(g->dims[a] - 4) * g->spacing[a];
+        const double n = std::ceil(extent / *pitch - 1e-9);
+        if (!(n < 65536)) return hmira::fail(hmira::errc::invalid_argument, "voxelize: pitch too small for the mesh (more than 65536 voxels along an axis)");
+        geometry.dims[a] = std::max<std::size_t>(std::size_t(n), 1) + 4;
+        geometry.spacing[a] = *pitch;
+        geometry.origin[a] = centre - 0.5 * double(geometry.dims[a] - 1) * *pitch;
+    }
+    return geometry;
+}
+
+/// The mode names of the CLI's --mode.
+hmira::voxelize_mode voxelize_mode_named(const std::string& mode) {
+    if (mode != "conservative" && mode != "surface" && mode != "centres")
+        value_error("voxelize: mode must be 'conservative', 'centres' or 'surface', got '" + mode + "'");
+    return mode == "surface" ? hmira::voxelize_mode::surface : mode == "centres" ? hmira::voxelize_mode::centres : hmira::voxelize_mode::solid;
+}
+
+/// (V, F) read in place as a mesh when F is an (m, k) int32/int64 array, else through a soup
+/// and a face_vertex_mesh; run(mesh) is called on it with the GIL released.
+class mesh_view {
+public:
+    mesh_view(const vertex_array& vertices, nb::handle faces, const char* who) : vertices_(vertices) {
+        if (vertices.shape(1) != 3)
+            value_error(std::string(who) + ": vertices must have shape (n, 3), got (" + std::to_string(vertices.shape(0)) + ", " +
+                        std::to_string(vertices.shape(1)) + ")");
+        const bool is_list = nb::isinstance<nb::list>(faces) || nb::isinstance<nb::tuple>(faces);
+        const bool in_place_narrow = !is_list && nb::try_cast(faces, narrow_, false);
+        const bool in_place_wide = !is_list && !in_place_narrow && nb::try_cast(faces, wide_, false);
+        if (in_place_narrow || in_place_wide) check_points(vertices.data(), vertices.shape(0), who);
+        if (in_place_narrow) {
+            check_corners(narrow_.data(), narrow_.shape(0), narrow_.shape(1), vertices.shape(0), who);
+            narrow_mesh_ = array_mesh<std::int32_t>{vertices.data(), vertices.shape(0), narrow_.data(), narrow_.shape(0), narrow_.shape(1)};
+        } else if (in_place_wide) {
+            check_corners(wide_.data(), wide_.shape(0), wide_.shape(1), vertices.shape(0), who);
+            wide_mesh_ = array_mesh<std::int64_t>{vertices.data(), vertices.shape(0), wide_.data(), wide_.shape(0), wide_.shape(1)};
+        } else {
+            soup_ = to_soup(vertices, faces, who);
+        }
+        who_ = who;
+    }
+    /// Calls run.template operator()<M, T>(mesh); call with the GIL released.
+    template <class R, class Run>
+    R visit(Run&& run) const {
+        if (narrow_mesh_) return run.template operator()<array_mesh<std::int32_t>, array_mesh_traits<std::int32_t>>(*narrow_mesh_);
+        if (wide_mesh_) return run.template operator()<array_mesh<std::int64_t>, array_mesh_traits<std::int64_t>>(*wide_mesh_);
+        hmira::face_vertex_mesh mesh;
+        const std::string who = who_;
+        auto built = hmira::io::assign_from_soup(mesh, *soup_, [&](std::size_t) { return who; });
+        if (!built) return built.error();
+        return run.template operator()<hmira::face_vertex_mesh, hmira::default_traits<hmira::face_vertex_mesh>>(mesh);
+    }
+
+private:
+    const vertex_array& vertices_;
+    nb::ndarray<const std::int32_t, nb::ndim<2>, nb::c_contig, nb::device::cpu> narrow_;
+    nb::ndarray<const std::int64_t, nb::ndim<2>, nb::c_contig, nb::device::cpu> wide_;
+    std::optional<array_mesh<std::int32_t>> narrow_mesh_;
+    std::optional<array_mesh<std::int64_t>> wide_mesh_;
+    std::optional<hmira::io::polygon_soup> soup_;
+    std::string who_;
+};
+
+/// Expands the bits of `v` into one bool byte per voxel, x fastest (Fortran order of [i, j, k]),
+/// eight voxels at a time by table, in parallel over z slices.
+void expand_bits(const hmira::bit_grid& v, std::uint8_t* cells, unsigned threads) {
+    static_assert(std::endian::native == std::endian::little, "the bit expansion table assumes little endian");
+    static const auto expand = [] {
+        std::array<std::uint64_t, 256> t{};
+        for (unsigned b = 0; b < 256; ++b)
+            for (unsigned q = 0; q < 8; ++q)
+                if ((b >> q) & 1u) t[b] |= std::uint64_t(1) << (8 * q);
+        return t;
+    }();
+    const auto d = v.dims();
+    hmira::detail::with_thread_count(threads, [&] {
+        hmira::detail::parallel_chunks(d[2], 1, [&](std::size_t k0, std::size_t k1) {
+            for (std::size_t k = k0; k < k1; ++k)
+                for (std::size_t j = 0; j < d[1]; ++j) {
+                    const std::uint64_t* row = v.row(j, k);
+                    std::uint8_t* out = cells + d[0] * (j + d[1] * k);
+                    const std::size_t full = d[0] / 8;
+                    for (std::size_t q = 0; q < full; ++q) {
+                        const auto byte = static_cast<unsigned>((row[q >> 3] >> (8 * (q & 7))) & 0xffu);
+                        std::memcpy(out + 8 * q, &expand[byte], 8);  // little-endian: bit q -> byte q
+                    }
+                    for (std::size_t i = 8 * full; i < d[0]; ++i) out[i] = static_cast<std::uint8_t>((row[i >> 6] >> (i & 63)) & 1u);
+                }
+        });
+    });
+}
+
+/// A numpy bool array of shape dims, Fortran order, owning `cells`.
+nb::ndarray<nb::numpy, bool, nb::ndim<3>> bool_grid(std::unique_ptr<std::uint8_t[]> cells, const hmira::grid_dims& d) {
+    auto* owned = cells.release();
+    nb::capsule owner(owned, [](void* p) noexcept { delete[] static_cast<std::uint8_t*>(p); });
+    const std::size_t shape[3] = {d[0], d[1], d[2]};
+    const std::int64_t strides[3] = {1, std::int64_t(d[0]), std::int64_t(d[0] * d[1])};
+    return nb::ndarray<nb::numpy, bool, nb::ndim<3>>(reinterpret_cast<bool*>(owned), 3, shape, owner, strides);
+}
+
 nb::tuple voxelize(const vertex_array& vertices, nb::handle faces, std::optional<std::size_t> resolution, std::optional<double> pitch,
                    const std::string& mode, bool fill_open, unsigned threads) {
-    if (mode != "conservative" && mode != "surface") value_error("voxelize: mode must be 'conservative' or 'surface', got '" + mode + "'");
+    const auto named_mode = voxelize_mode_named(mode);
     if (resolution && pitch) value_error("voxelize: give resolution or pitch, not both");
     if (resolution && *resolution == 0) value_error("voxelize: resolution must be at least 1");
     if (pitch && !(*pitch > 0 && std::isfinite(*pitch))) value_error("voxelize: pitch must be finite and > 0");
-    if (vertices.shape(1) != 3)
-        value_error("voxelize: vertices must have shape (n, 3), got (" + std::to_string(vertices.shape(0)) + ", " +
-                    std::to_string(vertices.shape(1)) + ")");
-    // (m, k) int32 or int64 faces (marching_cubes' output, trimesh's) are read in place as a
-    // mesh; anything else (lists of polygons) goes through a soup and a face_vertex_mesh.
-    nb::ndarray<const std::int32_t, nb::ndim<2>, nb::c_contig, nb::device::cpu> narrow;
-    nb::ndarray<const std::int64_t, nb::ndim<2>, nb::c_contig, nb::device::cpu> wide;
-    const bool is_list = nb::isinstance<nb::list>(faces) || nb::isinstance<nb::tuple>(faces);
-    const bool in_place_narrow = !is_list && nb::try_cast(faces, narrow, false);
-    const bool in_place_wide = !is_list && !in_place_narrow && nb::try_cast(faces, wide, false);
-    std::optional<array_mesh<std::int32_t>> narrow_mesh;
-    std::optional<array_mesh<std::int64_t>> wide_mesh;
-    std::optional<hmira::io::polygon_soup> soup;
-    if (in_place_narrow || in_place_wide) check_points(vertices.data(), vertices.shape(0), "voxelize");
-    if (in_place_narrow) {
-        check_corners(narrow.data(), narrow.shape(0), narrow.shape(1), vertices.shape(0), "voxelize");
-        narrow_mesh = array_mesh<std::int32_t>{vertices.data(), vertices.shape(0), narrow.data(), narrow.shape(0), narrow.shape(1)};
-    } else if (in_place_wide) {
-        check_corners(wide.data(), wide.shape(0), wide.shape(1), vertices.shape(0), "voxelize");
-        wide_mesh = array_mesh<std::int64_t>{vertices.data(), vertices.shape(0), wide.data(), wide.shape(0), wide.shape(1)};
-    } else {
-        soup = to_soup(vertices, faces, "voxelize");
-    }
+    const mesh_view view(vertices, faces, "voxelize");
     interrupt_watch watch;
-    const hmira::voxelize_options options{.mode = mode == "surface" ? hmira::voxelize_mode::surface : hmira::voxelize_mode::solid,
+    const hmira::voxelize_options options{.mode = named_mode,
                                           .open_mesh = fill_open ? hmira::open_mesh_fill::winding_number : hmira::open_mesh_fill::surface_only,
                                           .allow_degenerate = true,
                                           .threads = threads,
                                           .progress = watch.callback()};
     hmira::result<hmira::voxelization> r = hmira::fail(hmira::errc::invalid_argument, "");
     hmira::grid_geometry geometry;
+    std::unique_ptr<std::uint8_t[]> cells;
     {
         nb::gil_scoped_release release;
-        // The C++ work timed for bench/python: the grid around the mesh and the voxelization.
-        auto run = [&]<class M, class T>(const M& mesh) -> hmira::result<hmira::voxelization> {
+        // The C++ work timed for bench/python: the grid around the mesh, the voxelization, and
+        // the bools numpy gets, expanded from the bits in parallel (every byte is written: no
+        // zeroing first).
+        r = view.visit<hmira::result<hmira::voxelization>>([&]<class M, class T>(const M& mesh) -> hmira::result<hmira::voxelization> {
             cpp_timer timer;
-            auto g = hmira::voxel_grid_around<M, T>(mesh, resolution.value_or(256), 2);
+            auto g = voxel_grid_for<M, T>(mesh, resolution, pitch);
             if (!g) return g.error();
             geometry = *g;
-            if (pitch) {
-                // The box voxel_grid_around centres on the mesh, with the voxel size given.
-                for (int a = 0; a < 3; ++a) {
-                    const double centre = g->origin[a] + 0.5 * double(g->dims[a] - 1) * g->spacing[a];
-                    const double extent = double(g->dims[a] - 4) * g->spacing[a];
-                    const double n = std::ceil(extent / *pitch - 1e-9);
-                    if (!(n < 65536)) return hmira::fail(hmira::errc::invalid_argument, "voxelize: pitch too small for the mesh (more than 65536 voxels along an axis)");
-                    geometry.dims[a] = std::max<std::size_t>(std::size_t(n), 1) + 4;
-                    geometry.spacing[a] = *pitch;
-                    geometry.origin[a] = centre - 0.5 * double(geometry.dims[a] - 1) * *pitch;
-                }
-            }
-            return hmira::voxelize<M, T>(mesh, geometry, options);
-        };
-        if (narrow_mesh) {
-            r = run.template operator()<array_mesh<std::int32_t>, array_mesh_traits<std::int32_t>>(*narrow_mesh);
-        } else if (wide_mesh) {
-            r = run.template operator()<array_mesh<std::int64_t>, array_mesh_traits<std::int64_t>>(*wide_mesh);
-        } else {
-            hmira::face_vertex_mesh mesh;
-            auto built = hmira::io::assign_from_soup(mesh, *soup, [](std::size_t) { return std::string("voxelize"); });
-            if (built) r = run.template operator()<hmira::face_vertex_mesh, hmira::default_traits<hmira::face_vertex_mesh>>(mesh);
-            else r = built.error();
-        }
+            auto v = hmira::voxelize<M, T>(mesh, geometry, options);
+            if (!v) return v;
+            cells.reset(new std::uint8_t[geometry.dims[0] * geometry.dims[1] * geometry.dims[2]]);
+            expand_bits(v->voxels, cells.get(), threads);
+            return v;
+        });
     }
     watch.rethrow();
     auto v = take(std::move(r));
-    const auto d = geometry.dims;
-    // Fortran order: [i, j, k] indexes x, y, z, and each row of x stays contiguous.
-    static_assert(std::endian::native == std::endian::little, "the bit expansion table assumes little endian");
-    // Every byte is written below: no zeroing first.
-    std::unique_ptr<std::uint8_t[]> cells(new std::uint8_t[d[0] * d[1] * d[2]]);
+    auto origin = nb::make_tuple(geometry.origin.x, geometry.origin.y, geometry.origin.z);
+    return nb::make_tuple(bool_grid(std::move(cells), geometry.dims), origin, geometry.spacing.x, v.filled, v.note);
+}
+
+/// The grid hmira.voxelize would use: (dims, origin, pitch).
+nb::tuple voxel_grid(const vertex_array& vertices, std::optional<std::size_t> resolution, std::optional<double> pitch) {
+    if (resolution && pitch) value_error("voxelize: give resolution or pitch, not both");
+    if (resolution && *resolution == 0) value_error("voxelize: resolution must be at least 1");
+    if (pitch && !(*pitch > 0 && std::isfinite(*pitch))) value_error("voxelize: pitch must be finite and > 0");
+    if (vertices.shape(1) != 3) value_error("voxelize: vertices must have shape (n, 3)");
+    check_points(vertices.data(), vertices.shape(0), "voxelize");
+    const array_mesh<std::int32_t> points{vertices.data(), vertices.shape(0), nullptr, 0, 3};
+    auto g = take(voxel_grid_for<array_mesh<std::int32_t>, array_mesh_traits<std::int32_t>>(points, resolution, pitch));
+    return nb::make_tuple(nb::make_tuple(g.dims[0], g.dims[1], g.dims[2]), nb::make_tuple(g.origin.x, g.origin.y, g.origin.z), g.spacing.x);
+}
+
+/// One block of the grid (dims, origin, pitch): voxels [lo, lo + shape) as a bool array.
+nb::ndarray<nb::numpy, bool, nb::ndim<3>> voxelize_block(const vertex_array& vertices, nb::handle faces, std::array<std::size_t, 3> dims,
+                                                         std::array<double, 3> origin, double pitch, std::array<std::size_t, 3> lo,
+                                                         std::array<std::size_t, 3> shape, const std::string& mode, bool fill_open,
+                                                         unsigned threads) {
+    const auto named_mode = voxelize_mode_named(mode);
+    if (!(pitch > 0 && std::isfinite(pitch))) value_error("voxelize: pitch must be finite and > 0");
+    const mesh_view view(vertices, faces, "voxelize");
+    const hmira::grid_geometry grid{{dims[0], dims[1], dims[2]}, {origin[0], origin[1], origin[2]}, {pitch, pitch, pitch}};
+    const hmira::voxel_block block{lo, {shape[0], shape[1], shape[2]}};
+    const hmira::voxelize_options options{.mode = named_mode,
+                                          .open_mesh = fill_open ? hmira::open_mesh_fill::winding_number : hmira::open_mesh_fill::surface_only,
+                                          .allow_degenerate = true,
+                                          .threads = threads};
+    std::unique_ptr<std::uint8_t[]> cells;
+    hmira::result<hmira::voxelization> r = hmira::fail(hmira::errc::invalid_argument, "");
     {
         nb::gil_scoped_release release;
-        // Eight voxels at a time: each byte of bits expands to eight bool bytes by table.
-        static const auto expand = [] {
-            std::array<std::uint64_t, 256> t{};
-            for (unsigned b = 0; b < 256; ++b)
-                for (unsigned q = 0; q < 8; ++q)
-                    if ((b >> q) & 1u) t[b] |= std::uint64_t(1) << (8 * q);
-            return t;
-        }();
-        hmira::detail::with_thread_count(threads, [&] {
-            hmira::detail::parallel_chunks(d[2], 1, [&](std::size_t k0, std::size_t k1) {
-                for (std::size_t k = k0; k < k1; ++k)
-                    for (std::size_t j = 0; j < d[1]; ++j) {
-                        const std::uint64_t* row = v.voxels.row(j, k);
-                        std::uint8_t* out = cells.get() + d[0] * (j + d[1] * k);
-                        const std::size_t full = d[0] / 8;
-                        for (std::size_t q = 0; q < full; ++q) {
-                            const auto byte = static_cast<unsigned>((row[q >> 3] >> (8 * (q & 7))) & 0xffu);
-                            std::memcpy(out + 8 * q, &expand[byte], 8);  // little-endian: bit q -> byte q
-                        }
-                        for (std::size_t i = 8 * full; i < d[0]; ++i) out[i] = static_cast<std::uint8_t>((row[i >> 6] >> (i & 63)) & 1u);
-                    }
-            });
+        r = view.visit<hmira::result<hmira::voxelization>>([&]<class M, class T>(const M& mesh) -> hmira::result<hmira::voxelization> {
+            auto v = hmira::voxelize_block<M, T>(mesh, grid, block, options);
+            if (!v) return v;
+            cells.reset(new std::uint8_t[shape[0] * shape[1] * shape[2]]);
+            expand_bits(v->voxels, cells.get(), threads);
+            return v;
         });
     }
-    auto* owned = cells.release();
-    nb::capsule owner(owned, [](void* p) noexcept { delete[] static_cast<std::uint8_t*>(p); });
-    const std::size_t shape[3] = {d[0], d[1], d[2]};
-    const std::int64_t strides[3] = {1, std::int64_t(d[0]), std::int64_t(d[0] * d[1])};
-    nb::ndarray<nb::numpy, bool, nb::ndim<3>> grid(reinterpret_cast<bool*>(owned), 3, shape, owner, strides);
-    auto origin = nb::make_tuple(geometry.origin.x, geometry.origin.y, geometry.origin.z);
-    return nb::make_tuple(grid, origin, geometry.spacing.x, v.filled, v.note);
+    (void)take(std::move(r));
+    return bool_grid(std::move(cells), block.dims);
 }
 
 using point_array = nb::ndarray<const double, nb::ndim<2>, nb::c_contig, nb::device::cpu>;
@@ -514,6 +596,11 @@ void bind_arrays(nb::module_& m) {
     m.def("_voxelize", &voxelize, nb::arg("vertices"), nb::arg("faces"), nb::kw_only(), nb::arg("resolution") = nb::none(),
           nb::arg("pitch") = nb::none(), nb::arg("mode") = "conservative", nb::arg("fill_open") = false, nb::arg("threads") = 0u,
           "Voxelizes (vertices, faces); see hmira.voxelize.");
+    m.def("_voxel_grid", &voxel_grid, nb::arg("vertices"), nb::kw_only(), nb::arg("resolution") = nb::none(), nb::arg("pitch") = nb::none(),
+          "The grid hmira.voxelize uses for these vertices: ((nx, ny, nz), origin, pitch).");
+    m.def("_voxelize_block", &voxelize_block, nb::arg("vertices"), nb::arg("faces"), nb::kw_only(), nb::arg("dims"), nb::arg("origin"),
+          nb::arg("pitch"), nb::arg("lo"), nb::arg("shape"), nb::arg("mode") = "conservative", nb::arg("fill_open") = false,
+          nb::arg("threads") = 0u, "Voxels [lo, lo + shape) of the grid (dims, origin, pitch), as hmira.voxelize sets them there; see hmira.dask.voxelize.");
     m.def("delaunay_triangulation", &delaunay, nb::arg("points"), nb::kw_only(), nb::arg("voronoi") = false, DELAUNAY_DOC);
     m.def("_write_polygons", &write_polygons, nb::arg("path"), nb::arg("vertices"), nb::arg("faces"), nb::kw_only(),
           nb::arg("ascii") = false, nb::arg("big_endian") = false, nb::arg("float32") = false,

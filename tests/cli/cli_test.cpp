@@ -613,6 +613,11 @@ TEST(cli, voxelize_a_cube_sets_the_voxels_its_geometry_predicts) {
     EXPECT_EQ(hmira_test::read_bytes(dir / "m.raw"), raw);
     ASSERT_EQ(hmira(dir, "voxelize c.obj cons.raw -n 16 --padding 0 --mode conservative -q").code, 0);
     EXPECT_EQ(hmira_test::read_bytes(dir / "cons.raw"), std::string(n * n * n, '\1'));
+    // --mode centres: every centre of the 16^3 grid lies strictly inside the cube.
+    ASSERT_EQ(hmira(dir, "voxelize c.obj cen.raw -n 16 --padding 1 --mode centres -q").code, 0);
+    const auto centres = hmira_test::read_bytes(dir / "cen.raw");
+    ASSERT_EQ(centres.size(), (n + 2) * (n + 2) * (n + 2));
+    EXPECT_EQ(std::count(centres.begin(), centres.end(), '\1'), std::ptrdiff_t(n * n * n));
     expect_refused(dir, "voxelize c.obj x.raw --mode centre", 2, "--mode", "x.raw");
     expect_refused(dir, "voxelize c.obj x.raw --mode surface --surface", 2, "--surface", "x.raw");
     const auto sidecar = hmira_test::read_bytes(dir / "s.raw.txt");

@@ -24,14 +24,21 @@
 #include "../../grids/voxel_grid.hpp"
 #include "detail/parallel.hpp"
 #include "detail/triangle_box.hpp"
+#include "detail/voxel_crossings.hpp"
 
 namespace hmira {
 
-/// surface: the voxels the surface touches. solid: those plus every voxel whose centre lies
-/// inside the mesh.
-enum class voxelize_mode { surface, solid };
+/// Which voxels voxelize() sets. Pick `centres` to measure volume or to match VTK's
+/// vtkPolyDataToImageStencil and scikit-image (the count times pitch^3 is the enclosed volume
+/// up to the sampling error); `solid` (the CLI's "conservative") for collision and for a grid
+/// that covers the whole shape; `surface` for a shell.
+enum class voxelize_mode {
+    surface,  ///< the voxels the surface touches (their closed box meets a triangle)
+    solid,    ///< surface voxels plus every voxel whose centre lies inside (conservative)
+    centres,  ///< exactly the voxels whose centre lies inside the closed mesh
+};
 
-/// What solid mode does with a mesh that is not closed (some edge has an odd number of faces).
+/// What the solid and centres modes do with a mesh that is not closed (some edge has an odd number of faces).
 enum class open_mesh_fill {
     surface_only,    ///< voxelize the surface only and say so in the result (the thesis's choice)
     winding_number,  ///< fill where the generalized winding number is at least 1/2
@@ -40,8 +47,8 @@ enum class open_mesh_fill {
 
 /// Options of voxelize() and voxelize_into().
 struct voxelize_options {
-    voxelize_mode mode = voxelize_mode::solid;                ///< surface voxels only, or also the interior
-    open_mesh_fill open_mesh = open_mesh_fill::surface_only;  ///< what solid mode does with a mesh that is not closed
+    voxelize_mode mode = voxelize_mode::solid;                ///< which voxels to set
+    open_mesh_fill open_mesh = open_mesh_fill::surface_only;  ///< what the filling modes do with a mesh that is not closed
     /// Accept zero-area triangles (all corners collinear) instead of reporting them; they add
     /// no surface voxels of their own. Faces with a repeated vertex are always an error.
     bool allow_degenerate = false;
@@ -55,9 +62,9 @@ struct voxelize_options {
 /// The voxels, and how they were made.
 struct voxelization {
     bit_grid voxels;  ///< the set voxels, on the requested grid
-    /// True when the interior was filled (solid mode on a closed mesh, or by winding number).
+    /// True when the interior was filled (solid or centres mode on a closed mesh, or by winding number).
     bool filled = false;
-    /// Empty, or why solid mode did something else than asked (an open mesh).
+    /// Empty, or why a filling mode did something else than asked (an open mesh).
     std::string note;
     std::size_t triangles = 0;             ///< triangles voxelized (polygons are fanned)
     std::size_t degenerate_triangles = 0;  ///< zero-area triangles met (allowed by the options)
@@ -120,38 +127,6 @@ inline std::uint64_t mix(std::uint64_t x) {
     return x ^ (x >> 31);
 }
 
-// Fixed-point (1/1024 voxel) coordinates for the crossing test: the orientation predicates
-// below are then exact in 64-bit integers, so a ray through a shared edge or vertex meets
-// exactly one of the triangles around it.
-constexpr double fixed_scale = 1024.0;
-constexpr double fixed_limit = double(1 << 19);  // voxels; keeps products below 2^62
-
-inline long long to_fixed(double v) {
-    return std::llround(std::clamp(v, -fixed_limit, fixed_limit) * fixed_scale);
-}
-
-struct point2 {
-    long long y, z;
-};
-
-// Orientation of p against the segment u -> v, exactly antisymmetric in (u, v) and broken
-// for p on the line by a symbolic shift of p by (eps, eps^2) in (y, z).
-inline int side(point2 u, point2 v, point2 p) {
-    bool flip = false;
-    if (v.y < u.y || (v.y == u.y && v.z < u.z)) {
-        std::swap(u, v);
-        flip = true;
-    }
-    const long long ey = v.y - u.y, ez = v.z - u.z;
-    const long long w = ey * (p.z - u.z) - ez * (p.y - u.y);
-    int s = w > 0 ? 1 : (w < 0 ? -1 : 0);
-    if (s == 0) {
-        // d/deps of ey * (eps^2) - ez * eps: the eps term dominates unless ez == 0.
-        s = ez != 0 ? (ez > 0 ? -1 : 1) : (ey > 0 ? 1 : (ey < 0 ? -1 : 0));
-    }
-    return flip ? -s : s;
-}
-
 inline double solid_angle(vec3<double> a, vec3<double> b, vec3<double> c) {
     const double la = norm(a), lb = norm(b), lc = norm(c);
     const double num = dot(a, cross(b, c));
@@ -161,37 +136,27 @@ inline double solid_angle(vec3<double> a, vec3<double> b, vec3<double> c) {
 
 }  // namespace detail::vox
 
-/// Voxelizes `mesh` into a bit grid of geometry `grid` (sample (i, j, k) = centre of voxel
-/// (i, j, k), voxel = the box of one spacing around it). Polygons are fanned into triangles.
-///
-/// - Surface voxels: every voxel whose closed box meets a triangle, by an exact separating-axis
-///   test (conservative voxelization).
-/// - Solid mode on a closed mesh (every edge used by an even number of faces, checked by an
-///   XOR of edge hashes): also every voxel whose centre lies inside, by the parity of the
-///   crossings of a ray along x, counted with exact fixed-point predicates so that rays through
-///   edges and vertices count once. On a mesh that is not closed, see voxelize_options.
-/// - Parallel over triangles (bits set by atomic OR / XOR, which commute) and rows: the output
-///   is the same for every thread count.
-///
-/// Complexity: O(F + sum over triangles of the voxels in their bounding box) for the surface,
-/// plus O(sum of the rays each triangle's shadow covers + N/64) for the fill; the winding
-/// number fill costs O(F) per run of empty voxels along each row.
-/// Errors (nothing is returned but the error): invalid_argument for an unusable grid (zero
-/// dimension, spacing not positive) or a non-finite vertex position; degenerate_face for a face
-/// with fewer than 3 vertices or a repeated vertex, and for a zero-area triangle unless
-/// allow_degenerate; topology when solid mode meets an open mesh with open_mesh = fail.
-template <class M, class T = default_traits<M>>
-    requires voxelize_mesh<M, T>
-result<voxelization> voxelize(const M& mesh, const grid_geometry& grid, const voxelize_options& options = {}) {
-    using detail::vox::tri;
-    if (auto ok = check_grid_geometry(grid, "voxelize"); !ok) return ok.error();
-    const std::size_t nx = grid.dims[0], ny = grid.dims[1], nz = grid.dims[2];
+namespace detail::vox {
 
-    // Gather triangles in voxel units, and hash the edges for the closedness check.
+// Voxel coordinates are clamped to +-2^60 (far outside any grid) and magnitudes below 2^-180
+// are flushed to 0, so the exact predicates stay in their range.
+inline double to_voxel_units(double p, double origin, double spacing) {
+    const double q = std::clamp((p - origin) / spacing, -0x1p60, 0x1p60);
+    return std::abs(q) < 0x1p-180 ? 0.0 : q;
+}
+
+/// The mesh's triangles in voxel units of `grid`, with the closedness check.
+struct gathered {
     std::vector<tri> tris;
-    tris.reserve(T::face_count(mesh) * 2);
-    std::uint64_t edge_parity = 0;
+    bool closed = true;
     std::size_t degenerate = 0;
+};
+
+template <class M, class T>
+result<gathered> gather(const M& mesh, const grid_geometry& grid, bool allow_degenerate) {
+    gathered out;
+    out.tris.reserve(T::face_count(mesh) * 2);
+    std::uint64_t edge_parity = 0;
     std::vector<vec3<double>> loop;
     std::vector<std::size_t> ids;
     for (auto f : T::faces(mesh)) {
@@ -204,13 +169,13 @@ result<voxelization> voxelize(const M& mesh, const grid_geometry& grid, const vo
                 if (!std::isfinite(double(p[a])))
                     return fail(errc::invalid_argument, "voxelize: vertex " + std::to_string(T::vertex_index(mesh, v)) +
                                                             " has a non-finite position", static_cast<long long>(T::vertex_index(mesh, v)));
-                q[a] = (double(p[a]) - grid.origin[a]) / grid.spacing[a];
+                q[a] = to_voxel_units(double(p[a]), grid.origin[a], grid.spacing[a]);
             }
             loop.push_back(q);
             ids.push_back(T::vertex_index(mesh, v));
         }
         const std::size_t n = loop.size();
-        const long long fi = static_cast<long long>(tris.size());
+        const long long fi = static_cast<long long>(out.tris.size());
         if (n < 3) return fail(errc::degenerate_face, "voxelize: a face has " + std::to_string(n) + " vertices", fi);
         for (std::size_t a = 0; a < n; ++a)
             for (std::size_t b = a + 1; b < n; ++b)
@@ -219,164 +184,201 @@ result<voxelization> voxelize(const M& mesh, const grid_geometry& grid, const vo
                                 static_cast<long long>(ids[a]));
         for (std::size_t a = 0; a < n; ++a) {
             const std::uint64_t u = ids[a], w = ids[(a + 1) % n];
-            edge_parity ^= detail::vox::mix((std::min(u, w) << 32) ^ std::max(u, w) ^ (std::min(u, w) >> 32));
+            edge_parity ^= mix((std::min(u, w) << 32) ^ std::max(u, w) ^ (std::min(u, w) >> 32));
         }
         for (std::size_t a = 1; a + 1 < n; ++a) {
             tri t{{loop[0], loop[a], loop[a + 1]}, false};
             const auto c = cross(t.p[1] - t.p[0], t.p[2] - t.p[0]);
             if (c.x == 0 && c.y == 0 && c.z == 0) {
-                if (!options.allow_degenerate)
-                    return fail(errc::degenerate_face, "voxelize: triangle " + std::to_string(tris.size()) +
+                if (!allow_degenerate)
+                    return fail(errc::degenerate_face, "voxelize: triangle " + std::to_string(out.tris.size()) +
                                                            " has zero area (set allow_degenerate to accept it)",
-                                static_cast<long long>(tris.size()));
+                                static_cast<long long>(out.tris.size()));
                 t.degenerate = true;
-                ++degenerate;
+                ++out.degenerate;
             }
-            tris.push_back(t);
+            out.tris.push_back(t);
         }
     }
-    const bool closed = edge_parity == 0;
-    bool fill = options.mode == voxelize_mode::solid;
-    bool winding = false;
-    voxelization out{bit_grid(grid), false, {}, tris.size(), degenerate};
-    if (fill && !closed) {
-        const std::string why = "the mesh is not closed (an edge has an odd number of faces)";
-        if (options.open_mesh == open_mesh_fill::fail) return fail(errc::topology, "voxelize: solid mode: " + why);
-        if (options.open_mesh == open_mesh_fill::surface_only) {
-            fill = false;
-            out.note = "solid fill skipped: " + why + "; surface voxels only";
-        } else {
-            winding = true;
-            out.note = why + "; filled by generalized winding number";
-        }
-    }
+    out.closed = edge_parity == 0;
+    return out;
+}
 
-    bit_grid& vox = out.voxels;
-    const std::size_t words = vox.words_per_row();
-    std::vector<std::uint64_t> toggles(fill && !winding ? words * ny * nz : 0, 0);
-    // floor and ceil without a libm call (the x86-64 baseline has no roundsd); the clamp to
-    // +-2^40 keeps the conversion defined for far-away geometry.
-    auto fast_floor = [](double x) {
-        x = std::clamp(x, -1099511627776.0, 1099511627776.0);
-        const auto i = static_cast<long long>(x);
-        return i - (double(i) > x);
-    };
-    auto clamp_index = [&](double lo, double hi, std::size_t n, long long& a, long long& b) {
-        a = std::max<long long>(0, -fast_floor(-lo));
-        b = std::min<long long>(static_cast<long long>(n) - 1, fast_floor(hi));
-        return a <= b;
-    };
+// floor without a libm call (the x86-64 baseline has no roundsd); the clamp to +-2^40 keeps
+// the conversion defined for far-away geometry.
+inline long long fast_floor(double x) {
+    x = std::clamp(x, -1099511627776.0, 1099511627776.0);
+    const auto i = static_cast<long long>(x);
+    return i - (double(i) > x);
+}
+
+// The integer range [a, b] of [lo, hi] within [0, n), false if empty.
+inline bool clamp_index(double lo, double hi, long long n, long long& a, long long& b) {
+    a = std::max<long long>(0, -fast_floor(-lo));
+    b = std::min<long long>(n - 1, fast_floor(hi));
+    return a <= b;
+}
+
+/// What to compute in a window of the grid.
+struct window_job {
+    bool surface = false;    // voxels the surface touches
+    bool crossings = false;  // the parity fill of voxel centres (closed mesh)
+    bool winding = false;    // the winding-number fill between surface voxels (open mesh)
+};
+
+/// Voxelizes `tris` into `out`, whose voxel (0, 0, 0) is voxel `lo` of the whole grid: the
+/// surface voxels of triangles `surface_subset`, the crossings of triangles `crossing_subset`
+/// (all triangles where a subset is null). The rays of the parity fill start at -infinity, so
+/// a window gets the same bits as the whole grid has there when crossing_subset holds every
+/// triangle whose shadow meets the window's rows.
+inline void fill_window(const std::vector<tri>& tris, const std::vector<std::uint32_t>* surface_subset,
+                        const std::vector<std::uint32_t>* crossing_subset, const std::array<long long, 3>& lo, bit_grid& out,
+                        const window_job& job, unsigned threads, progress_gate& gate) {
+    const grid_dims dims = out.dims();
+    const long long nx = static_cast<long long>(dims[0]), ny = static_cast<long long>(dims[1]), nz = static_cast<long long>(dims[2]);
+    const std::size_t words = out.words_per_row();
+    const std::size_t surface_count = surface_subset ? surface_subset->size() : tris.size();
+    const std::size_t crossing_count = crossing_subset ? crossing_subset->size() : tris.size();
+    // Crossing marks go straight into the output, turned into inside bits by a prefix XOR
+    // before the surface voxels are ORed in: no second grid.
+    std::uint64_t* toggles = job.crossings ? out.words().data() : nullptr;
 
     auto set_voxel = [&](long long i, long long j, long long k) {
         // Neighbouring triangles share most voxels: read first, and pay for the atomic OR only
         // when the bit is still clear.
-        std::atomic_ref<std::uint64_t> word(vox.row(std::size_t(j), std::size_t(k))[std::size_t(i) >> 6]);
+        std::atomic_ref<std::uint64_t> word(out.row(std::size_t(j), std::size_t(k))[std::size_t(i) >> 6]);
         const std::uint64_t bit = std::uint64_t(1) << (std::size_t(i) & 63);
         if (!(word.load(std::memory_order_relaxed) & bit)) word.fetch_or(bit, std::memory_order_relaxed);
     };
     // The voxels a triangle touches: walk the columns along the normal's dominant axis d; in
     // each column only the few voxels within the plane's range over the column can touch it.
-    auto surface_voxels = [&](const tri& tr, const vec3<double>& lo, const vec3<double>& hi) {
+    // Coordinates here are the window's.
+    auto surface_voxels = [&](const tri& tr) {
+        // Whole-grid coordinates, so that a window rounds exactly as the whole grid does.
+        const vec3<double>* p = tr.p;
+        auto window_range = [&](std::size_t a, double from, double to, long long& r0, long long& r1) {
+            r0 = std::max<long long>(lo[a], -fast_floor(-from));
+            r1 = std::min<long long>(lo[a] + static_cast<long long>(dims[a]) - 1, fast_floor(to));
+            return r0 <= r1;
+        };
+        vec3<double> bl = p[0], bh = p[0];
+        for (int c = 1; c < 3; ++c)
+            for (std::size_t a = 0; a < 3; ++a) {
+                bl[a] = std::min(bl[a], p[c][a]);
+                bh[a] = std::max(bh[a], p[c][a]);
+            }
         long long r0[3], r1[3];
         for (std::size_t a = 0; a < 3; ++a)
-            if (!clamp_index(lo[a] - 0.5, hi[a] + 0.5, grid.dims[a], r0[a], r1[a])) return;
-        if (r0[0] == r1[0] && r0[1] == r1[1] && r0[2] == r1[2]) {  // inside one voxel's box
-            set_voxel(r0[0], r0[1], r0[2]);
+            if (!window_range(a, bl[a] - 0.5, bh[a] + 0.5, r0[a], r1[a])) return;
+        bool one_box = true;  // the triangle lies in one voxel's box (not merely clamped to one by the window)
+        for (std::size_t a = 0; a < 3; ++a)
+            one_box &= r0[a] == r1[a] && bl[a] >= double(r0[a]) - 0.5 && bh[a] <= double(r0[a]) + 0.5;
+        if (one_box) {
+            set_voxel(r0[0] - lo[0], r0[1] - lo[1], r0[2] - lo[2]);
             return;
         }
-        const vec3<double> n = cross(tr.p[1] - tr.p[0], tr.p[2] - tr.p[0]);
+        const vec3<double> n = cross(p[1] - p[0], p[2] - p[0]);
         const std::size_t d = std::abs(n.x) >= std::abs(n.y) ? (std::abs(n.x) >= std::abs(n.z) ? 0 : 2) : (std::abs(n.y) >= std::abs(n.z) ? 1 : 2);
         const std::size_t u = (d + 1) % 3, v = (d + 2) % 3;
-        const double c = dot(n, tr.p[0]);
+        const double c = dot(n, p[0]);
         const double slack = 0.5 * (std::abs(n[u]) + std::abs(n[v])) / std::abs(n[d]);
-        const detail::triangle_box_tester tester(tr.p[0], tr.p[1], tr.p[2], 0.5);
+        const detail::triangle_box_tester tester(p[0], p[1], p[2], 0.5);
+        // The separating axes that do not involve d (the shadow's edge normals in the (u, v)
+        // plane) give the same answer for every voxel of a column: a column whose square is
+        // outside the shadow is skipped; one whose square lies inside it needs only the plane
+        // test, since every point of the plane over the square is then on the triangle.
+        double axis_u[3], axis_v[3], lo2[3], hi2[3];
+        for (int e = 0; e < 3; ++e) {
+            const vec3<double> ed = p[(e + 1) % 3] - p[e];
+            axis_u[e] = -ed[v];
+            axis_v[e] = ed[u];
+            const double pa = axis_u[e] * p[0][u] + axis_v[e] * p[0][v], pb = axis_u[e] * p[1][u] + axis_v[e] * p[1][v],
+                         pc = axis_u[e] * p[2][u] + axis_v[e] * p[2][v];
+            const double r = 0.5 * (std::abs(axis_u[e]) + std::abs(axis_v[e]));
+            lo2[e] = std::min({pa, pb, pc}) - r;
+            hi2[e] = std::max({pa, pb, pc}) + r;
+        }
+        double width[3], margin[3];
+        for (int e = 0; e < 3; ++e) {
+            width[e] = std::abs(axis_u[e]) + std::abs(axis_v[e]);
+            margin[e] = 1e-9 * (std::abs(lo2[e]) + std::abs(hi2[e]) + width[e]);
+        }
         long long idx[3];
-        for (long long iu = r0[u]; iu <= r1[u]; ++iu)
-            for (long long iv = r0[v]; iv <= r1[v]; ++iv) {
+        for (long long iu = r0[u]; iu <= r1[u]; ++iu) {
+            // The columns of this row whose square can meet the shadow: each edge axis bounds
+            // iv to an interval (widened by one; the test per column below decides).
+            double vlo = double(r0[v]), vhi = double(r1[v]);
+            for (int e = 0; e < 3; ++e) {
+                const double base = axis_u[e] * double(iu);
+                if (axis_v[e] > 0) {
+                    vlo = std::max(vlo, (lo2[e] - base) / axis_v[e] - 1);
+                    vhi = std::min(vhi, (hi2[e] - base) / axis_v[e] + 1);
+                } else if (axis_v[e] < 0) {
+                    vlo = std::max(vlo, (hi2[e] - base) / axis_v[e] - 1);
+                    vhi = std::min(vhi, (lo2[e] - base) / axis_v[e] + 1);
+                }
+            }
+            if (!(vlo <= vhi)) continue;
+            const long long iv0 = std::max<long long>(r0[v], -fast_floor(-vlo)), iv1 = std::min<long long>(r1[v], fast_floor(vhi));
+            for (long long iv = iv0; iv <= iv1; ++iv) {
+                bool outside = false, inner = true;
+                for (int e = 0; e < 3; ++e) {
+                    const double q = axis_u[e] * double(iu) + axis_v[e] * double(iv);
+                    outside |= (q < lo2[e]) | (q > hi2[e]);
+                    inner &= (q >= lo2[e] + width[e] + margin[e]) & (q <= hi2[e] - width[e] - margin[e]);
+                }
+                if (outside) continue;
                 const double w = (c - n[u] * double(iu) - n[v] * double(iv)) / n[d];
                 long long w0, w1;
-                if (!clamp_index(std::max(w - slack, lo[d]) - 0.5, std::min(w + slack, hi[d]) + 0.5, grid.dims[d], w0, w1)) continue;
+                if (!window_range(d, std::max(w - slack, bl[d]) - 0.5, std::min(w + slack, bh[d]) + 0.5, w0, w1)) continue;
                 w0 = std::max(w0, r0[d]);
                 w1 = std::min(w1, r1[d]);
                 idx[u] = iu;
                 idx[v] = iv;
                 for (long long iw = w0; iw <= w1; ++iw) {
                     idx[d] = iw;
-                    if (tester.overlaps({double(idx[0]), double(idx[1]), double(idx[2])}))
-                        set_voxel(idx[0], idx[1], idx[2]);
+                    const vec3<double> centre{double(idx[0]), double(idx[1]), double(idx[2])};
+                    if (inner) {
+                        if (tester.meets_plane(centre)) set_voxel(idx[0] - lo[0], idx[1] - lo[1], idx[2] - lo[2]);
+                    } else if (tester.overlaps(centre)) {
+                        set_voxel(idx[0] - lo[0], idx[1] - lo[1], idx[2] - lo[2]);
+                    }
                 }
             }
+        }
     };
 
-    const std::size_t row_blocks = fill ? ny * nz : 0;
-    detail::progress_gate gate(options.progress, tris.size() + row_blocks);
-    detail::with_thread_count(options.threads, [&] {
-        // Surface voxels and ray crossings, one triangle at a time.
-        detail::parallel_chunks(tris.size(), 1024, [&](std::size_t t0, std::size_t t1) {
+    with_thread_count(threads, [&] {
+        // Ray crossings, one triangle at a time.
+        if (toggles) parallel_chunks(crossing_count, 1024, [&](std::size_t t0, std::size_t t1) {
             for (std::size_t t = t0; t < t1; ++t) {
                 if ((t - t0) % 1024 == 0 && !gate.advance(std::min<std::size_t>(1024, t1 - t))) return;
-                const auto& tr = tris[t];
-                vec3<double> lo = tr.p[0], hi = tr.p[0];
-                for (int c = 1; c < 3; ++c)
-                    for (std::size_t a = 0; a < 3; ++a) {
-                        lo[a] = std::min(lo[a], tr.p[c][a]);
-                        hi[a] = std::max(hi[a], tr.p[c][a]);
-                    }
-                long long j0, j1, k0, k1;
-                if (!tr.degenerate) surface_voxels(tr, lo, hi);
-                if (toggles.empty()) continue;
-                // Rays along x through voxel centres (j, k) inside the triangle's shadow.
-                using detail::vox::point2;
-                const point2 q[3] = {{detail::vox::to_fixed(tr.p[0].y), detail::vox::to_fixed(tr.p[0].z)},
-                                     {detail::vox::to_fixed(tr.p[1].y), detail::vox::to_fixed(tr.p[1].z)},
-                                     {detail::vox::to_fixed(tr.p[2].y), detail::vox::to_fixed(tr.p[2].z)}};
-                const long long area = (q[1].y - q[0].y) * (q[2].z - q[0].z) - (q[1].z - q[0].z) * (q[2].y - q[0].y);
-                if (area == 0) continue;  // seen edge-on: no ray crosses it (after the symbolic shift)
-                const int orient = area > 0 ? 1 : -1;
-                const double s = detail::vox::fixed_scale;
-                if (!clamp_index(double(std::min({q[0].y, q[1].y, q[2].y})) / s, double(std::max({q[0].y, q[1].y, q[2].y})) / s, ny, j0, j1) ||
-                    !clamp_index(double(std::min({q[0].z, q[1].z, q[2].z})) / s, double(std::max({q[0].z, q[1].z, q[2].z})) / s, nz, k0, k1))
-                    continue;
-                for (long long k = k0; k <= k1; ++k)
-                    for (long long j = j0; j <= j1; ++j) {
-                        const point2 p{j * 1024, k * 1024};
-                        if (detail::vox::side(q[1], q[2], p) != orient || detail::vox::side(q[2], q[0], p) != orient ||
-                            detail::vox::side(q[0], q[1], p) != orient)
-                            continue;
-                        // Where the ray meets the triangle's plane (barycentric in y, z).
-                        const auto& a = tr.p[0];
-                        const auto e1 = tr.p[1] - a, e2 = tr.p[2] - a;
-                        const double det = e1.y * e2.z - e1.z * e2.y;
-                        double x;
-                        if (det != 0) {
-                            const double dy = double(j) - a.y, dz = double(k) - a.z;
-                            const double u = (dy * e2.z - dz * e2.y) / det, v = (e1.y * dz - e1.z * dy) / det;
-                            x = a.x + u * e1.x + v * e2.x;
-                        } else {
-                            x = (a.x + tr.p[1].x + tr.p[2].x) / 3;  // edge-on in doubles, not in fixed point
-                        }
-                        // Voxels with centre beyond the crossing change side.
-                        const double first = double(fast_floor(x)) + 1;
-                        if (first >= double(nx)) continue;
-                        const std::size_t i = first <= 0 ? 0 : static_cast<std::size_t>(first);
-                        std::atomic_ref<std::uint64_t>(toggles[(std::size_t(k) * ny + std::size_t(j)) * words + (i >> 6)])
-                            .fetch_xor(std::uint64_t(1) << (i & 63), std::memory_order_relaxed);
-                    }
+                const tri& tr = tris[crossing_subset ? (*crossing_subset)[t] : t];
+                const crossing_triangle ct(tr.p[0], tr.p[1], tr.p[2]);
+                if (ct.xmin - 1 >= double(lo[0] + nx)) continue;  // crosses no ray before the window's end
+                // Rays along x through voxel centres (j, k) in the window; voxels beyond the
+                // crossing change side.
+                ct.for_each_ray(lo[1], lo[1] + ny - 1, lo[2], lo[2] + nz - 1, [&](long long j, long long k) {
+                    const long long first = ct.first_beyond(j, k) - lo[0];
+                    if (first >= nx) return;
+                    const std::size_t i = first <= 0 ? 0 : static_cast<std::size_t>(first);
+                    std::atomic_ref<std::uint64_t>(toggles[(std::size_t(k - lo[2]) * dims[1] + std::size_t(j - lo[1])) * words + (i >> 6)])
+                        .fetch_xor(std::uint64_t(1) << (i & 63), std::memory_order_relaxed);
+                });
             }
         });
 
         if (gate.cancelled()) return;
-        if (fill && !winding) {
+        if (toggles) {
             // Prefix XOR along each row turns crossing marks into inside bits.
-            const std::uint64_t last = (nx & 63) ? (std::uint64_t(1) << (nx & 63)) - 1 : ~std::uint64_t(0);
-            detail::parallel_chunks(ny * nz, 256, [&](std::size_t r0, std::size_t r1) {
-                for (std::size_t r = r0; r < r1; ++r) {
-                    if ((r - r0) % 256 == 0 && !gate.advance(std::min<std::size_t>(256, r1 - r))) return;
+            const std::uint64_t last = (dims[0] & 63) ? (std::uint64_t(1) << (dims[0] & 63)) - 1 : ~std::uint64_t(0);
+            parallel_chunks(dims[1] * dims[2], 256, [&](std::size_t q0, std::size_t q1) {
+                for (std::size_t r = q0; r < q1; ++r) {
+                    if ((r - q0) % 256 == 0 && !gate.advance(std::min<std::size_t>(256, q1 - r))) return;
                     std::uint64_t carry = 0;
-                    std::uint64_t* tg = &toggles[r * words];
-                    std::uint64_t* row = vox.row(r % ny, r / ny);
+                    std::uint64_t* row = toggles + r * words;
                     for (std::size_t w = 0; w < words; ++w) {
-                        std::uint64_t x = tg[w];
+                        std::uint64_t x = row[w];
                         x ^= x << 1;
                         x ^= x << 2;
                         x ^= x << 4;
@@ -386,40 +388,113 @@ result<voxelization> voxelize(const M& mesh, const grid_geometry& grid, const vo
                         if (carry) x = ~x;
                         carry = x >> 63;
                         if (w + 1 == words) x &= last;
-                        row[w] |= x;
+                        row[w] = x;
                     }
                 }
             });
         }
-        if (winding) {
+        if (gate.cancelled()) return;
+        // Surface voxels, one triangle at a time (most are found set already inside a solid).
+        if (job.surface) parallel_chunks(surface_count, 1024, [&](std::size_t t0, std::size_t t1) {
+            for (std::size_t t = t0; t < t1; ++t) {
+                if ((t - t0) % 1024 == 0 && !gate.advance(std::min<std::size_t>(1024, t1 - t))) return;
+                const tri& tr = tris[surface_subset ? (*surface_subset)[t] : t];
+                if (!tr.degenerate) surface_voxels(tr);
+            }
+        });
+        if (gate.cancelled()) return;
+        if (job.winding) {
             // Between two surface voxels along a row the side cannot change without crossing
             // the surface, except through a hole: one winding number per run of empty voxels.
             const double four_pi = 4 * std::numbers::pi;
-            detail::parallel_chunks(ny * nz, 16, [&](std::size_t r0, std::size_t r1) {
-                for (std::size_t r = r0; r < r1 && gate.advance(); ++r) {
-                    const std::size_t j = r % ny, k = r / ny;
-                    std::uint64_t* row = vox.row(j, k);
+            parallel_chunks(dims[1] * dims[2], 16, [&](std::size_t q0, std::size_t q1) {
+                for (std::size_t r = q0; r < q1 && gate.advance(); ++r) {
+                    const std::size_t j = r % dims[1], k = r / dims[1];
+                    std::uint64_t* row = out.row(j, k);
                     std::vector<std::size_t> starts;
-                    for (std::size_t i = 0; i < nx; ++i) {
+                    for (std::size_t i = 0; i < dims[0]; ++i) {
                         const bool set = (row[i >> 6] >> (i & 63)) & 1;
                         const bool prev = i > 0 && ((row[(i - 1) >> 6] >> ((i - 1) & 63)) & 1);
                         if (!set && (i == 0 || prev)) starts.push_back(i);
                     }
                     for (std::size_t s0 : starts) {
-                        const vec3<double> c{double(s0), double(j), double(k)};
+                        const vec3<double> c{double(s0) + double(lo[0]), double(j) + double(lo[1]), double(k) + double(lo[2])};
                         double w = 0;
-                        for (const auto& tr : tris) w += detail::vox::solid_angle(tr.p[0] - c, tr.p[1] - c, tr.p[2] - c);
+                        for (const auto& tr : tris) w += solid_angle(tr.p[0] - c, tr.p[1] - c, tr.p[2] - c);
                         if (w / four_pi < 0.5) continue;
                         std::size_t i = s0;
-                        for (; i < nx && !((row[i >> 6] >> (i & 63)) & 1); ++i) {}
+                        for (; i < dims[0] && !((row[i >> 6] >> (i & 63)) & 1); ++i) {}
                         for (std::size_t q = s0; q < i; ++q) row[q >> 6] |= std::uint64_t(1) << (q & 63);
                     }
                 }
             });
         }
     });
+}
+
+/// What the options ask of a mesh that is closed or not; the note says what was done instead.
+inline result<window_job> plan(const voxelize_options& options, bool closed, std::string& note, bool& filled) {
+    window_job job;
+    job.surface = options.mode != voxelize_mode::centres;
+    const bool fill = options.mode != voxelize_mode::surface;
+    filled = fill;
+    if (fill && !closed) {
+        const std::string why = "the mesh is not closed (an edge has an odd number of faces)";
+        const std::string mode = options.mode == voxelize_mode::centres ? "centres" : "solid";
+        if (options.open_mesh == open_mesh_fill::fail) return fail(errc::topology, "voxelize: " + mode + " mode: " + why);
+        job.surface = true;
+        if (options.open_mesh == open_mesh_fill::surface_only) {
+            filled = false;
+            note = mode + " fill skipped: " + why + "; surface voxels only";
+        } else {
+            job.winding = true;
+            note = why + "; filled by generalized winding number" +
+                   (options.mode == voxelize_mode::centres ? std::string(", with the surface voxels (conservative)") : std::string());
+        }
+        return job;
+    }
+    job.crossings = fill;
+    return job;
+}
+
+}  // namespace detail::vox
+
+/// Voxelizes `mesh` into a bit grid of geometry `grid` (sample (i, j, k) = centre of voxel
+/// (i, j, k), voxel = the box of one spacing around it). Polygons are fanned into triangles.
+///
+/// - Surface voxels (modes surface and solid): every voxel whose closed box meets a triangle,
+///   by an exact separating-axis test (conservative voxelization).
+/// - Inside voxels (modes solid and centres) on a closed mesh (every edge used by an even
+///   number of faces, checked by an XOR of edge hashes): every voxel whose centre lies inside,
+///   by the parity of the crossings of a ray along x, decided by exact predicates (orient2d
+///   for which triangles a ray crosses, orient3d for which side of the crossing a centre lies)
+///   with a symbolic perturbation of the centre by (eps, eps^2, eps^3): rays through edges
+///   and vertices count once, and a centre exactly on the surface is inside where the surface
+///   faces -x. On a mesh that is not closed, see voxelize_options.
+/// - Parallel over triangles (bits set by atomic OR / XOR, which commute) and rows: the output
+///   is the same for every thread count.
+///
+/// Complexity: O(F + sum over triangles of the voxels in their bounding box) for the surface,
+/// plus O(N/64 + sum over triangles of the rays their shadow covers and the rows it spans) for
+/// the fill; the winding number fill costs O(F) per run of empty voxels along each row.
+/// Errors (nothing is returned but the error): invalid_argument for an unusable grid (zero
+/// dimension, spacing not positive) or a non-finite vertex position; degenerate_face for a face
+/// with fewer than 3 vertices or a repeated vertex, and for a zero-area triangle unless
+/// allow_degenerate; topology when a filling mode meets an open mesh with open_mesh = fail.
+template <class M, class T = default_traits<M>>
+    requires voxelize_mesh<M, T>
+result<voxelization> voxelize(const M& mesh, const grid_geometry& grid, const voxelize_options& options = {}) {
+    if (auto ok = check_grid_geometry(grid, "voxelize"); !ok) return ok.error();
+    auto g = detail::vox::gather<M, T>(mesh, grid, options.allow_degenerate);
+    if (!g) return g.error();
+    voxelization out{bit_grid(grid), false, {}, g->tris.size(), g->degenerate};
+    auto job = detail::vox::plan(options, g->closed, out.note, out.filled);
+    if (!job) return job.error();
+    const std::size_t rows = job->crossings || job->winding ? grid.dims[1] * grid.dims[2] : 0;
+    const std::size_t passes = std::size_t(job->surface) + std::size_t(job->crossings);
+    detail::progress_gate gate(options.progress, passes * g->tris.size() + rows);
+    detail::vox::fill_window(g->tris, nullptr, nullptr, {0, 0, 0}, out.voxels, *job, options.threads, gate);
     if (gate.cancelled()) return fail(errc::unsupported, "voxelize: cancelled");
-    out.filled = fill;
     return out;
 }
 

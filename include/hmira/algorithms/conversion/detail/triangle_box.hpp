@@ -63,6 +63,13 @@ public:
         return ok;
     }
 
+    /// The plane's part of overlaps() alone: whether the triangle's plane meets the box. Where
+    /// the box's shadow along an axis lies inside the triangle's, this decides overlaps().
+    bool meets_plane(const vec3<double>& center) const noexcept {
+        const double p = axis_[0].x * center.x + axis_[0].y * center.y + axis_[0].z * center.z;
+        return p >= lo_[0] && p <= hi_[0];
+    }
+
 private:
     void add(const vec3<double>& u, const vec3<double>& a, const vec3<double>& b, const vec3<double>& c, double h) {
         const double pa = dot(u, a), pb = dot(u, b), pc = dot(u, c);
