@@ -201,17 +201,22 @@ template <class M, class T = default_traits<M>>
     using F = typename T::face_handle;
     struct plan {
         F face;
-        dt::quad_cut<M, T> quad;  // a convex quad's cut (quad.from >= 0), or the general plan below
-        dt::face_polygon<M, T> polygon{};
-        std::vector<std::array<std::size_t, 3>> triangles{};
+        dt::face_polygon<M, T> polygon;
+        std::vector<std::array<std::size_t, 3>> triangles;
     };
     std::vector<plan> plans;
+    // Convex quads, the common case, are planned in a compact list of their own.
+    struct quad_plan {
+        F face;
+        V a, b;  // the diagonal's corners
+    };
+    std::vector<quad_plan> quads;
     for (auto f : T::faces(mesh)) {
         if (!detail::euler::has_rings<M, T>(mesh, f)) {
             const auto h = T::face_halfedge(mesh, f);
             if (T::next(mesh, T::next(mesh, T::next(mesh, h))) == h) continue;
             if (auto q = dt::convex_quad_cut<M, T>(mesh, f, options.delaunay); q.from >= 0) {
-                plans.push_back({f, q});
+                quads.push_back({f, q.corner[std::size_t(q.from)], q.corner[std::size_t(q.from) + 2]});
                 continue;
             }
         }
@@ -223,27 +228,29 @@ template <class M, class T = default_traits<M>>
             return fail(e.code, "triangulate_faces: face " + std::to_string(T::face_index(mesh, f)) + ": " + e.message,
                         (long long)T::face_index(mesh, f));
         }
-        plans.push_back({f, dt::quad_cut<M, T>(), std::move(*poly), std::move(*tris)});
+        plans.push_back({f, std::move(*poly), std::move(*tris)});
     }
     triangulate_faces_result out;
+    std::size_t added = quads.size();
+    for (const auto& pl : plans) added += pl.triangles.size() - 1;
+    if constexpr (requires { T::reserve(mesh, 0, 0, 0); T::edge_index_bound(mesh); })
+        T::reserve(mesh, T::vertex_index_bound(mesh), T::edge_index_bound(mesh) + added, T::face_index_bound(mesh) + added);
+    for (const auto& q : quads) {
+        // The face's halfedges into the diagonal's two corners.
+        H into_a = T::null_halfedge(), into_b = T::null_halfedge();
+        const H start = T::face_halfedge(mesh, q.face);
+        H x = start;
+        do {
+            if (T::target(mesh, x) == q.a) into_a = x;
+            if (T::target(mesh, x) == q.b) into_b = x;
+            x = T::next(mesh, x);
+        } while (x != start);
+        auto r = make_edge_face<M, T>(mesh, into_a, into_b);
+        if (!r) return fail(r.error().code, "triangulate_faces: internal: " + r.error().message);  // unreachable on a valid mesh
+        ++out.triangles_added;
+        ++out.faces_cut;
+    }
     for (auto& pl : plans) {
-        if (pl.quad.from >= 0) {
-            // The face's halfedges into the diagonal's two corners.
-            const auto from = std::size_t(pl.quad.from);
-            H into_a = T::null_halfedge(), into_b = T::null_halfedge();
-            const H start = T::face_halfedge(mesh, pl.face);
-            H x = start;
-            do {
-                if (T::target(mesh, x) == pl.quad.corner[from]) into_a = x;
-                if (T::target(mesh, x) == pl.quad.corner[from + 2]) into_b = x;
-                x = T::next(mesh, x);
-            } while (x != start);
-            auto r = make_edge_face<M, T>(mesh, into_a, into_b);
-            if (!r) return fail(r.error().code, "triangulate_faces: internal: " + r.error().message);  // unreachable on a valid mesh
-            ++out.triangles_added;
-            ++out.faces_cut;
-            continue;
-        }
         const auto& pts = pl.polygon.points;
         const auto& vs = pl.polygon.vertices;
         // Point index of each vertex of this face (a vertex appears once per face), and the
