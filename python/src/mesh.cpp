@@ -633,8 +633,6 @@ void bind_mesh(nb::module_& m) {
     auto core = nb::class_<py_mesh>(m, "MeshCore", MESH_DOC, nb::is_weak_referenceable());
     bind_everyday(core);
     bind_decimate(core);
-}
-
     bind_remesh(core);
     core
         .def(nb::init<>(), "An empty mesh.")
