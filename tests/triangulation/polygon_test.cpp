@@ -86,6 +86,15 @@ bool overlap(const std::vector<point2>& p, const std::array<std::size_t, 3>& t, 
     return !separates(t, u) && !separates(u, t);
 }
 
+/// No two triangles of positive area share interior points (all pairs, in integers).
+void expect_no_overlap(const std::vector<point2>& p, const std::vector<std::array<std::size_t, 3>>& tris, int round) {
+    for (std::size_t i = 0; i < tris.size(); ++i)
+        for (std::size_t j = i + 1; j < tris.size(); ++j) {
+            if (cross(p[tris[i][0]], p[tris[i][1]], p[tris[i][2]]) == 0 || cross(p[tris[j][0]], p[tris[j][1]], p[tris[j][2]]) == 0) continue;
+            ASSERT_FALSE(overlap(p, tris[i], tris[j])) << "round " << round << ": triangles " << i << " and " << j;
+        }
+}
+
 /// A random star-shaped outer loop, holes inside its inscribed disc, sometimes collinear
 /// corners (edge midpoints) and thin spikes: simple by construction or re-drawn.
 struct random_polygon {
@@ -173,13 +182,7 @@ TEST(triangulate_polygon, random_polygons_with_holes_are_covered_exactly_without
             sum += a;
         }
         ASSERT_EQ(sum, expected) << "round " << round;
-        for (std::size_t i = 0; i < r->size(); ++i)
-            for (std::size_t j = i + 1; j < r->size(); ++j) {
-                if (cross(poly.points[(*r)[i][0]], poly.points[(*r)[i][1]], poly.points[(*r)[i][2]]) == 0 ||
-                    cross(poly.points[(*r)[j][0]], poly.points[(*r)[j][1]], poly.points[(*r)[j][2]]) == 0)
-                    continue;
-                ASSERT_FALSE(overlap(poly.points, (*r)[i], (*r)[j])) << "round " << round << ": triangles " << i << " and " << j;
-            }
+        ASSERT_NO_FATAL_FAILURE(expect_no_overlap(poly.points, *r, round));
     }
     EXPECT_GT(with_holes, 100u);
 }
@@ -258,13 +261,7 @@ TEST(triangulate_polygon, the_delaunay_option_gives_locally_delaunay_triangles_w
             for (int k = 0; k < 3; ++k) side[{t[k], t[(k + 1) % 3]}] = {i, (k + 2) % 3};
         }
         ASSERT_EQ(sum, expected) << "round " << round;
-        for (std::size_t i = 0; i < r->size(); ++i)
-            for (std::size_t j = i + 1; j < r->size(); ++j) {
-                if (cross(poly.points[(*r)[i][0]], poly.points[(*r)[i][1]], poly.points[(*r)[i][2]]) == 0 ||
-                    cross(poly.points[(*r)[j][0]], poly.points[(*r)[j][1]], poly.points[(*r)[j][2]]) == 0)
-                    continue;
-                ASSERT_FALSE(overlap(poly.points, (*r)[i], (*r)[j])) << "round " << round << ": triangles " << i << " and " << j;
-            }
+        ASSERT_NO_FATAL_FAILURE(expect_no_overlap(poly.points, *r, round));
         // Locally Delaunay: across every inner side of two proper triangles forming a convex
         // quadrilateral, the far corner is not strictly inside the circumcircle.
         for (const auto& [e, tk] : side) {

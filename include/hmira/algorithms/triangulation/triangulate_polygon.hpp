@@ -367,8 +367,11 @@ struct triangulate_polygon_options {
     };
     auto test_around = [&](std::size_t e) {
         const auto it = where[e];
-        if (it != status.begin()) test(*std::prev(it), e);
-        if (std::next(it) != status.end()) test(e, *std::next(it));
+        if (it != status.begin()) {
+            const auto lower = std::prev(it);
+            test(*lower, e);
+        }
+        if (const auto upper = std::next(it); upper != status.end()) test(e, *upper);
     };
     for (const auto c : corners) {
         const std::size_t l = segs[c].loop, k = loops[l].size();
@@ -379,7 +382,10 @@ struct triangulate_polygon_options {
                 test_around(e);
                 const auto after = status.erase(where[e]);
                 where[e] = status.end();
-                if (after != status.begin() && after != status.end()) test(*std::prev(after), *after);
+                if (after != status.begin() && after != status.end()) {
+                    const auto lower = std::prev(after);
+                    test(*lower, *after);
+                }
             }
         for (const auto e : {into, c})
             if (lo(e) == here) {

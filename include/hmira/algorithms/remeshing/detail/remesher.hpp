@@ -105,7 +105,7 @@ public:
             const H x = la ? T::opposite(m_, h) : h;  // x's source is removed
             if (!short_enough_after(source(x), T::target(m_, x), p)) continue;
             const collapse_edge_options options{.placement = collapse_placement::given, .position = p, .check_geometry = true};
-            if (*triangle_ops::collapse_refusal<M, T>(m_, x, options) != '\0') continue;
+            if (const char* refusal = triangle_ops::collapse_refusal<M, T>(m_, x, options); refusal[0] != '\0') continue;
             // The edges that go: x's own and, per triangle beside it, the one at the removed end.
             const H o = T::opposite(m_, x);
             dead_[ei] = 1;
