@@ -91,3 +91,84 @@ TEST(face_vertex_mesh, reverse_face_reverses_the_vertex_order) {
 }
 
 }  // namespace
+
+namespace {
+
+using hmira::errc;
+using hmira::face_vertex_mesh;
+using point3 = std::array<double, 3>;
+
+// A mesh with one triangle, a named vertex property holding 7 on it, and its change count.
+face_vertex_mesh one_triangle_with_property() {
+    face_vertex_mesh m;
+    const auto a = m.add_vertex({0, 0, 0}), b = m.add_vertex({1, 0, 0}), c = m.add_vertex({0, 1, 0});
+    EXPECT_TRUE(m.add_face({a, b, c}));
+    auto p = m.add_vertex_property<int>("v:tag", 7);
+    EXPECT_TRUE(p.valid());
+    return m;
+}
+
+TEST(face_vertex_mesh_assign, indexed_polygons_become_the_faces_in_order) {
+    auto m = one_triangle_with_property();
+    const std::vector<point3> points{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {2, 0, 0}};
+    const std::vector<std::uint32_t> corners{0, 1, 2, 3, 1, 4, 2};
+    ASSERT_TRUE(m.assign(std::span<const point3>(points), std::vector<std::size_t>{0, 4, 7}, corners));
+    ASSERT_EQ(m.vertex_count(), 5u);
+    ASSERT_EQ(m.face_count(), 2u);
+    EXPECT_EQ(m.position(hmira::vertex_handle(4u)), (hmira::vec3<double>{2, 0, 0}));
+    const std::vector<std::uint32_t> quad{0, 1, 2, 3}, tri{1, 4, 2};
+    std::vector<std::uint32_t> got;
+    for (auto v : m.face_vertices(hmira::face_handle(0u))) got.push_back(v.index);
+    EXPECT_EQ(got, quad);
+    got.clear();
+    for (auto v : m.face_vertices(hmira::face_handle(1u))) got.push_back(v.index);
+    EXPECT_EQ(got, tri);
+    // The named property stays, sized to the new vertices with its default.
+    auto p = m.get_vertex_property<int>("v:tag");
+    ASSERT_TRUE(p.has_value());
+    EXPECT_EQ((*p)[hmira::vertex_handle(4u)], 7);
+    // The same as building face by face.
+    face_vertex_mesh built;
+    for (const auto& q : points) built.add_vertex({q[0], q[1], q[2]});
+    ASSERT_TRUE(built.add_face({hmira::vertex_handle(0u), hmira::vertex_handle(1u), hmira::vertex_handle(2u), hmira::vertex_handle(3u)}));
+    ASSERT_TRUE(built.add_face({hmira::vertex_handle(1u), hmira::vertex_handle(4u), hmira::vertex_handle(2u)}));
+    for (auto f : built.faces()) {
+        auto a = built.face_vertices(f), b = m.face_vertices(f);
+        EXPECT_TRUE(std::equal(a.begin(), a.end(), b.begin(), b.end()));
+    }
+}
+
+TEST(face_vertex_mesh_assign, a_bad_face_or_offset_names_the_face_and_changes_nothing) {
+    const std::vector<point3> points{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+    struct bad_case {
+        std::vector<std::size_t> offsets;
+        std::vector<std::uint32_t> corners;
+        errc code;
+        long long face;
+        std::string says;
+    };
+    const std::vector<bad_case> cases{
+        {{0, 3, 5}, {0, 1, 2, 2, 3}, errc::degenerate_face, 1, "at least 3 vertices, got 2"},
+        {{0, 3, 6}, {0, 1, 2, 0, 2, 9}, errc::invalid_handle, 1, "names vertex 9, which does not exist"},
+        {{0, 3, 6}, {0, 1, 2, 3, 0, 3}, errc::degenerate_face, 1, "vertex 3 appears twice"},
+        {{0, 4}, {0, 1, 2}, errc::invalid_argument, -1, "end at the corner count 3"},
+        {{1, 3}, {0, 1, 2}, errc::invalid_argument, -1, "start at 0"},
+        {{0, 3, 2, 3}, {0, 1, 2}, errc::invalid_argument, 1, "out of order"},
+    };
+    for (const auto& c : cases) {
+        auto m = one_triangle_with_property();
+        const auto changes = m.change_count();
+        auto r = m.assign(std::span<const point3>(points), std::vector<std::size_t>(c.offsets), c.corners);
+        ASSERT_FALSE(r) << c.says;
+        EXPECT_EQ(r.error().code, c.code) << r.error().message;
+        EXPECT_EQ(r.error().element, c.face) << r.error().message;
+        EXPECT_NE(r.error().message.find(c.says), std::string::npos) << r.error().message;
+        EXPECT_EQ(m.change_count(), changes);
+        EXPECT_EQ(m.vertex_count(), 3u);
+        EXPECT_EQ(m.face_count(), 1u);
+        EXPECT_EQ(m.position(hmira::vertex_handle(1u)), (hmira::vec3<double>{1, 0, 0}));
+        EXPECT_TRUE(m.get_vertex_property<int>("v:tag").has_value());
+    }
+}
+
+}  // namespace

@@ -108,16 +108,10 @@ public:
     /// handles cannot number. O(k) for k <= 16 corners, O(k log k) above (repeats are found
     /// by sorting a copy).
     result<face_handle> add_face(std::span<const vertex_handle> vs) {
-        if (vs.size() < 3)
-            return fail(errc::degenerate_face, "add_face: a face needs at least 3 vertices, got " +
-                                                   std::to_string(vs.size()));
-        for (std::size_t i = 0; i < vs.size(); ++i)
-            if (!is_valid(vs[i]))
-                return fail(errc::invalid_handle, "add_face: corner " + std::to_string(i) + " names vertex " +
-                                                      std::to_string(static_cast<long long>(vs[i].index)) +
-                                                      ", which does not exist", static_cast<long long>(vs[i].index));
-        if (auto repeated = find_repeated(vs))
-            return fail(errc::degenerate_face, "add_face: vertex " + std::to_string(*repeated) + " appears twice in the face", *repeated);
+        if (auto problem = face_problem(vs, [&](vertex_handle v) { return is_valid(v); })) {
+            problem->message = "add_face: " + problem->message;
+            return *problem;
+        }
         if (face_index_bound() >= UINT32_MAX - 1)
             return fail(errc::invalid_argument, "add_face: the mesh already holds the most faces a 32-bit face handle can name");
         corners_.insert(corners_.end(), vs.begin(), vs.end());
@@ -130,6 +124,57 @@ public:
     /// add_face() for a braced list of vertices.
     result<face_handle> add_face(std::initializer_list<vertex_handle> vs) {
         return add_face(std::span<const vertex_handle>(vs.begin(), vs.size()));
+    }
+
+    /// Replaces every element by indexed polygons, as reading a file does: vertex i at
+    /// points[i] (any type with p[0], p[1], p[2]), face f with the corners
+    /// corner_indices[face_offsets[f] .. face_offsets[f + 1]). One validation pass over the
+    /// corners and no allocation per face, where add_face would cost a call per face; the
+    /// offsets are taken by move. Named properties are kept, sized to the new counts with
+    /// their defaults. Fails, leaving the mesh unchanged, on the first face that add_face would
+    /// refuse, or on offsets that do not describe the corners; the error's element is the face.
+    /// Invalidates all handles.
+    /// Complexity: O(V + C) for C corners (O(k log k) for a face of k > 16 corners).
+    template <class Point>
+    result<void> assign(std::span<const Point> points, std::vector<std::size_t>&& face_offsets,
+                        std::span<const std::uint32_t> corner_indices) {
+        if (face_offsets.empty() || face_offsets.front() != 0 || face_offsets.back() != corner_indices.size())
+            return fail(errc::invalid_argument, "assign: the face offsets must start at 0 and end at the corner count " +
+                                                    std::to_string(corner_indices.size()));
+        const std::size_t faces = face_offsets.size() - 1;
+        if (faces >= UINT32_MAX - 1 || points.size() >= UINT32_MAX)
+            return fail(errc::invalid_argument, "assign: " + std::to_string(points.size()) + " vertices and " + std::to_string(faces) +
+                                                    " faces; 32-bit handles name fewer than 2^32 - 1 of each");
+        const auto vertex_count = points.size();
+        auto exists = [&](vertex_handle v) { return v.index < vertex_count; };
+        std::vector<vertex_handle> corners(corner_indices.size());
+        for (std::size_t f = 0; f < faces; ++f) {
+            if (face_offsets[f + 1] < face_offsets[f] || face_offsets[f + 1] > corner_indices.size())
+                return fail(errc::invalid_argument, "assign: face " + std::to_string(f) + ": its offsets " + std::to_string(face_offsets[f]) +
+                                                        ".." + std::to_string(face_offsets[f + 1]) + " are out of order", static_cast<long long>(f));
+            for (auto k = face_offsets[f]; k < face_offsets[f + 1]; ++k) corners[k] = vertex_handle(corner_indices[k]);
+            const std::span<const vertex_handle> face(corners.data() + face_offsets[f], corners.data() + face_offsets[f + 1]);
+            if (auto problem = face_problem(face, exists)) {
+                problem->element = static_cast<long long>(f);
+                return *problem;
+            }
+        }
+        // Nothing below can fail (short of memory): the mesh changes only now.
+        std::vector<point> positions(vertex_count);
+        for (std::size_t i = 0; i < vertex_count; ++i)
+            positions[i] = point{static_cast<Scalar>(points[i][0]), static_cast<Scalar>(points[i][1]), static_cast<Scalar>(points[i][2])};
+        positions_ = std::move(positions);
+        vertex_deleted_.assign(vertex_count, 0);
+        corners_ = std::move(corners);
+        face_begin_ = std::move(face_offsets);
+        face_deleted_.assign(faces, 0);
+        vertex_props_.resize(0);
+        vertex_props_.resize(vertex_count);
+        face_props_.resize(0);
+        face_props_.resize(faces);
+        deleted_vertices_ = deleted_faces_ = 0;
+        ++changes_;
+        return {};
     }
 
     /// Reverses the winding of one face, O(V_consistF).
@@ -260,6 +305,22 @@ public:
     std::uint64_t change_count() const noexcept { return changes_; }
 
 private:
+    // Why a face with these corners cannot be added (fewer than 3, a vertex that does not
+    // exist, a repeat), or nothing. The error's element is the vertex concerned.
+    template <class Exists>
+    static std::optional<error> face_problem(std::span<const vertex_handle> vs, Exists&& exists) {
+        if (vs.size() < 3)
+            return error{errc::degenerate_face, "a face needs at least 3 vertices, got " + std::to_string(vs.size())};
+        for (std::size_t i = 0; i < vs.size(); ++i)
+            if (!exists(vs[i]))
+                return error{errc::invalid_handle, "corner " + std::to_string(i) + " names vertex " +
+                                                       std::to_string(static_cast<long long>(vs[i].index)) + ", which does not exist",
+                             static_cast<long long>(vs[i].index)};
+        if (auto repeated = find_repeated(vs))
+            return error{errc::degenerate_face, "vertex " + std::to_string(*repeated) + " appears twice in the face", *repeated};
+        return std::nullopt;
+    }
+
     // The index of a vertex listed twice in vs, if any: pairwise for short faces (no
     // allocation), by sorting a copy for long ones, so a 400k-gon costs O(k log k), not O(k^2).
     static std::optional<std::uint32_t> find_repeated(std::span<const vertex_handle> vs) {

@@ -151,32 +151,69 @@ result<std::vector<typename T::vertex_handle>> add_soup(M& mesh, const polygon_s
 
 }  // namespace detail
 
+namespace detail {
+
+/// A model that takes indexed polygons whole, validated in one pass (face_vertex_mesh's
+/// assign), under its own traits.
+template <class M, class T>
+concept takes_indexed_polygons = std::same_as<T, default_traits<M>> && requires(M& mesh, const polygon_soup& soup, std::vector<std::size_t> offsets) {
+    { mesh.assign(std::span<const std::array<double, 3>>(soup.points), std::move(offsets), std::span<const std::uint32_t>(soup.indices)) };
+};
+
+/// The soup into such a model: unchanged on error, whose face is named by face_origin.
+template <class M, class T, class Origin>
+result<void> assign_indexed_polygons(M& mesh, const polygon_soup& soup, std::vector<std::size_t>&& offsets, Origin& face_origin) {
+    auto assigned = mesh.assign(std::span<const std::array<double, 3>>(soup.points), std::move(offsets), std::span<const std::uint32_t>(soup.indices));
+    if (!assigned) {
+        auto e = assigned.error();
+        const auto f = static_cast<std::size_t>(e.element < 0 ? 0 : e.element);
+        e.message = face_origin(f) + ": face " + std::to_string(f) + " rejected: " + e.message;
+        return e;
+    }
+    if (!soup.attributes.normals.empty() || !soup.attributes.colors.empty()) {
+        std::vector<typename T::vertex_handle> vs;
+        vs.reserve(soup.points.size());
+        for (std::size_t i = 0; i < soup.points.size(); ++i) vs.push_back(typename T::vertex_handle(static_cast<std::uint32_t>(i)));
+        store_attribute_properties<M, T>(mesh, soup.attributes, vs);
+    }
+    return {};
+}
+
+}  // namespace detail
+
 /// Fills `mesh` from the soup only if every face is accepted; on error the mesh is unchanged.
-/// The soup is first built into a fresh mesh of the same type. A model that can be emptied
-/// while keeping its properties (hmira's clear_elements, see detail::clear_for_reading) is
-/// then emptied and built again, so the user's object and its named properties stay; any
-/// other model is move-assigned the fresh mesh. `face_origin(i)` describes where face i came
-/// from, for the error message. Attributes are stored as properties when the mesh has named
-/// properties.
-/// Complexity: O(V + C) mesh insertions for C face corners (twice when the object is kept).
+/// A model that takes indexed polygons whole (face_vertex_mesh's assign, under its own traits)
+/// is validated and filled in one pass. Any other model gets the soup built into a fresh mesh
+/// of the same type first. A model that can be emptied while keeping its properties (hmira's
+/// clear_elements, see detail::clear_for_reading) is then emptied and built again, so the
+/// user's object and its named properties stay; any other model is move-assigned the fresh
+/// mesh. `face_origin(i)` describes where face i came from, for the error message. Attributes
+/// are stored as properties when the mesh has named properties.
+/// Complexity: O(V + C) for C face corners: one pass for indexed models, mesh insertions
+/// otherwise (twice when the object is kept).
 template <class M, class T = default_traits<M>, class Origin>
     requires readable_mesh<M, T>
 result<void> assign_from_soup(M& mesh, const polygon_soup& soup, Origin&& face_origin) {
-    M fresh;
-    auto vs = detail::add_soup<M, T>(fresh, soup, face_origin);
-    if (!vs) return vs.error();
-    if constexpr (requires { mesh.clear_elements(); }) {
-        fresh = M{};  // free it before building the same again into the user's mesh
-        detail::clear_for_reading(mesh);
-        // The same faces in the same order into an empty mesh of the same type: accepted again.
-        vs = detail::add_soup<M, T>(mesh, soup, face_origin);
-        if (!vs) return vs.error();
-        detail::store_attribute_properties<M, T>(mesh, soup.attributes, vs.value());
+    if constexpr (detail::takes_indexed_polygons<M, T>) {
+        return detail::assign_indexed_polygons<M, T>(
+            mesh, soup, std::vector<std::size_t>(soup.face_offsets.begin(), soup.face_offsets.end()), face_origin);
     } else {
-        detail::store_attribute_properties<M, T>(fresh, soup.attributes, vs.value());
-        mesh = std::move(fresh);
+        M fresh;
+        auto vs = detail::add_soup<M, T>(fresh, soup, face_origin);
+        if (!vs) return vs.error();
+        if constexpr (requires { mesh.clear_elements(); }) {
+            fresh = M{};  // free it before building the same again into the user's mesh
+            detail::clear_for_reading(mesh);
+            // The same faces in the same order into an empty mesh of the same type: accepted again.
+            vs = detail::add_soup<M, T>(mesh, soup, face_origin);
+            if (!vs) return vs.error();
+            detail::store_attribute_properties<M, T>(mesh, soup.attributes, vs.value());
+        } else {
+            detail::store_attribute_properties<M, T>(fresh, soup.attributes, vs.value());
+            mesh = std::move(fresh);
+        }
+        return {};
     }
-    return {};
 }
 
 namespace detail {
@@ -214,7 +251,18 @@ result<read_report> build_from_soup(M& mesh, polygon_soup&& soup, const std::str
     report.file_vertices = soup.points.size();
     if (soup.points.size() > std::size_t{0xffffffffu})
         return fail(errc::unsupported, name + ": " + std::to_string(soup.points.size()) + " vertices; at most 2^32 - 1 are supported");
-    if constexpr (!halfedge_navigable_mesh<M, T>) {
+    if constexpr (detail::takes_indexed_polygons<M, T>) {
+        auto origin = [&](std::size_t) { return name; };
+        std::vector<std::size_t> offsets;
+        if constexpr (std::same_as<std::size_t, std::uint64_t>)
+            offsets = std::move(soup.face_offsets);  // the soup's offsets become the mesh's
+        else
+            offsets.assign(soup.face_offsets.begin(), soup.face_offsets.end());
+        auto r = detail::assign_indexed_polygons<M, T>(mesh, soup, std::move(offsets), origin);
+        if (!r) return r.error();
+        report.attributes = std::move(soup.attributes);
+        return report;
+    } else if constexpr (!halfedge_navigable_mesh<M, T>) {
         auto r = assign_from_soup<M, T>(mesh, soup, [&](std::size_t) { return name; });
         if (!r) return r.error();
         report.attributes = std::move(soup.attributes);
