@@ -130,7 +130,7 @@ def compare(n, chunk, period, threads, repeats):
         best_mem = min(best_mem, time.perf_counter() - t0)
         t0 = time.perf_counter()
         with dask.config.set(scheduler="threads", num_workers=threads):
-            v, f = hmira.dask.marching_cubes(darr, 0.0)
+            v, f = hmira.dask.marching_cubes(darr, 0.0, threads=threads)
         best_dask = min(best_dask, time.perf_counter() - t0)
     same = bool(np.array_equal(v, ref_v) and np.array_equal(f, ref_f))
     return {"n": n, "chunk": chunk, "threads": threads, "repeats": repeats, "in_memory_s": round(best_mem, 3),

@@ -116,7 +116,7 @@ def _block_tasks(darr, iso, spacing, origin, inside):
 
 def marching_cubes(darr, iso: float = 0.0, *, spacing: Sequence[float] = (1.0, 1.0, 1.0),
                    origin: Sequence[float] = (0.0, 0.0, 0.0), inside: str = "below", out: Optional[str] = None,
-                   window: int = 0) -> Optional[Tuple[np.ndarray, np.ndarray]]:
+                   window: int = 0, threads: int = 0) -> Optional[Tuple[np.ndarray, np.ndarray]]:
     """Marching cubes of a ``dask.array``, chunk by chunk, welded into exactly the whole-volume mesh.
 
     Parameters
@@ -137,6 +137,9 @@ def marching_cubes(darr, iso: float = 0.0, *, spacing: Sequence[float] = (1.0, 1
         appears only when complete; a failure leaves an existing file untouched.
     window : int, keyword-only
         With ``out``: chunks computed at a time (0: twice the number of cores).
+    threads : int, keyword-only
+        Without ``out``: threads of the merge in the client (0: all cores). The result does
+        not depend on it.
 
     Returns
     -------
@@ -162,10 +165,13 @@ def marching_cubes(darr, iso: float = 0.0, *, spacing: Sequence[float] = (1.0, 1
     """
     import dask
 
+    if int(threads) < 0:
+        raise ValueError(f"hmira.dask.marching_cubes: threads must be 0 (all cores) or more, got {threads}")
     darr, tasks = _block_tasks(darr, iso, spacing, origin, inside)
     if out is None:
         blocks = dask.compute(*tasks)
-        return _core._merge_blocks(list(blocks), whole=list(darr.shape))
+        return _core._merge_blocks(list(blocks), whole=list(darr.shape), chunks=[list(c) for c in darr.chunks],
+                                   threads=int(threads))
     _stream_ply(os.fspath(out), darr.shape, darr.chunks, tasks, window or 2 * (os.cpu_count() or 1))
     return None
 

@@ -7,6 +7,8 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <memory>
+#include <span>
 #include <vector>
 
 #include <nanobind/stl/tuple.h>
@@ -41,6 +43,13 @@ nb::ndarray<nb::numpy, Scalar> adopt(Container&& c, std::initializer_list<std::s
     auto* owned = new Container(std::move(c));
     nb::capsule owner(owned, [](void* p) noexcept { delete static_cast<Container*>(p); });
     return nb::ndarray<nb::numpy, Scalar>(reinterpret_cast<Scalar*>(owned->data()), shape, owner);
+}
+
+template <class Scalar>
+nb::ndarray<nb::numpy, Scalar> adopt_array(std::unique_ptr<Scalar[]> data, std::initializer_list<std::size_t> shape) {
+    Scalar* p = data.release();
+    nb::capsule owner(p, [](void* q) noexcept { delete[] static_cast<Scalar*>(q); });
+    return nb::ndarray<nb::numpy, Scalar>(p, shape, owner);
 }
 
 std::array<double, 3> triple(const std::vector<double>& v, const char* name) {
@@ -95,37 +104,69 @@ using keys_array = nb::ndarray<const std::uint64_t, nb::ndim<1>, nb::c_contig, n
 using triangles_array = nb::ndarray<const std::int32_t, nb::ndim<2>, nb::c_contig, nb::device::cpu>;
 
 nb::tuple merge_blocks(const std::vector<std::tuple<positions_array, keys_array, triangles_array, keys_array>>& blocks,
-                       const std::vector<std::size_t>& whole) {
+                       const std::vector<std::size_t>& whole, const std::vector<std::vector<std::size_t>>& chunks, unsigned threads) {
     const hmira::grid_dims grid = index_triple(whole, "whole");
-    std::vector<hmira::block_triangles<double>> in(blocks.size());
+    if (chunks.size() != 3) value_error("merge_blocks: chunks needs 3 axes, got " + std::to_string(chunks.size()));
+    // Chunk starts per grid axis (x is array axis 2), and the blocks in C order of the chunk grid.
+    std::array<std::vector<std::size_t>, 3> starts;
+    for (int a = 0; a < 3; ++a) {
+        std::size_t at = 0;
+        for (std::size_t c : chunks[std::size_t(2 - a)]) {
+            starts[a].push_back(at);
+            at += c;
+        }
+        if (at != grid[a] || starts[a].empty())
+            value_error("merge_blocks: the chunks along array axis " + std::to_string(2 - a) + " sum to " + std::to_string(at) + ", not " +
+                        std::to_string(grid[a]));
+    }
+    if (blocks.size() != starts[0].size() * starts[1].size() * starts[2].size())
+        value_error("merge_blocks: " + std::to_string(blocks.size()) + " blocks for " + std::to_string(starts[2].size()) + " x " +
+                    std::to_string(starts[1].size()) + " x " + std::to_string(starts[0].size()) + " chunks");
+    // The arrays are read in place: (n, 3) float64 rows are vec3<double>, and int32 indices
+    // read as uint32 (a negative one becomes too large, which the merge refuses).
+    static_assert(sizeof(vec3<double>) == 3 * sizeof(double) && sizeof(std::array<std::uint32_t, 3>) == 3 * sizeof(std::int32_t));
+    std::vector<hmira::block_triangles_view<double>> views(blocks.size());
     for (std::size_t b = 0; b < blocks.size(); ++b) {
         const auto& [pos, keys, tris, cubes] = blocks[b];
         if (pos.shape(1) != 3 || tris.shape(1) != 3)
             value_error("merge_blocks: block " + std::to_string(b) + ": positions and triangles need 3 columns");
-        auto& out = in[b];
-        out.positions.resize(pos.shape(0));
-        for (std::size_t v = 0; v < pos.shape(0); ++v) out.positions[v] = {pos.data()[3 * v], pos.data()[3 * v + 1], pos.data()[3 * v + 2]};
-        out.keys.assign(keys.data(), keys.data() + keys.shape(0));
-        out.triangles.resize(tris.shape(0));
-        for (std::size_t t = 0; t < tris.shape(0); ++t)
-            for (int c = 0; c < 3; ++c) {
-                const std::int32_t v = tris.data()[3 * t + c];
-                out.triangles[t][c] = v < 0 ? std::numeric_limits<std::uint32_t>::max() : std::uint32_t(v);
-            }
-        out.cubes.assign(cubes.data(), cubes.data() + cubes.shape(0));
-        out.whole = grid;
+        auto& v = views[b];
+        v.positions = {reinterpret_cast<const vec3<double>*>(pos.data()), pos.shape(0)};
+        v.keys = {keys.data(), keys.shape(0)};
+        v.triangles = {reinterpret_cast<const std::array<std::uint32_t, 3>*>(tris.data()), tris.shape(0)};
+        v.cubes = {cubes.data(), cubes.shape(0)};
+        v.whole = grid;
+        // Block b is chunk (b0, b1, b2) in C order over array axes; grid axis a is array axis 2 - a.
+        std::size_t rest = b;
+        for (int a = 0; a < 3; ++a) {
+            const std::size_t c = rest % starts[a].size();
+            rest /= starts[a].size();
+            v.offset[a] = starts[a][c];
+            v.size[a] = c + 1 < starts[a].size() ? starts[a][c + 1] - starts[a][c] + 1 : grid[a] - starts[a][c];
+        }
     }
-    hmira::result<hmira::indexed_triangles<double>> r = hmira::fail(hmira::errc::invalid_argument, "");
+    // The output goes straight into arrays numpy will own, uninitialised: the merge writes
+    // every element, in parallel, so nothing is zeroed or copied first.
+    std::unique_ptr<double[]> positions;
+    std::unique_ptr<std::int32_t[]> triangles;
+    std::size_t nv = 0, nt = 0;
+    auto allocate = [&](std::size_t vertices, std::size_t faces) -> hmira::result<hmira::merged_storage<double>> {
+        if (vertices > std::size_t(std::numeric_limits<std::int32_t>::max()))
+            return hmira::fail(hmira::errc::unsupported, "merge_blocks: " + std::to_string(vertices) + " vertices do not fit int32 face indices");
+        nv = vertices;
+        nt = faces;
+        positions.reset(new double[3 * nv]);
+        triangles.reset(new std::int32_t[3 * nt]);
+        return hmira::merged_storage<double>{{reinterpret_cast<vec3<double>*>(positions.get()), nv},
+                                             {reinterpret_cast<std::array<std::uint32_t, 3>*>(triangles.get()), nt}};
+    };
+    hmira::result<void> r;
     {
         nb::gil_scoped_release release;
-        r = hmira::merge_blocks(in);
-        in = {};
+        r = hmira::merge_blocks_into(std::span<const hmira::block_triangles_view<double>>(views), allocate, {.threads = threads});
     }
-    auto tri = take(std::move(r));
-    if (tri.positions.size() > std::size_t(std::numeric_limits<std::int32_t>::max()))
-        value_error("merge_blocks: " + std::to_string(tri.positions.size()) + " vertices do not fit int32 face indices");
-    const std::size_t nv = tri.positions.size(), nt = tri.triangles.size();
-    return nb::make_tuple(adopt<double>(std::move(tri.positions), {nv, 3}), adopt<std::int32_t>(std::move(tri.triangles), {nt, 3}));
+    check(r);
+    return nb::make_tuple(adopt_array(std::move(positions), {nv, 3}), adopt_array(std::move(triangles), {nt, 3}));
 }
 
 }  // namespace
@@ -135,8 +176,10 @@ void bind_blocks(nb::module_& m) {
           nb::arg("whole"), nb::arg("spacing"), nb::arg("origin"), nb::arg("inside") = "below", nb::arg("threads") = 1u,
           "Marching cubes of one C-ordered block (plus one sample of overlap on its high sides) at `offset` in a volume of "
           "shape `whole`: (positions, keys, triangles, cube keys); see hmira.dask.");
-    m.def("_merge_blocks", &merge_blocks, nb::arg("blocks"), nb::kw_only(), nb::arg("whole"),
-          "Welds (positions, keys, triangles, cube keys) blocks into the whole volume's (vertices, faces); see hmira.dask.");
+    m.def("_merge_blocks", &merge_blocks, nb::arg("blocks"), nb::kw_only(), nb::arg("whole"), nb::arg("chunks"), nb::arg("threads") = 0u,
+          "Welds (positions, keys, triangles, cube keys) blocks, one per chunk in C order of the chunk grid (`chunks` as "
+          "dask.array.Array.chunks), into the whole volume's (vertices, faces), in parallel on `threads` threads (0: all); see "
+          "hmira.dask.");
 }
 
 }  // namespace hmira_py
