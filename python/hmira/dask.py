@@ -40,26 +40,15 @@ def _block_label(index, offset, shape) -> str:
     return f"block {tuple(int(i) for i in index)} (samples [{ranges}])"
 
 
-def _paste(parts, core):
-    """The chunk plus its one-sample overlap, from (step, array) pairs: step (0, 0, 0) is the
-    chunk itself, the others one-sample slices of the neighbours after it."""
-    shape = tuple(c + max((p.shape[a] for s, p in parts if s[a]), default=0) for a, c in enumerate(core))
-    if len(parts) == 1:
-        return np.ascontiguousarray(parts[0][1])
-    out = np.empty(shape, dtype=parts[0][1].dtype)
-    for step, p in parts:
-        out[tuple(slice(c, None) if s else slice(0, c) for s, c in zip(step, core))] = p
-    return out
-
-
 def _mesh_block(parts, iso, index, offset, core, whole, spacing, origin, inside):
     """One chunk plus its overlap to (positions, keys, triangles, cube keys); an error names the block."""
     try:
-        samples = _paste(parts, core)
-        if samples.dtype not in _DTYPES:
-            raise ValueError(f"volume dtype must be float32, float64, uint8, uint16 or int16, got {samples.dtype}")
-        return _core._marching_cubes_block(samples, iso, offset=list(offset), whole=list(whole), spacing=list(spacing),
-                                           origin=list(origin), inside=inside, threads=1)
+        arrays = [np.asarray(p) for _, p in parts]
+        if arrays[0].dtype not in _DTYPES:
+            raise ValueError(f"volume dtype must be float32, float64, uint8, uint16 or int16, got {arrays[0].dtype}")
+        # Assembled in C++ into a buffer the thread reuses, with the GIL released.
+        return _core._marching_cubes_block(arrays, iso, steps=[list(s) for s, _ in parts], core=list(core), offset=list(offset),
+                                           whole=list(whole), spacing=list(spacing), origin=list(origin), inside=inside, threads=1)
     except Exception as e:  # one clear error naming the block, whatever the scheduler
         raise ValueError(f"hmira.dask.marching_cubes: {_block_label(index, offset, core)}: {e}") from e
 
