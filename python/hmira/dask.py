@@ -8,8 +8,11 @@ same vertices in the same order, bit for bit, and the same triangles, whatever t
 
 The mesh is merged in two ways:
 
-* ``out=None``: the client gathers every chunk's keyed mesh and welds them in C++ (memory in
-  the client: all chunks' vertices and triangles, about 2x the output).
+* ``out=None``: the client gathers every chunk's keyed mesh and welds them in C++, in parallel
+  (``threads=``), reading the chunks' arrays in place: a chunk's own vertices are copied
+  straight to their place, only those on its high faces are looked up in the neighbour that
+  owns them. Memory in the client: all chunks' meshes (32 bytes per vertex, 20 per triangle)
+  plus the result.
 * ``out="mesh.ply"``: streaming. Chunks are computed a window at a time on the local
   schedulers, or all at once on a distributed Client (each result released once written),
   and their vertices and triangles appended to two temporary files in chunk order; the
