@@ -8,8 +8,11 @@ same vertices in the same order, bit for bit, and the same triangles, whatever t
 
 The mesh is merged in two ways:
 
-* ``out=None``: the client gathers every chunk's keyed mesh and welds them in C++ (memory in
-  the client: all chunks' vertices and triangles, about 2x the output).
+* ``out=None``: the client gathers every chunk's keyed mesh and welds them in C++, in parallel
+  (``threads=``), reading the chunks' arrays in place: a chunk's own vertices are copied
+  straight to their place, only those on its high faces are looked up in the neighbour that
+  owns them. Memory in the client: all chunks' meshes (32 bytes per vertex, 20 per triangle)
+  plus the result.
 * ``out="mesh.ply"``: streaming. Chunks are computed a window at a time on the local
   schedulers, or all at once on a distributed Client (each result released once written),
   and their vertices and triangles appended to two temporary files in chunk order; the
@@ -40,26 +43,15 @@ def _block_label(index, offset, shape) -> str:
     return f"block {tuple(int(i) for i in index)} (samples [{ranges}])"
 
 
-def _paste(parts, core):
-    """The chunk plus its one-sample overlap, from (step, array) pairs: step (0, 0, 0) is the
-    chunk itself, the others one-sample slices of the neighbours after it."""
-    shape = tuple(c + max((p.shape[a] for s, p in parts if s[a]), default=0) for a, c in enumerate(core))
-    if len(parts) == 1:
-        return np.ascontiguousarray(parts[0][1])
-    out = np.empty(shape, dtype=parts[0][1].dtype)
-    for step, p in parts:
-        out[tuple(slice(c, None) if s else slice(0, c) for s, c in zip(step, core))] = p
-    return out
-
-
 def _mesh_block(parts, iso, index, offset, core, whole, spacing, origin, inside):
     """One chunk plus its overlap to (positions, keys, triangles, cube keys); an error names the block."""
     try:
-        samples = _paste(parts, core)
-        if samples.dtype not in _DTYPES:
-            raise ValueError(f"volume dtype must be float32, float64, uint8, uint16 or int16, got {samples.dtype}")
-        return _core._marching_cubes_block(samples, iso, offset=list(offset), whole=list(whole), spacing=list(spacing),
-                                           origin=list(origin), inside=inside, threads=1)
+        arrays = [np.asarray(p) for _, p in parts]
+        if arrays[0].dtype not in _DTYPES:
+            raise ValueError(f"volume dtype must be float32, float64, uint8, uint16 or int16, got {arrays[0].dtype}")
+        # Assembled in C++ into a buffer the thread reuses, with the GIL released.
+        return _core._marching_cubes_block(arrays, iso, steps=[list(s) for s, _ in parts], core=list(core), offset=list(offset),
+                                           whole=list(whole), spacing=list(spacing), origin=list(origin), inside=inside, threads=1)
     except Exception as e:  # one clear error naming the block, whatever the scheduler
         raise ValueError(f"hmira.dask.marching_cubes: {_block_label(index, offset, core)}: {e}") from e
 
@@ -116,7 +108,7 @@ def _block_tasks(darr, iso, spacing, origin, inside):
 
 def marching_cubes(darr, iso: float = 0.0, *, spacing: Sequence[float] = (1.0, 1.0, 1.0),
                    origin: Sequence[float] = (0.0, 0.0, 0.0), inside: str = "below", out: Optional[str] = None,
-                   window: int = 0) -> Optional[Tuple[np.ndarray, np.ndarray]]:
+                   window: int = 0, threads: int = 0) -> Optional[Tuple[np.ndarray, np.ndarray]]:
     """Marching cubes of a ``dask.array``, chunk by chunk, welded into exactly the whole-volume mesh.
 
     Parameters
@@ -137,6 +129,9 @@ def marching_cubes(darr, iso: float = 0.0, *, spacing: Sequence[float] = (1.0, 1
         appears only when complete; a failure leaves an existing file untouched.
     window : int, keyword-only
         With ``out``: chunks computed at a time (0: twice the number of cores).
+    threads : int, keyword-only
+        Without ``out``: threads of the merge in the client (0: all cores). The result does
+        not depend on it.
 
     Returns
     -------
@@ -162,10 +157,13 @@ def marching_cubes(darr, iso: float = 0.0, *, spacing: Sequence[float] = (1.0, 1
     """
     import dask
 
+    if int(threads) < 0:
+        raise ValueError(f"hmira.dask.marching_cubes: threads must be 0 (all cores) or more, got {threads}")
     darr, tasks = _block_tasks(darr, iso, spacing, origin, inside)
     if out is None:
         blocks = dask.compute(*tasks)
-        return _core._merge_blocks(list(blocks), whole=list(darr.shape))
+        return _core._merge_blocks(list(blocks), whole=list(darr.shape), chunks=[list(c) for c in darr.chunks],
+                                   threads=int(threads))
     _stream_ply(os.fspath(out), darr.shape, darr.chunks, tasks, window or 2 * (os.cpu_count() or 1))
     return None
 

@@ -4,9 +4,12 @@
 #include "common.hpp"
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <memory>
+#include <span>
 #include <vector>
 
 #include <nanobind/stl/tuple.h>
@@ -34,13 +37,18 @@ struct c_block {
     const V* data() const { return samples; }
 };
 
-using block_volume = nb::ndarray<nb::ro, nb::ndim<3>, nb::c_contig, nb::device::cpu>;
-
 template <class Scalar, class Container>
 nb::ndarray<nb::numpy, Scalar> adopt(Container&& c, std::initializer_list<std::size_t> shape) {
     auto* owned = new Container(std::move(c));
     nb::capsule owner(owned, [](void* p) noexcept { delete static_cast<Container*>(p); });
     return nb::ndarray<nb::numpy, Scalar>(reinterpret_cast<Scalar*>(owned->data()), shape, owner);
+}
+
+template <class Scalar>
+nb::ndarray<nb::numpy, Scalar> adopt_array(std::unique_ptr<Scalar[]> data, std::initializer_list<std::size_t> shape) {
+    Scalar* p = data.release();
+    nb::capsule owner(p, [](void* q) noexcept { delete[] static_cast<Scalar*>(q); });
+    return nb::ndarray<nb::numpy, Scalar>(p, shape, owner);
 }
 
 std::array<double, 3> triple(const std::vector<double>& v, const char* name) {
@@ -53,7 +61,36 @@ hmira::grid_dims index_triple(const std::vector<std::size_t>& v, const char* nam
     return {v[2], v[1], v[0]};
 }
 
-nb::tuple marching_cubes_block(const block_volume& volume, double iso, const std::vector<std::size_t>& offset,
+using part_array = nb::ndarray<nb::ro, nb::ndim<3>, nb::device::cpu>;
+
+/// The block (a chunk plus its one-sample overlap) assembled from the chunk and one-sample
+/// slices of its neighbours, in a buffer each thread keeps for its next block: no allocation
+/// (and no page faults) per block. The parts may have any strides.
+const std::byte* paste(const std::vector<part_array>& parts, const std::vector<std::array<std::size_t, 3>>& at,
+                       const std::array<std::size_t, 3>& shape, std::size_t item) {
+    thread_local std::vector<std::byte> buffer;
+    const std::size_t total = shape[0] * shape[1] * shape[2] * item;
+    if (buffer.size() < total) buffer.resize(total);
+    std::byte* out = buffer.data();
+    for (std::size_t p = 0; p < parts.size(); ++p) {
+        const auto& part = parts[p];
+        const auto* src = static_cast<const std::byte*>(part.data());
+        const std::int64_t s0 = part.stride(0), s1 = part.stride(1), s2 = part.stride(2);
+        const std::size_t n0 = part.shape(0), n1 = part.shape(1), n2 = part.shape(2);
+        for (std::size_t z = 0; z < n0; ++z)
+            for (std::size_t y = 0; y < n1; ++y) {
+                const std::byte* row = src + (std::int64_t(z) * s0 + std::int64_t(y) * s1) * std::int64_t(item);
+                std::byte* dst = out + (((at[p][0] + z) * shape[1] + at[p][1] + y) * shape[2] + at[p][2]) * item;
+                if (s2 == 1 || n2 == 1) std::memcpy(dst, row, n2 * item);
+                else
+                    for (std::size_t x = 0; x < n2; ++x) std::memcpy(dst + x * item, row + std::int64_t(x) * s2 * std::int64_t(item), item);
+            }
+    }
+    return out;
+}
+
+nb::tuple marching_cubes_block(const std::vector<part_array>& parts, double iso, const std::vector<std::vector<std::size_t>>& steps,
+                               const std::vector<std::size_t>& core, const std::vector<std::size_t>& offset,
                                const std::vector<std::size_t>& whole, const std::vector<double>& spacing,
                                const std::vector<double>& origin, const std::string& inside, unsigned threads) {
     const auto sp = triple(spacing, "spacing"), org = triple(origin, "origin");
@@ -61,16 +98,45 @@ nb::tuple marching_cubes_block(const block_volume& volume, double iso, const std
     if (inside == "above") side = hmira::iso_inside::above;
     else if (inside != "below") value_error("marching_cubes_block: inside must be 'below' or 'above', got '" + inside + "'");
     const hmira::grid_block where{.offset = index_triple(offset, "offset"), .whole = index_triple(whole, "whole")};
-    const hmira::grid_dims size{volume.shape(2), volume.shape(1), volume.shape(0)};
-    const vec3<double> at{org[2], org[1], org[0]}, step{sp[2], sp[1], sp[0]};
+    // The parts: the chunk (step 0, 0, 0) and one-sample slices of the neighbours after it
+    // (step 1 on the axes where the neighbour lies), every combination of the steps present.
+    if (core.size() != 3 || parts.empty() || steps.size() != parts.size())
+        value_error("marching_cubes_block: needs a 3-axis core shape and one step per part");
+    std::array<std::size_t, 3> shape{core[0], core[1], core[2]};
+    std::vector<std::array<std::size_t, 3>> at(parts.size());
+    std::size_t seen = 0;
+    for (std::size_t p = 0; p < parts.size(); ++p) {
+        if (steps[p].size() != 3 || parts[p].dtype() != parts[0].dtype())
+            value_error("marching_cubes_block: part " + std::to_string(p) + " has another dtype or a bad step");
+        std::size_t bit = 0;
+        for (int a = 0; a < 3; ++a) {
+            const std::size_t s = steps[p][std::size_t(a)];
+            if (s > 1 || parts[p].shape(std::size_t(a)) != (s ? 1 : core[std::size_t(a)]))
+                value_error("marching_cubes_block: part " + std::to_string(p) + " has shape (" + std::to_string(parts[p].shape(0)) + ", " +
+                            std::to_string(parts[p].shape(1)) + ", " + std::to_string(parts[p].shape(2)) + ") for step " +
+                            std::to_string(a) + " = " + std::to_string(s));
+            at[p][std::size_t(a)] = s ? core[std::size_t(a)] : 0;
+            if (s) shape[std::size_t(a)] = core[std::size_t(a)] + 1;
+            bit = bit * 2 + s;
+        }
+        if (seen & (std::size_t(1) << bit)) value_error("marching_cubes_block: two parts with one step");
+        seen |= std::size_t(1) << bit;
+    }
+    std::size_t needed = 1;
+    for (int a = 0; a < 3; ++a) needed *= shape[std::size_t(a)] > core[std::size_t(a)] ? 2 : 1;
+    if (parts.size() != needed || !(seen & 1))
+        value_error("marching_cubes_block: " + std::to_string(parts.size()) + " parts where the overlap needs " + std::to_string(needed));
+    const hmira::grid_dims size{shape[2], shape[1], shape[0]};
+    const vec3<double> origin_xyz{org[2], org[1], org[0]}, step_xyz{sp[2], sp[1], sp[0]};
     const hmira::marching_cubes_block_options options{.iso = iso, .inside = side, .threads = threads};
     hmira::result<hmira::block_triangles<double>> r = hmira::fail(hmira::errc::invalid_argument, "");
-    const auto dt = volume.dtype();
+    const auto dt = parts[0].dtype();
     {
         nb::gil_scoped_release release;
         auto run = [&](auto tag) {
             using V = decltype(tag);
-            const c_block<V> g{static_cast<const V*>(volume.data()), size, at, step};
+            const auto* samples = reinterpret_cast<const V*>(paste(parts, at, shape, sizeof(V)));
+            const c_block<V> g{samples, size, origin_xyz, step_xyz};
             r = hmira::marching_cubes_block<double>(g, where, options);
         };
         if (dt == nb::dtype<float>()) run(float{});
@@ -79,12 +145,14 @@ nb::tuple marching_cubes_block(const block_volume& volume, double iso, const std
         else if (dt == nb::dtype<std::uint16_t>()) run(std::uint16_t{});
         else if (dt == nb::dtype<std::int16_t>()) run(std::int16_t{});
         else r = hmira::fail(hmira::errc::invalid_argument, "marching_cubes_block: volume dtype must be float32, float64, uint8, uint16 or int16");
+        // Back to array axes, as hmira.marching_cubes does for a C-ordered volume: swapping two
+        // axes mirrors the surface, so each triangle is reversed to keep its winding.
+        if (r) {
+            for (auto& p : r->positions) std::swap(p.x, p.z);
+            for (auto& t : r->triangles) std::swap(t[1], t[2]);
+        }
     }
     auto b = take(std::move(r));
-    // Back to array axes, as hmira.marching_cubes does for a C-ordered volume: swapping two
-    // axes mirrors the surface, so each triangle is reversed to keep its winding.
-    for (auto& p : b.positions) std::swap(p.x, p.z);
-    for (auto& t : b.triangles) std::swap(t[1], t[2]);
     const std::size_t nv = b.positions.size(), nt = b.triangles.size();
     return nb::make_tuple(adopt<double>(std::move(b.positions), {nv, 3}), adopt<std::uint64_t>(std::move(b.keys), {nv}),
                           adopt<std::int32_t>(std::move(b.triangles), {nt, 3}), adopt<std::uint64_t>(std::move(b.cubes), {nt}));
@@ -95,48 +163,85 @@ using keys_array = nb::ndarray<const std::uint64_t, nb::ndim<1>, nb::c_contig, n
 using triangles_array = nb::ndarray<const std::int32_t, nb::ndim<2>, nb::c_contig, nb::device::cpu>;
 
 nb::tuple merge_blocks(const std::vector<std::tuple<positions_array, keys_array, triangles_array, keys_array>>& blocks,
-                       const std::vector<std::size_t>& whole) {
+                       const std::vector<std::size_t>& whole, const std::vector<std::vector<std::size_t>>& chunks, unsigned threads) {
     const hmira::grid_dims grid = index_triple(whole, "whole");
-    std::vector<hmira::block_triangles<double>> in(blocks.size());
+    if (chunks.size() != 3) value_error("merge_blocks: chunks needs 3 axes, got " + std::to_string(chunks.size()));
+    // Chunk starts per grid axis (x is array axis 2), and the blocks in C order of the chunk grid.
+    std::array<std::vector<std::size_t>, 3> starts;
+    for (int a = 0; a < 3; ++a) {
+        std::size_t at = 0;
+        for (std::size_t c : chunks[std::size_t(2 - a)]) {
+            starts[a].push_back(at);
+            at += c;
+        }
+        if (at != grid[a] || starts[a].empty())
+            value_error("merge_blocks: the chunks along array axis " + std::to_string(2 - a) + " sum to " + std::to_string(at) + ", not " +
+                        std::to_string(grid[a]));
+    }
+    if (blocks.size() != starts[0].size() * starts[1].size() * starts[2].size())
+        value_error("merge_blocks: " + std::to_string(blocks.size()) + " blocks for " + std::to_string(starts[2].size()) + " x " +
+                    std::to_string(starts[1].size()) + " x " + std::to_string(starts[0].size()) + " chunks");
+    // The arrays are read in place: (n, 3) float64 rows are vec3<double>, and int32 indices
+    // read as uint32 (a negative one becomes too large, which the merge refuses).
+    static_assert(sizeof(vec3<double>) == 3 * sizeof(double) && sizeof(std::array<std::uint32_t, 3>) == 3 * sizeof(std::int32_t));
+    std::vector<hmira::block_triangles_view<double>> views(blocks.size());
     for (std::size_t b = 0; b < blocks.size(); ++b) {
         const auto& [pos, keys, tris, cubes] = blocks[b];
         if (pos.shape(1) != 3 || tris.shape(1) != 3)
             value_error("merge_blocks: block " + std::to_string(b) + ": positions and triangles need 3 columns");
-        auto& out = in[b];
-        out.positions.resize(pos.shape(0));
-        for (std::size_t v = 0; v < pos.shape(0); ++v) out.positions[v] = {pos.data()[3 * v], pos.data()[3 * v + 1], pos.data()[3 * v + 2]};
-        out.keys.assign(keys.data(), keys.data() + keys.shape(0));
-        out.triangles.resize(tris.shape(0));
-        for (std::size_t t = 0; t < tris.shape(0); ++t)
-            for (int c = 0; c < 3; ++c) {
-                const std::int32_t v = tris.data()[3 * t + c];
-                out.triangles[t][c] = v < 0 ? std::numeric_limits<std::uint32_t>::max() : std::uint32_t(v);
-            }
-        out.cubes.assign(cubes.data(), cubes.data() + cubes.shape(0));
-        out.whole = grid;
+        auto& v = views[b];
+        v.positions = {reinterpret_cast<const vec3<double>*>(pos.data()), pos.shape(0)};
+        v.keys = {keys.data(), keys.shape(0)};
+        v.triangles = {reinterpret_cast<const std::array<std::uint32_t, 3>*>(tris.data()), tris.shape(0)};
+        v.cubes = {cubes.data(), cubes.shape(0)};
+        v.whole = grid;
+        // Block b is chunk (b0, b1, b2) in C order over array axes; grid axis a is array axis 2 - a.
+        std::size_t rest = b;
+        for (int a = 0; a < 3; ++a) {
+            const std::size_t c = rest % starts[a].size();
+            rest /= starts[a].size();
+            v.offset[a] = starts[a][c];
+            v.size[a] = c + 1 < starts[a].size() ? starts[a][c + 1] - starts[a][c] + 1 : grid[a] - starts[a][c];
+        }
     }
-    hmira::result<hmira::indexed_triangles<double>> r = hmira::fail(hmira::errc::invalid_argument, "");
+    // The output goes straight into arrays numpy will own, uninitialised: the merge writes
+    // every element, in parallel, so nothing is zeroed or copied first. (Not numpy.empty: its
+    // huge pages can stall in the kernel's compaction for longer than the merge takes.)
+    std::unique_ptr<double[]> positions;
+    std::unique_ptr<std::int32_t[]> triangles;
+    std::size_t nv = 0, nt = 0;
+    auto allocate = [&](std::size_t vertices, std::size_t faces) -> hmira::result<hmira::merged_storage<double>> {
+        if (vertices > std::size_t(std::numeric_limits<std::int32_t>::max()))
+            return hmira::fail(hmira::errc::unsupported, "merge_blocks: " + std::to_string(vertices) + " vertices do not fit int32 face indices");
+        nv = vertices;
+        nt = faces;
+        positions.reset(new double[3 * nv]);
+        triangles.reset(new std::int32_t[3 * nt]);
+        return hmira::merged_storage<double>{{reinterpret_cast<vec3<double>*>(positions.get()), nv},
+                                             {reinterpret_cast<std::array<std::uint32_t, 3>*>(triangles.get()), nt}};
+    };
+    hmira::result<void> r;
     {
         nb::gil_scoped_release release;
-        r = hmira::merge_blocks(in);
-        in = {};
+        r = hmira::merge_blocks_into(std::span<const hmira::block_triangles_view<double>>(views), allocate, {.threads = threads});
     }
-    auto tri = take(std::move(r));
-    if (tri.positions.size() > std::size_t(std::numeric_limits<std::int32_t>::max()))
-        value_error("merge_blocks: " + std::to_string(tri.positions.size()) + " vertices do not fit int32 face indices");
-    const std::size_t nv = tri.positions.size(), nt = tri.triangles.size();
-    return nb::make_tuple(adopt<double>(std::move(tri.positions), {nv, 3}), adopt<std::int32_t>(std::move(tri.triangles), {nt, 3}));
+    check(r);
+    return nb::make_tuple(adopt_array(std::move(positions), {nv, 3}), adopt_array(std::move(triangles), {nt, 3}));
 }
 
 }  // namespace
 
 void bind_blocks(nb::module_& m) {
-    m.def("_marching_cubes_block", &marching_cubes_block, nb::arg("volume"), nb::arg("iso"), nb::kw_only(), nb::arg("offset"),
-          nb::arg("whole"), nb::arg("spacing"), nb::arg("origin"), nb::arg("inside") = "below", nb::arg("threads") = 1u,
-          "Marching cubes of one C-ordered block (plus one sample of overlap on its high sides) at `offset` in a volume of "
-          "shape `whole`: (positions, keys, triangles, cube keys); see hmira.dask.");
-    m.def("_merge_blocks", &merge_blocks, nb::arg("blocks"), nb::kw_only(), nb::arg("whole"),
-          "Welds (positions, keys, triangles, cube keys) blocks into the whole volume's (vertices, faces); see hmira.dask.");
+    m.def("_marching_cubes_block", &marching_cubes_block, nb::arg("parts"), nb::arg("iso"), nb::kw_only(), nb::arg("steps"),
+          nb::arg("core"), nb::arg("offset"), nb::arg("whole"), nb::arg("spacing"), nb::arg("origin"), nb::arg("inside") = "below",
+          nb::arg("threads") = 1u,
+          "Marching cubes of one chunk of shape `core` at `offset` in a volume of shape `whole`, with its one sample of overlap on "
+          "the high sides given as `parts` (the chunk at step (0, 0, 0), one-sample slices of the neighbours at the steps "
+          "towards them): (positions, keys, triangles, cube keys); see hmira.dask.");
+    m.def("_merge_blocks", &merge_blocks, nb::arg("blocks"), nb::kw_only(), nb::arg("whole"), nb::arg("chunks"), nb::arg("threads") = 0u,
+          "Welds (positions, keys, triangles, cube keys) blocks, one per chunk in C order of the chunk grid (`chunks` as "
+          "dask.array.Array.chunks), into the whole volume's (vertices, faces), in parallel on `threads` threads (0: all); see "
+          "hmira.dask.");
 }
 
 }  // namespace hmira_py

@@ -78,6 +78,22 @@ def test_random_chunkings_equal_whole_volume_threaded(name):
             np.testing.assert_array_equal(f, ref_f, err_msg=str(chunks))
 
 
+def test_strided_parts_uint8_and_merge_thread_counts_equal_whole_volume():
+    # Chunks that are strided views (a Fortran-ordered source), 8-bit samples at the iso value,
+    # one-sample chunks at both ends, and every merge thread count give the whole-volume mesh.
+    rng = np.random.default_rng(5)
+    vol = rng.integers(0, 3, size=(19, 23, 17)).astype(np.uint8)
+    ref_v, ref_f = hmira.marching_cubes(vol, 1.0, inside="above")
+    chunks = ((1, 9, 8, 1), (1, 21, 1), (7, 9, 1))
+    for source in (vol, np.asfortranarray(vol)):
+        for threads in (0, 1, 3):
+            v, f = hmira.dask.marching_cubes(da.from_array(source, chunks=chunks), 1.0, inside="above", threads=threads)
+            np.testing.assert_array_equal(v, ref_v)
+            np.testing.assert_array_equal(f, ref_f)
+    with pytest.raises(ValueError, match="threads"):
+        hmira.dask.marching_cubes(da.from_array(vol, chunks=8), 1.0, threads=-1)
+
+
 def test_lazy_field_from_map_blocks_equals_in_memory():
     # The field is made chunk by chunk by Dask; no process holds it whole.
     shape, chunks = (48, 40, 36), (13, 16, 11)

@@ -258,6 +258,84 @@ TEST(MarchingCubesBlocks, thin_blocks_are_empty_and_overlapping_blocks_are_refus
     EXPECT_NE(merged.error().message.find("block 0 triangle 0 names vertex"), std::string::npos) << merged.error().message;
 }
 
+TEST(MarchingCubesBlocks, merge_into_caller_storage_on_any_thread_count_and_refused_tilings) {
+    // Noise over a small grid, cut into uneven chunks with one-sample chunks at both ends.
+    hmira::dense_grid<float> grid(box(13, 11, 9));
+    std::mt19937 rng(99);
+    for (auto& v : grid.values()) v = std::uniform_real_distribution<float>(-1, 1)(rng);
+    auto whole = hmira::marching_cubes_indexed(grid, {});
+    ASSERT_TRUE(whole);
+    const std::array<std::vector<std::size_t>, 3> chunks{std::vector<std::size_t>{1, 5, 6, 1}, std::vector<std::size_t>{4, 6, 1},
+                                                         std::vector<std::size_t>{1, 8}};
+    auto blocks = blocks_of(grid, chunks, {}, rng);
+    ASSERT_EQ(blocks.size(), 24u);
+    // Storage from the caller, every element overwritten (filled with garbage first).
+    for (unsigned threads : {1u, 2u, 3u}) {
+        std::vector<hmira::block_triangles_view<float>> views;
+        for (const auto& b : blocks) views.push_back(hmira::view_of(b));
+        hmira::indexed_triangles<float> out;
+        std::size_t calls = 0;
+        auto allocate = [&](std::size_t nv, std::size_t nt) -> hmira::result<hmira::merged_storage<float>> {
+            ++calls;
+            out.positions.assign(nv, {-7.0f, -7.0f, -7.0f});
+            out.triangles.assign(nt, {99u, 99u, 99u});
+            return hmira::merged_storage<float>{out.positions, out.triangles};
+        };
+        auto ok = hmira::merge_blocks_into(std::span<const hmira::block_triangles_view<float>>(views), allocate, {.threads = threads});
+        ASSERT_TRUE(ok) << ok.error().message;
+        EXPECT_EQ(calls, 1u);
+        expect_identical(*whole, out, "caller storage, " + std::to_string(threads) + " threads");
+    }
+    // An allocator's error comes back as is.
+    {
+        std::vector<hmira::block_triangles_view<float>> views;
+        for (const auto& b : blocks) views.push_back(hmira::view_of(b));
+        auto refuse = [](std::size_t, std::size_t) -> hmira::result<hmira::merged_storage<float>> {
+            return hmira::fail(hmira::errc::io_error, "no room");
+        };
+        auto r = hmira::merge_blocks_into(std::span<const hmira::block_triangles_view<float>>(views), refuse);
+        ASSERT_FALSE(r);
+        EXPECT_EQ(r.error().message, "no room");
+    }
+    auto expect_refused = [&](std::vector<hmira::block_triangles<float>> bad, const std::string& says) {
+        auto r = hmira::merge_blocks(bad);
+        ASSERT_FALSE(r) << says;
+        EXPECT_NE(r.error().message.find(says), std::string::npos) << r.error().message;
+    };
+    // A missing chunk, even an empty one.
+    for (std::size_t drop = 0; drop < blocks.size(); drop += 5) {
+        auto missing = blocks;
+        missing.erase(missing.begin() + std::ptrdiff_t(drop));
+        expect_refused(missing, "do not tile one grid");
+    }
+    // A block without its overlap.
+    auto short_block = blocks;
+    for (auto& b : short_block)
+        if (b.offset == grid_dims{1, 4, 1}) b.size[0] -= 1;
+    expect_refused(short_block, "where its chunk and overlap have");
+    // A vertex on a chunk face that the owner gives another position.
+    auto moved = blocks;
+    bool done = false;
+    for (auto& b : moved)
+        for (std::size_t v = 0; v < b.keys.size() && !done; ++v) {
+            const std::uint64_t i = b.keys[v] % 13, a = b.keys[v] / 13 % 4;
+            if (a == 1 && i == b.offset[0] + b.size[0] - 1 && b.size[0] > 1 && b.offset[0] + b.size[0] < 13) {
+                b.positions[v].y = std::nextafter(b.positions[v].y, 1e9f);
+                done = true;
+            }
+        }
+    ASSERT_TRUE(done) << "no vertex on an inner x face: pick another seed";
+    expect_refused(moved, "different positions");
+    // A vertex key outside its block.
+    auto stray = blocks;
+    for (auto& b : stray)
+        if (!b.keys.empty()) {
+            b.keys.back() += 13 * 4 * 11 * 9;
+            break;
+        }
+    expect_refused(stray, "lies outside the block");
+}
+
 }  // namespace
 
 namespace {

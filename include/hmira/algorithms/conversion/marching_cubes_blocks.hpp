@@ -9,15 +9,19 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <memory>
 #include <numeric>
 #include <span>
 #include <string>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 #include "../../core/result.hpp"
 #include "../../core/vec3.hpp"
 #include "../../grids/dense_grid.hpp"
 #include "../../grids/voxel_grid.hpp"
+#include "detail/parallel.hpp"
 #include "marching_cubes.hpp"
 
 namespace hmira {
@@ -48,6 +52,8 @@ struct block_triangles {
     std::vector<std::array<std::uint32_t, 3>> triangles;  ///< indices into positions, counter-clockwise seen from outside
     std::vector<std::uint64_t> cubes;                     ///< cube key of each triangle, non-decreasing
     grid_dims whole{0, 0, 0};                             ///< dimensions of the whole grid the keys refer to
+    grid_dims offset{0, 0, 0};                            ///< global index of the block's sample (0, 0, 0)
+    grid_dims size{0, 0, 0};                              ///< the block's samples per axis, overlap included
 };
 
 /// The marching cubes of the cubes whose first sample lies in a block of a larger grid.
@@ -80,6 +86,9 @@ result<block_triangles<S>> marching_cubes_block(const G& block, const grid_block
     }
     if (whole_size >= 0x1p63) return fail(errc::invalid_argument, who + ": whole grid too large for 64-bit keys");
     block_triangles<S> out;
+    out.whole = where.whole;
+    out.offset = where.offset;
+    out.size = d;
     if (d[0] < 2 || d[1] < 2 || d[2] < 2) return out;
     if (!std::isfinite(options.iso)) return fail(errc::invalid_argument, who + ": the iso value must be finite");
     if (auto ok = check_grid_geometry(geometry_of(block), "marching_cubes", 2); !ok)
@@ -96,34 +105,152 @@ result<block_triangles<S>> marching_cubes_block(const G& block, const grid_block
     if (!tri) return fail(tri.error().code, who + ": " + tri.error().message, tri.error().element);
     out.positions = std::move(tri->positions);
     out.triangles = std::move(tri->triangles);
-    out.whole = where.whole;
     return out;
 }
 
-/// Welds blocks by key into one indexed triangle list.
-///
-/// When the blocks tile a grid (as marching_cubes_block() describes), the result equals
-/// marching_cubes_indexed() of the whole grid element for element: the same vertices in the
-/// same order with bit-identical positions, and the same triangles in the same order. The
-/// blocks may come in any order.
-///
-/// How: a block's keys fall into runs, one per grid row (z, y) and axis, and its cube keys
-/// into runs, one per row of cubes; runs of different blocks in one row do not interleave
-/// (they cover different x ranges, or repeat the same samples), so sorting the runs, not the
-/// elements, orders everything.
-///
-/// Complexity: O(V + T + R log R) for V block vertices, T triangles and R runs (R <= V + T,
-/// typically far fewer); memory O(V + T).
-/// \pre none (checked below).
-/// Errors (invalid_argument): a block whose arrays disagree in length, whose keys do not
-/// increase or cube keys decrease, whose triangle names a missing vertex, or whose whole-grid
-/// dimensions differ from another block's; two blocks giving one key different positions; two
-/// blocks holding the same cube (the blocks overlap); blocks that do not tile one grid;
-/// unsupported: more than 2^32 - 1 vertices.
+/// Options of merge_blocks().
+struct merge_blocks_options {
+    unsigned threads = 0;  ///< worker threads (0: all); the result does not depend on it
+};
+
+/// What merge_blocks() reads of one block: the arrays of a block_triangles, seen in place, so
+/// blocks held elsewhere (numpy arrays, a mapped file) merge without a copy. view_of() makes
+/// one from a block_triangles; the arrays must outlive the merge.
 template <class S>
-result<indexed_triangles<S>> merge_blocks(std::span<const block_triangles<S>> blocks) {
-    std::size_t n_vertices = 0, n_triangles = 0;
-    grid_dims whole{0, 0, 0};
+struct block_triangles_view {
+    std::span<const vec3<S>> positions;                       ///< as block_triangles::positions
+    std::span<const std::uint64_t> keys;                      ///< as block_triangles::keys
+    std::span<const std::array<std::uint32_t, 3>> triangles;  ///< as block_triangles::triangles
+    std::span<const std::uint64_t> cubes;                     ///< as block_triangles::cubes
+    grid_dims offset{0, 0, 0};                                ///< as block_triangles::offset
+    grid_dims size{0, 0, 0};                                  ///< as block_triangles::size
+    grid_dims whole{0, 0, 0};                                 ///< as block_triangles::whole
+};
+
+/// A view of `block`'s arrays (valid while `block` is alive and unchanged).
+template <class S>
+block_triangles_view<S> view_of(const block_triangles<S>& block) noexcept {
+    return {block.positions, block.keys, block.triangles, block.cubes, block.offset, block.size, block.whole};
+}
+
+/// Where merge_blocks_into() writes the merged mesh: storage the caller provides once the
+/// counts are known, every element of which the merge overwrites.
+template <class S>
+struct merged_storage {
+    std::span<vec3<S>> positions;                       ///< exactly the merged vertex count
+    std::span<std::array<std::uint32_t, 3>> triangles;  ///< exactly the merged triangle count
+};
+
+namespace detail::mc_merge {
+
+/// The chunking of one axis, recovered from the blocks' offsets, and which chunk's block owns
+/// the vertices of each sample index: the chunk holding it, except that the last sample
+/// belongs to the chunk holding the one before it (a last chunk one sample thick has no cubes,
+/// so its block is empty and the block before reaches that sample through its overlap).
+struct axis_tiling {
+    std::vector<std::size_t> starts;          // chunk starts, increasing from 0
+    std::vector<std::uint32_t> owner;         // per sample index: its owning chunk
+    std::vector<std::size_t> own_lo, own_hi;  // per chunk: the sample indices it owns, [lo, hi)
+};
+
+/// One block's place in the merge: which of its vertices and triangles go where.
+struct block_plan {
+    std::array<std::size_t, 3> lo{}, hi{};  // owned sample indices per axis, [lo, hi)
+    std::size_t rows_y = 0;                 // hi[1] - lo[1]
+    // Per owned row (z, y) and axis a, at ((k - lo[2]) * rows_y + (j - lo[1])) * 4 + a: the
+    // block's owned vertices there (first index, count) and their first global index.
+    std::vector<std::uint32_t> vertex_begin, vertex_count, vertex_start;
+    // Per owned cube row, at (k - lo[2]) * rows_y + (j - lo[1]): the same for its triangles.
+    std::vector<std::uint32_t> cube_begin, cube_count, cube_start;
+    std::size_t at(std::size_t j, std::size_t k) const noexcept { return (k - lo[2]) * rows_y + (j - lo[1]); }
+    bool owns_row(std::size_t j, std::size_t k) const noexcept { return j >= lo[1] && j < hi[1] && k >= lo[2] && k < hi[2]; }
+};
+
+/// Calls f(j, k, axis, base, begin, end) for each run of `keys` on one sample row (j, k) and
+/// axis (keys base + i), walking the rows of a block at `o` of `e` samples in key order:
+/// [begin, end) holds the keys of that row and axis, all inside the block (a centre vertex's
+/// cube too). No division per key or run. Returns the index of the first key outside the
+/// block, or keys.size() when none is.
+template <class F>
+std::size_t for_each_vertex_run(std::span<const std::uint64_t> keys, const grid_dims& whole, const grid_dims& o, const grid_dims& e,
+                                const F& f) {
+    const std::uint64_t nx = whole[0], ny = whole[1];
+    std::size_t v = 0;
+    for (std::size_t k = o[2]; k < o[2] + e[2] && v < keys.size(); ++k)
+        for (std::size_t j = o[1]; j < o[1] + e[1] && v < keys.size(); ++j)
+            for (std::size_t a = 0; a < 4; ++a) {
+                const std::uint64_t base = ((std::uint64_t(k) * ny + j) * 4 + a) * nx;
+                const bool cube_row = j + 1 < o[1] + e[1] && k + 1 < o[2] + e[2];
+                const std::uint64_t lo = base + o[0], hi = a < 3 ? lo + e[0] : cube_row ? lo + e[0] - 1 : lo;
+                if (v < keys.size() && keys[v] < lo) return v;
+                std::size_t end = v;
+                while (end < keys.size() && keys[end] < hi) ++end;
+                if (end > v) f(j, k, a, base, v, end);
+                v = end;
+            }
+    return v;
+}
+
+/// The same for the cube keys of a block's triangles, one run per cube row (j, k).
+template <class F>
+std::size_t for_each_cube_run(std::span<const std::uint64_t> cubes, const grid_dims& whole, const grid_dims& o, const grid_dims& e,
+                              const F& f) {
+    const std::uint64_t nx = whole[0], ny = whole[1];
+    std::size_t t = 0;
+    for (std::size_t k = o[2]; k + 1 < o[2] + e[2] && t < cubes.size(); ++k)
+        for (std::size_t j = o[1]; j + 1 < o[1] + e[1] && t < cubes.size(); ++j) {
+            const std::uint64_t lo = (std::uint64_t(k) * ny + j) * nx + o[0], hi = lo + e[0] - 1;
+            if (cubes[t] < lo) return t;
+            std::size_t end = t;
+            while (end < cubes.size() && cubes[end] < hi) ++end;
+            if (end > t) f(j, k, t, end);
+            t = end;
+        }
+    return t;
+}
+
+}  // namespace detail::mc_merge
+
+/// Welds blocks by key into one indexed triangle list, written into storage that
+/// `allocate(n_vertices, n_triangles)` returns (a merged_storage<S> of exactly those sizes;
+/// called once, after the blocks' own arrays and their tiling are checked).
+///
+/// When the blocks tile a grid (as marching_cubes_block() describes: one block per chunk of a
+/// chunking of the grid, each with its one-sample overlap, including the empty blocks of
+/// chunks too thin for cubes), the result equals marching_cubes_indexed() of the whole grid
+/// element for element: the same vertices in the same order with bit-identical positions,
+/// and the same triangles in the same order. The blocks may come in any order.
+///
+/// How: every vertex is owned by one block, the one whose chunk holds the sample its key
+/// names (see detail::mc_merge::axis_tiling for the last sample), so the vertices a block owns
+/// are copied without any lookup; only the vertices on a block's high faces, which a neighbour
+/// owns, are looked up (a binary search in the neighbour's run of that row and axis) and
+/// checked bit for bit. Counting each block's vertices and triangles per row, a prefix sum in
+/// the whole grid's row order, then writing, puts everything in place, in parallel.
+///
+/// Complexity: O(V + T + R + H log V_r) for V block vertices, T triangles, R sample rows of
+/// all blocks, H vertices on inner chunk faces and V_r vertices per row; memory 12 bytes per
+/// row and axis of every block, 4 per block vertex, besides the output. Parallel over blocks
+/// and over z-slices with oneTBB.
+/// \pre none (checked below).
+/// \post on error, the storage (if it was allocated) holds unspecified values.
+/// Errors (invalid_argument): a block whose arrays disagree in length, whose keys do not
+/// increase or cube keys decrease, whose triangle names a missing vertex, whose vertices or
+/// cubes lie outside its samples, or whose whole-grid dimensions differ from another block's;
+/// blocks that do not tile one grid (a chunk without a block, a block of the wrong size); two
+/// blocks at one offset (the blocks overlap); two blocks giving one key different positions,
+/// or a key missing from the block that owns it; unsupported: more than 2^32 - 1 vertices.
+/// The allocator's error is returned as is.
+template <class S, class Allocate>
+result<void> merge_blocks_into(std::span<const block_triangles_view<S>> blocks, Allocate&& allocate, const merge_blocks_options& options = {}) {
+    using detail::mc_merge::axis_tiling;
+    using detail::mc_merge::block_plan;
+    if (blocks.empty()) {
+        auto none = allocate(std::size_t(0), std::size_t(0));
+        if (!none) return none.error();
+        return {};
+    }
+    const grid_dims whole = blocks[0].whole;
     for (std::size_t b = 0; b < blocks.size(); ++b) {
         const auto& blk = blocks[b];
         const std::string which = "merge_blocks: block " + std::to_string(b);
@@ -131,114 +258,284 @@ result<indexed_triangles<S>> merge_blocks(std::span<const block_triangles<S>> bl
             return fail(errc::invalid_argument, which + " has " + std::to_string(blk.positions.size()) + " positions, " +
                                                     std::to_string(blk.keys.size()) + " keys, " + std::to_string(blk.triangles.size()) +
                                                     " triangles and " + std::to_string(blk.cubes.size()) + " cube keys");
-        if (blk.positions.empty() && blk.triangles.empty()) continue;
-        if (whole == grid_dims{0, 0, 0}) whole = blk.whole;
-        if (blk.whole != whole || whole[0] == 0)
-            return fail(errc::invalid_argument, which + " refers to a whole grid of other dimensions than block 0's");
-        for (std::size_t v = 1; v < blk.keys.size(); ++v)
-            if (blk.keys[v] <= blk.keys[v - 1]) return fail(errc::invalid_argument, which + ": keys do not increase at vertex " + std::to_string(v));
-        for (std::size_t t = 1; t < blk.cubes.size(); ++t)
-            if (blk.cubes[t] < blk.cubes[t - 1]) return fail(errc::invalid_argument, which + ": cube keys decrease at triangle " + std::to_string(t));
-        for (std::size_t t = 0; t < blk.triangles.size(); ++t)
-            for (auto v : blk.triangles[t])
-                if (v >= blk.positions.size())
-                    return fail(errc::invalid_argument, which + " triangle " + std::to_string(t) + " names vertex " + std::to_string(v) +
-                                                            " of " + std::to_string(blk.positions.size()));
-        n_vertices += blk.positions.size();
-        n_triangles += blk.triangles.size();
+        if (blk.whole != whole) return fail(errc::invalid_argument, which + " refers to a whole grid of other dimensions than block 0's");
+        if (blk.positions.size() >= std::numeric_limits<std::uint32_t>::max())
+            return fail(errc::unsupported, which + " has more than 2^32 - 2 vertices");
+        for (int a = 0; a < 3; ++a)
+            if (blk.offset[a] >= whole[a] || blk.size[a] == 0 || blk.size[a] > whole[a] - blk.offset[a])
+                return fail(errc::invalid_argument, which + ": " + std::to_string(blk.size[a]) + " samples at " +
+                                                        std::to_string(blk.offset[a]) + " along " + std::string(1, "xyz"[a]) +
+                                                        " do not fit in the whole grid's " + std::to_string(whole[a]));
     }
-    indexed_triangles<S> out;
-    if (n_vertices == 0 && n_triangles == 0) return out;
-    const std::uint64_t nx = whole[0];
+    const std::size_t nx = whole[0], ny = whole[1], nz = whole[2];
+    if (double(nx) * double(ny) * double(nz) * 4 >= 0x1p63) return fail(errc::invalid_argument, "merge_blocks: whole grid too large for 64-bit keys");
+    if (nx < 2 || ny < 2 || nz < 2) {
+        // No cubes anywhere: every block is empty.
+        for (std::size_t b = 0; b < blocks.size(); ++b)
+            if (!blocks[b].keys.empty() || !blocks[b].cubes.empty())
+                return fail(errc::invalid_argument, "merge_blocks: block " + std::to_string(b) + " has vertices in a grid too thin for cubes");
+        auto none = allocate(std::size_t(0), std::size_t(0));
+        if (!none) return none.error();
+        return {};
+    }
 
-    // One run per (block, row); sorted by row, then first key, then block.
-    struct run {
-        std::uint64_t row, first;
-        std::uint32_t block;
-        std::size_t begin, end;
-    };
-    auto runs_of = [&](auto member) {
-        std::vector<run> runs;
-        for (std::size_t b = 0; b < blocks.size(); ++b) {
-            const std::vector<std::uint64_t>& k = blocks[b].*member;
-            for (std::size_t v = 0; v < k.size();) {
-                std::size_t e = v + 1;
-                while (e < k.size() && k[e] / nx == k[v] / nx) ++e;
-                runs.push_back({k[v] / nx, k[v], std::uint32_t(b), v, e});
-                v = e;
-            }
+    // The chunking: the blocks' offsets per axis; every chunk cell must hold exactly one
+    // block, of the chunk's size plus the overlap.
+    std::array<axis_tiling, 3> tiling;
+    for (int a = 0; a < 3; ++a) {
+        auto& t = tiling[a];
+        for (const auto& blk : blocks) t.starts.push_back(blk.offset[a]);
+        std::sort(t.starts.begin(), t.starts.end());
+        t.starts.erase(std::unique(t.starts.begin(), t.starts.end()), t.starts.end());
+        if (t.starts[0] != 0)
+            return fail(errc::invalid_argument, "merge_blocks: the blocks do not tile one grid (no block starts at 0 along " +
+                                                    std::string(1, "xyz"[a]) + ")");
+        const std::size_t n = whole[a], chunks = t.starts.size();
+        t.owner.resize(n);
+        t.own_lo.assign(chunks, 0);
+        t.own_hi.assign(chunks, 0);
+        for (std::size_t c = 0, s = 0; s < n; ++s) {
+            while (c + 1 < chunks && t.starts[c + 1] <= std::min(s, n - 2)) ++c;
+            t.owner[s] = std::uint32_t(c);
         }
-        std::sort(runs.begin(), runs.end(), [](const run& a, const run& b) {
-            return a.row != b.row ? a.row < b.row : a.first != b.first ? a.first < b.first : a.block < b.block;
+        for (std::size_t s = n; s-- > 0;) t.own_lo[t.owner[s]] = s;
+        for (std::size_t s = 0; s < n; ++s) t.own_hi[t.owner[s]] = s + 1;
+    }
+    const std::size_t mx = tiling[0].starts.size(), my = tiling[1].starts.size(), mz = tiling[2].starts.size();
+    // Each block fills one chunk cell, so more cells than blocks leave one empty.
+    if (double(mx) * double(my) * double(mz) > double(blocks.size()))
+        return fail(errc::invalid_argument, "merge_blocks: the blocks do not tile one grid (" + std::to_string(blocks.size()) +
+                                                " blocks for " + std::to_string(mx) + " x " + std::to_string(my) + " x " +
+                                                std::to_string(mz) + " chunks)");
+    constexpr std::uint32_t no_block = std::numeric_limits<std::uint32_t>::max();
+    std::vector<std::uint32_t> cell_block(mx * my * mz, no_block);
+    std::vector<std::array<std::size_t, 3>> cell_of(blocks.size());
+    for (std::size_t b = 0; b < blocks.size(); ++b) {
+        std::array<std::size_t, 3> c{};
+        for (int a = 0; a < 3; ++a) {
+            const auto& st = tiling[a].starts;
+            c[a] = std::size_t(std::lower_bound(st.begin(), st.end(), blocks[b].offset[a]) - st.begin());
+            const std::size_t want = c[a] + 1 < st.size() ? st[c[a] + 1] - st[c[a]] + 1 : whole[a] - st[c[a]];
+            if (blocks[b].size[a] != want)
+                return fail(errc::invalid_argument, "merge_blocks: the blocks do not tile one grid (block " + std::to_string(b) + " has " +
+                                                        std::to_string(blocks[b].size[a]) + " samples along " + std::string(1, "xyz"[a]) +
+                                                        " where its chunk and overlap have " + std::to_string(want) + ")");
+        }
+        auto& slot = cell_block[(c[2] * my + c[1]) * mx + c[0]];
+        if (slot != no_block)
+            return fail(errc::invalid_argument, "merge_blocks: blocks " + std::to_string(slot) + " and " + std::to_string(b) +
+                                                    " both start at (" + std::to_string(blocks[b].offset[0]) + ", " +
+                                                    std::to_string(blocks[b].offset[1]) + ", " + std::to_string(blocks[b].offset[2]) +
+                                                    ") (the blocks overlap)");
+        slot = std::uint32_t(b);
+        cell_of[b] = c;
+    }
+    for (std::size_t c = 0; c < cell_block.size(); ++c)
+        if (cell_block[c] == no_block)
+            return fail(errc::invalid_argument, "merge_blocks: the blocks do not tile one grid (no block starts at (" +
+                                                    std::to_string(tiling[0].starts[c % mx]) + ", " +
+                                                    std::to_string(tiling[1].starts[c / mx % my]) + ", " +
+                                                    std::to_string(tiling[2].starts[c / mx / my]) + "))");
+
+    std::vector<block_plan> plans(blocks.size());
+    std::vector<std::string> errors(blocks.size());
+    auto each_block = [&](const auto& body) {
+        detail::with_thread_count(options.threads, [&] {
+            detail::parallel_chunks(blocks.size(), 1, [&](std::size_t b0, std::size_t b1) {
+                for (std::size_t b = b0; b < b1; ++b) errors[b] = body(b);
+            });
         });
-        return runs;
+        for (const auto& e : errors)
+            if (!e.empty()) return e;
+        return std::string();
     };
 
-    std::vector<std::vector<std::uint32_t>> global(blocks.size());
-    for (std::size_t b = 0; b < blocks.size(); ++b) global[b].resize(blocks[b].keys.size());
-    {
-        const auto runs = runs_of(&block_triangles<S>::keys);
-        out.positions.reserve(n_vertices);
-        std::vector<std::uint64_t> row_keys;  // keys written so far in the current row, increasing
-        std::size_t row_begin = 0;
-        std::uint64_t row = ~std::uint64_t(0);
-        for (const run& r : runs) {
-            if (r.row != row) {
-                row = r.row;
-                row_keys.clear();
-                row_begin = out.positions.size();
-            }
-            const auto& blk = blocks[r.block];
-            for (std::size_t v = r.begin; v < r.end; ++v) {
-                const std::uint64_t key = blk.keys[v];
-                if (row_keys.empty() || key > row_keys.back()) {
-                    if (out.positions.size() == std::numeric_limits<std::uint32_t>::max())
-                        return fail(errc::unsupported, "merge_blocks: more than 2^32 - 1 vertices");
-                    global[r.block][v] = std::uint32_t(out.positions.size());
-                    out.positions.push_back(blk.positions[v]);
-                    row_keys.push_back(key);
-                    continue;
-                }
-                // A key another block already gave: the same vertex.
-                const auto it = std::lower_bound(row_keys.begin(), row_keys.end(), key);
-                if (it == row_keys.end() || *it != key)
-                    return fail(errc::invalid_argument, "merge_blocks: the blocks do not tile one grid (vertex key " + std::to_string(key) +
-                                                            " of block " + std::to_string(r.block) + " falls between another block's)");
-                const std::size_t g = row_begin + std::size_t(it - row_keys.begin());
-                if (std::memcmp(&out.positions[g], &blk.positions[v], sizeof(out.positions[g])) != 0)
-                    return fail(errc::invalid_argument, "merge_blocks: two blocks give vertex key " + std::to_string(key) +
-                                                            " different positions (block " + std::to_string(r.block) + ")");
-                global[r.block][v] = std::uint32_t(g);
-            }
+    // Pass 1, per block: check its arrays; count its owned vertices and its triangles per row.
+    const std::string planned = each_block([&](std::size_t b) -> std::string {
+        const auto& blk = blocks[b];
+        auto& p = plans[b];
+        const std::string which = "merge_blocks: block " + std::to_string(b);
+        for (int a = 0; a < 3; ++a) {
+            p.lo[a] = tiling[a].own_lo[cell_of[b][a]];
+            p.hi[a] = std::max(p.lo[a], tiling[a].own_hi[cell_of[b][a]]);
         }
-    }
+        p.rows_y = p.hi[1] - p.lo[1];
+        const std::size_t rows = p.rows_y * (p.hi[2] - p.lo[2]);
+        p.vertex_begin.assign(4 * rows, 0);
+        p.vertex_count.assign(4 * rows, 0);
+        p.vertex_start.resize(4 * rows);
+        p.cube_begin.assign(rows, 0);
+        p.cube_count.assign(rows, 0);
+        p.cube_start.resize(rows);
+        const auto keys = blk.keys;
+        for (std::size_t v = 1; v < keys.size(); ++v)
+            if (keys[v] <= keys[v - 1]) return which + ": keys do not increase at vertex " + std::to_string(v);
+        const std::uint64_t own_x = p.hi[0];
+        const std::size_t outside = detail::mc_merge::for_each_vertex_run(
+            keys, whole, blk.offset, blk.size,
+            [&](std::size_t j, std::size_t k, std::size_t a, std::uint64_t row_base, std::size_t v, std::size_t end) {
+                if (!p.owns_row(j, k)) return;
+                std::size_t owned_end = v;
+                while (owned_end < end && keys[owned_end] < row_base + own_x) ++owned_end;
+                p.vertex_begin[4 * p.at(j, k) + a] = std::uint32_t(v);
+                p.vertex_count[4 * p.at(j, k) + a] = std::uint32_t(owned_end - v);
+            });
+        if (outside < keys.size())
+            return which + ": vertex " + std::to_string(outside) + " (key " + std::to_string(keys[outside]) + ") lies outside the block";
+        const auto cubes = blk.cubes;
+        for (std::size_t t = 1; t < cubes.size(); ++t)
+            if (cubes[t] < cubes[t - 1]) return which + ": cube keys decrease at triangle " + std::to_string(t);
+        // The block's cubes are those whose first sample lies in its chunk: with the tiling
+        // checked above, their rows are owned rows.
+        const std::size_t stray = detail::mc_merge::for_each_cube_run(
+            cubes, whole, blk.offset, blk.size, [&](std::size_t j, std::size_t k, std::size_t t, std::size_t end) {
+                p.cube_begin[p.at(j, k)] = std::uint32_t(t);
+                p.cube_count[p.at(j, k)] = std::uint32_t(end - t);
+            });
+        if (stray < cubes.size())
+            return which + ": triangle " + std::to_string(stray) + " (cube key " + std::to_string(cubes[stray]) + ") lies outside the block";
+        return {};
+    });
+    if (!planned.empty()) return fail(errc::invalid_argument, planned);
 
-    // Triangles in cube order, a cube's own triangles in table order.
-    const auto runs = runs_of(&block_triangles<S>::cubes);
-    out.triangles.reserve(n_triangles);
-    std::uint64_t row = ~std::uint64_t(0), last_cube = 0;
-    std::uint32_t last_block = 0;
-    for (const run& r : runs) {
-        const auto& blk = blocks[r.block];
-        if (r.row == row && r.first <= last_cube)
-            return fail(errc::invalid_argument, "merge_blocks: blocks " + std::to_string(last_block) + " and " + std::to_string(r.block) +
-                                                    " both hold cube " + std::to_string(r.first) + " (the blocks overlap)");
-        const auto& map = global[r.block];
-        for (std::size_t t = r.begin; t < r.end; ++t) {
-            const auto& tri = blk.triangles[t];
-            out.triangles.push_back({map[tri[0]], map[tri[1]], map[tri[2]]});
+    // Pass 2: global starts, in the whole grid's order: rows (z, y); in a row, the axes, and
+    // for each axis the chunks along x; triangles by cube row, then chunk along x.
+    std::vector<std::uint64_t> slice_vertices(nz + 1, 0), slice_triangles(nz + 1, 0);
+    auto sweep = [&](std::size_t k, bool assign, std::uint64_t vertex_at, std::uint64_t triangle_at) {
+        const std::size_t bz = tiling[2].owner[k];
+        for (std::size_t j = 0; j < ny; ++j) {
+            const std::uint32_t* row_blocks = &cell_block[(bz * my + tiling[1].owner[j]) * mx];
+            for (std::size_t a = 0; a < 4; ++a)
+                for (std::size_t bx = 0; bx < mx; ++bx) {
+                    auto& p = plans[row_blocks[bx]];
+                    const std::size_t at = 4 * p.at(j, k) + a;
+                    if (assign) p.vertex_start[at] = std::uint32_t(vertex_at);
+                    vertex_at += p.vertex_count[at];
+                }
+            if (j + 1 < ny && k + 1 < nz)
+                for (std::size_t bx = 0; bx < mx; ++bx) {
+                    auto& p = plans[row_blocks[bx]];
+                    if (assign) p.cube_start[p.at(j, k)] = std::uint32_t(triangle_at);
+                    triangle_at += p.cube_count[p.at(j, k)];
+                }
         }
-        row = r.row;
-        last_cube = blk.cubes[r.end - 1];
-        last_block = r.block;
+        return std::pair{vertex_at, triangle_at};
+    };
+    detail::with_thread_count(options.threads, [&] {
+        detail::parallel_chunks(nz, 8, [&](std::size_t k0, std::size_t k1) {
+            for (std::size_t k = k0; k < k1; ++k) std::tie(slice_vertices[k + 1], slice_triangles[k + 1]) = sweep(k, false, 0, 0);
+        });
+    });
+    for (std::size_t k = 0; k < nz; ++k) {
+        slice_vertices[k + 1] += slice_vertices[k];
+        slice_triangles[k + 1] += slice_triangles[k];
     }
+    if (slice_vertices[nz] > std::numeric_limits<std::uint32_t>::max())
+        return fail(errc::unsupported, "merge_blocks: more than 2^32 - 1 vertices");
+    detail::with_thread_count(options.threads, [&] {
+        detail::parallel_chunks(nz, 8, [&](std::size_t k0, std::size_t k1) {
+            for (std::size_t k = k0; k < k1; ++k) sweep(k, true, slice_vertices[k], slice_triangles[k]);
+        });
+    });
+    auto storage = allocate(std::size_t(slice_vertices[nz]), std::size_t(slice_triangles[nz]));
+    if (!storage) return storage.error();
+    const merged_storage<S> out = *storage;
+    if (out.positions.size() != slice_vertices[nz] || out.triangles.size() != slice_triangles[nz])
+        return fail(errc::invalid_argument, "merge_blocks: the allocator returned storage of the wrong size");
+
+    // Pass 3, per block: copy its owned vertices in place, look up the others in the blocks
+    // that own them, then write its triangles in place.
+    const std::string written = each_block([&](std::size_t b) -> std::string {
+        const auto& blk = blocks[b];
+        const auto& p = plans[b];
+        const auto keys = blk.keys;
+        const std::size_t nv = keys.size();
+        // Uninitialised on purpose: every entry is written below before it is read.
+        const std::unique_ptr<std::uint32_t[]> global(new std::uint32_t[nv]);
+        std::string error;
+        detail::mc_merge::for_each_vertex_run(
+            keys, whole, blk.offset, blk.size,
+            [&](std::size_t j, std::size_t k, std::size_t a, std::uint64_t row_base, std::size_t v, std::size_t end) {
+                if (!error.empty()) return;
+                std::size_t q = v;
+                if (p.owns_row(j, k)) {
+                    const std::size_t at = 4 * p.at(j, k) + a;
+                    const std::uint32_t start = p.vertex_start[at];
+                    for (const std::size_t owned_end = v + p.vertex_count[at]; q < owned_end; ++q) {
+                        global[q] = std::uint32_t(start + (q - v));
+                        out.positions[global[q]] = blk.positions[q];
+                    }
+                }
+                // The rest lie on a neighbour's chunk: find each in the owner's run.
+                const std::size_t jo = tiling[1].owner[j], ko = tiling[2].owner[k];
+                for (; q < end; ++q) {
+                    const std::uint32_t owner = cell_block[(ko * my + jo) * mx + tiling[0].owner[std::size_t(keys[q] - row_base)]];
+                    const auto& op = plans[owner];
+                    const std::size_t at = 4 * op.at(j, k) + a;
+                    const auto theirs = blocks[owner].keys;
+                    const auto run = theirs.begin() + op.vertex_begin[at];
+                    const auto it = std::lower_bound(run, run + op.vertex_count[at], keys[q]);
+                    if (owner == b || it == run + op.vertex_count[at] || *it != keys[q]) {
+                        error = "merge_blocks: the blocks do not tile one grid (vertex key " + std::to_string(keys[q]) + " of block " +
+                                std::to_string(b) + " is missing from block " + std::to_string(owner) + ", which owns it)";
+                        return;
+                    }
+                    const std::size_t w = std::size_t(it - theirs.begin());
+                    if (std::memcmp(&blocks[owner].positions[w], &blk.positions[q], sizeof(vec3<S>)) != 0) {
+                        error = "merge_blocks: blocks " + std::to_string(b) + " and " + std::to_string(owner) + " give vertex key " +
+                                std::to_string(keys[q]) + " different positions";
+                        return;
+                    }
+                    global[q] = op.vertex_start[at] + std::uint32_t(w - op.vertex_begin[at]);
+                }
+            });
+        if (!error.empty()) return error;
+        for (std::size_t r = 0; r < p.cube_count.size(); ++r) {
+            const std::size_t t0 = p.cube_begin[r], n = p.cube_count[r];
+            auto* dst = out.triangles.data() + p.cube_start[r];
+            for (std::size_t t = 0; t < n; ++t) {
+                const auto& tri = blk.triangles[t0 + t];
+                if (tri[0] >= nv || tri[1] >= nv || tri[2] >= nv) {
+                    const auto bad = tri[0] >= nv ? tri[0] : tri[1] >= nv ? tri[1] : tri[2];
+                    return "merge_blocks: block " + std::to_string(b) + " triangle " + std::to_string(t0 + t) + " names vertex " +
+                           std::to_string(bad) + " of " + std::to_string(nv);
+                }
+                dst[t] = {global[tri[0]], global[tri[1]], global[tri[2]]};
+            }
+        }
+        return {};
+    });
+    if (!written.empty()) return fail(errc::invalid_argument, written);
+    return {};
+}
+
+/// Welds blocks by key into one indexed triangle list: merge_blocks_into() with the result's
+/// own arrays as the storage. Same result, rules, errors and complexity.
+template <class S>
+result<indexed_triangles<S>> merge_blocks(std::span<const block_triangles_view<S>> blocks, const merge_blocks_options& options = {}) {
+    indexed_triangles<S> out;
+    auto allocate = [&](std::size_t vertices, std::size_t triangles) -> result<merged_storage<S>> {
+        out.positions.resize(vertices);
+        out.triangles.resize(triangles);
+        return merged_storage<S>{out.positions, out.triangles};
+    };
+    if (auto ok = merge_blocks_into(blocks, allocate, options); !ok) return ok.error();
     return out;
+}
+
+/// The same for blocks held as block_triangles.
+template <class S>
+result<indexed_triangles<S>> merge_blocks(std::span<const block_triangles<S>> blocks, const merge_blocks_options& options = {}) {
+    std::vector<block_triangles_view<S>> views;
+    views.reserve(blocks.size());
+    for (const auto& b : blocks) views.push_back(view_of(b));
+    return merge_blocks(std::span<const block_triangles_view<S>>(views), options);
 }
 
 /// The same for a std::vector of blocks.
 template <class S>
-result<indexed_triangles<S>> merge_blocks(const std::vector<block_triangles<S>>& blocks) {
-    return merge_blocks(std::span<const block_triangles<S>>(blocks));
+result<indexed_triangles<S>> merge_blocks(const std::vector<block_triangles<S>>& blocks, const merge_blocks_options& options = {}) {
+    return merge_blocks(std::span<const block_triangles<S>>(blocks), options);
 }
 
 /// Marching cubes of a grid read a z-slab at a time, with a few slabs in memory at once.
