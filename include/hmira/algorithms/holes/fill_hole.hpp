@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <unordered_map>
 #include <string>
 #include <vector>
 
@@ -15,7 +16,7 @@
 #include "../../core/result.hpp"
 #include "../../core/vec3.hpp"
 #include "../triangle/triangle_common.hpp"
-#include "../triangulation/triangulate_polygon.hpp"
+#include "detail/loop_triangulation.hpp"
 
 namespace hmira {
 
@@ -33,42 +34,18 @@ struct fill_hole_result {
     std::vector<typename T::face_handle> faces;  ///< the patch's triangles (loop edges - 2 of them)
 };
 
-namespace detail::holes {
-
-inline vec3<double> unit_normal(const vec3<double>& a, const vec3<double>& b, const vec3<double>& c) {
-    const auto n = cross(b - a, c - a);
-    const double l = std::sqrt(dot(n, n));
-    return l > 0 ? n / l : vec3<double>{};
-}
-inline double area(const vec3<double>& a, const vec3<double>& b, const vec3<double>& c) {
-    const auto n = cross(b - a, c - a);
-    return 0.5 * std::sqrt(dot(n, n));
-}
-/// 1 - cos of the angle between two unit normals: 0 flat, 2 folded back. Monotone in the angle.
-inline double bend(const vec3<double>& n, const vec3<double>& m) {
-    if (dot(n, n) == 0 || dot(m, m) == 0) return 0;
-    return 1 - dot(n, m);
-}
-
-/// Liepa's weight: the largest bend first, then the area.
-struct weight {
-    double bend = 0, area = 0;
-    bool operator<(const weight& o) const {
-        // Bends equal within rounding compare by area, so flat holes get the smallest patch.
-        if (std::fabs(bend - o.bend) > 1e-12) return bend < o.bend;
-        return area < o.area;
-    }
-};
-
-}  // namespace detail::holes
 
 /// Fills the boundary loop of `boundary_halfedge` (a halfedge with no face) with triangles.
 ///
 /// Loops of up to `options.max_dynamic_programming_edges` edges are triangulated by Liepa's
-/// dynamic programme: among all triangulations of the loop that add no edge the mesh already
-/// has, the one whose largest dihedral bend (between patch triangles and with the faces
-/// around the loop) is smallest, then whose area is smallest. Longer loops are triangulated
-/// in the plane of their Newell normal (triangulate_polygon), which must see them as a simple
+/// dynamic programme: among the triangulations of the loop that add no edge the mesh already
+/// has and no degenerate triangle, the one whose largest dihedral bend (between patch triangles
+/// and with the faces around the loop) is smallest, then whose area is smallest. Like Liepa's
+/// and CGAL's, the programme takes the bend across an inner edge against the best solution of
+/// the inner sub-loop, a greedy choice; a pass of edge flips then lowers the area wherever that
+/// bends no edge more than the patch's largest bend. The loop starts at the target of
+/// `boundary_halfedge`, as in CGAL's triangulate_hole. Longer loops are triangulated in the
+/// plane of their Newell normal (triangulate_polygon), which must see them as a simple
 /// polygon. New faces are wound like the faces around the hole.
 ///
 /// \pre the mesh is a valid surface; the loop visits each vertex once.
@@ -76,8 +53,9 @@ struct weight {
 /// Errors (mesh unchanged): errc::invalid_handle; errc::topology when the halfedge has a face,
 /// the loop passes a vertex twice, has fewer than three edges, or every triangulation would
 /// duplicate an existing edge; errc::unsupported when a long loop's projection is not simple.
-/// Complexity: O(n^3) time and O(n^2) memory by the dynamic programme; O(n^2) typical for
-/// the projected fallback; plus O(n^2 valence) to find edges the patch must not repeat.
+/// Complexity: O(n^3) time and O(n^2) memory by the dynamic programme (plus O(n^2) for the
+/// flip pass, typically a few rounds); O(n^2) time, O(n) memory typical for the projected
+/// fallback; plus O(n valence) to find edges the patch must not repeat.
 template <class M, class T = default_traits<M>>
     requires triangle_operable_mesh<M, T>
 [[nodiscard]] result<fill_hole_result<M, T>> fill_hole(M& mesh, typename T::halfedge_handle boundary_halfedge,
@@ -97,12 +75,15 @@ template <class M, class T = default_traits<M>>
     std::vector<H> h;
     std::vector<V> v;
     {
-        auto x = boundary_halfedge;
+        // The loop starts at the halfedge's target, as CGAL's does: the programme's greedy
+        // bend term makes the result depend on where the loop starts.
+        const auto first = T::next(mesh, boundary_halfedge);
+        auto x = first;
         do {
             h.push_back(x);
             v.push_back(T::target(mesh, T::opposite(mesh, x)));
             x = T::next(mesh, x);
-        } while (x != boundary_halfedge);
+        } while (x != first);
     }
     const std::size_t n = h.size();
     if (n < 3) return fail(errc::topology, "fill_hole: the loop has fewer than three edges", de::index_of<M, T>(mesh, boundary_halfedge));
@@ -114,122 +95,53 @@ template <class M, class T = default_traits<M>>
                 return fail(errc::topology, "fill_hole: the loop passes " + de::name<M, T>("vertex", mesh, sorted[i]) + " twice",
                             de::index_of<M, T>(mesh, sorted[i]));
     }
-    std::vector<vec3<double>> p(n);
-    for (std::size_t i = 0; i < n; ++i) p[i] = dt::position_of<M, T>(mesh, v[i]);
-    for (const auto& q : p)
+    dh::loop_data loop;
+    loop.p.resize(n);
+    for (std::size_t i = 0; i < n; ++i) loop.p[i] = dt::position_of<M, T>(mesh, v[i]);
+    for (const auto& q : loop.p)
         if (!dt::finite(q)) return fail(errc::invalid_argument, "fill_hole: a loop vertex is not finite", de::index_of<M, T>(mesh, boundary_halfedge));
-    // Pairs already joined by an edge (other than along the loop) cannot be diagonals.
-    std::vector<char> joined(n * n, 0);
-    for (std::size_t i = 0; i < n; ++i) {
-        const auto s = T::vertex_halfedge(mesh, v[i]);
-        auto x = s;
-        do {
-            const auto w = T::target(mesh, x);
-            for (std::size_t j = 0; j < n; ++j)
-                if (v[j] == w) joined[i * n + j] = 1;
-            x = T::next(mesh, T::opposite(mesh, x));
-        } while (x != s);
+    {
+        // Pairs already joined by an edge (other than along the loop) cannot be diagonals.
+        std::unordered_map<std::size_t, std::size_t> position_in_loop;
+        for (std::size_t i = 0; i < n; ++i) position_in_loop.emplace(T::vertex_index(mesh, v[i]), i);
+        loop.joined.resize(n);
+        for (std::size_t i = 0; i < n; ++i) {
+            const auto s = T::vertex_halfedge(mesh, v[i]);
+            auto x = s;
+            do {
+                const auto it = position_in_loop.find(T::vertex_index(mesh, T::target(mesh, x)));
+                if (it != position_in_loop.end()) loop.joined[i].push_back(it->second);
+                x = T::next(mesh, T::opposite(mesh, x));
+            } while (x != s);
+            std::sort(loop.joined[i].begin(), loop.joined[i].end());
+        }
     }
     // Normal of the face across loop edge (i, i + 1), for the bend at the patch's rim.
-    std::vector<vec3<double>> rim(n);
+    loop.rim.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
         const auto o = T::opposite(mesh, h[i]);
-        rim[i] = dh::unit_normal(dt::position_of<M, T>(mesh, T::target(mesh, T::opposite(mesh, o))),
-                                 dt::position_of<M, T>(mesh, T::target(mesh, o)),
-                                 dt::position_of<M, T>(mesh, T::target(mesh, T::next(mesh, o))));
+        loop.rim[i] = dh::unit_normal(dt::position_of<M, T>(mesh, T::target(mesh, T::opposite(mesh, o))),
+                                      dt::position_of<M, T>(mesh, T::target(mesh, o)),
+                                      dt::position_of<M, T>(mesh, T::target(mesh, T::next(mesh, o))));
     }
 
     // triangles (i, k, j) in loop order, i < k < j.
-    std::vector<std::array<std::size_t, 3>> tris;
+    dh::triangle_list tris;
     if (n <= options.max_dynamic_programming_edges) {
-        const double inf = std::numeric_limits<double>::infinity();
-        std::vector<dh::weight> W(n * n, dh::weight{inf, inf});
-        std::vector<std::size_t> K(n * n, n);
-        for (std::size_t i = 0; i + 1 < n; ++i) W[i * n + i + 1] = {0, 0};
-        // Normal of the triangle that the best solution of (i, j) puts on edge (i, j).
-        auto inner_normal = [&](std::size_t i, std::size_t j) {
-            if (j == i + 1) return rim[i];
-            const auto k = K[i * n + j];
-            return dh::unit_normal(p[i], p[k], p[j]);
-        };
-        for (std::size_t len = 2; len < n; ++len)
-            for (std::size_t i = 0; i + len < n; ++i) {
-                const std::size_t j = i + len;
-                // (i, j) becomes an edge: not allowed if the mesh has it already (except the
-                // loop's own closing edge (0, n-1)).
-                if (!(i == 0 && j == n - 1) && joined[i * n + j]) continue;
-                dh::weight best{inf, inf};
-                std::size_t best_k = n;
-                for (std::size_t k = i + 1; k < j; ++k) {
-                    const auto& a = W[i * n + k];
-                    const auto& b = W[k * n + j];
-                    if (a.bend == inf || b.bend == inf) continue;
-                    const auto nk = dh::unit_normal(p[i], p[k], p[j]);
-                    double bend = std::max(a.bend, b.bend);
-                    bend = std::max(bend, dh::bend(nk, inner_normal(i, k)));
-                    bend = std::max(bend, dh::bend(nk, inner_normal(k, j)));
-                    if (i == 0 && j == n - 1) bend = std::max(bend, dh::bend(nk, rim[n - 1]));
-                    const dh::weight w{bend, a.area + b.area + dh::area(p[i], p[k], p[j])};
-                    if (w < best) {
-                        best = w;
-                        best_k = k;
-                    }
-                }
-                W[i * n + j] = best;
-                K[i * n + j] = best_k;
-            }
-        if (K[n - 1] == n)
+        tris = dh::triangulate_by_dynamic_programming(loop);
+        if (tris.empty())
             return fail(errc::topology, "fill_hole: every triangulation of the loop would repeat an edge the mesh already has",
                         de::index_of<M, T>(mesh, boundary_halfedge));
-        std::vector<std::array<std::size_t, 2>> stack{{0, n - 1}};
-        while (!stack.empty()) {
-            const auto [i, j] = stack.back();
-            stack.pop_back();
-            const auto k = K[i * n + j];
-            tris.push_back({i, k, j});
-            if (k > i + 1) stack.push_back({i, k});
-            if (j > k + 1) stack.push_back({k, j});
-        }
+        dh::reduce_area_by_flips(loop, tris);
     } else {
-        // Project on the loop's Newell plane; the loop runs against the patch's winding.
-        vec3<double> nn{};
-        for (std::size_t i = 0; i < n; ++i) nn += cross(p[i], p[(i + 1) % n]);
-        const double ax = std::fabs(nn.x), ay = std::fabs(nn.y), az = std::fabs(nn.z);
-        const int k = ax >= ay && ax >= az ? 0 : (ay >= az ? 1 : 2);
-        int u = (k + 1) % 3, w = (k + 2) % 3;
-        if (nn[std::size_t(k)] < 0) std::swap(u, w);
-        std::vector<point2> pts(n);
-        for (std::size_t i = 0; i < n; ++i) pts[i] = {p[i][std::size_t(u)], p[i][std::size_t(w)]};
-        std::vector<std::vector<std::size_t>> loops(1);
-        for (std::size_t i = 0; i < n; ++i) loops[0].push_back(i);
-        auto t = triangulate_polygon(pts, loops);
-        if (!t)
-            return fail(errc::unsupported, "fill_hole: a loop of " + std::to_string(n) +
-                                               " edges is too long for the dynamic programme and its projection is not simple: " + t.error().message,
-                        de::index_of<M, T>(mesh, boundary_halfedge));
-        for (auto tri : *t) {
-            std::sort(tri.begin(), tri.end());
-            const std::array<std::array<std::size_t, 2>, 3> sides{{{tri[0], tri[1]}, {tri[1], tri[2]}, {tri[0], tri[2]}}};
-            for (const auto& s : sides)
-                if (s[1] != s[0] + 1 && !(s[0] == 0 && s[1] == n - 1) && joined[s[0] * n + s[1]])
-                    return fail(errc::unsupported, "fill_hole: the projected triangulation of a long loop repeats an existing edge",
-                                de::index_of<M, T>(mesh, boundary_halfedge));
-            tris.push_back(tri);
-        }
-        // Ear clipping gives no interval order; rebuild one: the triangle on each interval.
-        std::vector<std::size_t> on(n * n, n);
-        for (const auto& tri : tris) on[tri[0] * n + tri[2]] = tri[1];
-        tris.clear();
-        std::vector<std::array<std::size_t, 2>> stack{{0, n - 1}};
-        while (!stack.empty()) {
-            const auto [i, j] = stack.back();
-            stack.pop_back();
-            const auto m = on[i * n + j];
-            if (m == n) return fail(errc::unsupported, "fill_hole: internal: projected triangulation is not a fan of intervals");
-            tris.push_back({i, m, j});
-            if (m > i + 1) stack.push_back({i, m});
-            if (j > m + 1) stack.push_back({m, j});
-        }
+        auto t = dh::triangulate_by_projection(loop);
+        if (!t) return fail(t.error().code, t.error().message, de::index_of<M, T>(mesh, boundary_halfedge));
+        tris = std::move(*t);
+    }
+    {
+        auto ordered = dh::in_interval_order(n, tris);
+        if (!ordered) return fail(ordered.error().code, ordered.error().message, de::index_of<M, T>(mesh, boundary_halfedge));
+        tris = std::move(*ordered);
     }
 
     // Build: one face over the whole loop, then cut off each interval's sub-loop by a
@@ -245,14 +157,14 @@ template <class M, class T = default_traits<M>>
         H close;
         typename T::face_handle face;
     };
-    std::vector<std::size_t> split_at(n * n, n);
-    for (const auto& t : tris) split_at[t[0] * n + t[2]] = t[1];
+    std::unordered_map<std::uint64_t, std::size_t> split_at;
+    for (const auto& t : tris) split_at[dh::pair_key(t[0], t[2])] = t[1];
     std::vector<piece> todo{{0, n - 1, h[n - 1], g0}};
     while (!todo.empty()) {
         const piece pc = todo.back();
         todo.pop_back();
         out.faces.push_back(pc.face);
-        const auto k = split_at[pc.i * n + pc.j];
+        const auto k = split_at.at(dh::pair_key(pc.i, pc.j));
         H into_k = h[k - 1];  // v[k-1] -> v[k]
         H from_i = h[pc.i];   // v[i] -> v[i+1]
         if (k > pc.i + 1) {   // cut (i, k): e = v[k] -> v[i] closes the sub-piece
