@@ -103,7 +103,8 @@ struct fill_hole_result {
 /// Errors (mesh unchanged): errc::invalid_argument for refine_density or fairing_tolerance not
 /// finite and > 0; errc::invalid_handle; errc::topology when the halfedge has a face,
 /// the loop passes a vertex twice, has fewer than three edges, or every triangulation would
-/// duplicate an existing edge; errc::unsupported when a long loop's projection is not simple.
+/// duplicate an existing edge or make a degenerate triangle; errc::unsupported when a long
+/// loop's projection is not simple.
 /// Complexity: O(n^3) time and O(n^2) memory by the dynamic programme (plus O(n^2) for the
 /// flip pass, typically a few rounds); O(n^2) time, O(n) memory typical for the projected
 /// fallback; plus O(n valence) to find edges the patch must not repeat. Refinement: O(a)
@@ -184,7 +185,9 @@ template <class M, class T = default_traits<M>>
     if (n <= options.max_dynamic_programming_edges) {
         tris = dh::triangulate_by_dynamic_programming(loop);
         if (tris.empty())
-            return fail(errc::topology, "fill_hole: every triangulation of the loop would repeat an edge the mesh already has",
+            return fail(errc::topology,
+                        "fill_hole: every triangulation of the loop would repeat an edge the mesh already has "
+                        "or make a degenerate triangle",
                         de::index_of<M, T>(mesh, boundary_halfedge));
         dh::reduce_area_by_flips(loop, tris);
     } else {
