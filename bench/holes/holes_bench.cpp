@@ -1,9 +1,16 @@
 // Hole filling on the same holes: 40 discs (3 face rings each) cut out of bunny00.off
 // (HMIRA_TEST_DATA/meshes), filled by hmira's fill_hole on halfedge_mesh and on CGAL's
 // Surface_mesh, and by CGAL::Polygon_mesh_processing::triangulate_hole with
-// use_delaunay_triangulation(false) (the same Liepa weights). Counter `area`: total patch area.
+// use_delaunay_triangulation(false) (the same Liepa weights). Counter `area`: total patch area;
+// fill_hole/area_per_hole counts the holes whose hmira patch is larger than CGAL's.
+// refine_fair/*: the same holes triangulated, refined (Liepa, density sqrt 2) and faired as a
+// thin plate, by hmira (uniform Laplacian, conjugate gradients) and by CGAL's
+// triangulate_refine_and_fair_hole (cotangent weights, fairing_continuity 1, Eigen SparseLU).
+// Counters: vertices added, mean patch edge (edges with both faces in a patch) beside the mean
+// loop edge, unfaired patches.
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -18,6 +25,9 @@
 
 #ifdef HMIRA_BENCH_WITH_CGAL
 #include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
+#ifdef HMIRA_BENCH_WITH_EIGEN
+#include <CGAL/Polygon_mesh_processing/fair.h>
+#endif
 #include <CGAL/Simple_cartesian.h>
 #include <hmira/interop/cgal.hpp>
 #endif
@@ -119,6 +129,86 @@ double face_area(const M& m, typename T::face_handle f) {
 }
 
 template <class M, class T = hmira::default_traits<M>>
+double edge_length(const M& m, typename T::halfedge_handle h) {
+    const auto a = T::position(m, T::target(m, h)), b = T::position(m, T::target(m, T::opposite(m, h)));
+    const hmira::vec3<double> d{double(a[0] - b[0]), double(a[1] - b[1]), double(a[2] - b[2])};
+    return std::sqrt(hmira::dot(d, d));
+}
+
+/// Mean length of the edges with both faces among `faces` (each counted from both sides).
+template <class M, class T = hmira::default_traits<M>>
+double patch_mean_edge(const M& m, const std::vector<typename T::face_handle>& faces) {
+    std::vector<char> in(T::face_index_bound(m), 0);
+    for (auto f : faces) in[T::face_index(m, f)] = 1;
+    double sum = 0;
+    std::size_t n = 0;
+    for (auto f : faces) {
+        const auto h0 = T::face_halfedge(m, f);
+        auto x = h0;
+        do {
+            const auto o = T::face(m, T::opposite(m, x));
+            if (o != T::null_face() && in[T::face_index(m, o)]) {
+                sum += edge_length(m, x);
+                ++n;
+            }
+            x = T::next(m, x);
+        } while (x != h0);
+    }
+    return n ? sum / double(n) : 0;
+}
+
+/// Mean length of the loops' edges.
+template <class M, class T = hmira::default_traits<M>>
+double loops_mean_edge(const M& m, const std::vector<typename T::halfedge_handle>& hs) {
+    double sum = 0;
+    std::size_t n = 0;
+    for (auto h : hs) {
+        auto x = h;
+        do {
+            sum += edge_length(m, x);
+            ++n;
+            x = T::next(m, x);
+        } while (x != h);
+    }
+    return n ? sum / double(n) : 0;
+}
+
+template <class M, class T = hmira::default_traits<M>>
+void hmira_refine_fair(benchmark::State& state) {
+    if (holed().points.empty()) {
+        state.SkipWithError("bunny00.off not found (HMIRA_TEST_DATA)");
+        return;
+    }
+    const M base = build<M>();
+    std::size_t vertices = 0, unfaired = 0;
+    double mean_edge = 0, loop_edge = 0;
+    for (auto _ : state) {
+        state.PauseTiming();
+        M m = base;
+        const auto hs = loops(m);
+        loop_edge = loops_mean_edge(m, hs);
+        std::vector<typename T::face_handle> added;
+        vertices = unfaired = 0;
+        state.ResumeTiming();
+        for (auto h : hs) {
+            auto r = hmira::fill_hole(m, h, {.refine = true, .fair = hmira::fairing::thin_plate});
+            if (!r) continue;
+            added.insert(added.end(), r->faces.begin(), r->faces.end());
+            vertices += r->vertices.size();
+            unfaired += r->faired ? 0 : 1;
+        }
+        state.PauseTiming();
+        mean_edge = patch_mean_edge(m, added);
+        state.ResumeTiming();
+    }
+    state.counters["vertices"] = double(vertices);
+    state.counters["mean_edge"] = mean_edge;
+    state.counters["loop_edge"] = loop_edge;
+    state.counters["unfaired"] = double(unfaired);
+}
+BENCHMARK(hmira_refine_fair<hmira::halfedge_mesh>)->Name("refine_fair/hmira/halfedge_mesh")->Unit(benchmark::kMillisecond)->Iterations(3);
+
+template <class M, class T = hmira::default_traits<M>>
 void hmira_fill(benchmark::State& state) {
     if (holed().points.empty()) {
         state.SkipWithError("bunny00.off not found (HMIRA_TEST_DATA)");
@@ -175,6 +265,75 @@ void cgal_fill(benchmark::State& state) {
     state.counters["area"] = area;
 }
 BENCHMARK(cgal_fill)->Name("fill_hole/cgal/triangulate_hole")->Unit(benchmark::kMillisecond)->Iterations(3);
+BENCHMARK(hmira_refine_fair<cgal_mesh>)->Name("refine_fair/hmira/cgal_surface_mesh")->Unit(benchmark::kMillisecond)->Iterations(3);
+
+/// Hole by hole, on copies of the same mesh: how many hmira patches are larger than CGAL's.
+void area_per_hole(benchmark::State& state) {
+    if (holed().points.empty()) {
+        state.SkipWithError("bunny00.off not found (HMIRA_TEST_DATA)");
+        return;
+    }
+    const cgal_mesh base = build<cgal_mesh>();
+    std::size_t larger = 0;
+    double worst = 0;
+    for (auto _ : state) {
+        larger = 0;
+        worst = 0;
+        for (auto h : loops(base)) {
+            cgal_mesh a = base, b = base;
+            std::vector<cgal_mesh::Face_index> fa;
+            CGAL::Polygon_mesh_processing::triangulate_hole(a, h, std::back_inserter(fa),
+                                                            CGAL::parameters::use_delaunay_triangulation(false));
+            auto r = hmira::fill_hole(b, h);
+            double sa = 0, sb = 0;
+            for (auto f : fa) sa += face_area(a, f);
+            if (r)
+                for (auto f : r->faces) sb += face_area(b, f);
+            // The same triangles summed in another order differ by ~1e-16 relative: not larger.
+            if (sb > sa * (1 + 1e-12)) ++larger;
+            worst = std::max(worst, (sb - sa) / sa);
+        }
+    }
+    state.counters["holes_larger"] = double(larger);
+    state.counters["max_relative_excess"] = worst;
+}
+BENCHMARK(area_per_hole)->Name("fill_hole/area_per_hole")->Unit(benchmark::kMillisecond)->Iterations(1);
+
+#ifdef HMIRA_BENCH_WITH_EIGEN
+void cgal_refine_fair(benchmark::State& state) {
+    if (holed().points.empty()) {
+        state.SkipWithError("bunny00.off not found (HMIRA_TEST_DATA)");
+        return;
+    }
+    const cgal_mesh base = build<cgal_mesh>();
+    std::size_t vertices = 0, unfaired = 0;
+    double mean_edge = 0, loop_edge = 0;
+    for (auto _ : state) {
+        state.PauseTiming();
+        cgal_mesh m = base;
+        const auto hs = loops(m);
+        loop_edge = loops_mean_edge(m, hs);
+        std::vector<cgal_mesh::Face_index> added;
+        std::vector<cgal_mesh::Vertex_index> new_vertices;
+        unfaired = 0;
+        state.ResumeTiming();
+        for (auto h : hs) {
+            const auto r = CGAL::Polygon_mesh_processing::triangulate_refine_and_fair_hole(
+                m, h, std::back_inserter(added), std::back_inserter(new_vertices), CGAL::parameters::use_delaunay_triangulation(false));
+            if (!std::get<0>(r)) ++unfaired;
+        }
+        state.PauseTiming();
+        vertices = new_vertices.size();
+        mean_edge = patch_mean_edge(m, added);
+        state.ResumeTiming();
+    }
+    state.counters["vertices"] = double(vertices);
+    state.counters["mean_edge"] = mean_edge;
+    state.counters["loop_edge"] = loop_edge;
+    state.counters["unfaired"] = double(unfaired);
+}
+BENCHMARK(cgal_refine_fair)->Name("refine_fair/cgal/triangulate_refine_and_fair_hole")->Unit(benchmark::kMillisecond)->Iterations(3);
+#endif
 #endif
 
 }  // namespace

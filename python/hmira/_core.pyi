@@ -173,14 +173,14 @@ class MeshCore:
         Triangulates every polygon (inner rings included, robust on concave faces); with delaunay=True each face's diagonals are its constrained Delaunay ones (largest smallest angle). Returns {'faces_cut', 'triangles_added'}.
         """
 
-    def fill_hole(self, boundary_halfedge: int, *, max_dynamic_programming_edges: int = 200) -> list[int]:
+    def fill_hole(self, boundary_halfedge: int, *, max_dynamic_programming_edges: int = 200, refine: bool = False, fair: str = 'none') -> list[int]:
         """
-        Closes the boundary loop of a boundary halfedge with triangles (minimal area, maximal dihedral, Liepa 2003); returns the new faces.
+        Closes the boundary loop of a boundary halfedge with triangles (minimal area, maximal dihedral, Liepa 2003); with refine=True the patch is refined to the edge length around the hole, and fair='membrane' or 'thin-plate' (implies refine) smooths it. Returns the new faces.
         """
 
-    def fill_holes(self, max_size: int, *, max_dynamic_programming_edges: int = 200) -> dict:
+    def fill_holes(self, max_size: int, *, max_dynamic_programming_edges: int = 200, refine: bool = False, fair: str = 'none') -> dict:
         """
-        Fills every hole of at most max_size boundary edges; returns {'filled', 'skipped', 'faces_added'}.
+        Fills every hole of at most max_size boundary edges (refine and fair as for fill_hole); returns {'filled', 'skipped', 'faces_added', 'vertices_added', 'unfaired'}.
         """
 
     def subdivide(self, *, scheme: str = 'loop', levels: int = 1) -> dict:

@@ -383,6 +383,17 @@ hmira::collapse_edge_options collapse_options(const std::string& placement, cons
     return o;
 }
 
+hmira::fill_hole_options fill_options(std::size_t max_dynamic_programming_edges, bool refine, const std::string& fair, const char* who) {
+    hmira::fill_hole_options o;
+    o.max_dynamic_programming_edges = max_dynamic_programming_edges;
+    if (fair == "none") o.fair = hmira::fairing::none;
+    else if (fair == "membrane") o.fair = hmira::fairing::membrane;
+    else if (fair == "thin-plate") o.fair = hmira::fairing::thin_plate;
+    else value_error(std::string(who) + ": fair must be 'none', 'membrane' or 'thin-plate', got '" + fair + "'");
+    o.refine = refine || o.fair != hmira::fairing::none;  // fairing moves the vertices refinement adds
+    return o;
+}
+
 /// Runs a whole-mesh operation on a copy that replaces the mesh on success.
 template <class Op>
 auto on_copy(py_mesh& self, Op&& op) {
@@ -463,25 +474,32 @@ void bind_everyday(nb::class_<py_mesh>& c) {
          }, nb::kw_only(), nb::arg("delaunay") = false,
          "Triangulates every polygon (inner rings included, robust on concave faces); with delaunay=True each face's diagonals "
          "are its constrained Delaunay ones (largest smallest angle). Returns {'faces_cut', 'triangles_added'}.")
-     .def("fill_hole", [](py_mesh& s, long long h, std::size_t max_dynamic_programming_edges) {
+     .def("fill_hole", [](py_mesh& s, long long h, std::size_t max_dynamic_programming_edges, bool refine, const std::string& fair) {
              const auto hh = halfedge_arg(s.get(), h, "fill_hole");
-             const hmira::fill_hole_options o{.max_dynamic_programming_edges = max_dynamic_programming_edges};
+             const auto o = fill_options(max_dynamic_programming_edges, refine, fair, "fill_hole");
              const auto r = change_without_gil(s, true, [&](halfedge_mesh& m, const hmira::progress_function&) { return hmira::fill_hole(m, hh, o); });
              std::vector<long long> faces;
              for (auto f : r.faces) faces.push_back(idx(f));
              return faces;
-         }, nb::arg("boundary_halfedge"), nb::kw_only(), nb::arg("max_dynamic_programming_edges") = 200,
-         "Closes the boundary loop of a boundary halfedge with triangles (minimal area, maximal dihedral, Liepa 2003); returns the new faces.")
-     .def("fill_holes", [](py_mesh& s, std::size_t max_size, std::size_t max_dynamic_programming_edges) {
-             const hmira::fill_hole_options o{.max_dynamic_programming_edges = max_dynamic_programming_edges};
+         }, nb::arg("boundary_halfedge"), nb::kw_only(), nb::arg("max_dynamic_programming_edges") = 200, nb::arg("refine") = false,
+         nb::arg("fair") = "none",
+         "Closes the boundary loop of a boundary halfedge with triangles (minimal area, maximal dihedral, Liepa 2003); with refine=True "
+         "the patch is refined to the edge length around the hole, and fair='membrane' or 'thin-plate' (implies refine) smooths it. "
+         "Returns the new faces.")
+     .def("fill_holes", [](py_mesh& s, std::size_t max_size, std::size_t max_dynamic_programming_edges, bool refine, const std::string& fair) {
+             const auto o = fill_options(max_dynamic_programming_edges, refine, fair, "fill_holes");
              const auto r = on_copy(s, [&](halfedge_mesh& m) { return hmira::fill_holes(m, max_size, o); });
              nb::dict d;
              d["filled"] = r.filled;
              d["skipped"] = r.skipped;
              d["faces_added"] = r.faces_added;
+             d["vertices_added"] = r.vertices_added;
+             d["unfaired"] = r.unfaired;
              return d;
-         }, nb::arg("max_size"), nb::kw_only(), nb::arg("max_dynamic_programming_edges") = 200,
-         "Fills every hole of at most max_size boundary edges; returns {'filled', 'skipped', 'faces_added'}.")
+         }, nb::arg("max_size"), nb::kw_only(), nb::arg("max_dynamic_programming_edges") = 200, nb::arg("refine") = false,
+         nb::arg("fair") = "none",
+         "Fills every hole of at most max_size boundary edges (refine and fair as for fill_hole); returns {'filled', 'skipped', "
+         "'faces_added', 'vertices_added', 'unfaired'}.")
      .def("subdivide", [](py_mesh& s, const std::string& scheme, std::size_t levels) {
              if (scheme == "sqrt3")
                  value_error("subdivide: scheme 'sqrt3' is not supported yet (supported: 'loop', 'catmull-clark')");

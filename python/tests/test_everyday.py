@@ -188,6 +188,24 @@ def test_fill_holes_refuses_a_bad_size_and_changes_nothing():
     assert state(m) == before
 
 
+def test_fill_holes_refined_and_faired_matches_the_cli(data, cli, tmp_path):
+    path = data / "meshes" / "elephant-with-holes.off"
+    if not path.exists():
+        pytest.skip("elephant-with-holes.off not in the test data")
+    m = hmira.read_mesh(path)
+    loops = m.topology().boundary_loops
+    r = m.fill_holes(1000, fair="thin-plate")
+    assert r["filled"] == loops and r["vertices_added"] > 0 and r["unfaired"] == 0
+    assert m.topology().boundary_loops == 0
+    out = tmp_path / "faired.off"
+    run_cli(cli, "fill-holes", path, out, "--max-edges", 1000, "--fair", "thin-plate")
+    assert same_mesh(state(m), state(hmira.read_mesh(out)))
+    before = state(m)
+    with pytest.raises(ValueError, match="fair must be"):
+        m.fill_holes(1000, fair="soap")
+    assert state(m) == before
+
+
 def test_triangulate_faces_on_a_real_mesh_matches_the_cli(data, cli, tmp_path):
     path = data / "meshes" / "corner_poly.off"
     if not path.exists():

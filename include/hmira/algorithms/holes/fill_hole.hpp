@@ -8,6 +8,8 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <optional>
+#include <unordered_map>
 #include <string>
 #include <vector>
 
@@ -15,69 +17,99 @@
 #include "../../core/result.hpp"
 #include "../../core/vec3.hpp"
 #include "../triangle/triangle_common.hpp"
-#include "../triangulation/triangulate_polygon.hpp"
+#include "detail/loop_triangulation.hpp"
+#include "detail/refine_and_fair.hpp"
 
 namespace hmira {
 
-/// How fill_hole triangulates a loop.
+/// What fill_hole does to the patch's shape after triangulating the loop.
+enum class fairing {
+    none,        ///< keep the vertices where refinement put them
+    membrane,    ///< uniform Laplacian = 0 at each added vertex: a minimal-area-like patch
+    thin_plate,  ///< Laplacian of the Laplacian = 0: a patch that continues the surface's slope
+};
+
+/// How fill_hole triangulates, refines and fairs a loop. The defaults triangulate only.
 struct fill_hole_options {
     /// Loops of at most this many edges get Liepa's O(n^3) dynamic programme; longer ones the
     /// O(n^2) triangulation of the loop projected on its best-fit plane (refused when that
     /// projection is not a simple polygon).
     std::size_t max_dynamic_programming_edges = 200;
+    /// Refine the patch to the edge density around the hole (Liepa 2003): triangles are split
+    /// at their centroid and edges flipped, by split_face and flip_edge, until the patch's edges
+    /// are about as long as the mesh edges at the loop.
+    bool refine = false;
+    /// Liepa's density factor alpha (> 0): a triangle is split while its centroid lies farther
+    /// than scale / alpha from its corners. Larger gives a denser patch.
+    double refine_density = 1.4142135623730951;
+    /// Refinement adds at most this many vertices per hole.
+    std::size_t max_added_vertices = 100000;
+    /// Fairing of the vertices refinement added (no effect without `refine`).
+    fairing fair = fairing::none;
+    /// The fairing solve stops at this relative residual (> 0).
+    double fairing_tolerance = 1e-10;
+    /// The fairing solve gives up after this many conjugate-gradient iterations per
+    /// coordinate; 0 means 10 x the number of added vertices + 100.
+    std::size_t max_fairing_iterations = 0;
 };
+
+namespace detail::holes {
+inline std::optional<hmira::error> check_options(const fill_hole_options& o, const std::string& who) {
+    if (!(o.refine_density > 0) || !std::isfinite(o.refine_density))
+        return fail(errc::invalid_argument, who + ": option refine_density must be finite and > 0");
+    if (!(o.fairing_tolerance > 0) || !std::isfinite(o.fairing_tolerance))
+        return fail(errc::invalid_argument, who + ": option fairing_tolerance must be finite and > 0");
+    return std::nullopt;
+}
+}  // namespace detail::holes
 
 /// What fill_hole added.
 template <class M, class T = default_traits<M>>
 struct fill_hole_result {
-    std::vector<typename T::face_handle> faces;  ///< the patch's triangles (loop edges - 2 of them)
+    std::vector<typename T::face_handle> faces;       ///< the patch's triangles
+    std::vector<typename T::vertex_handle> vertices;  ///< the vertices refinement added (inside the patch)
+    /// Whether the fairing solve converged (true when no fairing was asked for or there was
+    /// nothing to fair). When false the added vertices stay where refinement put them.
+    bool faired = true;
+    std::size_t fairing_iterations = 0;  ///< conjugate-gradient iterations of the slowest coordinate
 };
-
-namespace detail::holes {
-
-inline vec3<double> unit_normal(const vec3<double>& a, const vec3<double>& b, const vec3<double>& c) {
-    const auto n = cross(b - a, c - a);
-    const double l = std::sqrt(dot(n, n));
-    return l > 0 ? n / l : vec3<double>{};
-}
-inline double area(const vec3<double>& a, const vec3<double>& b, const vec3<double>& c) {
-    const auto n = cross(b - a, c - a);
-    return 0.5 * std::sqrt(dot(n, n));
-}
-/// 1 - cos of the angle between two unit normals: 0 flat, 2 folded back. Monotone in the angle.
-inline double bend(const vec3<double>& n, const vec3<double>& m) {
-    if (dot(n, n) == 0 || dot(m, m) == 0) return 0;
-    return 1 - dot(n, m);
-}
-
-/// Liepa's weight: the largest bend first, then the area.
-struct weight {
-    double bend = 0, area = 0;
-    bool operator<(const weight& o) const {
-        // Bends equal within rounding compare by area, so flat holes get the smallest patch.
-        if (std::fabs(bend - o.bend) > 1e-12) return bend < o.bend;
-        return area < o.area;
-    }
-};
-
-}  // namespace detail::holes
 
 /// Fills the boundary loop of `boundary_halfedge` (a halfedge with no face) with triangles.
 ///
 /// Loops of up to `options.max_dynamic_programming_edges` edges are triangulated by Liepa's
-/// dynamic programme: among all triangulations of the loop that add no edge the mesh already
-/// has, the one whose largest dihedral bend (between patch triangles and with the faces
-/// around the loop) is smallest, then whose area is smallest. Longer loops are triangulated
-/// in the plane of their Newell normal (triangulate_polygon), which must see them as a simple
+/// dynamic programme: among the triangulations of the loop that add no edge the mesh already
+/// has and no degenerate triangle, the one whose largest dihedral bend (between patch triangles
+/// and with the faces around the loop) is smallest, then whose area is smallest. Like Liepa's
+/// and CGAL's, the programme takes the bend across an inner edge against the best solution of
+/// the inner sub-loop, a greedy choice; a pass of edge flips then lowers the area wherever that
+/// bends no edge more than the patch's largest bend. The loop starts at the target of
+/// `boundary_halfedge`, as in CGAL's triangulate_hole. Longer loops are triangulated in the
+/// plane of their Newell normal (triangulate_polygon), which must see them as a simple
 /// polygon. New faces are wound like the faces around the hole.
 ///
+/// With `options.refine`, the patch is then refined as in Liepa 2003: each loop vertex gets
+/// the mean length of its edges as its scale; a patch triangle whose centroid lies farther than
+/// scale / refine_density from each corner (for the corner's scale and for the centroid's, the
+/// corners' mean) is split there by split_face, and patch edges whose two facing angles sum to
+/// more than pi are flipped by flip_edge, until no triangle splits. With `options.fair` the
+/// added vertices are then moved so that the uniform Laplacian (membrane) or its square (thin
+/// plate) vanishes at each of them, the loop (and for the thin plate the ring outside it) held
+/// fixed, by a Jacobi-preconditioned conjugate-gradient solve. If that solve does not converge,
+/// no vertex moves and `faired` is false: the patch stays as refined, closed and valid.
+///
 /// \pre the mesh is a valid surface; the loop visits each vertex once.
-/// \post the loop is closed: E + (n - 3), F + (n - 2), V unchanged; genus unchanged.
-/// Errors (mesh unchanged): errc::invalid_handle; errc::topology when the halfedge has a face,
+/// \post the loop is closed: V + a, E + (n - 3) + 3a, F + (n - 2) + 2a for a added vertices
+/// (a = 0 without refine); genus unchanged; the loop's vertices do not move.
+/// Errors (mesh unchanged): errc::invalid_argument for refine_density or fairing_tolerance not
+/// finite and > 0; errc::invalid_handle; errc::topology when the halfedge has a face,
 /// the loop passes a vertex twice, has fewer than three edges, or every triangulation would
-/// duplicate an existing edge; errc::unsupported when a long loop's projection is not simple.
-/// Complexity: O(n^3) time and O(n^2) memory by the dynamic programme; O(n^2) typical for
-/// the projected fallback; plus O(n^2 valence) to find edges the patch must not repeat.
+/// duplicate an existing edge or make a degenerate triangle; errc::unsupported when a long
+/// loop's projection is not simple.
+/// Complexity: O(n^3) time and O(n^2) memory by the dynamic programme (plus O(n^2) for the
+/// flip pass, typically a few rounds); O(n^2) time, O(n) memory typical for the projected
+/// fallback; plus O(n valence) to find edges the patch must not repeat. Refinement: O(a)
+/// splits and flips per round, typically a few rounds; fairing O(iterations * a * valence^2),
+/// iterations at most `max_fairing_iterations`.
 template <class M, class T = default_traits<M>>
     requires triangle_operable_mesh<M, T>
 [[nodiscard]] result<fill_hole_result<M, T>> fill_hole(M& mesh, typename T::halfedge_handle boundary_halfedge,
@@ -87,6 +119,7 @@ template <class M, class T = default_traits<M>>
     namespace dh = detail::holes;
     using H = typename T::halfedge_handle;
     using V = typename T::vertex_handle;
+    if (auto bad = dh::check_options(options, "fill_hole")) return *bad;
     if (!de::usable<M, T>(mesh, boundary_halfedge))
         return fail(errc::invalid_handle, "fill_hole: " + de::name<M, T>("halfedge", mesh, boundary_halfedge) + " does not exist",
                     de::index_of<M, T>(mesh, boundary_halfedge));
@@ -97,12 +130,15 @@ template <class M, class T = default_traits<M>>
     std::vector<H> h;
     std::vector<V> v;
     {
-        auto x = boundary_halfedge;
+        // The loop starts at the halfedge's target, as CGAL's does: the programme's greedy
+        // bend term makes the result depend on where the loop starts.
+        const auto first = T::next(mesh, boundary_halfedge);
+        auto x = first;
         do {
             h.push_back(x);
             v.push_back(T::target(mesh, T::opposite(mesh, x)));
             x = T::next(mesh, x);
-        } while (x != boundary_halfedge);
+        } while (x != first);
     }
     const std::size_t n = h.size();
     if (n < 3) return fail(errc::topology, "fill_hole: the loop has fewer than three edges", de::index_of<M, T>(mesh, boundary_halfedge));
@@ -114,122 +150,70 @@ template <class M, class T = default_traits<M>>
                 return fail(errc::topology, "fill_hole: the loop passes " + de::name<M, T>("vertex", mesh, sorted[i]) + " twice",
                             de::index_of<M, T>(mesh, sorted[i]));
     }
-    std::vector<vec3<double>> p(n);
-    for (std::size_t i = 0; i < n; ++i) p[i] = dt::position_of<M, T>(mesh, v[i]);
-    for (const auto& q : p)
+    dh::loop_data loop;
+    loop.p.resize(n);
+    for (std::size_t i = 0; i < n; ++i) loop.p[i] = dt::position_of<M, T>(mesh, v[i]);
+    for (const auto& q : loop.p)
         if (!dt::finite(q)) return fail(errc::invalid_argument, "fill_hole: a loop vertex is not finite", de::index_of<M, T>(mesh, boundary_halfedge));
-    // Pairs already joined by an edge (other than along the loop) cannot be diagonals.
-    std::vector<char> joined(n * n, 0);
-    for (std::size_t i = 0; i < n; ++i) {
-        const auto s = T::vertex_halfedge(mesh, v[i]);
-        auto x = s;
-        do {
-            const auto w = T::target(mesh, x);
-            for (std::size_t j = 0; j < n; ++j)
-                if (v[j] == w) joined[i * n + j] = 1;
-            x = T::next(mesh, T::opposite(mesh, x));
-        } while (x != s);
+    {
+        // Pairs already joined by an edge (other than along the loop) cannot be diagonals.
+        std::unordered_map<std::size_t, std::size_t> position_in_loop;
+        for (std::size_t i = 0; i < n; ++i) position_in_loop.emplace(T::vertex_index(mesh, v[i]), i);
+        loop.joined.resize(n);
+        for (std::size_t i = 0; i < n; ++i) {
+            const auto s = T::vertex_halfedge(mesh, v[i]);
+            auto x = s;
+            do {
+                const auto it = position_in_loop.find(T::vertex_index(mesh, T::target(mesh, x)));
+                if (it != position_in_loop.end()) loop.joined[i].push_back(it->second);
+                x = T::next(mesh, T::opposite(mesh, x));
+            } while (x != s);
+            std::sort(loop.joined[i].begin(), loop.joined[i].end());
+        }
     }
     // Normal of the face across loop edge (i, i + 1), for the bend at the patch's rim.
-    std::vector<vec3<double>> rim(n);
+    loop.rim.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
         const auto o = T::opposite(mesh, h[i]);
-        rim[i] = dh::unit_normal(dt::position_of<M, T>(mesh, T::target(mesh, T::opposite(mesh, o))),
-                                 dt::position_of<M, T>(mesh, T::target(mesh, o)),
-                                 dt::position_of<M, T>(mesh, T::target(mesh, T::next(mesh, o))));
+        loop.rim[i] = dh::unit_normal(dt::position_of<M, T>(mesh, T::target(mesh, T::opposite(mesh, o))),
+                                      dt::position_of<M, T>(mesh, T::target(mesh, o)),
+                                      dt::position_of<M, T>(mesh, T::target(mesh, T::next(mesh, o))));
     }
 
     // triangles (i, k, j) in loop order, i < k < j.
-    std::vector<std::array<std::size_t, 3>> tris;
+    dh::triangle_list tris;
     if (n <= options.max_dynamic_programming_edges) {
-        const double inf = std::numeric_limits<double>::infinity();
-        std::vector<dh::weight> W(n * n, dh::weight{inf, inf});
-        std::vector<std::size_t> K(n * n, n);
-        for (std::size_t i = 0; i + 1 < n; ++i) W[i * n + i + 1] = {0, 0};
-        // Normal of the triangle that the best solution of (i, j) puts on edge (i, j).
-        auto inner_normal = [&](std::size_t i, std::size_t j) {
-            if (j == i + 1) return rim[i];
-            const auto k = K[i * n + j];
-            return dh::unit_normal(p[i], p[k], p[j]);
-        };
-        for (std::size_t len = 2; len < n; ++len)
-            for (std::size_t i = 0; i + len < n; ++i) {
-                const std::size_t j = i + len;
-                // (i, j) becomes an edge: not allowed if the mesh has it already (except the
-                // loop's own closing edge (0, n-1)).
-                if (!(i == 0 && j == n - 1) && joined[i * n + j]) continue;
-                dh::weight best{inf, inf};
-                std::size_t best_k = n;
-                for (std::size_t k = i + 1; k < j; ++k) {
-                    const auto& a = W[i * n + k];
-                    const auto& b = W[k * n + j];
-                    if (a.bend == inf || b.bend == inf) continue;
-                    const auto nk = dh::unit_normal(p[i], p[k], p[j]);
-                    double bend = std::max(a.bend, b.bend);
-                    bend = std::max(bend, dh::bend(nk, inner_normal(i, k)));
-                    bend = std::max(bend, dh::bend(nk, inner_normal(k, j)));
-                    if (i == 0 && j == n - 1) bend = std::max(bend, dh::bend(nk, rim[n - 1]));
-                    const dh::weight w{bend, a.area + b.area + dh::area(p[i], p[k], p[j])};
-                    if (w < best) {
-                        best = w;
-                        best_k = k;
-                    }
-                }
-                W[i * n + j] = best;
-                K[i * n + j] = best_k;
-            }
-        if (K[n - 1] == n)
-            return fail(errc::topology, "fill_hole: every triangulation of the loop would repeat an edge the mesh already has",
+        tris = dh::triangulate_by_dynamic_programming(loop);
+        if (tris.empty())
+            return fail(errc::topology,
+                        "fill_hole: every triangulation of the loop would repeat an edge the mesh already has "
+                        "or make a degenerate triangle",
                         de::index_of<M, T>(mesh, boundary_halfedge));
-        std::vector<std::array<std::size_t, 2>> stack{{0, n - 1}};
-        while (!stack.empty()) {
-            const auto [i, j] = stack.back();
-            stack.pop_back();
-            const auto k = K[i * n + j];
-            tris.push_back({i, k, j});
-            if (k > i + 1) stack.push_back({i, k});
-            if (j > k + 1) stack.push_back({k, j});
-        }
+        dh::reduce_area_by_flips(loop, tris);
     } else {
-        // Project on the loop's Newell plane; the loop runs against the patch's winding.
-        vec3<double> nn{};
-        for (std::size_t i = 0; i < n; ++i) nn += cross(p[i], p[(i + 1) % n]);
-        const double ax = std::fabs(nn.x), ay = std::fabs(nn.y), az = std::fabs(nn.z);
-        const int k = ax >= ay && ax >= az ? 0 : (ay >= az ? 1 : 2);
-        int u = (k + 1) % 3, w = (k + 2) % 3;
-        if (nn[std::size_t(k)] < 0) std::swap(u, w);
-        std::vector<point2> pts(n);
-        for (std::size_t i = 0; i < n; ++i) pts[i] = {p[i][std::size_t(u)], p[i][std::size_t(w)]};
-        std::vector<std::vector<std::size_t>> loops(1);
-        for (std::size_t i = 0; i < n; ++i) loops[0].push_back(i);
-        auto t = triangulate_polygon(pts, loops);
-        if (!t)
-            return fail(errc::unsupported, "fill_hole: a loop of " + std::to_string(n) +
-                                               " edges is too long for the dynamic programme and its projection is not simple: " + t.error().message,
-                        de::index_of<M, T>(mesh, boundary_halfedge));
-        for (auto tri : *t) {
-            std::sort(tri.begin(), tri.end());
-            const std::array<std::array<std::size_t, 2>, 3> sides{{{tri[0], tri[1]}, {tri[1], tri[2]}, {tri[0], tri[2]}}};
-            for (const auto& s : sides)
-                if (s[1] != s[0] + 1 && !(s[0] == 0 && s[1] == n - 1) && joined[s[0] * n + s[1]])
-                    return fail(errc::unsupported, "fill_hole: the projected triangulation of a long loop repeats an existing edge",
-                                de::index_of<M, T>(mesh, boundary_halfedge));
-            tris.push_back(tri);
-        }
-        // Ear clipping gives no interval order; rebuild one: the triangle on each interval.
-        std::vector<std::size_t> on(n * n, n);
-        for (const auto& tri : tris) on[tri[0] * n + tri[2]] = tri[1];
-        tris.clear();
-        std::vector<std::array<std::size_t, 2>> stack{{0, n - 1}};
-        while (!stack.empty()) {
-            const auto [i, j] = stack.back();
-            stack.pop_back();
-            const auto m = on[i * n + j];
-            if (m == n) return fail(errc::unsupported, "fill_hole: internal: projected triangulation is not a fan of intervals");
-            tris.push_back({i, m, j});
-            if (m > i + 1) stack.push_back({i, m});
-            if (j > m + 1) stack.push_back({m, j});
-        }
+        auto t = dh::triangulate_by_projection(loop);
+        if (!t) return fail(t.error().code, t.error().message, de::index_of<M, T>(mesh, boundary_halfedge));
+        tris = std::move(*t);
+    }
+    {
+        auto ordered = dh::in_interval_order(n, tris);
+        if (!ordered) return fail(ordered.error().code, ordered.error().message, de::index_of<M, T>(mesh, boundary_halfedge));
+        tris = std::move(*ordered);
+    }
+
+    // Liepa's scale of a loop vertex: the mean length of its edges, before the patch adds any.
+    std::vector<double> scale(options.refine ? n : 0, 0.0);
+    for (std::size_t i = 0; i < scale.size(); ++i) {
+        const auto s0 = T::vertex_halfedge(mesh, v[i]);
+        auto x = s0;
+        std::size_t edges = 0;
+        do {
+            const auto d = dt::position_of<M, T>(mesh, T::target(mesh, x)) - loop.p[i];
+            scale[i] += std::sqrt(dot(d, d));
+            ++edges;
+            x = T::next(mesh, T::opposite(mesh, x));
+        } while (x != s0);
+        scale[i] /= double(edges);
     }
 
     // Build: one face over the whole loop, then cut off each interval's sub-loop by a
@@ -245,14 +229,14 @@ template <class M, class T = default_traits<M>>
         H close;
         typename T::face_handle face;
     };
-    std::vector<std::size_t> split_at(n * n, n);
-    for (const auto& t : tris) split_at[t[0] * n + t[2]] = t[1];
+    std::unordered_map<std::uint64_t, std::size_t> split_at;
+    for (const auto& t : tris) split_at[dh::pair_key(t[0], t[2])] = t[1];
     std::vector<piece> todo{{0, n - 1, h[n - 1], g0}};
     while (!todo.empty()) {
         const piece pc = todo.back();
         todo.pop_back();
         out.faces.push_back(pc.face);
-        const auto k = split_at[pc.i * n + pc.j];
+        const auto k = split_at.at(dh::pair_key(pc.i, pc.j));
         H into_k = h[k - 1];  // v[k-1] -> v[k]
         H from_i = h[pc.i];   // v[i] -> v[i+1]
         if (k > pc.i + 1) {   // cut (i, k): e = v[k] -> v[i] closes the sub-piece
@@ -291,6 +275,26 @@ template <class M, class T = default_traits<M>>
     }
     // The loop's vertices stored boundary halfedges that now have a face.
     for (std::size_t i = 0; i < n; ++i) dt::refresh_vertex_halfedge<M, T>(mesh, v[i], h[i]);
+    if (!options.refine) return out;
+
+    dh::patch<M, T> pt;
+    pt.faces = std::move(out.faces);
+    for (std::size_t i = 0; i < n; ++i) pt.scale[T::vertex_index(mesh, v[i])] = scale[i];
+    for (const auto& t : tris) {
+        if (t[1] != t[0] + 1) pt.inner_edges.insert(dh::edge_key<M, T>(mesh, v[t[0]], v[t[1]]));
+        if (t[2] != t[1] + 1) pt.inner_edges.insert(dh::edge_key<M, T>(mesh, v[t[1]], v[t[2]]));
+    }
+    dh::refine_patch<M, T>(mesh, pt, options.refine_density, options.max_added_vertices);
+    out.faces = std::move(pt.faces);
+    if (options.fair != fairing::none) {
+        const std::size_t budget = options.max_fairing_iterations > 0 ? options.max_fairing_iterations : 10 * pt.vertices.size() + 100;
+        const auto solved = dh::fair_patch<M, T>(mesh, pt,
+                                                 options.fair == fairing::membrane ? dh::fairing_energy::membrane : dh::fairing_energy::thin_plate,
+                                                 options.fairing_tolerance, budget);
+        out.faired = solved.converged;
+        out.fairing_iterations = solved.iterations;
+    }
+    out.vertices = std::move(pt.vertices);
     return out;
 }
 
@@ -298,7 +302,9 @@ template <class M, class T = default_traits<M>>
 struct fill_holes_result {
     std::size_t filled = 0;       ///< loops closed
     std::size_t skipped = 0;      ///< loops longer than max_size, or refused by fill_hole
-    std::size_t faces_added = 0;  ///< triangles in all patches
+    std::size_t faces_added = 0;     ///< triangles in all patches
+    std::size_t vertices_added = 0;  ///< vertices refinement added in all patches
+    std::size_t unfaired = 0;        ///< patches whose fairing solve did not converge (left as refined)
 };
 
 /// A mesh fill_holes can run on: the triangle operators, and halfedge indices to mark the
@@ -308,12 +314,13 @@ concept hole_fillable_mesh = triangle_operable_mesh<M, T> && halfedge_index_mesh
 
 /// Fills every boundary loop of at most `max_size` edges with fill_hole. A loop that fill_hole
 /// refuses is left open and counted in `skipped` (each refusal leaves the mesh unchanged).
-/// Errors: errc::invalid_argument for max_size < 3.
+/// Errors: errc::invalid_argument for max_size < 3 or an option out of range (mesh unchanged).
 /// Complexity: O(H) to find the loops, H the halfedges, plus fill_hole's cost per loop.
 template <class M, class T = default_traits<M>>
     requires hole_fillable_mesh<M, T>
 [[nodiscard]] result<fill_holes_result> fill_holes(M& mesh, std::size_t max_size, const fill_hole_options& options = {}) {
     if (max_size < 3) return fail(errc::invalid_argument, "fill_holes: option max_size must be at least 3, got " + std::to_string(max_size));
+    if (auto bad = detail::holes::check_options(options, "fill_holes")) return *bad;
     using H = typename T::halfedge_handle;
     std::vector<H> loops;
     std::vector<std::size_t> sizes;
@@ -344,6 +351,8 @@ template <class M, class T = default_traits<M>>
         }
         ++out.filled;
         out.faces_added += r->faces.size();
+        out.vertices_added += r->vertices.size();
+        if (!r->faired) ++out.unfaired;
     }
     return out;
 }
