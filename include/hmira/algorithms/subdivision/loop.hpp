@@ -51,7 +51,7 @@ inline double loop_beta(std::size_t n) {
 }
 
 /// The per-level arrays, sized once for the largest level so that no level allocates after
-/// the mesh starts changing (29 bytes an old vertex, 5 an old edge, 16 an old face). The edge
+/// the mesh starts changing (29 bytes an old vertex, 4 an old edge, 16 an old face). The edge
 /// points go straight into the new vertices, made before the splits: at a million faces,
 /// first touching fresh pages costs as much as the arithmetic, so nothing is stored twice.
 template <class M, class T>
@@ -59,36 +59,33 @@ struct loop_workspace {
     std::vector<vec3<double>> vertex_point;  // first the sums of neighbours, then the new positions
     std::vector<std::uint32_t> valence;
     std::vector<std::uint8_t> boundary_edges;              // saturates at 3
-    std::vector<typename T::vertex_handle> edge_vertex;    // by old edge index: its new vertex
-    std::vector<std::uint8_t> edge_split;                  // by old edge index: split already
+    std::vector<typename T::vertex_handle> edge_vertex;  // by old edge index: its new vertex, null once split
     struct triangle {
-        std::array<typename T::halfedge_handle, 3> halfedges;
-        std::size_t face;  // its index
+        std::array<typename T::halfedge_handle, 3> halfedges;  // null for a deleted face
+        typename T::halfedge_handle old_corner_cut;            // see loop_level
     };
-    std::vector<triangle> triangles;  // the old faces
-    std::vector<typename T::halfedge_handle> old_corner_cut;  // by old face index, see loop_level
+    std::vector<triangle> triangles;  // by old face index
 
     void reserve(std::size_t vertex_bound, std::size_t edge_bound, std::size_t face_bound) {
         vertex_point.reserve(vertex_bound);
         valence.reserve(vertex_bound);
         boundary_edges.reserve(vertex_bound);
         edge_vertex.reserve(edge_bound);
-        edge_split.reserve(edge_bound);
         triangles.reserve(face_bound);
-        old_corner_cut.reserve(face_bound);
     }
 };
 
-/// Gathers the halfedges of every face into `w.triangles`; returns the index of the first
-/// face that is not a triangle without rings, or -1. Changes nothing in the mesh. O(F).
+/// Gathers the halfedges of every face into `w.triangles`, by face index; returns the index
+/// of the first face that is not a triangle without rings, or -1. Changes nothing in the
+/// mesh. O(F).
 template <class M, class T>
 long long gather_triangles(const M& mesh, loop_workspace<M, T>& w) {
     using H = typename T::halfedge_handle;
-    w.triangles.clear();
+    w.triangles.assign(T::face_index_bound(mesh), {{H{}, H{}, H{}}, T::null_halfedge()});
     for (auto f : T::faces(mesh)) {
         const H h0 = T::face_halfedge(mesh, f), h1 = T::next(mesh, h0), h2 = T::next(mesh, h1);
         if (T::next(mesh, h2) != h0 || detail::euler::has_rings<M, T>(mesh, f)) return (long long)T::face_index(mesh, f);
-        w.triangles.push_back({{h0, h1, h2}, std::size_t(T::face_index(mesh, f))});
+        w.triangles[T::face_index(mesh, f)].halfedges = {h0, h1, h2};
     }
     return -1;
 }
@@ -106,8 +103,6 @@ void loop_level(M& mesh, loop_workspace<M, T>& w) {
     w.valence.assign(vertex_bound, 0);
     w.boundary_edges.assign(vertex_bound, 0);
     w.edge_vertex.assign(edge_bound, typename T::vertex_handle{});
-    w.edge_split.assign(edge_bound, 0);
-    w.old_corner_cut.assign(T::face_index_bound(mesh), T::null_halfedge());
     auto& sum = w.vertex_point;
 
     // Edge points (3/8 of each end and 1/8 of each opposite corner; the midpoint on a
@@ -168,35 +163,38 @@ void loop_level(M& mesh, loop_workspace<M, T>& w) {
     // and not yet joined, so is_flip_ok holds and the flip's own checks are skipped.
     const auto split = [&](H h) {
         const std::size_t e = T::edge_index(mesh, T::edge(mesh, h));
-        if (w.edge_split[e]) return;
-        w.edge_split[e] = 1;
+        const auto v = w.edge_vertex[e];
+        if (v == typename T::vertex_handle{}) return;  // split already
+        w.edge_vertex[e] = typename T::vertex_handle{};
         const H o = T::opposite(mesh, h);
         const auto fh = T::face(mesh, h), fo = T::face(mesh, o);
         const bool h_side = fh != T::null_face(), o_side = fo != T::null_face() && fo != fh;
-        const H h2 = dt::split_links<M, T>(mesh, h, w.edge_vertex[e], h_side, o_side);
+        const H h2 = dt::split_links<M, T>(mesh, h, v, h_side, o_side);
         if (h_side) {
             const H cut = T::next(mesh, h);
-            if (is_old(T::target(mesh, cut))) w.old_corner_cut[T::face_index(mesh, fh)] = cut;
+            if (is_old(T::target(mesh, cut))) w.triangles[T::face_index(mesh, fh)].old_corner_cut = cut;
         }
         if (o_side) {
             const H cut = T::next(mesh, T::opposite(mesh, h2));
-            if (is_old(T::target(mesh, cut))) w.old_corner_cut[T::face_index(mesh, fo)] = cut;
+            if (is_old(T::target(mesh, cut))) w.triangles[T::face_index(mesh, fo)].old_corner_cut = cut;
         }
     };
-    for (const auto& [t, f] : w.triangles) {
+    for (const auto& triangle : w.triangles) {
+        const auto& t = triangle.halfedges;
+        if (t[0] == H{}) continue;  // a deleted face
         split(t[0]);
         split(t[1]);
         split(t[2]);
-        const H cut = w.old_corner_cut[f];
+        const H cut = triangle.old_corner_cut;
         assert((is_flip_ok<M, T>(mesh, cut)));
         dt::flip_links<M, T>(mesh, cut);
     }
     // Edges without a face on either side just gain their vertex.
     for (auto e : T::edges(mesh)) {
         const std::size_t i = T::edge_index(mesh, e);
-        if (i < edge_bound && !w.edge_split[i]) {
-            w.edge_split[i] = 1;
+        if (i < edge_bound && w.edge_vertex[i] != typename T::vertex_handle{}) {
             (void)dt::split_links<M, T>(mesh, T::edge_halfedge(mesh, e), w.edge_vertex[i], false, false);
+            w.edge_vertex[i] = typename T::vertex_handle{};
         }
     }
     for (auto v : T::vertices(mesh)) {
@@ -246,7 +244,7 @@ template <class M, class T = default_traits<M>>
         overflow = overflow || 2 * e >= (std::uint64_t(1) << 31);
     }
     ds::loop_workspace<M, T> work;
-    if (!overflow) work.triangles.reserve(std::size_t(largest_f));
+    if (!overflow) work.triangles.reserve(T::face_index_bound(mesh) + std::size_t(largest_f - f0));
     if (const long long bad = ds::gather_triangles<M, T>(mesh, work); bad >= 0)
         return fail(errc::topology, "loop_subdivide: face " + std::to_string(bad) + " is not a triangle (triangulate_faces first)", bad);
     if (overflow)
