@@ -9,7 +9,12 @@
 // level takes a fraction of a second to seconds) and is repeated 3 times. After the run the
 // medians are compared: hmira on halfedge_mesh / each peer (target <= 0.5), and hmira generic
 // on OpenMesh and CGAL / hmira on halfedge_mesh (target <= 1.1). Run single-threaded.
+// Each case also reports its user CPU time and the fresh memory it touched (minor page faults,
+// in MB): at a million faces the kernel's zeroing of the output's fresh pages (system time) is
+// a large share of the CPU time and depends on the output's size alone, so the summary gives
+// the ratios of user time as well.
 #include <benchmark/benchmark.h>
+#include <sys/resource.h>
 
 #include <algorithm>
 #include <cmath>
@@ -17,6 +22,7 @@
 #include <map>
 #include <numbers>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include <hmira/algorithms/subdivision/catmull_clark.hpp>
@@ -42,6 +48,38 @@ namespace {
 using hmira_bench::build;
 using hmira_bench::soup;
 
+/// Each case's single-run user CPU times, by name, for the summary.
+std::map<std::string, std::vector<double>>& user_seconds_by_case() {
+    static std::map<std::string, std::vector<double>> s;
+    return s;
+}
+
+/// Runs f (the timed part) and records its user CPU time and fresh memory touched.
+template <class F>
+void measured(benchmark::State& state, const std::string& name, F&& f) {
+    rusage before{}, after{};
+    getrusage(RUSAGE_SELF, &before);
+    f();
+    getrusage(RUSAGE_SELF, &after);
+    const double user = double(after.ru_utime.tv_sec - before.ru_utime.tv_sec) + 1e-6 * double(after.ru_utime.tv_usec - before.ru_utime.tv_usec);
+    user_seconds_by_case()[name].push_back(user);
+    state.counters["user_ms"] = user * 1e3;
+    state.counters["fresh_MB"] = double(after.ru_minflt - before.ru_minflt) * 4096.0 / 1e6;
+}
+
+/// Registers a case under its name, which it also receives, one iteration per repetition.
+int add_case(const char* name, void (*run)(benchmark::State&, const char*)) {
+    benchmark::RegisterBenchmark(name, run, name)->Unit(benchmark::kMillisecond)->Iterations(1);
+    return 0;
+}
+
+double median_user(const std::string& name) {
+    auto v = user_seconds_by_case()[name];
+    if (v.empty()) return 0;
+    std::sort(v.begin(), v.end());
+    return v[v.size() / 2];
+}
+
 const soup& triangle_torus() {
     static const soup s = hmira_bench::make_torus(724, true);
     return s;
@@ -52,13 +90,14 @@ const soup& quad_torus() {
 }
 
 template <class M>
-void hmira_catmull_clark(benchmark::State& state) {
+void hmira_catmull_clark(benchmark::State& state, const char* name) {
     const M base = build<M>(quad_torus());
     for (auto _ : state) {
         state.PauseTiming();
         M m = base;
         state.ResumeTiming();
-        auto r = hmira::catmull_clark_subdivide(m);
+        hmira::result<hmira::catmull_clark_result> r = hmira::catmull_clark_result{};
+        measured(state, name, [&] { r = hmira::catmull_clark_subdivide(m); });
         benchmark::DoNotOptimize(r);
         state.PauseTiming();
         if (!r || r->faces != 4 * quad_torus().faces.size()) state.SkipWithError("wrong face count");
@@ -66,16 +105,17 @@ void hmira_catmull_clark(benchmark::State& state) {
     }
     state.counters["faces_in"] = double(quad_torus().faces.size());
 }
-BENCHMARK(hmira_catmull_clark<hmira::halfedge_mesh>)->Name("catmull_clark/hmira/halfedge_mesh")->Unit(benchmark::kMillisecond)->Iterations(1);
+const int registered_1 = add_case("catmull_clark/hmira/halfedge_mesh", &hmira_catmull_clark<hmira::halfedge_mesh>);
 
 template <class M>
-void hmira_loop(benchmark::State& state) {
+void hmira_loop(benchmark::State& state, const char* name) {
     const M base = build<M>(triangle_torus());
     for (auto _ : state) {
         state.PauseTiming();
         M m = base;
         state.ResumeTiming();
-        auto r = hmira::loop_subdivide(m);
+        hmira::result<hmira::loop_result> r = hmira::loop_result{};
+        measured(state, name, [&] { r = hmira::loop_subdivide(m); });
         benchmark::DoNotOptimize(r);
         state.PauseTiming();
         if (!r || r->faces != 4 * triangle_torus().faces.size()) state.SkipWithError("wrong face count");
@@ -83,12 +123,12 @@ void hmira_loop(benchmark::State& state) {
     }
     state.counters["faces_in"] = double(triangle_torus().faces.size());
 }
-BENCHMARK(hmira_loop<hmira::halfedge_mesh>)->Name("loop/hmira/halfedge_mesh")->Unit(benchmark::kMillisecond)->Iterations(1);
+const int registered_2 = add_case("loop/hmira/halfedge_mesh", &hmira_loop<hmira::halfedge_mesh>);
 
 #ifdef HMIRA_BENCH_WITH_OPENMESH
 using om_tri = OpenMesh::TriMesh_ArrayKernelT<>;
-BENCHMARK(hmira_loop<om_tri>)->Name("loop/hmira/openmesh_tri")->Unit(benchmark::kMillisecond)->Iterations(1);
-void openmesh_loop(benchmark::State& state) {
+const int registered_3 = add_case("loop/hmira/openmesh_tri", &hmira_loop<om_tri>);
+void openmesh_loop(benchmark::State& state, const char* name) {
     const om_tri base = build<om_tri>(triangle_torus());
     for (auto _ : state) {
         state.PauseTiming();
@@ -96,18 +136,18 @@ void openmesh_loop(benchmark::State& state) {
         OpenMesh::Subdivider::Uniform::LoopT<om_tri> loop;
         loop.attach(m);
         state.ResumeTiming();
-        loop(1);
+        measured(state, name, [&] { loop(1); });
         state.PauseTiming();
         loop.detach();
         if (m.n_faces() != 4 * triangle_torus().faces.size()) state.SkipWithError("wrong face count");
         state.ResumeTiming();
     }
 }
-BENCHMARK(openmesh_loop)->Name("loop/openmesh/LoopT")->Unit(benchmark::kMillisecond)->Iterations(1);
+const int registered_4 = add_case("loop/openmesh/LoopT", &openmesh_loop);
 
 using om_poly = OpenMesh::PolyMesh_ArrayKernelT<>;
-BENCHMARK(hmira_catmull_clark<om_poly>)->Name("catmull_clark/hmira/openmesh_poly")->Unit(benchmark::kMillisecond)->Iterations(1);
-void openmesh_catmull_clark(benchmark::State& state) {
+const int registered_5 = add_case("catmull_clark/hmira/openmesh_poly", &hmira_catmull_clark<om_poly>);
+void openmesh_catmull_clark(benchmark::State& state, const char* name) {
     const om_poly base = build<om_poly>(quad_torus());
     for (auto _ : state) {
         state.PauseTiming();
@@ -115,47 +155,47 @@ void openmesh_catmull_clark(benchmark::State& state) {
         OpenMesh::Subdivider::Uniform::CatmullClarkT<om_poly> cc;
         cc.attach(m);
         state.ResumeTiming();
-        cc(1);
+        measured(state, name, [&] { cc(1); });
         state.PauseTiming();
         cc.detach();
         if (m.n_faces() != 4 * quad_torus().faces.size()) state.SkipWithError("wrong face count");
         state.ResumeTiming();
     }
 }
-BENCHMARK(openmesh_catmull_clark)->Name("catmull_clark/openmesh/CatmullClarkT")->Unit(benchmark::kMillisecond)->Iterations(1);
+const int registered_6 = add_case("catmull_clark/openmesh/CatmullClarkT", &openmesh_catmull_clark);
 #endif
 
 #ifdef HMIRA_BENCH_WITH_CGAL
 using cgal_mesh = CGAL::Surface_mesh<CGAL::Simple_cartesian<double>::Point_3>;
-BENCHMARK(hmira_loop<cgal_mesh>)->Name("loop/hmira/cgal_surface_mesh")->Unit(benchmark::kMillisecond)->Iterations(1);
-void cgal_loop(benchmark::State& state) {
+const int registered_7 = add_case("loop/hmira/cgal_surface_mesh", &hmira_loop<cgal_mesh>);
+void cgal_loop(benchmark::State& state, const char* name) {
     const cgal_mesh base = build<cgal_mesh>(triangle_torus());
     for (auto _ : state) {
         state.PauseTiming();
         cgal_mesh m = base;
         state.ResumeTiming();
-        CGAL::Subdivision_method_3::Loop_subdivision(m, CGAL::parameters::number_of_iterations(1));
+        measured(state, name, [&] { CGAL::Subdivision_method_3::Loop_subdivision(m, CGAL::parameters::number_of_iterations(1)); });
         state.PauseTiming();
         if (m.number_of_faces() != 4 * triangle_torus().faces.size()) state.SkipWithError("wrong face count");
         state.ResumeTiming();
     }
 }
-BENCHMARK(cgal_loop)->Name("loop/cgal/Loop_subdivision")->Unit(benchmark::kMillisecond)->Iterations(1);
+const int registered_8 = add_case("loop/cgal/Loop_subdivision", &cgal_loop);
 
-BENCHMARK(hmira_catmull_clark<cgal_mesh>)->Name("catmull_clark/hmira/cgal_surface_mesh")->Unit(benchmark::kMillisecond)->Iterations(1);
-void cgal_catmull_clark(benchmark::State& state) {
+const int registered_9 = add_case("catmull_clark/hmira/cgal_surface_mesh", &hmira_catmull_clark<cgal_mesh>);
+void cgal_catmull_clark(benchmark::State& state, const char* name) {
     const cgal_mesh base = build<cgal_mesh>(quad_torus());
     for (auto _ : state) {
         state.PauseTiming();
         cgal_mesh m = base;
         state.ResumeTiming();
-        CGAL::Subdivision_method_3::CatmullClark_subdivision(m, CGAL::parameters::number_of_iterations(1));
+        measured(state, name, [&] { CGAL::Subdivision_method_3::CatmullClark_subdivision(m, CGAL::parameters::number_of_iterations(1)); });
         state.PauseTiming();
         if (m.number_of_faces() != 4 * quad_torus().faces.size()) state.SkipWithError("wrong face count");
         state.ResumeTiming();
     }
 }
-BENCHMARK(cgal_catmull_clark)->Name("catmull_clark/cgal/CatmullClark_subdivision")->Unit(benchmark::kMillisecond)->Iterations(1);
+const int registered_10 = add_case("catmull_clark/cgal/CatmullClark_subdivision", &cgal_catmull_clark);
 #endif
 
 }  // namespace
@@ -173,6 +213,20 @@ int main(int argc, char** argv) {
         print_ratio(scheme + ": hmira on OpenMesh / hmira halfedge_mesh",
                     scheme + (scheme == "loop" ? "/hmira/openmesh_tri" : "/hmira/openmesh_poly"), own, 1.1);
         print_ratio(scheme + ": hmira on CGAL / hmira halfedge_mesh", scheme + "/hmira/cgal_surface_mesh", own, 1.1);
+    }
+    std::printf("\nMedian user-CPU-time ratios (without the kernel's zeroing of fresh pages):\n");
+    for (const std::string scheme : {"loop", "catmull_clark"}) {
+        const std::string own = scheme + "/hmira/halfedge_mesh";
+        const std::string om = scheme == "loop" ? "loop/openmesh/LoopT" : "catmull_clark/openmesh/CatmullClarkT";
+        const std::string cg = scheme == "loop" ? "loop/cgal/Loop_subdivision" : "catmull_clark/cgal/CatmullClark_subdivision";
+        const std::string on_om = scheme + (scheme == "loop" ? "/hmira/openmesh_tri" : "/hmira/openmesh_poly");
+        const std::string on_cg = scheme + "/hmira/cgal_surface_mesh";
+        for (const auto& [label, a, b] : {std::tuple{"hmira halfedge_mesh / OpenMesh", own, om}, std::tuple{"hmira halfedge_mesh / CGAL", own, cg},
+                                          std::tuple{"hmira on OpenMesh / hmira halfedge_mesh", on_om, own},
+                                          std::tuple{"hmira on CGAL / hmira halfedge_mesh", on_cg, own}}) {
+            const double ta = median_user(a), tb = median_user(b);
+            if (ta > 0 && tb > 0) std::printf("%-58s %7.1f ms / %7.1f ms = %5.2f\n", (scheme + ": " + label).c_str(), ta * 1e3, tb * 1e3, ta / tb);
+        }
     }
     benchmark::Shutdown();
     return 0;

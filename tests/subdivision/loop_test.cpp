@@ -131,6 +131,7 @@ TYPED_TEST(loop_test, icosahedron_vertices_converge_to_the_limit_positions) {
                 }
                 prev = worst;
                 ASSERT_TRUE(hmira::loop_subdivide(m));
+                ASSERT_TRUE(valid_topology(m)) << "level " << level + 1;
             }
             EXPECT_LT(prev, 1e-2);
         }

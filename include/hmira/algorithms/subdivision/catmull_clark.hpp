@@ -59,7 +59,8 @@ struct cc_counts {
 };
 
 /// The per-level arrays, sized once for the largest level so that no level allocates after
-/// the mesh starts changing. Kept lean (29 bytes a vertex, 28 a face, 4 an edge): at a million
+/// the mesh starts changing. Kept lean (29 bytes a vertex, 28 a face; the edge points go
+/// straight into the new vertices): at a million
 /// faces, first touching fresh pages costs as much as the arithmetic.
 template <class M, class T>
 struct cc_workspace {
@@ -68,15 +69,14 @@ struct cc_workspace {
     std::vector<std::uint32_t> valence;
     std::vector<std::uint8_t> boundary_edges;  // saturates at 3: only "none", "two" and "more" matter
     std::vector<typename T::face_handle> faces;
-    std::vector<typename T::halfedge_handle> edges, corners;
+    std::vector<typename T::halfedge_handle> corners;
 
-    void reserve(std::size_t vertex_bound, std::size_t edge_count, std::size_t face_bound, std::size_t max_degree) {
+    void reserve(std::size_t vertex_bound, std::size_t face_bound, std::size_t max_degree) {
         vertex_point.reserve(vertex_bound);
         valence.reserve(vertex_bound);
         boundary_edges.reserve(vertex_bound);
         face_point.reserve(face_bound);
         faces.reserve(face_bound);
-        edges.reserve(edge_count);
         corners.reserve(max_degree);
     }
 };
@@ -100,7 +100,6 @@ bool catmull_clark_level(M& mesh, cc_workspace<M, T>& w, progress_gate& gate) {
     w.boundary_edges.assign(vertex_bound, 0);
     w.face_point.assign(T::face_index_bound(mesh), {});
     w.faces.clear();
-    w.edges.clear();
     auto& sum = w.vertex_point;
 
     // Face points (centroids); each vertex sums the face points around it.
@@ -138,7 +137,6 @@ bool catmull_clark_level(M& mesh, cc_workspace<M, T>& w, progress_gate& gate) {
             w.boundary_edges[a] = std::uint8_t(std::min(3, w.boundary_edges[a] + 1));
             w.boundary_edges[b] = std::uint8_t(std::min(3, w.boundary_edges[b] + 1));
         }
-        w.edges.push_back(h);
         if (++done % block == 0 && !gate.advance(1)) return false;
     }
 
@@ -164,36 +162,36 @@ bool catmull_clark_level(M& mesh, cc_workspace<M, T>& w, progress_gate& gate) {
         }
     }
 
-    // Edge splits, each at its edge point: the average of the two ends and the two face points,
-    // or the midpoint on a boundary. The ends are old vertices not yet moved, and the faces
-    // beside the edge keep their handles through the other splits (they just gain vertices).
-    // (The public operator's checks cost O(1) here; the preconditions above make them pass.)
-    for (std::size_t i = 0; i < w.edges.size(); ++i) {
-        const H h = w.edges[i], o = T::opposite(mesh, h);
-        const F fh = T::face(mesh, h), fo = T::face(mesh, o);
-        const vec3<double> ends = dt::position_of<M, T>(mesh, T::target(mesh, h)) + dt::position_of<M, T>(mesh, T::target(mesh, o));
-        const vec3<double> q = fh == T::null_face() || fo == T::null_face()
-                                   ? ends * 0.5
-                                   : (ends + w.face_point[T::face_index(mesh, fh)] + w.face_point[T::face_index(mesh, fo)]) * 0.25;
-        auto r = split_edge<M, T>(mesh, h, {.position = q, .split_triangles = false});
-        assert(r);
-        (void)r.value();  // cannot fail: the halfedge is live and the position finite
-        if ((i + 1) % block == 0 && !gate.advance(1)) return false;
-    }
-    // Each face, now a 2n-gon alternating old vertices and edge points, becomes n quads: a
-    // spike from the first edge point to the face point, then an edge from the face point to
-    // each further edge point, each closing one quad (make_edge_face walks only that quad).
+    // Face by face, so that each is finished while its elements are still in cache: the
+    // face's edges not split yet (both ends old) are split at their edge points (split_edge's
+    // links, without its checks: the preconditions above make them pass), then the face, now a
+    // 2n-gon alternating old vertices and edge points, becomes n quads: a spike from the first
+    // edge point to the face point, then an edge from the face point to each further edge
+    // point, each closing one quad (make_edge_face walks only that quad). An edge point is the
+    // average of the edge's two ends and the two face points beside it, or the midpoint on a
+    // boundary: the ends are old vertices not moved yet, and an edge not split yet has no
+    // finished face beside it, so the face across it is still the old one (splits keep faces).
     using S = typename T::scalar;
+    const auto is_old = [&](typename T::vertex_handle v) { return std::size_t(T::vertex_index(mesh, v)) < vertex_bound; };
     for (std::size_t i = 0; i < w.faces.size(); ++i) {
         const F f = w.faces[i];
+        const vec3<double>& c = w.face_point[T::face_index(mesh, f)];
         w.corners.clear();
         const H start = T::face_halfedge(mesh, f);
         H x = start;
         do {
-            if (T::vertex_index(mesh, T::target(mesh, x)) >= vertex_bound) w.corners.push_back(x);
+            if (!is_old(T::target(mesh, x))) {
+                w.corners.push_back(x);  // the first half of an edge a neighbour split
+            } else if (const H o = T::opposite(mesh, x); is_old(T::target(mesh, o))) {
+                const F g = T::face(mesh, o);
+                const vec3<double> ends = dt::position_of<M, T>(mesh, T::target(mesh, x)) + dt::position_of<M, T>(mesh, T::target(mesh, o));
+                const vec3<double> q = g == T::null_face() ? ends * 0.5 : (ends + c + w.face_point[T::face_index(mesh, g)]) * 0.25;
+                const auto v = T::add_vertex(mesh, vec3<S>{S(q.x), S(q.y), S(q.z)});
+                x = dt::split_links<M, T>(mesh, x, v, false, false);  // x now ends at v; continue after the new half
+                w.corners.push_back(T::prev(mesh, x));
+            }
             x = T::next(mesh, x);
         } while (x != start);
-        const vec3<double>& c = w.face_point[T::face_index(mesh, f)];
         auto spike = make_edge_vertex<M, T>(mesh, w.corners[0], vec3<S>{S(c.x), S(c.y), S(c.z)});
         assert(spike);
         const H into_centre = spike.value().halfedge;  // cannot fail: corners[0] is a live halfedge
@@ -275,7 +273,7 @@ template <class M, class T = default_traits<M>>
     std::uint64_t blocks = 0;
     for (std::size_t l = 0; l < options.levels; ++l) {
         largest_input = counts;
-        blocks += (2 * counts.edges + 2 * counts.faces) / (1u << 14);
+        blocks += (counts.edges + 2 * counts.faces) / (1u << 14);
         counts = counts.next();
         if (2 * counts.edges >= (std::uint64_t(1) << 31))
             return fail(errc::invalid_argument, "catmull_clark_subdivide: " + std::to_string(options.levels) +
@@ -287,8 +285,8 @@ template <class M, class T = default_traits<M>>
     const std::size_t face_bound = T::face_index_bound(mesh) + std::size_t(counts.faces - first.faces);
     detail::subdivision::reserve_room<M, T>(mesh, vertex_bound, edge_bound, face_bound);
     ds::cc_workspace<M, T> work;
-    work.reserve(vertex_bound - std::size_t(counts.vertices - largest_input.vertices), std::size_t(largest_input.edges),
-                 face_bound - std::size_t(counts.faces - largest_input.faces), max_degree);
+    work.reserve(vertex_bound - std::size_t(counts.vertices - largest_input.vertices), face_bound - std::size_t(counts.faces - largest_input.faces),
+                 max_degree);
 
     detail::progress_gate gate(options.progress, std::size_t(blocks));
     // Without a callback nothing can stop a level half way: its preconditions hold for the

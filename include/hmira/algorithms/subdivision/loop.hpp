@@ -51,43 +51,64 @@ inline double loop_beta(std::size_t n) {
 }
 
 /// The per-level arrays, sized once for the largest level so that no level allocates after
-/// the mesh starts changing (29 bytes a vertex, 36 an edge).
+/// the mesh starts changing (29 bytes an old vertex, 4 an old edge, 16 an old face). The edge
+/// points go straight into the new vertices, made before the splits: at a million faces,
+/// first touching fresh pages costs as much as the arithmetic, so nothing is stored twice.
 template <class M, class T>
 struct loop_workspace {
     std::vector<vec3<double>> vertex_point;  // first the sums of neighbours, then the new positions
     std::vector<std::uint32_t> valence;
-    std::vector<std::uint8_t> boundary_edges;  // saturates at 3
-    std::vector<vec3<double>> edge_point;
-    std::vector<typename T::halfedge_handle> edges, cuts;
+    std::vector<std::uint8_t> boundary_edges;              // saturates at 3
+    std::vector<typename T::vertex_handle> edge_vertex;  // by old edge index: its new vertex, null once split
+    struct triangle {
+        std::array<typename T::halfedge_handle, 3> halfedges;  // null for a deleted face
+        typename T::halfedge_handle old_corner_cut;            // see loop_level
+    };
+    std::vector<triangle> triangles;  // by old face index
 
-    void reserve(std::size_t vertex_bound, std::size_t edge_count) {
+    void reserve(std::size_t vertex_bound, std::size_t edge_bound, std::size_t face_bound) {
         vertex_point.reserve(vertex_bound);
         valence.reserve(vertex_bound);
         boundary_edges.reserve(vertex_bound);
-        edge_point.reserve(edge_count);
-        edges.reserve(edge_count);
-        cuts.reserve(2 * edge_count);
+        edge_vertex.reserve(edge_bound);
+        triangles.reserve(face_bound);
     }
 };
 
-/// One Loop level on a mesh of triangles without rings (established by the caller), with
-/// room reserved in `w` and in the mesh.
+/// Gathers the halfedges of every face into `w.triangles`, by face index; returns the index
+/// of the first face that is not a triangle without rings, or -1. Changes nothing in the
+/// mesh. O(F).
+template <class M, class T>
+long long gather_triangles(const M& mesh, loop_workspace<M, T>& w) {
+    using H = typename T::halfedge_handle;
+    w.triangles.assign(T::face_index_bound(mesh), {{H{}, H{}, H{}}, T::null_halfedge()});
+    for (auto f : T::faces(mesh)) {
+        const H h0 = T::face_halfedge(mesh, f), h1 = T::next(mesh, h0), h2 = T::next(mesh, h1);
+        if (T::next(mesh, h2) != h0 || detail::euler::has_rings<M, T>(mesh, f)) return (long long)T::face_index(mesh, f);
+        w.triangles[T::face_index(mesh, f)].halfedges = {h0, h1, h2};
+    }
+    return -1;
+}
+
+/// One Loop level, on the triangles gather_triangles found; `w` and the mesh have room for it.
 template <class M, class T>
 void loop_level(M& mesh, loop_workspace<M, T>& w) {
     namespace dt = detail::triangle_ops;
     using H = typename T::halfedge_handle;
+    using S = typename T::scalar;
     const std::size_t vertex_bound = T::vertex_index_bound(mesh);
+    const std::size_t edge_bound = T::edge_index_bound(mesh);
+    const auto is_old = [&](typename T::vertex_handle v) { return std::size_t(T::vertex_index(mesh, v)) < vertex_bound; };
     w.vertex_point.assign(vertex_bound, {});
     w.valence.assign(vertex_bound, 0);
     w.boundary_edges.assign(vertex_bound, 0);
-    w.edge_point.clear();
-    w.edges.clear();
-    w.cuts.clear();
+    w.edge_vertex.assign(edge_bound, typename T::vertex_handle{});
     auto& sum = w.vertex_point;
 
     // Edge points (3/8 of each end and 1/8 of each opposite corner; the midpoint on a
-    // boundary), computed before any split changes the corners; each vertex sums its
-    // neighbours and counts its edges and boundary edges.
+    // boundary), computed before any split changes the corners and made into isolated new
+    // vertices at once; each old vertex sums its neighbours and counts its edges and boundary
+    // edges.
     for (auto e : T::edges(mesh)) {
         const H h = T::edge_halfedge(mesh, e), o = T::opposite(mesh, h);
         const auto va = T::target(mesh, o), vb = T::target(mesh, h);
@@ -97,16 +118,17 @@ void loop_level(M& mesh, loop_workspace<M, T>& w) {
         sum[ib] += a;
         ++w.valence[ia];
         ++w.valence[ib];
-        w.edges.push_back(h);
+        vec3<double> q;
         if (T::face(mesh, h) != T::null_face() && T::face(mesh, o) != T::null_face()) {
             const auto c = dt::position_of<M, T>(mesh, T::target(mesh, T::next(mesh, h)));
             const auto d = dt::position_of<M, T>(mesh, T::target(mesh, T::next(mesh, o)));
-            w.edge_point.push_back((a + b) * 0.375 + (c + d) * 0.125);
+            q = (a + b) * 0.375 + (c + d) * 0.125;
         } else {
-            w.edge_point.push_back((a + b) * 0.5);
+            q = (a + b) * 0.5;
             w.boundary_edges[ia] = std::uint8_t(std::min(3, w.boundary_edges[ia] + 1));
             w.boundary_edges[ib] = std::uint8_t(std::min(3, w.boundary_edges[ib] + 1));
         }
+        w.edge_vertex[T::edge_index(mesh, e)] = T::add_vertex(mesh, vec3<S>{S(q.x), S(q.y), S(q.z)});
     }
     // Old vertices: Loop's rule inside; on the boundary (two boundary edges, the stored
     // halfedge a boundary one) 3/4 of itself and 1/8 of each boundary neighbour; a vertex
@@ -115,6 +137,7 @@ void loop_level(M& mesh, loop_workspace<M, T>& w) {
     for (std::size_t n = 3; n < betas.size(); ++n) betas[n] = loop_beta(n);
     for (auto v : T::vertices(mesh)) {
         const std::size_t i = T::vertex_index(mesh, v);
+        if (i >= vertex_bound) continue;  // an edge point, placed already
         const auto p = dt::position_of<M, T>(mesh, v);
         const std::size_t n = w.valence[i];
         if (w.boundary_edges[i] == 0 && n > 0) {
@@ -129,25 +152,49 @@ void loop_level(M& mesh, loop_workspace<M, T>& w) {
             sum[i] = p;
         }
     }
-    // The splits: each cuts the triangles beside its edge from the new vertex to their third
-    // corner; those cuts are next(h) on h's side and next(opposite(new halfedge)) on the other.
-    for (std::size_t i = 0; i < w.edges.size(); ++i) {
-        const H h = w.edges[i];
-        const bool h_side = T::face(mesh, h) != T::null_face();
-        const bool o_side = T::face(mesh, T::opposite(mesh, h)) != T::null_face();
-        auto r = split_edge<M, T>(mesh, h, {.position = w.edge_point[i]});
-        assert(r);
-        const H h2 = r.value().halfedge;  // cannot fail: the halfedge is live and the position finite
-        if (h_side) w.cuts.push_back(T::next(mesh, h));
-        if (o_side) w.cuts.push_back(T::next(mesh, T::opposite(mesh, h2)));
+    // Splits (split_edge's links; the triangles were checked), old triangle by old triangle,
+    // so that each triangle is finished while its elements are still in cache. A split cuts
+    // the triangles beside its edge from the new vertex to their third corner: next(h) on h's
+    // side, next(opposite(new halfedge)) on the other. In each old triangle the first split's
+    // cut goes to an old corner, while the triangle is still whole (so its face handle is the
+    // old one), and every later cut to that first new vertex: exactly one cut per old triangle
+    // joins an old and a new vertex, the one the 1-to-4 pattern lacks. Once the triangle's
+    // three edges are split, both sides of that cut are triangles whose far corners are new
+    // and not yet joined, so is_flip_ok holds and the flip's own checks are skipped.
+    const auto split = [&](H h) {
+        const std::size_t e = T::edge_index(mesh, T::edge(mesh, h));
+        const auto v = w.edge_vertex[e];
+        if (v == typename T::vertex_handle{}) return;  // split already
+        w.edge_vertex[e] = typename T::vertex_handle{};
+        const H o = T::opposite(mesh, h);
+        const auto fh = T::face(mesh, h), fo = T::face(mesh, o);
+        const bool h_side = fh != T::null_face(), o_side = fo != T::null_face() && fo != fh;
+        const H h2 = dt::split_links<M, T>(mesh, h, v, h_side, o_side);
+        if (h_side) {
+            const H cut = T::next(mesh, h);
+            if (is_old(T::target(mesh, cut))) w.triangles[T::face_index(mesh, fh)].old_corner_cut = cut;
+        }
+        if (o_side) {
+            const H cut = T::next(mesh, T::opposite(mesh, h2));
+            if (is_old(T::target(mesh, cut))) w.triangles[T::face_index(mesh, fo)].old_corner_cut = cut;
+        }
+    };
+    for (const auto& triangle : w.triangles) {
+        const auto& t = triangle.halfedges;
+        if (t[0] == H{}) continue;  // a deleted face
+        split(t[0]);
+        split(t[1]);
+        split(t[2]);
+        const H cut = triangle.old_corner_cut;
+        assert((is_flip_ok<M, T>(mesh, cut)));
+        dt::flip_links<M, T>(mesh, cut);
     }
-    // A cut that joins the new vertex to an old corner is flipped (1-to-4). Both its sides are
-    // triangles whose far corners are new and not yet joined, so is_flip_ok holds for each,
-    // and the flip's own checks are skipped.
-    for (const H x : w.cuts) {
-        if (T::vertex_index(mesh, T::target(mesh, x)) < vertex_bound) {
-            assert((is_flip_ok<M, T>(mesh, x)));
-            dt::flip_links<M, T>(mesh, x);
+    // Edges without a face on either side just gain their vertex.
+    for (auto e : T::edges(mesh)) {
+        const std::size_t i = T::edge_index(mesh, e);
+        if (i < edge_bound && w.edge_vertex[i] != typename T::vertex_handle{}) {
+            (void)dt::split_links<M, T>(mesh, T::edge_halfedge(mesh, e), w.edge_vertex[i], false, false);
+            w.edge_vertex[i] = typename T::vertex_handle{};
         }
     }
     for (auto v : T::vertices(mesh)) {
@@ -158,10 +205,11 @@ void loop_level(M& mesh, loop_workspace<M, T>& w) {
 
 }  // namespace detail::subdivision
 
-/// A mesh loop_subdivide can run on: the triangle operators, and dense vertex and face indices
-/// for its per-level arrays.
+/// A mesh loop_subdivide can run on: the triangle operators, and dense vertex, edge and face
+/// indices for its per-level arrays.
 template <class M, class T = default_traits<M>>
-concept loop_subdividable_mesh = triangle_operable_mesh<M, T> && vertex_index_mesh<M, T> && face_index_mesh<M, T>;
+concept loop_subdividable_mesh =
+    triangle_operable_mesh<M, T> && vertex_index_mesh<M, T> && edge_index_mesh<M, T> && face_index_mesh<M, T>;
 
 /// Loop subdivision, `options.levels` times. Each level splits every edge at its edge point
 /// (3/8 of each end plus 1/8 of each opposite corner; the midpoint on a boundary), flips the
@@ -183,30 +231,35 @@ template <class M, class T = default_traits<M>>
 [[nodiscard]] result<loop_result> loop_subdivide(M& mesh, const loop_options& options = {}) {
     if (options.levels > 10)
         return fail(errc::invalid_argument, "loop_subdivide: option levels must be at most 10, got " + std::to_string(options.levels));
-    for (auto f : T::faces(mesh))
-        if (!detail::triangle_ops::in_triangle<M, T>(mesh, T::face_halfedge(mesh, f)))
-            return fail(errc::topology,
-                        "loop_subdivide: face " + std::to_string(T::face_index(mesh, f)) + " is not a triangle (triangulate_faces first)",
-                        (long long)T::face_index(mesh, f));
+    namespace ds = detail::subdivision;
     // Every level's counts are known: the mesh and the working arrays are sized for the last
-    // level now, so nothing allocates once the mesh has started to change.
+    // level before the first change, so nothing allocates once the mesh has started to change.
     std::uint64_t v = T::vertex_count(mesh), e = T::edge_count(mesh), f = T::face_count(mesh);
     const std::uint64_t v0 = v, e0 = e, f0 = f;
-    std::uint64_t largest_v = v, largest_e = e;
+    std::uint64_t largest_v = v, largest_e = e, largest_f = f;
+    bool overflow = false;
     for (std::size_t l = 0; l < options.levels; ++l) {
-        largest_v = v, largest_e = e;
+        largest_v = v, largest_e = e, largest_f = f;
         v = v + e, e = 2 * e + 3 * f, f = 4 * f;
-        if (2 * e >= (std::uint64_t(1) << 31))
-            return fail(errc::invalid_argument, "loop_subdivide: " + std::to_string(options.levels) +
-                                                    " levels would make more than 2^31 halfedges, more than a mesh index holds");
+        overflow = overflow || 2 * e >= (std::uint64_t(1) << 31);
     }
+    ds::loop_workspace<M, T> work;
+    if (!overflow) work.triangles.reserve(T::face_index_bound(mesh) + std::size_t(largest_f - f0));
+    if (const long long bad = ds::gather_triangles<M, T>(mesh, work); bad >= 0)
+        return fail(errc::topology, "loop_subdivide: face " + std::to_string(bad) + " is not a triangle (triangulate_faces first)", bad);
+    if (overflow)
+        return fail(errc::invalid_argument, "loop_subdivide: " + std::to_string(options.levels) +
+                                                " levels would make more than 2^31 halfedges, more than a mesh index holds");
     if (options.levels == 0) return loop_result{T::vertex_count(mesh), T::edge_count(mesh), T::face_count(mesh)};
     const std::size_t vertex_bound = T::vertex_index_bound(mesh) + std::size_t(v - v0);
-    if constexpr (edge_index_mesh<M, T>)
-        detail::subdivision::reserve_room<M, T>(mesh, vertex_bound, T::edge_index_bound(mesh) + std::size_t(e - e0), T::face_index_bound(mesh) + std::size_t(f - f0));
-    detail::subdivision::loop_workspace<M, T> work;
-    work.reserve(vertex_bound - std::size_t(v - largest_v), std::size_t(largest_e));
-    for (std::size_t l = 0; l < options.levels; ++l) detail::subdivision::loop_level<M, T>(mesh, work);
+    const std::size_t edge_bound = T::edge_index_bound(mesh) + std::size_t(e - e0);
+    const std::size_t face_bound = T::face_index_bound(mesh) + std::size_t(f - f0);
+    ds::reserve_room<M, T>(mesh, vertex_bound, edge_bound, face_bound);
+    work.reserve(vertex_bound - std::size_t(v - largest_v), edge_bound - std::size_t(e - largest_e), face_bound - std::size_t(f - largest_f));
+    for (std::size_t l = 0; l < options.levels; ++l) {
+        if (l > 0) (void)ds::gather_triangles<M, T>(mesh, work);  // all triangles now
+        ds::loop_level<M, T>(mesh, work);
+    }
     return loop_result{T::vertex_count(mesh), T::edge_count(mesh), T::face_count(mesh)};
 }
 
