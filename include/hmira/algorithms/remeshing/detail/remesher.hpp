@@ -177,18 +177,25 @@ public:
     /// triangles (and slivers between nearly collinear feature vertices) there; this local
     /// Delaunay step removes them. Far from locked vertices valence flips are left alone.
     void improve_thin_triangles() {
+        // The candidates: per locked vertex, the edges from it and the edges facing it.
         std::vector<E> edges;
-        edges.reserve(T::edge_count(m_));
-        for (auto e : T::edges(m_)) edges.push_back(e);
+        for (auto v : T::vertices(m_)) {
+            if (!locked_[T::vertex_index(m_, v)]) continue;
+            const H s = T::vertex_halfedge(m_, v);
+            if (s == T::null_halfedge()) continue;
+            H x = s;
+            do {
+                edges.push_back(T::edge(m_, x));
+                if (T::face(m_, x) != T::null_face()) edges.push_back(T::edge(m_, T::next(m_, x)));
+                x = T::next(m_, T::opposite(m_, x));
+            } while (x != s);
+        }
         for (const E e : edges) {
             if (feature_[T::edge_index(m_, e)]) continue;
             const H h = T::edge_halfedge(m_, e), o = T::opposite(m_, h);
             if (T::face(m_, h) == T::null_face() || T::face(m_, o) == T::null_face()) continue;
             const V a = T::target(m_, o), b = T::target(m_, h);
             const V c = T::target(m_, T::next(m_, h)), d = T::target(m_, T::next(m_, o));
-            if (!(locked_[T::vertex_index(m_, a)] || locked_[T::vertex_index(m_, b)] || locked_[T::vertex_index(m_, c)] ||
-                  locked_[T::vertex_index(m_, d)]))
-                continue;
             const auto pa = pos(a), pb = pos(b), pc = pos(c), pd = pos(d);
             const double before = std::max(largest_cosine(pa, pb, pc), largest_cosine(pb, pa, pd));
             if (before < thin_cosine) continue;
@@ -217,8 +224,7 @@ public:
             if (locked_[i]) continue;
             const H s = T::vertex_halfedge(m_, v);
             const vec3<double> p = pos(v);
-            vec3<double> centroid{}, normal{}, area_centroid{};
-            double area = 0;
+            vec3<double> centroid{}, normal{};
             bool near_locked = false;
             int k = 0;
             H x = s;
@@ -227,19 +233,30 @@ public:
             do {
                 const vec3<double> q = pos(T::target(m_, x));
                 // Face normal of (p, q, prev) summed with its area weight; the vertex is interior.
-                // Twice the area also weighs the triangle's centroid (p + q + prev) / 3.
-                const vec3<double> n = cross(q - p, prev - p);
-                normal += n;
-                const double twice_area = norm(n);
-                area_centroid += (p + q + prev) * (twice_area / 3);
-                area += twice_area;
+                normal += cross(q - p, prev - p);
                 centroid += q;
                 near_locked |= locked_[T::vertex_index(m_, T::target(m_, x))] != 0;
                 prev = q;
                 ++k;
                 x = T::next(m_, T::opposite(m_, x));
             } while (x != s);
-            centroid = near_locked && area > 0 ? area_centroid / area : centroid / double(k);
+            centroid = centroid / double(k);
+            if (near_locked) {
+                // The fan's triangle centroids (p + q + prev) / 3, weighted by twice their areas.
+                vec3<double> weighted{};
+                double area = 0;
+                prev = pos(T::target(m_, T::next(m_, s)));
+                x = s;
+                do {
+                    const vec3<double> q = pos(T::target(m_, x));
+                    const double twice_area = norm(cross(q - p, prev - p));
+                    weighted += (p + q + prev) * (twice_area / 3);
+                    area += twice_area;
+                    prev = q;
+                    x = T::next(m_, T::opposite(m_, x));
+                } while (x != s);
+                if (area > 0) centroid = weighted / area;
+            }
             const vec3<double> nn = normalized(normal);
             vec3<double> d = centroid - p;
             d -= nn * dot(nn, d);
