@@ -69,9 +69,12 @@ concept remeshable_mesh = triangle_operable_mesh<M, T> && vertex_index_mesh<M, T
 /// 1. splits every edge longer than 4/3 L at its midpoint;
 /// 2. collapses every edge shorter than 4/5 L unless that makes an edge longer than 4/3 L or
 ///    turns a triangle over;
-/// 3. flips edges that bring vertex valences closer to 6 (4 on the boundary);
-/// 4. moves each vertex to the centroid of its neighbours within its tangent plane and
-///    projects it onto the input surface (closest point in an aabb_tree of the input).
+/// 3. flips edges that bring vertex valences closer to 6 (4 on the boundary), then, beside
+///    boundary and feature vertices, edges whose flip makes the smaller angle of a thin pair of
+///    nearly coplanar triangles (below 35 degrees) larger;
+/// 4. moves each vertex to the centroid of its neighbours (beside a boundary or feature vertex:
+///    of its triangles, weighted by area) within its tangent plane and projects it onto the
+///    input surface (closest point in an aabb_tree of the input).
 ///
 /// Boundary edges and feature edges (by options.feature_angle and options.feature_edges) are
 /// never collapsed or flipped, and their vertices never move: they are only split at their
