@@ -4,6 +4,7 @@ objects at exit, and every docstring example runs."""
 import _thread
 import doctest
 import os
+import signal
 import subprocess
 import sys
 import threading
@@ -18,6 +19,17 @@ import hmira
 def gyroid(n):
     x, y, z = np.mgrid[0:6 * np.pi:n * 1j, 0:6 * np.pi:n * 1j, 0:6 * np.pi:n * 1j].astype(np.float32)
     return np.sin(x) * np.cos(y) + np.sin(y) * np.cos(z) + np.sin(z) * np.cos(x)
+
+
+@pytest.fixture(autouse=True)
+def sigint_raises_keyboard_interrupt():
+    """Python's own Ctrl-C handler for each test. A process started in the background by a
+    non-interactive shell inherits SIGINT ignored, and then Python installs no handler and
+    _thread.interrupt_main() does nothing, which would fail the Ctrl-C tests for a reason that
+    has nothing to do with hmira."""
+    previous = signal.signal(signal.SIGINT, signal.default_int_handler)
+    yield
+    signal.signal(signal.SIGINT, previous)
 
 
 @pytest.fixture(scope="module")
