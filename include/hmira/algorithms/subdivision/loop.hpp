@@ -193,7 +193,7 @@ void loop_level(M& mesh, loop_workspace<M, T>& w) {
     for (auto e : T::edges(mesh)) {
         const std::size_t i = T::edge_index(mesh, e);
         if (i < edge_bound && w.edge_vertex[i] != typename T::vertex_handle{}) {
-            (void)dt::split_links<M, T>(mesh, T::edge_halfedge(mesh, e), w.edge_vertex[i], false, false);
+            [[maybe_unused]] const auto new_halfedge = dt::split_links<M, T>(mesh, T::edge_halfedge(mesh, e), w.edge_vertex[i], false, false);
             w.edge_vertex[i] = typename T::vertex_handle{};
         }
     }
@@ -257,7 +257,9 @@ template <class M, class T = default_traits<M>>
     ds::reserve_room<M, T>(mesh, vertex_bound, edge_bound, face_bound);
     work.reserve(vertex_bound - std::size_t(v - largest_v), edge_bound - std::size_t(e - largest_e), face_bound - std::size_t(f - largest_f));
     for (std::size_t l = 0; l < options.levels; ++l) {
-        if (l > 0) (void)ds::gather_triangles<M, T>(mesh, work);  // all triangles now
+        if (l > 0) {
+            [[maybe_unused]] const long long non_triangle = ds::gather_triangles<M, T>(mesh, work);  // -1: Loop made triangles only
+        }
         ds::loop_level<M, T>(mesh, work);
     }
     return loop_result{T::vertex_count(mesh), T::edge_count(mesh), T::face_count(mesh)};
