@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <cstddef>
 #include <vector>
 
@@ -127,6 +128,20 @@ public:
 
     /// Flips interior non-feature edges where that brings the four vertices' valences closer
     /// to 6 (4 on the boundary) and turns no triangle over.
+    /// An interior non-feature edge as the quad its flip would re-cut: halfedge h runs a -> b,
+    /// c is opposite it in h's triangle and d in the other. Empty for feature and boundary edges.
+    struct flip_quad {
+        H h;
+        V a, b, c, d;
+    };
+    std::optional<flip_quad> flip_candidate(E e) const {
+        if (feature_[T::edge_index(m_, e)]) return std::nullopt;
+        const H h = T::edge_halfedge(m_, e), o = T::opposite(m_, h);
+        if (T::face(m_, h) == T::null_face() || T::face(m_, o) == T::null_face()) return std::nullopt;
+        return flip_quad{h, T::target(m_, o), T::target(m_, h), T::target(m_, T::next(m_, h)),
+                         T::target(m_, T::next(m_, o))};
+    }
+
     void equalize_valences() {
         valence_.assign(T::vertex_index_bound(m_), 0);
         std::vector<char> boundary(T::vertex_index_bound(m_), 0);
@@ -149,11 +164,9 @@ public:
         edges.reserve(T::edge_count(m_));
         for (auto e : T::edges(m_)) edges.push_back(e);
         for (const E e : edges) {
-            if (feature_[T::edge_index(m_, e)]) continue;
-            const H h = T::edge_halfedge(m_, e), o = T::opposite(m_, h);
-            if (T::face(m_, h) == T::null_face() || T::face(m_, o) == T::null_face()) continue;
-            const V a = T::target(m_, o), b = T::target(m_, h);
-            const V c = T::target(m_, T::next(m_, h)), d = T::target(m_, T::next(m_, o));
+            const auto q = flip_candidate(e);
+            if (!q) continue;
+            const auto [h, a, b, c, d] = *q;
             const auto ia = T::vertex_index(m_, a), ib = T::vertex_index(m_, b);
             const auto ic = T::vertex_index(m_, c), id = T::vertex_index(m_, d);
             const int before = deviation(ia, 0) + deviation(ib, 0) + deviation(ic, 0) + deviation(id, 0);
@@ -191,11 +204,9 @@ public:
             } while (x != s);
         }
         for (const E e : edges) {
-            if (feature_[T::edge_index(m_, e)]) continue;
-            const H h = T::edge_halfedge(m_, e), o = T::opposite(m_, h);
-            if (T::face(m_, h) == T::null_face() || T::face(m_, o) == T::null_face()) continue;
-            const V a = T::target(m_, o), b = T::target(m_, h);
-            const V c = T::target(m_, T::next(m_, h)), d = T::target(m_, T::next(m_, o));
+            const auto q = flip_candidate(e);
+            if (!q) continue;
+            const auto [h, a, b, c, d] = *q;
             const auto pa = pos(a), pb = pos(b), pc = pos(c), pd = pos(d);
             const double before = std::max(largest_cosine(pa, pb, pc), largest_cosine(pb, pa, pd));
             if (before < thin_cosine) continue;
