@@ -1,8 +1,9 @@
 // apps/hmira/cmd_subdivide.cpp
-// `hmira subdivide`: Loop subdivision of a triangle mesh or Catmull-Clark subdivision of any
-// polygon mesh, k levels (each quadruples the faces, after Catmull-Clark's first).
+// `hmira subdivide`: Loop or sqrt(3) subdivision of a triangle mesh, or Catmull-Clark
+// subdivision of any polygon mesh, k levels.
 #include <hmira/algorithms/subdivision/catmull_clark.hpp>
 #include <hmira/algorithms/subdivision/loop.hpp>
+#include <hmira/algorithms/subdivision/sqrt3.hpp>
 
 #include "cli.hpp"
 
@@ -24,6 +25,8 @@ int run_subdivide(const subdivide_args& a, const common_options& o) {
                         std::optional<hmira::error> failed;
                         if (a.scheme == "loop") {
                             if (auto r = hmira::loop_subdivide(mesh, {.levels = a.levels}); !r) failed = r.error();
+                        } else if (a.scheme == "sqrt3") {
+                            if (auto r = hmira::sqrt3_subdivide(mesh, {.levels = a.levels}); !r) failed = r.error();
                         } else if (auto r = hmira::catmull_clark_subdivide(mesh, {.levels = a.levels}); !r) {
                             failed = r.error();
                         }
@@ -36,15 +39,15 @@ int run_subdivide(const subdivide_args& a, const common_options& o) {
 }
 
 const bool registered = register_command({
-    "subdivide", "Subdivide a mesh (Loop for triangles, Catmull-Clark for any polygons), k levels",
+    "subdivide", "Subdivide a mesh (Loop or sqrt3 for triangles, Catmull-Clark for any polygons), k levels",
     "hmira subdivide bunny.off smooth.off --scheme loop -k 2", 86,
     [](CLI::App& sub) {
         auto a = std::make_shared<subdivide_args>();
-        sub.add_option("input", a->input, "mesh file to read (manifold, consistently oriented; triangles for loop)")->required();
+        sub.add_option("input", a->input, "mesh file to read (manifold, consistently oriented; triangles for loop and sqrt3)")->required();
         sub.add_option("output", a->output, "mesh file to write: the input's vertices first, in file order, then the new ones")->required();
-        sub.add_option("--scheme", a->scheme, "subdivision scheme: loop (triangles) or catmull-clark (any polygons, quads out)")
-            ->check(CLI::IsMember({"loop", "catmull-clark"}));
-        sub.add_option("-k,--levels", a->levels, "levels of subdivision, 1 to 10 (each multiplies the faces by 4; catmull-clark's first makes one quad per face corner)")
+        sub.add_option("--scheme", a->scheme, "subdivision scheme: loop or sqrt3 (triangles) or catmull-clark (any polygons, quads out)")
+            ->check(CLI::IsMember({"loop", "sqrt3", "catmull-clark"}));
+        sub.add_option("-k,--levels", a->levels, "levels of subdivision, 1 to 10 (each multiplies the faces by 4, by 3 for sqrt3; catmull-clark's first makes one quad per face corner)")
             ->check(CLI::Range(std::size_t(1), std::size_t(10)));
         return [a](const common_options& o) { return run_subdivide(*a, o); };
     }});

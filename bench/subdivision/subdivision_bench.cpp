@@ -2,6 +2,8 @@
 // - Loop, on a triangulated torus of 2 * 724^2 ~ 1.05M triangles: hmira's loop_subdivide on
 //   halfedge_mesh and (generic, same code) on OpenMesh TriMesh and CGAL Surface_mesh, beside
 //   OpenMesh's LoopT and CGAL's Loop_subdivision;
+// - sqrt(3), on the same triangulated torus: sqrt3_subdivide on the same three models, beside
+//   OpenMesh's Sqrt3T and CGAL's Sqrt3_subdivision (no target in the issue; shown for scale);
 // - Catmull-Clark, on a torus of 1024^2 ~ 1.05M quads: catmull_clark_subdivide on
 //   halfedge_mesh, OpenMesh PolyMesh and Surface_mesh, beside OpenMesh's CatmullClarkT and
 //   CGAL's CatmullClark_subdivision.
@@ -27,6 +29,7 @@
 
 #include <hmira/algorithms/subdivision/catmull_clark.hpp>
 #include <hmira/algorithms/subdivision/loop.hpp>
+#include <hmira/algorithms/subdivision/sqrt3.hpp>
 #include <hmira/meshes/halfedge_mesh.hpp>
 
 #include "support/peer_bench.hpp"
@@ -36,6 +39,7 @@
 #include <hmira/interop/openmesh.hpp>
 #include <OpenMesh/Tools/Subdivider/Uniform/CatmullClarkT.hh>
 #include <OpenMesh/Tools/Subdivider/Uniform/LoopT.hh>
+#include <OpenMesh/Tools/Subdivider/Uniform/Sqrt3T.hh>
 #endif
 #ifdef HMIRA_BENCH_WITH_CGAL
 #include <CGAL/Simple_cartesian.h>
@@ -107,43 +111,68 @@ void hmira_catmull_clark(benchmark::State& state, const char* name) {
 }
 const int registered_1 = add_case("catmull_clark/hmira/halfedge_mesh", &hmira_catmull_clark<hmira::halfedge_mesh>);
 
-template <class M>
-void hmira_loop(benchmark::State& state, const char* name) {
+/// hmira's Loop (factor 4) or sqrt(3) (factor 3) on the triangle torus.
+template <class M, int Factor>
+void hmira_triangle_scheme(benchmark::State& state, const char* name) {
     const M base = build<M>(triangle_torus());
     for (auto _ : state) {
         state.PauseTiming();
         M m = base;
         state.ResumeTiming();
-        hmira::result<hmira::loop_result> r = hmira::loop_result{};
-        measured(state, name, [&] { r = hmira::loop_subdivide(m); });
-        benchmark::DoNotOptimize(r);
+        std::size_t faces = 0;
+        bool ok = false;
+        measured(state, name, [&] {
+            if constexpr (Factor == 4) {
+                auto r = hmira::loop_subdivide(m);
+                ok = bool(r), faces = r ? r->faces : 0;
+            } else {
+                auto r = hmira::sqrt3_subdivide(m);
+                ok = bool(r), faces = r ? r->faces : 0;
+            }
+        });
+        benchmark::DoNotOptimize(faces);
         state.PauseTiming();
-        if (!r || r->faces != 4 * triangle_torus().faces.size()) state.SkipWithError("wrong face count");
+        if (!ok || faces != Factor * triangle_torus().faces.size()) state.SkipWithError("wrong face count");
         state.ResumeTiming();
     }
     state.counters["faces_in"] = double(triangle_torus().faces.size());
 }
+template <class M>
+void hmira_loop(benchmark::State& state, const char* name) { hmira_triangle_scheme<M, 4>(state, name); }
+template <class M>
+void hmira_sqrt3(benchmark::State& state, const char* name) { hmira_triangle_scheme<M, 3>(state, name); }
 const int registered_2 = add_case("loop/hmira/halfedge_mesh", &hmira_loop<hmira::halfedge_mesh>);
+const int registered_11 = add_case("sqrt3/hmira/halfedge_mesh", &hmira_sqrt3<hmira::halfedge_mesh>);
 
 #ifdef HMIRA_BENCH_WITH_OPENMESH
 using om_tri = OpenMesh::TriMesh_ArrayKernelT<>;
 const int registered_3 = add_case("loop/hmira/openmesh_tri", &hmira_loop<om_tri>);
-void openmesh_loop(benchmark::State& state, const char* name) {
+/// OpenMesh's uniform subdivider S (LoopT, Sqrt3T), one level, on the triangle torus.
+template <class S, int Factor>
+void openmesh_triangle_scheme(benchmark::State& state, const char* name) {
     const om_tri base = build<om_tri>(triangle_torus());
     for (auto _ : state) {
         state.PauseTiming();
         om_tri m = base;
-        OpenMesh::Subdivider::Uniform::LoopT<om_tri> loop;
-        loop.attach(m);
+        S subdivider;
+        subdivider.attach(m);
         state.ResumeTiming();
-        measured(state, name, [&] { loop(1); });
+        measured(state, name, [&] { subdivider(1); });
         state.PauseTiming();
-        loop.detach();
-        if (m.n_faces() != 4 * triangle_torus().faces.size()) state.SkipWithError("wrong face count");
+        subdivider.detach();
+        if (m.n_faces() != Factor * triangle_torus().faces.size()) state.SkipWithError("wrong face count");
         state.ResumeTiming();
     }
 }
+void openmesh_loop(benchmark::State& state, const char* name) {
+    openmesh_triangle_scheme<OpenMesh::Subdivider::Uniform::LoopT<om_tri>, 4>(state, name);
+}
+void openmesh_sqrt3(benchmark::State& state, const char* name) {
+    openmesh_triangle_scheme<OpenMesh::Subdivider::Uniform::Sqrt3T<om_tri>, 3>(state, name);
+}
 const int registered_4 = add_case("loop/openmesh/LoopT", &openmesh_loop);
+const int registered_12 = add_case("sqrt3/hmira/openmesh_tri", &hmira_sqrt3<om_tri>);
+const int registered_13 = add_case("sqrt3/openmesh/Sqrt3T", &openmesh_sqrt3);
 
 using om_poly = OpenMesh::PolyMesh_ArrayKernelT<>;
 const int registered_5 = add_case("catmull_clark/hmira/openmesh_poly", &hmira_catmull_clark<om_poly>);
@@ -168,19 +197,30 @@ const int registered_6 = add_case("catmull_clark/openmesh/CatmullClarkT", &openm
 #ifdef HMIRA_BENCH_WITH_CGAL
 using cgal_mesh = CGAL::Surface_mesh<CGAL::Simple_cartesian<double>::Point_3>;
 const int registered_7 = add_case("loop/hmira/cgal_surface_mesh", &hmira_loop<cgal_mesh>);
-void cgal_loop(benchmark::State& state, const char* name) {
+/// CGAL's Loop_subdivision or Sqrt3_subdivision, one level, on the triangle torus.
+template <int Factor>
+void cgal_triangle_scheme(benchmark::State& state, const char* name) {
     const cgal_mesh base = build<cgal_mesh>(triangle_torus());
     for (auto _ : state) {
         state.PauseTiming();
         cgal_mesh m = base;
         state.ResumeTiming();
-        measured(state, name, [&] { CGAL::Subdivision_method_3::Loop_subdivision(m, CGAL::parameters::number_of_iterations(1)); });
+        measured(state, name, [&] {
+            if constexpr (Factor == 4)
+                CGAL::Subdivision_method_3::Loop_subdivision(m, CGAL::parameters::number_of_iterations(1));
+            else
+                CGAL::Subdivision_method_3::Sqrt3_subdivision(m, CGAL::parameters::number_of_iterations(1));
+        });
         state.PauseTiming();
-        if (m.number_of_faces() != 4 * triangle_torus().faces.size()) state.SkipWithError("wrong face count");
+        if (m.number_of_faces() != Factor * triangle_torus().faces.size()) state.SkipWithError("wrong face count");
         state.ResumeTiming();
     }
 }
+void cgal_loop(benchmark::State& state, const char* name) { cgal_triangle_scheme<4>(state, name); }
+void cgal_sqrt3(benchmark::State& state, const char* name) { cgal_triangle_scheme<3>(state, name); }
 const int registered_8 = add_case("loop/cgal/Loop_subdivision", &cgal_loop);
+const int registered_14 = add_case("sqrt3/hmira/cgal_surface_mesh", &hmira_sqrt3<cgal_mesh>);
+const int registered_15 = add_case("sqrt3/cgal/Sqrt3_subdivision", &cgal_sqrt3);
 
 const int registered_9 = add_case("catmull_clark/hmira/cgal_surface_mesh", &hmira_catmull_clark<cgal_mesh>);
 void cgal_catmull_clark(benchmark::State& state, const char* name) {
@@ -198,28 +238,38 @@ void cgal_catmull_clark(benchmark::State& state, const char* name) {
 const int registered_10 = add_case("catmull_clark/cgal/CatmullClark_subdivision", &cgal_catmull_clark);
 #endif
 
+std::string openmesh_case(const std::string& scheme) {
+    return scheme == "loop" ? "loop/openmesh/LoopT" : scheme == "sqrt3" ? "sqrt3/openmesh/Sqrt3T" : "catmull_clark/openmesh/CatmullClarkT";
+}
+std::string cgal_case(const std::string& scheme) {
+    return scheme == "loop"    ? "loop/cgal/Loop_subdivision"
+           : scheme == "sqrt3" ? "sqrt3/cgal/Sqrt3_subdivision"
+                               : "catmull_clark/cgal/CatmullClark_subdivision";
+}
+std::string hmira_on_openmesh_case(const std::string& scheme) {
+    return scheme + (scheme == "catmull_clark" ? "/hmira/openmesh_poly" : "/hmira/openmesh_tri");
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
     if (int rc = hmira_bench::run_benchmarks(argc, argv); rc != 0) return rc;
     using hmira_bench::print_ratio;
     std::printf("\nMedian CPU-time ratios (one level, ~1M faces in):\n");
-    for (const std::string scheme : {"loop", "catmull_clark"}) {
+    for (const std::string scheme : {"loop", "catmull_clark", "sqrt3"}) {
         const std::string own = scheme + "/hmira/halfedge_mesh";
-        const std::string om = scheme == "loop" ? "loop/openmesh/LoopT" : "catmull_clark/openmesh/CatmullClarkT";
-        const std::string cg = scheme == "loop" ? "loop/cgal/Loop_subdivision" : "catmull_clark/cgal/CatmullClark_subdivision";
-        print_ratio(scheme + ": hmira halfedge_mesh / OpenMesh", own, om, 0.5);
-        print_ratio(scheme + ": hmira halfedge_mesh / CGAL", own, cg, 0.5);
-        print_ratio(scheme + ": hmira on OpenMesh / hmira halfedge_mesh",
-                    scheme + (scheme == "loop" ? "/hmira/openmesh_tri" : "/hmira/openmesh_poly"), own, 1.1);
+        const std::string om = openmesh_case(scheme), cg = cgal_case(scheme);
+        // The issue's 0.5 is for Loop and Catmull-Clark; sqrt(3) has no target of its own.
+        const double peer_target = scheme == "sqrt3" ? 1.0 : 0.5;
+        print_ratio(scheme + ": hmira halfedge_mesh / OpenMesh", own, om, peer_target);
+        print_ratio(scheme + ": hmira halfedge_mesh / CGAL", own, cg, peer_target);
+        print_ratio(scheme + ": hmira on OpenMesh / hmira halfedge_mesh", hmira_on_openmesh_case(scheme), own, 1.1);
         print_ratio(scheme + ": hmira on CGAL / hmira halfedge_mesh", scheme + "/hmira/cgal_surface_mesh", own, 1.1);
     }
     std::printf("\nMedian user-CPU-time ratios (without the kernel's zeroing of fresh pages):\n");
-    for (const std::string scheme : {"loop", "catmull_clark"}) {
+    for (const std::string scheme : {"loop", "catmull_clark", "sqrt3"}) {
         const std::string own = scheme + "/hmira/halfedge_mesh";
-        const std::string om = scheme == "loop" ? "loop/openmesh/LoopT" : "catmull_clark/openmesh/CatmullClarkT";
-        const std::string cg = scheme == "loop" ? "loop/cgal/Loop_subdivision" : "catmull_clark/cgal/CatmullClark_subdivision";
-        const std::string on_om = scheme + (scheme == "loop" ? "/hmira/openmesh_tri" : "/hmira/openmesh_poly");
+        const std::string om = openmesh_case(scheme), cg = cgal_case(scheme), on_om = hmira_on_openmesh_case(scheme);
         const std::string on_cg = scheme + "/hmira/cgal_surface_mesh";
         for (const auto& [label, a, b] : {std::tuple{"hmira halfedge_mesh / OpenMesh", own, om}, std::tuple{"hmira halfedge_mesh / CGAL", own, cg},
                                           std::tuple{"hmira on OpenMesh / hmira halfedge_mesh", on_om, own},

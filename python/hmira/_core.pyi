@@ -185,8 +185,9 @@ class MeshCore:
 
     def subdivide(self, *, scheme: str = 'loop', levels: int = 1) -> dict:
         """
-        Subdivides `levels` times with `scheme`: 'loop' (triangle meshes) or 'catmull-clark' (any polygon mesh,
-        boundaries included); returns the counts after the last level.
+        Subdivides `levels` times with `scheme`: 'loop' or 'sqrt3' (triangle meshes) or 'catmull-clark' (any
+        polygon mesh), boundaries included; returns the counts after the last level. 'sqrt3' refines the
+        boundary on every second level of a call, so give it an even `levels` for a smooth boundary.
 
         >>> m = hmira.Mesh([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]], [[0, 1, 2, 3]])
         >>> m.subdivide(scheme='catmull-clark')

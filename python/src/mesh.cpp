@@ -22,6 +22,7 @@
 #include <hmira/algorithms/smoothing/laplacian_smooth.hpp>
 #include <hmira/algorithms/subdivision/catmull_clark.hpp>
 #include <hmira/algorithms/subdivision/loop.hpp>
+#include <hmira/algorithms/subdivision/sqrt3.hpp>
 #include <hmira/algorithms/triangle/triangle.hpp>
 #include <hmira/algorithms/triangulation/triangulate_faces.hpp>
 #include <hmira/algorithms/orientation/flip_normals.hpp>
@@ -501,10 +502,8 @@ void bind_everyday(nb::class_<py_mesh>& c) {
          "Fills every hole of at most max_size boundary edges (refine and fair as for fill_hole); returns {'filled', 'skipped', "
          "'faces_added', 'vertices_added', 'unfaired'}.")
      .def("subdivide", [](py_mesh& s, const std::string& scheme, std::size_t levels) {
-             if (scheme == "sqrt3")
-                 value_error("subdivide: scheme 'sqrt3' is not supported yet (supported: 'loop', 'catmull-clark')");
-             if (scheme != "loop" && scheme != "catmull-clark")
-                 value_error("subdivide: unknown scheme '" + scheme + "' (supported: 'loop', 'catmull-clark')");
+             if (scheme != "loop" && scheme != "sqrt3" && scheme != "catmull-clark")
+                 value_error("subdivide: unknown scheme '" + scheme + "' (supported: 'loop', 'sqrt3', 'catmull-clark')");
              nb::dict d;
              const auto counts = [&](const auto& r) {
                  d["vertices"] = r.vertices;
@@ -513,12 +512,15 @@ void bind_everyday(nb::class_<py_mesh>& c) {
              };
              if (scheme == "loop")
                  counts(on_copy(s, [&](halfedge_mesh& m) { return hmira::loop_subdivide(m, {.levels = levels}); }));
+             else if (scheme == "sqrt3")
+                 counts(on_copy(s, [&](halfedge_mesh& m) { return hmira::sqrt3_subdivide(m, {.levels = levels}); }));
              else
                  counts(on_copy(s, [&](halfedge_mesh& m) { return hmira::catmull_clark_subdivide(m, {.levels = levels}); }));
              return d;
          }, nb::kw_only(), nb::arg("scheme") = "loop", nb::arg("levels") = 1,
-         "Subdivides `levels` times with `scheme`: 'loop' (triangle meshes) or 'catmull-clark' (any polygon mesh,\n"
-         "boundaries included); returns the counts after the last level.\n\n"
+         "Subdivides `levels` times with `scheme`: 'loop' or 'sqrt3' (triangle meshes) or 'catmull-clark' (any\n"
+         "polygon mesh), boundaries included; returns the counts after the last level. 'sqrt3' refines the\n"
+         "boundary on every second level of a call, so give it an even `levels` for a smooth boundary.\n\n"
          ">>> m = hmira.Mesh([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]], [[0, 1, 2, 3]])\n"
          ">>> m.subdivide(scheme='catmull-clark')\n"
          "{'vertices': 9, 'edges': 12, 'faces': 4}")

@@ -227,14 +227,30 @@ def test_loop_subdivision_counts_and_schemes():
     assert counts(m) == (34, 96, 64)
     assert m.validate() == [] and m.topology().genus == 0
     before = state(m)
-    with pytest.raises(ValueError, match="scheme 'sqrt3' is not supported yet"):
-        m.subdivide(scheme="sqrt3")
     with pytest.raises(ValueError, match="unknown scheme 'butterfly'"):
         m.subdivide(scheme="butterfly")
     q = cube()
     with pytest.raises(ValueError, match="loop_subdivide"):
         q.subdivide()  # quads: Loop needs triangles
     assert state(m) == before and counts(q) == (8, 12, 6)
+
+
+def test_sqrt3_subdivision_counts_positions_and_refusals():
+    m = hmira.Mesh(TETRA_V, TETRA_F)
+    r = m.subdivide(scheme="sqrt3", levels=2)
+    # Each level on a closed mesh: V + F, E + 3F, F * 3 (4, 6, 4 -> 8, 18, 12 -> 20, 54, 36).
+    assert r == {"vertices": 20, "edges": 54, "faces": 36}
+    assert counts(m) == (20, 54, 36)
+    assert m.validate() == [] and m.topology().genus == 0
+    # One triangle, two levels: nine triangles; corner a = (0, 0) of (0,0), (27,0), (0,27)
+    # goes to (4 u + 19 a + 4 z) / 27 = (4, 4) on the boundary's ternary cubic B-spline.
+    t = hmira.Mesh([[0, 0, 0], [27, 0, 0], [0, 27, 0]], [[0, 1, 2]])
+    assert t.subdivide(scheme="sqrt3", levels=2) == {"vertices": 10, "edges": 18, "faces": 9}
+    np.testing.assert_allclose(t.vertices[0], [4, 4, 0], atol=1e-12)
+    q = cube()
+    with pytest.raises(ValueError, match="sqrt3_subdivide: face 0 is not a triangle"):
+        q.subdivide(scheme="sqrt3")
+    assert counts(q) == (8, 12, 6)
 
 
 def test_catmull_clark_counts_on_a_cube_and_an_open_quad():

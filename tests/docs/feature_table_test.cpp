@@ -39,6 +39,7 @@
 #include <hmira/algorithms/decimation/decimate.hpp>
 #include <hmira/algorithms/spatial/aabb_tree.hpp>
 #include <hmira/algorithms/subdivision/catmull_clark.hpp>
+#include <hmira/algorithms/subdivision/sqrt3.hpp>
 #include <hmira/algorithms/subdivision/loop.hpp>
 #include <hmira/algorithms/triangle/triangle.hpp>
 #include <hmira/algorithms/triangulation/triangulate_faces.hpp>
@@ -172,6 +173,7 @@ HMIRA_ROW(row_fill_hole, "fill_hole", "algorithms/holes/fill_hole.hpp", hmira::t
           hmira::fill_hole<M, T>(m, h));
 HMIRA_ROW(row_fill_holes, "fill_holes", "algorithms/holes/fill_hole.hpp", hmira::hole_fillable_mesh, (M & m), hmira::fill_holes<M, T>(m, 3));
 HMIRA_ROW(row_loop, "loop_subdivide", "algorithms/subdivision/loop.hpp", hmira::loop_subdividable_mesh, (M & m), hmira::loop_subdivide<M, T>(m));
+HMIRA_ROW(row_sqrt3, "sqrt3_subdivide", "algorithms/subdivision/sqrt3.hpp", hmira::sqrt3_subdividable_mesh, (M & m), hmira::sqrt3_subdivide<M, T>(m));
 HMIRA_ROW(row_catmull_clark, "catmull_clark_subdivide", "algorithms/subdivision/catmull_clark.hpp", hmira::catmull_clark_subdividable_mesh,
           (M & m), hmira::catmull_clark_subdivide<M, T>(m));
 HMIRA_ROW(row_decimate, "decimate (quadric error)", "algorithms/decimation/decimate.hpp", hmira::decimatable_mesh, (M & m),
@@ -203,7 +205,7 @@ using rows = row_list<row_triangle_solids, row_polygon_solids, row_torus, row_gr
                       row_vertex_normals, row_euler, row_euler_ring, row_split_vertex, row_add_vertex_face, row_edge_primitives,
                       row_remove_face, row_remove_vertex, row_truncate, row_bevel, row_extrude, row_flip_edge, row_split_edge,
                       row_split_face, row_collapse_edge, row_face_triangles, row_triangulate_faces, row_fill_hole, row_fill_holes,
-                      row_loop, row_catmull_clark, row_decimate, row_smooth, row_remesh, row_aabb_tree, row_marching_cubes, row_voxelize, row_delaunay, row_read,
+                      row_loop, row_sqrt3, row_catmull_clark, row_decimate, row_smooth, row_remesh, row_aabb_tree, row_marching_cubes, row_voxelize, row_delaunay, row_read,
                       row_write, row_adapt_brute, row_adapt_indexed>;
 
 // ---- the capabilities of concepts.hpp: one row each -------------------------------------------
@@ -623,6 +625,13 @@ void run_everyday_claims() {
         auto r = hmira::loop_subdivide(m);
         ASSERT_TRUE(r) << title << ": " << r.error().message;
         EXPECT_EQ(vef_counts(m), (counts_t{42, 120, 80})) << title;  // V + E, 2E + 3F, 4F
+        EXPECT_TRUE(valid_closed(m));
+    }
+    if constexpr (row_sqrt3::supported<M>) {
+        auto m = icosahedron<M>();
+        auto r = hmira::sqrt3_subdivide(m);
+        ASSERT_TRUE(r) << title << ": " << r.error().message;
+        EXPECT_EQ(vef_counts(m), (counts_t{32, 90, 60})) << title;  // V + F, E + 3F, 3F
         EXPECT_TRUE(valid_closed(m));
     }
     if constexpr (row_catmull_clark::supported<M>) {

@@ -63,6 +63,23 @@ TEST(cli_subdivide, catmull_clark_of_a_cube_and_of_a_tetrahedron) {
     EXPECT_EQ(t.vertex_count(), 14u);
 }
 
+TEST(cli_subdivide, two_sqrt3_levels_of_a_tetrahedron) {
+    scratch_dir dir;
+    hmira_test::write_bytes(dir / "tet.off", "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n");
+    const auto r = hmira(dir, "subdivide tet.off out.off --scheme sqrt3 -k 2");
+    ASSERT_EQ(r.code, 0) << r.err;
+    hmira::face_vertex_mesh m;
+    ASSERT_TRUE(hmira::io::read_mesh(m, dir / "out.off"));
+    EXPECT_EQ(m.face_count(), 36u);    // 4 * 3 * 3
+    EXPECT_EQ(m.vertex_count(), 20u);  // 4 + 4 faces, then 8 + 12 faces
+    // Valence 3: alpha = 5/9, so corner 0 = (0, 0, 0) moves to 5/27 of its three neighbours
+    // after the first level, keeping the tetrahedron's symmetry about the x = y = z diagonal.
+    const auto p = m.position(hmira::vertex_handle(0));
+    EXPECT_NEAR(p.x, p.y, 1e-12);
+    EXPECT_NEAR(p.y, p.z, 1e-12);
+    EXPECT_GT(p.x, 0.0);
+}
+
 TEST(cli_subdivide, refusals) {
     scratch_dir dir;
     hmira_test::write_bytes(dir / "quad.off", "OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n");

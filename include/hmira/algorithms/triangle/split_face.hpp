@@ -9,6 +9,38 @@
 
 namespace hmira {
 
+namespace detail::triangle_ops {
+
+/// split_face's link changes: joins the isolated vertex w to the three corners of the
+/// triangle of h0 (checked by the caller) and returns w -> target(h0). The triangle keeps
+/// h0; the two new faces take the other two sides. O(1).
+template <class M, class T>
+typename T::halfedge_handle split_face_links(M& mesh, typename T::halfedge_handle h0, typename T::vertex_handle w) {
+    const auto f = T::face(mesh, h0);
+    const auto h1 = T::next(mesh, h0), h2 = T::next(mesh, h1);
+    const auto a = T::target(mesh, h2), b = T::target(mesh, h0), c = T::target(mesh, h1);
+    const auto bw = T::new_edge(mesh, b, w), wb = T::opposite(mesh, bw);
+    const auto cw = T::new_edge(mesh, c, w), wc = T::opposite(mesh, cw);
+    const auto aw = T::new_edge(mesh, a, w), wa = T::opposite(mesh, aw);
+    const auto f1 = T::new_face(mesh), f2 = T::new_face(mesh);
+    auto link = [&](auto x, auto y, auto z, auto face) {
+        T::set_next(mesh, x, y);
+        T::set_next(mesh, y, z);
+        T::set_next(mesh, z, x);
+        T::set_face(mesh, x, face);
+        T::set_face(mesh, y, face);
+        T::set_face(mesh, z, face);
+        T::set_face_halfedge(mesh, face, x);
+    };
+    link(h0, bw, wa, f);
+    link(h1, cw, wb, f1);
+    link(h2, aw, wc, f2);
+    T::set_vertex_halfedge(mesh, w, wb);
+    return wb;
+}
+
+}  // namespace detail::triangle_ops
+
 /// Where split_face puts the new vertex.
 struct split_face_options {
     /// The new vertex's position; by default the triangle's centroid.
@@ -54,24 +86,7 @@ template <class M, class T = default_traits<M>>
 
     using S = typename T::scalar;
     const auto w = T::add_vertex(mesh, vec3<S>{S(p.x), S(p.y), S(p.z)});
-    const auto bw = T::new_edge(mesh, b, w), wb = T::opposite(mesh, bw);
-    const auto cw = T::new_edge(mesh, c, w), wc = T::opposite(mesh, cw);
-    const auto aw = T::new_edge(mesh, a, w), wa = T::opposite(mesh, aw);
-    const auto f1 = T::new_face(mesh), f2 = T::new_face(mesh);
-    auto link = [&](auto x, auto y, auto z, auto face) {
-        T::set_next(mesh, x, y);
-        T::set_next(mesh, y, z);
-        T::set_next(mesh, z, x);
-        T::set_face(mesh, x, face);
-        T::set_face(mesh, y, face);
-        T::set_face(mesh, z, face);
-        T::set_face_halfedge(mesh, face, x);
-    };
-    link(h0, bw, wa, f);
-    link(h1, cw, wb, f1);
-    link(h2, aw, wc, f2);
-    T::set_vertex_halfedge(mesh, w, wb);
-    return split_face_result<M, T>{w, wb};
+    return split_face_result<M, T>{w, dt::split_face_links<M, T>(mesh, h0, w)};
 }
 
 }  // namespace hmira
