@@ -104,10 +104,6 @@ inline unsigned bits2(const std::uint64_t* a, std::size_t i) noexcept {
     if (b != 63) return static_cast<unsigned>((a[w] >> b) & 3u);
     return static_cast<unsigned>((a[w] >> 63) | ((a[w + 1] & 1u) << 1));
 }
-inline std::uint32_t rank(const std::uint64_t* mask, const std::uint32_t* prefix, std::size_t i) noexcept {
-    const std::size_t w = i >> 6, b = i & 63;
-    return prefix[w] + (b ? count_bits(mask[w] & ((std::uint64_t(1) << b) - 1)) : 0);
-}
 
 // Packs one row's classification (bit i set: sample i is inside) and reports NaN samples.
 template <class V>
@@ -284,9 +280,11 @@ private:
     static hmira::error cancelled() { return fail(errc::unsupported, "marching_cubes: cancelled"); }
 
     struct scratch {
-        explicit scratch(std::size_t words) : active(words), cubes(words), masks(8 * words), prefix(8 * (words + 1)) {}
+        explicit scratch(std::size_t words) : active(words), cubes(words), masks(8 * words), ids(8 * 64 * words + 1) {}
         std::vector<std::uint64_t> active, cubes, masks;
-        std::vector<std::uint32_t> prefix;
+        // Per crossing mask q and edge position i, at q * 64 * words + i: the edge's vertex id
+        // (written only where the mask has a bit).
+        std::vector<std::uint32_t> ids;
     };
 
     const std::uint64_t* row(std::size_t j, std::size_t k) const noexcept { return &bits_[(k * ny_ + j) * words_]; }
@@ -484,14 +482,15 @@ private:
 
     template <class S>
     void write_cube_row(std::size_t j, std::size_t k, scratch& s, const case_table& table, indexed_triangles<S>& out) const {
-        // Crossing masks of the rows around this cube row and their running popcounts: the
-        // rank of an edge in its row's mask is its vertex's offset within the row.
+        // The crossing masks of the rows around this cube row. A vertex's id is its row's base
+        // plus its rank in its mask; numbering each mask's bits in one sweep costs a store per
+        // vertex, where ranking every cube corner would cost a bit count (no popcnt
+        // instruction in the x86-64 baseline) per triangle corner.
         if (tbase_[k * ny_ + j + 1] == tbase_[k * ny_ + j]) return;  // no triangles in this cube row
         const std::size_t ra = k * ny_ + j, rb = ra + 1, rc = ra + ny_, rd = rc + 1;
         const std::uint64_t *a = row(j, k), *b = row(j + 1, k), *c = row(j, k + 1), *d = row(j + 1, k + 1);
         std::uint64_t* m = s.masks.data();
-        std::uint32_t* p = s.prefix.data();
-        const std::size_t W = words_;
+        const std::size_t W = words_, stride = 64 * W;
         for (std::size_t w = 0; w < W; ++w) {
             m[0 * W + w] = (a[w] ^ shr1(a, w, W)) & x_valid(w);
             m[1 * W + w] = (b[w] ^ shr1(b, w, W)) & x_valid(w);
@@ -502,11 +501,6 @@ private:
             m[6 * W + w] = a[w] ^ c[w];  // z-edges of row a
             m[7 * W + w] = b[w] ^ d[w];  // z-edges of row b
         }
-        for (int q = 0; q < 8; ++q) {
-            p[q * (W + 1)] = 0;
-            for (std::size_t w = 0; w < W; ++w)
-                p[q * (W + 1) + w + 1] = p[q * (W + 1) + w] + count_bits(m[q * W + w]);
-        }
         const std::uint64_t base[8] = {vbase_[ra],
                                        vbase_[rb],
                                        vbase_[rc],
@@ -515,9 +509,19 @@ private:
                                        vbase_[rc] + xcount_[rc],
                                        vbase_[ra] + xcount_[ra] + ycount_[ra],
                                        vbase_[rb] + xcount_[rb] + ycount_[rb]};
-        // Edge e reads mask edge_mask[e] at i + edge_step[e].
+        std::uint32_t* ids = s.ids.data();
+        for (int q = 0; q < 8; ++q) {
+            auto id = static_cast<std::uint32_t>(base[q]);
+            std::uint32_t* slot = ids + std::size_t(q) * stride;
+            for (std::size_t w = 0; w < W; ++w)
+                for (std::uint64_t bits = m[std::size_t(q) * W + w]; bits; bits &= bits - 1)
+                    slot[w * 64 + static_cast<std::size_t>(std::countr_zero(bits))] = id++;
+        }
+        // Edge e of the cube at i reads mask edge_mask[e] at i + edge_step[e].
         static constexpr int edge_mask[12] = {0, 1, 2, 3, 4, 4, 5, 5, 6, 6, 7, 7};
         static constexpr int edge_step[12] = {0, 0, 0, 0, 0, 1, 0, 1, 0, 1, 0, 1};
+        std::size_t edge_at[12];
+        for (int e = 0; e < 12; ++e) edge_at[e] = std::size_t(edge_mask[e]) * stride + std::size_t(edge_step[e]);
         std::size_t t = tbase_[ra];
         std::size_t center = vbase_[ra] + xcount_[ra] + ycount_[ra] + zcount_[ra];
         for_each_active_cube(j, k, s, [&](std::size_t i, unsigned config) {
@@ -527,15 +531,17 @@ private:
                 id[center_vertex] = static_cast<std::uint32_t>(center);
                 write_center(center++, i, j, k, entry.center_loop, out);
             }
+            const std::uint32_t* at = ids + i;
             for (unsigned crossed = table.crossed_edges[config]; crossed; crossed &= crossed - 1) {
                 const int e = std::countr_zero(crossed);
-                const int q = edge_mask[e];
-                id[e] = static_cast<std::uint32_t>(base[q] + rank(m + q * W, p + q * (W + 1), i + std::size_t(edge_step[e])));
+                id[e] = at[edge_at[e]];
             }
-            for (unsigned n = 0; n < entry.count; ++n) {
-                if (tags_) (*tags_->triangle_cubes)[t] = tags_->cube_key(i, j, k);
-                out.triangles[t++] = {id[entry.edges[3 * n]], id[entry.edges[3 * n + 1]], id[entry.edges[3 * n + 2]]};
-            }
+            auto* dst = out.triangles.data() + t;
+            for (unsigned n = 0; n < entry.count; ++n)
+                dst[n] = {id[entry.edges[3 * n]], id[entry.edges[3 * n + 1]], id[entry.edges[3 * n + 2]]};
+            if (tags_)
+                for (unsigned n = 0; n < entry.count; ++n) (*tags_->triangle_cubes)[t + n] = tags_->cube_key(i, j, k);
+            t += entry.count;
         });
     }
 
