@@ -60,14 +60,34 @@ struct indexed_triangles {
 
 namespace detail::mc {
 
+/// Where a block writes straight into the whole grid's result (marching_cubes_blocks.hpp,
+/// write_block_into): the global index of the first vertex of every run of one sample row,
+/// axis and chunk column, and of the first triangle of every cube row and chunk column, in the
+/// whole grid's order. A block writes the vertices it owns and its triangles; the vertices on
+/// its high faces are written by their owners, and their ids read from the same tables.
+struct global_layout {
+    const std::uint32_t* vertex_start = nullptr;    ///< at ((gk * ny + gj) * 4 + axis) * columns + column
+    const std::uint32_t* triangle_start = nullptr;  ///< at (gk * ny + gj) * columns + column
+    std::size_t columns = 1;                        ///< chunks along x
+    std::size_t column = 0;                         ///< this block's chunk along x
+    std::size_t own_x = 0, own_y = 0, own_z = 0;    ///< the block's owned samples per axis, [0, own)
+    double* positions = nullptr;                    ///< 3 per vertex of the whole result
+    std::uint32_t* triangles = nullptr;             ///< 3 per triangle of the whole result
+    bool swap_xz = false;                           ///< write (z, y, x) and reverse triangles (C-ordered arrays)
+};
+
 /// Where a block lies in a larger grid, and where the extractor records the global keys of
-/// what it writes (marching_cubes_blocks.hpp). Positions then use global sample indices, so
-/// they are bit for bit those of the whole grid.
+/// what it writes (marching_cubes_blocks.hpp), or, with `layout`, the global places it writes
+/// to. Positions then use global sample indices, so they are bit for bit those of the whole grid.
 struct block_tags {
     std::array<std::size_t, 3> offset{0, 0, 0};  ///< global index of the block's sample (0, 0, 0)
     std::array<std::size_t, 3> whole{0, 0, 0};   ///< dimensions of the whole grid
     std::vector<std::uint64_t>* vertex_keys = nullptr;    ///< one per output vertex
     std::vector<std::uint64_t>* triangle_cubes = nullptr;  ///< one per output triangle
+    const global_layout* layout = nullptr;                 ///< write into the whole result instead
+    bool count_only = false;                               ///< stop after counting (see owned_counts())
+    /// The global row index of local row (j, k).
+    std::size_t global_row(std::size_t j, std::size_t k) const noexcept { return (k + offset[2]) * whole[1] + (j + offset[1]); }
     /// Vertices sort by key exactly as the whole grid orders them: rows (z, y), then x-, y-,
     /// z-edges and cube centres (axis 3), each by increasing x.
     std::uint64_t vertex_key(std::size_t i, std::size_t j, std::size_t k, int axis) const noexcept {
@@ -253,10 +273,14 @@ public:
             return fail(errc::unsupported, "marching_cubes: more than 2^32 - 1 vertices");
 
         indexed_triangles<S> out;
-        out.positions.resize(vbase_[rows]);
-        out.triangles.resize(tbase_[rows]);
+        if (tags_ && tags_->count_only) return out;
+        layout_ = tags_ ? tags_->layout : nullptr;
+        if (!layout_) {
+            out.positions.resize(vbase_[rows]);
+            out.triangles.resize(tbase_[rows]);
+        }
         if (opt_.normals) out.normals.resize(vbase_[rows]);
-        if (tags_) {
+        if (tags_ && !layout_) {
             tags_->vertex_keys->resize(vbase_[rows]);
             tags_->triangle_cubes->resize(tbase_[rows]);
         }
@@ -274,6 +298,28 @@ public:
         });
         if (gate.cancelled()) return cancelled();
         return out;
+    }
+
+    /// After run() with count_only: calls f(j, k, vertices[4], triangles) for every row (j, k)
+    /// the block owns (j < own_y, k < own_z), with its owned vertices per axis (x-, y-, z-edges
+    /// with i < own_x, centres) and its cube row's triangles.
+    template <class F>
+    void owned_counts(std::size_t own_x, std::size_t own_y, std::size_t own_z, const F& f) const {
+        for (std::size_t k = 0; k < own_z && k < nz_; ++k)
+            for (std::size_t j = 0; j < own_y && j < ny_; ++j) {
+                const std::size_t r = k * ny_ + j;
+                std::uint64_t yc = ycount_[r], zc = zcount_[r];
+                // The edges at the last sample of the block lie on the next chunk along x.
+                if (own_x < nx_) {
+                    const std::size_t i = own_x, w = i >> 6, b = i & 63;
+                    const std::uint64_t* a = row(j, k);
+                    if (j + 1 < ny_) yc -= ((a[w] ^ row(j + 1, k)[w]) >> b) & 1;
+                    if (k + 1 < nz_) zc -= ((a[w] ^ row(j, k + 1)[w]) >> b) & 1;
+                }
+                const std::uint64_t all = vbase_[r + 1] - vbase_[r];
+                const std::uint64_t counts[4] = {xcount_[r], yc, zc, all - xcount_[r] - ycount_[r] - zcount_[r]};
+                f(j, k, counts, tbase_[r + 1] - tbase_[r]);
+            }
     }
 
 private:
@@ -424,6 +470,13 @@ private:
 
     template <class S>
     void store(std::size_t id, const vec3<double>& p, const vec3<double>* n, indexed_triangles<S>& out) const {
+        if (layout_) {
+            double* dst = layout_->positions + 3 * id;
+            dst[0] = layout_->swap_xz ? p.z : p.x;
+            dst[1] = p.y;
+            dst[2] = layout_->swap_xz ? p.x : p.z;
+            return;
+        }
         out.positions[id] = {static_cast<S>(p.x), static_cast<S>(p.y), static_cast<S>(p.z)};
         if (n) {
             const auto u = normalized(*n);
@@ -437,7 +490,7 @@ private:
         const bool normals = !out.normals.empty();
         edge_point(i, j, k, axis, p, normals ? &n : nullptr);
         store(id, p, normals ? &n : nullptr, out);
-        if (tags_) (*tags_->vertex_keys)[id] = tags_->vertex_key(i, j, k, axis);
+        if (tags_ && !layout_) (*tags_->vertex_keys)[id] = tags_->vertex_key(i, j, k, axis);
     }
 
     // The extra vertex of a loop that needs one: the mean of the loop's crossings.
@@ -457,7 +510,7 @@ private:
         }
         sum_p /= count;
         store(id, sum_p, normals ? &sum_n : nullptr, out);
-        if (tags_) (*tags_->vertex_keys)[id] = tags_->vertex_key(i, j, k, 3);
+        if (tags_ && !layout_) (*tags_->vertex_keys)[id] = tags_->vertex_key(i, j, k, 3);
     }
 
     template <class S>
@@ -465,12 +518,18 @@ private:
         const std::size_t r = k * ny_ + j;
         std::size_t id = vbase_[r];
         const std::uint64_t* a = row(j, k);
+        // Writing into the whole result: only the rows and samples the block owns, at the
+        // global start of their run.
+        if (layout_ && (j >= layout_->own_y || k >= layout_->own_z)) return;
+        const std::size_t own_x = layout_ ? layout_->own_x : nx_;
         auto emit = [&](auto mask_of, int axis) {
+            if (layout_) id = layout_start(j, k, axis, layout_->column);
             for (std::size_t w = 0; w < words_; ++w) {
                 std::uint64_t m = mask_of(w);
                 while (m) {
                     const std::size_t i = w * 64 + static_cast<std::size_t>(std::countr_zero(m));
                     m &= m - 1;
+                    if (i >= own_x) return;
                     write_vertex(id++, i, j, k, axis, out);
                 }
             }
@@ -510,12 +569,29 @@ private:
                                        vbase_[ra] + xcount_[ra] + ycount_[ra],
                                        vbase_[rb] + xcount_[rb] + ycount_[rb]};
         std::uint32_t* ids = s.ids.data();
-        for (int q = 0; q < 8; ++q) {
-            auto id = static_cast<std::uint32_t>(base[q]);
-            std::uint32_t* slot = ids + std::size_t(q) * stride;
-            for (std::size_t w = 0; w < W; ++w)
-                for (std::uint64_t bits = m[std::size_t(q) * W + w]; bits; bits &= bits - 1)
-                    slot[w * 64 + static_cast<std::size_t>(std::countr_zero(bits))] = id++;
+        if (layout_) {
+            // Ids in the whole result: the global start of each mask's run in this chunk
+            // column; an edge at the block's last sample along x is the first of the next's.
+            static constexpr int mask_row[8][2] = {{0, 0}, {1, 0}, {0, 1}, {1, 1}, {0, 0}, {0, 1}, {0, 0}, {1, 0}};
+            static constexpr int mask_axis[8] = {0, 0, 0, 0, 1, 1, 2, 2};
+            for (int q = 0; q < 8; ++q) {
+                const std::size_t qj = j + std::size_t(mask_row[q][0]), qk = k + std::size_t(mask_row[q][1]);
+                auto id = layout_start(qj, qk, mask_axis[q], layout_->column);
+                std::uint32_t* slot = ids + std::size_t(q) * stride;
+                for (std::size_t w = 0; w < W; ++w)
+                    for (std::uint64_t bits = m[std::size_t(q) * W + w]; bits; bits &= bits - 1) {
+                        const std::size_t i = w * 64 + static_cast<std::size_t>(std::countr_zero(bits));
+                        slot[i] = i < layout_->own_x ? id++ : layout_start(qj, qk, mask_axis[q], layout_->column + 1);
+                    }
+            }
+        } else {
+            for (int q = 0; q < 8; ++q) {
+                auto id = static_cast<std::uint32_t>(base[q]);
+                std::uint32_t* slot = ids + std::size_t(q) * stride;
+                for (std::size_t w = 0; w < W; ++w)
+                    for (std::uint64_t bits = m[std::size_t(q) * W + w]; bits; bits &= bits - 1)
+                        slot[w * 64 + static_cast<std::size_t>(std::countr_zero(bits))] = id++;
+            }
         }
         // Edge e of the cube at i reads mask edge_mask[e] at i + edge_step[e].
         static constexpr int edge_mask[12] = {0, 1, 2, 3, 4, 4, 5, 5, 6, 6, 7, 7};
@@ -524,6 +600,10 @@ private:
         for (int e = 0; e < 12; ++e) edge_at[e] = std::size_t(edge_mask[e]) * stride + std::size_t(edge_step[e]);
         std::size_t t = tbase_[ra];
         std::size_t center = vbase_[ra] + xcount_[ra] + ycount_[ra] + zcount_[ra];
+        if (layout_) {
+            t = layout_->triangle_start[tags_->global_row(j, k) * layout_->columns + layout_->column];
+            center = layout_start(j, k, 3, layout_->column);
+        }
         for_each_active_cube(j, k, s, [&](std::size_t i, unsigned config) {
             const auto& entry = table.entries[table.first[config] + decide(i, j, k, config)];
             std::uint32_t id[13];
@@ -535,6 +615,18 @@ private:
             for (unsigned crossed = table.crossed_edges[config]; crossed; crossed &= crossed - 1) {
                 const int e = std::countr_zero(crossed);
                 id[e] = at[edge_at[e]];
+            }
+            if (layout_) {
+                // Reversed with swap_xz: swapping two axes mirrors the surface.
+                const int second = layout_->swap_xz ? 2 : 1, third = 3 - second;
+                std::uint32_t* dst = layout_->triangles + 3 * t;
+                for (unsigned n = 0; n < entry.count; ++n) {
+                    dst[3 * n] = id[entry.edges[3 * n]];
+                    dst[3 * n + 1] = id[entry.edges[3 * n + std::size_t(second)]];
+                    dst[3 * n + 2] = id[entry.edges[3 * n + std::size_t(third)]];
+                }
+                t += entry.count;
+                return;
             }
             auto* dst = out.triangles.data() + t;
             for (unsigned n = 0; n < entry.count; ++n)
@@ -551,6 +643,10 @@ private:
     std::size_t nx_ = 0, ny_ = 0, nz_ = 0, words_ = 0;
     bool above_ = false;
     const block_tags* tags_ = nullptr;
+    const global_layout* layout_ = nullptr;
+    std::uint32_t layout_start(std::size_t j, std::size_t k, int axis, std::size_t column) const noexcept {
+        return layout_->vertex_start[(tags_->global_row(j, k) * 4 + std::size_t(axis)) * layout_->columns + column];
+    }
     std::vector<std::uint64_t> bits_;
     std::vector<std::uint32_t> xcount_, ycount_, zcount_;
     std::vector<std::uint64_t> vbase_, tbase_;
