@@ -76,6 +76,14 @@ struct global_layout {
     bool swap_xz = false;                           ///< write (z, y, x) and reverse triangles (C-ordered arrays)
 };
 
+/// What the counting passes of the extractor leave for the writing pass: the bit rows, the
+/// crossings per row and axis, and the rows' first vertices and triangles.
+struct counted_state {
+    std::vector<std::uint64_t> bits;                 ///< one bit per sample, rows of whole words
+    std::vector<std::uint32_t> xcount, ycount, zcount;  ///< crossed edges per row and axis
+    std::vector<std::uint64_t> vbase, tbase;         ///< first vertex and triangle per row (prefix sums)
+};
+
 /// Where a block lies in a larger grid, and where the extractor records the global keys of
 /// what it writes (marching_cubes_blocks.hpp), or, with `layout`, the global places it writes
 /// to. Positions then use global sample indices, so they are bit for bit those of the whole grid.
@@ -195,6 +203,14 @@ public:
         words_ = (nx_ + 63) / 64;
         above_ = o.inside == iso_inside::above;
         if constexpr (contiguous_voxel_grid<G>) data_ = grid.data();
+        sy_ = nx_;
+        sz_ = nx_ * ny_;
+        // A block seen in place inside a larger array: rows and slices farther apart.
+        if constexpr (requires { grid.strides(); }) {
+            const auto st = grid.strides();
+            sy_ = st[0];
+            sz_ = st[1];
+        }
     }
     /// Makes the extractor work as one block of a larger grid; `tags` outlives run().
     void set_block(const block_tags* tags) noexcept { tags_ = tags; }
@@ -202,17 +218,95 @@ public:
     template <class S>
     result<indexed_triangles<S>> run() {
         const std::size_t rows = ny_ * nz_;
+        const auto& table = mc::table();
+        progress_gate gate(opt_.progress, 3 * nz_);
+        // Counted before (count_only, then keep_counts()): only the writing pass is left.
+        if (!reuse_)
+            if (auto counted = count(gate); !counted) return counted.error();
+
+        indexed_triangles<S> out;
+        if (tags_ && tags_->count_only) return out;
+        layout_ = tags_ ? tags_->layout : nullptr;
+        if (!layout_) {
+            out.positions.resize(vbase_[rows]);
+            out.triangles.resize(tbase_[rows]);
+        }
+        if (opt_.normals) out.normals.resize(vbase_[rows]);
+        if (tags_ && !layout_) {
+            tags_->vertex_keys->resize(vbase_[rows]);
+            tags_->triangle_cubes->resize(tbase_[rows]);
+        }
+
+        // Pass 3: every row writes its vertices and its cubes' triangles into the slots
+        // counted above, so the output order is the same whatever the schedule.
+        parallel_chunks(nz_, 1, [&](std::size_t k0, std::size_t k1) {
+            scratch s(words_);
+            for (std::size_t k = k0; k < k1 && gate.advance(); ++k)
+                for (std::size_t j = 0; j < ny_; ++j) {
+                    if (j + prefetch_distance < ny_) prefetch_row(j + prefetch_distance, k);
+                    write_row_vertices(j, k, out);
+                    if (j + 1 < ny_ && k + 1 < nz_) write_cube_row(j, k, s, table, out);
+                }
+        });
+        if (gate.cancelled()) return cancelled();
+        return out;
+    }
+
+    /// After run() with count_only: hands the counted rows over, so that an extractor of the
+    /// same samples can write without counting again (reuse_counts()).
+    void keep_counts(counted_state& state) {
+        state = {std::move(bits_), std::move(xcount_), std::move(ycount_), std::move(zcount_), std::move(vbase_), std::move(tbase_)};
+    }
+    /// Takes the counts keep_counts() handed over from an extractor of the same samples and
+    /// options; run() then only writes.
+    void reuse_counts(counted_state&& state) {
+        bits_ = std::move(state.bits);
+        xcount_ = std::move(state.xcount);
+        ycount_ = std::move(state.ycount);
+        zcount_ = std::move(state.zcount);
+        vbase_ = std::move(state.vbase);
+        tbase_ = std::move(state.tbase);
+        reuse_ = true;
+    }
+
+    /// After run() with count_only: calls f(j, k, vertices[4], triangles) for every row (j, k)
+    /// the block owns (j < own_y, k < own_z), with its owned vertices per axis (x-, y-, z-edges
+    /// with i < own_x, centres) and its cube row's triangles.
+    template <class F>
+    void owned_counts(std::size_t own_x, std::size_t own_y, std::size_t own_z, const F& f) const {
+        for (std::size_t k = 0; k < own_z && k < nz_; ++k)
+            for (std::size_t j = 0; j < own_y && j < ny_; ++j) {
+                const std::size_t r = k * ny_ + j;
+                std::uint64_t yc = ycount_[r], zc = zcount_[r];
+                // The edges at the last sample of the block lie on the next chunk along x.
+                if (own_x < nx_) {
+                    const std::size_t i = own_x, w = i >> 6, b = i & 63;
+                    const std::uint64_t* a = row(j, k);
+                    if (j + 1 < ny_) yc -= ((a[w] ^ row(j + 1, k)[w]) >> b) & 1;
+                    if (k + 1 < nz_) zc -= ((a[w] ^ row(j, k + 1)[w]) >> b) & 1;
+                }
+                const std::uint64_t all = vbase_[r + 1] - vbase_[r];
+                const std::uint64_t counts[4] = {xcount_[r], yc, zc, all - xcount_[r] - ycount_[r] - zcount_[r]};
+                f(j, k, counts, tbase_[r + 1] - tbase_[r]);
+            }
+    }
+
+private:
+    static hmira::error cancelled() { return fail(errc::unsupported, "marching_cubes: cancelled"); }
+
+    // Passes 1 and 2 of run(): classify, count, and lay out the rows' vertices and triangles.
+    result<void> count(progress_gate& gate) {
+        const std::size_t rows = ny_ * nz_;
+        const auto& table = mc::table();
         bits_.assign(rows * words_, 0);
         xcount_.assign(rows, 0);
         ycount_.assign(rows, 0);
         zcount_.assign(rows, 0);
         vbase_.assign(rows + 1, 0);
         tbase_.assign(rows + 1, 0);
-        const auto& table = mc::table();
 
         // Pass 1: classify every sample into bit rows.
         std::vector<std::uint8_t> nan_in_slab(nz_, 0);
-        progress_gate gate(opt_.progress, 3 * nz_);
         parallel_chunks(nz_, 1, [&](std::size_t k0, std::size_t k1) {
             std::vector<double> buffer;
             for (std::size_t k = k0; k < k1 && gate.advance(); ++k)
@@ -220,7 +314,7 @@ public:
                     std::uint64_t* out = &bits_[(k * ny_ + j) * words_];
                     bool nan;
                     if constexpr (contiguous_voxel_grid<G>) {
-                        nan = classify_row(data_ + nx_ * (j + ny_ * k), nx_, opt_.iso, above_, out);
+                        nan = classify_row(data_ + j * sy_ + k * sz_, nx_, opt_.iso, above_, out);
                     } else {
                         buffer.resize(nx_);
                         for (std::size_t i = 0; i < nx_; ++i) buffer[i] = static_cast<double>(grid_.value(i, j, k));
@@ -272,58 +366,9 @@ public:
         if (vbase_[rows] > std::numeric_limits<std::uint32_t>::max())
             return fail(errc::unsupported, "marching_cubes: more than 2^32 - 1 vertices");
 
-        indexed_triangles<S> out;
-        if (tags_ && tags_->count_only) return out;
-        layout_ = tags_ ? tags_->layout : nullptr;
-        if (!layout_) {
-            out.positions.resize(vbase_[rows]);
-            out.triangles.resize(tbase_[rows]);
-        }
-        if (opt_.normals) out.normals.resize(vbase_[rows]);
-        if (tags_ && !layout_) {
-            tags_->vertex_keys->resize(vbase_[rows]);
-            tags_->triangle_cubes->resize(tbase_[rows]);
-        }
-
-        // Pass 3: every row writes its vertices and its cubes' triangles into the slots
-        // counted above, so the output order is the same whatever the schedule.
-        parallel_chunks(nz_, 1, [&](std::size_t k0, std::size_t k1) {
-            scratch s(words_);
-            for (std::size_t k = k0; k < k1 && gate.advance(); ++k)
-                for (std::size_t j = 0; j < ny_; ++j) {
-                    if (j + prefetch_distance < ny_) prefetch_row(j + prefetch_distance, k);
-                    write_row_vertices(j, k, out);
-                    if (j + 1 < ny_ && k + 1 < nz_) write_cube_row(j, k, s, table, out);
-                }
-        });
-        if (gate.cancelled()) return cancelled();
-        return out;
+        return {};
     }
 
-    /// After run() with count_only: calls f(j, k, vertices[4], triangles) for every row (j, k)
-    /// the block owns (j < own_y, k < own_z), with its owned vertices per axis (x-, y-, z-edges
-    /// with i < own_x, centres) and its cube row's triangles.
-    template <class F>
-    void owned_counts(std::size_t own_x, std::size_t own_y, std::size_t own_z, const F& f) const {
-        for (std::size_t k = 0; k < own_z && k < nz_; ++k)
-            for (std::size_t j = 0; j < own_y && j < ny_; ++j) {
-                const std::size_t r = k * ny_ + j;
-                std::uint64_t yc = ycount_[r], zc = zcount_[r];
-                // The edges at the last sample of the block lie on the next chunk along x.
-                if (own_x < nx_) {
-                    const std::size_t i = own_x, w = i >> 6, b = i & 63;
-                    const std::uint64_t* a = row(j, k);
-                    if (j + 1 < ny_) yc -= ((a[w] ^ row(j + 1, k)[w]) >> b) & 1;
-                    if (k + 1 < nz_) zc -= ((a[w] ^ row(j, k + 1)[w]) >> b) & 1;
-                }
-                const std::uint64_t all = vbase_[r + 1] - vbase_[r];
-                const std::uint64_t counts[4] = {xcount_[r], yc, zc, all - xcount_[r] - ycount_[r] - zcount_[r]};
-                f(j, k, counts, tbase_[r + 1] - tbase_[r]);
-            }
-    }
-
-private:
-    static hmira::error cancelled() { return fail(errc::unsupported, "marching_cubes: cancelled"); }
 
     struct scratch {
         explicit scratch(std::size_t words) : active(words), cubes(words), masks(8 * words), ids(8 * 64 * words + 1) {}
@@ -351,10 +396,10 @@ private:
                 while (lines) {
                     const std::size_t i = w * 64 + static_cast<std::size_t>(std::countr_zero(lines));
                     lines &= lines - 1;
-                    const auto* p = data_ + i + nx_ * (j + ny_ * k);
+                    const auto* p = data_ + i + j * sy_ + k * sz_;
                     __builtin_prefetch(p);
-                    if (b != a) __builtin_prefetch(p + nx_);
-                    if (c != a) __builtin_prefetch(p + nx_ * ny_);
+                    if (b != a) __builtin_prefetch(p + sy_);
+                    if (c != a) __builtin_prefetch(p + sz_);
                 }
             }
         }
@@ -368,7 +413,7 @@ private:
     }
 
     double value(std::size_t i, std::size_t j, std::size_t k) const {
-        if constexpr (contiguous_voxel_grid<G>) return static_cast<double>(data_[i + nx_ * (j + ny_ * k)]);
+        if constexpr (contiguous_voxel_grid<G>) return static_cast<double>(data_[i + j * sy_ + k * sz_]);
         else return static_cast<double>(grid_.value(i, j, k));
     }
     // Positive inside, negative outside (0 counts as inside).
@@ -641,9 +686,11 @@ private:
     marching_cubes_options opt_;
     const typename G::value_type* data_ = nullptr;
     std::size_t nx_ = 0, ny_ = 0, nz_ = 0, words_ = 0;
+    std::size_t sy_ = 0, sz_ = 0;  // samples from one row to the next, and from one slice to the next
     bool above_ = false;
     const block_tags* tags_ = nullptr;
     const global_layout* layout_ = nullptr;
+    bool reuse_ = false;
     std::uint32_t layout_start(std::size_t j, std::size_t k, int axis, std::size_t column) const noexcept {
         return layout_->vertex_start[(tags_->global_row(j, k) * 4 + std::size_t(axis)) * layout_->columns + column];
     }

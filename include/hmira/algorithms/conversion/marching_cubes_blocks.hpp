@@ -132,6 +132,7 @@ struct block_counts {
     grid_dims own{0, 0, 0};                ///< owned samples per axis
     std::vector<std::uint32_t> vertices;   ///< 4 per owned row
     std::vector<std::uint32_t> triangles;  ///< 1 per owned row
+    detail::mc::counted_state counted;     ///< the block's counted rows, for write_block_into() to reuse
 };
 
 /// The checks of marching_cubes_block(); an empty message when the block may be meshed.
@@ -171,12 +172,13 @@ result<block_counts> count_block(const G& block, const grid_block& where, const 
         detail::mc::extractor<G> ex(block, mc);
         ex.set_block(&tags);
         tri = ex.template run<double>();
-        if (tri)
-            ex.owned_counts(out.own[0], out.own[1], out.own[2], [&](std::size_t j, std::size_t k, const std::uint64_t* v, std::uint64_t t) {
-                const std::size_t r = k * out.own[1] + j;
-                for (int a = 0; a < 4; ++a) out.vertices[4 * r + std::size_t(a)] = std::uint32_t(v[a]);
-                out.triangles[r] = std::uint32_t(t);
-            });
+        if (!tri) return;
+        ex.owned_counts(out.own[0], out.own[1], out.own[2], [&](std::size_t j, std::size_t k, const std::uint64_t* v, std::uint64_t t) {
+            const std::size_t r = k * out.own[1] + j;
+            for (int a = 0; a < 4; ++a) out.vertices[4 * r + std::size_t(a)] = std::uint32_t(v[a]);
+            out.triangles[r] = std::uint32_t(t);
+        });
+        ex.keep_counts(out.counted);
     });
     if (!tri) return fail(tri.error().code, who + ": " + tri.error().message, tri.error().element);
     return out;
@@ -184,11 +186,14 @@ result<block_counts> count_block(const G& block, const grid_block& where, const 
 
 /// Writes the block's owned vertices and its triangles into `layout`'s whole result, at the
 /// places its tables give (built from every block's count_block()). O(N + V + T) for its N
-/// samples, V vertices and T triangles. Errors: those of marching_cubes_block().
-/// \pre the tables were built from this chunking of this grid with the same options.
+/// samples, V vertices and T triangles; with `counted` (this block's count_block() result,
+/// whose counted rows it takes), O(V + T + R) for R rows: the counting is not repeated.
+/// Errors: those of marching_cubes_block().
+/// \pre the tables were built from this chunking of this grid with the same options, and
+/// `counted`, if given, by count_block() of this block.
 template <voxel_grid G>
 result<void> write_block_into(const G& block, const grid_block& where, detail::mc::global_layout layout,
-                              const marching_cubes_block_options& options = {}) {
+                              const marching_cubes_block_options& options = {}, block_counts* counted = nullptr) {
     const std::string who = "marching_cubes_block at (" + std::to_string(where.offset[0]) + ", " + std::to_string(where.offset[1]) +
                             ", " + std::to_string(where.offset[2]) + ")";
     if (auto bad = check_block(block, where, options.iso, who); !bad.empty()) return fail(errc::invalid_argument, bad);
@@ -203,6 +208,7 @@ result<void> write_block_into(const G& block, const grid_block& where, detail::m
     detail::with_thread_count(options.threads, [&] {
         detail::mc::extractor<G> ex(block, mc);
         ex.set_block(&tags);
+        if (counted && !counted->counted.vbase.empty()) ex.reuse_counts(std::move(counted->counted));
         tri = ex.template run<double>();
     });
     if (!tri) return fail(tri.error().code, who + ": " + tri.error().message, tri.error().element);
