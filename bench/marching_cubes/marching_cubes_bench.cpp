@@ -120,6 +120,7 @@ int main(int argc, char** argv) {
             ->Arg(2)
             ->Unit(benchmark::kMillisecond)
             ->MinTime(0.5)
+            ->MeasureProcessCPUTime()  // CPU time of all threads: the steady figure on a shared machine
             ->UseRealTime();
     benchmark::Initialize(&argc, argv);
     benchmark::RunSpecifiedBenchmarks();
