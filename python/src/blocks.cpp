@@ -175,8 +175,8 @@ struct block_input {
             using V = decltype(tag);
             if (const std::byte* base = in_place(sizeof(V))) {
                 const auto* samples = reinterpret_cast<const V*>(base);
-                f(c_block<V>{samples, size, origin_xyz, step_xyz, {std::size_t(parts[0].stride(1)), std::size_t(parts[0].stride(0))}}, where,
-                  options);
+                const std::array<std::size_t, 2> rows{std::size_t(parts[0].stride(1)), std::size_t(parts[0].stride(0))};
+                f(c_block<V>{samples, size, origin_xyz, step_xyz, rows}, where, options);
                 return;
             }
             const auto* samples = reinterpret_cast<const V*>(paste(parts, at, shape, sizeof(V)));
@@ -272,7 +272,8 @@ void write_block(const std::vector<part_array>& parts, double iso, const std::ve
                  layout_holder& layout, counts_holder* counted) {
     const block_input in(parts, iso, steps, core, offset, whole, spacing, origin, inside, 1);
     if (in.where.whole != layout.whole) value_error("write_block: the block's whole grid differs from the layout's");
-    const auto column = std::size_t(std::find(layout.x_starts.begin(), layout.x_starts.end(), in.where.offset[0]) - layout.x_starts.begin());
+    const auto& xs = layout.x_starts;
+    const auto column = std::size_t(std::find(xs.begin(), xs.end(), in.where.offset[0]) - xs.begin());
     if (column == layout.x_starts.size()) value_error("write_block: the block is off the layout's x chunking");
     const hmira::detail::mc::global_layout g{.vertex_start = layout.tables.vertex_start.data(),
                                              .triangle_start = layout.tables.triangle_start.data(),

@@ -144,8 +144,10 @@ hmira::indexed_triangles<double> direct_of(const hmira::dense_grid<float>& grid,
         auto r = direct::write_block_into(*view, {.offset = lo[b], .whole = n}, where, o, (rng() & 1) ? &counts[b] : nullptr);
         EXPECT_TRUE(r) << r.error().message;
     }
-    for (std::size_t v = 0; v < tables->vertices; ++v) out.positions.push_back({positions[3 * v], positions[3 * v + 1], positions[3 * v + 2]});
-    for (std::size_t t = 0; t < tables->triangles; ++t) out.triangles.push_back({triangles[3 * t], triangles[3 * t + 1], triangles[3 * t + 2]});
+    for (std::size_t v = 0; v < tables->vertices; ++v)
+        out.positions.push_back({positions[3 * v], positions[3 * v + 1], positions[3 * v + 2]});
+    for (std::size_t t = 0; t < tables->triangles; ++t)
+        out.triangles.push_back({triangles[3 * t], triangles[3 * t + 1], triangles[3 * t + 2]});
     return out;
 }
 
@@ -186,7 +188,8 @@ void check_chunkings(const hmira::dense_grid<float>& grid, const hmira::marching
         }
         ASSERT_EQ(direct.positions.size(), expected.positions.size()) << name << " " << label << " direct";
         ASSERT_EQ(direct.triangles.size(), expected.triangles.size()) << name << " " << label << " direct";
-        EXPECT_EQ(std::memcmp(direct.positions.data(), expected.positions.data(), expected.positions.size() * sizeof(expected.positions[0])), 0)
+        const std::size_t bytes = expected.positions.size() * sizeof(expected.positions[0]);
+        EXPECT_EQ(std::memcmp(direct.positions.data(), expected.positions.data(), bytes), 0)
             << name << " " << label << " direct: positions differ";
         EXPECT_TRUE(direct.triangles == expected.triangles) << name << " " << label << " direct: triangles differ";
     };

@@ -238,7 +238,8 @@ inline result<layout_tables> make_layout(const grid_dims& whole, std::span<const
     for (std::size_t b = 0; b < counts.size(); ++b) {
         const auto& c = counts[b];
         const auto column = std::size_t(std::find(x_starts.begin(), x_starts.end(), offsets[b][0]) - x_starts.begin());
-        if (column == mx) return fail(errc::invalid_argument, "marching_cubes blocks: block " + std::to_string(b) + " is off the x chunking");
+        if (column == mx)
+            return fail(errc::invalid_argument, "marching_cubes blocks: block " + std::to_string(b) + " is off the x chunking");
         for (std::size_t k = 0; k < c.own[2]; ++k)
             for (std::size_t j = 0; j < c.own[1]; ++j) {
                 const std::size_t r = k * c.own[1] + j, g = (offsets[b][2] + k) * whole[1] + offsets[b][1] + j;
