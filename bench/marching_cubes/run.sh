@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Marching cubes, hmira against vtkFlyingEdges3D, vtkMarchingCubes, scikit-image and PyMCubes,
 # in one run on the same volumes and thread counts. Usage (from anywhere):
-#   bench/marching_cubes/run.sh            # builds into build-bench, prints a markdown table
+#   bench/marching_cubes/run.sh            # builds into build-bench, prints markdown tables (wall, then CPU)
 # Needs scripts/install-deps.sh to have run; creates the peers' venv and test data itself.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/../.." && pwd)"
@@ -15,3 +15,6 @@ trap 'rm -rf "$work"' EXIT
 export HMIRA_TEST_DATA="$root/build/test-data"
 "$build/bench/marching_cubes/bench_marching_cubes" --export "$work/volumes"
 "$py" "$root/bench/marching_cubes/peers.py" "$work/volumes" "$build/bench/marching_cubes/bench_marching_cubes" 1 2
+# The same volumes against vtkFlyingEdges3D in CPU time (all threads), medians of 7: on a shared
+# machine the wall times above mostly measure the other processes.
+"$py" "$root/bench/marching_cubes/cpu_side_by_side.py" "$work/volumes" "$build/bench/marching_cubes/bench_marching_cubes" 7 1 2 2>/dev/null

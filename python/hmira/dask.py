@@ -6,9 +6,13 @@ grid edge it lies on, or the cube of an extra centre vertex), so the chunks weld
 exactly the mesh that :func:`hmira.marching_cubes` gives on the whole (C-ordered) array: the
 same vertices in the same order, bit for bit, and the same triangles, whatever the chunking.
 
-The mesh is merged in two ways:
+The result is put together in three ways:
 
-* ``out=None``: the client gathers every chunk's keyed mesh and welds them in C++, in parallel
+* ``out=None`` on the threaded or synchronous scheduler (chunks run in this process): every
+  chunk counts what it owns, the client lays out the whole result by prefix sums, and every
+  chunk then writes its vertices and triangles straight into it (``_direct``); nothing is
+  merged.
+* ``out=None`` on other schedulers: the client gathers every chunk's keyed mesh and welds them in C++, in parallel
   (``threads=``), reading the chunks' arrays in place: a chunk's own vertices are copied
   straight to their place, only those on its high faces are looked up in the neighbour that
   owns them. Memory in the client: all chunks' meshes (32 bytes per vertex, 20 per triangle)
@@ -56,8 +60,42 @@ def _mesh_block(parts, iso, index, offset, core, whole, spacing, origin, inside)
         raise ValueError(f"hmira.dask.marching_cubes: {_block_label(index, offset, core)}: {e}") from e
 
 
-def _block_tasks(darr, iso, spacing, origin, inside):
-    """One dask.delayed per chunk, in C order of the chunk grid, each meshing its chunk."""
+def _count_block(parts, iso, index, offset, core, whole, spacing, origin, inside):
+    """What one chunk owns of the surface (the direct path's first step); an error names the block."""
+    try:
+        arrays = [np.asarray(p) for _, p in parts]
+        if arrays[0].dtype not in _DTYPES:
+            raise ValueError(f"volume dtype must be float32, float64, uint8, uint16 or int16, got {arrays[0].dtype}")
+        return _core._count_block(arrays, iso, steps=[list(s) for s, _ in parts], core=list(core), offset=list(offset),
+                                  whole=list(whole), spacing=list(spacing), origin=list(origin), inside=inside)
+    except Exception as e:
+        raise ValueError(f"hmira.dask.marching_cubes: {_block_label(index, offset, core)}: {e}") from e
+
+
+class _Into:
+    """The whole result the chunks write into, and each chunk's counts, whose counted rows the
+    chunk's writing task takes over (a graph argument dask does not look inside)."""
+
+    def __init__(self, layout, counts, numblocks):
+        self.layout = layout
+        self.counts = counts
+        self.numblocks = numblocks
+
+
+def _write_block(parts, iso, index, offset, core, whole, spacing, origin, inside, into):
+    """Writes one chunk's share straight into the whole result (the direct path's second step)."""
+    try:
+        arrays = [np.asarray(p) for _, p in parts]
+        _core._write_block(arrays, iso, steps=[list(s) for s, _ in parts], core=list(core), offset=list(offset),
+                           whole=list(whole), spacing=list(spacing), origin=list(origin), inside=inside, layout=into.layout,
+                           counted=into.counts[int(np.ravel_multi_index(index, into.numblocks))])
+    except Exception as e:
+        raise ValueError(f"hmira.dask.marching_cubes: {_block_label(index, offset, core)}: {e}") from e
+
+
+def _block_tasks(darr, iso, spacing, origin, inside, func=_mesh_block, extra=(), label="hmira-marching-cubes-"):
+    """One dask.delayed per chunk, in C order of the chunk grid, each calling `func` on its chunk
+    (by default meshing it)."""
     import dask.array as da
     from dask.base import tokenize
     from dask.delayed import Delayed
@@ -84,7 +122,7 @@ def _block_tasks(darr, iso, spacing, origin, inside):
     starts = [np.concatenate([[0], np.cumsum(c)[:-1]]).astype(int) for c in darr.chunks]
     # A plain task graph (one task per block reading the chunk keys directly): building it
     # through dask.delayed costs seconds per hundred blocks.
-    name = "hmira-marching-cubes-" + tokenize(darr, iso, spacing, origin, inside)
+    name = label + tokenize(darr, iso, spacing, origin, inside, *[id(e) for e in extra])
     numblocks = darr.numblocks
     graph = {}
     for index in np.ndindex(*numblocks):
@@ -99,8 +137,8 @@ def _block_tasks(darr, iso, spacing, origin, inside):
             if any(step):
                 key = (operator.getitem, key, tuple(slice(0, 1) if s else slice(None) for s in step))
             parts.append([list(step), key])
-        graph[(name,) + index] = (_mesh_block, parts, float(iso), list(index), offset, core, list(darr.shape), list(spacing),
-                                  list(origin), inside)
+        graph[(name,) + index] = (func, parts, float(iso), list(index), offset, core, list(darr.shape), list(spacing),
+                                  list(origin), inside) + tuple(extra)
     hlg = HighLevelGraph.from_collections(name, graph, dependencies=[darr])
     tasks = [Delayed((name,) + index, hlg, layer=name) for index in np.ndindex(*numblocks)]
     return darr, tasks
@@ -130,8 +168,8 @@ def marching_cubes(darr, iso: float = 0.0, *, spacing: Sequence[float] = (1.0, 1
     window : int, keyword-only
         With ``out``: chunks computed at a time (0: twice the number of cores).
     threads : int, keyword-only
-        Without ``out``: threads of the merge in the client (0: all cores). The result does
-        not depend on it.
+        Without ``out``, on a scheduler outside this process: threads of the merge in the
+        client (0: all cores). The result does not depend on it.
 
     Returns
     -------
@@ -159,6 +197,8 @@ def marching_cubes(darr, iso: float = 0.0, *, spacing: Sequence[float] = (1.0, 1
 
     if int(threads) < 0:
         raise ValueError(f"hmira.dask.marching_cubes: threads must be 0 (all cores) or more, got {threads}")
+    if out is None and _in_process(darr):
+        return _direct(darr, iso, spacing, origin, inside)
     darr, tasks = _block_tasks(darr, iso, spacing, origin, inside)
     if out is None:
         blocks = dask.compute(*tasks)
@@ -166,6 +206,37 @@ def marching_cubes(darr, iso: float = 0.0, *, spacing: Sequence[float] = (1.0, 1
                                    threads=int(threads))
     _stream_ply(os.fspath(out), darr.shape, darr.chunks, tasks, window or 2 * (os.cpu_count() or 1))
     return None
+
+
+def _in_process(darr):
+    """Whether the scheduler runs the tasks in this process (threaded or synchronous), so that
+    chunks can write straight into one result."""
+    import dask
+    import dask.array as da
+    import dask.local
+    import dask.threaded
+
+    try:
+        scheduler = dask.base.get_scheduler(collections=[da.asarray(darr)])
+    except Exception:  # an unknown scheduler setting: take the path that works everywhere
+        return False
+    return scheduler in (dask.threaded.get, dask.local.get_sync)
+
+
+def _direct(darr, iso, spacing, origin, inside):
+    """The in-process path: every chunk counts what it owns, the client lays out the whole
+    result by prefix sums, then every chunk writes its vertices and triangles straight into it.
+    No chunk mesh is kept and nothing is merged; each chunk is read twice, and its samples'
+    classification (one bit each) and row counts are kept from the first step to the second."""
+    import dask
+
+    darr, tasks = _block_tasks(darr, iso, spacing, origin, inside, func=_count_block, label="hmira-mc-count-")
+    counts = dask.compute(*tasks)
+    layout = _core._layout_blocks(list(counts), whole=list(darr.shape), x_chunks=list(darr.chunks[2]))
+    into = _Into(layout, counts, darr.numblocks)
+    _, tasks = _block_tasks(darr, iso, spacing, origin, inside, func=_write_block, extra=(into,), label="hmira-mc-write-")
+    dask.compute(*tasks)
+    return _core._layout_result(layout)
 
 
 def _shared_mask(keys, shape, chunks):

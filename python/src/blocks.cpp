@@ -3,6 +3,7 @@
 // arrays, and the weld of such blocks into the whole volume's (V, F).
 #include "common.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -12,6 +13,7 @@
 #include <span>
 #include <vector>
 
+#include <nanobind/stl/shared_ptr.h>
 #include <nanobind/stl/tuple.h>
 
 #include <hmira/algorithms/conversion/marching_cubes_blocks.hpp>
@@ -30,11 +32,13 @@ struct c_block {
     const V* samples;
     hmira::grid_dims size;
     vec3<double> at, step;
+    std::array<std::size_t, 2> rows{};  // samples from one row to the next, and one slice to the next
     hmira::grid_dims dims() const { return size; }
     vec3<double> origin() const { return at; }
     vec3<double> spacing() const { return step; }
-    double value(std::size_t i, std::size_t j, std::size_t k) const { return static_cast<double>(samples[i + size[0] * (j + size[1] * k)]); }
+    double value(std::size_t i, std::size_t j, std::size_t k) const { return static_cast<double>(samples[i + j * rows[0] + k * rows[1]]); }
     const V* data() const { return samples; }
+    std::array<std::size_t, 2> strides() const { return rows; }
 };
 
 template <class Scalar, class Container>
@@ -89,73 +93,207 @@ const std::byte* paste(const std::vector<part_array>& parts, const std::vector<s
     return out;
 }
 
+/// A block's grid and place, checked and pasted from its parts; run(f) calls f(grid, where,
+/// options) with the GIL released, for the block's dtype.
+struct block_input {
+    const std::vector<part_array>& parts;
+    std::vector<std::array<std::size_t, 3>> at;
+    std::array<std::size_t, 3> shape{};
+    hmira::grid_block where;
+    hmira::grid_dims size{};
+    vec3<double> origin_xyz, step_xyz;
+    hmira::marching_cubes_block_options options;
+
+    block_input(const std::vector<part_array>& parts_, double iso, const std::vector<std::vector<std::size_t>>& steps,
+                const std::vector<std::size_t>& core, const std::vector<std::size_t>& offset, const std::vector<std::size_t>& whole,
+                const std::vector<double>& spacing, const std::vector<double>& origin, const std::string& inside, unsigned threads)
+        : parts(parts_) {
+        const auto sp = triple(spacing, "spacing"), org = triple(origin, "origin");
+        hmira::iso_inside side = hmira::iso_inside::below;
+        if (inside == "above") side = hmira::iso_inside::above;
+        else if (inside != "below") value_error("marching_cubes_block: inside must be 'below' or 'above', got '" + inside + "'");
+        where = {.offset = index_triple(offset, "offset"), .whole = index_triple(whole, "whole")};
+        // The parts: the chunk (step 0, 0, 0) and one-sample slices of the neighbours after it
+        // (step 1 on the axes where the neighbour lies), every combination of the steps present.
+        if (core.size() != 3 || parts.empty() || steps.size() != parts.size())
+            value_error("marching_cubes_block: needs a 3-axis core shape and one step per part");
+        shape = {core[0], core[1], core[2]};
+        at.resize(parts.size());
+        std::size_t seen = 0;
+        for (std::size_t p = 0; p < parts.size(); ++p) {
+            if (steps[p].size() != 3 || parts[p].dtype() != parts[0].dtype())
+                value_error("marching_cubes_block: part " + std::to_string(p) + " has another dtype or a bad step");
+            std::size_t bit = 0;
+            for (int a = 0; a < 3; ++a) {
+                const std::size_t s = steps[p][std::size_t(a)];
+                if (s > 1 || parts[p].shape(std::size_t(a)) != (s ? 1 : core[std::size_t(a)]))
+                    value_error("marching_cubes_block: part " + std::to_string(p) + " has shape (" + std::to_string(parts[p].shape(0)) +
+                                ", " + std::to_string(parts[p].shape(1)) + ", " + std::to_string(parts[p].shape(2)) + ") for step " +
+                                std::to_string(a) + " = " + std::to_string(s));
+                at[p][std::size_t(a)] = s ? core[std::size_t(a)] : 0;
+                if (s) shape[std::size_t(a)] = core[std::size_t(a)] + 1;
+                bit = bit * 2 + s;
+            }
+            if (seen & (std::size_t(1) << bit)) value_error("marching_cubes_block: two parts with one step");
+            seen |= std::size_t(1) << bit;
+        }
+        std::size_t needed = 1;
+        for (int a = 0; a < 3; ++a) needed *= shape[std::size_t(a)] > core[std::size_t(a)] ? 2 : 1;
+        if (parts.size() != needed || !(seen & 1))
+            value_error("marching_cubes_block: " + std::to_string(parts.size()) + " parts where the overlap needs " + std::to_string(needed));
+        size = {shape[2], shape[1], shape[0]};
+        origin_xyz = {org[2], org[1], org[0]};
+        step_xyz = {sp[2], sp[1], sp[0]};
+        options = {.iso = iso, .inside = side, .threads = threads};
+    }
+
+    /// The parts' first sample when they are views of one array with rows along x, where the
+    /// block can be read in place (da.from_array of a numpy array): the chunk, and each
+    /// neighbour's slice where the chunk's strides put it. Null when they must be pasted.
+    const std::byte* in_place(std::size_t item) const {
+        const auto& c = parts[0];
+        if (c.stride(2) != 1 || c.stride(1) <= 0 || c.stride(0) <= 0) return nullptr;
+        for (std::size_t a = 0; a < 3; ++a)
+            if (c.shape(a) < 2) return nullptr;  // a stride along one sample says nothing
+        const auto* base = static_cast<const std::byte*>(c.data());
+        for (std::size_t p = 1; p < parts.size(); ++p) {
+            const std::int64_t shift = std::int64_t(at[p][0]) * c.stride(0) + std::int64_t(at[p][1]) * c.stride(1) + std::int64_t(at[p][2]);
+            if (static_cast<const std::byte*>(parts[p].data()) != base + shift * std::int64_t(item)) return nullptr;
+            for (std::size_t a = 0; a < 3; ++a)
+                if (parts[p].shape(a) > 1 && parts[p].stride(a) != c.stride(a)) return nullptr;
+        }
+        return base;
+    }
+
+    /// f(grid, where, options) for the block's dtype, with the GIL released; false for a dtype
+    /// hmira does not read.
+    template <class F>
+    bool run(const F& f) const {
+        const auto dt = parts[0].dtype();
+        nb::gil_scoped_release release;
+        auto go = [&](auto tag) {
+            using V = decltype(tag);
+            if (const std::byte* base = in_place(sizeof(V))) {
+                const auto* samples = reinterpret_cast<const V*>(base);
+                const std::array<std::size_t, 2> rows{std::size_t(parts[0].stride(1)), std::size_t(parts[0].stride(0))};
+                f(c_block<V>{samples, size, origin_xyz, step_xyz, rows}, where, options);
+                return;
+            }
+            const auto* samples = reinterpret_cast<const V*>(paste(parts, at, shape, sizeof(V)));
+            f(c_block<V>{samples, size, origin_xyz, step_xyz, {size[0], size[0] * size[1]}}, where, options);
+        };
+        if (dt == nb::dtype<float>()) go(float{});
+        else if (dt == nb::dtype<double>()) go(double{});
+        else if (dt == nb::dtype<std::uint8_t>()) go(std::uint8_t{});
+        else if (dt == nb::dtype<std::uint16_t>()) go(std::uint16_t{});
+        else if (dt == nb::dtype<std::int16_t>()) go(std::int16_t{});
+        else return false;
+        return true;
+    }
+};
+
+constexpr const char* bad_dtype = "marching_cubes_block: volume dtype must be float32, float64, uint8, uint16 or int16";
+
 nb::tuple marching_cubes_block(const std::vector<part_array>& parts, double iso, const std::vector<std::vector<std::size_t>>& steps,
                                const std::vector<std::size_t>& core, const std::vector<std::size_t>& offset,
                                const std::vector<std::size_t>& whole, const std::vector<double>& spacing,
                                const std::vector<double>& origin, const std::string& inside, unsigned threads) {
-    const auto sp = triple(spacing, "spacing"), org = triple(origin, "origin");
-    hmira::iso_inside side = hmira::iso_inside::below;
-    if (inside == "above") side = hmira::iso_inside::above;
-    else if (inside != "below") value_error("marching_cubes_block: inside must be 'below' or 'above', got '" + inside + "'");
-    const hmira::grid_block where{.offset = index_triple(offset, "offset"), .whole = index_triple(whole, "whole")};
-    // The parts: the chunk (step 0, 0, 0) and one-sample slices of the neighbours after it
-    // (step 1 on the axes where the neighbour lies), every combination of the steps present.
-    if (core.size() != 3 || parts.empty() || steps.size() != parts.size())
-        value_error("marching_cubes_block: needs a 3-axis core shape and one step per part");
-    std::array<std::size_t, 3> shape{core[0], core[1], core[2]};
-    std::vector<std::array<std::size_t, 3>> at(parts.size());
-    std::size_t seen = 0;
-    for (std::size_t p = 0; p < parts.size(); ++p) {
-        if (steps[p].size() != 3 || parts[p].dtype() != parts[0].dtype())
-            value_error("marching_cubes_block: part " + std::to_string(p) + " has another dtype or a bad step");
-        std::size_t bit = 0;
-        for (int a = 0; a < 3; ++a) {
-            const std::size_t s = steps[p][std::size_t(a)];
-            if (s > 1 || parts[p].shape(std::size_t(a)) != (s ? 1 : core[std::size_t(a)]))
-                value_error("marching_cubes_block: part " + std::to_string(p) + " has shape (" + std::to_string(parts[p].shape(0)) + ", " +
-                            std::to_string(parts[p].shape(1)) + ", " + std::to_string(parts[p].shape(2)) + ") for step " +
-                            std::to_string(a) + " = " + std::to_string(s));
-            at[p][std::size_t(a)] = s ? core[std::size_t(a)] : 0;
-            if (s) shape[std::size_t(a)] = core[std::size_t(a)] + 1;
-            bit = bit * 2 + s;
-        }
-        if (seen & (std::size_t(1) << bit)) value_error("marching_cubes_block: two parts with one step");
-        seen |= std::size_t(1) << bit;
-    }
-    std::size_t needed = 1;
-    for (int a = 0; a < 3; ++a) needed *= shape[std::size_t(a)] > core[std::size_t(a)] ? 2 : 1;
-    if (parts.size() != needed || !(seen & 1))
-        value_error("marching_cubes_block: " + std::to_string(parts.size()) + " parts where the overlap needs " + std::to_string(needed));
-    const hmira::grid_dims size{shape[2], shape[1], shape[0]};
-    const vec3<double> origin_xyz{org[2], org[1], org[0]}, step_xyz{sp[2], sp[1], sp[0]};
-    const hmira::marching_cubes_block_options options{.iso = iso, .inside = side, .threads = threads};
-    hmira::result<hmira::block_triangles<double>> r = hmira::fail(hmira::errc::invalid_argument, "");
-    const auto dt = parts[0].dtype();
-    {
-        nb::gil_scoped_release release;
-        auto run = [&](auto tag) {
-            using V = decltype(tag);
-            const auto* samples = reinterpret_cast<const V*>(paste(parts, at, shape, sizeof(V)));
-            const c_block<V> g{samples, size, origin_xyz, step_xyz};
-            r = hmira::marching_cubes_block<double>(g, where, options);
-        };
-        if (dt == nb::dtype<float>()) run(float{});
-        else if (dt == nb::dtype<double>()) run(double{});
-        else if (dt == nb::dtype<std::uint8_t>()) run(std::uint8_t{});
-        else if (dt == nb::dtype<std::uint16_t>()) run(std::uint16_t{});
-        else if (dt == nb::dtype<std::int16_t>()) run(std::int16_t{});
-        else r = hmira::fail(hmira::errc::invalid_argument, "marching_cubes_block: volume dtype must be float32, float64, uint8, uint16 or int16");
+    const block_input in(parts, iso, steps, core, offset, whole, spacing, origin, inside, threads);
+    hmira::result<hmira::block_triangles<double>> r = hmira::fail(hmira::errc::invalid_argument, bad_dtype);
+    in.run([&](const auto& g, const hmira::grid_block& where, const hmira::marching_cubes_block_options& options) {
+        r = hmira::marching_cubes_block<double>(g, where, options);
         // Back to array axes, as hmira.marching_cubes does for a C-ordered volume: swapping two
         // axes mirrors the surface, so each triangle is reversed to keep its winding.
         if (r) {
             for (auto& p : r->positions) std::swap(p.x, p.z);
             for (auto& t : r->triangles) std::swap(t[1], t[2]);
         }
-    }
+    });
     auto b = take(std::move(r));
     const std::size_t nv = b.positions.size(), nt = b.triangles.size();
     return nb::make_tuple(adopt<double>(std::move(b.positions), {nv, 3}), adopt<std::uint64_t>(std::move(b.keys), {nv}),
                           adopt<std::int32_t>(std::move(b.triangles), {nt, 3}), adopt<std::uint64_t>(std::move(b.cubes), {nt}));
+}
+
+namespace direct = hmira::detail::mc_direct;
+
+/// What a block owns (detail::mc_direct::count_block), kept opaque for _layout_blocks.
+struct counts_holder {
+    direct::block_counts counts;
+    hmira::grid_dims offset{};
+};
+
+counts_holder count_block(const std::vector<part_array>& parts, double iso, const std::vector<std::vector<std::size_t>>& steps,
+                          const std::vector<std::size_t>& core, const std::vector<std::size_t>& offset,
+                          const std::vector<std::size_t>& whole, const std::vector<double>& spacing, const std::vector<double>& origin,
+                          const std::string& inside) {
+    const block_input in(parts, iso, steps, core, offset, whole, spacing, origin, inside, 1);
+    hmira::result<direct::block_counts> r = hmira::fail(hmira::errc::invalid_argument, bad_dtype);
+    in.run([&](const auto& g, const hmira::grid_block& where, const hmira::marching_cubes_block_options& options) {
+        r = direct::count_block(g, where, options);
+    });
+    return {take(std::move(r)), in.where.offset};
+}
+
+/// The whole result's tables and its uninitialised arrays, made from every block's counts.
+struct layout_holder {
+    direct::layout_tables tables;
+    hmira::grid_dims whole{};
+    std::vector<std::size_t> x_starts;
+    std::unique_ptr<double[]> positions;
+    std::unique_ptr<std::int32_t[]> triangles;
+};
+
+std::shared_ptr<layout_holder> layout_blocks(const std::vector<const counts_holder*>& blocks, const std::vector<std::size_t>& whole,
+                                             const std::vector<std::size_t>& x_chunks) {
+    auto out = std::make_shared<layout_holder>();
+    out->whole = index_triple(whole, "whole");
+    for (std::size_t at = 0, c = 0; c < x_chunks.size(); at += x_chunks[c++]) out->x_starts.push_back(at);
+    std::vector<direct::block_counts> counts;
+    std::vector<hmira::grid_dims> offsets;
+    counts.reserve(blocks.size());
+    for (const auto* b : blocks) {
+        if (!b) value_error("layout_blocks: a block is None");
+        counts.push_back({b->counts.own, b->counts.vertices, b->counts.triangles, {}});  // not the counted rows
+        offsets.push_back(b->offset);
+    }
+    out->tables = take(direct::make_layout(out->whole, out->x_starts, offsets, counts));
+    if (out->tables.vertices > std::size_t(std::numeric_limits<std::int32_t>::max()))
+        value_error("merge_blocks: " + std::to_string(out->tables.vertices) + " vertices do not fit int32 face indices");
+    // Uninitialised on purpose: the blocks write every element (see merge_blocks below).
+    out->positions.reset(new double[3 * out->tables.vertices]);
+    out->triangles.reset(new std::int32_t[3 * out->tables.triangles]);
+    return out;
+}
+
+void write_block(const std::vector<part_array>& parts, double iso, const std::vector<std::vector<std::size_t>>& steps,
+                 const std::vector<std::size_t>& core, const std::vector<std::size_t>& offset, const std::vector<std::size_t>& whole,
+                 const std::vector<double>& spacing, const std::vector<double>& origin, const std::string& inside,
+                 layout_holder& layout, counts_holder* counted) {
+    const block_input in(parts, iso, steps, core, offset, whole, spacing, origin, inside, 1);
+    if (in.where.whole != layout.whole) value_error("write_block: the block's whole grid differs from the layout's");
+    const auto& xs = layout.x_starts;
+    const auto column = std::size_t(std::find(xs.begin(), xs.end(), in.where.offset[0]) - xs.begin());
+    if (column == layout.x_starts.size()) value_error("write_block: the block is off the layout's x chunking");
+    const hmira::detail::mc::global_layout g{.vertex_start = layout.tables.vertex_start.data(),
+                                             .triangle_start = layout.tables.triangle_start.data(),
+                                             .columns = layout.tables.columns,
+                                             .column = column,
+                                             .positions = layout.positions.get(),
+                                             .triangles = reinterpret_cast<std::uint32_t*>(layout.triangles.get()),
+                                             .swap_xz = true};
+    hmira::result<void> r = hmira::fail(hmira::errc::invalid_argument, bad_dtype);
+    in.run([&](const auto& grid, const hmira::grid_block& where, const hmira::marching_cubes_block_options& options) {
+        r = direct::write_block_into(grid, where, g, options, counted ? &counted->counts : nullptr);
+    });
+    check(r);
+}
+
+/// The finished result of a layout: (vertices, faces), taking over its arrays.
+nb::tuple layout_result(layout_holder& layout) {
+    if (!layout.positions || !layout.triangles) value_error("layout_result: the result was already taken");
+    const std::size_t nv = layout.tables.vertices, nt = layout.tables.triangles;
+    return nb::make_tuple(adopt_array(std::move(layout.positions), {nv, 3}), adopt_array(std::move(layout.triangles), {nt, 3}));
 }
 
 using positions_array = nb::ndarray<const double, nb::ndim<2>, nb::c_contig, nb::device::cpu>;
@@ -238,6 +376,21 @@ void bind_blocks(nb::module_& m) {
           "Marching cubes of one chunk of shape `core` at `offset` in a volume of shape `whole`, with its one sample of overlap on "
           "the high sides given as `parts` (the chunk at step (0, 0, 0), one-sample slices of the neighbours at the steps "
           "towards them): (positions, keys, triangles, cube keys); see hmira.dask.");
+    nb::class_<counts_holder>(m, "_BlockCounts", "What one block owns (hmira.dask, the direct path).");
+    nb::class_<layout_holder>(m, "_BlockLayout", "The whole result's layout and arrays (hmira.dask, the direct path).");
+    m.def("_count_block", &count_block, nb::arg("parts"), nb::arg("iso"), nb::kw_only(), nb::arg("steps"), nb::arg("core"),
+          nb::arg("offset"), nb::arg("whole"), nb::arg("spacing"), nb::arg("origin"), nb::arg("inside") = "below",
+          "Counts what one chunk (given as for _marching_cubes_block) owns of the surface, for _layout_blocks; see hmira.dask.");
+    m.def("_layout_blocks", &layout_blocks, nb::arg("blocks"), nb::kw_only(), nb::arg("whole"), nb::arg("x_chunks"),
+          "Lays out the whole result from every chunk's _count_block (any order; `x_chunks`: the chunk sizes along array axis 2) "
+          "and allocates it; see hmira.dask.");
+    m.def("_write_block", &write_block, nb::arg("parts"), nb::arg("iso"), nb::kw_only(), nb::arg("steps"), nb::arg("core"),
+          nb::arg("offset"), nb::arg("whole"), nb::arg("spacing"), nb::arg("origin"), nb::arg("inside") = "below", nb::arg("layout"),
+          nb::arg("counted").none() = nb::none(),
+          "Writes one chunk's share of the surface straight into a _layout_blocks result, reusing the chunk's _count_block "
+          "(`counted`, whose counted rows it takes) when given; see hmira.dask.");
+    m.def("_layout_result", &layout_result, nb::arg("layout"),
+          "The (vertices, faces) a _layout_blocks result holds once every chunk was written; see hmira.dask.");
     m.def("_merge_blocks", &merge_blocks, nb::arg("blocks"), nb::kw_only(), nb::arg("whole"), nb::arg("chunks"), nb::arg("threads") = 0u,
           "Welds (positions, keys, triangles, cube keys) blocks, one per chunk in C order of the chunk grid (`chunks` as "
           "dask.array.Array.chunks), into the whole volume's (vertices, faces), in parallel on `threads` threads (0: all); see "

@@ -79,6 +79,78 @@ std::vector<hmira::block_triangles<float>> blocks_of(const hmira::dense_grid<flo
     return out;
 }
 
+/// The samples of the block at `lo` with its one-sample overlap on the high sides.
+std::vector<float> block_samples(const hmira::dense_grid<float>& grid, const grid_dims& lo, const grid_dims& size) {
+    std::vector<float> samples;
+    samples.reserve(size[0] * size[1] * size[2]);
+    for (std::size_t k = 0; k < size[2]; ++k)
+        for (std::size_t j = 0; j < size[1]; ++j)
+            for (std::size_t i = 0; i < size[0]; ++i) samples.push_back(grid.value(lo[0] + i, lo[1] + j, lo[2] + k));
+    return samples;
+}
+
+/// The direct path (detail::mc_direct): counts every block, lays out the whole result, then
+/// lets every block write its share straight into it, the blocks in shuffled order. With
+/// `swap`, positions come as (z, y, x) and triangles reversed, as for a C-ordered array.
+hmira::indexed_triangles<double> direct_of(const hmira::dense_grid<float>& grid, const std::array<std::vector<std::size_t>, 3>& chunks,
+                                           const hmira::marching_cubes_block_options& o, bool swap, std::mt19937& rng) {
+    namespace direct = hmira::detail::mc_direct;
+    const grid_dims n = grid.dims();
+    std::vector<grid_dims> lo, size;
+    std::vector<std::size_t> x_starts;
+    for (std::size_t x0 = 0, c = 0; c < chunks[0].size(); x0 += chunks[0][c++]) x_starts.push_back(x0);
+    for (std::size_t z0 = 0, cz = 0; cz < chunks[2].size(); z0 += chunks[2][cz++])
+        for (std::size_t y0 = 0, cy = 0; cy < chunks[1].size(); y0 += chunks[1][cy++])
+            for (std::size_t x0 = 0, cx = 0; cx < chunks[0].size(); x0 += chunks[0][cx++]) {
+                lo.push_back({x0, y0, z0});
+                size.push_back({std::min(chunks[0][cx] + 1, n[0] - x0), std::min(chunks[1][cy] + 1, n[1] - y0),
+                                std::min(chunks[2][cz] + 1, n[2] - z0)});
+            }
+    std::vector<std::size_t> order(lo.size());
+    for (std::size_t b = 0; b < order.size(); ++b) order[b] = b;
+    std::shuffle(order.begin(), order.end(), rng);
+    auto view_of_block = [&](std::size_t b, std::vector<float>& samples) {
+        samples = block_samples(grid, lo[b], size[b]);
+        return hmira::make_grid_view(samples, {size[b], grid.origin(), grid.spacing()});
+    };
+    std::vector<direct::block_counts> counts(lo.size());
+    for (std::size_t b : order) {
+        std::vector<float> samples;
+        auto view = view_of_block(b, samples);
+        EXPECT_TRUE(view);
+        auto c = direct::count_block(*view, {.offset = lo[b], .whole = n}, o);
+        EXPECT_TRUE(c) << c.error().message;
+        if (c) counts[b] = std::move(*c);
+    }
+    auto tables = direct::make_layout(n, x_starts, lo, counts);
+    EXPECT_TRUE(tables) << tables.error().message;
+    hmira::indexed_triangles<double> out;
+    if (!tables) return out;
+    std::vector<double> positions(3 * tables->vertices, std::nan(""));
+    std::vector<std::uint32_t> triangles(3 * tables->triangles, 0xffffffffu);
+    const hmira::detail::mc::global_layout layout{.vertex_start = tables->vertex_start.data(),
+                                                  .triangle_start = tables->triangle_start.data(),
+                                                  .columns = tables->columns,
+                                                  .positions = positions.data(),
+                                                  .triangles = triangles.data(),
+                                                  .swap_xz = swap};
+    std::shuffle(order.begin(), order.end(), rng);
+    for (std::size_t b : order) {
+        std::vector<float> samples;
+        auto view = view_of_block(b, samples);
+        auto where = layout;
+        where.column = std::size_t(std::find(x_starts.begin(), x_starts.end(), lo[b][0]) - x_starts.begin());
+        // Half the blocks reuse their counted rows, half count again.
+        auto r = direct::write_block_into(*view, {.offset = lo[b], .whole = n}, where, o, (rng() & 1) ? &counts[b] : nullptr);
+        EXPECT_TRUE(r) << r.error().message;
+    }
+    for (std::size_t v = 0; v < tables->vertices; ++v)
+        out.positions.push_back({positions[3 * v], positions[3 * v + 1], positions[3 * v + 2]});
+    for (std::size_t t = 0; t < tables->triangles; ++t)
+        out.triangles.push_back({triangles[3 * t], triangles[3 * t + 1], triangles[3 * t + 2]});
+    return out;
+}
+
 /// Expects the merged blocks to equal the whole-grid marching cubes element for element.
 void expect_identical(const hmira::indexed_triangles<float>& whole, const hmira::indexed_triangles<float>& merged, const std::string& what) {
     ASSERT_EQ(merged.positions.size(), whole.positions.size()) << what;
@@ -96,6 +168,8 @@ void check_chunkings(const hmira::dense_grid<float>& grid, const hmira::marching
     auto whole = hmira::marching_cubes_indexed(grid, whole_opt);
     ASSERT_TRUE(whole) << whole.error().message;
     ASSERT_GT(whole->triangles.size(), 0u) << name << ": the test needs a surface";
+    auto whole_double = hmira::marching_cubes_indexed<double>(grid, whole_opt);
+    ASSERT_TRUE(whole_double) << whole_double.error().message;
     std::mt19937 rng(seed);
     const grid_dims n = grid.dims();
     auto run = [&](const std::array<std::vector<std::size_t>, 3>& chunks, const std::string& label) {
@@ -104,6 +178,20 @@ void check_chunkings(const hmira::dense_grid<float>& grid, const hmira::marching
         auto merged = hmira::merge_blocks(blocks);
         ASSERT_TRUE(merged) << merged.error().message;
         expect_identical(*whole, *merged, name + " " + label);
+        // Written straight into the whole result: the same, in double and in array axes.
+        const bool swap = (rng() & 1) != 0;
+        const auto direct = direct_of(grid, chunks, o, swap, rng);
+        auto expected = *whole_double;
+        if (swap) {
+            for (auto& p : expected.positions) std::swap(p.x, p.z);
+            for (auto& t : expected.triangles) std::swap(t[1], t[2]);
+        }
+        ASSERT_EQ(direct.positions.size(), expected.positions.size()) << name << " " << label << " direct";
+        ASSERT_EQ(direct.triangles.size(), expected.triangles.size()) << name << " " << label << " direct";
+        const std::size_t bytes = expected.positions.size() * sizeof(expected.positions[0]);
+        EXPECT_EQ(std::memcmp(direct.positions.data(), expected.positions.data(), bytes), 0)
+            << name << " " << label << " direct: positions differ";
+        EXPECT_TRUE(direct.triangles == expected.triangles) << name << " " << label << " direct: triangles differ";
     };
     for (int c = 0; c < chunkings_per_field; ++c) {
         // Small maxima would make thousands of blocks; keep the count under 512 (8^3).

@@ -60,14 +60,42 @@ struct indexed_triangles {
 
 namespace detail::mc {
 
+/// Where a block writes straight into the whole grid's result (marching_cubes_blocks.hpp,
+/// write_block_into): the global index of the first vertex of every run of one sample row,
+/// axis and chunk column, and of the first triangle of every cube row and chunk column, in the
+/// whole grid's order. A block writes the vertices it owns and its triangles; the vertices on
+/// its high faces are written by their owners, and their ids read from the same tables.
+struct global_layout {
+    const std::uint32_t* vertex_start = nullptr;    ///< at ((gk * ny + gj) * 4 + axis) * columns + column
+    const std::uint32_t* triangle_start = nullptr;  ///< at (gk * ny + gj) * columns + column
+    std::size_t columns = 1;                        ///< chunks along x
+    std::size_t column = 0;                         ///< this block's chunk along x
+    std::size_t own_x = 0, own_y = 0, own_z = 0;    ///< the block's owned samples per axis, [0, own)
+    double* positions = nullptr;                    ///< 3 per vertex of the whole result
+    std::uint32_t* triangles = nullptr;             ///< 3 per triangle of the whole result
+    bool swap_xz = false;                           ///< write (z, y, x) and reverse triangles (C-ordered arrays)
+};
+
+/// What the counting passes of the extractor leave for the writing pass: the bit rows, the
+/// crossings per row and axis, and the rows' first vertices and triangles.
+struct counted_state {
+    std::vector<std::uint64_t> bits;                 ///< one bit per sample, rows of whole words
+    std::vector<std::uint32_t> xcount, ycount, zcount;  ///< crossed edges per row and axis
+    std::vector<std::uint64_t> vbase, tbase;         ///< first vertex and triangle per row (prefix sums)
+};
+
 /// Where a block lies in a larger grid, and where the extractor records the global keys of
-/// what it writes (marching_cubes_blocks.hpp). Positions then use global sample indices, so
-/// they are bit for bit those of the whole grid.
+/// what it writes (marching_cubes_blocks.hpp), or, with `layout`, the global places it writes
+/// to. Positions then use global sample indices, so they are bit for bit those of the whole grid.
 struct block_tags {
     std::array<std::size_t, 3> offset{0, 0, 0};  ///< global index of the block's sample (0, 0, 0)
     std::array<std::size_t, 3> whole{0, 0, 0};   ///< dimensions of the whole grid
     std::vector<std::uint64_t>* vertex_keys = nullptr;    ///< one per output vertex
     std::vector<std::uint64_t>* triangle_cubes = nullptr;  ///< one per output triangle
+    const global_layout* layout = nullptr;                 ///< write into the whole result instead
+    bool count_only = false;                               ///< stop after counting (see owned_counts())
+    /// The global row index of local row (j, k).
+    std::size_t global_row(std::size_t j, std::size_t k) const noexcept { return (k + offset[2]) * whole[1] + (j + offset[1]); }
     /// Vertices sort by key exactly as the whole grid orders them: rows (z, y), then x-, y-,
     /// z-edges and cube centres (axis 3), each by increasing x.
     std::uint64_t vertex_key(std::size_t i, std::size_t j, std::size_t k, int axis) const noexcept {
@@ -103,10 +131,6 @@ inline unsigned bits2(const std::uint64_t* a, std::size_t i) noexcept {
     const std::size_t w = i >> 6, b = i & 63;
     if (b != 63) return static_cast<unsigned>((a[w] >> b) & 3u);
     return static_cast<unsigned>((a[w] >> 63) | ((a[w + 1] & 1u) << 1));
-}
-inline std::uint32_t rank(const std::uint64_t* mask, const std::uint32_t* prefix, std::size_t i) noexcept {
-    const std::size_t w = i >> 6, b = i & 63;
-    return prefix[w] + (b ? count_bits(mask[w] & ((std::uint64_t(1) << b) - 1)) : 0);
 }
 
 // Packs one row's classification (bit i set: sample i is inside) and reports NaN samples.
@@ -179,6 +203,14 @@ public:
         words_ = (nx_ + 63) / 64;
         above_ = o.inside == iso_inside::above;
         if constexpr (contiguous_voxel_grid<G>) data_ = grid.data();
+        sy_ = nx_;
+        sz_ = nx_ * ny_;
+        // A block seen in place inside a larger array: rows and slices farther apart.
+        if constexpr (requires { grid.strides(); }) {
+            const auto st = grid.strides();
+            sy_ = st[0];
+            sz_ = st[1];
+        }
     }
     /// Makes the extractor work as one block of a larger grid; `tags` outlives run().
     void set_block(const block_tags* tags) noexcept { tags_ = tags; }
@@ -186,17 +218,95 @@ public:
     template <class S>
     result<indexed_triangles<S>> run() {
         const std::size_t rows = ny_ * nz_;
+        const auto& table = mc::table();
+        progress_gate gate(opt_.progress, 3 * nz_);
+        // Counted before (count_only, then keep_counts()): only the writing pass is left.
+        if (!reuse_)
+            if (auto counted = count(gate); !counted) return counted.error();
+
+        indexed_triangles<S> out;
+        if (tags_ && tags_->count_only) return out;
+        layout_ = tags_ ? tags_->layout : nullptr;
+        if (!layout_) {
+            out.positions.resize(vbase_[rows]);
+            out.triangles.resize(tbase_[rows]);
+        }
+        if (opt_.normals) out.normals.resize(vbase_[rows]);
+        if (tags_ && !layout_) {
+            tags_->vertex_keys->resize(vbase_[rows]);
+            tags_->triangle_cubes->resize(tbase_[rows]);
+        }
+
+        // Pass 3: every row writes its vertices and its cubes' triangles into the slots
+        // counted above, so the output order is the same whatever the schedule.
+        parallel_chunks(nz_, 1, [&](std::size_t k0, std::size_t k1) {
+            scratch s(words_);
+            for (std::size_t k = k0; k < k1 && gate.advance(); ++k)
+                for (std::size_t j = 0; j < ny_; ++j) {
+                    if (j + prefetch_distance < ny_) prefetch_row(j + prefetch_distance, k);
+                    write_row_vertices(j, k, out);
+                    if (j + 1 < ny_ && k + 1 < nz_) write_cube_row(j, k, s, table, out);
+                }
+        });
+        if (gate.cancelled()) return cancelled();
+        return out;
+    }
+
+    /// After run() with count_only: hands the counted rows over, so that an extractor of the
+    /// same samples can write without counting again (reuse_counts()).
+    void keep_counts(counted_state& state) {
+        state = {std::move(bits_), std::move(xcount_), std::move(ycount_), std::move(zcount_), std::move(vbase_), std::move(tbase_)};
+    }
+    /// Takes the counts keep_counts() handed over from an extractor of the same samples and
+    /// options; run() then only writes.
+    void reuse_counts(counted_state&& state) {
+        bits_ = std::move(state.bits);
+        xcount_ = std::move(state.xcount);
+        ycount_ = std::move(state.ycount);
+        zcount_ = std::move(state.zcount);
+        vbase_ = std::move(state.vbase);
+        tbase_ = std::move(state.tbase);
+        reuse_ = true;
+    }
+
+    /// After run() with count_only: calls f(j, k, vertices[4], triangles) for every row (j, k)
+    /// the block owns (j < own_y, k < own_z), with its owned vertices per axis (x-, y-, z-edges
+    /// with i < own_x, centres) and its cube row's triangles.
+    template <class F>
+    void owned_counts(std::size_t own_x, std::size_t own_y, std::size_t own_z, const F& f) const {
+        for (std::size_t k = 0; k < own_z && k < nz_; ++k)
+            for (std::size_t j = 0; j < own_y && j < ny_; ++j) {
+                const std::size_t r = k * ny_ + j;
+                std::uint64_t yc = ycount_[r], zc = zcount_[r];
+                // The edges at the last sample of the block lie on the next chunk along x.
+                if (own_x < nx_) {
+                    const std::size_t i = own_x, w = i >> 6, b = i & 63;
+                    const std::uint64_t* a = row(j, k);
+                    if (j + 1 < ny_) yc -= ((a[w] ^ row(j + 1, k)[w]) >> b) & 1;
+                    if (k + 1 < nz_) zc -= ((a[w] ^ row(j, k + 1)[w]) >> b) & 1;
+                }
+                const std::uint64_t all = vbase_[r + 1] - vbase_[r];
+                const std::uint64_t counts[4] = {xcount_[r], yc, zc, all - xcount_[r] - ycount_[r] - zcount_[r]};
+                f(j, k, counts, tbase_[r + 1] - tbase_[r]);
+            }
+    }
+
+private:
+    static hmira::error cancelled() { return fail(errc::unsupported, "marching_cubes: cancelled"); }
+
+    // Passes 1 and 2 of run(): classify, count, and lay out the rows' vertices and triangles.
+    result<void> count(progress_gate& gate) {
+        const std::size_t rows = ny_ * nz_;
+        const auto& table = mc::table();
         bits_.assign(rows * words_, 0);
         xcount_.assign(rows, 0);
         ycount_.assign(rows, 0);
         zcount_.assign(rows, 0);
         vbase_.assign(rows + 1, 0);
         tbase_.assign(rows + 1, 0);
-        const auto& table = mc::table();
 
         // Pass 1: classify every sample into bit rows.
         std::vector<std::uint8_t> nan_in_slab(nz_, 0);
-        progress_gate gate(opt_.progress, 3 * nz_);
         parallel_chunks(nz_, 1, [&](std::size_t k0, std::size_t k1) {
             std::vector<double> buffer;
             for (std::size_t k = k0; k < k1 && gate.advance(); ++k)
@@ -204,7 +314,7 @@ public:
                     std::uint64_t* out = &bits_[(k * ny_ + j) * words_];
                     bool nan;
                     if constexpr (contiguous_voxel_grid<G>) {
-                        nan = classify_row(data_ + nx_ * (j + ny_ * k), nx_, opt_.iso, above_, out);
+                        nan = classify_row(data_ + j * sy_ + k * sz_, nx_, opt_.iso, above_, out);
                     } else {
                         buffer.resize(nx_);
                         for (std::size_t i = 0; i < nx_; ++i) buffer[i] = static_cast<double>(grid_.value(i, j, k));
@@ -256,37 +366,16 @@ public:
         if (vbase_[rows] > std::numeric_limits<std::uint32_t>::max())
             return fail(errc::unsupported, "marching_cubes: more than 2^32 - 1 vertices");
 
-        indexed_triangles<S> out;
-        out.positions.resize(vbase_[rows]);
-        out.triangles.resize(tbase_[rows]);
-        if (opt_.normals) out.normals.resize(vbase_[rows]);
-        if (tags_) {
-            tags_->vertex_keys->resize(vbase_[rows]);
-            tags_->triangle_cubes->resize(tbase_[rows]);
-        }
-
-        // Pass 3: every row writes its vertices and its cubes' triangles into the slots
-        // counted above, so the output order is the same whatever the schedule.
-        parallel_chunks(nz_, 1, [&](std::size_t k0, std::size_t k1) {
-            scratch s(words_);
-            for (std::size_t k = k0; k < k1 && gate.advance(); ++k)
-                for (std::size_t j = 0; j < ny_; ++j) {
-                    if (j + prefetch_distance < ny_) prefetch_row(j + prefetch_distance, k);
-                    write_row_vertices(j, k, out);
-                    if (j + 1 < ny_ && k + 1 < nz_) write_cube_row(j, k, s, table, out);
-                }
-        });
-        if (gate.cancelled()) return cancelled();
-        return out;
+        return {};
     }
 
-private:
-    static hmira::error cancelled() { return fail(errc::unsupported, "marching_cubes: cancelled"); }
 
     struct scratch {
-        explicit scratch(std::size_t words) : active(words), cubes(words), masks(8 * words), prefix(8 * (words + 1)) {}
+        explicit scratch(std::size_t words) : active(words), cubes(words), masks(8 * words), ids(8 * 64 * words + 1) {}
         std::vector<std::uint64_t> active, cubes, masks;
-        std::vector<std::uint32_t> prefix;
+        // Per crossing mask q and edge position i, at q * 64 * words + i: the edge's vertex id
+        // (written only where the mask has a bit).
+        std::vector<std::uint32_t> ids;
     };
 
     const std::uint64_t* row(std::size_t j, std::size_t k) const noexcept { return &bits_[(k * ny_ + j) * words_]; }
@@ -307,10 +396,10 @@ private:
                 while (lines) {
                     const std::size_t i = w * 64 + static_cast<std::size_t>(std::countr_zero(lines));
                     lines &= lines - 1;
-                    const auto* p = data_ + i + nx_ * (j + ny_ * k);
+                    const auto* p = data_ + i + j * sy_ + k * sz_;
                     __builtin_prefetch(p);
-                    if (b != a) __builtin_prefetch(p + nx_);
-                    if (c != a) __builtin_prefetch(p + nx_ * ny_);
+                    if (b != a) __builtin_prefetch(p + sy_);
+                    if (c != a) __builtin_prefetch(p + sz_);
                 }
             }
         }
@@ -324,7 +413,7 @@ private:
     }
 
     double value(std::size_t i, std::size_t j, std::size_t k) const {
-        if constexpr (contiguous_voxel_grid<G>) return static_cast<double>(data_[i + nx_ * (j + ny_ * k)]);
+        if constexpr (contiguous_voxel_grid<G>) return static_cast<double>(data_[i + j * sy_ + k * sz_]);
         else return static_cast<double>(grid_.value(i, j, k));
     }
     // Positive inside, negative outside (0 counts as inside).
@@ -426,6 +515,13 @@ private:
 
     template <class S>
     void store(std::size_t id, const vec3<double>& p, const vec3<double>* n, indexed_triangles<S>& out) const {
+        if (layout_) {
+            double* dst = layout_->positions + 3 * id;
+            dst[0] = layout_->swap_xz ? p.z : p.x;
+            dst[1] = p.y;
+            dst[2] = layout_->swap_xz ? p.x : p.z;
+            return;
+        }
         out.positions[id] = {static_cast<S>(p.x), static_cast<S>(p.y), static_cast<S>(p.z)};
         if (n) {
             const auto u = normalized(*n);
@@ -439,7 +535,7 @@ private:
         const bool normals = !out.normals.empty();
         edge_point(i, j, k, axis, p, normals ? &n : nullptr);
         store(id, p, normals ? &n : nullptr, out);
-        if (tags_) (*tags_->vertex_keys)[id] = tags_->vertex_key(i, j, k, axis);
+        if (tags_ && !layout_) (*tags_->vertex_keys)[id] = tags_->vertex_key(i, j, k, axis);
     }
 
     // The extra vertex of a loop that needs one: the mean of the loop's crossings.
@@ -459,7 +555,7 @@ private:
         }
         sum_p /= count;
         store(id, sum_p, normals ? &sum_n : nullptr, out);
-        if (tags_) (*tags_->vertex_keys)[id] = tags_->vertex_key(i, j, k, 3);
+        if (tags_ && !layout_) (*tags_->vertex_keys)[id] = tags_->vertex_key(i, j, k, 3);
     }
 
     template <class S>
@@ -467,12 +563,18 @@ private:
         const std::size_t r = k * ny_ + j;
         std::size_t id = vbase_[r];
         const std::uint64_t* a = row(j, k);
+        // Writing into the whole result: only the rows and samples the block owns, at the
+        // global start of their run.
+        if (layout_ && (j >= layout_->own_y || k >= layout_->own_z)) return;
+        const std::size_t own_x = layout_ ? layout_->own_x : nx_;
         auto emit = [&](auto mask_of, int axis) {
+            if (layout_) id = layout_start(j, k, axis, layout_->column);
             for (std::size_t w = 0; w < words_; ++w) {
                 std::uint64_t m = mask_of(w);
                 while (m) {
                     const std::size_t i = w * 64 + static_cast<std::size_t>(std::countr_zero(m));
                     m &= m - 1;
+                    if (i >= own_x) return;
                     write_vertex(id++, i, j, k, axis, out);
                 }
             }
@@ -484,14 +586,15 @@ private:
 
     template <class S>
     void write_cube_row(std::size_t j, std::size_t k, scratch& s, const case_table& table, indexed_triangles<S>& out) const {
-        // Crossing masks of the rows around this cube row and their running popcounts: the
-        // rank of an edge in its row's mask is its vertex's offset within the row.
+        // The crossing masks of the rows around this cube row. A vertex's id is its row's base
+        // plus its rank in its mask; numbering each mask's bits in one sweep costs a store per
+        // vertex, where ranking every cube corner would cost a bit count (no popcnt
+        // instruction in the x86-64 baseline) per triangle corner.
         if (tbase_[k * ny_ + j + 1] == tbase_[k * ny_ + j]) return;  // no triangles in this cube row
         const std::size_t ra = k * ny_ + j, rb = ra + 1, rc = ra + ny_, rd = rc + 1;
         const std::uint64_t *a = row(j, k), *b = row(j + 1, k), *c = row(j, k + 1), *d = row(j + 1, k + 1);
         std::uint64_t* m = s.masks.data();
-        std::uint32_t* p = s.prefix.data();
-        const std::size_t W = words_;
+        const std::size_t W = words_, stride = 64 * W;
         for (std::size_t w = 0; w < W; ++w) {
             m[0 * W + w] = (a[w] ^ shr1(a, w, W)) & x_valid(w);
             m[1 * W + w] = (b[w] ^ shr1(b, w, W)) & x_valid(w);
@@ -502,11 +605,6 @@ private:
             m[6 * W + w] = a[w] ^ c[w];  // z-edges of row a
             m[7 * W + w] = b[w] ^ d[w];  // z-edges of row b
         }
-        for (int q = 0; q < 8; ++q) {
-            p[q * (W + 1)] = 0;
-            for (std::size_t w = 0; w < W; ++w)
-                p[q * (W + 1) + w + 1] = p[q * (W + 1) + w] + count_bits(m[q * W + w]);
-        }
         const std::uint64_t base[8] = {vbase_[ra],
                                        vbase_[rb],
                                        vbase_[rc],
@@ -515,11 +613,42 @@ private:
                                        vbase_[rc] + xcount_[rc],
                                        vbase_[ra] + xcount_[ra] + ycount_[ra],
                                        vbase_[rb] + xcount_[rb] + ycount_[rb]};
-        // Edge e reads mask edge_mask[e] at i + edge_step[e].
+        std::uint32_t* ids = s.ids.data();
+        if (layout_) {
+            // Ids in the whole result: the global start of each mask's run in this chunk
+            // column; an edge at the block's last sample along x is the first of the next's.
+            static constexpr int mask_row[8][2] = {{0, 0}, {1, 0}, {0, 1}, {1, 1}, {0, 0}, {0, 1}, {0, 0}, {1, 0}};
+            static constexpr int mask_axis[8] = {0, 0, 0, 0, 1, 1, 2, 2};
+            for (int q = 0; q < 8; ++q) {
+                const std::size_t qj = j + std::size_t(mask_row[q][0]), qk = k + std::size_t(mask_row[q][1]);
+                auto id = layout_start(qj, qk, mask_axis[q], layout_->column);
+                std::uint32_t* slot = ids + std::size_t(q) * stride;
+                for (std::size_t w = 0; w < W; ++w)
+                    for (std::uint64_t bits = m[std::size_t(q) * W + w]; bits; bits &= bits - 1) {
+                        const std::size_t i = w * 64 + static_cast<std::size_t>(std::countr_zero(bits));
+                        slot[i] = i < layout_->own_x ? id++ : layout_start(qj, qk, mask_axis[q], layout_->column + 1);
+                    }
+            }
+        } else {
+            for (int q = 0; q < 8; ++q) {
+                auto id = static_cast<std::uint32_t>(base[q]);
+                std::uint32_t* slot = ids + std::size_t(q) * stride;
+                for (std::size_t w = 0; w < W; ++w)
+                    for (std::uint64_t bits = m[std::size_t(q) * W + w]; bits; bits &= bits - 1)
+                        slot[w * 64 + static_cast<std::size_t>(std::countr_zero(bits))] = id++;
+            }
+        }
+        // Edge e of the cube at i reads mask edge_mask[e] at i + edge_step[e].
         static constexpr int edge_mask[12] = {0, 1, 2, 3, 4, 4, 5, 5, 6, 6, 7, 7};
         static constexpr int edge_step[12] = {0, 0, 0, 0, 0, 1, 0, 1, 0, 1, 0, 1};
+        std::size_t edge_at[12];
+        for (int e = 0; e < 12; ++e) edge_at[e] = std::size_t(edge_mask[e]) * stride + std::size_t(edge_step[e]);
         std::size_t t = tbase_[ra];
         std::size_t center = vbase_[ra] + xcount_[ra] + ycount_[ra] + zcount_[ra];
+        if (layout_) {
+            t = layout_->triangle_start[tags_->global_row(j, k) * layout_->columns + layout_->column];
+            center = layout_start(j, k, 3, layout_->column);
+        }
         for_each_active_cube(j, k, s, [&](std::size_t i, unsigned config) {
             const auto& entry = table.entries[table.first[config] + decide(i, j, k, config)];
             std::uint32_t id[13];
@@ -527,15 +656,29 @@ private:
                 id[center_vertex] = static_cast<std::uint32_t>(center);
                 write_center(center++, i, j, k, entry.center_loop, out);
             }
+            const std::uint32_t* at = ids + i;
             for (unsigned crossed = table.crossed_edges[config]; crossed; crossed &= crossed - 1) {
                 const int e = std::countr_zero(crossed);
-                const int q = edge_mask[e];
-                id[e] = static_cast<std::uint32_t>(base[q] + rank(m + q * W, p + q * (W + 1), i + std::size_t(edge_step[e])));
+                id[e] = at[edge_at[e]];
             }
-            for (unsigned n = 0; n < entry.count; ++n) {
-                if (tags_) (*tags_->triangle_cubes)[t] = tags_->cube_key(i, j, k);
-                out.triangles[t++] = {id[entry.edges[3 * n]], id[entry.edges[3 * n + 1]], id[entry.edges[3 * n + 2]]};
+            if (layout_) {
+                // Reversed with swap_xz: swapping two axes mirrors the surface.
+                const int second = layout_->swap_xz ? 2 : 1, third = 3 - second;
+                std::uint32_t* dst = layout_->triangles + 3 * t;
+                for (unsigned n = 0; n < entry.count; ++n) {
+                    dst[3 * n] = id[entry.edges[3 * n]];
+                    dst[3 * n + 1] = id[entry.edges[3 * n + std::size_t(second)]];
+                    dst[3 * n + 2] = id[entry.edges[3 * n + std::size_t(third)]];
+                }
+                t += entry.count;
+                return;
             }
+            auto* dst = out.triangles.data() + t;
+            for (unsigned n = 0; n < entry.count; ++n)
+                dst[n] = {id[entry.edges[3 * n]], id[entry.edges[3 * n + 1]], id[entry.edges[3 * n + 2]]};
+            if (tags_)
+                for (unsigned n = 0; n < entry.count; ++n) (*tags_->triangle_cubes)[t + n] = tags_->cube_key(i, j, k);
+            t += entry.count;
         });
     }
 
@@ -543,8 +686,14 @@ private:
     marching_cubes_options opt_;
     const typename G::value_type* data_ = nullptr;
     std::size_t nx_ = 0, ny_ = 0, nz_ = 0, words_ = 0;
+    std::size_t sy_ = 0, sz_ = 0;  // samples from one row to the next, and from one slice to the next
     bool above_ = false;
     const block_tags* tags_ = nullptr;
+    const global_layout* layout_ = nullptr;
+    bool reuse_ = false;
+    std::uint32_t layout_start(std::size_t j, std::size_t k, int axis, std::size_t column) const noexcept {
+        return layout_->vertex_start[(tags_->global_row(j, k) * 4 + std::size_t(axis)) * layout_->columns + column];
+    }
     std::vector<std::uint64_t> bits_;
     std::vector<std::uint32_t> xcount_, ycount_, zcount_;
     std::vector<std::uint64_t> vbase_, tbase_;
