@@ -597,8 +597,9 @@ inline const char* to_string(ply_encoding e) {
     return "?";
 }
 
-/// Reads a PLY file into `mesh`, replacing its content; on error the mesh is unchanged.
-/// Complexity: O(bytes + mesh insertions).
+/// Reads a PLY file into `mesh`, replacing its content; on error the mesh is unchanged. A model
+/// that takes its arrays whole (face_vertex_mesh) gets the file parsed straight into them: one
+/// validation pass, no copy. Complexity: O(bytes + mesh insertions).
 template <class M, class T = default_traits<M>>
     requires readable_mesh<M, T>
 result<read_report> read_ply(M& mesh, const std::filesystem::path& path, const read_options& options = {}) {
