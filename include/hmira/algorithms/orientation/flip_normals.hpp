@@ -39,9 +39,10 @@ std::size_t flip_normals(M& mesh) {
 /// outgoing halfedge again (a boundary one on the boundary), inner rings stay attached.
 /// Returns the number of faces flipped. Complexity O(H_all + V_all), with O(H_all) scratch,
 /// or less on a model whose traits offer reverse_orientation(mesh): halfedge_mesh (one pass
-/// over its halfedge array, as the two halfedges of an edge lie side by side, no scratch) and
-/// CGAL::Surface_mesh (one pass over its edges, O(H_all) scratch; the generic pass costs it
-/// 1.6x, translating its incoming vertex halfedges to outgoing and back).
+/// over its halfedge array, as the two halfedges of an edge lie side by side, no scratch),
+/// CGAL::Surface_mesh and OpenMesh (one pass over their edges, O(H_all) scratch; the generic
+/// pass cost Surface_mesh 1.6x its own loop, translating its incoming vertex halfedges to
+/// outgoing and back).
 template <class M, class T = default_traits<M>>
     requires halfedge_flip_mesh<M, T> && (!face_reversible_mesh<M, T>)
 std::size_t flip_normals(M& mesh) {
