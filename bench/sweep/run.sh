@@ -3,8 +3,8 @@
 # (the linear ones; less where time or memory do not allow, see bench/sweep/sweep_bench.cpp),
 # the fitted exponent of CPU time against size beside the documented complexity, the spread of
 # the time per element, and PASS/FAIL; then the editing sweeps (bench/editing's
-# editing_scaling_bench, 10^4..10^6 faces). A few minutes in all; --quick: 10^4..10^5/10^6 in
-# steps of 10, well under a minute. Not run in CI.
+# editing_scaling_bench, 10^4..10^6 faces). A few minutes in all; --quick: at most 10^6 (10^5
+# for remeshing), under a minute plus the build. Not run in CI.
 #   bench/sweep/run.sh [--quick] [--only SUBSTRING] [--build-dir DIR]
 set -euo pipefail
 root="$(cd "$(dirname "$0")/../.." && pwd)"

@@ -51,11 +51,11 @@ struct config {
     int repeats = 3;
 };
 
-/// 10^4, 10^4.5, ... up to `hi` (10^4, 10^5, ... with --quick).
+/// 10^4, 10^4.5, ... up to `hi`: three sizes in the largest decade, whose exponent decides (two,
+/// one on each side of a cache level, measured the cache, not the algorithm).
 std::vector<double> sizes(const config& c, double hi) {
     std::vector<double> out;
-    const double step = c.quick ? 1.0 : 0.5;
-    for (double e = 4; std::pow(10.0, e) <= std::min(hi, c.max_elements) * 1.001; e += step) out.push_back(std::pow(10.0, e));
+    for (double e = 4; std::pow(10.0, e) <= std::min(hi, c.max_elements) * 1.001; e += 0.5) out.push_back(std::pow(10.0, e));
     return out;
 }
 
