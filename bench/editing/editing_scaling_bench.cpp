@@ -15,11 +15,6 @@
 #include <string>
 #include <ctime>
 
-#include <sys/resource.h>
-
-#ifdef __GLIBC__
-#include <malloc.h>
-#endif
 #include <vector>
 
 #include <hmira/algorithms/conversion/marching_cubes.hpp>
@@ -28,6 +23,8 @@
 #include <hmira/grids/implicit_shapes.hpp>
 #include <hmira/grids/sample.hpp>
 #include <hmira/meshes/halfedge_mesh.hpp>
+
+#include "support/sweep.hpp"
 
 namespace {
 
@@ -40,13 +37,6 @@ M torus(std::size_t side) {
     return m;
 }
 
-/// This thread's CPU time (user + system, page faults included), in seconds.
-double cpu_now() {
-    timespec t{};
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-    return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
-}
-
 /// One call's CPU time and wall time. The fits use CPU time: on a shared machine the wall
 /// time also counts the time other processes held the core, which says nothing of the edit.
 struct timing {
@@ -54,21 +44,15 @@ struct timing {
     long faults = 0;  // minor page faults during the call (fresh memory touched)
 };
 
-long minor_faults() {
-    rusage u{};
-    getrusage(RUSAGE_THREAD, &u);
-    return u.ru_minflt;
-}
-
 template <class Edit>
 timing seconds(M m, Edit edit) {
-    const long f0 = minor_faults();
-    const double c0 = cpu_now();
+    const long f0 = hmira_bench::minor_page_faults();
+    const double c0 = hmira_bench::thread_cpu_seconds();
     const auto t0 = std::chrono::steady_clock::now();
     const bool ok = edit(m);
     const auto t1 = std::chrono::steady_clock::now();
-    const double c1 = cpu_now();
-    const long f1 = minor_faults();
+    const double c1 = hmira_bench::thread_cpu_seconds();
+    const long f1 = hmira_bench::minor_page_faults();
     if (!ok) {
         std::fprintf(stderr, "edit failed\n");
         std::exit(1);
@@ -106,16 +90,7 @@ bool extrude_half_region(M& m) {
     return hmira::extrude(m, fs, {.distance = 0.001, .mode = hmira::extrude_mode::region}).has_value();
 }
 
-struct sweep_point {
-    double faces, elements, time;
-};
-
-/// The median of the times of `repeats` calls of edit on fresh copies of m.
-double median(std::vector<double> xs) {
-    std::sort(xs.begin(), xs.end());
-    const std::size_t n = xs.size();
-    return n % 2 ? xs[n / 2] : (xs[n / 2 - 1] + xs[n / 2]) / 2;
-}
+using hmira_bench::median;
 
 /// The median CPU time of `repeats` calls after one untimed warm-up call (each call's CPU time in `all`, the median wall time
 /// in `wall`).
@@ -144,20 +119,6 @@ std::string list(const std::vector<double>& xs) {
     return s;
 }
 
-/// Least-squares slope of log(time) against log(faces).
-double exponent(const std::vector<sweep_point>& pts) {
-    double sx = 0, sy = 0, sxx = 0, sxy = 0;
-    for (const auto& p : pts) {
-        const double x = std::log(p.faces), y = std::log(p.time);
-        sx += x;
-        sy += y;
-        sxx += x * x;
-        sxy += x * y;
-    }
-    const double n = double(pts.size());
-    return (n * sxy - sx * sy) / (n * sxx - sx * sx);
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -169,13 +130,8 @@ int main(int argc, char** argv) {
     }
     const std::string only = argc > 3 ? argv[3] : "";
     std::setvbuf(stdout, nullptr, _IOLBF, 0);
-#ifdef __GLIBC__
-    // Keep freed memory in the process: large blocks otherwise come fresh from the kernel on
-    // every run (mmap, then zeroed page by page: 40% of a 1M-face edit's time in clear_page),
-    // while small meshes reuse the heap; that measured the kernel, not the edit.
-    mallopt(M_MMAP_MAX, 0);
-    mallopt(M_TRIM_THRESHOLD, std::numeric_limits<int>::max());
-#endif  // lines appear as they are measured, also in a file
+    // Without this, 40% of a 1M-face edit's time was the kernel clearing fresh pages.
+    hmira_bench::keep_freed_memory();
     std::vector<double> runs;
     struct edit {
         const char* name;
@@ -190,7 +146,7 @@ int main(int argc, char** argv) {
     };
     for (const auto& e : edits) {
         if (std::string(e.name).find(only) == std::string::npos) continue;
-        std::vector<sweep_point> pts;
+        std::vector<hmira_bench::sweep_point> by_faces, by_elements;
         for (std::size_t side : {100u, 178u, 316u, 562u, 1000u}) {
             if (double(side * side) > max_faces * 1.01) break;
             const M m = torus(side);
@@ -198,17 +154,16 @@ int main(int argc, char** argv) {
             double wall = 0;
             long faults = 0;
             const double t = median_seconds(m, e.run, repeats, runs, wall, &faults);
-            pts.push_back({double(T::face_count(m)), k, t});
+            by_faces.push_back({double(T::face_count(m)), t});
+            by_elements.push_back({k, t});
             std::printf("%-34s faces %8.0f elements %8.0f  median cpu %7.3f s %7.1f ns/element (runs %s), wall %7.3f s, "
                         "%.2f page faults/element\n",
                         e.name, double(T::face_count(m)), k, t, t / k * 1e9, list(runs).c_str(), wall, double(faults) / k);
         }
-        double lo = 1e300, hi = 0;
-        for (const auto& p : pts) {
-            lo = std::min(lo, p.time / p.elements);
-            hi = std::max(hi, p.time / p.elements);
-        }
-        std::printf("%-36s fitted exponent %.3f, time per element varies %.2fx\n\n", e.name, exponent(pts), hi / lo);
+        // Each doc block claims time linear in the elements edited (O(sum of degrees) = O(E)).
+        const double k = hmira_bench::fitted_exponent(by_faces);
+        std::printf("%-36s fitted exponent %.3f, time per element varies %.2fx  %s (documented linear)\n\n", e.name, k,
+                    hmira_bench::per_element_spread(by_elements), hmira_bench::verdict(k, {.text = "linear", .exponent = 1}));
     }
     // The comparison: a 128^3 gyroid (~450k edges), bevel every edge vs truncate every vertex.
     if (std::string("gyroid").find(only) == std::string::npos) return 0;

@@ -44,6 +44,43 @@ poly native_grid(int nx, int ny) {
     return m;
 }
 
+// The traits without their one-pass reverse_orientation: flip_normals's generic pass.
+struct traits_without_reverse_orientation : hmira::mesh_traits<poly> {
+    static void reverse_orientation(poly&) = delete;
+};
+
+// Every link of every element, for comparing two meshes exactly.
+std::vector<int> links(const poly& m) {
+    std::vector<int> out;
+    for (auto h : m.halfedges())
+        for (int x : {m.next_halfedge_handle(h).idx(), m.prev_halfedge_handle(h).idx(), m.to_vertex_handle(h).idx(), m.face_handle(h).idx()})
+            out.push_back(x);
+    for (auto v : m.vertices()) out.push_back(m.halfedge_handle(v).idx());
+    for (auto f : m.faces()) out.push_back(m.halfedge_handle(f).idx());
+    return out;
+}
+
+TEST(OpenMeshInterop, the_one_pass_flip_links_as_the_generic_pass_does_and_twice_restores_the_mesh) {
+    poly m = native_grid(4, 3);
+    // A hole in the middle, so that inner boundary vertices are flipped too; deleted elements
+    // (OpenMesh's status) stay as they are.
+    m.request_face_status();
+    m.request_edge_status();
+    m.request_halfedge_status();
+    m.request_vertex_status();
+    m.delete_face(poly::FaceHandle(6), false);
+    const poly original = m;
+    poly generic = m;
+    EXPECT_EQ(hmira::flip_normals(m), 11u);
+    EXPECT_EQ((hmira::flip_normals<poly, traits_without_reverse_orientation>(generic)), 11u);
+    ASSERT_TRUE(hmira_test::is_valid(m));
+    EXPECT_EQ(links(m), links(generic));
+    EXPECT_NE(links(m), links(original));
+    for (auto v : m.vertices()) EXPECT_TRUE(m.is_boundary(v) == m.is_boundary(m.halfedge_handle(v)));
+    EXPECT_EQ(hmira::flip_normals(m), 11u);
+    EXPECT_EQ(links(m), links(original));
+}
+
 TEST(OpenMeshInterop, flip_normals_runs_on_the_users_object_and_openmesh_sees_the_reversed_faces) {
     poly m = native_grid(4, 3);
     std::vector<std::vector<int>> before;

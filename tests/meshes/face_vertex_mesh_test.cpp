@@ -171,4 +171,71 @@ TEST(face_vertex_mesh_assign, a_bad_face_or_offset_names_the_face_and_changes_no
     }
 }
 
+TEST(face_vertex_mesh_assign, arrays_taken_by_move_become_the_mesh_without_a_copy) {
+    auto m = one_triangle_with_property();
+    std::vector<hmira::vec3<double>> positions{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {2, 0, 0}};
+    std::vector<hmira::vertex_handle> corners;
+    for (std::uint32_t i : {0u, 1u, 2u, 3u, 1u, 4u, 2u}) corners.push_back(hmira::vertex_handle(i));
+    const auto* position_data = positions.data();
+    const auto* corner_data = corners.data();
+    ASSERT_TRUE(m.assign(std::move(positions), std::vector<std::size_t>{0, 4, 7}, std::move(corners)));
+    ASSERT_EQ(m.vertex_count(), 5u);
+    ASSERT_EQ(m.face_count(), 2u);
+    // The very arrays: nothing was copied.
+    EXPECT_EQ(m.positions().data(), position_data);
+    EXPECT_EQ(m.face_vertices(hmira::face_handle(0u)).data(), corner_data);
+    EXPECT_EQ(m.position(hmira::vertex_handle(4u)), (hmira::vec3<double>{2, 0, 0}));
+    std::vector<std::uint32_t> got;
+    for (auto v : m.face_vertices(hmira::face_handle(1u))) got.push_back(v.index);
+    EXPECT_EQ(got, (std::vector<std::uint32_t>{1, 4, 2}));
+    auto p = m.get_vertex_property<int>("v:tag");
+    ASSERT_TRUE(p.has_value());
+    EXPECT_EQ((*p)[hmira::vertex_handle(4u)], 7);
+    EXPECT_TRUE(hmira_test::is_valid(m));
+}
+
+TEST(face_vertex_mesh_assign, arrays_taken_by_move_are_refused_whole_and_left_as_they_were) {
+    struct bad_case {
+        std::vector<std::size_t> offsets;
+        std::vector<std::uint32_t> corners;
+        errc code;
+        long long face;
+        std::string says;
+    };
+    // Triangles take a shortcut through the checks; their refusals must say the same.
+    const std::vector<bad_case> cases{
+        {{0, 3, 6}, {0, 1, 2, 0, 2, 9}, errc::invalid_handle, 1, "names vertex 9, which does not exist"},
+        {{0, 3, 6}, {0, 1, 2, 3, 3, 0}, errc::degenerate_face, 1, "vertex 3 appears twice"},
+        {{0, 3, 6}, {1, 1, 2, 0, 2, 3}, errc::degenerate_face, 0, "vertex 1 appears twice"},
+        {{0, 4, 7}, {0, 1, 2, 0, 1, 4, 2}, errc::degenerate_face, 0, "vertex 0 appears twice"},
+        {{0, 3, 5}, {0, 1, 2, 2, 3}, errc::degenerate_face, 1, "at least 3 vertices, got 2"},
+        {{0, 4}, {0, 1, 2}, errc::invalid_argument, -1, "end at the corner count 3"},
+        {{0, 3, 2, 3}, {0, 1, 2}, errc::invalid_argument, 1, "out of order"},
+    };
+    for (const auto& c : cases) {
+        auto m = one_triangle_with_property();
+        const auto changes = m.change_count();
+        std::vector<hmira::vec3<double>> positions{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {2, 0, 0}};
+        std::vector<hmira::vertex_handle> corners;
+        for (auto i : c.corners) corners.push_back(hmira::vertex_handle(i));
+        const auto corners_before = corners;
+        std::vector<std::size_t> offsets = c.offsets;
+        auto r = m.assign(std::move(positions), std::move(offsets), std::move(corners));
+        ASSERT_FALSE(r) << c.says;
+        EXPECT_EQ(r.error().code, c.code) << r.error().message;
+        EXPECT_EQ(r.error().element, c.face) << r.error().message;
+        EXPECT_NE(r.error().message.find(c.says), std::string::npos) << r.error().message;
+        EXPECT_EQ(m.change_count(), changes);
+        EXPECT_EQ(m.vertex_count(), 3u);
+        EXPECT_EQ(m.face_count(), 1u);
+        EXPECT_EQ(m.position(hmira::vertex_handle(1u)), (hmira::vec3<double>{1, 0, 0}));
+        EXPECT_TRUE(m.get_vertex_property<int>("v:tag").has_value());
+        // A refused call leaves the caller's arrays as they were.
+        EXPECT_EQ(positions.size(), 5u);
+        EXPECT_EQ(offsets, c.offsets);
+        EXPECT_EQ(corners, corners_before);
+        EXPECT_TRUE(hmira_test::is_valid(m));
+    }
+}
+
 }  // namespace

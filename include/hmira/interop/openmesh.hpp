@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <span>
 #include <string>
+#include <vector>
 
 #include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
@@ -172,6 +173,19 @@ struct traits_base {
     static result<FH> add_face(Mesh& m, std::span<const VH> vs) {
         if (vs.size() < 3)
             return fail(errc::degenerate_face, "add_face: a face needs at least 3 vertices, got " + std::to_string(vs.size()));
+        if (vs.size() == 3 && !m.has_vertex_status()) {
+            // A triangle, the common case, checked without the general loop (which names the
+            // problem of a refused one). Unsigned, a null handle (-1) is out of range.
+            const auto nv = m.n_vertices();
+            const auto a = static_cast<std::size_t>(static_cast<unsigned>(vs[0].idx())), b = static_cast<std::size_t>(static_cast<unsigned>(vs[1].idx())),
+                       c = static_cast<std::size_t>(static_cast<unsigned>(vs[2].idx()));
+            if (a < nv && b < nv && c < nv && a != b && b != c && a != c) {
+                const FH f = m.add_face(vs.data(), vs.size());
+                if (!f.is_valid())
+                    return fail(errc::non_manifold, "add_face: OpenMesh refused the face (it would make an edge or vertex non-manifold, or is wound against a neighbour)");
+                return f;
+            }
+        }
         for (std::size_t i = 0; i < vs.size(); ++i) {
             if (!vs[i].is_valid() || static_cast<std::size_t>(vs[i].idx()) >= m.n_vertices() ||
                 (m.has_vertex_status() && m.status(vs[i]).deleted()))
@@ -185,6 +199,37 @@ struct traits_base {
         if (!f.is_valid())
             return fail(errc::non_manifold, "add_face: OpenMesh refused the face (it would make an edge or vertex non-manifold, or is wound against a neighbour)");
         return f;
+    }
+
+    /// Optional (not a concept requirement): reverses every face, as flip_normals does through
+    /// the raw mutators, in one pass over the edges (the two halfedges of edge e are 2e and
+    /// 2e + 1) with one scratch index per halfedge, where the generic pass keeps three arrays.
+    /// Deleted elements (status requested) are left as they are. Complexity O(H_all + V_all).
+    static void reverse_orientation(Mesh& m) {
+        const std::size_t nh = m.n_halfedges();
+        std::vector<HH> old_prev(nh);
+        for (std::size_t i = 0; i < nh; ++i) old_prev[i] = m.prev_halfedge_handle(HH(static_cast<int>(i)));
+        const bool edge_status = m.has_edge_status();
+        for (std::size_t e = 0; e < nh / 2; ++e) {
+            const EH edge(static_cast<int>(e));
+            if (edge_status && m.status(edge).deleted()) continue;
+            const HH a = m.halfedge_handle(edge, 0), b = m.halfedge_handle(edge, 1);
+            const VH ta = m.to_vertex_handle(a), tb = m.to_vertex_handle(b);
+            m.set_vertex_handle(a, tb);
+            m.set_vertex_handle(b, ta);
+            // Setting next also sets prev(old_prev) = h, its final value: old next(old_prev) is h.
+            m.set_next_halfedge_handle(a, old_prev[static_cast<std::size_t>(a.idx())]);
+            m.set_next_halfedge_handle(b, old_prev[static_cast<std::size_t>(b.idx())]);
+        }
+        const bool vertex_status = m.has_vertex_status();
+        for (std::size_t i = 0; i < m.n_vertices(); ++i) {
+            const VH v(static_cast<int>(i));
+            if (vertex_status && m.status(v).deleted()) continue;
+            const HH h = m.halfedge_handle(v);
+            if (!h.is_valid()) continue;
+            // On the border the halfedge that entered v (old prev, now next) leaves it.
+            m.set_halfedge_handle(v, m.face_handle(h).is_valid() ? m.opposite_halfedge_handle(h) : m.next_halfedge_handle(h));
+        }
     }
 
     // ----- raw mutation (the layer Euler operators use; keeps nothing consistent) ---------------

@@ -15,6 +15,7 @@
 #include <string>
 #include <string_view>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "../concepts.hpp"
@@ -263,6 +264,13 @@ inline int ply_face_list(const ply_element& e) {
     return -1;
 }
 
+/// A point of the soup's type (std::array<double, 3>, or a mesh's vec3) from three values.
+template <class P>
+P ply_point(double x, double y, double z) {
+    using S = std::remove_cvref_t<decltype(std::declval<P&>()[0])>;
+    return P{static_cast<S>(x), static_cast<S>(y), static_cast<S>(z)};
+}
+
 struct ply_binary_reader {
     std::string_view text;
     const std::string& name;
@@ -279,8 +287,10 @@ struct ply_binary_reader {
     }
 };
 
-template <bool Swap>
-result<void> ply_read_binary(const ply_header& h, polygon_soup& soup, ply_binary_reader& r, const read_options& options) {
+template <bool Swap, class Soup>
+result<void> ply_read_binary(const ply_header& h, Soup& soup, ply_binary_reader& r, const read_options& options) {
+    using index_type = typename decltype(soup.indices)::value_type;
+    using point_type = typename decltype(soup.points)::value_type;
     const char* data = r.text.data();
     std::uint64_t nv = 0;
     for (const auto& e : h.elements)
@@ -321,14 +331,14 @@ result<void> ply_read_binary(const ply_header& h, polygon_soup& soup, ply_binary
             if (float_xyz) {
                 for (std::size_t i = 0; i < n; ++i) {
                     const char* item = base + i * stride;
-                    soup.points[i] = {ply_raw<float, Swap>(item + off[0]), ply_raw<float, Swap>(item + off[1]), ply_raw<float, Swap>(item + off[2])};
+                    soup.points[i] = ply_point<point_type>(ply_raw<float, Swap>(item + off[0]), ply_raw<float, Swap>(item + off[1]), ply_raw<float, Swap>(item + off[2]));
                     if (!all_finite(soup.points[i])) return r.not_finite(r.pos + i * stride, "vertex", i);
                 }
             } else {
                 for (std::size_t i = 0; i < n; ++i) {
                     const char* item = base + i * stride;
-                    soup.points[i] = {ply_load<Swap>(type(l.xyz[0]), item + off[0]), ply_load<Swap>(type(l.xyz[1]), item + off[1]),
-                                      ply_load<Swap>(type(l.xyz[2]), item + off[2])};
+                    soup.points[i] = ply_point<point_type>(ply_load<Swap>(type(l.xyz[0]), item + off[0]), ply_load<Swap>(type(l.xyz[1]), item + off[1]),
+                                                          ply_load<Swap>(type(l.xyz[2]), item + off[2]));
                     if (!all_finite(soup.points[i])) return r.not_finite(r.pos + i * stride, "vertex", i);
                 }
             }
@@ -385,7 +395,7 @@ result<void> ply_read_binary(const ply_header& h, polygon_soup& soup, ply_binary
                             return fail(errc::parse_error, r.at(r.pos + 1 + 4 * j) + ": face " + std::to_string(f) + " uses vertex " +
                                                                std::to_string(lp.type == ply_type::i32 ? static_cast<long long>(static_cast<std::int32_t>(idx)) : static_cast<long long>(idx)) +
                                                                ", out of range [0, " + std::to_string(nv) + ")", static_cast<long long>(f));
-                        soup.indices.push_back(idx);
+                        soup.indices.push_back(index_type(idx));
                     }
                     r.pos += 1 + 4 * k;
                     soup.face_offsets.push_back(soup.indices.size());
@@ -415,7 +425,7 @@ result<void> ply_read_binary(const ply_header& h, polygon_soup& soup, ply_binary
                             if (idx < 0 || static_cast<std::uint64_t>(idx) >= nv)
                                 return fail(errc::parse_error, r.at(r.pos + static_cast<std::size_t>(j) * is) + ": face " + std::to_string(f) + " uses vertex " +
                                                                    std::to_string(idx) + ", out of range [0, " + std::to_string(nv) + ")", static_cast<long long>(f));
-                            soup.indices.push_back(static_cast<std::uint32_t>(idx));
+                            soup.indices.push_back(index_type(static_cast<std::uint32_t>(idx)));
                         }
                         soup.face_offsets.push_back(soup.indices.size());
                     }
@@ -451,7 +461,10 @@ result<void> ply_read_binary(const ply_header& h, polygon_soup& soup, ply_binary
     return {};
 }
 
-inline result<void> ply_read_ascii(const ply_header& h, polygon_soup& soup, std::string_view text, const std::string& name, const read_options& options) {
+template <class Soup>
+result<void> ply_read_ascii(const ply_header& h, Soup& soup, std::string_view text, const std::string& name, const read_options& options) {
+    using index_type = typename decltype(soup.indices)::value_type;
+    using point_type = typename decltype(soup.points)::value_type;
     text_cursor c(text.substr(h.data_offset));
     progress_ticker ticker(options.progress, text.size());
     const std::size_t line0 = h.data_line;
@@ -502,7 +515,7 @@ inline result<void> ply_read_ascii(const ply_header& h, polygon_soup& soup, std:
                         if (idx < 0 || static_cast<std::uint64_t>(idx) >= nv)
                             return fail(errc::parse_error, where() + ": face " + std::to_string(i) + " uses vertex " + std::to_string(idx) + ", out of range [0, " +
                                                                std::to_string(nv) + ")");
-                        soup.indices.push_back(static_cast<std::uint32_t>(idx));
+                        soup.indices.push_back(index_type(static_cast<std::uint32_t>(idx)));
                     } else {
                         double x = 0;
                         if (!c.number(x)) return fail(errc::parse_error, where() + ": " + e.name + " " + std::to_string(i) + ": " + describe_bad_number(c));
@@ -514,7 +527,8 @@ inline result<void> ply_read_ascii(const ply_header& h, polygon_soup& soup, std:
                 return fail(errc::parse_error, where() + ": " + e.name + " " + std::to_string(i) + " has more values than its " + std::to_string(e.props.size()) +
                                                    " properties ('" + std::string(c.peek_token()) + "')");
             if (is_vertex) {
-                soup.points.push_back({values[static_cast<std::size_t>(l.xyz[0])], values[static_cast<std::size_t>(l.xyz[1])], values[static_cast<std::size_t>(l.xyz[2])]});
+                soup.points.push_back(ply_point<point_type>(values[static_cast<std::size_t>(l.xyz[0])], values[static_cast<std::size_t>(l.xyz[1])],
+                                                           values[static_cast<std::size_t>(l.xyz[2])]));
                 if (!all_finite(soup.points.back()))
                     return fail(errc::parse_error, where() + ": vertex " + std::to_string(i) + " has a coordinate that is not finite (NaN or infinity)", static_cast<long long>(i));
                 if (l.has_normals()) {
@@ -547,6 +561,17 @@ inline result<void> ply_read_ascii(const ply_header& h, polygon_soup& soup, std:
     return {};
 }
 
+/// The data after a parsed header into `soup`: a polygon_soup, or a mesh_soup of a mesh's own
+/// types (read_ply into a model that takes its arrays whole).
+template <class Soup>
+result<void> parse_ply_into(Soup& soup, const ply_header& h, std::string_view text, const std::string& name, const read_options& options) {
+    if (h.encoding == ply_encoding::ascii) return ply_read_ascii(h, soup, text, name, options);
+    ply_binary_reader reader{text, name, h.data_offset};
+    constexpr bool little_host = std::endian::native == std::endian::little;
+    const bool swap = (h.encoding == ply_encoding::binary_little_endian) != little_host;
+    return swap ? ply_read_binary<true>(h, soup, reader, options) : ply_read_binary<false>(h, soup, reader, options);
+}
+
 }  // namespace detail
 
 /// Parses PLY (any encoding) into a soup. Errors name `name:line` in the header and in ASCII
@@ -558,16 +583,7 @@ inline result<polygon_soup> parse_ply(std::string_view text, const std::string& 
     auto h = detail::parse_ply_header(text, name);
     if (!h) return h.error();
     polygon_soup soup;
-    if (h->encoding == ply_encoding::ascii) {
-        auto r = detail::ply_read_ascii(*h, soup, text, name, options);
-        if (!r) return r.error();
-        return soup;
-    }
-    detail::ply_binary_reader reader{text, name, h->data_offset};
-    constexpr bool little_host = std::endian::native == std::endian::little;
-    const bool swap = (h->encoding == ply_encoding::binary_little_endian) != little_host;
-    auto r = swap ? detail::ply_read_binary<true>(*h, soup, reader, options) : detail::ply_read_binary<false>(*h, soup, reader, options);
-    if (!r) return r.error();
+    if (auto r = detail::parse_ply_into(soup, *h, text, name, options); !r) return r.error();
     return soup;
 }
 
@@ -581,8 +597,9 @@ inline const char* to_string(ply_encoding e) {
     return "?";
 }
 
-/// Reads a PLY file into `mesh`, replacing its content; on error the mesh is unchanged.
-/// Complexity: O(bytes + mesh insertions).
+/// Reads a PLY file into `mesh`, replacing its content; on error the mesh is unchanged. A model
+/// that takes its arrays whole (face_vertex_mesh) gets the file parsed straight into them: one
+/// validation pass, no copy. Complexity: O(bytes + mesh insertions).
 template <class M, class T = default_traits<M>>
     requires readable_mesh<M, T>
 result<read_report> read_ply(M& mesh, const std::filesystem::path& path, const read_options& options = {}) {
@@ -590,9 +607,17 @@ result<read_report> read_ply(M& mesh, const std::filesystem::path& path, const r
     if (!file) return file.error();
     auto h = detail::parse_ply_header(file->text(), path.string());
     if (!h) return h.error();
+    const std::string format = std::string("ply (") + to_string(h->encoding) + ")";
+    if constexpr (detail::takes_own_arrays<M, T>) {
+        // Parsed straight into the mesh's own position and corner types, which the mesh then
+        // takes over: no second copy of the file's content (issue 20).
+        detail::mesh_soup<M, T> soup;
+        if (auto r = detail::parse_ply_into(soup, *h, file->text(), path.string(), options); !r) return r.error();
+        return detail::assign_own_arrays<M, T>(mesh, std::move(soup), path.string(), format);
+    }
     auto soup = parse_ply(file->text(), path.string(), options);
     if (!soup) return soup.error();
-    return finish_read<M, T>(mesh, std::move(*soup), path.string(), std::string("ply (") + to_string(h->encoding) + ")", 0, options);
+    return finish_read<M, T>(mesh, std::move(*soup), path.string(), format, 0, options);
 }
 
 /// Writes PLY through `out` (false, nothing written, if a face has inner rings; see write_ply) in the chosen encoding: x y z (the mesh's scalar type unless

@@ -138,31 +138,28 @@ public:
     template <class Point>
     result<void> assign(std::span<const Point> points, std::vector<std::size_t>&& face_offsets,
                         std::span<const std::uint32_t> corner_indices) {
-        if (face_offsets.empty() || face_offsets.front() != 0 || face_offsets.back() != corner_indices.size())
-            return fail(errc::invalid_argument, "assign: the face offsets must start at 0 and end at the corner count " +
-                                                    std::to_string(corner_indices.size()));
-        const std::size_t faces = face_offsets.size() - 1;
-        if (faces >= UINT32_MAX - 1 || points.size() >= UINT32_MAX)
-            return fail(errc::invalid_argument, "assign: " + std::to_string(points.size()) + " vertices and " + std::to_string(faces) +
-                                                    " faces; 32-bit handles name fewer than 2^32 - 1 of each");
-        const auto vertex_count = points.size();
-        auto exists = [&](vertex_handle v) { return v.index < vertex_count; };
-        std::vector<vertex_handle> corners(corner_indices.size());
-        for (std::size_t f = 0; f < faces; ++f) {
-            if (face_offsets[f + 1] < face_offsets[f] || face_offsets[f + 1] > corner_indices.size())
-                return fail(errc::invalid_argument, "assign: face " + std::to_string(f) + ": its offsets " + std::to_string(face_offsets[f]) +
-                                                        ".." + std::to_string(face_offsets[f + 1]) + " are out of order", static_cast<long long>(f));
-            for (auto k = face_offsets[f]; k < face_offsets[f + 1]; ++k) corners[k] = vertex_handle(corner_indices[k]);
-            const std::span<const vertex_handle> face(corners.data() + face_offsets[f], corners.data() + face_offsets[f + 1]);
-            if (auto problem = face_problem(face, exists)) {
-                problem->element = static_cast<long long>(f);
-                return *problem;
-            }
-        }
+        // Filled by push_back into reserved room, not sized up front: zeroing the arrays first
+        // would write every fresh page twice (issue 20).
+        std::vector<vertex_handle> corners;
+        corners.reserve(corner_indices.size());
+        for (const auto i : corner_indices) corners.push_back(vertex_handle(i));
+        std::vector<point> positions;
+        positions.reserve(points.size());
+        for (const auto& p : points)
+            positions.push_back(point{static_cast<Scalar>(p[0]), static_cast<Scalar>(p[1]), static_cast<Scalar>(p[2])});
+        return assign(std::move(positions), std::move(face_offsets), std::move(corners));
+    }
+
+    /// assign() from arrays the mesh takes over whole (a reader that parsed straight into the
+    /// mesh's types): vertex i at positions[i], face f with the corners
+    /// corners[face_offsets[f] .. face_offsets[f + 1]). Nothing is copied. Same checks, errors
+    /// and effects as the indexed overload; on an error the mesh and the three arrays are
+    /// unchanged.
+    /// Complexity: O(V + C) for C corners (O(k log k) for a face of k > 16 corners).
+    result<void> assign(std::vector<point>&& positions, std::vector<std::size_t>&& face_offsets, std::vector<vertex_handle>&& corners) {
+        if (auto problem = polygons_problem(positions.size(), face_offsets, corners)) return *problem;
         // Nothing below can fail (short of memory): the mesh changes only now.
-        std::vector<point> positions(vertex_count);
-        for (std::size_t i = 0; i < vertex_count; ++i)
-            positions[i] = point{static_cast<Scalar>(points[i][0]), static_cast<Scalar>(points[i][1]), static_cast<Scalar>(points[i][2])};
+        const auto vertex_count = positions.size(), faces = face_offsets.size() - 1;
         positions_ = std::move(positions);
         vertex_deleted_.assign(vertex_count, 0);
         corners_ = std::move(corners);
@@ -305,6 +302,36 @@ public:
     std::uint64_t change_count() const noexcept { return changes_; }
 
 private:
+    // Why assign() refuses these polygons: offsets that do not describe the corners, too many
+    // elements for 32-bit handles, or the first face add_face would refuse (the error's element).
+    static std::optional<error> polygons_problem(std::size_t vertex_count, std::span<const std::size_t> face_offsets,
+                                                 std::span<const vertex_handle> corners) {
+        if (face_offsets.empty() || face_offsets.front() != 0 || face_offsets.back() != corners.size())
+            return error{errc::invalid_argument, "assign: the face offsets must start at 0 and end at the corner count " + std::to_string(corners.size())};
+        const std::size_t faces = face_offsets.size() - 1;
+        if (faces >= UINT32_MAX - 1 || vertex_count >= UINT32_MAX)
+            return error{errc::invalid_argument, "assign: " + std::to_string(vertex_count) + " vertices and " + std::to_string(faces) +
+                                                     " faces; 32-bit handles name fewer than 2^32 - 1 of each"};
+        auto exists = [&](vertex_handle v) { return v.index < vertex_count; };
+        for (std::size_t f = 0; f < faces; ++f) {
+            const auto begin = face_offsets[f], end = face_offsets[f + 1];
+            if (end < begin || end > corners.size())
+                return error{errc::invalid_argument, "assign: face " + std::to_string(f) + ": its offsets " + std::to_string(begin) + ".." +
+                                                         std::to_string(end) + " are out of order", static_cast<long long>(f)};
+            if (end - begin == 3) {
+                // Triangles, the common case, checked inline; a refused one takes the general
+                // path below for its message.
+                const auto a = corners[begin].index, b = corners[begin + 1].index, c = corners[begin + 2].index;
+                if (a < vertex_count && b < vertex_count && c < vertex_count && a != b && b != c && a != c) continue;
+            }
+            if (auto problem = face_problem(corners.subspan(begin, end - begin), exists)) {
+                problem->element = static_cast<long long>(f);
+                return problem;
+            }
+        }
+        return std::nullopt;
+    }
+
     // Why a face with these corners cannot be added (fewer than 3, a vertex that does not
     // exist, a repeat), or nothing. The error's element is the vertex concerned.
     template <class Exists>

@@ -160,6 +160,56 @@ concept takes_indexed_polygons = std::same_as<T, default_traits<M>> && requires(
     { mesh.assign(std::span<const std::array<double, 3>>(soup.points), std::move(offsets), std::span<const std::uint32_t>(soup.indices)) };
 };
 
+/// A model that takes positions, offsets and corners of its own types whole (face_vertex_mesh's
+/// by-move assign), under its own traits: a reader can parse straight into its arrays.
+template <class M, class T>
+concept takes_own_arrays = std::same_as<T, default_traits<M>> && requires(M& mesh, std::vector<typename M::point> positions,
+                                                                          std::vector<std::size_t> offsets,
+                                                                          std::vector<typename T::vertex_handle> corners) {
+    { mesh.assign(std::move(positions), std::move(offsets), std::move(corners)) };
+};
+
+/// A polygon soup in such a model's own position and corner types, for a parser to fill.
+template <class M, class T>
+struct mesh_soup {
+    std::vector<typename M::point> points;                 ///< positions, in file order
+    std::vector<std::uint64_t> face_offsets{0};            ///< as polygon_soup::face_offsets
+    std::vector<typename T::vertex_handle> indices;        ///< face corners
+    mesh_attributes attributes;                            ///< empty vectors, or one entry per point
+};
+
+/// The parsed arrays handed to the mesh whole (see takes_own_arrays); on error the mesh is
+/// unchanged, and the error names the face as assign_indexed_polygons does.
+template <class M, class T>
+result<read_report> assign_own_arrays(M& mesh, mesh_soup<M, T>&& soup, const std::string& name, std::string format) {
+    read_report report;
+    report.file_vertices = soup.points.size();
+    report.format = std::move(format);
+    if (soup.points.size() > std::size_t{0xffffffffu})
+        return fail(errc::unsupported, name + ": " + std::to_string(soup.points.size()) + " vertices; at most 2^32 - 1 are supported");
+    std::vector<std::size_t> offsets;
+    if constexpr (std::same_as<std::size_t, std::uint64_t>)
+        offsets = std::move(soup.face_offsets);
+    else
+        offsets.assign(soup.face_offsets.begin(), soup.face_offsets.end());
+    const std::size_t vertex_count = soup.points.size();
+    auto assigned = mesh.assign(std::move(soup.points), std::move(offsets), std::move(soup.indices));
+    if (!assigned) {
+        auto e = assigned.error();
+        const auto f = static_cast<std::size_t>(e.element < 0 ? 0 : e.element);
+        e.message = name + ": face " + std::to_string(f) + " rejected: " + e.message;
+        return e;
+    }
+    if (!soup.attributes.normals.empty() || !soup.attributes.colors.empty()) {
+        std::vector<typename T::vertex_handle> vs;
+        vs.reserve(vertex_count);
+        for (std::size_t i = 0; i < vertex_count; ++i) vs.push_back(typename T::vertex_handle(static_cast<std::uint32_t>(i)));
+        store_attribute_properties<M, T>(mesh, soup.attributes, vs);
+    }
+    report.attributes = std::move(soup.attributes);
+    return report;
+}
+
 /// The soup into such a model: unchanged on error, whose face is named by face_origin.
 template <class M, class T, class Origin>
 result<void> assign_indexed_polygons(M& mesh, const polygon_soup& soup, std::vector<std::size_t>&& offsets, Origin& face_origin) {
