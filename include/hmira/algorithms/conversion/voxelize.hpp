@@ -474,15 +474,14 @@ inline bool fill_window(const std::vector<tri>& tris, const std::vector<std::uin
     const std::size_t words = out.words_per_row();
     const long long layers = std::clamp<long long>(static_cast<long long>((std::size_t(1) << 16) / std::max<std::size_t>(1, words * dims[1])), 1, nz);
     const std::size_t slabs = std::size_t((nz + layers - 1) / layers);
-    slab_bins surface_bins, crossing_bins;
+    slab_bins surface_bins, own_crossing_bins;
     if (job.surface) surface_bins = bin_to_slabs(tris, surface_subset, lo[2], nz, layers);
-    if (job.crossings) {
-        if (job.surface && surface_subset == crossing_subset) crossing_bins = surface_bins;
-        else crossing_bins = bin_to_slabs(tris, crossing_subset, lo[2], nz, layers);
-    }
+    const bool shared = job.surface && surface_subset == crossing_subset;  // one set of bins serves both passes
+    if (job.crossings && !shared) own_crossing_bins = bin_to_slabs(tris, crossing_subset, lo[2], nz, layers);
+    const slab_bins& crossing_bins = shared ? surface_bins : own_crossing_bins;
     // Progress counts triangle visits and rows.
     const std::size_t rows = dims[1] * dims[2];
-    progress_gate gate(progress, surface_bins.tri.size() + crossing_bins.tri.size() + (job.crossings ? rows : 0) + (job.winding ? rows : 0));
+    progress_gate gate(progress, surface_bins.tri.size() + (job.crossings ? crossing_bins.tri.size() + rows : 0) + (job.winding ? rows : 0));
 
     const bit_sink set_voxel{out.words().data(), words, words * dims[1], {lo[0], lo[1], lo[2]}};
 
