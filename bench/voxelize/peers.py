@@ -2,13 +2,17 @@
 """Times the peers' voxelization of the meshes bench_voxelize --export wrote, on the same grid
 (origin, spacing, dimensions) where the peer lets us choose it, and prints one table with
 hmira's Google Benchmark results (JSON, median of 5 repetitions) and the peers' (median of 5
-runs) side by side, with the filled-voxel counts. hmira's conservative and centres modes are
-both timed against VTK's stencil; hmira's centres grid is compared with the stencil (Tolerance
-0) voxel for voxel, except voxels whose centre lies within 1e-9 of the surface.
+runs) side by side, with the filled-voxel counts. Times are CPU time of the whole process (all
+threads), so that a machine loaded by other work disturbs them less than wall time. hmira's
+conservative and centres modes are both timed against VTK's stencil; hmira's centres grid is
+compared with the stencil (Tolerance 0) voxel for voxel, except voxels whose centre lies within
+1e-9 of the surface.
 
 usage: peers.py MESH_DIR HMIRA_BENCH_BINARY THREADS...
-HMIRA_BENCH_MESHES=a,b limits the meshes; HMIRA_BENCH_VTK_ONLY=1 skips trimesh and Open3D. Only the voxelization is timed (meshes are already
-in memory in the peer's own types)."""
+HMIRA_BENCH_MESHES=a,b limits the meshes; HMIRA_BENCH_RESOLUTIONS=256,512 the resolutions;
+HMIRA_BENCH_VTK_ONLY=1 skips trimesh and Open3D; HMIRA_BENCH_BASELINE=<an older bench_voxelize>
+adds its times (run right before the current binary's) for a before/after column. Only the
+voxelization is timed (meshes are already in memory in the peer's own types)."""
 import json
 import os
 import subprocess
@@ -21,22 +25,23 @@ import numpy as np
 
 def hmira_ms(bench, name, threads):
     """Runs hmira's Google Benchmark for one case right before its peers, so that both sides
-    see the same machine load; returns the median real time of 5 repetitions in ms."""
+    see the same machine load; returns the median CPU time (all threads) of 5 repetitions in ms."""
     with tempfile.NamedTemporaryFile(suffix=".json") as out:
         subprocess.run([bench, f"--benchmark_filter=^{name}/{threads}/", f"--benchmark_out={out.name}",
                         "--benchmark_out_format=json", "--benchmark_repetitions=5", "--benchmark_min_time=0.2"],
                        check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
         runs = [b for b in json.load(open(out.name))["benchmarks"] if b.get("aggregate_name") == "median"]
-    return runs[0]["real_time"] if runs else float("nan")
+    return runs[0]["cpu_time"] if runs else float("nan")
 
 
 def best_of(fn, repeat):
-    """The median time of `repeat` runs in ms (the name is historical), and the last output."""
+    """The median CPU time (process: all threads) of `repeat` runs in ms (the name is
+    historical), and the last output."""
     times, out = [], None
     for _ in range(repeat):
-        t0 = time.perf_counter()
+        t0 = time.process_time()
         out = fn()
-        times.append(time.perf_counter() - t0)
+        times.append(time.process_time() - t0)
     return float(np.median(times)) * 1000.0, out
 
 
@@ -51,6 +56,9 @@ def load(mesh_dir):
     only = os.environ.get("HMIRA_BENCH_MESHES")
     if only:
         rows = [r for r in rows if r["name"] in only.split(",")]
+    res = os.environ.get("HMIRA_BENCH_RESOLUTIONS")
+    if res:
+        rows = [r for r in rows if str(r["res"]) in res.split(",")]
     meshes = {}
     for r in rows:
         if r["name"] not in meshes:
@@ -164,10 +172,15 @@ def main():
     mesh_dir, bench, threads = sys.argv[1], sys.argv[2], [int(t) for t in sys.argv[3:]]
     rows, meshes = load(mesh_dir)
     skip_trimesh = os.environ.get("HMIRA_BENCH_SKIP_TRIMESH_ABOVE", "30000000")
+    baseline = os.environ.get("HMIRA_BENCH_BASELINE")
+    before = {}
     out, exact = [], []
     for r in rows:
         v, f = meshes[r["name"]]
         for t in threads:
+            if baseline:
+                before[(r["name"], r["res"], t, "solid")] = hmira_ms(baseline, f"hmira_voxelize/{r['name']}/{r['res']}", t)
+                before[(r["name"], r["res"], t, "centres")] = hmira_ms(baseline, f"hmira_voxelize_centres/{r['name']}/{r['res']}", t)
             h = hmira_ms(bench, f"hmira_voxelize/{r['name']}/{r['res']}", t)
             hc = hmira_ms(bench, f"hmira_voxelize_centres/{r['name']}/{r['res']}", t)
             vms, vcount, vimg = vtk_stencil(v, f, r, t)
@@ -184,12 +197,18 @@ def main():
             for peer, kind, hcount, (ms, count) in peers:
                 out.append((r["name"], r["res"], t, h, peer, ms, h / ms, kind, hcount, count))
             print(f"# done {r['name']} {r['res']} threads={t}", file=sys.stderr, flush=True)
-    hdr = ("mesh", "res", "thr", "hmira ms", "peer", "peer ms", "hmira/peer", "counted", "hmira voxels", "peer voxels")
+    hdr = ("mesh", "res", "thr", "hmira CPU ms", "peer", "peer CPU ms", "hmira/peer", "counted", "hmira voxels", "peer voxels")
+    if baseline:
+        hdr += ("baseline CPU ms", "baseline/peer")
     print("| " + " | ".join(hdr) + " |")
     print("|" + "---|" * len(hdr))
     for row in out:
         name, res, t, h, peer, ms, ratio, kind, hc, pc = row
-        print(f"| {name} | {res} | {t} | {h:.2f} | {peer} | {ms:.2f} | {ratio:.2f} | {kind} | {hc} | {pc} |")
+        line = f"| {name} | {res} | {t} | {h:.2f} | {peer} | {ms:.2f} | {ratio:.2f} | {kind} | {hc} | {pc} |"
+        if baseline:
+            b = before.get((name, res, t, "centres" if kind == "centres" else "solid"), float("nan"))
+            line += f" {b:.2f} | {b / ms:.2f} |"
+        print(line)
     print()
     print("| mesh | res | hmira centres voxels | VTK stencil voxels | voxels that differ | of those, centre > 1e-9 "
           "from the surface | farthest from the surface | hmira agrees with the winding number (checked) |")

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Solid voxelization, hmira against VTK vtkPolyDataToImageStencil, trimesh voxelized().fill()
 # and Open3D's (surface-only) VoxelGrid, in one run with the same grids and thread counts:
-#   bench/voxelize/run.sh            # builds into build-bench, prints a markdown table
+#   bench/voxelize/run.sh            # builds into build-bench, prints a markdown table (CPU time)
 # trimesh takes minutes on the big cases; HMIRA_BENCH_SKIP_TRIMESH_ABOVE=<triangles x res>
 # skips it above that size (default 30000000: trimesh is skipped for the 2M-triangle mesh).
 set -euo pipefail

@@ -4,11 +4,15 @@
 // voxelization by blocks equal to the whole grid, voxel for voxel, for every mode.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
+#include <bit>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <numbers>
 #include <random>
+#include <vector>
 
 #include <hmira/algorithms/conversion/voxelize.hpp>
 #include <hmira/algorithms/conversion/voxelize_blocks.hpp>
@@ -249,6 +253,83 @@ TEST_P(BlocksOnRealMesh, blocks_of_random_sizes_equal_the_whole_grid_in_every_mo
 }
 
 INSTANTIATE_TEST_SUITE_P(Closed, BlocksOnRealMesh, ::testing::Values("elephant.off", "fandisk.off", "sphere966.off"));
+
+// voxelize() fills the grid in slabs of z-layers (512 KiB of words each: here 59 layers of
+// 1100 one-word rows, so the grid has two). Octahedra in random orientations, cut by the slab
+// boundary at z = 59: surface voxels equal a direct separating-axis test of every voxel near
+// the mesh, centres an independent winding number, solid their union, with 1 and 2 threads.
+TEST(VoxelizeSlabs, octahedra_across_a_slab_boundary_match_independent_tests_voxel_for_voxel) {
+    std::mt19937_64 rng(11);
+    std::uniform_real_distribution<double> angle(0, 2 * std::numbers::pi), shift(-0.5, 0.5);
+    const hmira::grid_geometry g{{64, 1100, 100}, {0, 0, 0}, {1, 1, 1}};
+    for (int trial = 0; trial < 3; ++trial) {
+        auto mesh = octahedron(0, 20);
+        const double a = angle(rng), b = angle(rng);
+        const vec3<double> centre{32 + shift(rng), 550 + shift(rng), 59 + shift(rng)};
+        for (auto vh : mesh.vertices()) {
+            auto p = mesh.position(vh);
+            p = {std::cos(a) * p.x - std::sin(a) * p.y, std::sin(a) * p.x + std::cos(a) * p.y, p.z};
+            p = {p.x, std::cos(b) * p.y - std::sin(b) * p.z, std::sin(b) * p.y + std::cos(b) * p.z};
+            mesh.set_position(vh, p + centre);
+        }
+        std::vector<std::array<vec3<double>, 3>> tris;
+        for (auto f : mesh.faces()) {
+            auto fv = mesh.face_vertices(f);
+            tris.push_back({mesh.position(fv[0]), mesh.position(fv[1]), mesh.position(fv[2])});
+        }
+        hmira::voxelization v[3][2];
+        const hmira::voxelize_mode modes[3] = {hmira::voxelize_mode::surface, hmira::voxelize_mode::centres, hmira::voxelize_mode::solid};
+        for (int m = 0; m < 3; ++m)
+            for (unsigned t : {1u, 2u}) {
+                auto r = hmira::voxelize(mesh, g, {.mode = modes[m], .threads = t});
+                ASSERT_TRUE(r);
+                v[m][t - 1] = std::move(*r);
+            }
+        for (int m = 0; m < 3; ++m) EXPECT_TRUE(std::ranges::equal(v[m][0].voxels.words(), v[m][1].voxels.words())) << "mode " << m;
+        // Every set voxel lies within [12, 52] x [530, 570] x [39, 79]: count there and compare.
+        std::size_t surface = 0, centres = 0, solid = 0, checked = 0;
+        for (std::size_t k = 36; k <= 82; ++k)
+            for (std::size_t j = 527; j <= 573; ++j)
+                for (std::size_t i = 9; i <= 55; ++i) {
+                    const vec3<double> p{double(i), double(j), double(k)};
+                    bool touches = false;
+                    double w = 0, closest = 1e9;
+                    for (const auto& t : tris) {
+                        bool boxes = true;  // the box normals, which triangle_box_overlap leaves to its caller
+                        for (std::size_t c = 0; c < 3; ++c)
+                            boxes &= std::min({t[0][c], t[1][c], t[2][c]}) <= p[c] + 0.5 && std::max({t[0][c], t[1][c], t[2][c]}) >= p[c] - 0.5;
+                        touches |= boxes && hmira::detail::triangle_box_overlap(p, 0.5, t[0], t[1], t[2]);
+                        const auto x = t[0] - p, y = t[1] - p, z = t[2] - p;
+                        const double lx = hmira::norm(x), ly = hmira::norm(y), lz = hmira::norm(z);
+                        w += 2 * std::atan2(hmira::dot(x, hmira::cross(y, z)),
+                                            lx * ly * lz + hmira::dot(x, y) * lz + hmira::dot(y, z) * lx + hmira::dot(z, x) * ly);
+                        const auto n = hmira::cross(y - x, z - x);
+                        closest = std::min(closest, std::abs(hmira::dot(n, x)) / hmira::norm(n));
+                    }
+                    const bool inside = w / (4 * std::numbers::pi) > 0.5;
+                    const auto s = v[0][0].voxels.value(i, j, k), c = v[1][0].voxels.value(i, j, k), d = v[2][0].voxels.value(i, j, k);
+                    ASSERT_EQ(s, touches ? 1 : 0) << "trial " << trial << " surface voxel " << i << ' ' << j << ' ' << k;
+                    if (closest > 1e-6) {
+                        ++checked;
+                        ASSERT_EQ(c, inside ? 1 : 0) << "trial " << trial << " centre " << i << ' ' << j << ' ' << k;
+                    }
+                    ASSERT_EQ(d, s | c) << "trial " << trial << " solid voxel " << i << ' ' << j << ' ' << k;
+                    surface += s;
+                    centres += c;
+                    solid += d;
+                }
+        EXPECT_EQ(surface, v[0][0].voxels.count());
+        EXPECT_EQ(centres, v[1][0].voxels.count());
+        EXPECT_EQ(solid, v[2][0].voxels.count());
+        EXPECT_GT(checked, 90000u);
+        // Both slabs hold part of the shape.
+        std::size_t low = 0;
+        for (std::size_t k = 0; k < 59; ++k)
+            for (std::size_t j = 527; j <= 573; ++j) low += static_cast<std::size_t>(std::popcount(v[2][0].voxels.row(j, k)[0]));
+        EXPECT_GT(low, solid / 4);
+        EXPECT_LT(low, solid - solid / 4);
+    }
+}
 
 TEST(VoxelizeBlocks, octahedron_on_voxel_centres_in_one_voxel_blocks_and_bad_blocks_are_refused) {
     const auto mesh = octahedron(10, 5);

@@ -6,13 +6,41 @@
 #include <bit>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
+#include <new>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "../core/vec3.hpp"
 #include "voxel_grid.hpp"
 
 namespace hmira {
+
+namespace detail {
+
+// An allocator that leaves new words unwritten when no value is given (vector(n) instead of
+// vector(n, 0)): bit_grid::unwritten() hands its words to a producer that writes them all.
+template <class T>
+struct default_init_allocator : std::allocator<T> {
+    template <class U>
+    struct rebind {
+        using other = default_init_allocator<U>;
+    };
+    default_init_allocator() = default;
+    template <class U>
+    default_init_allocator(const default_init_allocator<U>&) noexcept {}
+    template <class U>
+    void construct(U* p) noexcept {
+        ::new (static_cast<void*>(p)) U;
+    }
+    template <class U, class... Args>
+    void construct(U* p, Args&&... args) {
+        std::allocator_traits<std::allocator<T>>::construct(*this, p, std::forward<Args>(args)...);
+    }
+};
+
+}  // namespace detail
 
 /// One bit per sample; value() is 0 or 1. Models voxel_grid and writable_voxel_grid (set()
 /// stores v != 0). Row (j, k) is words_per_row() words, bits past dims[0] stay zero.
@@ -26,6 +54,12 @@ public:
     /// A grid of geometry `g` with every voxel clear.
     explicit bit_grid(const grid_geometry& g)
         : geometry_(g), words_((g.dims[0] + 63) / 64), bits_(words_ * g.dims[1] * g.dims[2], 0) {}
+
+    /// A grid of geometry `g` whose words are not written yet: for a producer that writes
+    /// every word itself (the bits past dims[0] as zero) before anything reads them, and so
+    /// can write each part of the grid while it is in its core's cache. Reading a word before
+    /// it is written is undefined behaviour.
+    static bit_grid unwritten(const grid_geometry& g) { return bit_grid(g, nullptr); }
 
     grid_dims dims() const noexcept { return geometry_.dims; }            ///< voxels per axis
     vec3<double> origin() const noexcept { return geometry_.origin; }     ///< centre of voxel (0, 0, 0)
@@ -62,9 +96,11 @@ public:
     std::span<std::uint64_t> words() noexcept { return bits_; }              ///< all rows, (z, y) order
 
 private:
+    bit_grid(const grid_geometry& g, std::nullptr_t) : geometry_(g), words_((g.dims[0] + 63) / 64), bits_(words_ * g.dims[1] * g.dims[2]) {}
+
     grid_geometry geometry_;
     std::size_t words_ = 0;
-    std::vector<std::uint64_t> bits_;
+    std::vector<std::uint64_t, detail::default_init_allocator<std::uint64_t>> bits_;
 };
 
 }  // namespace hmira

@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <array>
-#include <atomic>
 #include <bit>
 #include <cmath>
 #include <cstddef>
@@ -212,11 +211,202 @@ inline long long fast_floor(double x) {
     return i - (double(i) > x);
 }
 
-// The integer range [a, b] of [lo, hi] within [0, n), false if empty.
-inline bool clamp_index(double lo, double hi, long long n, long long& a, long long& b) {
-    a = std::max<long long>(0, -fast_floor(-lo));
-    b = std::min<long long>(n - 1, fast_floor(hi));
-    return a <= b;
+// The integer range [r0, r1] of [from, to] within [lo, hi], false if empty. Rounds the same
+// way wherever the window lies, so that a window gets the whole grid's bits.
+inline bool window_range(long long lo, long long hi, double from, double to, long long& r0, long long& r1) {
+    r0 = std::max<long long>(lo, -fast_floor(-from));
+    r1 = std::min<long long>(hi, fast_floor(to));
+    return r0 <= r1;
+}
+
+/// Where surface voxels go: the words of a window of the grid whose voxel (0, 0, 0) is voxel
+/// `lo` of the whole grid. Passed by value, so that its fields stay in registers while the
+/// walk stores words (which could alias them through a reference).
+struct bit_sink {
+    std::uint64_t* words;
+    std::size_t row_words, layer_words;
+    long long lo[3];
+    /// Sets voxel (i, j, k) (whole-grid coordinates) when `on`, without a branch on it.
+    void operator()(long long i, long long j, long long k, bool on) const noexcept {
+        const std::size_t x = std::size_t(i - lo[0]);
+        words[std::size_t(k - lo[2]) * layer_words + std::size_t(j - lo[1]) * row_words + (x >> 6)] |= std::uint64_t(on) << (x & 63);
+    }
+};
+
+/// The surface voxels of a triangle whose normal's dominant axis is D within the box [r0, r1]
+/// (whole-grid voxel coordinates, already cut to the triangle's bounding box): walks the
+/// columns along D row by row; in each column only the few voxels within the plane's range
+/// over the column can touch the triangle. Calls set(i, j, k, on) for each candidate voxel,
+/// with `on` true exactly for those the triangle touches (a voxel may come more than once).
+template <std::size_t D>
+void surface_columns(const tri& tr, const vec3<double>& n, const vec3<double>& bl, const vec3<double>& bh, const long long (&r0)[3],
+                     const long long (&r1)[3], const bit_sink set) {
+    constexpr std::size_t u = (D + 1) % 3, v = (D + 2) % 3;
+    const vec3<double>* p = tr.p;
+    const double c = dot(n, p[0]);
+    const double slack = 0.5 * (std::abs(n[u]) + std::abs(n[v])) / std::abs(n[D]);
+    const detail::triangle_box_tester tester(p[0], p[1], p[2], 0.5);
+    // The separating axes D x edge (the shadow's edge normals in the (u, v) plane) give the
+    // same answer for every voxel of a column: a column whose square is outside the shadow is
+    // skipped; one whose square lies inside it needs only the plane test, since every point of
+    // the plane over the square is then on the triangle.
+    double axis_u[3], axis_v[3], lo2[3], hi2[3], inner_lo[3], inner_hi[3];
+    for (int e = 0; e < 3; ++e) {
+        const vec3<double> ed = p[(e + 1) % 3] - p[e];
+        axis_u[e] = -ed[v];
+        axis_v[e] = ed[u];
+        const double pa = axis_u[e] * p[0][u] + axis_v[e] * p[0][v], pb = axis_u[e] * p[1][u] + axis_v[e] * p[1][v],
+                     pc = axis_u[e] * p[2][u] + axis_v[e] * p[2][v];
+        const double r = 0.5 * (std::abs(axis_u[e]) + std::abs(axis_v[e]));
+        lo2[e] = std::min({pa, pb, pc}) - r;
+        hi2[e] = std::max({pa, pb, pc}) + r;
+        const double width = std::abs(axis_u[e]) + std::abs(axis_v[e]);
+        const double margin = 1e-9 * (std::abs(lo2[e]) + std::abs(hi2[e]) + width);
+        inner_lo[e] = lo2[e] + width + margin;
+        inner_hi[e] = hi2[e] - width - margin;
+    }
+    auto centre = [](double fu, double fv, double fw) {
+        vec3<double> q;
+        q[u] = fu;
+        q[v] = fv;
+        q[D] = fw;
+        return q;
+    };
+    // set() with the voxel's (u, v, D) indices put back in (x, y, z) order.
+    auto put = [&](long long iu, long long iv, long long iw, bool on) {
+        if constexpr (D == 0) set(iw, iu, iv, on);
+        else if constexpr (D == 1) set(iv, iw, iu, on);
+        else set(iu, iv, iw, on);
+    };
+    // Where the window cuts the triangle along D (a slab of the grid), many columns reach no
+    // voxel of it. Column iv's plane height w is monotone in iv (so is its rounding), hence
+    // the columns whose reach ends below the window form a prefix or a suffix of the row, and
+    // those whose reach starts above it the other: cut both off [iv0, iv1] (false if nothing
+    // is left), locating each end from the line's equation and settling it by the very
+    // comparisons that make reach() empty there.
+    auto live_columns = [&](long long& iv0, long long& iv1, double cu) {
+        auto height = [&](long long iv) { return (cu - n[v] * double(iv)) / n[D]; };
+        auto below = [&](long long iv) { return (height(iv) + slack) + 0.5 < double(r0[D]); };
+        auto above = [&](long long iv) { return (height(iv) - slack) - 0.5 > double(r1[D]); };
+        if (n[v] == 0) return !below(iv0) && !above(iv0);
+        // The column where the height crosses `level`, clamped to [iv0 - 1, iv1 + 1].
+        auto crossing = [&](double level) {
+            const double t = (cu - n[D] * level) / n[v];
+            if (!(t > double(iv0 - 1))) return iv0 - 1;
+            if (!(t < double(iv1 + 1))) return iv1 + 1;
+            return fast_floor(t);
+        };
+        const double top = double(r1[D]) + 0.5 + slack, bottom = double(r0[D]) - 0.5 - slack;
+        const bool rising = (n[v] > 0) != (n[D] > 0);  // the height grows with iv
+        // First column not in the prefix where `pre` holds, and last not in the suffix where `post` holds.
+        auto settle = [&](auto&& pre, auto&& post, double pre_level, double post_level) {
+            long long x = std::clamp(crossing(pre_level), iv0, iv1 + 1);
+            while (x > iv0 && !pre(x - 1)) --x;
+            while (x <= iv1 && pre(x)) ++x;
+            long long y = std::clamp(crossing(post_level), iv0 - 1, iv1);
+            while (y < iv1 && !post(y + 1)) ++y;
+            while (y >= iv0 && post(y)) --y;
+            iv0 = x;
+            iv1 = y;
+        };
+        if (rising) settle(below, above, bottom, top);
+        else settle(above, below, top, bottom);
+        return iv0 <= iv1;
+    };
+    // Only a window that cuts the triangle along D leaves columns without a voxel to reach.
+    const bool clipped = r0[D] > -fast_floor(-(bl[D] - 0.5)) || r1[D] < fast_floor(bh[D] + 0.5);
+    for (long long iu = r0[u]; iu <= r1[u]; ++iu) {
+        const double fu = double(iu);
+        // The columns of this row whose square can meet the shadow: each edge axis bounds
+        // iv to an interval (widened by one; the test per column below decides).
+        double vlo = double(r0[v]), vhi = double(r1[v]);
+        double base[3];
+        for (int e = 0; e < 3; ++e) {
+            base[e] = axis_u[e] * fu;
+            if (axis_v[e] > 0) {
+                vlo = std::max(vlo, (lo2[e] - base[e]) / axis_v[e] - 1);
+                vhi = std::min(vhi, (hi2[e] - base[e]) / axis_v[e] + 1);
+            } else if (axis_v[e] < 0) {
+                vlo = std::max(vlo, (hi2[e] - base[e]) / axis_v[e] - 1);
+                vhi = std::min(vhi, (lo2[e] - base[e]) / axis_v[e] + 1);
+            }
+        }
+        if (!(vlo <= vhi)) continue;
+        long long iv0 = std::max<long long>(r0[v], -fast_floor(-vlo)), iv1 = std::min<long long>(r1[v], fast_floor(vhi));
+        const double cu = c - n[u] * fu;
+        if (clipped && !live_columns(iv0, iv1, cu)) continue;
+        // 0: the column's square is outside the shadow, 2: inside it, 1: across its edge.
+        auto kind = [&](long long iv) {
+            const double fv = double(iv);
+            bool outside = false, inner = true;
+            for (int e = 0; e < 3; ++e) {
+                const double q = base[e] + axis_v[e] * fv;
+                outside |= (q < lo2[e]) | (q > hi2[e]);
+                inner &= (q >= inner_lo[e]) & (q <= inner_hi[e]);
+            }
+            return outside ? 0 : inner ? 2 : 1;
+        };
+        // Each edge's projection is monotone in iv (so is its rounding), so the columns not
+        // outside form an interval [a, b], and the inner ones an interval [ci, ce] within it:
+        // classify the ends only, then walk the inner run without testing the edges again.
+        long long a = iv0, b = iv1;
+        while (a <= b && kind(a) == 0) ++a;
+        while (b > a && kind(b) == 0) --b;
+        if (a > b) continue;
+        long long ci = a, ce = b;
+        while (ci <= b && kind(ci) == 1) ++ci;
+        while (ce >= ci && kind(ce) == 1) --ce;
+        // The voxels of column iv within reach of the plane, [w0, w1]; false if none.
+        auto reach = [&](long long iv, long long& w0, long long& w1) {
+            const double w = (cu - n[v] * double(iv)) / n[D];
+            return window_range(r0[D], r1[D], std::max(w - slack, bl[D]) - 0.5, std::min(w + slack, bh[D]) + 0.5, w0, w1);
+        };
+        auto edge_column = [&](long long iv) {
+            long long w0, w1;
+            if (!reach(iv, w0, w1)) return;
+            for (long long iw = w0; iw <= w1; ++iw)
+                put(iu, iv, iw, tester.template overlaps_off<int(D)>(centre(fu, double(iv), double(iw))));
+        };
+        for (long long iv = a; iv < ci; ++iv) edge_column(iv);
+        for (long long iv = ci; iv <= ce; ++iv) {
+            long long w0, w1;
+            if (!reach(iv, w0, w1)) continue;
+            const double fv = double(iv);
+            // Most columns reach one or two voxels: test two without a branch on how many
+            // (the second is w0 again, set only if it passes, when the reach is one voxel).
+            const long long second = w0 + (w1 > w0);
+            put(iu, iv, w0, tester.meets_plane(centre(fu, fv, double(w0))));
+            put(iu, iv, second, tester.meets_plane(centre(fu, fv, double(second))));
+            for (long long iw = w0 + 2; iw <= w1; ++iw) put(iu, iv, iw, tester.meets_plane(centre(fu, fv, double(iw))));
+        }
+        for (long long iv = std::max(ce + 1, ci); iv <= b; ++iv) edge_column(iv);
+    }
+}
+
+/// Sets the voxels of the whole-grid box [wlo, whi] that triangle `tr` touches.
+inline void surface_voxels(const tri& tr, const long long (&wlo)[3], const long long (&whi)[3], const bit_sink set) {
+    const vec3<double>* p = tr.p;
+    vec3<double> bl = p[0], bh = p[0];
+    for (int c = 1; c < 3; ++c)
+        for (std::size_t a = 0; a < 3; ++a) {
+            bl[a] = std::min(bl[a], p[c][a]);
+            bh[a] = std::max(bh[a], p[c][a]);
+        }
+    long long r0[3], r1[3];
+    for (std::size_t a = 0; a < 3; ++a)
+        if (!window_range(wlo[a], whi[a], bl[a] - 0.5, bh[a] + 0.5, r0[a], r1[a])) return;
+    bool one_box = true;  // the triangle lies in one voxel's box (not merely clamped to one by the window)
+    for (std::size_t a = 0; a < 3; ++a)
+        one_box &= r0[a] == r1[a] && bl[a] >= double(r0[a]) - 0.5 && bh[a] <= double(r0[a]) + 0.5;
+    if (one_box) {
+        set(r0[0], r0[1], r0[2], true);
+        return;
+    }
+    const vec3<double> n = cross(p[1] - p[0], p[2] - p[0]);
+    const int d = std::abs(n.x) >= std::abs(n.y) ? (std::abs(n.x) >= std::abs(n.z) ? 0 : 2) : (std::abs(n.y) >= std::abs(n.z) ? 1 : 2);
+    if (d == 0) surface_columns<0>(tr, n, bl, bh, r0, r1, set);
+    else if (d == 1) surface_columns<1>(tr, n, bl, bh, r0, r1, set);
+    else surface_columns<2>(tr, n, bl, bh, r0, r1, set);
 }
 
 /// What to compute in a window of the grid.
@@ -226,181 +416,136 @@ struct window_job {
     bool winding = false;    // the winding-number fill between surface voxels (open mesh)
 };
 
+/// Triangles binned to slabs of whole z-layers of a window: slab s holds tri[start[s] ..
+/// start[s + 1]), every triangle whose voxels or rays (z within one voxel of its own z range)
+/// can meet the slab, in their original order.
+struct slab_bins {
+    std::vector<std::size_t> start;
+    std::vector<std::uint32_t> tri;
+};
+
+/// Bins triangles `subset` (all where null) of `tris` to slabs of `layers` z-layers of the
+/// window's `nz` layers starting at whole-grid layer `z0`. O(F + the slabs each spans).
+inline slab_bins bin_to_slabs(const std::vector<tri>& tris, const std::vector<std::uint32_t>* subset, long long z0, long long nz,
+                              long long layers) {
+    const std::size_t count = subset ? subset->size() : tris.size();
+    const long long slabs = (nz + layers - 1) / layers;
+    auto slab_range = [&](const tri& t, long long& s0, long long& s1) {
+        const double zl = std::min({t.p[0].z, t.p[1].z, t.p[2].z}), zh = std::max({t.p[0].z, t.p[1].z, t.p[2].z});
+        const long long k0 = std::max<long long>(0, fast_floor(zl) - 1 - z0), k1 = std::min<long long>(nz - 1, fast_floor(zh) + 2 - z0);
+        s0 = k0 / layers;
+        s1 = k1 / layers;
+        return k0 <= k1;
+    };
+    slab_bins b;
+    b.start.assign(std::size_t(slabs) + 1, 0);
+    for (std::size_t t = 0; t < count; ++t) {
+        long long s0, s1;
+        if (slab_range(tris[subset ? (*subset)[t] : t], s0, s1))
+            for (long long s = s0; s <= s1; ++s) ++b.start[std::size_t(s) + 1];
+    }
+    for (std::size_t s = 0; s < std::size_t(slabs); ++s) b.start[s + 1] += b.start[s];
+    b.tri.resize(b.start.back());
+    std::vector<std::size_t> next(b.start.begin(), b.start.end() - 1);
+    for (std::size_t t = 0; t < count; ++t) {
+        const std::uint32_t id = subset ? (*subset)[t] : static_cast<std::uint32_t>(t);
+        long long s0, s1;
+        if (slab_range(tris[id], s0, s1))
+            for (long long s = s0; s <= s1; ++s) b.tri[next[std::size_t(s)]++] = id;
+    }
+    return b;
+}
+
 /// Voxelizes `tris` into `out`, whose voxel (0, 0, 0) is voxel `lo` of the whole grid: the
 /// surface voxels of triangles `surface_subset`, the crossings of triangles `crossing_subset`
 /// (all triangles where a subset is null). The rays of the parity fill start at -infinity, so
 /// a window gets the same bits as the whole grid has there when crossing_subset holds every
-/// triangle whose shadow meets the window's rows.
-inline void fill_window(const std::vector<tri>& tris, const std::vector<std::uint32_t>* surface_subset,
+/// triangle whose shadow meets the window's rows. Writes every word of `out`, which may come
+/// from bit_grid::unwritten(). Returns false when `progress` cancelled.
+///
+/// The window is cut into slabs of whole z-layers, each filled start to end by one thread:
+/// crossings, prefix XOR, then surface voxels. A slab's words (up to 512 KiB) stay in that
+/// core's cache through the three steps, and no two threads write one word, so no atomics.
+inline bool fill_window(const std::vector<tri>& tris, const std::vector<std::uint32_t>* surface_subset,
                         const std::vector<std::uint32_t>* crossing_subset, const std::array<long long, 3>& lo, bit_grid& out,
-                        const window_job& job, unsigned threads, progress_gate& gate) {
+                        const window_job& job, unsigned threads, const progress_function& progress) {
     const grid_dims dims = out.dims();
     const long long nx = static_cast<long long>(dims[0]), ny = static_cast<long long>(dims[1]), nz = static_cast<long long>(dims[2]);
     const std::size_t words = out.words_per_row();
-    const std::size_t surface_count = surface_subset ? surface_subset->size() : tris.size();
-    const std::size_t crossing_count = crossing_subset ? crossing_subset->size() : tris.size();
-    // Crossing marks go straight into the output, turned into inside bits by a prefix XOR
-    // before the surface voxels are ORed in: no second grid.
-    std::uint64_t* toggles = job.crossings ? out.words().data() : nullptr;
+    const long long layers = std::clamp<long long>(static_cast<long long>((std::size_t(1) << 16) / std::max<std::size_t>(1, words * dims[1])), 1, nz);
+    const std::size_t slabs = std::size_t((nz + layers - 1) / layers);
+    slab_bins surface_bins, own_crossing_bins;
+    if (job.surface) surface_bins = bin_to_slabs(tris, surface_subset, lo[2], nz, layers);
+    const bool shared = job.surface && surface_subset == crossing_subset;  // one set of bins serves both passes
+    if (job.crossings && !shared) own_crossing_bins = bin_to_slabs(tris, crossing_subset, lo[2], nz, layers);
+    const slab_bins& crossing_bins = shared ? surface_bins : own_crossing_bins;
+    // Progress counts triangle visits and rows.
+    const std::size_t rows = dims[1] * dims[2];
+    progress_gate gate(progress, surface_bins.tri.size() + (job.crossings ? crossing_bins.tri.size() + rows : 0) + (job.winding ? rows : 0));
 
-    auto set_voxel = [&](long long i, long long j, long long k) {
-        // Neighbouring triangles share most voxels: read first, and pay for the atomic OR only
-        // when the bit is still clear.
-        std::atomic_ref<std::uint64_t> word(out.row(std::size_t(j), std::size_t(k))[std::size_t(i) >> 6]);
-        const std::uint64_t bit = std::uint64_t(1) << (std::size_t(i) & 63);
-        if (!(word.load(std::memory_order_relaxed) & bit)) word.fetch_or(bit, std::memory_order_relaxed);
-    };
-    // The voxels a triangle touches: walk the columns along the normal's dominant axis d; in
-    // each column only the few voxels within the plane's range over the column can touch it.
-    // Coordinates here are the window's.
-    auto surface_voxels = [&](const tri& tr) {
-        // Whole-grid coordinates, so that a window rounds exactly as the whole grid does.
-        const vec3<double>* p = tr.p;
-        auto window_range = [&](std::size_t a, double from, double to, long long& r0, long long& r1) {
-            r0 = std::max<long long>(lo[a], -fast_floor(-from));
-            r1 = std::min<long long>(lo[a] + static_cast<long long>(dims[a]) - 1, fast_floor(to));
-            return r0 <= r1;
-        };
-        vec3<double> bl = p[0], bh = p[0];
-        for (int c = 1; c < 3; ++c)
-            for (std::size_t a = 0; a < 3; ++a) {
-                bl[a] = std::min(bl[a], p[c][a]);
-                bh[a] = std::max(bh[a], p[c][a]);
-            }
-        long long r0[3], r1[3];
-        for (std::size_t a = 0; a < 3; ++a)
-            if (!window_range(a, bl[a] - 0.5, bh[a] + 0.5, r0[a], r1[a])) return;
-        bool one_box = true;  // the triangle lies in one voxel's box (not merely clamped to one by the window)
-        for (std::size_t a = 0; a < 3; ++a)
-            one_box &= r0[a] == r1[a] && bl[a] >= double(r0[a]) - 0.5 && bh[a] <= double(r0[a]) + 0.5;
-        if (one_box) {
-            set_voxel(r0[0] - lo[0], r0[1] - lo[1], r0[2] - lo[2]);
-            return;
-        }
-        const vec3<double> n = cross(p[1] - p[0], p[2] - p[0]);
-        const std::size_t d = std::abs(n.x) >= std::abs(n.y) ? (std::abs(n.x) >= std::abs(n.z) ? 0 : 2) : (std::abs(n.y) >= std::abs(n.z) ? 1 : 2);
-        const std::size_t u = (d + 1) % 3, v = (d + 2) % 3;
-        const double c = dot(n, p[0]);
-        const double slack = 0.5 * (std::abs(n[u]) + std::abs(n[v])) / std::abs(n[d]);
-        const detail::triangle_box_tester tester(p[0], p[1], p[2], 0.5);
-        // The separating axes that do not involve d (the shadow's edge normals in the (u, v)
-        // plane) give the same answer for every voxel of a column: a column whose square is
-        // outside the shadow is skipped; one whose square lies inside it needs only the plane
-        // test, since every point of the plane over the square is then on the triangle.
-        double axis_u[3], axis_v[3], lo2[3], hi2[3];
-        for (int e = 0; e < 3; ++e) {
-            const vec3<double> ed = p[(e + 1) % 3] - p[e];
-            axis_u[e] = -ed[v];
-            axis_v[e] = ed[u];
-            const double pa = axis_u[e] * p[0][u] + axis_v[e] * p[0][v], pb = axis_u[e] * p[1][u] + axis_v[e] * p[1][v],
-                         pc = axis_u[e] * p[2][u] + axis_v[e] * p[2][v];
-            const double r = 0.5 * (std::abs(axis_u[e]) + std::abs(axis_v[e]));
-            lo2[e] = std::min({pa, pb, pc}) - r;
-            hi2[e] = std::max({pa, pb, pc}) + r;
-        }
-        double width[3], margin[3];
-        for (int e = 0; e < 3; ++e) {
-            width[e] = std::abs(axis_u[e]) + std::abs(axis_v[e]);
-            margin[e] = 1e-9 * (std::abs(lo2[e]) + std::abs(hi2[e]) + width[e]);
-        }
-        long long idx[3];
-        for (long long iu = r0[u]; iu <= r1[u]; ++iu) {
-            // The columns of this row whose square can meet the shadow: each edge axis bounds
-            // iv to an interval (widened by one; the test per column below decides).
-            double vlo = double(r0[v]), vhi = double(r1[v]);
-            for (int e = 0; e < 3; ++e) {
-                const double base = axis_u[e] * double(iu);
-                if (axis_v[e] > 0) {
-                    vlo = std::max(vlo, (lo2[e] - base) / axis_v[e] - 1);
-                    vhi = std::min(vhi, (hi2[e] - base) / axis_v[e] + 1);
-                } else if (axis_v[e] < 0) {
-                    vlo = std::max(vlo, (hi2[e] - base) / axis_v[e] - 1);
-                    vhi = std::min(vhi, (lo2[e] - base) / axis_v[e] + 1);
-                }
-            }
-            if (!(vlo <= vhi)) continue;
-            const long long iv0 = std::max<long long>(r0[v], -fast_floor(-vlo)), iv1 = std::min<long long>(r1[v], fast_floor(vhi));
-            for (long long iv = iv0; iv <= iv1; ++iv) {
-                bool outside = false, inner = true;
-                for (int e = 0; e < 3; ++e) {
-                    const double q = axis_u[e] * double(iu) + axis_v[e] * double(iv);
-                    outside |= (q < lo2[e]) | (q > hi2[e]);
-                    inner &= (q >= lo2[e] + width[e] + margin[e]) & (q <= hi2[e] - width[e] - margin[e]);
-                }
-                if (outside) continue;
-                const double w = (c - n[u] * double(iu) - n[v] * double(iv)) / n[d];
-                long long w0, w1;
-                if (!window_range(d, std::max(w - slack, bl[d]) - 0.5, std::min(w + slack, bh[d]) + 0.5, w0, w1)) continue;
-                w0 = std::max(w0, r0[d]);
-                w1 = std::min(w1, r1[d]);
-                idx[u] = iu;
-                idx[v] = iv;
-                for (long long iw = w0; iw <= w1; ++iw) {
-                    idx[d] = iw;
-                    const vec3<double> centre{double(idx[0]), double(idx[1]), double(idx[2])};
-                    if (inner) {
-                        if (tester.meets_plane(centre)) set_voxel(idx[0] - lo[0], idx[1] - lo[1], idx[2] - lo[2]);
-                    } else if (tester.overlaps(centre)) {
-                        set_voxel(idx[0] - lo[0], idx[1] - lo[1], idx[2] - lo[2]);
-                    }
-                }
-            }
-        }
-    };
+    const bit_sink set_voxel{out.words().data(), words, words * dims[1], {lo[0], lo[1], lo[2]}};
 
-    with_thread_count(threads, [&] {
-        // Ray crossings, one triangle at a time.
-        if (toggles) parallel_chunks(crossing_count, 1024, [&](std::size_t t0, std::size_t t1) {
-            for (std::size_t t = t0; t < t1; ++t) {
-                if ((t - t0) % 1024 == 0 && !gate.advance(std::min<std::size_t>(1024, t1 - t))) return;
-                const tri& tr = tris[crossing_subset ? (*crossing_subset)[t] : t];
+    // Window layers [k0, k1] of slab s. The slab's words are cleared here, not when the grid
+    // was made: so they are in this core's cache for what follows.
+    auto fill_slab = [&](std::size_t s) {
+        const long long k0 = static_cast<long long>(s) * layers, k1 = std::min(nz, k0 + layers) - 1;
+        const auto slab_words = out.words().subspan(std::size_t(k0) * dims[1] * words, std::size_t(k1 - k0 + 1) * dims[1] * words);
+        std::fill(slab_words.begin(), slab_words.end(), std::uint64_t(0));
+        if (job.crossings) {
+            // Ray crossings: voxels beyond a crossing along x change side.
+            std::uint64_t* toggles = out.words().data();
+            for (std::size_t b = crossing_bins.start[s]; b < crossing_bins.start[s + 1]; ++b) {
+                if ((b - crossing_bins.start[s]) % 1024 == 0 && !gate.advance(std::min<std::size_t>(1024, crossing_bins.start[s + 1] - b)))
+                    return;
+                const tri& tr = tris[crossing_bins.tri[b]];
                 const crossing_triangle ct(tr.p[0], tr.p[1], tr.p[2]);
                 if (ct.xmin - 1 >= double(lo[0] + nx)) continue;  // crosses no ray before the window's end
-                // Rays along x through voxel centres (j, k) in the window; voxels beyond the
-                // crossing change side.
-                ct.for_each_ray(lo[1], lo[1] + ny - 1, lo[2], lo[2] + nz - 1, [&](long long j, long long k) {
+                ct.for_each_ray(lo[1], lo[1] + ny - 1, lo[2] + k0, lo[2] + k1, [&](long long j, long long k) {
                     const long long first = ct.first_beyond(j, k) - lo[0];
                     if (first >= nx) return;
                     const std::size_t i = first <= 0 ? 0 : static_cast<std::size_t>(first);
-                    std::atomic_ref<std::uint64_t>(toggles[(std::size_t(k - lo[2]) * dims[1] + std::size_t(j - lo[1])) * words + (i >> 6)])
-                        .fetch_xor(std::uint64_t(1) << (i & 63), std::memory_order_relaxed);
+                    toggles[(std::size_t(k - lo[2]) * dims[1] + std::size_t(j - lo[1])) * words + (i >> 6)] ^= std::uint64_t(1) << (i & 63);
                 });
             }
-        });
-
-        if (gate.cancelled()) return;
-        if (toggles) {
-            // Prefix XOR along each row turns crossing marks into inside bits.
+            // Prefix XOR along each row turns crossing marks into inside bits. Most words hold
+            // no mark (a row crosses the surface a few times): they only take the carry.
             const std::uint64_t last = (dims[0] & 63) ? (std::uint64_t(1) << (dims[0] & 63)) - 1 : ~std::uint64_t(0);
-            parallel_chunks(dims[1] * dims[2], 256, [&](std::size_t q0, std::size_t q1) {
-                for (std::size_t r = q0; r < q1; ++r) {
-                    if ((r - q0) % 256 == 0 && !gate.advance(std::min<std::size_t>(256, q1 - r))) return;
-                    std::uint64_t carry = 0;
-                    std::uint64_t* row = toggles + r * words;
-                    for (std::size_t w = 0; w < words; ++w) {
-                        std::uint64_t x = row[w];
+            const std::size_t r0 = std::size_t(k0) * dims[1], r1 = std::size_t(k1 + 1) * dims[1];
+            for (std::size_t r = r0; r < r1; ++r) {
+                std::uint64_t fill = 0;  // all ones while inside
+                std::uint64_t* row = toggles + r * words;
+                for (std::size_t w = 0; w < words; ++w) {
+                    std::uint64_t x = row[w];
+                    if (x) {
                         x ^= x << 1;
                         x ^= x << 2;
                         x ^= x << 4;
                         x ^= x << 8;
                         x ^= x << 16;
                         x ^= x << 32;
-                        if (carry) x = ~x;
-                        carry = x >> 63;
-                        if (w + 1 == words) x &= last;
-                        row[w] = x;
                     }
+                    x ^= fill;
+                    fill = std::uint64_t(0) - (x >> 63);
+                    row[w] = x;
                 }
-            });
-        }
-        if (gate.cancelled()) return;
-        // Surface voxels, one triangle at a time (most are found set already inside a solid).
-        if (job.surface) parallel_chunks(surface_count, 1024, [&](std::size_t t0, std::size_t t1) {
-            for (std::size_t t = t0; t < t1; ++t) {
-                if ((t - t0) % 1024 == 0 && !gate.advance(std::min<std::size_t>(1024, t1 - t))) return;
-                const tri& tr = tris[surface_subset ? (*surface_subset)[t] : t];
-                if (!tr.degenerate) surface_voxels(tr);
+                row[words - 1] &= last;
             }
+            if (!gate.advance(r1 - r0)) return;
+        }
+        // Surface voxels (most are found set already inside a solid).
+        if (job.surface)
+            for (std::size_t b = surface_bins.start[s]; b < surface_bins.start[s + 1]; ++b) {
+                if ((b - surface_bins.start[s]) % 1024 == 0 && !gate.advance(std::min<std::size_t>(1024, surface_bins.start[s + 1] - b)))
+                    return;
+                const tri& tr = tris[surface_bins.tri[b]];
+                const long long wlo[3] = {lo[0], lo[1], lo[2] + k0}, whi[3] = {lo[0] + nx - 1, lo[1] + ny - 1, lo[2] + k1};
+                if (!tr.degenerate) surface_voxels(tr, wlo, whi, set_voxel);
+            }
+    };
+
+    with_thread_count(threads, [&] {
+        parallel_chunks(slabs, 1, [&](std::size_t s0, std::size_t s1) {
+            for (std::size_t s = s0; s < s1 && !gate.cancelled(); ++s) fill_slab(s);
         });
         if (gate.cancelled()) return;
         if (job.winding) {
@@ -430,6 +575,7 @@ inline void fill_window(const std::vector<tri>& tris, const std::vector<std::uin
             });
         }
     });
+    return !gate.cancelled();
 }
 
 /// What the options ask of a mesh that is closed or not; the note says what was done instead.
@@ -471,10 +617,11 @@ inline result<window_job> plan(const voxelize_options& options, bool closed, std
 ///   with a symbolic perturbation of the centre by (eps, eps^2, eps^3): rays through edges
 ///   and vertices count once, and a centre exactly on the surface is inside where the surface
 ///   faces -x. On a mesh that is not closed, see voxelize_options.
-/// - Parallel over triangles (bits set by atomic OR / XOR, which commute) and rows: the output
-///   is the same for every thread count.
+/// - Parallel over slabs of z-layers (about 512 KiB of bits each, one thread per slab, the
+///   triangles binned to the slabs they reach): the output is the same for every thread count.
 ///
-/// Complexity: O(F + sum over triangles of the voxels in their bounding box) for the surface,
+/// Complexity: O(F + sum over triangles of the slabs they reach + the voxels in their bounding
+/// box) for the surface,
 /// plus O(N/64 + sum over triangles of the rays their shadow covers and the rows it spans) for
 /// the fill; the winding number fill costs O(F) per run of empty voxels along each row.
 /// Errors (nothing is returned but the error): invalid_argument for an unusable grid (zero
@@ -487,14 +634,11 @@ result<voxelization> voxelize(const M& mesh, const grid_geometry& grid, const vo
     if (auto ok = check_grid_geometry(grid, "voxelize"); !ok) return ok.error();
     auto g = detail::vox::gather<M, T>(mesh, grid, options.allow_degenerate);
     if (!g) return g.error();
-    voxelization out{bit_grid(grid), false, {}, g->tris.size(), g->degenerate};
+    voxelization out{bit_grid::unwritten(grid), false, {}, g->tris.size(), g->degenerate};
     auto job = detail::vox::plan(options, g->closed, out.note, out.filled);
     if (!job) return job.error();
-    const std::size_t rows = job->crossings || job->winding ? grid.dims[1] * grid.dims[2] : 0;
-    const std::size_t passes = std::size_t(job->surface) + std::size_t(job->crossings);
-    detail::progress_gate gate(options.progress, passes * g->tris.size() + rows);
-    detail::vox::fill_window(g->tris, nullptr, nullptr, {0, 0, 0}, out.voxels, *job, options.threads, gate);
-    if (gate.cancelled()) return fail(errc::unsupported, "voxelize: cancelled");
+    if (!detail::vox::fill_window(g->tris, nullptr, nullptr, {0, 0, 0}, out.voxels, *job, options.threads, options.progress))
+        return fail(errc::unsupported, "voxelize: cancelled");
     return out;
 }
 

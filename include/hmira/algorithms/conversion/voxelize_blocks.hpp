@@ -46,16 +46,13 @@ inline grid_geometry block_geometry(const grid_geometry& grid, const voxel_block
 inline result<voxelization> fill_block(const gathered& g, const grid_geometry& grid, const voxel_block& block,
                                        const std::vector<std::uint32_t>* surface, const std::vector<std::uint32_t>* crossing,
                                        const voxelize_options& options) {
-    voxelization out{bit_grid(block_geometry(grid, block)), false, {}, g.tris.size(), g.degenerate};
+    voxelization out{bit_grid::unwritten(block_geometry(grid, block)), false, {}, g.tris.size(), g.degenerate};
     auto job = plan(options, g.closed, out.note, out.filled);
     if (!job) return job.error();
-    const std::size_t passes = std::size_t(job->surface) + std::size_t(job->crossings);
-    const std::size_t rows = job->crossings || job->winding ? block.dims[1] * block.dims[2] : 0;
-    progress_gate gate(options.progress, passes * g.tris.size() + rows);
     const std::array<long long, 3> lo{static_cast<long long>(block.lo[0]), static_cast<long long>(block.lo[1]),
                                       static_cast<long long>(block.lo[2])};
-    fill_window(g.tris, surface, crossing, lo, out.voxels, *job, options.threads, gate);
-    if (gate.cancelled()) return fail(errc::unsupported, "voxelize: cancelled");
+    if (!fill_window(g.tris, surface, crossing, lo, out.voxels, *job, options.threads, options.progress))
+        return fail(errc::unsupported, "voxelize: cancelled");
     return out;
 }
 

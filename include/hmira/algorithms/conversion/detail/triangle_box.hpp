@@ -63,6 +63,19 @@ public:
         return ok;
     }
 
+    /// overlaps() for a box whose centre is already known to pass the three axes D x edge (the
+    /// edge normals of the triangle's shadow along axis D): the other seven axes only.
+    template <int D>
+    bool overlaps_off(const vec3<double>& center) const noexcept {
+        bool ok = true;
+        for (int q = 0; q < 10; ++q) {
+            if (q > 0 && (q - 1) % 3 == D) continue;
+            const double p = axis_[q].x * center.x + axis_[q].y * center.y + axis_[q].z * center.z;
+            ok &= (p >= lo_[q]) & (p <= hi_[q]);
+        }
+        return ok;
+    }
+
     /// The plane's part of overlaps() alone: whether the triangle's plane meets the box. Where
     /// the box's shadow along an axis lies inside the triangle's, this decides overlaps().
     bool meets_plane(const vec3<double>& center) const noexcept {

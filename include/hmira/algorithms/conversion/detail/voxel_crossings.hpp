@@ -56,6 +56,14 @@ inline int orient3d_exact(const vec3<double>& a, const vec3<double>& b, const ve
     return sign(s2);
 }
 
+/// std::floor of a finite x without a libm call (the x86-64 baseline has no roundsd): from
+/// 2^52 on every double is an integer.
+inline double floor_exact(double x) noexcept {
+    if (!(std::abs(x) < 0x1p52)) return x;
+    const double t = double(static_cast<long long>(x));
+    return t - double(t > x);
+}
+
 /// One triangle, prepared for the crossings of the rays y = j, z = k (voxel units).
 struct crossing_triangle {
     vec3<double> a, b, c;
@@ -94,10 +102,9 @@ struct crossing_triangle {
         const double dj = double(j), dk = double(k);
         const double num = offset - n.y * dj - n.z * dk;
         double x = num / n.x;
-        const long long lo = static_cast<long long>(std::floor(xmin)), hi = static_cast<long long>(std::ceil(xmax)) + 1;
         if (!std::isfinite(x) || x < xmin - 1 || x > xmax + 1) {
             // Nearly edge-on: search [floor(xmin), ceil(xmax) + 1] exactly (beyond is monotone).
-            long long l = lo, h = hi;
+            long long l = static_cast<long long>(std::floor(xmin)), h = static_cast<long long>(std::ceil(xmax)) + 1;
             while (l < h) {
                 const long long m = l + (h - l) / 2;
                 if (beyond(double(m), dj, dk)) h = m;
@@ -106,7 +113,7 @@ struct crossing_triangle {
             return l;
         }
         x = std::clamp(x, xmin, xmax);
-        const double f = std::floor(x);
+        const double f = floor_exact(x);
         const double tol = 1e-9 * (1.0 + std::abs(x) + (std::abs(offset) + std::abs(n.y * dj) + std::abs(n.z * dk)) / std::abs(n.x));
         const double frac = x - f;
         if (frac > tol && 1 - frac > tol) return static_cast<long long>(f) + 1;
