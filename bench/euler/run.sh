@@ -43,8 +43,7 @@ for op in ("make_kill_edge_face", "make_kill_edge_vertex"):
     ratio(f"{op}/hmira_on_cgal", f"{op}/cgal_native", "1.1")
     ratio(f"{op}/hmira_on_openmesh", f"{op}/openmesh_native", "1.1")
 print()
-for op in ("make_edge_face_pass", "kill_edge_face_pass", "make_edge_face_repass",
-           "make_edge_vertex_pass", "kill_edge_vertex_pass", "make_edge_vertex_repass"):
+for op in ("make_edge_face_pass", "kill_edge_face_pass", "make_edge_face_repass"):
     ratio(f"{op}/hmira_halfedge_mesh", f"{op}/cgal_native", "1.0")
     ratio(f"{op}/hmira_halfedge_mesh", f"{op}/openmesh_native", "1.0")
 print("\nmake_kill_edge_vertex natives are edge split + undo (CGAL split_edge/join_vertex,"

@@ -4,7 +4,9 @@
 // defaults; with reuse off, new elements append; garbage collection still works afterwards.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <atomic>
+#include <set>
 #include <cstdlib>
 #include <new>
 #include <random>
@@ -14,6 +16,8 @@
 #include <hmira/algorithms/euler/make_edge_face.hpp>
 #include <hmira/algorithms/euler/make_edge_vertex.hpp>
 #include <hmira/algorithms/euler/make_vertex.hpp>
+#include <hmira/algorithms/generators/platonic_solids.hpp>
+#include <hmira/algorithms/subdivision/loop.hpp>
 #include <hmira/meshes/halfedge_mesh.hpp>
 
 #include "support/checks.hpp"
@@ -283,6 +287,41 @@ TEST(slot_reuse, a_copy_reuses_its_own_slots_without_allocating) {
     EXPECT_EQ(bounds_of(copy), start);
     EXPECT_EQ(bounds_of(m), start) << "the original is untouched";
     EXPECT_TRUE(hmira_test::is_valid(copy, {.relaxed = true}));
+}
+
+// Faces as loops of positions, each rotated to start at its smallest: compares two meshes'
+// surfaces whatever their numbering.
+std::multiset<std::vector<std::array<double, 3>>> faces_by_position(const halfedge_mesh& m) {
+    std::multiset<std::vector<std::array<double, 3>>> out;
+    for (auto f : m.faces()) {
+        std::vector<std::array<double, 3>> loop;
+        for (auto v : m.face_vertices(f)) loop.push_back({m.position(v).x, m.position(v).y, m.position(v).z});
+        std::rotate(loop.begin(), std::min_element(loop.begin(), loop.end()), loop.end());
+        out.insert(loop);
+    }
+    return out;
+}
+
+TEST(slot_reuse, loop_subdivision_of_a_mesh_with_free_slots_matches_that_of_its_compacted_copy) {
+    // Loop tells a level's new vertices by index; free slots below the bound must not fool it.
+    halfedge_mesh m;
+    ASSERT_TRUE(generate_octahedron(m));
+    for (int i = 0; i < 3; ++i) {
+        const auto r = make_edge_vertex(m, *m.halfedges().begin(), {9, 9, 9});
+        ASSERT_TRUE(r);
+        ASSERT_TRUE(kill_edge_vertex(m, r->halfedge));
+        m.erase_vertex(m.add_vertex({8, 8, 8}));
+    }
+    ASSERT_GT(m.free_vertex_slots(), 0u);
+    ASSERT_GT(m.free_edge_slots(), 0u);
+    auto compact = m;
+    [[maybe_unused]] const auto map = compact.collect_garbage();
+    ASSERT_TRUE(loop_subdivide(m, {.levels = 2}));
+    ASSERT_TRUE(loop_subdivide(compact, {.levels = 2}));
+    EXPECT_TRUE(m.slot_reuse()) << "the setting comes back after the scheme";
+    EXPECT_TRUE(hmira_test::is_valid(m));
+    EXPECT_EQ(m.face_count(), compact.face_count());
+    EXPECT_EQ(faces_by_position(m), faces_by_position(compact));
 }
 
 }  // namespace
