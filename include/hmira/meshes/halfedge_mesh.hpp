@@ -521,16 +521,7 @@ public:
             ++changes_;
             return halfedge_handle(2 * e);
         }
-        free_edges_.ensure_room(halfedges_.size() / 2 + 1);
-        edge_deleted_.ensure(halfedges_.size() / 2 + 1);
-        const auto h = halfedge_handle(halfedges_.size());
-        halfedges_.push_back({b, {}, {}, {}});
-        halfedges_.push_back({a, {}, {}, {}});
-        edge_props_.push_back();
-        halfedge_props_.push_back();
-        halfedge_props_.push_back();
-        ++changes_;
-        return h;
+        return append_edge(a, b);  // out of line, so that the reuse path above inlines into the operators
     }
     /// A new face with no halfedge and no rings, in a freed slot if there is one. O(1)
     /// (amortised when it appends).
@@ -546,12 +537,7 @@ public:
             ++changes_;
             return face_handle(f);
         }
-        free_faces_.ensure_room(faces_.size() + 1);
-        face_deleted_.ensure(faces_.size() + 1);
-        faces_.push_back({});
-        face_props_.push_back();
-        ++changes_;
-        return face_handle(faces_.size() - 1);
+        return append_face();
     }
     /// Marks an element deleted and frees its slot for reuse (raw: nothing is re-linked, and
     /// the element's records keep their values until the slot is reused). Erasing a deleted
@@ -728,6 +714,27 @@ private:
         face_handle face;
         halfedge_handle next, prev;
     };
+
+    halfedge_handle append_edge(vertex_handle a, vertex_handle b) {
+        free_edges_.ensure_room(halfedges_.size() / 2 + 1);
+        edge_deleted_.ensure(halfedges_.size() / 2 + 1);
+        const auto h = halfedge_handle(halfedges_.size());
+        halfedges_.push_back({b, {}, {}, {}});
+        halfedges_.push_back({a, {}, {}, {}});
+        edge_props_.push_back();
+        halfedge_props_.push_back();
+        halfedge_props_.push_back();
+        ++changes_;
+        return h;
+    }
+    face_handle append_face() {
+        free_faces_.ensure_room(faces_.size() + 1);
+        face_deleted_.ensure(faces_.size() + 1);
+        faces_.push_back({});
+        face_props_.push_back();
+        ++changes_;
+        return face_handle(faces_.size() - 1);
+    }
 
     void link(halfedge_handle a, halfedge_handle b) {
         halfedges_[a.index].next = b;
