@@ -297,6 +297,9 @@ std::optional<hmira::halfedge_mesh> to_halfedge(const hmira::face_vertex_mesh& m
         code = report(invalid_input, path + ": cannot edit this mesh: " + why);
         return std::nullopt;
     }
+    // New elements append, so index order stays creation order and the output lists the
+    // surviving file vertices first, in file order, then the new ones (documented per command).
+    built->set_slot_reuse(false);
     if (!repaired->copied_from.empty()) {
         auto source = built->add_vertex_property<std::uint32_t>("v:file_vertex");
         for (auto v : built->vertices()) source[v] = static_cast<std::uint32_t>(repaired->source_vertex(v.index));

@@ -3,6 +3,15 @@
 // and OpenMesh PolyMesh's native operations, and hmira's generic operators running on CGAL's
 // and OpenMesh's own meshes through the interop traits. Each pair restores the mesh, and the
 // pairs walk the faces in order, so every variant does the same work on the same faces.
+// Every row is cold: a fresh mesh, each pair applied once per face, no warm-up loop (the
+// _warm rows are the exception, kept to show what a grown mesh costs).
+//
+// The pass rows (make_edge_face_pass, kill_edge_face_pass, make_edge_face_repass) apply makeEF
+// to every face of a fresh grid in memory order, then killEF to every result, then makeEF
+// again, each pass timed on its own: the repass is
+// where a model that reuses freed slots (halfedge_mesh, CGAL Surface_mesh) writes into memory
+// it already owns, while OpenMesh appends until garbage collection. (The same passes of edge
+// splits hung CGAL's split_edge/join_vertex for minutes, so the edge-vertex pair has no pass rows.)
 //
 // Native equivalents. makeEF/killEF: CGAL::Euler::split_face / join_face; OpenMesh
 // insert_edge / remove_edge. makeEV/killEV creates and deletes one vertex and one edge; neither
@@ -70,18 +79,24 @@ void report(benchmark::State& state) {
 
 // ----- hmira's generic operators, on any model ------------------------------------------------
 
-/// halfedge_mesh marks deleted elements and appends new ones (it never recycles handles
-/// before collect_garbage), so a million creations grow its arrays; reserving up front, as a
-/// user who knows the count would, keeps reallocation out of the measurement.
+/// Without slot reuse halfedge_mesh appends every new element, so a million creations grow its
+/// arrays; the _no_reuse rows reserve up front, as a user who knows the count would (what this
+/// benchmark measured before halfedge_mesh reused slots). With reuse (the default) a pair
+/// allocates nothing and no reserve is needed.
 template <class M>
 void reserve_for_pairs(M& m) {
     if constexpr (std::is_same_v<M, hmira::halfedge_mesh>)
-        m.reserve(m.vertex_index_bound() + pairs, m.edge_index_bound() + pairs, m.face_index_bound() + pairs);
+        if (!m.slot_reuse()) m.reserve(m.vertex_index_bound() + pairs, m.edge_index_bound() + pairs, m.face_index_bound() + pairs);
+}
+template <class M>
+void set_reuse([[maybe_unused]] M& m, [[maybe_unused]] bool reuse) {
+    if constexpr (std::is_same_v<M, hmira::halfedge_mesh>) m.set_slot_reuse(reuse);
 }
 
-template <class M>
+template <class M, bool Reuse = true>
 void hmira_make_kill_edge_face(benchmark::State& state) {
     M m;
+    set_reuse(m, Reuse);
     build_grid(m);
     reserve_for_pairs(m);
     const auto corners = split_corners(m);
@@ -96,11 +111,12 @@ void hmira_make_kill_edge_face(benchmark::State& state) {
     report<M>(state);
 }
 
-template <class M>
+template <class M, bool Reuse = true>
 void hmira_make_kill_edge_vertex(benchmark::State& state) {
     using T = hmira::default_traits<M>;
     using S = typename T::scalar;
     M m;
+    set_reuse(m, Reuse);
     build_grid(m);
     reserve_for_pairs(m);
     const auto corners = split_corners(m);
@@ -115,14 +131,16 @@ void hmira_make_kill_edge_vertex(benchmark::State& state) {
     report<M>(state);
 }
 
-/// The same on halfedge_mesh whose arrays were grown once before timing (one untimed run of
-/// the pairs, then collect_garbage, which keeps the capacity): it separates the operators'
-/// cost from the first touch of the memory an append-only model writes new elements into.
+/// The same on halfedge_mesh with slot reuse off, whose arrays were grown once before timing
+/// (one untimed run of the pairs, then collect_garbage, which keeps the capacity): it
+/// separates the operators' cost from the first touch of the memory an appending model writes
+/// new elements into (what the cold rows paid before halfedge_mesh reused slots).
 template <class M, bool Face>
 void hmira_warm(benchmark::State& state) {
     using T = hmira::default_traits<M>;
     using S = typename T::scalar;
     M m;
+    set_reuse(m, false);
     build_grid(m);
     reserve_for_pairs(m);
     const hmira::vec3<S> p{S(0.5), S(0.5), S(0)};
@@ -149,6 +167,52 @@ BENCHMARK(hmira_warm<hmira::halfedge_mesh, true>)->Name("make_kill_edge_face/hmi
 BENCHMARK(hmira_warm<hmira::halfedge_mesh, false>)->Name("make_kill_edge_vertex/hmira_halfedge_mesh_warm")->Iterations(1)->Unit(benchmark::kMillisecond);
 BENCHMARK(hmira_make_kill_edge_face<hmira::halfedge_mesh>)->Name("make_kill_edge_face/hmira_halfedge_mesh")->Iterations(1)->Unit(benchmark::kMillisecond);
 BENCHMARK(hmira_make_kill_edge_vertex<hmira::halfedge_mesh>)->Name("make_kill_edge_vertex/hmira_halfedge_mesh")->Iterations(1)->Unit(benchmark::kMillisecond);
+BENCHMARK(hmira_make_kill_edge_face<hmira::halfedge_mesh, false>)->Name("make_kill_edge_face/hmira_halfedge_mesh_no_reuse")->Iterations(1)->Unit(benchmark::kMillisecond);
+BENCHMARK(hmira_make_kill_edge_vertex<hmira::halfedge_mesh, false>)->Name("make_kill_edge_vertex/hmira_halfedge_mesh_no_reuse")->Iterations(1)->Unit(benchmark::kMillisecond);
+
+// ----- passes: one operator over every face of a fresh grid, then its inverse, then again ------
+
+/// Which pass a pass benchmark times.
+enum class pass { make, kill, remake };
+
+/// Runs `make(i)` for every face i, `kill(result)` for every result (newest first, so that each
+/// kill meets the mesh its make left: two splits of one shared edge undo in order), `make`
+/// again, and times
+/// only the pass asked for (the grid is built untimed, fresh for every repetition).
+template <class Make, class Kill>
+void timed_passes(benchmark::State& state, pass which, Make make, Kill kill) {
+    using R = decltype(make(std::size_t{0}));
+    std::vector<R> made;
+    made.reserve(grid_n * grid_n);
+    for (auto _ : state) {  // the timer runs at the start and the end of each iteration
+        if (which != pass::make) state.PauseTiming();
+        for (std::size_t i = 0; i < grid_n * grid_n; ++i) made.push_back(make(i));
+        if (which == pass::make) state.PauseTiming();
+        if (which == pass::kill) state.ResumeTiming();
+        for (auto r = made.rbegin(); r != made.rend(); ++r) kill(*r);  // newest first: each undoes its own make
+        if (which == pass::kill) state.PauseTiming();
+        made.clear();
+        if (which == pass::remake) state.ResumeTiming();
+        for (std::size_t i = 0; i < grid_n * grid_n; ++i) made.push_back(make(i));
+        if (which != pass::remake) state.ResumeTiming();
+    }
+    benchmark::DoNotOptimize(made.data());
+    state.counters["ops"] = static_cast<double>(grid_n * grid_n);
+}
+
+void hmira_edge_face_passes(benchmark::State& state, pass which) {
+    hmira::halfedge_mesh m;
+    build_grid(m);
+    const auto corners = split_corners(m);
+    timed_passes(
+        state, which,
+        [&](std::size_t i) { return hmira::make_edge_face(m, corners[i].first, corners[i].second)->halfedge; },
+        [&](auto h) { benchmark::DoNotOptimize(hmira::kill_edge_face(m, h)); });
+}
+
+BENCHMARK_CAPTURE(hmira_edge_face_passes, make, pass::make)->Name("make_edge_face_pass/hmira_halfedge_mesh")->Iterations(1)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(hmira_edge_face_passes, kill, pass::kill)->Name("kill_edge_face_pass/hmira_halfedge_mesh")->Iterations(1)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(hmira_edge_face_passes, remake, pass::remake)->Name("make_edge_face_repass/hmira_halfedge_mesh")->Iterations(1)->Unit(benchmark::kMillisecond);
 
 #ifdef HMIRA_BENCH_WITH_CGAL
 using cgal_mesh = CGAL::Surface_mesh<CGAL::Simple_cartesian<double>::Point_3>;
@@ -180,6 +244,19 @@ void cgal_split_edge_join_vertex(benchmark::State& state) {
     }
     report<cgal_mesh>(state);
 }
+
+void cgal_edge_face_passes(benchmark::State& state, pass which) {
+    cgal_mesh m;
+    build_grid(m);
+    const auto corners = split_corners(m);
+    timed_passes(
+        state, which, [&](std::size_t i) { return CGAL::Euler::split_face(corners[i].first, corners[i].second, m); },
+        [&](auto h) { benchmark::DoNotOptimize(CGAL::Euler::join_face(h, m)); });
+}
+
+BENCHMARK_CAPTURE(cgal_edge_face_passes, make, pass::make)->Name("make_edge_face_pass/cgal_native")->Iterations(1)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(cgal_edge_face_passes, kill, pass::kill)->Name("kill_edge_face_pass/cgal_native")->Iterations(1)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(cgal_edge_face_passes, remake, pass::remake)->Name("make_edge_face_repass/cgal_native")->Iterations(1)->Unit(benchmark::kMillisecond);
 
 BENCHMARK(cgal_split_join_face)->Name("make_kill_edge_face/cgal_native")->Iterations(1)->Unit(benchmark::kMillisecond);
 BENCHMARK(hmira_make_kill_edge_face<cgal_mesh>)->Name("make_kill_edge_face/hmira_on_cgal")->Iterations(1)->Unit(benchmark::kMillisecond);
@@ -231,6 +308,19 @@ void openmesh_split_edge_collapse(benchmark::State& state) {
     report<om_mesh>(state);
 }
 
+void openmesh_edge_face_passes(benchmark::State& state, pass which) {
+    om_mesh m;
+    build_grid(m);
+    prepare_status(m);
+    const auto corners = split_corners(m);
+    timed_passes(
+        state, which, [&](std::size_t i) { return m.insert_edge(corners[i].first, m.next_halfedge_handle(corners[i].second)); },
+        [&](auto h) { m.remove_edge(m.edge_handle(h)); });
+}
+
+BENCHMARK_CAPTURE(openmesh_edge_face_passes, make, pass::make)->Name("make_edge_face_pass/openmesh_native")->Iterations(1)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(openmesh_edge_face_passes, kill, pass::kill)->Name("kill_edge_face_pass/openmesh_native")->Iterations(1)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(openmesh_edge_face_passes, remake, pass::remake)->Name("make_edge_face_repass/openmesh_native")->Iterations(1)->Unit(benchmark::kMillisecond);
 
 BENCHMARK(openmesh_insert_remove_edge)->Name("make_kill_edge_face/openmesh_native")->Iterations(1)->Unit(benchmark::kMillisecond);
 BENCHMARK(hmira_make_kill_edge_face<om_mesh>)->Name("make_kill_edge_face/hmira_on_openmesh")->Iterations(1)->Unit(benchmark::kMillisecond);

@@ -19,6 +19,7 @@
 #include "detail/element_range.hpp"
 #include "detail/link_face.hpp"
 #include "detail/native_traits.hpp"
+#include "detail/slots.hpp"
 #include "face_vertex_mesh.hpp"  // index_remap
 #include "handles.hpp"
 #include "properties.hpp"
@@ -38,9 +39,16 @@ namespace hmira {
 /// next/prev/opposite/target/face O(1); face -> vertices O(V_consistF); vertex -> vertices,
 /// edges, faces O(V_adjacentV); face -> faces O(F_adjacentF).
 ///
-/// Deletion marks elements; collect_garbage() compacts and reports the old -> new maps.
-/// Handles stay valid until then. Const queries may run concurrently; mutations need
-/// exclusive access. Mutation at the raw level (set_next, new_edge, erase_*) keeps nothing
+/// Deletion marks elements and puts their slots on a free list; creating an element of that
+/// kind (add_vertex, new_edge, new_face, add_face) takes the most recently freed slot before it
+/// appends, with its properties back at their defaults. So an operator followed by its inverse
+/// (make_edge_face then kill_edge_face, ...) allocates nothing and leaves the index bounds as
+/// they were. A handle to a deleted element stays invalid until its slot is reused; then it
+/// names the new element. To detect that, keep versioned(h) instead of h: is_valid() of a
+/// versioned handle is false once its element is gone, whether or not the slot was reused.
+/// set_slot_reuse(false) makes every new element append (index order = creation order).
+/// collect_garbage() compacts and reports the old -> new maps; it invalidates every handle,
+/// versioned ones included. Const queries may run concurrently; mutations need exclusive access. Mutation at the raw level (set_next, new_edge, erase_*) keeps nothing
 /// consistent by itself: it is the layer the Euler operators are written on.
 ///
 /// Per-vertex, -edge, -halfedge and -face user data by name: add/get/remove_*_property, from
@@ -55,11 +63,11 @@ public:
     /// Live element counts, and index bounds (deleted elements included until collected).
     ///@{
     std::size_t vertex_count() const noexcept { return positions_.size() - deleted_vertices_; }
-    std::size_t edge_count() const noexcept { return edge_deleted_.size() - deleted_edges_; }
+    std::size_t edge_count() const noexcept { return halfedges_.size() / 2 - deleted_edges_; }
     std::size_t halfedge_count() const noexcept { return 2 * edge_count(); }
     std::size_t face_count() const noexcept { return faces_.size() - deleted_faces_; }
     std::size_t vertex_index_bound() const noexcept { return positions_.size(); }
-    std::size_t edge_index_bound() const noexcept { return edge_deleted_.size(); }
+    std::size_t edge_index_bound() const noexcept { return halfedges_.size() / 2; }
     std::size_t halfedge_index_bound() const noexcept { return halfedges_.size(); }
     std::size_t face_index_bound() const noexcept { return faces_.size(); }
 
@@ -71,7 +79,7 @@ public:
         return {static_cast<std::uint32_t>(positions_.size()), deleted_vertices_ ? vertex_deleted_.data() : nullptr};
     }
     detail::element_range<edge_handle> edges() const {
-        return {static_cast<std::uint32_t>(edge_deleted_.size()), deleted_edges_ ? edge_deleted_.data() : nullptr};
+        return {static_cast<std::uint32_t>(halfedges_.size() / 2), deleted_edges_ ? edge_deleted_.data() : nullptr};
     }
     detail::element_range<face_handle> faces() const {
         return {static_cast<std::uint32_t>(faces_.size()), deleted_faces_ ? face_deleted_.data() : nullptr};
@@ -86,9 +94,42 @@ public:
     ///@{
     bool is_valid(vertex_handle v) const noexcept { return v.index < positions_.size() && !vertex_deleted_[v.index]; }
     bool is_valid(face_handle f) const noexcept { return f.index < faces_.size() && !face_deleted_[f.index]; }
-    bool is_valid(edge_handle e) const noexcept { return e.index < edge_deleted_.size() && !edge_deleted_[e.index]; }
+    bool is_valid(edge_handle e) const noexcept { return e.index < halfedges_.size() / 2 && !edge_deleted_[e.index]; }
     bool is_valid(halfedge_handle h) const noexcept { return h.index < halfedges_.size() && !edge_deleted_[h.index >> 1]; }
 
+    ///@}
+
+    // ----- slot reuse and stale handles --------------------------------------------------------
+    /// The generation of h's slot: 0 until the slot is first reused, one more at each reuse (a
+    /// halfedge shares its edge's). O(1).
+    ///@{
+    std::uint32_t generation(vertex_handle v) const noexcept { return vertex_generations_[v.index]; }
+    std::uint32_t generation(edge_handle e) const noexcept { return edge_generations_[e.index]; }
+    std::uint32_t generation(halfedge_handle h) const noexcept { return edge_generations_[h.index >> 1]; }
+    std::uint32_t generation(face_handle f) const noexcept { return face_generations_[f.index]; }
+    ///@}
+    /// h with its slot's current generation, for keeping across edits that delete. O(1).
+    template <class Tag>
+    versioned_handle<Tag> versioned(index_handle<Tag> h) const noexcept {
+        return {h, generation(h)};
+    }
+    /// Whether the element h was taken from is still alive: the slot is live and has not been
+    /// reused since. O(1). (Not across collect_garbage, which renumbers.)
+    template <class Tag>
+    bool is_valid(versioned_handle<Tag> h) const noexcept {
+        return is_valid(h.handle) && generation(h.handle) == h.generation;
+    }
+    /// Whether new elements take freed slots (the default) or always append.
+    bool slot_reuse() const noexcept { return reuse_slots_; }
+    /// Turns slot reuse on or off. With it off, index order is creation order (what the CLI
+    /// relies on to write new vertices after the input's); deleted slots still wait on the free
+    /// lists and are taken again once reuse is back on. O(1).
+    void set_slot_reuse(bool on) noexcept { reuse_slots_ = on; }
+    /// Deleted slots waiting for reuse, of each kind. O(1).
+    ///@{
+    std::size_t free_vertex_slots() const noexcept { return free_vertices_.size(); }
+    std::size_t free_edge_slots() const noexcept { return free_edges_.size(); }
+    std::size_t free_face_slots() const noexcept { return free_faces_.size(); }
     ///@}
 
     // ----- navigation, all O(1) ---------------------------------------------------------------
@@ -107,7 +148,7 @@ public:
     static constexpr edge_handle edge(halfedge_handle h) noexcept { return edge_handle(h.index >> 1); }
     static constexpr halfedge_handle edge_halfedge(edge_handle e, unsigned i = 0) noexcept { return halfedge_handle(2 * e.index + i); }
     halfedge_handle vertex_halfedge(vertex_handle v) const { return vertex_out_[v.index]; }
-    halfedge_handle face_halfedge(face_handle f) const { return faces_[f.index].outer; }
+    halfedge_handle face_halfedge(face_handle f) const { return faces_[f.index]; }
     bool is_boundary(halfedge_handle h) const { return face(h).is_null(); }
     bool is_boundary(edge_handle e) const { return is_boundary(edge_halfedge(e, 0)) || is_boundary(edge_halfedge(e, 1)); }
     /// A vertex is on the boundary when its stored outgoing halfedge is (kept so by add_face),
@@ -191,27 +232,29 @@ public:
     // ----- inner rings ---------------------------------------------------------------------------
     /// One halfedge of each inner ring of f.
     std::span<const halfedge_handle> inner_rings(face_handle f) const {
-        const auto r = faces_[f.index].rings;
-        if (r == no_rings) return {};
-        return ring_lists_[r];
+        const auto r = face_rings_[f.index];
+        if (r == 0) return {};
+        return ring_lists_[r - 1];
     }
     /// Whether f has holes. O(1).
-    bool has_inner_rings(face_handle f) const { return faces_[f.index].rings != no_rings && !ring_lists_[faces_[f.index].rings].empty(); }
+    bool has_inner_rings(face_handle f) const {
+        const auto r = face_rings_[f.index];
+        return r != 0 && !ring_lists_[r - 1].empty();
+    }
     /// Registers the loop through h as an inner ring of f (raw: does not set the loop's faces).
     void add_inner_ring(face_handle f, halfedge_handle h) {
-        auto& r = faces_[f.index].rings;
-        if (r == no_rings) {
-            r = static_cast<std::uint32_t>(ring_lists_.size());
+        if (face_rings_[f.index] == 0) {
             ring_lists_.emplace_back();
+            face_rings_.at(f.index, faces_.size()) = static_cast<std::uint32_t>(ring_lists_.size());
         }
-        ring_lists_[r].push_back(h);
+        ring_lists_[face_rings_[f.index] - 1].push_back(h);
         ++changes_;
     }
     /// Unregisters the inner ring of f that contains h; returns whether one was found. O(ring size).
     bool remove_inner_ring(face_handle f, halfedge_handle h) {
-        const auto r = faces_[f.index].rings;
-        if (r == no_rings) return false;
-        auto& list = ring_lists_[r];
+        const auto r = face_rings_[f.index];
+        if (r == 0) return false;
+        auto& list = ring_lists_[r - 1];
         for (auto it = list.begin(); it != list.end(); ++it)
             for (auto g : loop_halfedges(*it))
                 if (g == h) {
@@ -223,9 +266,9 @@ public:
     }
     /// Re-points the stored halfedge of the ring containing `old_h` to `new_h`.
     void set_inner_ring_halfedge(face_handle f, halfedge_handle old_h, halfedge_handle new_h) {
-        const auto r = faces_[f.index].rings;
-        if (r == no_rings) return;
-        for (auto& h : ring_lists_[r])
+        const auto r = face_rings_[f.index];
+        if (r == 0) return;
+        for (auto& h : ring_lists_[r - 1])
             if (h == old_h) h = new_h;
     }
 
@@ -238,11 +281,25 @@ public:
     ///@}
 
     // ----- building ------------------------------------------------------------------------------
-    /// Adds an isolated vertex at p. O(1).
+    /// Adds an isolated vertex at p, in a freed slot if there is one. O(1) (amortised when it
+    /// appends).
     vertex_handle add_vertex(const point& p) {
+        if (reuse_slots_ && !free_vertices_.empty()) {
+            const std::uint32_t v = free_vertices_.top();
+            ++vertex_generations_.at(v, positions_.size());  // may throw: nothing changed yet
+            vertex_props_.reset(v);
+            free_vertices_.pop();
+            positions_[v] = p;
+            vertex_out_[v] = {};
+            vertex_deleted_.set(v, 0);
+            --deleted_vertices_;
+            ++changes_;
+            return vertex_handle(v);
+        }
+        free_vertices_.ensure_room(positions_.size() + 1);
+        vertex_deleted_.ensure(positions_.size() + 1);
         positions_.push_back(p);
         vertex_out_.push_back({});
-        vertex_deleted_.push_back(0);
         vertex_props_.push_back();
         ++changes_;
         return vertex_handle(positions_.size() - 1);
@@ -368,11 +425,11 @@ public:
         }
         m.positions_.assign(points.begin(), points.end());
         m.vertex_out_.assign(nv, halfedge_handle{});
-        m.vertex_deleted_.assign(nv, 0);
+        m.vertex_deleted_.ensure(nv);
         m.halfedges_.resize(2 * edges);
-        m.edge_deleted_.assign(edges, 0);
+        m.edge_deleted_.ensure(edges);
         m.faces_.resize(nf);
-        m.face_deleted_.assign(nf, 0);
+        m.face_deleted_.ensure(nf);
         std::fill(stamp.begin(), stamp.end(), none);  // now: the boundary halfedge leaving each vertex
         for (std::size_t f = 0; f < nf; ++f) {
             const u32 b = face_offsets[f], e = face_offsets[f + 1];
@@ -391,7 +448,7 @@ public:
                     m.halfedges_[h ^ 1u].target = vertex_handle(corners[k]);
                 }
             }
-            m.faces_[f].outer = halfedge_handle(corner_h[e - 1]);
+            m.faces_[f] = halfedge_handle(corner_h[e - 1]);
         }
         // Boundary loops: the boundary halfedge entering a vertex continues with the one leaving it.
         for (std::size_t v = 0; v < nv; ++v)
@@ -425,6 +482,9 @@ public:
                 return fail(errc::non_manifold, "from_polygons: vertex " + std::to_string(v) + " joins two or more separate fans of faces",
                             static_cast<long long>(v));
         }
+        m.free_vertices_.ensure_room(nv);
+        m.free_edges_.ensure_room(edges);
+        m.free_faces_.ensure_room(nf);
         m.vertex_props_.resize(nv);
         m.edge_props_.resize(edges);
         m.halfedge_props_.resize(2 * edges);
@@ -441,44 +501,72 @@ public:
     void set_target(halfedge_handle h, vertex_handle v) { halfedges_[h.index].target = v; ++changes_; }
     void set_face(halfedge_handle h, face_handle f) { halfedges_[h.index].face = f; ++changes_; }
     void set_vertex_halfedge(vertex_handle v, halfedge_handle h) { vertex_out_[v.index] = h; ++changes_; }
-    void set_face_halfedge(face_handle f, halfedge_handle h) { faces_[f.index].outer = h; ++changes_; }
+    void set_face_halfedge(face_handle f, halfedge_handle h) { faces_[f.index] = h; ++changes_; }
     ///@}
 
-    /// A new edge from a to b; returns the halfedge a->b. next/prev/face are unset (null face).
+    /// A new edge from a to b, in a freed slot if there is one; returns the halfedge a->b.
+    /// next/prev/face are unset (null face). O(1) (amortised when it appends).
     halfedge_handle new_edge(vertex_handle a, vertex_handle b) {
-        const auto h = halfedge_handle(halfedges_.size());
-        halfedges_.push_back({b, {}, {}, {}});
-        halfedges_.push_back({a, {}, {}, {}});
-        edge_deleted_.push_back(0);
-        edge_props_.push_back();
-        halfedge_props_.push_back();
-        halfedge_props_.push_back();
-        ++changes_;
-        return h;
-    }
-    /// A new face with no halfedge and no rings. O(1).
-    face_handle new_face() {
-        faces_.push_back({});
-        face_deleted_.push_back(0);
-        face_props_.push_back();
-        ++changes_;
-        return face_handle(faces_.size() - 1);
-    }
-    /// Marks an element deleted (raw: nothing is re-linked). O(1).
-    ///@{
-    void erase_edge(edge_handle e) {
-        if (!edge_deleted_[e.index]) { edge_deleted_[e.index] = 1; ++deleted_edges_; ++changes_; }
-    }
-    void erase_face(face_handle f) {
-        if (!face_deleted_[f.index]) {
-            face_deleted_[f.index] = 1;
-            ++deleted_faces_;
+        if (reuse_slots_ && !free_edges_.empty()) {
+            const std::uint32_t e = free_edges_.top();
+            ++edge_generations_.at(e, halfedges_.size() / 2);  // may throw: nothing changed yet
+            edge_props_.reset(e);
+            halfedge_props_.reset(2 * std::size_t(e));
+            halfedge_props_.reset(2 * std::size_t(e) + 1);
+            free_edges_.pop();
+            halfedges_[2 * std::size_t(e)] = {b, {}, {}, {}};
+            halfedges_[2 * std::size_t(e) + 1] = {a, {}, {}, {}};
+            edge_deleted_.set(e, 0);
+            --deleted_edges_;
             ++changes_;
-            if (faces_[f.index].rings != no_rings) ring_lists_[faces_[f.index].rings].clear();
+            return halfedge_handle(2 * e);
+        }
+        return append_edge(a, b);  // out of line, so that the reuse path above inlines into the operators
+    }
+    /// A new face with no halfedge and no rings, in a freed slot if there is one. O(1)
+    /// (amortised when it appends).
+    face_handle new_face() {
+        if (reuse_slots_ && !free_faces_.empty()) {
+            const std::uint32_t f = free_faces_.top();
+            ++face_generations_.at(f, faces_.size());  // may throw: nothing changed yet
+            face_props_.reset(f);
+            free_faces_.pop();
+            faces_[f] = {};  // an emptied ring list is kept for the next holes
+            face_deleted_.set(f, 0);
+            --deleted_faces_;
+            ++changes_;
+            return face_handle(f);
+        }
+        return append_face();
+    }
+    /// Marks an element deleted and frees its slot for reuse (raw: nothing is re-linked, and
+    /// the element's records keep their values until the slot is reused). Erasing a deleted
+    /// element does nothing. O(1); never allocates.
+    ///@{
+    void erase_edge(edge_handle e) noexcept {
+        if (!edge_deleted_[e.index]) {
+            edge_deleted_.set(e.index, 1);
+            ++deleted_edges_;
+            ++changes_;
+            free_edges_.push(e.index);
         }
     }
-    void erase_vertex(vertex_handle v) {
-        if (!vertex_deleted_[v.index]) { vertex_deleted_[v.index] = 1; ++deleted_vertices_; ++changes_; }
+    void erase_face(face_handle f) noexcept {
+        if (!face_deleted_[f.index]) {
+            face_deleted_.set(f.index, 1);
+            ++deleted_faces_;
+            ++changes_;
+            if (const auto r = face_rings_[f.index]; r != 0) ring_lists_[r - 1].clear();
+            free_faces_.push(f.index);
+        }
+    }
+    void erase_vertex(vertex_handle v) noexcept {
+        if (!vertex_deleted_[v.index]) {
+            vertex_deleted_.set(v.index, 1);
+            ++deleted_vertices_;
+            ++changes_;
+            free_vertices_.push(v.index);
+        }
     }
 
     ///@}
@@ -514,16 +602,16 @@ public:
     /// O(V_all + E_all + F_all).
     index_remap collect_garbage() {
         index_remap map;
-        auto make_map = [](const std::vector<std::uint8_t>& deleted, std::vector<std::uint32_t>& out) {
-            out.assign(deleted.size(), UINT32_MAX);
+        auto make_map = [](const detail::zeroed_array<std::uint8_t>& deleted, std::size_t bound, std::vector<std::uint32_t>& out) {
+            out.assign(bound, UINT32_MAX);
             std::uint32_t k = 0;
-            for (std::size_t i = 0; i < deleted.size(); ++i)
+            for (std::size_t i = 0; i < bound; ++i)
                 if (!deleted[i]) out[i] = k++;
             return k;
         };
-        const auto nv = make_map(vertex_deleted_, map.vertices);
-        const auto ne = make_map(edge_deleted_, map.edges);
-        const auto nf = make_map(face_deleted_, map.faces);
+        const auto nv = make_map(vertex_deleted_, positions_.size(), map.vertices);
+        const auto ne = make_map(edge_deleted_, halfedges_.size() / 2, map.edges);
+        const auto nf = make_map(face_deleted_, faces_.size(), map.faces);
         map.halfedges.assign(halfedges_.size(), UINT32_MAX);
         for (std::size_t h = 0; h < halfedges_.size(); ++h)
             if (map.edges[h >> 1] != UINT32_MAX) map.halfedges[h] = 2 * map.edges[h >> 1] + (h & 1u);
@@ -538,57 +626,63 @@ public:
             }
         positions_.resize(nv);
         vertex_out_.resize(nv);
-        vertex_deleted_.assign(nv, 0);
         for (std::size_t h = 0; h < halfedges_.size(); ++h)
             if (map.halfedges[h] != UINT32_MAX) {
                 const auto rec = halfedges_[h];
                 halfedges_[map.halfedges[h]] = {mv(rec.target), mf(rec.face), mh(rec.next), mh(rec.prev)};
             }
         halfedges_.resize(2 * static_cast<std::size_t>(ne));
-        edge_deleted_.assign(ne, 0);
         std::vector<std::vector<halfedge_handle>> rings;
+        detail::zeroed_array<std::uint32_t> face_rings;
         for (std::size_t f = 0; f < faces_.size(); ++f)
             if (map.faces[f] != UINT32_MAX) {
-                auto rec = faces_[f];
-                rec.outer = mh(rec.outer);
-                if (rec.rings != no_rings) {
-                    auto list = std::move(ring_lists_[rec.rings]);
+                faces_[map.faces[f]] = mh(faces_[f]);
+                if (const auto r = face_rings_[f]; r != 0 && !ring_lists_[r - 1].empty()) {
+                    auto list = std::move(ring_lists_[r - 1]);
                     for (auto& h : list) h = mh(h);
-                    if (list.empty()) {
-                        rec.rings = no_rings;
-                    } else {
-                        rec.rings = static_cast<std::uint32_t>(rings.size());
-                        rings.push_back(std::move(list));
-                    }
+                    rings.push_back(std::move(list));
+                    face_rings.at(map.faces[f], nf) = static_cast<std::uint32_t>(rings.size());
                 }
-                faces_[map.faces[f]] = rec;
             }
         faces_.resize(nf);
-        face_deleted_.assign(nf, 0);
         ring_lists_ = std::move(rings);
+        face_rings_ = std::move(face_rings);
+        vertex_deleted_.zero();
+        edge_deleted_.zero();
+        face_deleted_.zero();
         vertex_props_.compact(map.vertices, nv);
         edge_props_.compact(map.edges, ne);
         halfedge_props_.compact(map.halfedges, 2 * static_cast<std::size_t>(ne));
         face_props_.compact(map.faces, nf);
         deleted_vertices_ = deleted_edges_ = deleted_faces_ = 0;
+        free_vertices_.clear();
+        free_edges_.clear();
+        free_faces_.clear();
+        vertex_generations_.clear();
+        edge_generations_.clear();
+        face_generations_.clear();
         ++changes_;
         return map;
     }
 
-    /// Reserves storage for that many vertices, edges and faces.
+    /// Reserves storage for that many vertices, edges and faces (index bounds).
     void reserve(std::size_t vertices, std::size_t edges, std::size_t faces) {
+        free_vertices_.ensure_room(vertices);
+        free_edges_.ensure_room(edges);
+        free_faces_.ensure_room(faces);
         positions_.reserve(vertices);
         vertex_out_.reserve(vertices);
-        vertex_deleted_.reserve(vertices);
+        vertex_deleted_.ensure(vertices);
         halfedges_.reserve(2 * edges);
-        edge_deleted_.reserve(edges);
+        edge_deleted_.ensure(edges);
         faces_.reserve(faces);
-        face_deleted_.reserve(faces);
+        face_deleted_.ensure(faces);
     }
     /// Removes everything, properties included.
     void clear() { *this = basic_halfedge_mesh(); }
     /// Removes every element and keeps the named properties (emptied, their defaults kept), as
-    /// OpenMesh's clear() does: what reading a file into a mesh uses. The change count keeps
+    /// OpenMesh's clear() does: what reading a file into a mesh uses. The slot_reuse() setting
+    /// is kept too. The change count keeps
     /// growing, so an index built before sees that it is stale. Invalidates all handles. O(1)
     /// besides freeing the storage.
     void clear_elements() {
@@ -597,7 +691,9 @@ public:
         auto halfedge_props = std::move(halfedge_props_);
         auto face_props = std::move(face_props_);
         const auto changes = changes_;
+        const bool reuse = reuse_slots_;
         *this = basic_halfedge_mesh();
+        reuse_slots_ = reuse;
         vertex_props_ = std::move(vertex_props);
         vertex_props_.resize(0);
         edge_props_ = std::move(edge_props);
@@ -613,31 +709,56 @@ public:
     std::uint64_t change_count() const noexcept { return changes_; }
 
 private:
-    static constexpr std::uint32_t no_rings = UINT32_MAX;
     struct halfedge_record {
         vertex_handle target;
         face_handle face;
         halfedge_handle next, prev;
     };
-    struct face_record {
-        halfedge_handle outer;
-        std::uint32_t rings = no_rings;
-    };
+
+    halfedge_handle append_edge(vertex_handle a, vertex_handle b) {
+        free_edges_.ensure_room(halfedges_.size() / 2 + 1);
+        edge_deleted_.ensure(halfedges_.size() / 2 + 1);
+        const auto h = halfedge_handle(halfedges_.size());
+        halfedges_.push_back({b, {}, {}, {}});
+        halfedges_.push_back({a, {}, {}, {}});
+        edge_props_.push_back();
+        halfedge_props_.push_back();
+        halfedge_props_.push_back();
+        ++changes_;
+        return h;
+    }
+    face_handle append_face() {
+        free_faces_.ensure_room(faces_.size() + 1);
+        face_deleted_.ensure(faces_.size() + 1);
+        faces_.push_back({});
+        face_props_.push_back();
+        ++changes_;
+        return face_handle(faces_.size() - 1);
+    }
 
     void link(halfedge_handle a, halfedge_handle b) {
         halfedges_[a.index].next = b;
         halfedges_[b.index].prev = a;
     }
 
+    // A face stores its outer-loop halfedge only (4 bytes, as CGAL's does): the few faces with
+    // holes find their ring list through face_rings_ (list index + 1; 0 for none). Deleted flags
+    // read as zero until the first erasure writes one, and hold at least each index bound so
+    // that erasing never allocates.
     std::vector<point> positions_;
     std::vector<halfedge_handle> vertex_out_;
-    std::vector<std::uint8_t> vertex_deleted_;
+    detail::zeroed_array<std::uint8_t> vertex_deleted_;
     std::vector<halfedge_record> halfedges_;
-    std::vector<std::uint8_t> edge_deleted_;
-    std::vector<face_record> faces_;
-    std::vector<std::uint8_t> face_deleted_;
+    detail::zeroed_array<std::uint8_t> edge_deleted_;
+    std::vector<halfedge_handle> faces_;
+    detail::zeroed_array<std::uint8_t> face_deleted_;
+    detail::zeroed_array<std::uint32_t> face_rings_;
     std::vector<std::vector<halfedge_handle>> ring_lists_;
     std::size_t deleted_vertices_ = 0, deleted_edges_ = 0, deleted_faces_ = 0;
+    // Deleted slots waiting for reuse, and each slot's reuse count (see the class comment).
+    detail::free_slots free_vertices_, free_edges_, free_faces_;
+    detail::zeroed_array<std::uint32_t> vertex_generations_, edge_generations_, face_generations_;
+    bool reuse_slots_ = true;
     std::uint64_t changes_ = 0;
     // Reused by add_face so that building a mesh does not allocate per face.
     detail::face_link_scratch<halfedge_handle> link_scratch_;

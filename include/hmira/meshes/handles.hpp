@@ -43,6 +43,18 @@ using face_handle = index_handle<face_tag>;
 using edge_handle = index_handle<edge_tag>;
 using halfedge_handle = index_handle<halfedge_tag>;
 
+/// A handle together with the generation of its slot when it was taken (halfedge_mesh's
+/// versioned()). A mesh that reuses deleted slots answers is_valid() for it only while the
+/// same element lives in the slot, so a handle kept across deletions cannot silently name a
+/// newer element. Valid until collect_garbage, which renumbers everything.
+template <class Tag>
+struct versioned_handle {
+    index_handle<Tag> handle;     ///< the element's handle
+    std::uint32_t generation = 0; ///< its slot's generation when the handle was taken
+    /// Equal when both the slot and the generation are.
+    friend constexpr bool operator==(versioned_handle, versioned_handle) = default;
+};
+
 }  // namespace hmira
 
 template <class Tag>

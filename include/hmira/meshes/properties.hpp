@@ -1,7 +1,8 @@
 // hmira/meshes/properties.hpp
 // Per-element user data (normals, colours, UVs, ...) for hmira's own meshes. Every property
-// array grows with its element kind and is permuted by garbage collection together with the
-// connectivity, so a property never goes out of step with the elements it describes.
+// array grows with its element kind, is reset to its default when a mesh reuses a deleted
+// element's slot, and is permuted by garbage collection together with the connectivity, so a
+// property never goes out of step with the elements it describes.
 #pragma once
 
 #include <cstddef>
@@ -27,6 +28,8 @@ public:
     virtual ~property_array_base() = default;
     virtual void resize(std::size_t n) = 0;
     virtual void push_back() = 0;
+    /// Sets element i back to the default value (a reused slot starts as a new element).
+    virtual void reset(std::size_t i) = 0;
     /// Keeps element i at new index old_to_new[i]; entries equal to UINT32_MAX are dropped.
     virtual void compact(std::span<const std::uint32_t> old_to_new, std::size_t new_size) = 0;
     virtual std::unique_ptr<property_array_base> clone() const = 0;
@@ -45,6 +48,7 @@ public:
 
     void resize(std::size_t n) override { data.resize(n, default_); }
     void push_back() override { data.push_back(default_); }
+    void reset(std::size_t i) override { data[i] = default_; }
     void compact(std::span<const std::uint32_t> old_to_new, std::size_t new_size) override {
         std::vector<T> out(new_size, default_);
         for (std::size_t i = 0; i < old_to_new.size() && i < data.size(); ++i)
@@ -154,12 +158,16 @@ public:
         return out;
     }
 
-    /// Element bookkeeping done by the meshes: one more element, n elements, and compaction
-    /// keeping element i at old_to_new[i] (UINT32_MAX: dropped).
+    /// Element bookkeeping done by the meshes: one more element, element i reused (its values
+    /// back to the defaults), n elements, and compaction keeping element i at old_to_new[i]
+    /// (UINT32_MAX: dropped).
     ///@{
     void push_back() {
         ++size_;
         for (auto& a : arrays_) a->push_back();
+    }
+    void reset(std::size_t i) {
+        for (auto& a : arrays_) a->reset(i);
     }
     void resize(std::size_t n) {
         size_ = n;

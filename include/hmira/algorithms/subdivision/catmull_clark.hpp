@@ -284,6 +284,7 @@ template <class M, class T = default_traits<M>>
     const std::size_t edge_bound = T::edge_index_bound(mesh) + std::size_t(counts.edges - first.edges);
     const std::size_t face_bound = T::face_index_bound(mesh) + std::size_t(counts.faces - first.faces);
     detail::subdivision::reserve_room<M, T>(mesh, vertex_bound, edge_bound, face_bound);
+    [[maybe_unused]] const detail::subdivision::appending_guard<M> appending(mesh);  // new vertices are told by index
     ds::cc_workspace<M, T> work;
     work.reserve(vertex_bound - std::size_t(counts.vertices - largest_input.vertices), face_bound - std::size_t(counts.faces - largest_input.faces),
                  max_degree);

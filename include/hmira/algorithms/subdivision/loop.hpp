@@ -255,6 +255,7 @@ template <class M, class T = default_traits<M>>
     const std::size_t edge_bound = T::edge_index_bound(mesh) + std::size_t(e - e0);
     const std::size_t face_bound = T::face_index_bound(mesh) + std::size_t(f - f0);
     ds::reserve_room<M, T>(mesh, vertex_bound, edge_bound, face_bound);
+    [[maybe_unused]] const detail::subdivision::appending_guard<M> appending(mesh);  // new vertices are told by index
     work.reserve(vertex_bound - std::size_t(v - largest_v), edge_bound - std::size_t(e - largest_e), face_bound - std::size_t(f - largest_f));
     for (std::size_t l = 0; l < options.levels; ++l) {
         if (l > 0) {

@@ -4,6 +4,8 @@
 // both build their faces with it, and any model with that layer could.
 #pragma once
 
+#include <algorithm>
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -16,8 +18,8 @@
 
 namespace hmira::detail {
 
-/// Buffers link_face reuses from call to call, so that building a mesh face by face does not
-/// allocate per face. A mesh keeps one and passes it in.
+/// Buffers link_face reuses from call to call for faces too large for its stack arrays, so that
+/// building a mesh face by face does not allocate per face. A mesh keeps one and passes it in.
 template <class Halfedge>
 struct face_link_scratch {
     std::vector<Halfedge> sides;                        ///< the halfedge of each side, once known
@@ -123,10 +125,26 @@ result<typename T::face_handle> link_face(M& m, std::span<const typename T::vert
                 return fail(errc::degenerate_face, "add_face: vertex " + linking::vertex_name<M, T>(m, vs[i]) + " appears twice in the face",
                             linking::vertex_number<M, T>(m, vs[i]));
     }
-    auto& sides = scratch.sides;
-    auto& fresh = scratch.fresh;
-    sides.assign(n, null_h);
-    fresh.assign(n, 0);
+    // Small faces (nearly all) keep their working state on the stack: filling and growing the
+    // scratch vectors cost a fifth of a triangle mesh's build when they were used for every face.
+    using H = typename T::halfedge_handle;
+    constexpr std::size_t small = 8;
+    std::array<H, small> small_sides;
+    std::array<std::uint8_t, small> small_fresh;
+    std::array<std::pair<H, H>, 3 * small> small_links;
+    H* sides = small_sides.data();
+    std::uint8_t* fresh = small_fresh.data();
+    std::pair<H, H>* links = small_links.data();
+    if (n > small) {
+        scratch.sides.resize(n);
+        scratch.fresh.resize(n);
+        scratch.links.resize(3 * n);  // each corner sets at most three next links
+        sides = scratch.sides.data();
+        fresh = scratch.fresh.data();
+        links = scratch.links.data();
+    }
+    std::fill(sides, sides + n, null_h);
+    std::fill(fresh, fresh + n, std::uint8_t{0});
     for (std::size_t i = 0; i < n; ++i) {
         if (!linking::on_boundary<M, T>(m, vs[i]))
             return fail(errc::non_manifold,
@@ -177,8 +195,8 @@ result<typename T::face_handle> link_face(M& m, std::span<const typename T::vert
     T::set_face_halfedge(m, f, sides[n - 1]);
 
     // The new next links, computed from the state before this face and applied afterwards.
-    auto& links = scratch.links;
-    links.clear();
+    std::size_t link_count = 0;
+    auto add_link = [&](H a, H b) { links[link_count++] = {a, b}; };
     for (std::size_t i = 0; i < n; ++i) {
         const std::size_t ii = (i + 1) % n;
         const auto v = vs[ii];
@@ -187,25 +205,25 @@ result<typename T::face_handle> link_face(M& m, std::span<const typename T::vert
         if (in_new || out_new) {
             const auto outer_in = T::opposite(m, out), outer_out = T::opposite(m, in);
             if (in_new && !out_new) {
-                links.push_back({T::prev(m, out), outer_out});
+                add_link(T::prev(m, out), outer_out);
                 T::set_vertex_halfedge(m, v, outer_out);
             } else if (!in_new && out_new) {
                 const auto boundary_next = T::next(m, in);
-                links.push_back({outer_in, boundary_next});
+                add_link(outer_in, boundary_next);
                 T::set_vertex_halfedge(m, v, boundary_next);
             } else if (T::vertex_halfedge(m, v) == null_h) {
                 T::set_vertex_halfedge(m, v, outer_out);
-                links.push_back({outer_in, outer_out});
+                add_link(outer_in, outer_out);
             } else {
                 const auto boundary_next = T::vertex_halfedge(m, v);
-                links.push_back({T::prev(m, boundary_next), outer_out});
-                links.push_back({outer_in, boundary_next});
+                add_link(T::prev(m, boundary_next), outer_out);
+                add_link(outer_in, boundary_next);
             }
-            links.push_back({in, out});
+            add_link(in, out);
         }
         T::set_face(m, in, f);
     }
-    for (const auto& [a, b] : links) T::set_next(m, a, b);
+    for (std::size_t k = 0; k < link_count; ++k) T::set_next(m, links[k].first, links[k].second);
     for (std::size_t i = 0; i < n; ++i) prefer_boundary_halfedge<M, T>(m, vs[i]);
     return f;
 }

@@ -21,4 +21,28 @@ void reserve_room(M& mesh, std::size_t vertices, std::size_t edges, std::size_t 
         mesh.reserve(vertices, edges, faces);
 }
 
+/// While it lives, a model that reuses deleted slots (halfedge_mesh, which has
+/// set_slot_reuse) appends every new element instead: the schemes tell a level's new vertices
+/// from its old ones by index (at or above the index bound the level began with), which a
+/// vertex placed in a freed slot below that bound would break. Restores the setting after.
+template <class M>
+class appending_guard {
+public:
+    explicit appending_guard(M& mesh) : mesh_(mesh) {
+        if constexpr (requires { mesh.set_slot_reuse(false); }) {
+            saved_ = mesh.slot_reuse();
+            mesh.set_slot_reuse(false);
+        }
+    }
+    ~appending_guard() {
+        if constexpr (requires { mesh_.set_slot_reuse(false); }) mesh_.set_slot_reuse(saved_);
+    }
+    appending_guard(const appending_guard&) = delete;
+    appending_guard& operator=(const appending_guard&) = delete;
+
+private:
+    M& mesh_;
+    bool saved_ = false;
+};
+
 }  // namespace hmira::detail::subdivision

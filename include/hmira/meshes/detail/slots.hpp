@@ -1,0 +1,155 @@
+// hmira/meshes/detail/slots.hpp
+// Slot bookkeeping for hmira's meshes: a free list of deleted slots that never allocates when a
+// slot is freed, and a lazily zeroed array for per-slot data that is mostly zero (deleted flags,
+// generation counts that let a kept handle tell its element from a later one in the same slot).
+// Both cost nothing on a mesh that never deletes.
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <new>
+#include <utility>
+#include <vector>
+
+namespace hmira::detail {
+
+/// The deleted slots of one element kind, last freed first. The owning mesh keeps capacity() at
+/// least its index bound (ensure_room when it appends), so push() never allocates: erasing, as
+/// an edit's noexcept rollback does, cannot throw. Copies keep the capacity for the same reason.
+class free_slots {
+public:
+    free_slots() = default;
+    free_slots(const free_slots& other) {
+        slots_.reserve(other.slots_.capacity());
+        slots_ = other.slots_;
+    }
+    free_slots& operator=(const free_slots& other) {
+        if (this != &other) {
+            free_slots copy(other);
+            *this = std::move(copy);
+        }
+        return *this;
+    }
+    free_slots(free_slots&&) noexcept = default;
+    free_slots& operator=(free_slots&&) noexcept = default;
+    ~free_slots() = default;
+
+    /// Room for a bound of n slots, grown geometrically; may throw, so call it before changing
+    /// the mesh. Untouched until slots are freed (the pages of a large reservation stay unmapped).
+    void ensure_room(std::size_t n) {
+        if (slots_.capacity() < n) slots_.reserve(std::max<std::size_t>({n, 2 * slots_.capacity(), 16}));
+    }
+    /// Frees slot i. Never allocates while the room covers the bound; a slot that finds no room
+    /// (a bound grown behind the mesh's back) is simply not reused until collect_garbage.
+    void push(std::uint32_t i) noexcept {
+        if (slots_.size() < slots_.capacity()) slots_.push_back(i);
+    }
+    bool empty() const noexcept { return slots_.empty(); }
+    std::size_t size() const noexcept { return slots_.size(); }
+    std::uint32_t top() const noexcept { return slots_.back(); }
+    void pop() noexcept { slots_.pop_back(); }
+    /// Forgets every slot and keeps the room.
+    void clear() noexcept { slots_.clear(); }
+
+private:
+    std::vector<std::uint32_t> slots_;
+};
+
+/// An array of T that reads as all zeros until written, held in memory from calloc: entries
+/// past size() read as zero, and a large array that is only grown, never written, keeps its
+/// pages unmapped (the kernel zeroes a page when it is first written, not before). The meshes
+/// keep their deleted flags, slot generations and inner-ring indices in these, so that a mesh
+/// that never deletes and has no holes pays for none of them. T is a trivially copyable integer.
+template <class T>
+class zeroed_array {
+public:
+    zeroed_array() = default;
+    zeroed_array(const zeroed_array& other) {
+        if (other.size_ == 0) return;
+        data_ = allocate(other.size_);
+        size_ = other.size_;
+        dirty_ = other.dirty_;
+        if (dirty_) std::memcpy(data_, other.data_, size_ * sizeof(T));
+    }
+    zeroed_array& operator=(const zeroed_array& other) {
+        if (this != &other) {
+            zeroed_array copy(other);
+            swap(copy);
+        }
+        return *this;
+    }
+    zeroed_array(zeroed_array&& other) noexcept { swap(other); }
+    zeroed_array& operator=(zeroed_array&& other) noexcept {
+        zeroed_array moved(std::move(other));
+        swap(moved);
+        return *this;
+    }
+    ~zeroed_array() { std::free(data_); }
+
+    /// Entry i, zero past the end. O(1).
+    T operator[](std::size_t i) const noexcept { return i < size_ ? data_[i] : T{}; }
+    /// The entries (null when none are held); size() of them.
+    const T* data() const noexcept { return data_; }
+    /// Number of entries held.
+    std::size_t size() const noexcept { return size_; }
+    /// Writes entry i. \pre i < size(). Never allocates.
+    void set(std::size_t i, T value) noexcept {
+        data_[i] = value;
+        dirty_ = true;
+    }
+    /// Entry i for writing, holding at least `bound` entries if it must grow. May throw
+    /// std::bad_alloc (then nothing changed). Amortised O(1).
+    T& at(std::size_t i, std::size_t bound) {
+        if (i >= size_) ensure(std::max(i + 1, bound));
+        dirty_ = true;
+        return data_[i];
+    }
+    /// Holds at least n entries, growing geometrically; the new ones read as zero. May throw
+    /// std::bad_alloc (then nothing changed). An array never written is not copied.
+    void ensure(std::size_t n) {
+        if (n <= size_) return;
+        const std::size_t grown = std::max({n, 2 * size_, std::size_t{16}});
+        T* p = allocate(grown);
+        if (dirty_) std::memcpy(p, data_, size_ * sizeof(T));
+        std::free(data_);
+        data_ = p;
+        size_ = grown;
+    }
+    /// Every entry zero again, with as many held (fresh pages rather than a pass of writes).
+    /// May throw std::bad_alloc (then nothing changed).
+    void zero() {
+        if (!dirty_) return;
+        T* p = allocate(size_);
+        std::free(data_);
+        data_ = p;
+        dirty_ = false;
+    }
+    /// Holds nothing.
+    void clear() noexcept {
+        std::free(data_);
+        data_ = nullptr;
+        size_ = 0;
+        dirty_ = false;
+    }
+
+private:
+    static T* allocate(std::size_t n) {
+        auto* p = static_cast<T*>(std::calloc(n, sizeof(T)));
+        if (!p) throw std::bad_alloc();
+        return p;
+    }
+    void swap(zeroed_array& other) noexcept {
+        std::swap(data_, other.data_);
+        std::swap(size_, other.size_);
+        std::swap(dirty_, other.dirty_);
+    }
+
+    T* data_ = nullptr;
+    std::size_t size_ = 0;
+    bool dirty_ = false;  // some entry was written (else every entry is zero)
+};
+
+}  // namespace hmira::detail
