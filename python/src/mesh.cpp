@@ -42,8 +42,16 @@ namespace {
 using hmira::halfedge_mesh;
 using hmira::vec3;
 
+/// A mesh for Python: new elements always append (no reuse of deleted slots), so an int handle
+/// held in Python stays invalid after its element is deleted, until collect_garbage(), as the
+/// Euler operators' docstrings say; copies keep the setting.
+std::shared_ptr<halfedge_mesh> appending_mesh(halfedge_mesh&& m = {}) {
+    m.set_slot_reuse(false);
+    return std::make_shared<halfedge_mesh>(std::move(m));
+}
+
 struct py_mesh {
-    std::shared_ptr<halfedge_mesh> mesh = std::make_shared<halfedge_mesh>();
+    std::shared_ptr<halfedge_mesh> mesh = appending_mesh();
     /// Bumped by every change that may move or renumber the positions.
     std::uint64_t version = 0;
     /// Calls running with the GIL released: readers of the mesh, and at most one writer (then
@@ -77,7 +85,7 @@ struct py_mesh {
     }
     void replace(halfedge_mesh&& fresh) {
         refuse_while_in_use();
-        mesh = std::make_shared<halfedge_mesh>(std::move(fresh));
+        mesh = appending_mesh(std::move(fresh));
         ++version;
     }
 };

@@ -291,7 +291,8 @@ struct mesh_traits<CGAL::Surface_mesh<P>> {
     /// Whether the element was removed (Surface_mesh's is_removed), for an index below the
     /// bound. O(1). Surface_mesh reuses a removed slot for the next element of that kind it
     /// adds; a stale handle to a reused slot then names the new element and cannot be told
-    /// apart (hmira's meshes and OpenMesh do not reuse slots before garbage collection).
+    /// apart (halfedge_mesh reuses slots too, but its versioned handles can tell; winged_edge_mesh
+    /// and OpenMesh do not reuse slots before garbage collection).
     static bool is_removed(const mesh& m, VH v) { return m.is_removed(v); }
     static bool is_removed(const mesh& m, FH f) { return m.is_removed(f); }
     static bool is_removed(const mesh& m, EH e) { return m.is_removed(e); }

@@ -35,7 +35,8 @@ make_vertex_result<M, T> make_vertex(M& mesh, const vec3<typename T::scalar>& po
 ///
 /// Precondition: `vertex` has no edge. Errors: errc::invalid_handle for a handle out of
 /// range, errc::topology when the vertex has edges; the mesh is then unchanged.
-/// Complexity O(1). The vertex stays allocated until the model collects garbage.
+/// Complexity O(1). The slot stays allocated until the model collects garbage or, on a model
+/// that reuses slots (halfedge_mesh, CGAL), a new vertex takes it.
 template <class M, class T = default_traits<M>>
     requires euler_mutable_mesh<M, T>
 result<kill_vertex_result<M, T>> kill_vertex(M& mesh, typename T::vertex_handle vertex) {
