@@ -16,6 +16,7 @@
 #include "../../core/result.hpp"
 #include "../spatial/aabb_tree.hpp"
 #include "../triangle/triangle_common.hpp"
+#include "../subdivision/detail/reserve.hpp"
 #include "detail/remesher.hpp"
 
 namespace hmira {
@@ -159,6 +160,9 @@ template <class M, class T = default_traits<M>>
     if (!gate.advance()) return cancelled();
 
     M work = mesh;
+    // The remesher keeps its feature and lock flags by index and only grows them, so a new
+    // element in a freed slot would inherit a deleted one's flags: work appends instead.
+    std::optional<detail::subdivision::appending_guard<M>> appending(std::in_place, work);
     detail::remeshing::remesher<M, T> r(work, L, surface ? &*surface : nullptr);
     r.set_features(feature);
     isotropic_remeshing_result out;
@@ -172,6 +176,7 @@ template <class M, class T = default_traits<M>>
         r.relax_and_project();
         if (!gate.advance()) return cancelled();
     }
+    appending.reset();  // the caller's mesh keeps its own slot_reuse setting
     mesh = std::move(work);
     out.splits = r.splits;
     out.collapses = r.collapses;
