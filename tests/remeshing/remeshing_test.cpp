@@ -364,6 +364,21 @@ TYPED_TEST(remeshing_test, the_same_input_gives_the_same_mesh) {
     }
 }
 
+// The remesher keeps flags by element index: with slot reuse, a new edge in a freed slot once
+// inherited a deleted edge's feature flag. The working copy appends now, so the setting of the
+// caller's mesh changes nothing in the result, and the caller's mesh keeps its setting.
+TEST(remeshing_slot_reuse, the_slot_reuse_setting_changes_nothing_and_is_kept) {
+    hmira::halfedge_mesh reusing = unit_sphere<hmira::halfedge_mesh>(), appending = unit_sphere<hmira::halfedge_mesh>();
+    appending.set_slot_reuse(false);
+    ASSERT_TRUE(reusing.slot_reuse());
+    ASSERT_TRUE(hmira::isotropic_remeshing(reusing, {.target_edge_length = 0.12, .iterations = 3}));
+    ASSERT_TRUE(hmira::isotropic_remeshing(appending, {.target_edge_length = 0.12, .iterations = 3}));
+    EXPECT_EQ(take_snapshot(reusing), take_snapshot(appending));
+    EXPECT_TRUE(reusing.slot_reuse());
+    EXPECT_FALSE(appending.slot_reuse());
+    EXPECT_TRUE(hmira_test::is_valid(reusing));
+}
+
 std::filesystem::path data_dir() {
     const char* d = std::getenv("HMIRA_TEST_DATA");
     return d ? std::filesystem::path(d) / "meshes" : std::filesystem::path();
