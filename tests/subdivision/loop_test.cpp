@@ -21,11 +21,6 @@ template <class M>
 class loop_test : public ::testing::Test {};
 TYPED_TEST_SUITE(loop_test, all_models);
 
-template <class M, class T = hmira::default_traits<M>>
-std::size_t valence(const M& m, typename T::vertex_handle v) {
-    return std::size_t(std::ranges::distance(T::adjacent_vertices(m, v)));
-}
-
 TYPED_TEST(loop_test, one_level_on_the_icosahedron_gives_the_textbook_counts_and_valences) {
     using M = TypeParam;
     HMIRA_REQUIRE_TRIANGLE_OPS(M)

@@ -24,11 +24,6 @@ class sqrt3_test : public ::testing::Test {};
 TYPED_TEST_SUITE(sqrt3_test, all_models);
 
 template <class M, class T = hmira::default_traits<M>>
-std::size_t valence(const M& m, typename T::vertex_handle v) {
-    return std::size_t(std::ranges::distance(T::adjacent_vertices(m, v)));
-}
-
-template <class M, class T = hmira::default_traits<M>>
 double tolerance() {
     return std::is_same_v<typename T::scalar, double> ? 1e-12 : 1e-5;
 }

@@ -66,6 +66,12 @@ template <class M, class T = hmira::default_traits<M>>
     return natively_valid(m);
 }
 
+/// The number of vertices joined to v by an edge, counted here.
+template <class M, class T = hmira::default_traits<M>>
+std::size_t valence(const M& m, typename T::vertex_handle v) {
+    return std::size_t(std::ranges::distance(T::adjacent_vertices(m, v)));
+}
+
 /// V - E + F, counted here.
 template <class M, class T = hmira::default_traits<M>>
 long long chi(const M& m) {
