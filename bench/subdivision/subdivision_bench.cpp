@@ -52,11 +52,17 @@ namespace {
 using hmira_bench::build;
 using hmira_bench::soup;
 
-/// Each case's single-run user CPU times, by name, for the summary.
+/// Each case's single-run user and system CPU times, by name, for the summary.
 std::map<std::string, std::vector<double>>& user_seconds_by_case() {
     static std::map<std::string, std::vector<double>> s;
     return s;
 }
+std::map<std::string, std::vector<double>>& sys_seconds_by_case() {
+    static std::map<std::string, std::vector<double>> s;
+    return s;
+}
+
+double seconds(const timeval& t) { return double(t.tv_sec) + 1e-6 * double(t.tv_usec); }
 
 /// Runs f (the timed part) and records its user CPU time and fresh memory touched.
 template <class F>
@@ -65,9 +71,12 @@ void measured(benchmark::State& state, const std::string& name, F&& f) {
     getrusage(RUSAGE_SELF, &before);
     f();
     getrusage(RUSAGE_SELF, &after);
-    const double user = double(after.ru_utime.tv_sec - before.ru_utime.tv_sec) + 1e-6 * double(after.ru_utime.tv_usec - before.ru_utime.tv_usec);
+    const double user = seconds(after.ru_utime) - seconds(before.ru_utime);
+    const double sys = seconds(after.ru_stime) - seconds(before.ru_stime);
     user_seconds_by_case()[name].push_back(user);
+    sys_seconds_by_case()[name].push_back(sys);
     state.counters["user_ms"] = user * 1e3;
+    state.counters["sys_ms"] = sys * 1e3;
     state.counters["fresh_MB"] = double(after.ru_minflt - before.ru_minflt) * 4096.0 / 1e6;
 }
 
@@ -77,8 +86,8 @@ int add_case(const char* name, void (*run)(benchmark::State&, const char*)) {
     return 0;
 }
 
-double median_user(const std::string& name) {
-    auto v = user_seconds_by_case()[name];
+double median_in(std::map<std::string, std::vector<double>>& by_case, const std::string& name) {
+    auto v = by_case[name];
     if (v.empty()) return 0;
     std::sort(v.begin(), v.end());
     return v[v.size() / 2];
@@ -266,7 +275,10 @@ int main(int argc, char** argv) {
         print_ratio(scheme + ": hmira on OpenMesh / hmira halfedge_mesh", hmira_on_openmesh_case(scheme), own, 1.1);
         print_ratio(scheme + ": hmira on CGAL / hmira halfedge_mesh", scheme + "/hmira/cgal_surface_mesh", own, 1.1);
     }
-    std::printf("\nMedian user-CPU-time ratios (without the kernel's zeroing of fresh pages):\n");
+    for (const bool user : {true, false}) {
+    std::printf(user ? "\nMedian user-CPU-time ratios (without the kernel's zeroing of fresh pages):\n"
+                     : "\nMedian system-CPU-time ratios (the kernel's faulting and zeroing of fresh pages):\n");
+    auto& by_case = user ? user_seconds_by_case() : sys_seconds_by_case();
     for (const std::string scheme : {"loop", "catmull_clark", "sqrt3"}) {
         const std::string own = scheme + "/hmira/halfedge_mesh";
         const std::string om = openmesh_case(scheme), cg = cgal_case(scheme), on_om = hmira_on_openmesh_case(scheme);
@@ -274,9 +286,10 @@ int main(int argc, char** argv) {
         for (const auto& [label, a, b] : {std::tuple{"hmira halfedge_mesh / OpenMesh", own, om}, std::tuple{"hmira halfedge_mesh / CGAL", own, cg},
                                           std::tuple{"hmira on OpenMesh / hmira halfedge_mesh", on_om, own},
                                           std::tuple{"hmira on CGAL / hmira halfedge_mesh", on_cg, own}}) {
-            const double ta = median_user(a), tb = median_user(b);
+            const double ta = median_in(by_case, a), tb = median_in(by_case, b);
             if (ta > 0 && tb > 0) std::printf("%-58s %7.1f ms / %7.1f ms = %5.2f\n", (scheme + ": " + label).c_str(), ta * 1e3, tb * 1e3, ta / tb);
         }
+    }
     }
     benchmark::Shutdown();
     return 0;
