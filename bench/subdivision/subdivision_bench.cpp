@@ -11,10 +11,11 @@
 // level takes a fraction of a second to seconds) and is repeated 3 times. After the run the
 // medians are compared: hmira on halfedge_mesh / each peer (target <= 0.5), and hmira generic
 // on OpenMesh and CGAL / hmira on halfedge_mesh (target <= 1.1). Run single-threaded.
-// Each case also reports its user CPU time and the fresh memory it touched (minor page faults,
-// in MB): at a million faces the kernel's zeroing of the output's fresh pages (system time) is
-// a large share of the CPU time and depends on the output's size alone, so the summary gives
-// the ratios of user time as well.
+// Each case also reports its user and system CPU time and the fresh memory it touched (minor
+// page faults, in MB; a huge page counts as one fault): at a million faces the kernel's
+// faulting and zeroing of the output's fresh pages (system time) is a large share of the CPU
+// time and depends on the output's size alone, so the summary gives the ratios of user and of
+// system time as well. bench/subdivision/run.sh runs it with and without transparent huge pages.
 #include <benchmark/benchmark.h>
 #include <sys/resource.h>
 
