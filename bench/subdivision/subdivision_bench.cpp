@@ -11,10 +11,11 @@
 // level takes a fraction of a second to seconds) and is repeated 3 times. After the run the
 // medians are compared: hmira on halfedge_mesh / each peer (target <= 0.5), and hmira generic
 // on OpenMesh and CGAL / hmira on halfedge_mesh (target <= 1.1). Run single-threaded.
-// Each case also reports its user CPU time and the fresh memory it touched (minor page faults,
-// in MB): at a million faces the kernel's zeroing of the output's fresh pages (system time) is
-// a large share of the CPU time and depends on the output's size alone, so the summary gives
-// the ratios of user time as well.
+// Each case also reports its user and system CPU time and the fresh memory it touched (minor
+// page faults, in MB; a huge page counts as one fault): at a million faces the kernel's
+// faulting and zeroing of the output's fresh pages (system time) is a large share of the CPU
+// time and depends on the output's size alone, so the summary gives the ratios of user and of
+// system time as well. bench/subdivision/run.sh runs it with and without transparent huge pages.
 #include <benchmark/benchmark.h>
 #include <sys/resource.h>
 
@@ -52,11 +53,17 @@ namespace {
 using hmira_bench::build;
 using hmira_bench::soup;
 
-/// Each case's single-run user CPU times, by name, for the summary.
+/// Each case's single-run user and system CPU times, by name, for the summary.
 std::map<std::string, std::vector<double>>& user_seconds_by_case() {
     static std::map<std::string, std::vector<double>> s;
     return s;
 }
+std::map<std::string, std::vector<double>>& sys_seconds_by_case() {
+    static std::map<std::string, std::vector<double>> s;
+    return s;
+}
+
+double seconds(const timeval& t) { return double(t.tv_sec) + 1e-6 * double(t.tv_usec); }
 
 /// Runs f (the timed part) and records its user CPU time and fresh memory touched.
 template <class F>
@@ -65,9 +72,12 @@ void measured(benchmark::State& state, const std::string& name, F&& f) {
     getrusage(RUSAGE_SELF, &before);
     f();
     getrusage(RUSAGE_SELF, &after);
-    const double user = double(after.ru_utime.tv_sec - before.ru_utime.tv_sec) + 1e-6 * double(after.ru_utime.tv_usec - before.ru_utime.tv_usec);
+    const double user = seconds(after.ru_utime) - seconds(before.ru_utime);
+    const double sys = seconds(after.ru_stime) - seconds(before.ru_stime);
     user_seconds_by_case()[name].push_back(user);
+    sys_seconds_by_case()[name].push_back(sys);
     state.counters["user_ms"] = user * 1e3;
+    state.counters["sys_ms"] = sys * 1e3;
     state.counters["fresh_MB"] = double(after.ru_minflt - before.ru_minflt) * 4096.0 / 1e6;
 }
 
@@ -77,8 +87,8 @@ int add_case(const char* name, void (*run)(benchmark::State&, const char*)) {
     return 0;
 }
 
-double median_user(const std::string& name) {
-    auto v = user_seconds_by_case()[name];
+double median_in(std::map<std::string, std::vector<double>>& by_case, const std::string& name) {
+    auto v = by_case[name];
     if (v.empty()) return 0;
     std::sort(v.begin(), v.end());
     return v[v.size() / 2];
@@ -266,7 +276,10 @@ int main(int argc, char** argv) {
         print_ratio(scheme + ": hmira on OpenMesh / hmira halfedge_mesh", hmira_on_openmesh_case(scheme), own, 1.1);
         print_ratio(scheme + ": hmira on CGAL / hmira halfedge_mesh", scheme + "/hmira/cgal_surface_mesh", own, 1.1);
     }
-    std::printf("\nMedian user-CPU-time ratios (without the kernel's zeroing of fresh pages):\n");
+    for (const bool user : {true, false}) {
+    std::printf(user ? "\nMedian user-CPU-time ratios (without the kernel's zeroing of fresh pages):\n"
+                     : "\nMedian system-CPU-time ratios (the kernel's faulting and zeroing of fresh pages):\n");
+    auto& by_case = user ? user_seconds_by_case() : sys_seconds_by_case();
     for (const std::string scheme : {"loop", "catmull_clark", "sqrt3"}) {
         const std::string own = scheme + "/hmira/halfedge_mesh";
         const std::string om = openmesh_case(scheme), cg = cgal_case(scheme), on_om = hmira_on_openmesh_case(scheme);
@@ -274,9 +287,10 @@ int main(int argc, char** argv) {
         for (const auto& [label, a, b] : {std::tuple{"hmira halfedge_mesh / OpenMesh", own, om}, std::tuple{"hmira halfedge_mesh / CGAL", own, cg},
                                           std::tuple{"hmira on OpenMesh / hmira halfedge_mesh", on_om, own},
                                           std::tuple{"hmira on CGAL / hmira halfedge_mesh", on_cg, own}}) {
-            const double ta = median_user(a), tb = median_user(b);
+            const double ta = median_in(by_case, a), tb = median_in(by_case, b);
             if (ta > 0 && tb > 0) std::printf("%-58s %7.1f ms / %7.1f ms = %5.2f\n", (scheme + ": " + label).c_str(), ta * 1e3, tb * 1e3, ta / tb);
         }
+    }
     }
     benchmark::Shutdown();
     return 0;

@@ -64,7 +64,7 @@ struct cc_counts {
 /// faces, first touching fresh pages costs as much as the arithmetic.
 template <class M, class T>
 struct cc_workspace {
-    std::vector<vec3<double>> vertex_point;  // first the sums of neighbours and face points, then the new positions
+    std::vector<vec3<double>> vertex_point;  // the sums of neighbours and face points; a boundary vertex's new position
     std::vector<vec3<double>> face_point;
     std::vector<std::uint32_t> valence;
     std::vector<std::uint8_t> boundary_edges;  // saturates at 3: only "none", "two" and "more" matter
@@ -147,18 +147,16 @@ bool catmull_clark_level(M& mesh, cc_workspace<M, T>& w, progress_gate& gate) {
     // boundary neighbours are its target and the source of its prev. A vertex with more
     // boundary edges (two boundary fans meet there) has no curve to follow and stays where it
     // is, as an isolated vertex does.
+    // The boundary rule reads the old neighbours, so it runs here, before the splits; the inner
+    // rule reads the vertex's own old position only, so it runs in the last pass, which writes
+    // the positions (one pass over the vertices fewer).
     for (auto v : T::vertices(mesh)) {
         const std::size_t i = T::vertex_index(mesh, v);
-        const vec3<double> p = dt::position_of<M, T>(mesh, v);
-        const double n = double(w.valence[i]);
-        if (w.boundary_edges[i] == 0 && w.valence[i] > 0) {
-            sum[i] = (p * (n - 2) + sum[i] / n) / n;
-        } else if (w.boundary_edges[i] == 2) {
+        if (w.boundary_edges[i] == 2) {
+            const vec3<double> p = dt::position_of<M, T>(mesh, v);
             const H s = T::vertex_halfedge(mesh, v);
             const auto a = T::target(mesh, s), b = T::target(mesh, T::opposite(mesh, T::prev(mesh, s)));
             sum[i] = p * 0.75 + (dt::position_of<M, T>(mesh, a) + dt::position_of<M, T>(mesh, b)) * 0.125;
-        } else {
-            sum[i] = p;
         }
     }
 
@@ -204,7 +202,13 @@ bool catmull_clark_level(M& mesh, cc_workspace<M, T>& w, progress_gate& gate) {
     }
     for (auto v : T::vertices(mesh)) {
         const std::size_t i = T::vertex_index(mesh, v);
-        if (i < vertex_bound) dt::set_position<M, T>(mesh, v, sum[i]);
+        if (i >= vertex_bound) continue;  // a new vertex, placed already
+        if (w.boundary_edges[i] == 0 && w.valence[i] > 0) {
+            const double n = double(w.valence[i]);
+            dt::set_position<M, T>(mesh, v, (dt::position_of<M, T>(mesh, v) * (n - 2) + sum[i] / n) / n);
+        } else if (w.boundary_edges[i] == 2) {
+            dt::set_position<M, T>(mesh, v, sum[i]);
+        }  // else it stays
     }
     return true;
 }

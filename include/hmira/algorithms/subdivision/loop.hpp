@@ -56,7 +56,7 @@ inline double loop_beta(std::size_t n) {
 /// first touching fresh pages costs as much as the arithmetic, so nothing is stored twice.
 template <class M, class T>
 struct loop_workspace {
-    std::vector<vec3<double>> vertex_point;  // first the sums of neighbours, then the new positions
+    std::vector<vec3<double>> vertex_point;  // the sums of neighbours, then boundary vertices' new positions
     std::vector<std::uint32_t> valence;
     std::vector<std::uint8_t> boundary_edges;              // saturates at 3
     std::vector<typename T::vertex_handle> edge_vertex;  // by old edge index: its new vertex, null once split
@@ -132,24 +132,28 @@ void loop_level(M& mesh, loop_workspace<M, T>& w) {
     }
     // Old vertices: Loop's rule inside; on the boundary (two boundary edges, the stored
     // halfedge a boundary one) 3/4 of itself and 1/8 of each boundary neighbour; a vertex
-    // where boundary fans meet, or an isolated one, stays.
+    // where boundary fans meet, or an isolated one, stays. The edge points are made, so an
+    // inner vertex takes its new position at once (nothing reads it again before the end);
+    // a boundary vertex reads its boundary neighbours, which are boundary vertices and so
+    // still in place, and keeps its result in `sum` until the last pass.
     std::array<double, 16> betas{};
     for (std::size_t n = 3; n < betas.size(); ++n) betas[n] = loop_beta(n);
+    bool boundary_moves = false;
     for (auto v : T::vertices(mesh)) {
         const std::size_t i = T::vertex_index(mesh, v);
         if (i >= vertex_bound) continue;  // an edge point, placed already
-        const auto p = dt::position_of<M, T>(mesh, v);
         const std::size_t n = w.valence[i];
         if (w.boundary_edges[i] == 0 && n > 0) {
+            const auto p = dt::position_of<M, T>(mesh, v);
             const double beta = n < betas.size() && n >= 3 ? betas[n] : loop_beta(n);
-            sum[i] = p * (1 - double(n) * beta) + sum[i] * beta;
+            dt::set_position<M, T>(mesh, v, p * (1 - double(n) * beta) + sum[i] * beta);
         } else if (w.boundary_edges[i] == 2) {
+            const auto p = dt::position_of<M, T>(mesh, v);
             const H s = T::vertex_halfedge(mesh, v);
             const auto a = dt::position_of<M, T>(mesh, T::target(mesh, s));
             const auto b = dt::position_of<M, T>(mesh, T::target(mesh, T::opposite(mesh, T::prev(mesh, s))));
             sum[i] = p * 0.75 + (a + b) * 0.125;
-        } else {
-            sum[i] = p;
+            boundary_moves = true;
         }
     }
     // Splits (split_edge's links; the triangles were checked), old triangle by old triangle,
@@ -197,10 +201,11 @@ void loop_level(M& mesh, loop_workspace<M, T>& w) {
             w.edge_vertex[i] = typename T::vertex_handle{};
         }
     }
-    for (auto v : T::vertices(mesh)) {
-        const auto i = T::vertex_index(mesh, v);
-        if (i < vertex_bound) dt::set_position<M, T>(mesh, v, sum[i]);
-    }
+    if (boundary_moves)
+        for (auto v : T::vertices(mesh)) {
+            const std::size_t i = T::vertex_index(mesh, v);
+            if (i < vertex_bound && w.boundary_edges[i] == 2) dt::set_position<M, T>(mesh, v, sum[i]);
+        }
 }
 
 }  // namespace detail::subdivision

@@ -110,13 +110,7 @@ public:
     /// Holds at least n entries, growing geometrically; the new ones read as zero. May throw
     /// std::bad_alloc (then nothing changed). An array never written is not copied.
     void ensure(std::size_t n) {
-        if (n <= size_) return;
-        const std::size_t grown = std::max({n, 2 * size_, std::size_t{16}});
-        T* p = allocate(grown);
-        if (dirty_) std::memcpy(p, data_, size_ * sizeof(T));
-        std::free(data_);
-        data_ = p;
-        size_ = grown;
+        if (n > size_) grow(n);  // the check inlines into every append; the growth stays out of line
     }
     /// Every entry zero again, with as many held (fresh pages rather than a pass of writes).
     /// May throw std::bad_alloc (then nothing changed).
@@ -136,6 +130,14 @@ public:
     }
 
 private:
+    [[gnu::noinline]] void grow(std::size_t n) {
+        const std::size_t grown = std::max({n, 2 * size_, std::size_t{16}});
+        T* p = allocate(grown);
+        if (dirty_) std::memcpy(p, data_, size_ * sizeof(T));
+        std::free(data_);
+        data_ = p;
+        size_ = grown;
+    }
     static T* allocate(std::size_t n) {
         auto* p = static_cast<T*>(std::calloc(n, sizeof(T)));
         if (!p) throw std::bad_alloc();
