@@ -21,10 +21,11 @@ void reserve_room(M& mesh, std::size_t vertices, std::size_t edges, std::size_t 
         mesh.reserve(vertices, edges, faces);
 }
 
-/// While it lives, a model that reuses deleted slots (halfedge_mesh, which has
-/// set_slot_reuse) appends every new element instead: the schemes tell a level's new vertices
-/// from its old ones by index (at or above the index bound the level began with), which a
-/// vertex placed in a freed slot below that bound would break. Restores the setting after.
+/// While it lives, a model that reuses deleted slots appends every new element instead:
+/// halfedge_mesh through set_slot_reuse, CGAL's Surface_mesh (which refills removed elements'
+/// slots while it holds garbage) through set_recycle_garbage. The schemes tell a level's new
+/// vertices from its old ones by index (at or above the index bound the level began with),
+/// which a vertex placed in a freed slot below that bound would break. Restores the setting.
 template <class M>
 class appending_guard {
 public:
@@ -32,10 +33,16 @@ public:
         if constexpr (requires { mesh.set_slot_reuse(false); }) {
             saved_ = mesh.slot_reuse();
             mesh.set_slot_reuse(false);
+        } else if constexpr (requires { mesh.set_recycle_garbage(false); }) {
+            saved_ = mesh.does_recycle_garbage();
+            mesh.set_recycle_garbage(false);
         }
     }
     ~appending_guard() {
-        if constexpr (requires { mesh_.set_slot_reuse(false); }) mesh_.set_slot_reuse(saved_);
+        if constexpr (requires { mesh_.set_slot_reuse(false); })
+            mesh_.set_slot_reuse(saved_);
+        else if constexpr (requires { mesh_.set_recycle_garbage(false); })
+            mesh_.set_recycle_garbage(saved_);
     }
     appending_guard(const appending_guard&) = delete;
     appending_guard& operator=(const appending_guard&) = delete;
