@@ -10,7 +10,8 @@ The result is put together in three ways:
 
 * ``out=None`` on the threaded or synchronous scheduler (chunks run in this process): every
   chunk counts what it owns, the client lays out the whole result by prefix sums, and every
-  chunk then writes its vertices and triangles straight into it (``_direct``); nothing is
+  row of chunks along the last axis then writes its vertices and triangles straight into it,
+  one task per row, each sample row's share of its chunks in turn (``_direct``); nothing is
   merged.
 * ``out=None`` on other schedulers: the client gathers every chunk's keyed mesh and welds them in C++, in parallel
   (``threads=``), reading the chunks' arrays in place: a chunk's own vertices are copied
