@@ -10,7 +10,8 @@ The result is put together in three ways:
 
 * ``out=None`` on the threaded or synchronous scheduler (chunks run in this process): every
   chunk counts what it owns, the client lays out the whole result by prefix sums, and every
-  chunk then writes its vertices and triangles straight into it (``_direct``); nothing is
+  row of chunks along the last axis then writes its vertices and triangles straight into it,
+  one task per row, each sample row's share of its chunks in turn (``_direct``); nothing is
   merged.
 * ``out=None`` on other schedulers: the client gathers every chunk's keyed mesh and welds them in C++, in parallel
   (``threads=``), reading the chunks' arrays in place: a chunk's own vertices are copied
@@ -93,13 +94,23 @@ def _write_block(parts, iso, index, offset, core, whole, spacing, origin, inside
         raise ValueError(f"hmira.dask.marching_cubes: {_block_label(index, offset, core)}: {e}") from e
 
 
-def _block_tasks(darr, iso, spacing, origin, inside, func=_mesh_block, extra=(), label="hmira-marching-cubes-"):
-    """One dask.delayed per chunk, in C order of the chunk grid, each calling `func` on its chunk
-    (by default meshing it)."""
+def _write_blocks(chunks, iso, whole, spacing, origin, inside, into):
+    """Writes a row of chunks along x straight into the whole result, row by row in turn, so
+    that the task writes long runs (the direct path's second step); an error names the row."""
+    try:
+        parts = [[np.asarray(p) for _, p in c[0]] for c in chunks]
+        _core._write_blocks(parts, iso, steps=[[list(s) for s, _ in c[0]] for c in chunks], cores=[list(c[3]) for c in chunks],
+                            offsets=[list(c[2]) for c in chunks], whole=list(whole), spacing=list(spacing), origin=list(origin),
+                            inside=inside, layout=into.layout,
+                            counted=[into.counts[int(np.ravel_multi_index(c[1], into.numblocks))] for c in chunks])
+    except Exception as e:
+        first, last = chunks[0], chunks[-1]
+        raise ValueError(f"hmira.dask.marching_cubes: blocks {tuple(first[1])} to {tuple(last[1])}: {e}") from e
+
+
+def _checked(darr, iso, spacing, origin, inside):
+    """The array as a dask array, and the arguments, checked."""
     import dask.array as da
-    from dask.base import tokenize
-    from dask.delayed import Delayed
-    from dask.highlevelgraph import HighLevelGraph
 
     darr = da.asarray(darr)
     if darr.ndim != 3:
@@ -116,15 +127,16 @@ def _block_tasks(darr, iso, spacing, origin, inside, func=_mesh_block, extra=(),
         raise ValueError("hmira.dask.marching_cubes: spacing and origin need 3 values each")
     if not np.isfinite(iso):
         raise ValueError("hmira.dask.marching_cubes: the iso value must be finite")
-    # One sample of overlap on the high side of every chunk, none past the array's end: each
-    # block's task gets its chunk and one-sample slices of up to seven neighbours (a plain
-    # getitem each), and pastes them together; cheaper than dask's general overlap.
+    return darr, spacing, origin
+
+
+def _chunk_inputs(darr):
+    """For every chunk, in C order of the chunk grid: (parts, index, offset, core). The parts are
+    the chunk and one-sample slices of up to seven neighbours after it (a plain getitem each),
+    which the C++ side reads in place when they are views of one array, or pastes together:
+    cheaper than dask's general overlap."""
     starts = [np.concatenate([[0], np.cumsum(c)[:-1]]).astype(int) for c in darr.chunks]
-    # A plain task graph (one task per block reading the chunk keys directly): building it
-    # through dask.delayed costs seconds per hundred blocks.
-    name = label + tokenize(darr, iso, spacing, origin, inside, *[id(e) for e in extra])
     numblocks = darr.numblocks
-    graph = {}
     for index in np.ndindex(*numblocks):
         offset = [int(starts[a][index[a]]) for a in range(3)]
         core = [int(darr.chunks[a][index[a]]) for a in range(3)]
@@ -137,10 +149,43 @@ def _block_tasks(darr, iso, spacing, origin, inside, func=_mesh_block, extra=(),
             if any(step):
                 key = (operator.getitem, key, tuple(slice(0, 1) if s else slice(None) for s in step))
             parts.append([list(step), key])
-        graph[(name,) + index] = (func, parts, float(iso), list(index), offset, core, list(darr.shape), list(spacing),
-                                  list(origin), inside) + tuple(extra)
+        yield parts, list(index), offset, core
+
+
+def _row_tasks(darr, iso, spacing, origin, inside, into):
+    """One dask.delayed per row of chunks along x (array axis 2), each writing its chunks
+    straight into the whole result (_write_blocks)."""
+    from dask.base import tokenize
+    from dask.delayed import Delayed
+    from dask.highlevelgraph import HighLevelGraph
+
+    name = "hmira-mc-write-" + tokenize(darr, iso, spacing, origin, inside, id(into))
+    rows = {}
+    for parts, index, offset, core in _chunk_inputs(darr):
+        rows.setdefault(tuple(index[:2]), []).append([parts, index, offset, core])
+    graph = {(name,) + row: (_write_blocks, chunks, float(iso), list(darr.shape), list(spacing), list(origin), inside, into)
+             for row, chunks in rows.items()}
     hlg = HighLevelGraph.from_collections(name, graph, dependencies=[darr])
-    tasks = [Delayed((name,) + index, hlg, layer=name) for index in np.ndindex(*numblocks)]
+    return [Delayed((name,) + row, hlg, layer=name) for row in rows]
+
+
+def _block_tasks(darr, iso, spacing, origin, inside, func=_mesh_block, extra=(), label="hmira-marching-cubes-"):
+    """One dask.delayed per chunk, in C order of the chunk grid, each calling `func` on its chunk
+    (by default meshing it)."""
+    from dask.base import tokenize
+    from dask.delayed import Delayed
+    from dask.highlevelgraph import HighLevelGraph
+
+    darr, spacing, origin = _checked(darr, iso, spacing, origin, inside)
+    # A plain task graph (one task per block reading the chunk keys directly): building it
+    # through dask.delayed costs seconds per hundred blocks.
+    name = label + tokenize(darr, iso, spacing, origin, inside, *[id(e) for e in extra])
+    graph = {}
+    for parts, index, offset, core in _chunk_inputs(darr):
+        graph[(name,) + tuple(index)] = (func, parts, float(iso), index, offset, core, list(darr.shape), list(spacing),
+                                         list(origin), inside) + tuple(extra)
+    hlg = HighLevelGraph.from_collections(name, graph, dependencies=[darr])
+    tasks = [Delayed((name,) + index, hlg, layer=name) for index in np.ndindex(*darr.numblocks)]
     return darr, tasks
 
 
@@ -234,9 +279,20 @@ def _direct(darr, iso, spacing, origin, inside):
     counts = dask.compute(*tasks)
     layout = _core._layout_blocks(list(counts), whole=list(darr.shape), x_chunks=list(darr.chunks[2]))
     into = _Into(layout, counts, darr.numblocks)
-    _, tasks = _block_tasks(darr, iso, spacing, origin, inside, func=_write_block, extra=(into,), label="hmira-mc-write-")
-    dask.compute(*tasks)
+    if _ROW_TASKS:
+        # One task per row of chunks along x, writing its chunks row by row in turn: the result
+        # is in the whole grid's order, where one chunk's share of a sample row is a few dozen
+        # bytes, so chunk by chunk the writes scatter (perf: twice the in-memory writing pass).
+        dask.compute(*_row_tasks(darr, iso, spacing, origin, inside, into))
+    else:
+        _, tasks = _block_tasks(darr, iso, spacing, origin, inside, func=_write_block, extra=(into,), label="hmira-mc-write-")
+        dask.compute(*tasks)
     return _core._layout_result(layout)
+
+
+# The direct path writes a row of chunks along x per task (False: a chunk per task; the tests
+# check both give the whole-volume mesh).
+_ROW_TASKS = True
 
 
 def _shared_mask(keys, shape, chunks):

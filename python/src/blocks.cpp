@@ -71,8 +71,7 @@ using part_array = nb::ndarray<nb::ro, nb::ndim<3>, nb::device::cpu>;
 /// slices of its neighbours, in a buffer each thread keeps for its next block: no allocation
 /// (and no page faults) per block. The parts may have any strides.
 const std::byte* paste(const std::vector<part_array>& parts, const std::vector<std::array<std::size_t, 3>>& at,
-                       const std::array<std::size_t, 3>& shape, std::size_t item) {
-    thread_local std::vector<std::byte> buffer;
+                       const std::array<std::size_t, 3>& shape, std::size_t item, std::vector<std::byte>& buffer) {
     const std::size_t total = shape[0] * shape[1] * shape[2] * item;
     if (buffer.size() < total) buffer.resize(total);
     std::byte* out = buffer.data();
@@ -165,23 +164,32 @@ struct block_input {
         return base;
     }
 
+    /// The block as a grid of V: read in place, or pasted into `buffer` (which must outlive it).
+    template <class V>
+    c_block<V> grid(std::vector<std::byte>& buffer) const {
+        if (const std::byte* base = in_place(sizeof(V))) {
+            const std::array<std::size_t, 2> rows{std::size_t(parts[0].stride(1)), std::size_t(parts[0].stride(0))};
+            return {reinterpret_cast<const V*>(base), size, origin_xyz, step_xyz, rows};
+        }
+        const auto* samples = reinterpret_cast<const V*>(paste(parts, at, shape, sizeof(V), buffer));
+        return {samples, size, origin_xyz, step_xyz, {size[0], size[0] * size[1]}};
+    }
+
     /// f(grid, where, options) for the block's dtype, with the GIL released; false for a dtype
     /// hmira does not read.
     template <class F>
     bool run(const F& f) const {
-        const auto dt = parts[0].dtype();
         nb::gil_scoped_release release;
-        auto go = [&](auto tag) {
-            using V = decltype(tag);
-            if (const std::byte* base = in_place(sizeof(V))) {
-                const auto* samples = reinterpret_cast<const V*>(base);
-                const std::array<std::size_t, 2> rows{std::size_t(parts[0].stride(1)), std::size_t(parts[0].stride(0))};
-                f(c_block<V>{samples, size, origin_xyz, step_xyz, rows}, where, options);
-                return;
-            }
-            const auto* samples = reinterpret_cast<const V*>(paste(parts, at, shape, sizeof(V)));
-            f(c_block<V>{samples, size, origin_xyz, step_xyz, {size[0], size[0] * size[1]}}, where, options);
-        };
+        return for_dtype(parts[0].dtype(), [&](auto tag) {
+            // Pasted into a buffer each thread keeps for its next block.
+            thread_local std::vector<std::byte> buffer;
+            f(grid<decltype(tag)>(buffer), where, options);
+        });
+    }
+
+    /// go(V{}) for a dtype hmira reads; false for another.
+    template <class F>
+    static bool for_dtype(nb::dlpack::dtype dt, const F& go) {
         if (dt == nb::dtype<float>()) go(float{});
         else if (dt == nb::dtype<double>()) go(double{});
         else if (dt == nb::dtype<std::uint8_t>()) go(std::uint8_t{});
@@ -289,6 +297,54 @@ void write_block(const std::vector<part_array>& parts, double iso, const std::ve
     check(r);
 }
 
+/// write_block() of several chunks at once, row by row in turn (direct::write_blocks_into):
+/// given a row of chunks along x, each task writes long runs of the result.
+void write_blocks(const std::vector<std::vector<part_array>>& parts, double iso,
+                  const std::vector<std::vector<std::vector<std::size_t>>>& steps, const std::vector<std::vector<std::size_t>>& cores,
+                  const std::vector<std::vector<std::size_t>>& offsets, const std::vector<std::size_t>& whole,
+                  const std::vector<double>& spacing, const std::vector<double>& origin, const std::string& inside, layout_holder& layout,
+                  const std::vector<counts_holder*>& counted) {
+    const std::size_t n = parts.size();
+    if (n == 0 || steps.size() != n || cores.size() != n || offsets.size() != n || counted.size() != n)
+        value_error("write_blocks: needs one steps, core, offset and counts per chunk, and at least one chunk");
+    std::vector<block_input> in;
+    in.reserve(n);
+    std::vector<std::size_t> columns;
+    std::vector<hmira::grid_block> wheres;
+    std::vector<direct::block_counts*> counts;
+    const auto& xs = layout.x_starts;
+    for (std::size_t b = 0; b < n; ++b) {
+        const auto& blk = in.emplace_back(parts[b], iso, steps[b], cores[b], offsets[b], whole, spacing, origin, inside, 1);
+        if (blk.where.whole != layout.whole) value_error("write_blocks: a block's whole grid differs from the layout's");
+        if (parts[b][0].dtype() != parts[0][0].dtype()) value_error("write_blocks: the chunks differ in dtype");
+        columns.push_back(std::size_t(std::find(xs.begin(), xs.end(), blk.where.offset[0]) - xs.begin()));
+        if (columns.back() == xs.size()) value_error("write_blocks: a block is off the layout's x chunking");
+        wheres.push_back(blk.where);
+        if (!counted[b]) value_error("write_blocks: a chunk's counts are None");
+        counts.push_back(&counted[b]->counts);
+    }
+    const hmira::detail::mc::global_layout g{.vertex_start = layout.tables.vertex_start.data(),
+                                             .triangle_start = layout.tables.triangle_start.data(),
+                                             .columns = layout.tables.columns,
+                                             .positions = layout.positions.get(),
+                                             .triangles = reinterpret_cast<std::uint32_t*>(layout.triangles.get()),
+                                             .swap_xz = true};
+    hmira::result<void> r = hmira::fail(hmira::errc::invalid_argument, bad_dtype);
+    {
+        nb::gil_scoped_release release;
+        block_input::for_dtype(parts[0][0].dtype(), [&](auto tag) {
+            using V = decltype(tag);
+            std::vector<std::vector<std::byte>> buffers(n);  // for chunks that cannot be read in place
+            std::vector<c_block<V>> grids;
+            for (std::size_t b = 0; b < n; ++b) grids.push_back(in[b].template grid<V>(buffers[b]));
+            r = direct::write_blocks_into(std::span<const c_block<V>>(grids), std::span<const hmira::grid_block>(wheres),
+                                          std::span<const std::size_t>(columns), g, in[0].options,
+                                          std::span<direct::block_counts* const>(counts));
+        });
+    }
+    check(r);
+}
+
 /// The finished result of a layout: (vertices, faces), taking over its arrays.
 nb::tuple layout_result(layout_holder& layout) {
     if (!layout.positions || !layout.triangles) value_error("layout_result: the result was already taken");
@@ -389,6 +445,11 @@ void bind_blocks(nb::module_& m) {
           nb::arg("counted").none() = nb::none(),
           "Writes one chunk's share of the surface straight into a _layout_blocks result, reusing the chunk's _count_block "
           "(`counted`, whose counted rows it takes) when given; see hmira.dask.");
+    m.def("_write_blocks", &write_blocks, nb::arg("parts"), nb::arg("iso"), nb::kw_only(), nb::arg("steps"), nb::arg("cores"),
+          nb::arg("offsets"), nb::arg("whole"), nb::arg("spacing"), nb::arg("origin"), nb::arg("inside") = "below", nb::arg("layout"),
+          nb::arg("counted"),
+          "_write_block of several chunks (lists of each chunk's parts, steps, core, offset and _count_block), row by row in turn, "
+          "so that a row of chunks along x writes long runs of the result; see hmira.dask.");
     m.def("_layout_result", &layout_result, nb::arg("layout"),
           "The (vertices, faces) a _layout_blocks result holds once every chunk was written; see hmira.dask.");
     m.def("_merge_blocks", &merge_blocks, nb::arg("blocks"), nb::kw_only(), nb::arg("whole"), nb::arg("chunks"), nb::arg("threads") = 0u,

@@ -135,13 +135,50 @@ hmira::indexed_triangles<double> direct_of(const hmira::dense_grid<float>& grid,
                                                   .triangles = triangles.data(),
                                                   .swap_xz = swap};
     std::shuffle(order.begin(), order.end(), rng);
-    for (std::size_t b : order) {
-        std::vector<float> samples;
-        auto view = view_of_block(b, samples);
-        auto where = layout;
-        where.column = std::size_t(std::find(x_starts.begin(), x_starts.end(), lo[b][0]) - x_starts.begin());
-        // Half the blocks reuse their counted rows, half count again.
-        auto r = direct::write_block_into(*view, {.offset = lo[b], .whole = n}, where, o, (rng() & 1) ? &counts[b] : nullptr);
+    auto column_of = [&](std::size_t b) { return std::size_t(std::find(x_starts.begin(), x_starts.end(), lo[b][0]) - x_starts.begin()); };
+    // Block by block (write_block_into), or several at once, row by row in turn
+    // (write_blocks_into): the rows of chunks along x, or random groups of blocks.
+    const unsigned mode = rng() % 3;
+    std::vector<std::vector<std::size_t>> groups;
+    if (mode == 0) {
+        for (std::size_t b : order) {
+            std::vector<float> samples;
+            auto view = view_of_block(b, samples);
+            auto where = layout;
+            where.column = column_of(b);
+            // Half the blocks reuse their counted rows, half count again.
+            auto r = direct::write_block_into(*view, {.offset = lo[b], .whole = n}, where, o, (rng() & 1) ? &counts[b] : nullptr);
+            EXPECT_TRUE(r) << r.error().message;
+        }
+    } else if (mode == 1) {
+        const std::size_t mx = chunks[0].size();
+        groups.resize(lo.size() / mx);
+        for (std::size_t b : order) groups[b / mx].push_back(b);  // blocks are in C order, x fastest
+    } else {
+        for (std::size_t at = 0; at < order.size();) {
+            const std::size_t size = std::min<std::size_t>(order.size() - at, 1 + rng() % 6);
+            groups.emplace_back(order.begin() + std::ptrdiff_t(at), order.begin() + std::ptrdiff_t(at + size));
+            at += size;
+        }
+    }
+    for (const auto& group : groups) {
+        std::vector<std::vector<float>> samples(group.size());
+        using view_type = std::remove_cvref_t<decltype(*view_of_block(0, samples[0]))>;
+        std::vector<view_type> views;
+        std::vector<hmira::grid_block> wheres;
+        std::vector<std::size_t> columns;
+        std::vector<direct::block_counts*> counted;
+        for (std::size_t g = 0; g < group.size(); ++g) {
+            auto view = view_of_block(group[g], samples[g]);
+            EXPECT_TRUE(view);
+            views.push_back(*view);
+            wheres.push_back({.offset = lo[group[g]], .whole = n});
+            columns.push_back(column_of(group[g]));
+            counted.push_back((rng() & 1) ? &counts[group[g]] : nullptr);
+        }
+        auto r = direct::write_blocks_into(std::span<const view_type>(views), std::span<const hmira::grid_block>(wheres),
+                                           std::span<const std::size_t>(columns), layout, o,
+                                           std::span<direct::block_counts* const>(counted));
         EXPECT_TRUE(r) << r.error().message;
     }
     for (std::size_t v = 0; v < tables->vertices; ++v)

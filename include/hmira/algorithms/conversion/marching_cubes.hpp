@@ -11,6 +11,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <span>
 #include <string>
 #include <type_traits>
@@ -289,6 +290,26 @@ public:
                 const std::uint64_t counts[4] = {xcount_[r], yc, zc, all - xcount_[r] - ycount_[r] - zcount_[r]};
                 f(j, k, counts, tbase_[r + 1] - tbase_[r]);
             }
+    }
+
+    /// For writing several blocks row by row in turn (mc_direct::write_blocks_into): counts,
+    /// unless reuse_counts() gave the counts, and prepares to write into the tags' layout;
+    /// then write_layout_row(j, k) for every row writes what run() would, row by row.
+    result<void> begin_layout_write() {
+        if (!tags_ || !tags_->layout) return fail(errc::invalid_argument, "marching_cubes: no layout to write into");
+        progress_gate gate(opt_.progress, 3 * nz_);
+        if (!reuse_)
+            if (auto counted = count(gate); !counted) return counted.error();
+        layout_ = tags_->layout;
+        row_scratch_ = std::make_unique<scratch>(words_);
+        return {};
+    }
+    /// After begin_layout_write(): the owned vertices of row (j, k) and its cube row's
+    /// triangles, into the layout (j < ny, k < nz of this block).
+    void write_layout_row(std::size_t j, std::size_t k) {
+        if (j + prefetch_distance < ny_) prefetch_row(j + prefetch_distance, k);
+        write_row_vertices(j, k, no_output_);
+        if (j + 1 < ny_ && k + 1 < nz_) write_cube_row(j, k, *row_scratch_, mc::table(), no_output_);
     }
 
 private:
@@ -697,6 +718,8 @@ private:
     std::vector<std::uint64_t> bits_;
     std::vector<std::uint32_t> xcount_, ycount_, zcount_;
     std::vector<std::uint64_t> vbase_, tbase_;
+    std::unique_ptr<scratch> row_scratch_;    // write_layout_row()'s
+    indexed_triangles<double> no_output_;     // write_layout_row() writes into the layout only
 };
 
 }  // namespace detail::mc

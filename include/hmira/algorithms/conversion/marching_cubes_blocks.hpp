@@ -215,6 +215,65 @@ result<void> write_block_into(const G& block, const grid_block& where, detail::m
     return {};
 }
 
+/// Writes several blocks into `layout`'s whole result as write_block_into() does each, but
+/// row by row: for every local row (j, k), each block's share in turn. Given the blocks of one
+/// row of chunks along x (one y and z chunk, the x chunks in order), each sample row's
+/// vertices and cube row's triangles are then written in the whole grid's order while their
+/// cache lines are hot; block by block, every block writes short runs (one per row, axis and
+/// chunk column) far apart. `columns[b]` is block b's chunk along x; `counted[b]`, if not
+/// null, block b's count_block() result (its counted rows are taken, as write_block_into()
+/// takes them); `counted` may be empty. The result does not depend on the blocks' order.
+/// Complexity: that of write_block_into() on each block. Memory: every block's bit rows at once.
+/// Errors: those of write_block_into(); invalid_argument for spans of different lengths.
+/// \pre as write_block_into(), for every block.
+template <voxel_grid G>
+result<void> write_blocks_into(std::span<const G> blocks, std::span<const grid_block> wheres, std::span<const std::size_t> columns,
+                               const detail::mc::global_layout& layout, const marching_cubes_block_options& options = {},
+                               std::span<block_counts* const> counted = {}) {
+    const std::size_t n = blocks.size();
+    if (wheres.size() != n || columns.size() != n || (!counted.empty() && counted.size() != n))
+        return fail(errc::invalid_argument, "write_blocks_into: blocks, places, columns and counts differ in number");
+    std::vector<detail::mc::global_layout> layouts(n, layout);
+    std::vector<detail::mc::block_tags> tags(n);
+    std::vector<std::unique_ptr<detail::mc::extractor<G>>> ex(n);
+    const marching_cubes_options mc{.iso = options.iso, .inside = options.inside, .threads = options.threads};
+    std::size_t rows_y = 0, rows_z = 0;
+    result<void> ok;
+    detail::with_thread_count(options.threads, [&] {
+        for (std::size_t b = 0; b < n && ok; ++b) {
+            const auto& where = wheres[b];
+            const std::string who = "marching_cubes_block at (" + std::to_string(where.offset[0]) + ", " +
+                                    std::to_string(where.offset[1]) + ", " + std::to_string(where.offset[2]) + ")";
+            if (auto bad = check_block(blocks[b], where, options.iso, who); !bad.empty()) {
+                ok = fail(errc::invalid_argument, bad);
+                return;
+            }
+            const grid_dims own = owned_samples(blocks[b].dims(), where);
+            if (own[0] == 0) continue;  // owns nothing, writes nothing
+            layouts[b].column = columns[b];
+            layouts[b].own_x = own[0];
+            layouts[b].own_y = own[1];
+            layouts[b].own_z = own[2];
+            tags[b] = {where.offset, where.whole, nullptr, nullptr, &layouts[b], false};
+            ex[b] = std::make_unique<detail::mc::extractor<G>>(blocks[b], mc);
+            ex[b]->set_block(&tags[b]);
+            if (!counted.empty() && counted[b] && !counted[b]->counted.vbase.empty()) ex[b]->reuse_counts(std::move(counted[b]->counted));
+            if (auto begun = ex[b]->begin_layout_write(); !begun) {
+                ok = fail(begun.error().code, who + ": " + begun.error().message, begun.error().element);
+                return;
+            }
+            rows_y = std::max(rows_y, blocks[b].dims()[1]);
+            rows_z = std::max(rows_z, blocks[b].dims()[2]);
+        }
+        if (!ok) return;
+        for (std::size_t k = 0; k < rows_z; ++k)
+            for (std::size_t j = 0; j < rows_y; ++j)
+                for (std::size_t b = 0; b < n; ++b)
+                    if (ex[b] && j < blocks[b].dims()[1] && k < blocks[b].dims()[2]) ex[b]->write_layout_row(j, k);
+    });
+    return ok;
+}
+
 /// The tables of a global_layout, and the whole result's size.
 struct layout_tables {
     std::vector<std::uint32_t> vertex_start;    ///< see global_layout
