@@ -256,3 +256,70 @@ TEST(clean_read_fast_path, a_clean_file_reads_the_same_through_read_mesh) {
     EXPECT_TRUE(state_of(read) == state_of(built));
     EXPECT_TRUE(hmira_test::is_valid(read, unused_vertices_allowed));
 }
+
+namespace {
+
+/// The soup as a PLY file (ASCII, or binary through write_mesh of a face_vertex_mesh when the
+/// soup is one that model holds), normals included when the soup has them.
+std::string ascii_ply(const polygon_soup& s) {
+    std::ostringstream o;
+    o.precision(17);
+    const bool normals = !s.attributes.normals.empty();
+    o << "ply\nformat ascii 1.0\nelement vertex " << s.points.size() << "\nproperty double x\nproperty double y\nproperty double z\n";
+    if (normals) o << "property float nx\nproperty float ny\nproperty float nz\n";
+    o << "element face " << s.face_count() << "\nproperty list uchar int vertex_indices\nend_header\n";
+    for (std::size_t v = 0; v < s.points.size(); ++v) {
+        o << s.points[v][0] << ' ' << s.points[v][1] << ' ' << s.points[v][2];
+        if (normals) o << ' ' << s.attributes.normals[v][0] << ' ' << s.attributes.normals[v][1] << ' ' << s.attributes.normals[v][2];
+        o << '\n';
+    }
+    for (std::size_t f = 0; f < s.face_count(); ++f) {
+        o << s.face_offsets[f + 1] - s.face_offsets[f];
+        for (auto k = s.face_offsets[f]; k < s.face_offsets[f + 1]; ++k) o << ' ' << s.indices[k];
+        o << '\n';
+    }
+    return o.str();
+}
+
+}  // namespace
+
+TEST(clean_read_fast_path, ply_files_read_as_through_the_repair_path_clean_or_not) {
+    std::mt19937 rng(2026);
+    hmira_test::scratch_dir dir;
+    std::size_t clean = 0;
+    for (int round = 0; round < 200; ++round) {
+        const auto d = static_cast<defect>(round % static_cast<int>(defect::count));
+        auto soup = random_surface(rng, rng() % 2 == 0);
+        damage(soup, d, rng);
+        if (rng() % 2)
+            for (std::size_t v = 0; v < soup.points.size(); ++v) soup.attributes.normals.push_back({0.25f, static_cast<float>(v), 1.0f});
+        const hmira::io::read_options options{.repair = rng() % 4 != 0};
+        SCOPED_TRACE(::testing::Message() << "round " << round << ", defect " << static_cast<int>(d) << ", repair " << options.repair);
+        const auto file = dir / "r.ply";
+        hmira_test::write_bytes(file, ascii_ply(soup));
+        auto read = used_mesh(), built = used_mesh();
+        const auto before = state_of(read);
+        const auto got = hmira::io::read_mesh(read, file, options);
+        auto parsed = hmira::io::read_soup(file);
+        if (!parsed) {  // the parser's own refusals (a face of 2 corners) come first, either way
+            ASSERT_FALSE(got);
+            EXPECT_EQ(got.error().message, parsed.error().message);
+            EXPECT_TRUE(state_of(read) == before) << "a refused read changed the mesh";
+            continue;
+        }
+        const auto want = hmira::io::detail::build_with_repair<halfedge_mesh>(built, std::move(*parsed), file.string(), options);
+        ASSERT_EQ(got.has_value(), want.has_value());
+        if (!want) {
+            EXPECT_EQ(got.error().code, want.error().code);
+            EXPECT_EQ(got.error().message, want.error().message);
+            EXPECT_TRUE(state_of(read) == before) << "a refused read changed the mesh";
+            continue;
+        }
+        clean += want->repair.clean();
+        EXPECT_EQ(got->format, "ply (ascii)");
+        EXPECT_EQ(report_text(*got), report_text(*want));
+        EXPECT_TRUE(state_of(read) == state_of(built)) << "the PLY fast path built a different mesh";
+        EXPECT_TRUE(hmira_test::is_valid(read, unused_vertices_allowed));
+    }
+    EXPECT_GT(clean, 40u);
+}

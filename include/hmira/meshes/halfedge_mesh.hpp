@@ -344,7 +344,7 @@ public:
     /// Complexity O(V + C x valence) for C corners, linear in practice; no per-face allocation.
     static result<basic_halfedge_mesh> from_polygons(std::span<const point> points, std::span<const std::uint32_t> face_offsets,
                                                      std::span<const std::uint32_t> corners) {
-        return build_polygons(points.size(), [&](std::size_t v) { return points[v]; }, face_offsets, corners);
+        return build_polygons(points.size(), [&](std::vector<point>& out) { out.assign(points.begin(), points.end()); }, face_offsets, corners);
     }
 
     /// Replaces this mesh's elements with the indexed polygons, as from_polygons builds them
@@ -361,9 +361,9 @@ public:
                                  std::span<const std::uint32_t> corners) {
         auto built = build_polygons(
             points.size(),
-            [&](std::size_t v) {
-                const auto& p = points[v];
-                return point{static_cast<Scalar>(p[0]), static_cast<Scalar>(p[1]), static_cast<Scalar>(p[2])};
+            [&](std::vector<point>& out) {
+                out.reserve(points.size());
+                for (const auto& p : points) out.push_back(point{static_cast<Scalar>(p[0]), static_cast<Scalar>(p[1]), static_cast<Scalar>(p[2])});
             },
             face_offsets, corners);
         if (!built) return built.error();
@@ -371,10 +371,22 @@ public:
         return {};
     }
 
+    /// assign_polygons() taking the positions whole: on success they are moved into the mesh
+    /// (no copy; `positions` is left empty), on error the mesh and `positions` are unchanged.
+    template <class Offset>
+        requires(std::same_as<Offset, std::uint32_t> || std::same_as<Offset, std::uint64_t>)
+    result<void> assign_polygons(std::vector<point>& positions, std::span<const Offset> face_offsets, std::span<const std::uint32_t> corners) {
+        auto built = build_polygons(positions.size(), [&](std::vector<point>& out) { out = std::move(positions); }, face_offsets, corners);
+        if (!built) return built.error();
+        adopt_elements(std::move(*built));
+        return {};
+    }
+
 private:
-    // from_polygons' work, over any offset width and any source of positions.
-    template <class Offset, class PointAt>
-    static result<basic_halfedge_mesh> build_polygons(std::size_t nv, PointAt&& point_at, std::span<const Offset> face_offsets,
+    // from_polygons' work, over any offset width; fill_positions(positions_) runs only once
+    // every check has passed, so that a refused input is never consumed.
+    template <class Offset, class FillPositions>
+    static result<basic_halfedge_mesh> build_polygons(std::size_t nv, FillPositions&& fill_positions, std::span<const Offset> face_offsets,
                                                       std::span<const std::uint32_t> corners) {
         using u32 = std::uint32_t;
         constexpr u32 none = UINT32_MAX;
@@ -460,8 +472,6 @@ private:
                 ++e;
             }
         }
-        m.positions_.reserve(nv);
-        for (std::size_t v = 0; v < nv; ++v) m.positions_.push_back(point_at(v));
         m.vertex_out_.assign(nv, halfedge_handle{});
         m.vertex_deleted_.ensure(nv);
         m.halfedges_.resize(2 * edges);
@@ -520,6 +530,7 @@ private:
                 return fail(errc::non_manifold, "from_polygons: vertex " + std::to_string(v) + " joins two or more separate fans of faces",
                             static_cast<long long>(v));
         }
+        fill_positions(m.positions_);
         m.free_vertices_.ensure_room(nv);
         m.free_edges_.ensure_room(edges);
         m.free_faces_.ensure_room(nf);

@@ -374,6 +374,64 @@ result<read_report> build_with_repair(M& mesh, polygon_soup&& soup, const std::s
 
 }  // namespace detail
 
+namespace detail {
+
+/// A polygon soup whose positions are already a model's own points, for a parser to fill and
+/// the model to take whole (assign_polygons taking a vector), so the positions are not copied.
+template <class P>
+struct point_soup {
+    std::vector<P> points;                       ///< positions, in file order
+    std::vector<std::uint64_t> face_offsets{0};  ///< as polygon_soup::face_offsets
+    std::vector<std::uint32_t> indices;          ///< face corners
+    mesh_attributes attributes;                  ///< empty vectors, or one entry per point
+};
+
+/// A model with assign_polygons that also takes its positions whole, in double precision (so
+/// that parsing into its points stores what converting a polygon_soup would).
+template <class M, class T>
+concept assigns_own_positions =
+    assigns_polygons<M, T> && std::same_as<typename T::scalar, double> &&
+    requires(M& mesh, std::vector<typename M::point>& points, const std::vector<std::uint64_t>& offsets, const std::vector<std::uint32_t>& corners) {
+        { mesh.assign_polygons(points, std::span<const std::uint64_t>(offsets), std::span<const std::uint32_t>(corners)) } -> std::same_as<result<void>>;
+    };
+
+/// build_from_soup for such a model and such a soup: a file that needs no repair is built in
+/// one pass and keeps its parsed positions; any other goes through build_with_repair exactly
+/// as the same file parsed into a polygon_soup would.
+template <class M, class T>
+    requires assigns_own_positions<M, T> && readable_mesh<M, T> && halfedge_navigable_mesh<M, T>
+result<read_report> build_from_point_soup(M& mesh, point_soup<typename M::point>&& soup, const std::string& name, std::string format,
+                                          const read_options& options) {
+    read_report report;
+    report.file_vertices = soup.points.size();
+    report.format = std::move(format);
+    if (soup.points.size() > std::size_t{0xffffffffu})
+        return fail(errc::unsupported, name + ": " + std::to_string(soup.points.size()) + " vertices; at most 2^32 - 1 are supported");
+    const std::size_t vertex_count = soup.points.size();
+    if (auto built = mesh.assign_polygons(soup.points, std::span<const std::uint64_t>(soup.face_offsets), std::span<const std::uint32_t>(soup.indices))) {
+        std::vector<typename T::vertex_handle> vs;
+        if (!soup.attributes.normals.empty() || !soup.attributes.colors.empty()) {
+            vs.reserve(vertex_count);
+            for (std::size_t i = 0; i < vertex_count; ++i) vs.push_back(typename T::vertex_handle(static_cast<std::uint32_t>(i)));
+        }
+        store_attribute_properties<M, T>(mesh, soup.attributes, vs);
+        report.attributes = std::move(soup.attributes);
+        return report;
+    }
+    polygon_soup plain;
+    plain.points.reserve(soup.points.size());
+    for (const auto& p : soup.points) plain.points.push_back({p[0], p[1], p[2]});
+    plain.face_offsets = std::move(soup.face_offsets);
+    plain.indices = std::move(soup.indices);
+    plain.attributes = std::move(soup.attributes);
+    auto repaired = build_with_repair<M, T>(mesh, std::move(plain), name, options);
+    if (!repaired) return repaired.error();
+    repaired->format = std::move(report.format);
+    return repaired;
+}
+
+}  // namespace detail
+
 /// Fills `mesh` from a soup that a half-edge model may refuse as it is: the soup is repaired
 /// first (repair_polygon_soup, as options say), and only then is the mesh cleared (keeping its
 /// properties where the model allows, see detail::clear_for_reading) and filled, so adding a
