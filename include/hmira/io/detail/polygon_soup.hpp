@@ -435,13 +435,17 @@ result<read_report> build_from_point_soup(M& mesh, point_soup<typename M::point>
 /// Fills `mesh` from a soup that a half-edge model may refuse as it is: the soup is repaired
 /// first (repair_polygon_soup, as options say), and only then is the mesh cleared (keeping its
 /// properties where the model allows, see detail::clear_for_reading) and filled, so adding a
-/// face cannot fail halfway. Other models get the soup as it is, through assign_from_soup.
+/// face cannot fail halfway. halfedge_mesh first tries its one-pass build (assign_polygons),
+/// which takes exactly the soups the repair would leave unchanged and gives the same mesh and
+/// report; only a soup it refuses is repaired. Other models get the soup as it is, through
+/// assign_from_soup.
 /// Copies of split vertices get the attributes of their file vertex. `name` prefixes errors.
 /// \post on success, the mesh's vertex i < soup.points.size() is soup point i and the report
 ///       says what was repaired and where each created element came from; on error the mesh
 ///       is unchanged.
 /// Complexity: O(C log d + V) for the repair (see repair_polygon_soup) plus O(V + C) mesh
-/// insertions.
+/// insertions; for a soup halfedge_mesh builds in one pass, O(V + C x valence) (see
+/// from_polygons), then the repair's cost on top only if that build refuses it.
 template <class M, class T = default_traits<M>>
     requires readable_mesh<M, T>
 result<read_report> build_from_soup(M& mesh, polygon_soup&& soup, const std::string& name, const read_options& options = {}) {
