@@ -599,7 +599,7 @@ inline const char* to_string(ply_encoding e) {
 
 /// Reads a PLY file into `mesh`, replacing its content; on error the mesh is unchanged. A model
 /// that takes its arrays whole (face_vertex_mesh) gets the file parsed straight into them: one
-/// validation pass, no copy. Complexity: O(bytes + mesh insertions).
+/// validation pass, no copy; halfedge_mesh gets its positions so, when the file needs no repair. Complexity: O(bytes + mesh insertions).
 template <class M, class T = default_traits<M>>
     requires readable_mesh<M, T>
 result<read_report> read_ply(M& mesh, const std::filesystem::path& path, const read_options& options = {}) {
@@ -614,6 +614,12 @@ result<read_report> read_ply(M& mesh, const std::filesystem::path& path, const r
         detail::mesh_soup<M, T> soup;
         if (auto r = detail::parse_ply_into(soup, *h, file->text(), path.string(), options); !r) return r.error();
         return detail::assign_own_arrays<M, T>(mesh, std::move(soup), path.string(), format);
+    } else if constexpr (detail::assigns_own_positions<M, T>) {
+        // halfedge_mesh: positions parsed into the mesh's own points, kept whole when the file
+        // needs no repair (issue 20).
+        detail::point_soup<typename M::point> soup;
+        if (auto r = detail::parse_ply_into(soup, *h, file->text(), path.string(), options); !r) return r.error();
+        return detail::build_from_point_soup<M, T>(mesh, std::move(soup), path.string(), format, options);
     }
     auto soup = parse_ply(file->text(), path.string(), options);
     if (!soup) return soup.error();

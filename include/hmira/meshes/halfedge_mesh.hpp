@@ -5,6 +5,8 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
+#include <concepts>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -342,22 +344,69 @@ public:
     /// Complexity O(V + C x valence) for C corners, linear in practice; no per-face allocation.
     static result<basic_halfedge_mesh> from_polygons(std::span<const point> points, std::span<const std::uint32_t> face_offsets,
                                                      std::span<const std::uint32_t> corners) {
+        return build_polygons(points.size(), [&](std::vector<point>& out) { out.assign(points.begin(), points.end()); }, face_offsets, corners);
+    }
+
+    /// Replaces this mesh's elements with the indexed polygons, as from_polygons builds them
+    /// (the same checks, errors and numbering; position i is points[i] converted to Scalar),
+    /// keeping what clear_elements keeps: the named properties (sized to the new elements, at
+    /// their defaults) and the slot_reuse() setting. On error the mesh is unchanged. The result
+    /// is the mesh that clear_elements() followed by add_face of every face in order would give,
+    /// for every input both accept (vertex_halfedge included: the boundary one, else the one
+    /// leaving the vertex's corner in its last face): what read_mesh uses for a file that needs
+    /// no repair. Offsets may be 32- or 64-bit. Complexity as from_polygons.
+    template <class Offset>
+        requires(std::same_as<Offset, std::uint32_t> || std::same_as<Offset, std::uint64_t>)
+    result<void> assign_polygons(std::span<const std::array<double, 3>> points, std::span<const Offset> face_offsets,
+                                 std::span<const std::uint32_t> corners) {
+        auto built = build_polygons(
+            points.size(),
+            [&](std::vector<point>& out) {
+                out.reserve(points.size());
+                for (const auto& p : points) out.push_back(point{static_cast<Scalar>(p[0]), static_cast<Scalar>(p[1]), static_cast<Scalar>(p[2])});
+            },
+            face_offsets, corners);
+        if (!built) return built.error();
+        adopt_elements(std::move(*built));
+        return {};
+    }
+
+    /// assign_polygons() taking the positions whole: on success they are moved into the mesh
+    /// (no copy; `positions` is left empty), on error the mesh and `positions` are unchanged.
+    template <class Offset>
+        requires(std::same_as<Offset, std::uint32_t> || std::same_as<Offset, std::uint64_t>)
+    result<void> assign_polygons(std::vector<point>& positions, std::span<const Offset> face_offsets, std::span<const std::uint32_t> corners) {
+        auto built = build_polygons(positions.size(), [&](std::vector<point>& out) { out = std::move(positions); }, face_offsets, corners);
+        if (!built) return built.error();
+        adopt_elements(std::move(*built));
+        return {};
+    }
+
+private:
+    // from_polygons' work, over any offset width; fill_positions(positions_) runs only once
+    // every check has passed, so that a refused input is never consumed.
+    template <class Offset, class FillPositions>
+    static result<basic_halfedge_mesh> build_polygons(std::size_t nv, FillPositions&& fill_positions, std::span<const Offset> face_offsets,
+                                                      std::span<const std::uint32_t> corners) {
         using u32 = std::uint32_t;
         constexpr u32 none = UINT32_MAX;
-        const std::size_t nv = points.size();
         const std::size_t nf = face_offsets.empty() ? 0 : face_offsets.size() - 1;
         const std::size_t nc = corners.size();
         if ((nf == 0 && nc != 0) || (nf > 0 && (face_offsets[0] != 0 || face_offsets[nf] != nc)))
             return fail(errc::invalid_argument, "from_polygons: face_offsets must start at 0 and end at corners.size()");
         if (nc >= none / 2 || nv >= none)
             return fail(errc::invalid_argument, "from_polygons: too many elements for 32-bit indices");
+        if (nf >= none) return fail(errc::invalid_argument, "from_polygons: too many elements for 32-bit indices");
 
         // Corners counted by source vertex; a corner's target is the next corner's vertex, read
         // from the face when needed rather than stored (less memory to fault in).
         std::vector<u32> stamp(nv, none), out_begin(nv + 1, 0);
         for (std::size_t f = 0; f < nf; ++f) {
-            const u32 b = face_offsets[f], e = face_offsets[f + 1];
-            if (e < b) return fail(errc::invalid_argument, "from_polygons: face_offsets decrease at face " + std::to_string(f), static_cast<long long>(f));
+            // An offset past the end is refused before any corner is read (a decrease is caught
+            // one face later, too late for a face that runs past the end).
+            if (face_offsets[f + 1] < face_offsets[f] || face_offsets[f + 1] > nc)
+                return fail(errc::invalid_argument, "from_polygons: face_offsets decrease at face " + std::to_string(f), static_cast<long long>(f));
+            const u32 b = static_cast<u32>(face_offsets[f]), e = static_cast<u32>(face_offsets[f + 1]);
             if (e - b < 3)
                 return fail(errc::degenerate_face, "from_polygons: face " + std::to_string(f) + " has fewer than 3 vertices", static_cast<long long>(f));
             for (u32 k = b; k < e; ++k) {
@@ -377,7 +426,7 @@ public:
         // search below scans contiguous memory.
         std::vector<u32> out(nc), out_target(nc);
         for (std::size_t f = 0; f < nf; ++f) {
-            const u32 b = face_offsets[f], e = face_offsets[f + 1];
+            const u32 b = static_cast<u32>(face_offsets[f]), e = static_cast<u32>(face_offsets[f + 1]);
             for (u32 k = b; k < e; ++k) {
                 const u32 i = out_begin[corners[k]]++;  // out_begin[v] runs to the end of v's row
                 out[i] = k;
@@ -423,7 +472,6 @@ public:
                 ++e;
             }
         }
-        m.positions_.assign(points.begin(), points.end());
         m.vertex_out_.assign(nv, halfedge_handle{});
         m.vertex_deleted_.ensure(nv);
         m.halfedges_.resize(2 * edges);
@@ -432,7 +480,7 @@ public:
         m.face_deleted_.ensure(nf);
         std::fill(stamp.begin(), stamp.end(), none);  // now: the boundary halfedge leaving each vertex
         for (std::size_t f = 0; f < nf; ++f) {
-            const u32 b = face_offsets[f], e = face_offsets[f + 1];
+            const u32 b = static_cast<u32>(face_offsets[f]), e = static_cast<u32>(face_offsets[f + 1]);
             const face_handle fh(static_cast<u32>(f));
             for (u32 k = b; k < e; ++k) {
                 const u32 h = corner_h[k];
@@ -482,6 +530,7 @@ public:
                 return fail(errc::non_manifold, "from_polygons: vertex " + std::to_string(v) + " joins two or more separate fans of faces",
                             static_cast<long long>(v));
         }
+        fill_positions(m.positions_);
         m.free_vertices_.ensure_room(nv);
         m.free_edges_.ensure_room(edges);
         m.free_faces_.ensure_room(nf);
@@ -492,6 +541,34 @@ public:
         m.changes_ = 1;
         return m;
     }
+
+    // Takes over a built mesh's elements, keeping this mesh's properties (emptied, then sized to
+    // the new elements at their defaults) and slot-reuse setting, as clear_elements then add_*.
+    void adopt_elements(basic_halfedge_mesh&& built) {
+        auto vertex_props = std::move(vertex_props_);
+        auto edge_props = std::move(edge_props_);
+        auto halfedge_props = std::move(halfedge_props_);
+        auto face_props = std::move(face_props_);
+        const auto changes = changes_;
+        const bool reuse = reuse_slots_;
+        *this = std::move(built);
+        reuse_slots_ = reuse;
+        vertex_props_ = std::move(vertex_props);
+        vertex_props_.resize(0);
+        vertex_props_.resize(positions_.size());
+        edge_props_ = std::move(edge_props);
+        edge_props_.resize(0);
+        edge_props_.resize(halfedges_.size() / 2);
+        halfedge_props_ = std::move(halfedge_props);
+        halfedge_props_.resize(0);
+        halfedge_props_.resize(halfedges_.size());
+        face_props_ = std::move(face_props);
+        face_props_.resize(0);
+        face_props_.resize(faces_.size());
+        changes_ = changes + 2;
+    }
+
+public:
 
     // ----- raw mutation (the layer Euler operators use; keeps nothing consistent) ------------------
     /// Raw setters, O(1): next (and the next's prev), target, face, a vertex's outgoing and a

@@ -284,40 +284,31 @@ inline std::pair<long long, std::string> first_repair(const soup_repair_report& 
 
 }  // namespace detail
 
-/// Fills `mesh` from a soup that a half-edge model may refuse as it is: the soup is repaired
-/// first (repair_polygon_soup, as options say), and only then is the mesh cleared (keeping its
-/// properties where the model allows, see detail::clear_for_reading) and filled, so adding a
-/// face cannot fail halfway. Other models get the soup as it is, through assign_from_soup.
-/// Copies of split vertices get the attributes of their file vertex. `name` prefixes errors.
-/// \post on success, the mesh's vertex i < soup.points.size() is soup point i and the report
-///       says what was repaired and where each created element came from; on error the mesh
-///       is unchanged.
-/// Complexity: O(C log d + V) for the repair (see repair_polygon_soup) plus O(V + C) mesh
-/// insertions.
+namespace detail {
+
+/// A model that builds a whole mesh from indexed polygons, refusing (unchanged) anything its
+/// add_face would refuse or that would leave a non-manifold vertex, and that otherwise gives
+/// the mesh that emptying it and calling add_face on every face in order gives
+/// (halfedge_mesh's assign_polygons).
+template <class M, class T>
+concept assigns_polygons = std::same_as<T, default_traits<M>> && requires(M& mesh, const polygon_soup& soup) {
+    {
+        mesh.assign_polygons(std::span<const std::array<double, 3>>(soup.points), std::span<const std::uint64_t>(soup.face_offsets),
+                             std::span<const std::uint32_t>(soup.indices))
+    } -> std::same_as<result<void>>;
+};
+
+/// build_from_soup for a half-edge model through repair_polygon_soup, whatever the soup: the
+/// path every file took before the clean-file fast path, and the one a file that needs repair
+/// still takes. Kept callable so that tests can compare the two.
 template <class M, class T = default_traits<M>>
-    requires readable_mesh<M, T>
-result<read_report> build_from_soup(M& mesh, polygon_soup&& soup, const std::string& name, const read_options& options = {}) {
+    requires readable_mesh<M, T> && halfedge_navigable_mesh<M, T>
+result<read_report> build_with_repair(M& mesh, polygon_soup&& soup, const std::string& name, const read_options& options = {}) {
     read_report report;
     report.file_vertices = soup.points.size();
     if (soup.points.size() > std::size_t{0xffffffffu})
         return fail(errc::unsupported, name + ": " + std::to_string(soup.points.size()) + " vertices; at most 2^32 - 1 are supported");
-    if constexpr (detail::takes_indexed_polygons<M, T>) {
-        auto origin = [&](std::size_t) { return name; };
-        std::vector<std::size_t> offsets;
-        if constexpr (std::same_as<std::size_t, std::uint64_t>)
-            offsets = std::move(soup.face_offsets);  // the soup's offsets become the mesh's
-        else
-            offsets.assign(soup.face_offsets.begin(), soup.face_offsets.end());
-        auto r = detail::assign_indexed_polygons<M, T>(mesh, soup, std::move(offsets), origin);
-        if (!r) return r.error();
-        report.attributes = std::move(soup.attributes);
-        return report;
-    } else if constexpr (!halfedge_navigable_mesh<M, T>) {
-        auto r = assign_from_soup<M, T>(mesh, soup, [&](std::size_t) { return name; });
-        if (!r) return r.error();
-        report.attributes = std::move(soup.attributes);
-        return report;
-    } else {
+    {
         using VH = typename T::vertex_handle;
         using S = typename T::scalar;
         auto repaired = repair_polygon_soup(soup.points.size(), soup.face_offsets, soup.indices, {.nonmanifold_edges = options.nonmanifold_edges});
@@ -378,6 +369,126 @@ result<read_report> build_from_soup(M& mesh, polygon_soup&& soup, const std::str
         if (repaired->face_count() != soup.face_count()) report.face_source = std::move(repaired->face_source);
         report.repair = std::move(repaired->report);
         return report;
+    }
+}
+
+}  // namespace detail
+
+namespace detail {
+
+/// A polygon soup whose positions are already a model's own points, for a parser to fill and
+/// the model to take whole (assign_polygons taking a vector), so the positions are not copied.
+template <class P>
+struct point_soup {
+    std::vector<P> points;                       ///< positions, in file order
+    std::vector<std::uint64_t> face_offsets{0};  ///< as polygon_soup::face_offsets
+    std::vector<std::uint32_t> indices;          ///< face corners
+    mesh_attributes attributes;                  ///< empty vectors, or one entry per point
+};
+
+/// A model with assign_polygons that also takes its positions whole, in double precision (so
+/// that parsing into its points stores what converting a polygon_soup would).
+template <class M, class T>
+concept assigns_own_positions =
+    assigns_polygons<M, T> && std::same_as<typename T::scalar, double> &&
+    requires(M& mesh, std::vector<typename M::point>& points, const std::vector<std::uint64_t>& offsets, const std::vector<std::uint32_t>& corners) {
+        { mesh.assign_polygons(points, std::span<const std::uint64_t>(offsets), std::span<const std::uint32_t>(corners)) } -> std::same_as<result<void>>;
+    };
+
+/// build_from_soup for such a model and such a soup: a file that needs no repair is built in
+/// one pass and keeps its parsed positions; any other goes through build_with_repair exactly
+/// as the same file parsed into a polygon_soup would.
+template <class M, class T>
+    requires assigns_own_positions<M, T> && readable_mesh<M, T> && halfedge_navigable_mesh<M, T>
+result<read_report> build_from_point_soup(M& mesh, point_soup<typename M::point>&& soup, const std::string& name, std::string format,
+                                          const read_options& options) {
+    read_report report;
+    report.file_vertices = soup.points.size();
+    report.format = std::move(format);
+    if (soup.points.size() > std::size_t{0xffffffffu})
+        return fail(errc::unsupported, name + ": " + std::to_string(soup.points.size()) + " vertices; at most 2^32 - 1 are supported");
+    const std::size_t vertex_count = soup.points.size();
+    if (auto built = mesh.assign_polygons(soup.points, std::span<const std::uint64_t>(soup.face_offsets), std::span<const std::uint32_t>(soup.indices))) {
+        std::vector<typename T::vertex_handle> vs;
+        if (!soup.attributes.normals.empty() || !soup.attributes.colors.empty()) {
+            vs.reserve(vertex_count);
+            for (std::size_t i = 0; i < vertex_count; ++i) vs.push_back(typename T::vertex_handle(static_cast<std::uint32_t>(i)));
+        }
+        store_attribute_properties<M, T>(mesh, soup.attributes, vs);
+        report.attributes = std::move(soup.attributes);
+        return report;
+    }
+    polygon_soup plain;
+    plain.points.reserve(soup.points.size());
+    for (const auto& p : soup.points) plain.points.push_back({p[0], p[1], p[2]});
+    plain.face_offsets = std::move(soup.face_offsets);
+    plain.indices = std::move(soup.indices);
+    plain.attributes = std::move(soup.attributes);
+    auto repaired = build_with_repair<M, T>(mesh, std::move(plain), name, options);
+    if (!repaired) return repaired.error();
+    repaired->format = std::move(report.format);
+    return repaired;
+}
+
+}  // namespace detail
+
+/// Fills `mesh` from a soup that a half-edge model may refuse as it is: the soup is repaired
+/// first (repair_polygon_soup, as options say), and only then is the mesh cleared (keeping its
+/// properties where the model allows, see detail::clear_for_reading) and filled, so adding a
+/// face cannot fail halfway. halfedge_mesh first tries its one-pass build (assign_polygons),
+/// which takes exactly the soups the repair would leave unchanged and gives the same mesh and
+/// report; only a soup it refuses is repaired. Other models get the soup as it is, through
+/// assign_from_soup.
+/// Copies of split vertices get the attributes of their file vertex. `name` prefixes errors.
+/// \post on success, the mesh's vertex i < soup.points.size() is soup point i and the report
+///       says what was repaired and where each created element came from; on error the mesh
+///       is unchanged.
+/// Complexity: O(C log d + V) for the repair (see repair_polygon_soup) plus O(V + C) mesh
+/// insertions; for a soup halfedge_mesh builds in one pass, O(V + C x valence) (see
+/// from_polygons), then the repair's cost on top only if that build refuses it.
+template <class M, class T = default_traits<M>>
+    requires readable_mesh<M, T>
+result<read_report> build_from_soup(M& mesh, polygon_soup&& soup, const std::string& name, const read_options& options = {}) {
+    read_report report;
+    report.file_vertices = soup.points.size();
+    if (soup.points.size() > std::size_t{0xffffffffu})
+        return fail(errc::unsupported, name + ": " + std::to_string(soup.points.size()) + " vertices; at most 2^32 - 1 are supported");
+    if constexpr (detail::takes_indexed_polygons<M, T>) {
+        auto origin = [&](std::size_t) { return name; };
+        std::vector<std::size_t> offsets;
+        if constexpr (std::same_as<std::size_t, std::uint64_t>)
+            offsets = std::move(soup.face_offsets);  // the soup's offsets become the mesh's
+        else
+            offsets.assign(soup.face_offsets.begin(), soup.face_offsets.end());
+        auto r = detail::assign_indexed_polygons<M, T>(mesh, soup, std::move(offsets), origin);
+        if (!r) return r.error();
+        report.attributes = std::move(soup.attributes);
+        return report;
+    } else if constexpr (!halfedge_navigable_mesh<M, T>) {
+        auto r = assign_from_soup<M, T>(mesh, soup, [&](std::size_t) { return name; });
+        if (!r) return r.error();
+        report.attributes = std::move(soup.attributes);
+        return report;
+    } else {
+        // A file that needs no repair is built in one pass. The bulk build refuses exactly what
+        // makes repair_polygon_soup change something (fewer than 3 or repeated corners, an edge
+        // with more than two faces or two running it the same way, a vertex with several fans),
+        // and for the rest gives the very mesh the repair path's add_face calls give (and a clean
+        // report): tests/io/clean_read_fast_path_test.cpp checks both on random soups.
+        if constexpr (detail::assigns_polygons<M, T>) {
+            if (auto built = mesh.assign_polygons(std::span<const std::array<double, 3>>(soup.points), std::span<const std::uint64_t>(soup.face_offsets),
+                                                  std::span<const std::uint32_t>(soup.indices))) {
+                std::vector<typename T::vertex_handle> vs;
+                if (!soup.attributes.normals.empty() || !soup.attributes.colors.empty()) {
+                    vs.reserve(soup.points.size());
+                    for (std::size_t i = 0; i < soup.points.size(); ++i) vs.push_back(typename T::vertex_handle(static_cast<std::uint32_t>(i)));
+                }
+                detail::store_attribute_properties<M, T>(mesh, soup.attributes, vs);
+                report.attributes = std::move(soup.attributes);
+                return report;
+            }
+        }
+        return detail::build_with_repair<M, T>(mesh, std::move(soup), name, options);
     }
 }
 
