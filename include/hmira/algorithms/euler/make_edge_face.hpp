@@ -47,31 +47,44 @@ template <class M, class T = default_traits<M>>
     requires euler_mutable_mesh<M, T>
 result<make_edge_face_result<M, T>> make_edge_face(M& mesh, typename T::halfedge_handle h0, typename T::halfedge_handle h1) {
     namespace de = detail::euler;
-    if (!de::usable<M, T>(mesh, h0) || !de::usable<M, T>(mesh, h1))
-        return fail(errc::invalid_handle, "make_edge_face: corner " + de::name<M, T>("halfedge", mesh, de::usable<M, T>(mesh, h0) ? h1 : h0) + " does not exist",
-                    de::index_of<M, T>(mesh, de::usable<M, T>(mesh, h0) ? h1 : h0));
+    if (!de::usable<M, T>(mesh, h0) || !de::usable<M, T>(mesh, h1)) [[unlikely]]
+        return de::refuse([&] {
+            const auto bad = de::usable<M, T>(mesh, h0) ? h1 : h0;
+            return fail(errc::invalid_handle, "make_edge_face: corner " + de::name<M, T>("halfedge", mesh, bad) + " does not exist",
+                        de::index_of<M, T>(mesh, bad));
+        });
     const auto f = T::face(mesh, h0);
-    if (T::face(mesh, h1) != f)
-        return fail(errc::topology,
-                    "make_edge_face: the corners lie on different faces (" + de::name<M, T>("face", mesh, f) + " and " +
-                        de::name<M, T>("face", mesh, T::face(mesh, h1)) + "); a new edge and face need two corners of one face",
-                    de::index_of<M, T>(mesh, h1));
-    const auto s = T::target(mesh, h0), t = T::target(mesh, h1);
-    if (s == t)
-        return fail(errc::topology, "make_edge_face: both corners are at " + de::name<M, T>("vertex", mesh, s) + "; the new edge would be a loop",
-                    de::index_of<M, T>(mesh, s));
-    // The part that becomes the new face runs from next(h0) to h1; finding h1 there proves
-    // both corners are on one loop.
-    for (auto x = T::next(mesh, h0);; x = T::next(mesh, x)) {
-        if (x == h1) break;
-        if (x == h0)
+    if (T::face(mesh, h1) != f) [[unlikely]]
+        return de::refuse([&] {
             return fail(errc::topology,
-                        "make_edge_face: the corners lie on different loops of " + de::name<M, T>("face", mesh, f) +
-                            " (an inner ring and another loop); joining two loops is make_edge_kill_ring",
-                        de::index_of<M, T>(mesh, f));
+                        "make_edge_face: the corners lie on different faces (" + de::name<M, T>("face", mesh, f) + " and " +
+                            de::name<M, T>("face", mesh, T::face(mesh, h1)) + "); a new edge and face need two corners of one face",
+                        de::index_of<M, T>(mesh, h1));
+        });
+    const auto s = T::target(mesh, h0), t = T::target(mesh, h1);
+    if (s == t) [[unlikely]]
+        return de::refuse([&] {
+            return fail(errc::topology, "make_edge_face: both corners are at " + de::name<M, T>("vertex", mesh, s) + "; the new edge would be a loop",
+                        de::index_of<M, T>(mesh, s));
+        });
+    const auto n0 = T::next(mesh, h0), n1 = T::next(mesh, h1);
+    // A face without inner rings has one loop, so two corners on it are on one loop. Only a
+    // boundary (one null face, many loops) or a face with rings needs the walk: the part that
+    // becomes the new face runs from next(h0) to h1, and finding h1 there proves both corners
+    // are on one loop.
+    if (f == T::null_face() || de::has_rings<M, T>(mesh, f)) {
+        for (auto x = n0;; x = T::next(mesh, x)) {
+            if (x == h1) break;
+            if (x == h0) [[unlikely]]
+                return de::refuse([&] {
+                    return fail(errc::topology,
+                                "make_edge_face: the corners lie on different loops of " + de::name<M, T>("face", mesh, f) +
+                                    " (an inner ring and another loop); joining two loops is make_edge_kill_ring",
+                                de::index_of<M, T>(mesh, f));
+                });
+        }
     }
 
-    const auto n0 = T::next(mesh, h0), n1 = T::next(mesh, h1);
     const auto a = T::new_edge(mesh, s, t);
     const auto b = T::opposite(mesh, a);
     const auto g = T::new_face(mesh);
@@ -80,28 +93,32 @@ result<make_edge_face_result<M, T>> make_edge_face(M& mesh, typename T::halfedge
     T::set_next(mesh, h1, b);
     T::set_next(mesh, b, n0);
     T::set_face(mesh, a, f);
-    auto x = b;
-    do {
-        T::set_face(mesh, x, g);
-        x = T::next(mesh, x);
-    } while (x != b);
+    T::set_face(mesh, b, g);
     T::set_face_halfedge(mesh, g, b);
 
     if (f != T::null_face()) {
-        // Whatever the old face stored on the part that left must move back onto its side.
-        if (T::face(mesh, T::face_halfedge(mesh, f)) == g) T::set_face_halfedge(mesh, f, a);
+        // Whatever the old face stored on the part that left must move back onto its side:
+        // compared while the part is re-pointed, which costs no extra read of the loop.
+        const auto stored = T::face_halfedge(mesh, f);
+        bool moved = false;
+        for (auto x = n0; x != b; x = T::next(mesh, x)) {
+            T::set_face(mesh, x, g);
+            moved |= x == stored;
+        }
+        if (moved) T::set_face_halfedge(mesh, f, a);
         if constexpr (inner_ring_mutable_mesh<M, T>) {
             if (de::has_rings<M, T>(mesh, f)) {
-                typename T::halfedge_handle moved = T::null_halfedge();
+                typename T::halfedge_handle ring = T::null_halfedge();
                 for (auto r : T::inner_rings(mesh, f))
-                    if (T::face(mesh, r) == g) { moved = r; break; }
-                if (moved != T::null_halfedge()) de::replace_ring_halfedge<M, T>(mesh, f, moved, a);
+                    if (T::face(mesh, r) == g) { ring = r; break; }
+                if (ring != T::null_halfedge()) de::replace_ring_halfedge<M, T>(mesh, f, ring, a);
             }
         }
     } else {
+        for (auto x = n0; x != b; x = T::next(mesh, x)) T::set_face(mesh, x, g);
         // Closing part of a boundary loop: vertices there may have stored a halfedge that is
         // no longer boundary, yet still be on the boundary (through the other part).
-        x = b;
+        auto x = b;
         do {
             de::prefer_boundary_halfedge<M, T>(mesh, T::target(mesh, x));
             x = T::next(mesh, x);
@@ -127,29 +144,37 @@ template <class M, class T = default_traits<M>>
 result<kill_edge_face_result<M, T>> kill_edge_face(M& mesh, typename T::halfedge_handle halfedge) {
     namespace de = detail::euler;
     const auto h = halfedge;
-    if (!de::usable<M, T>(mesh, h))
-        return fail(errc::invalid_handle, "kill_edge_face: " + de::name<M, T>("halfedge", mesh, h) + " does not exist",
-                    de::index_of<M, T>(mesh, h));
+    if (!de::usable<M, T>(mesh, h)) [[unlikely]]
+        return de::refuse([&] {
+            return fail(errc::invalid_handle, "kill_edge_face: " + de::name<M, T>("halfedge", mesh, h) + " does not exist",
+                        de::index_of<M, T>(mesh, h));
+        });
     const auto o = T::opposite(mesh, h);
     const auto f = T::face(mesh, h), g = T::face(mesh, o);
-    if (g == T::null_face())
-        return fail(errc::topology,
-                    "kill_edge_face: " + de::name<M, T>("halfedge", mesh, h) +
-                        " has no face on its other side (a boundary or wire edge), so there is no face to kill",
-                    de::index_of<M, T>(mesh, h));
-    if (f == g)
-        return fail(errc::topology,
-                    "kill_edge_face: both sides of the edge lie on " + de::name<M, T>("face", mesh, f) +
-                        " (a bridge); removing it would split a loop: use kill_edge_make_ring",
-                    de::index_of<M, T>(mesh, h));
+    if (g == T::null_face()) [[unlikely]]
+        return de::refuse([&] {
+            return fail(errc::topology,
+                        "kill_edge_face: " + de::name<M, T>("halfedge", mesh, h) +
+                            " has no face on its other side (a boundary or wire edge), so there is no face to kill",
+                        de::index_of<M, T>(mesh, h));
+        });
+    if (f == g) [[unlikely]]
+        return de::refuse([&] {
+            return fail(errc::topology,
+                        "kill_edge_face: both sides of the edge lie on " + de::name<M, T>("face", mesh, f) +
+                            " (a bridge); removing it would split a loop: use kill_edge_make_ring",
+                        de::index_of<M, T>(mesh, h));
+        });
     // Moving the rings to the surviving face would not be undone by make_edge_face (which
     // leaves rings with the old face), so the operator refuses instead: kill_edge_face is then
     // exactly inverted by make_edge_face.
-    if (de::has_rings<M, T>(mesh, g))
-        return fail(errc::topology,
-                    "kill_edge_face: " + de::name<M, T>("face", mesh, g) +
-                        " has inner rings; make them faces (make_face_kill_ring) or join them (make_edge_kill_ring) first",
-                    de::index_of<M, T>(mesh, g));
+    if (de::has_rings<M, T>(mesh, g)) [[unlikely]]
+        return de::refuse([&] {
+            return fail(errc::topology,
+                        "kill_edge_face: " + de::name<M, T>("face", mesh, g) +
+                            " has inner rings; make them faces (make_face_kill_ring) or join them (make_edge_kill_ring) first",
+                        de::index_of<M, T>(mesh, g));
+        });
 
     const auto hp = T::prev(mesh, h), hn = T::next(mesh, h);
     const auto op = T::prev(mesh, o), on = T::next(mesh, o);
