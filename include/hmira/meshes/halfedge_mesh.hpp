@@ -544,14 +544,19 @@ private:
 
     // Takes over a built mesh's elements, keeping this mesh's properties (emptied, then sized to
     // the new elements at their defaults) and slot-reuse setting, as clear_elements then add_*.
-    void adopt_elements(basic_halfedge_mesh&& built) {
+    void adopt_elements(basic_halfedge_mesh&& built) { replace_elements(std::move(built), 2); }
+
+    // What clear_elements and adopt_elements share: `next`'s elements replace this mesh's; the
+    // named properties are emptied (their defaults kept) and sized to the new elements; the
+    // slot-reuse setting stays; the change count grows by `change_step`.
+    void replace_elements(basic_halfedge_mesh&& next, std::uint64_t change_step) {
         auto vertex_props = std::move(vertex_props_);
         auto edge_props = std::move(edge_props_);
         auto halfedge_props = std::move(halfedge_props_);
         auto face_props = std::move(face_props_);
         const auto changes = changes_;
         const bool reuse = reuse_slots_;
-        *this = std::move(built);
+        *this = std::move(next);
         reuse_slots_ = reuse;
         vertex_props_ = std::move(vertex_props);
         vertex_props_.resize(0);
@@ -565,7 +570,7 @@ private:
         face_props_ = std::move(face_props);
         face_props_.resize(0);
         face_props_.resize(faces_.size());
-        changes_ = changes + 2;
+        changes_ = changes + change_step;
     }
 
 public:
@@ -762,25 +767,7 @@ public:
     /// is kept too. The change count keeps
     /// growing, so an index built before sees that it is stale. Invalidates all handles. O(1)
     /// besides freeing the storage.
-    void clear_elements() {
-        auto vertex_props = std::move(vertex_props_);
-        auto edge_props = std::move(edge_props_);
-        auto halfedge_props = std::move(halfedge_props_);
-        auto face_props = std::move(face_props_);
-        const auto changes = changes_;
-        const bool reuse = reuse_slots_;
-        *this = basic_halfedge_mesh();
-        reuse_slots_ = reuse;
-        vertex_props_ = std::move(vertex_props);
-        vertex_props_.resize(0);
-        edge_props_ = std::move(edge_props);
-        edge_props_.resize(0);
-        halfedge_props_ = std::move(halfedge_props);
-        halfedge_props_.resize(0);
-        face_props_ = std::move(face_props);
-        face_props_.resize(0);
-        changes_ = changes + 1;
-    }
+    void clear_elements() { replace_elements(basic_halfedge_mesh(), 1); }
 
     /// Grows on every change of connectivity or of the element set.
     std::uint64_t change_count() const noexcept { return changes_; }
