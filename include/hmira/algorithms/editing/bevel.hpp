@@ -43,8 +43,10 @@ struct bevel_options {
     /// With clamp_overlap: shrink the width uniformly for the whole call to the smallest local
     /// limit instead (every strip equally wide, as before the local clamp).
     bool clamp_globally = false;
-    /// Called every 1024 bevelled edges, from the calling thread; returning false cancels: the
-    /// mesh is rolled back and the error (errc::unsupported) ends in "cancelled".
+    /// Called every 1024 elements stepped through (selected edges, touched vertices and corners
+    /// while planning; new points, strips and replaced vertices while building), from the
+    /// calling thread; returning false cancels: the mesh is rolled back (or, while planning,
+    /// never touched) and the error (errc::unsupported) ends in "cancelled".
     progress_function progress = {};
 };
 
@@ -114,9 +116,9 @@ struct bevel_plan {
 };
 
 /// Builds the bevel planned in `plan` (see bevel()). Run inside a transaction (T journaled);
-/// an inner failure is passed on.
+/// an inner failure, or a cancel through `progress`, is passed on.
 template <class M, class T, class Plan, class Out>
-result<void> bevel_build(M& mesh, const Plan& plan, Out& out, const progress_function& report) {
+result<void> bevel_build(M& mesh, const Plan& plan, Out& out, edit_progress& progress) {
     namespace du = ::hmira::detail::euler;
     using H = typename T::halfedge_handle;
     using V = typename T::vertex_handle;
@@ -130,10 +132,13 @@ result<void> bevel_build(M& mesh, const Plan& plan, Out& out, const progress_fun
     // The ends' positions are the rounded profiles' control points (the ends may be gone and
     // their handles reused by the time the profiles are built).
     std::vector<std::pair<vec3<double>, vec3<double>>> ends(sel.size());
+    // Every loop below steps the progress: a cancel is heard within a block of any phase.
+    progress.add_work(plan.slides.size() + plan.inners.size() + sel.size() + touched.size());
     for (std::size_t i = 0; i < sel.size(); ++i)
         ends[i] = {pos<M, T>(mesh, du::source<M, T>(mesh, sel[i])), pos<M, T>(mesh, T::target(mesh, sel[i]))};
     // 1. Split the slid edges (once where slides from both ends meet exactly).
     for (const auto& sl : plan.slides) {
+        if (auto ok = progress.step(); !ok) return ok.error();
         if (sl.t < 0) continue;  // split with its partner from the other end
         const auto h = sl.h;
         const auto a = pos<M, T>(mesh, du::source<M, T>(mesh, h)), b = pos<M, T>(mesh, T::target(mesh, h));
@@ -151,6 +156,7 @@ result<void> bevel_build(M& mesh, const Plan& plan, Out& out, const progress_fun
     }
     // 2. Points inside corners between two bevelled edges, hung from the vertex by makeEV.
     for (const auto& in : plan.inners) {
+        if (auto ok = progress.step(); !ok) return ok.error();
         const auto r = mev<M, T>(mesh, in.corner, pos<M, T>(mesh, in.v) + in.dir * in.width);
         if (!r) return r.error();
         out.vertices.push_back(r.value().vertex);
@@ -159,7 +165,6 @@ result<void> bevel_build(M& mesh, const Plan& plan, Out& out, const progress_fun
     std::vector<H> strip_side(sel.size());  // a halfedge of each strip, on its F_L long side
     //    A boundary edge has one face: its quad (u, w, q, p) is the whole strip, and the edge
     //    stays as the strip's boundary side.
-    edit_progress progress(report, sel.size(), "bevel");
     for (std::size_t i = 0; i < sel.size(); ++i) {
         if (auto ok = progress.step(); !ok) return ok.error();
         const auto h = sel[i], o = T::opposite(mesh, h);
@@ -174,12 +179,14 @@ result<void> bevel_build(M& mesh, const Plan& plan, Out& out, const progress_fun
         if (auto ok = kef<M, T>(mesh, h); !ok) return ok.error();
     }
     // 4. Vertices with nothing left but new neighbours go.
-    for (std::size_t k = 0; k < touched.size(); ++k)
+    for (std::size_t k = 0; k < touched.size(); ++k) {
+        if (auto ok = progress.step(); !ok) return ok.error();
         if (removed[k]) {
             const auto f = replace_vertex_by_polygon<M, T>(mesh, touched[k]);
             if (!f) return f.error();
             if (f.value() != T::null_face()) out.vertex_faces.push_back(f.value());
         }
+    }
     // 5. Rounded profiles (segments > 1): split every end edge once along an arc (B), cut each
     //    strip across (C), and fill each vertex patch bounded by arcs only with a grid (D).
     if (plan.segments == 1) {
@@ -187,6 +194,7 @@ result<void> bevel_build(M& mesh, const Plan& plan, Out& out, const progress_fun
         return {};
     }
     const auto n = static_cast<std::size_t>(plan.segments);
+    progress.add_work(sel.size() * (n + 1));
     struct end_edge {
         V a, b;                     // the edge's ends, as first met (from a strip's F_L side)
         vec3<double> v{}, dir{};    // the original end vertex, and the unit edge direction away from it
@@ -221,6 +229,7 @@ result<void> bevel_build(M& mesh, const Plan& plan, Out& out, const progress_fun
         strip_ends[i][side] = {false, V{}, it->second, ee.a != a};
     };
     for (std::size_t i = 0; i < sel.size(); ++i) {
+        if (auto ok = progress.step(); !ok) return ok.error();
         const auto qp = strip_side[i];
         strip_face[i] = T::face(mesh, qp);
         // The strip's loop: q -> p -> (p', or kept s -> p') -> q' -> (q, or kept t -> q); a
@@ -260,6 +269,7 @@ result<void> bevel_build(M& mesh, const Plan& plan, Out& out, const progress_fun
         const bool forward = du::source<M, T>(mesh, x) == ee.a;
         std::vector<V> arc{du::source<M, T>(mesh, x)};
         for (std::size_t j = 1; j < n; ++j) {
+            if (auto ok = progress.step(); !ok) return ok.error();
             const double t = double(j) / double(n);
             const auto s = split_edge<M, T>(mesh, x, arc_point(pa, ctrl, pb, forward ? t : 1 - t));
             if (!s) return s.error();
@@ -285,6 +295,7 @@ result<void> bevel_build(M& mesh, const Plan& plan, Out& out, const progress_fun
             return se.reversed ? arc[n - j] : arc[j];
         };
         for (std::size_t j = 1; j < n; ++j) {
+            if (auto ok = progress.step(); !ok) return ok.error();
             // makeEF's new face runs forward from the first end's point: the uncut rest.
             const auto h0 = into_vertex<M, T>(mesh, c, point(0, j));
             const auto h1 = into_vertex<M, T>(mesh, c, point(1, j));
@@ -296,6 +307,7 @@ result<void> bevel_build(M& mesh, const Plan& plan, Out& out, const progress_fun
     }
     // D. Grid-fill the vertex patches bounded by arcs only.
     for (const auto& pa : patches) {
+        if (auto ok = progress.step(); !ok) return ok.error();
         const std::size_t k = pa.corners.size();
         std::vector<std::vector<V>> arcs(k);
         for (std::size_t s = 0; s < k; ++s) {
@@ -410,12 +422,16 @@ result<bevel_result<M, T>> bevel(M& mesh, const R& edges, const bevel_options& o
         return fail(errc::invalid_argument, "bevel: width must be finite and > 0");
     if (options.segments < 1 || options.segments > 64)
         return fail(errc::invalid_argument, "bevel: segments must lie in [1, 64], got " + std::to_string(options.segments));
+    // Planning is as long as building: it steps the progress too, so a cancel is heard early.
+    de::edit_progress progress(options.progress, 0, "bevel");
+    if constexpr (std::ranges::sized_range<const R>) progress.add_work(std::ranges::size(edges));
     // Selection.
     de::bevel_plan<M, T> plan;
     plan.segments = options.segments;
     auto& sel = plan.sel;
     de::index_set bevelled;
     for (auto e0 : edges) {
+        if (auto ok = progress.step(); !ok) return ok.error();
         const typename T::edge_handle e = e0;
         if (T::edge_index(mesh, e) >= T::edge_index_bound(mesh) || du::known_removed<M, T>(mesh, e))
             return fail(errc::invalid_handle, "bevel: edge " + std::to_string(T::edge_index(mesh, e)) + " does not exist (out of range or deleted)",
@@ -437,11 +453,14 @@ result<bevel_result<M, T>> bevel(M& mesh, const R& edges, const bevel_options& o
     auto is_bev = [&](H h) { return bevelled.contains(edge_of(h)); };
     auto& touched = plan.touched;
     de::index_map touched_at;  // vertex index -> position in touched
-    for (auto h : sel)
+    progress.add_work(sel.size());
+    for (auto h : sel) {
+        if (auto ok = progress.step(); !ok) return ok.error();
         for (auto v : {du::source<M, T>(mesh, h), T::target(mesh, h)}) {
             if (auto ok = de::check_corner_vertex<M, T>(mesh, v, "bevel"); !ok) return ok.error();
             if (touched_at.emplace(T::vertex_index(mesh, v), touched.size()) == touched.size()) touched.push_back(v);
         }
+    }
 
     // Plan, from the original geometry: slides on unbevelled edges, points inside corners
     // between two bevelled edges, which vertices go. Offsets are per unit width; each new
@@ -453,7 +472,9 @@ result<bevel_result<M, T>> bevel(M& mesh, const R& edges, const bevel_options& o
     std::vector<std::array<std::size_t, 2>> inner_edges;
     auto& removed = plan.removed;
     removed.assign(touched.size(), true);
+    progress.add_work(touched.size());
     for (std::size_t k = 0; k < touched.size(); ++k) {
+        if (auto ok = progress.step(); !ok) return ok.error();
         const auto v = touched[k];
         const auto pv = de::pos<M, T>(mesh, v);
         const auto hs = de::outgoing<M, T>(mesh, v);
@@ -558,7 +579,7 @@ result<bevel_result<M, T>> bevel(M& mesh, const R& edges, const bevel_options& o
     plan.share_meeting_points = !options.clamp_overlap || options.clamp_globally;
     return de::transact<M, T>(mesh, [&]<class JT>() -> result<bevel_result<M, T>> {
         bevel_result<M, T> out;
-        if (auto ok = de::bevel_build<M, JT>(mesh, plan, out, options.progress); !ok) return ok.error();
+        if (auto ok = de::bevel_build<M, JT>(mesh, plan, out, progress); !ok) return ok.error();
         return out;
     });
 }

@@ -49,15 +49,21 @@ public:
     /// the end of a block, where it adds the callback's own cost.
     result<void> step() {
         if (!report_ || ++done_ % block != 0) return {};
-        if (!report_(done_ >= total_ ? 1.0 : double(done_) / double(total_)))
-            return fail(errc::unsupported, std::string(what_) + ": cancelled");
+        // Never backwards, though add_work() may grow the total after some reports.
+        reported_ = std::max(reported_, done_ >= total_ ? 1.0 : double(done_) / double(total_));
+        if (!report_(reported_)) return fail(errc::unsupported, std::string(what_) + ": cancelled");
         return {};
     }
+
+    /// An edit that learns its size phase by phase (bevel plans before it builds) adds each
+    /// phase's elements here, so every phase's loop can step() and be cancelled.
+    void add_work(std::size_t elements) { total_ += elements; }
 
 private:
     const progress_function& report_;
     std::size_t total_;
     std::size_t done_ = 0;
+    double reported_ = 0;
     const char* what_;
 };
 
