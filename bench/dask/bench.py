@@ -131,7 +131,7 @@ def compare(n, chunk, period, threads, repeats):
     shared machine the CPU seconds (user + system, all threads) are the steadier figure."""
     vol = gyroid_block(period, {None: {"array-location": [(0, n)] * 3}})
     darr = da.from_array(vol, chunks=chunk)
-    wall_mem, wall_dask, cpu_mem, cpu_dask, cpu_per_chunk = [], [], [], [], []
+    wall_mem, wall_dask, cpu_mem, cpu_dask, cpu_chunk_rows = [], [], [], [], []
     for _ in range(repeats):
         c0, t0 = cpu_seconds(), time.perf_counter()
         ref_v, ref_f = hmira.marching_cubes(vol, 0.0, threads=threads)
@@ -144,15 +144,15 @@ def compare(n, chunk, period, threads, repeats):
         cpu_dask.append(cpu_seconds() - c0)
         same = bool(np.array_equal(v, ref_v) and np.array_equal(f, ref_f))
         del v, f
-        # The same direct path with a writing task per chunk (before 2026-12-02 15:00), in the same run.
-        hmira.dask._ROW_TASKS = False
+        # The same direct path with every chunk its own block (before 2026-12-02 18:00), in the same run.
+        hmira.dask._DIRECT = "chunk_rows"
         c0 = cpu_seconds()
         try:
             with dask.config.set(scheduler="threads", num_workers=threads):
                 v, f = hmira.dask.marching_cubes(darr, 0.0, threads=threads)
         finally:
-            hmira.dask._ROW_TASKS = True
-        cpu_per_chunk.append(cpu_seconds() - c0)
+            hmira.dask._DIRECT = "rows"
+        cpu_chunk_rows.append(cpu_seconds() - c0)
         same = same and bool(np.array_equal(v, ref_v) and np.array_equal(f, ref_f))
         triangles = len(ref_f)
         del v, f, ref_v, ref_f
@@ -165,8 +165,8 @@ def compare(n, chunk, period, threads, repeats):
             "ratio_best": round(min(wall_dask) / min(wall_mem), 3),
             "in_memory_cpu_s": round(med(cpu_mem), 3), "dask_cpu_s": round(med(cpu_dask), 3),
             "cpu_ratio": round(med(cpu_dask) / med(cpu_mem), 3),
-            "dask_per_chunk_writes_cpu_s": round(med(cpu_per_chunk), 3),
-            "per_chunk_writes_cpu_ratio": round(med(cpu_per_chunk) / med(cpu_mem), 3),
+            "dask_chunk_blocks_cpu_s": round(med(cpu_chunk_rows), 3),
+            "chunk_blocks_cpu_ratio": round(med(cpu_chunk_rows) / med(cpu_mem), 3),
             "load": os.getloadavg()[0], "triangles": triangles, "identical": same}
 
 

@@ -169,6 +169,123 @@ def _row_tasks(darr, iso, spacing, origin, inside, into):
     return [Delayed((name,) + row, hlg, layer=name) for row in rows]
 
 
+def _byte_bounds(a):
+    bounds = getattr(getattr(np.lib, "array_utils", None), "byte_bounds", None) or np.byte_bounds
+    return bounds(a)
+
+
+def _join_x(arrays):
+    """The chunks of one row along x (array axis 2) as one array: a view when they are views of
+    one array lying side by side in it (da.from_array of a numpy array), read in place by the
+    C++ side; otherwise a copy, as the C++ side would paste them anyway."""
+    arrays = [np.asarray(a) for a in arrays]
+    if len(arrays) == 1:
+        return arrays[0]
+    first = arrays[0]
+    at, ptr = 0, first.__array_interface__["data"][0]
+    lined_up = True
+    for a in arrays:
+        if (a.dtype != first.dtype or a.strides != first.strides or a.shape[:2] != first.shape[:2]
+                or a.__array_interface__["data"][0] != ptr + at * first.strides[2]):
+            lined_up = False
+            break
+        at += a.shape[2]
+    if lined_up and first.size:
+        base = first
+        while isinstance(base.base, np.ndarray):
+            base = base.base
+        view = np.lib.stride_tricks.as_strided(first, shape=first.shape[:2] + (at,), strides=first.strides, writeable=False)
+        lo, hi = _byte_bounds(base)
+        vlo, vhi = _byte_bounds(view)
+        if lo <= vlo and vhi <= hi:  # inside the memory the chunks are views of
+            return view
+    return np.concatenate(arrays, axis=2)
+
+
+def _joined_rows(darr):
+    """For every row of chunks along x, in C order of the chunk grid: (parts, index, offset,
+    core, x_chunks). The row is one block spanning the whole x axis; its parts are, per step
+    along (z, y), the keys of the row's chunks, or of one-sample slices of the next row's."""
+    starts = [np.concatenate([[0], np.cumsum(c)[:-1]]).astype(int) for c in darr.chunks]
+    nz, ny, nx = darr.numblocks
+    for iz, iy in np.ndindex(nz, ny):
+        parts = []
+        for sz, sy in np.ndindex(2, 2):
+            if iz + sz >= nz or iy + sy >= ny:
+                continue
+            keys = []
+            for ix in range(nx):
+                key = (darr.name, iz + sz, iy + sy, ix)
+                if sz or sy:
+                    key = (operator.getitem, key, (slice(0, 1) if sz else slice(None), slice(0, 1) if sy else slice(None)))
+                keys.append(key)
+            parts.append([[sz, sy, 0], keys])
+        offset = [int(starts[0][iz]), int(starts[1][iy]), 0]
+        core = [int(darr.chunks[0][iz]), int(darr.chunks[1][iy]), int(darr.shape[2])]
+        yield parts, [iz, iy], offset, core, [int(c) for c in darr.chunks[2]]
+
+
+def _row_arrays(parts):
+    return [[step, _join_x(keys)] for step, keys in parts]
+
+
+def _name_failing_chunk(arrays, iso, index, offset, core, x_chunks, whole, spacing, origin, inside):
+    """After a row failed: the row's chunks one by one (parts sliced from the row's), so that
+    the error names the chunk, as on the other paths."""
+    x0 = 0
+    for ix, cx in enumerate(x_chunks):
+        parts = []
+        for step, a in arrays:
+            parts.append([step, a[:, :, x0:x0 + cx]])
+            if x0 + cx < whole[2]:
+                parts.append([[step[0], step[1], 1], a[:, :, x0 + cx:x0 + cx + 1]])
+        parts.sort(key=lambda p: tuple(p[0]))
+        _count_block(parts, iso, [index[0], index[1], ix], [offset[0], offset[1], x0], [core[0], core[1], cx], whole,
+                     spacing, origin, inside)
+        x0 += cx
+
+
+def _count_row(parts, iso, index, offset, core, x_chunks, whole, spacing, origin, inside):
+    """What one row of chunks along x owns, counted as one block (long rows of samples); an
+    error names the chunk."""
+    arrays = _row_arrays(parts)
+    try:
+        if arrays[0][1].dtype not in _DTYPES:
+            raise ValueError(f"volume dtype must be float32, float64, uint8, uint16 or int16, got {arrays[0][1].dtype}")
+        return _core._count_block([a for _, a in arrays], iso, steps=[list(s) for s, _ in arrays], core=list(core),
+                                  offset=list(offset), whole=list(whole), spacing=list(spacing), origin=list(origin), inside=inside)
+    except Exception as e:
+        _name_failing_chunk(arrays, iso, index, offset, core, x_chunks, whole, spacing, origin, inside)
+        raise ValueError(f"hmira.dask.marching_cubes: row of blocks {tuple(index)}: {e}") from e
+
+
+def _write_row(parts, iso, index, offset, core, x_chunks, whole, spacing, origin, inside, into):
+    """Writes one row of chunks along x, as one block, straight into the whole result."""
+    arrays = _row_arrays(parts)
+    try:
+        _core._write_block([a for _, a in arrays], iso, steps=[list(s) for s, _ in arrays], core=list(core), offset=list(offset),
+                           whole=list(whole), spacing=list(spacing), origin=list(origin), inside=inside, layout=into.layout,
+                           counted=into.counts[int(np.ravel_multi_index(index, into.numblocks))])
+    except Exception as e:
+        raise ValueError(f"hmira.dask.marching_cubes: row of blocks {tuple(index)}: {e}") from e
+
+
+def _joined_row_tasks(darr, iso, spacing, origin, inside, func, extra, label):
+    """One dask.delayed per row of chunks along x, in C order, each calling `func` on the row
+    joined into one block."""
+    from dask.base import tokenize
+    from dask.delayed import Delayed
+    from dask.highlevelgraph import HighLevelGraph
+
+    name = label + tokenize(darr, iso, spacing, origin, inside, *[id(e) for e in extra])
+    graph = {}
+    for parts, index, offset, core, x_chunks in _joined_rows(darr):
+        graph[(name,) + tuple(index)] = (func, parts, float(iso), index, offset, core, x_chunks, list(darr.shape), list(spacing),
+                                         list(origin), inside) + tuple(extra)
+    hlg = HighLevelGraph.from_collections(name, graph, dependencies=[darr])
+    return [Delayed((name,) + index, hlg, layer=name) for index in np.ndindex(*darr.numblocks[:2])]
+
+
 def _block_tasks(darr, iso, spacing, origin, inside, func=_mesh_block, extra=(), label="hmira-marching-cubes-"):
     """One dask.delayed per chunk, in C order of the chunk grid, each calling `func` on its chunk
     (by default meshing it)."""
@@ -275,11 +392,21 @@ def _direct(darr, iso, spacing, origin, inside):
     classification (one bit each) and row counts are kept from the first step to the second."""
     import dask
 
+    darr, spacing, origin = _checked(darr, iso, spacing, origin, inside)
+    if _DIRECT == "rows":
+        # A row of chunks along x is one block: rows of samples as long as the whole grid's,
+        # read in place when the chunks are views of one array. Chunk by chunk, the rows are a
+        # chunk wide, and reading them costs twice the whole-grid pass (perf: cache misses).
+        counts = dask.compute(*_joined_row_tasks(darr, iso, spacing, origin, inside, _count_row, (), "hmira-mc-count-"))
+        layout = _core._layout_blocks(list(counts), whole=list(darr.shape), x_chunks=[int(darr.shape[2])])
+        into = _Into(layout, counts, darr.numblocks[:2])
+        dask.compute(*_joined_row_tasks(darr, iso, spacing, origin, inside, _write_row, (into,), "hmira-mc-write-"))
+        return _core._layout_result(layout)
     darr, tasks = _block_tasks(darr, iso, spacing, origin, inside, func=_count_block, label="hmira-mc-count-")
     counts = dask.compute(*tasks)
     layout = _core._layout_blocks(list(counts), whole=list(darr.shape), x_chunks=list(darr.chunks[2]))
     into = _Into(layout, counts, darr.numblocks)
-    if _ROW_TASKS:
+    if _DIRECT == "chunk_rows":
         # One task per row of chunks along x, writing its chunks row by row in turn: the result
         # is in the whole grid's order, where one chunk's share of a sample row is a few dozen
         # bytes, so chunk by chunk the writes scatter (perf: twice the in-memory writing pass).
@@ -290,9 +417,10 @@ def _direct(darr, iso, spacing, origin, inside):
     return _core._layout_result(layout)
 
 
-# The direct path writes a row of chunks along x per task (False: a chunk per task; the tests
-# check both give the whole-volume mesh).
-_ROW_TASKS = True
+# How the direct path splits the work: "rows" (a task per row of chunks along x, joined into
+# one block), "chunk_rows" (a task per row of chunks, each chunk a block, written row by row in
+# turn) or "chunks" (a task per chunk). The tests check all give the whole-volume mesh.
+_DIRECT = "rows"
 
 
 def _shared_mask(keys, shape, chunks):

@@ -59,16 +59,17 @@ FIELDS = {
 }
 
 
-@pytest.mark.parametrize("path", ["direct", "direct_per_chunk", "merge"])
+@pytest.mark.parametrize("path", ["rows", "chunk_rows", "chunks", "merge"])
 @pytest.mark.parametrize("name", sorted(FIELDS))
 def test_random_chunkings_equal_whole_volume_threaded(name, path, monkeypatch):
-    # In process, chunks write straight into the result ("direct": a task per row of chunks
-    # along x; "direct_per_chunk": a task per chunk); on other schedulers the client merges
-    # keyed chunk meshes ("merge"): all give the whole-volume mesh.
+    # In process, chunks write straight into the result ("rows": a task per row of chunks
+    # along x, joined into one block; "chunk_rows": a task per row of chunks, each its own
+    # block; "chunks": a task per chunk); on other schedulers the client merges keyed chunk
+    # meshes ("merge"): all give the whole-volume mesh.
     if path == "merge":
         monkeypatch.setattr(hmira.dask, "_in_process", lambda darr: False)
     else:
-        monkeypatch.setattr(hmira.dask, "_ROW_TASKS", path == "direct")
+        monkeypatch.setattr(hmira.dask, "_DIRECT", path)
         assert hmira.dask._in_process(da.zeros((2, 2, 2)))
     make, iso, inside = FIELDS[name]
     vol = make()
