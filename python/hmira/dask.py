@@ -32,6 +32,7 @@ from __future__ import annotations
 import operator
 import os
 import tempfile
+import threading
 from typing import Optional, Sequence, Tuple
 
 import numpy as np
@@ -174,10 +175,10 @@ def _byte_bounds(a):
     return bounds(a)
 
 
-def _join_x(arrays):
+def _join_x(arrays, copy=True):
     """The chunks of one row along x (array axis 2) as one array: a view when they are views of
     one array lying side by side in it (da.from_array of a numpy array), read in place by the
-    C++ side; otherwise a copy, as the C++ side would paste them anyway."""
+    C++ side; otherwise a copy (None with copy=False)."""
     arrays = [np.asarray(a) for a in arrays]
     if len(arrays) == 1:
         return arrays[0]
@@ -199,7 +200,7 @@ def _join_x(arrays):
         vlo, vhi = _byte_bounds(view)
         if lo <= vlo and vhi <= hi:  # inside the memory the chunks are views of
             return view
-    return np.concatenate(arrays, axis=2)
+    return np.concatenate(arrays, axis=2) if copy else None
 
 
 def _joined_rows(darr):
@@ -225,8 +226,42 @@ def _joined_rows(darr):
         yield parts, [iz, iy], offset, core, [int(c) for c in darr.chunks[2]]
 
 
+_buffers = threading.local()
+
+
+def _row_buffer(shape, dtype):
+    """An uninitialised array for one joined row, in memory the thread keeps for its next row
+    (as the C++ side keeps its paste buffer): no fresh pages, so no page faults, per row."""
+    size = int(np.prod(shape)) * np.dtype(dtype).itemsize
+    buf = getattr(_buffers, "row", None)
+    if buf is None or buf.size < size:
+        buf = _buffers.row = np.empty(size, dtype=np.uint8)
+    return buf[:size].view(dtype).reshape(shape)
+
+
 def _row_arrays(parts):
-    return [[step, _join_x(keys)] for step, keys in parts]
+    """The row's parts, per step along (z, y), each its chunks joined along x: views when the
+    chunks lie side by side in one array, else copied once into one array of the whole block
+    (with its overlap), whose views the C++ side then reads in place."""
+    joined = [[step, _join_x(pieces, copy=False)] for step, pieces in parts]
+    if all(a is not None for _, a in joined):
+        return joined
+    first = [np.asarray(p) for p in parts[0][1]]
+    shape = [first[0].shape[0], first[0].shape[1], sum(p.shape[2] for p in first)]
+    for (sz, sy, _), _ in parts:
+        shape[0] = max(shape[0], first[0].shape[0] + sz)
+        shape[1] = max(shape[1], first[0].shape[1] + sy)
+    block = _row_buffer(shape, first[0].dtype)
+    out = []
+    for (sz, sy, sx), pieces in parts:
+        z0, y0 = sz * first[0].shape[0], sy * first[0].shape[1]
+        x0 = 0
+        for p in pieces:
+            p = np.asarray(p)
+            block[z0:z0 + p.shape[0], y0:y0 + p.shape[1], x0:x0 + p.shape[2]] = p
+            x0 += p.shape[2]
+        out.append([[sz, sy, sx], block[z0:z0 + (1 if sz else first[0].shape[0]), y0:y0 + (1 if sy else first[0].shape[1])]])
+    return out
 
 
 def _name_failing_chunk(arrays, iso, index, offset, core, x_chunks, whole, spacing, origin, inside):

@@ -88,6 +88,43 @@ def test_random_chunkings_equal_whole_volume_threaded(name, path, monkeypatch):
             np.testing.assert_array_equal(f, ref_f, err_msg=str(chunks))
 
 
+@pytest.mark.parametrize("name", sorted(FIELDS))
+def test_rows_of_copied_chunks_equal_whole_volume(name):
+    # Chunks that are separate arrays (each a copy, as from zarr or a computed field): the row
+    # of chunks along x is copied into one block, with its overlap, and read there.
+    make, iso, inside = FIELDS[name]
+    vol = make()
+    ref_v, ref_f = hmira.marching_cubes(vol, iso, inside=inside, **KW)
+    rng = np.random.default_rng(hash(name) % 1000 + 1)
+    chunkings = [tuple(random_chunks(n, rng) for n in vol.shape) for _ in range(3)]
+    chunkings += [((1,) * vol.shape[0], vol.shape[1], 5), (4, (1,) * vol.shape[1], 7), (3, 5, (1,) * vol.shape[2])]
+    assert hmira.dask._DIRECT == "rows"
+    with dask.config.set(scheduler="threads"):
+        for chunks in chunkings:
+            darr = da.from_array(vol, chunks=chunks).map_blocks(np.copy)
+            v, f = hmira.dask.marching_cubes(darr, iso, inside=inside, **KW)
+            np.testing.assert_array_equal(v, ref_v, err_msg=str(chunks))
+            np.testing.assert_array_equal(f, ref_f, err_msg=str(chunks))
+
+
+def test_join_x_views_only_when_side_by_side():
+    # Chunks lying side by side in one array join into a view of it; anything else is copied.
+    vol = np.arange(4 * 5 * 12, dtype=np.float32).reshape(4, 5, 12)
+    pieces = [vol[1:3, :, 0:5], vol[1:3, :, 5:12]]
+    joined = hmira.dask._join_x(pieces)
+    assert np.shares_memory(joined, vol) and np.array_equal(joined, vol[1:3])
+    apart = [vol[1:3, :, 0:5], vol[1:3, :, 6:12]]  # a gap of one sample
+    assert hmira.dask._join_x(apart, copy=False) is None
+    copied = hmira.dask._join_x(apart)
+    assert not np.shares_memory(copied, vol) and np.array_equal(copied, np.concatenate(apart, axis=2))
+    assert hmira.dask._join_x(pieces[::-1], copy=False) is None  # out of order
+    assert hmira.dask._join_x([pieces[0], np.asfortranarray(pieces[1])], copy=False) is None  # other strides
+    # Side by side only in a one-row array: an array reaching past the chunk's own memory is never made.
+    flat = np.arange(10, dtype=np.float32)
+    a, b = flat[0:5].reshape(1, 1, 5), flat[5:10].reshape(1, 1, 5)
+    assert np.array_equal(hmira.dask._join_x([a, b]), flat.reshape(1, 1, 10))
+
+
 def test_strided_parts_uint8_and_merge_thread_counts_equal_whole_volume():
     # Chunks that are strided views (a Fortran-ordered source), 8-bit samples at the iso value,
     # one-sample chunks at both ends, and every merge thread count give the whole-volume mesh.
@@ -120,11 +157,15 @@ def test_lazy_field_from_map_blocks_equals_in_memory():
     np.testing.assert_array_equal(f, ref_f)
 
 
-def test_error_in_one_block_names_it():
+@pytest.mark.parametrize("copied", [False, True])
+def test_error_in_one_block_names_it(copied):
     vol = gyroid((20, 20, 20))
-    vol[15, 3, 7] = np.nan
-    with pytest.raises(ValueError, match=r"block \(1, 0, 0\) \(samples \[10:20, 0:10, 0:10\]\).*NaN"):
-        hmira.dask.marching_cubes(da.from_array(vol, chunks=10), 0.0)
+    vol[15, 3, 17] = np.nan
+    darr = da.from_array(vol, chunks=10)
+    if copied:
+        darr = darr.map_blocks(np.copy)
+    with pytest.raises(ValueError, match=r"block \(1, 0, 1\) \(samples \[10:20, 0:10, 10:20\]\).*NaN"):
+        hmira.dask.marching_cubes(darr, 0.0)
 
 
 def test_bad_arguments_are_refused():
