@@ -9,10 +9,12 @@ same vertices in the same order, bit for bit, and the same triangles, whatever t
 The result is put together in three ways:
 
 * ``out=None`` on the threaded or synchronous scheduler (chunks run in this process): every
-  chunk counts what it owns, the client lays out the whole result by prefix sums, and every
-  row of chunks along the last axis then writes its vertices and triangles straight into it,
-  one task per row, each sample row's share of its chunks in turn (``_direct``); nothing is
-  merged.
+  row of chunks along the last axis, joined into one block, counts what it owns, the client
+  lays out the whole result by prefix sums, and every row then writes its vertices and
+  triangles straight into it (``_direct``); nothing is merged. A row is read in place when its
+  chunks are views of one array (``da.from_array`` of a numpy array), else copied, with its
+  one-sample overlap, into a buffer each worker thread keeps (so a thread holds up to one row
+  of chunks; rows above 256 MiB go a chunk per task instead).
 * ``out=None`` on other schedulers: the client gathers every chunk's keyed mesh and welds them in C++, in parallel
   (``threads=``), reading the chunks' arrays in place: a chunk's own vertices are copied
   straight to their place, only those on its high faces are looked up in the neighbour that
@@ -421,14 +423,18 @@ def _in_process(darr):
 
 
 def _direct(darr, iso, spacing, origin, inside):
-    """The in-process path: every chunk counts what it owns, the client lays out the whole
-    result by prefix sums, then every chunk writes its vertices and triangles straight into it.
-    No chunk mesh is kept and nothing is merged; each chunk is read twice, and its samples'
-    classification (one bit each) and row counts are kept from the first step to the second."""
+    """The in-process path: every row of chunks along x (or every chunk) counts what it owns,
+    the client lays out the whole result by prefix sums, then every row writes its vertices
+    and triangles straight into it. No mesh is kept and nothing is merged; each chunk is read
+    twice, and its samples' classification (one bit each) and row counts are kept from the
+    first step to the second."""
     import dask
 
     darr, spacing, origin = _checked(darr, iso, spacing, origin, inside)
-    if _DIRECT == "rows":
+    mode = _DIRECT
+    if mode == "rows" and _row_bytes(darr) > _ROW_BYTES:
+        mode = "chunks"  # a row would take too much memory per thread if its chunks must be copied
+    if mode == "rows":
         # A row of chunks along x is one block: rows of samples as long as the whole grid's,
         # read in place when the chunks are views of one array. Chunk by chunk, the rows are a
         # chunk wide, and reading them costs twice the whole-grid pass (perf: cache misses).
@@ -441,7 +447,7 @@ def _direct(darr, iso, spacing, origin, inside):
     counts = dask.compute(*tasks)
     layout = _core._layout_blocks(list(counts), whole=list(darr.shape), x_chunks=list(darr.chunks[2]))
     into = _Into(layout, counts, darr.numblocks)
-    if _DIRECT == "chunk_rows":
+    if mode == "chunk_rows":
         # One task per row of chunks along x, writing its chunks row by row in turn: the result
         # is in the whole grid's order, where one chunk's share of a sample row is a few dozen
         # bytes, so chunk by chunk the writes scatter (perf: twice the in-memory writing pass).
@@ -456,6 +462,14 @@ def _direct(darr, iso, spacing, origin, inside):
 # one block), "chunk_rows" (a task per row of chunks, each chunk a block, written row by row in
 # turn) or "chunks" (a task per chunk). The tests check all give the whole-volume mesh.
 _DIRECT = "rows"
+# "rows" takes a task per chunk instead when a row of chunks (with its overlap) is larger than
+# this: a row whose chunks are not views of one array is copied into a buffer per thread.
+_ROW_BYTES = 256 << 20
+
+
+def _row_bytes(darr):
+    """The largest row of chunks along x, with its overlap, in bytes."""
+    return (max(darr.chunks[0]) + 1) * (max(darr.chunks[1]) + 1) * int(darr.shape[2]) * np.dtype(darr.dtype).itemsize
 
 
 def _shared_mask(keys, shape, chunks):

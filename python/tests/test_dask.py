@@ -107,6 +107,21 @@ def test_rows_of_copied_chunks_equal_whole_volume(name):
             np.testing.assert_array_equal(f, ref_f, err_msg=str(chunks))
 
 
+def test_rows_too_large_go_a_chunk_per_task(monkeypatch):
+    # Above _ROW_BYTES a row of chunks is not joined (its copy would be held per thread): the
+    # chunks count and write one by one, with the same result.
+    vol = gyroid((30, 26, 33))
+    ref_v, ref_f = hmira.marching_cubes(vol, 0.1)
+    darr = da.from_array(vol, chunks=(7, 9, 10)).map_blocks(np.copy)
+    assert hmira.dask._row_bytes(darr) == 8 * 10 * 33 * 4
+    monkeypatch.setattr(hmira.dask, "_ROW_BYTES", 8 * 10 * 33 * 4 - 1)
+    monkeypatch.setattr(hmira.dask, "_count_row", None)  # would fail if a row were counted
+    with dask.config.set(scheduler="threads"):
+        v, f = hmira.dask.marching_cubes(darr, 0.1)
+    np.testing.assert_array_equal(v, ref_v)
+    np.testing.assert_array_equal(f, ref_f)
+
+
 def test_join_x_views_only_when_side_by_side():
     # Chunks lying side by side in one array join into a view of it; anything else is copied.
     vol = np.arange(4 * 5 * 12, dtype=np.float32).reshape(4, 5, 12)
