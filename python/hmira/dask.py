@@ -13,8 +13,8 @@ The result is put together in three ways:
   lays out the whole result by prefix sums, and every row then writes its vertices and
   triangles straight into it (``_direct``); nothing is merged. A row is read in place when its
   chunks are views of one array (``da.from_array`` of a numpy array), else copied, with its
-  one-sample overlap, into a buffer each worker thread keeps (so a thread holds up to one row
-  of chunks; rows above 256 MiB go a chunk per task instead).
+  one-sample overlap, into a buffer each worker thread reuses during the call (so a thread
+  holds up to one row of chunks; rows above 256 MiB go a chunk per task instead).
 * ``out=None`` on other schedulers: the client gathers every chunk's keyed mesh and welds them in C++, in parallel
   (``threads=``), reading the chunks' arrays in place: a chunk's own vertices are copied
   straight to their place, only those on its high faces are looked up in the neighbour that
@@ -228,20 +228,25 @@ def _joined_rows(darr):
         yield parts, [iz, iy], offset, core, [int(c) for c in darr.chunks[2]]
 
 
-_buffers = threading.local()
+class _Buffers:
+    """Per thread, memory for joined rows that the thread reuses for its next row during one
+    marching_cubes call (no fresh pages, so no page faults, per row); freed with the call. A
+    graph argument dask does not look inside."""
+
+    def __init__(self):
+        self.rows = {}
+
+    def row(self, shape, dtype):
+        """An uninitialised array of this shape and dtype in the calling thread's buffer."""
+        size = int(np.prod(shape)) * np.dtype(dtype).itemsize
+        key = threading.get_ident()
+        buf = self.rows.get(key)
+        if buf is None or buf.size < size:
+            buf = self.rows[key] = np.empty(size, dtype=np.uint8)
+        return buf[:size].view(dtype).reshape(shape)
 
 
-def _row_buffer(shape, dtype):
-    """An uninitialised array for one joined row, in memory the thread keeps for its next row
-    (as the C++ side keeps its paste buffer): no fresh pages, so no page faults, per row."""
-    size = int(np.prod(shape)) * np.dtype(dtype).itemsize
-    buf = getattr(_buffers, "row", None)
-    if buf is None or buf.size < size:
-        buf = _buffers.row = np.empty(size, dtype=np.uint8)
-    return buf[:size].view(dtype).reshape(shape)
-
-
-def _row_arrays(parts):
+def _row_arrays(parts, buffers):
     """The row's parts, per step along (z, y), each its chunks joined along x: views when the
     chunks lie side by side in one array, else copied once into one array of the whole block
     (with its overlap), whose views the C++ side then reads in place."""
@@ -253,7 +258,7 @@ def _row_arrays(parts):
     for (sz, sy, _), _ in parts:
         shape[0] = max(shape[0], first[0].shape[0] + sz)
         shape[1] = max(shape[1], first[0].shape[1] + sy)
-    block = _row_buffer(shape, first[0].dtype)
+    block = buffers.row(shape, first[0].dtype)
     out = []
     for (sz, sy, sx), pieces in parts:
         z0, y0 = sz * first[0].shape[0], sy * first[0].shape[1]
@@ -282,10 +287,10 @@ def _name_failing_chunk(arrays, iso, index, offset, core, x_chunks, whole, spaci
         x0 += cx
 
 
-def _count_row(parts, iso, index, offset, core, x_chunks, whole, spacing, origin, inside):
+def _count_row(parts, iso, index, offset, core, x_chunks, whole, spacing, origin, inside, buffers):
     """What one row of chunks along x owns, counted as one block (long rows of samples); an
     error names the chunk."""
-    arrays = _row_arrays(parts)
+    arrays = _row_arrays(parts, buffers)
     try:
         if arrays[0][1].dtype not in _DTYPES:
             raise ValueError(f"volume dtype must be float32, float64, uint8, uint16 or int16, got {arrays[0][1].dtype}")
@@ -296,9 +301,9 @@ def _count_row(parts, iso, index, offset, core, x_chunks, whole, spacing, origin
         raise ValueError(f"hmira.dask.marching_cubes: row of blocks {tuple(index)}: {e}") from e
 
 
-def _write_row(parts, iso, index, offset, core, x_chunks, whole, spacing, origin, inside, into):
+def _write_row(parts, iso, index, offset, core, x_chunks, whole, spacing, origin, inside, buffers, into):
     """Writes one row of chunks along x, as one block, straight into the whole result."""
-    arrays = _row_arrays(parts)
+    arrays = _row_arrays(parts, buffers)
     try:
         _core._write_block([a for _, a in arrays], iso, steps=[list(s) for s, _ in arrays], core=list(core), offset=list(offset),
                            whole=list(whole), spacing=list(spacing), origin=list(origin), inside=inside, layout=into.layout,
@@ -438,10 +443,11 @@ def _direct(darr, iso, spacing, origin, inside):
         # A row of chunks along x is one block: rows of samples as long as the whole grid's,
         # read in place when the chunks are views of one array. Chunk by chunk, the rows are a
         # chunk wide, and reading them costs twice the whole-grid pass (perf: cache misses).
-        counts = dask.compute(*_joined_row_tasks(darr, iso, spacing, origin, inside, _count_row, (), "hmira-mc-count-"))
+        buffers = _Buffers()
+        counts = dask.compute(*_joined_row_tasks(darr, iso, spacing, origin, inside, _count_row, (buffers,), "hmira-mc-count-"))
         layout = _core._layout_blocks(list(counts), whole=list(darr.shape), x_chunks=[int(darr.shape[2])])
         into = _Into(layout, counts, darr.numblocks[:2])
-        dask.compute(*_joined_row_tasks(darr, iso, spacing, origin, inside, _write_row, (into,), "hmira-mc-write-"))
+        dask.compute(*_joined_row_tasks(darr, iso, spacing, origin, inside, _write_row, (buffers, into), "hmira-mc-write-"))
         return _core._layout_result(layout)
     darr, tasks = _block_tasks(darr, iso, spacing, origin, inside, func=_count_block, label="hmira-mc-count-")
     counts = dask.compute(*tasks)
