@@ -237,7 +237,8 @@ TEST(MarchingCubes, output_does_not_depend_on_what_its_memory_held_before) {
             std::vector<std::vector<unsigned char>> dirt;
             for (std::size_t b : bytes) dirt.emplace_back(b, 0xA5);
         }
-        const auto again = hmira::marching_cubes_indexed<double>(*grid, {.normals = true, .threads = unsigned(round + 1)});
+        const unsigned threads = unsigned(round) + 1;
+        const auto again = hmira::marching_cubes_indexed<double>(*grid, {.normals = true, .threads = threads});
         ASSERT_TRUE(again);
         ASSERT_EQ(again->positions.size(), first->positions.size());
         ASSERT_EQ(again->triangles.size(), first->triangles.size());

@@ -46,7 +46,9 @@ struct uninitialized_allocator : std::allocator<T> {
     }
 
     /// Stateless: any two compare equal, so moves and swaps never copy elements.
-    friend constexpr bool operator==(const uninitialized_allocator&, const uninitialized_allocator&) noexcept { return true; }
+    friend constexpr bool operator==(const uninitialized_allocator&, const uninitialized_allocator&) noexcept {
+        return true;
+    }
 };
 
 /// A std::vector whose resize(n) and vector(n) leave the new elements unwritten; everything

@@ -58,7 +58,7 @@ struct marching_cubes_options {
 template <class S = float>
 struct indexed_triangles {
     uninitialized_vector<vec3<S>> positions;                       ///< one per vertex
-    uninitialized_vector<std::array<std::uint32_t, 3>> triangles;  ///< vertex indices, counter-clockwise seen from outside
+    uninitialized_vector<std::array<std::uint32_t, 3>> triangles;  ///< vertex indices, counter-clockwise from outside
     uninitialized_vector<vec3<S>> normals;                         ///< empty, or one unit normal per vertex
 };
 

@@ -51,7 +51,7 @@ template <class S = float>
 struct block_triangles {
     uninitialized_vector<vec3<S>> positions;                       ///< one per vertex, as the whole grid computes it
     std::vector<std::uint64_t> keys;                               ///< one global key per vertex, increasing
-    uninitialized_vector<std::array<std::uint32_t, 3>> triangles;  ///< indices into positions, counter-clockwise seen from outside
+    uninitialized_vector<std::array<std::uint32_t, 3>> triangles;  ///< into positions, counter-clockwise from outside
     std::vector<std::uint64_t> cubes;                     ///< cube key of each triangle, non-decreasing
     grid_dims whole{0, 0, 0};                             ///< dimensions of the whole grid the keys refer to
     grid_dims offset{0, 0, 0};                            ///< global index of the block's sample (0, 0, 0)
