@@ -3,6 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
+#include <memory>
+#include <type_traits>
 #include <map>
 #include <numbers>
 #include <random>
@@ -215,6 +218,66 @@ TEST(MarchingCubes, output_is_identical_for_1_2_and_8_threads) {
         EXPECT_TRUE(runs[r].triangles == runs[0].triangles);
         EXPECT_TRUE(runs[r].normals == runs[0].normals);
     }
+}
+
+// The output arrays are not zeroed before the writing pass, so every slot must be written:
+// a slot left out would show what the memory held before, here a 0xA5 pattern.
+TEST(MarchingCubes, output_does_not_depend_on_what_its_memory_held_before) {
+    auto grid = hmira::sample_function(hmira::cube_geometry(40, -3, 3), hmira::gyroid_field{2.0});
+    ASSERT_TRUE(grid);
+    const auto first = hmira::marching_cubes_indexed<double>(*grid, {.normals = true, .threads = 2});
+    ASSERT_TRUE(first);
+    ASSERT_FALSE(first->triangles.empty());
+    const std::size_t bytes[3] = {first->positions.size() * sizeof(vec3<double>),
+                                  first->triangles.size() * sizeof(first->triangles[0]),
+                                  first->normals.size() * sizeof(vec3<double>)};
+    for (int round = 0; round < 3; ++round) {
+        {
+            // Freed just before the call, so that the allocator is likely to hand these back.
+            std::vector<std::vector<unsigned char>> dirt;
+            for (std::size_t b : bytes) dirt.emplace_back(b, 0xA5);
+        }
+        const unsigned threads = unsigned(round) + 1;
+        const auto again = hmira::marching_cubes_indexed<double>(*grid, {.normals = true, .threads = threads});
+        ASSERT_TRUE(again);
+        ASSERT_EQ(again->positions.size(), first->positions.size());
+        ASSERT_EQ(again->triangles.size(), first->triangles.size());
+        ASSERT_EQ(again->normals.size(), first->normals.size());
+        EXPECT_EQ(std::memcmp(again->positions.data(), first->positions.data(), bytes[0]), 0);
+        EXPECT_EQ(std::memcmp(again->triangles.data(), first->triangles.data(), bytes[1]), 0);
+        EXPECT_EQ(std::memcmp(again->normals.data(), first->normals.data(), bytes[2]), 0);
+    }
+    // Independent of the memory's history: every triangle names an existing vertex and every
+    // normal is a unit vector.
+    for (const auto& t : first->triangles)
+        for (auto v : t) EXPECT_LT(v, first->positions.size());
+    for (const auto& n : first->normals) EXPECT_NEAR(hmira::norm(n), 1.0, 1e-9);
+}
+
+TEST(UninitializedVector, behaves_as_std_vector_wherever_it_is_given_values) {
+    hmira::uninitialized_vector<vec3<float>> v;
+    v.push_back({1, 2, 3});
+    v.resize(3, vec3<float>{4, 5, 6});
+    v.emplace_back(vec3<float>{7, 8, 9});
+    ASSERT_EQ(v.size(), 4u);
+    EXPECT_EQ(v[0], (vec3<float>{1, 2, 3}));
+    EXPECT_EQ(v[1], (vec3<float>{4, 5, 6}));
+    EXPECT_EQ(v[2], (vec3<float>{4, 5, 6}));
+    EXPECT_EQ(v[3], (vec3<float>{7, 8, 9}));
+    v.resize(6);  // unwritten: written here before being read
+    v[4] = {10, 11, 12};
+    v[5] = {13, 14, 15};
+    EXPECT_EQ(v[5], (vec3<float>{13, 14, 15}));
+    const auto copy = v;
+    EXPECT_TRUE(copy == v);
+    // Stateless allocators compare equal, so a move hands the buffer over without copying.
+    const auto* data = v.data();
+    const auto moved = std::move(v);
+    EXPECT_EQ(moved.data(), data);
+    EXPECT_TRUE(moved == copy);
+    static_assert(std::allocator_traits<hmira::uninitialized_allocator<int>>::is_always_equal::value);
+    static_assert(std::is_same_v<std::allocator_traits<hmira::uninitialized_allocator<int>>::rebind_alloc<double>,
+                                 hmira::uninitialized_allocator<double>>);
 }
 
 TEST(MarchingCubes, user_vector_is_read_in_place_and_matches_dense_grid) {

@@ -20,6 +20,7 @@
 #include "../../concepts.hpp"
 #include "../../core/progress.hpp"
 #include "../../core/result.hpp"
+#include "../../core/uninitialized_vector.hpp"
 #include "../../core/vec3.hpp"
 #include "../../grids/voxel_grid.hpp"
 #include "detail/marching_cubes_table.hpp"
@@ -51,12 +52,14 @@ struct marching_cubes_options {
 };
 
 /// An indexed triangle list: triangle corners index `positions`; `normals` is empty unless
-/// asked for, else one unit normal per position.
+/// asked for, else one unit normal per position. The arrays are std::vectors whose resize()
+/// leaves new elements unwritten (uninitialized_vector), so that marching cubes' parallel pass
+/// is the first to touch the output; they behave as std::vector in every other way.
 template <class S = float>
 struct indexed_triangles {
-    std::vector<vec3<S>> positions;                       ///< one per vertex
-    std::vector<std::array<std::uint32_t, 3>> triangles;  ///< vertex indices, counter-clockwise seen from outside
-    std::vector<vec3<S>> normals;                         ///< empty, or one unit normal per vertex
+    uninitialized_vector<vec3<S>> positions;                       ///< one per vertex
+    uninitialized_vector<std::array<std::uint32_t, 3>> triangles;  ///< vertex indices, counter-clockwise from outside
+    uninitialized_vector<vec3<S>> normals;                         ///< empty, or one unit normal per vertex
 };
 
 namespace detail::mc {
@@ -80,9 +83,9 @@ struct global_layout {
 /// What the counting passes of the extractor leave for the writing pass: the bit rows, the
 /// crossings per row and axis, and the rows' first vertices and triangles.
 struct counted_state {
-    std::vector<std::uint64_t> bits;                 ///< one bit per sample, rows of whole words
-    std::vector<std::uint32_t> xcount, ycount, zcount;  ///< crossed edges per row and axis
-    std::vector<std::uint64_t> vbase, tbase;         ///< first vertex and triangle per row (prefix sums)
+    uninitialized_vector<std::uint64_t> bits;        ///< one bit per sample, rows of whole words
+    uninitialized_vector<std::uint32_t> xcount, ycount, zcount;  ///< crossed edges per row and axis
+    uninitialized_vector<std::uint64_t> vbase, tbase;            ///< first vertex and triangle per row (prefix sums)
 };
 
 /// Where a block lies in a larger grid, and where the extractor records the global keys of
@@ -228,6 +231,9 @@ public:
         indexed_triangles<S> out;
         if (tags_ && tags_->count_only) return out;
         layout_ = tags_ ? tags_->layout : nullptr;
+        // Unwritten until pass 3 writes every slot: zeroing them here would be a serial pass
+        // over the whole output (an Amdahl cap near 1.7 on two threads), and each thread now
+        // takes the page faults of its own slice.
         if (!layout_) {
             out.positions.resize(vbase_[rows]);
             out.triangles.resize(tbase_[rows]);
@@ -319,12 +325,19 @@ private:
     result<void> count(progress_gate& gate) {
         const std::size_t rows = ny_ * nz_;
         const auto& table = mc::table();
-        bits_.assign(rows * words_, 0);
-        xcount_.assign(rows, 0);
-        ycount_.assign(rows, 0);
-        zcount_.assign(rows, 0);
-        vbase_.assign(rows + 1, 0);
-        tbase_.assign(rows + 1, 0);
+        // Unwritten here: passes 1 and 2 write every word and every row's counts, so zeroing
+        // them first would only add a serial pass (N/8 bytes of bits, 28 bytes per row).
+        for (auto* v : {&xcount_, &ycount_, &zcount_}) {
+            v->clear();
+            v->resize(rows);
+        }
+        bits_.clear();
+        bits_.resize(rows * words_);
+        vbase_.clear();
+        vbase_.resize(rows + 1);
+        tbase_.clear();
+        tbase_.resize(rows + 1);
+        vbase_[0] = tbase_[0] = 0;
 
         // Pass 1: classify every sample into bit rows.
         std::vector<std::uint8_t> nan_in_slab(nz_, 0);
@@ -367,6 +380,7 @@ private:
                     ycount_[r] = yc;
                     zcount_[r] = zc;
                     std::uint64_t centers = 0;
+                    tbase_[r + 1] = 0;  // no cube row past the last sample row
                     if (j + 1 < ny_ && k + 1 < nz_) {
                         std::uint64_t tris = 0;
                         for_each_active_cube(j, k, s, [&](std::size_t i, unsigned config) {
@@ -715,9 +729,9 @@ private:
     std::uint32_t layout_start(std::size_t j, std::size_t k, int axis, std::size_t column) const noexcept {
         return layout_->vertex_start[(tags_->global_row(j, k) * 4 + std::size_t(axis)) * layout_->columns + column];
     }
-    std::vector<std::uint64_t> bits_;
-    std::vector<std::uint32_t> xcount_, ycount_, zcount_;
-    std::vector<std::uint64_t> vbase_, tbase_;
+    uninitialized_vector<std::uint64_t> bits_;
+    uninitialized_vector<std::uint32_t> xcount_, ycount_, zcount_;
+    uninitialized_vector<std::uint64_t> vbase_, tbase_;
     std::unique_ptr<scratch> row_scratch_;    // write_layout_row()'s
     indexed_triangles<double> no_output_;     // write_layout_row() writes into the layout only
 };
@@ -894,7 +908,7 @@ result<marching_cubes_output<M, T>> marching_cubes(M& mesh, const G& grid, const
         undo();
         throw;
     }
-    out.normals = std::move(tri->normals);
+    out.normals.assign(tri->normals.begin(), tri->normals.end());
     return out;
 }
 

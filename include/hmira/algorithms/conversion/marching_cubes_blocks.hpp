@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "../../core/result.hpp"
+#include "../../core/uninitialized_vector.hpp"
 #include "../../core/vec3.hpp"
 #include "../../grids/dense_grid.hpp"
 #include "../../grids/voxel_grid.hpp"
@@ -48,9 +49,9 @@ struct marching_cubes_block_options {
 /// cube that made triangle t. Neither depends on the chunking.
 template <class S = float>
 struct block_triangles {
-    std::vector<vec3<S>> positions;                       ///< one per vertex, as the whole grid computes it
-    std::vector<std::uint64_t> keys;                      ///< one global key per vertex, increasing
-    std::vector<std::array<std::uint32_t, 3>> triangles;  ///< indices into positions, counter-clockwise seen from outside
+    uninitialized_vector<vec3<S>> positions;                       ///< one per vertex, as the whole grid computes it
+    std::vector<std::uint64_t> keys;                               ///< one global key per vertex, increasing
+    uninitialized_vector<std::array<std::uint32_t, 3>> triangles;  ///< into positions, counter-clockwise from outside
     std::vector<std::uint64_t> cubes;                     ///< cube key of each triangle, non-decreasing
     grid_dims whole{0, 0, 0};                             ///< dimensions of the whole grid the keys refer to
     grid_dims offset{0, 0, 0};                            ///< global index of the block's sample (0, 0, 0)
@@ -733,8 +734,10 @@ template <class S>
 result<indexed_triangles<S>> merge_blocks(std::span<const block_triangles_view<S>> blocks, const merge_blocks_options& options = {}) {
     indexed_triangles<S> out;
     auto allocate = [&](std::size_t vertices, std::size_t triangles) -> result<merged_storage<S>> {
-        out.positions.resize(vertices);
-        out.triangles.resize(triangles);
+        // Zeroed, as std::vector would: a slot that blocks which do not tile one grid might
+        // leave unwritten then reads as 0, not as whatever the memory held.
+        out.positions.resize(vertices, vec3<S>{});
+        out.triangles.resize(triangles, std::array<std::uint32_t, 3>{});
         return merged_storage<S>{out.positions, out.triangles};
     };
     if (auto ok = merge_blocks_into(blocks, allocate, options); !ok) return ok.error();
