@@ -22,6 +22,7 @@
 #include "detail/link_face.hpp"
 #include "detail/native_traits.hpp"
 #include "detail/slots.hpp"
+#include "detail/trivial_array.hpp"
 #include "face_vertex_mesh.hpp"  // index_remap
 #include "handles.hpp"
 #include "properties.hpp"
@@ -474,9 +475,9 @@ private:
         }
         m.vertex_out_.assign(nv, halfedge_handle{});
         m.vertex_deleted_.ensure(nv);
-        m.halfedges_.resize(2 * edges);
+        m.halfedges_.resize_for_overwrite(2 * edges);  // every record is written below, first touched there
         m.edge_deleted_.ensure(edges);
-        m.faces_.resize(nf);
+        m.faces_.resize_for_overwrite(nf);
         m.face_deleted_.ensure(nf);
         std::fill(stamp.begin(), stamp.end(), none);  // now: the boundary halfedge leaving each vertex
         for (std::size_t f = 0; f < nf; ++f) {
@@ -493,7 +494,7 @@ private:
                         return fail(errc::non_manifold, "from_polygons: vertex " + std::to_string(from) +
                                                             " joins two or more separate fans of faces", static_cast<long long>(from));
                     stamp[from] = h ^ 1u;
-                    m.halfedges_[h ^ 1u].target = vertex_handle(corners[k]);
+                    m.halfedges_[h ^ 1u] = {vertex_handle(corners[k]), {}, {}, {}};  // next and prev: the boundary loops below
                 }
             }
             m.faces_[f] = halfedge_handle(corner_h[e - 1]);
@@ -810,11 +811,11 @@ private:
     // read as zero until the first erasure writes one, and hold at least each index bound so
     // that erasing never allocates.
     std::vector<point> positions_;
-    std::vector<halfedge_handle> vertex_out_;
+    detail::trivial_array<halfedge_handle> vertex_out_;
     detail::zeroed_array<std::uint8_t> vertex_deleted_;
-    std::vector<halfedge_record> halfedges_;
+    detail::trivial_array<halfedge_record> halfedges_;
     detail::zeroed_array<std::uint8_t> edge_deleted_;
-    std::vector<halfedge_handle> faces_;
+    detail::trivial_array<halfedge_handle> faces_;
     detail::zeroed_array<std::uint8_t> face_deleted_;
     detail::zeroed_array<std::uint32_t> face_rings_;
     std::vector<std::vector<halfedge_handle>> ring_lists_;
