@@ -77,6 +77,21 @@ TEST(TrivialArray, push_back_of_own_element_survives_growth) {
     }
 }
 
+TEST(TrivialArray, ensure_room_grows_geometrically_and_reserve_exactly) {
+    trivial_array<std::uint32_t> a;
+    for (std::uint32_t i = 0; i < 128; ++i) a.push_back(i);
+    ASSERT_EQ(a.capacity(), 128u);  // 16, 32, 64, 128
+    a.ensure_room(128);
+    EXPECT_EQ(a.capacity(), 128u);
+    a.ensure_room(130);
+    EXPECT_EQ(a.capacity(), 256u);  // doubled, not 130: appends stay amortised O(1)
+    a.reserve(1000);
+    EXPECT_EQ(a.capacity(), 1000u);
+    a.reserve(10);  // never shrinks
+    EXPECT_EQ(a.capacity(), 1000u);
+    for (std::uint32_t i = 0; i < 128; ++i) ASSERT_EQ(a[i], i);
+}
+
 TEST(TrivialArray, resize_fills_with_the_value_and_shrink_keeps_room) {
     trivial_array<record> a;
     a.resize(10);

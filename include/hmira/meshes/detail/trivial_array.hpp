@@ -72,6 +72,11 @@ public:
     void reserve(std::size_t n) {
         if (n > capacity_) reallocate(n);
     }
+    /// Room for n elements, grown geometrically (as push_back grows): what an append of several
+    /// elements calls first, so that none of them can fail once one is in. Amortised O(1).
+    void ensure_room(std::size_t n) {
+        if (n > capacity_) grow(n);
+    }
     /// Appends v. Amortised O(1).
     void push_back(const T& v) {
         if (size_ == capacity_) {
