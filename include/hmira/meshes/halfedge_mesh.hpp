@@ -97,10 +97,18 @@ public:
     ///@{
     // With nothing deleted no flag is read: add_face checks every corner, and a mesh built
     // without deletions keeps its flag arrays unwritten (their pages never mapped).
-    bool is_valid(vertex_handle v) const noexcept { return v.index < positions_.size() && (deleted_vertices_ == 0 || !vertex_deleted_[v.index]); }
-    bool is_valid(face_handle f) const noexcept { return f.index < faces_.size() && (deleted_faces_ == 0 || !face_deleted_[f.index]); }
-    bool is_valid(edge_handle e) const noexcept { return e.index < halfedges_.size() / 2 && (deleted_edges_ == 0 || !edge_deleted_[e.index]); }
-    bool is_valid(halfedge_handle h) const noexcept { return h.index < halfedges_.size() && (deleted_edges_ == 0 || !edge_deleted_[h.index >> 1]); }
+    bool is_valid(vertex_handle v) const noexcept {
+        return v.index < positions_.size() && (deleted_vertices_ == 0 || !vertex_deleted_[v.index]);
+    }
+    bool is_valid(face_handle f) const noexcept {
+        return f.index < faces_.size() && (deleted_faces_ == 0 || !face_deleted_[f.index]);
+    }
+    bool is_valid(edge_handle e) const noexcept {
+        return e.index < halfedges_.size() / 2 && (deleted_edges_ == 0 || !edge_deleted_[e.index]);
+    }
+    bool is_valid(halfedge_handle h) const noexcept {
+        return h.index < halfedges_.size() && (deleted_edges_ == 0 || !edge_deleted_[h.index >> 1]);
+    }
 
     ///@}
 
@@ -497,7 +505,8 @@ private:
                         return fail(errc::non_manifold, "from_polygons: vertex " + std::to_string(from) +
                                                             " joins two or more separate fans of faces", static_cast<long long>(from));
                     stamp[from] = h ^ 1u;
-                    m.halfedges_[h ^ 1u] = {vertex_handle(corners[k]), {}, {}, {}};  // next and prev: the boundary loops below
+                    // next and prev: the boundary loops below
+                    m.halfedges_[h ^ 1u] = {vertex_handle(corners[k]), {}, {}, {}};
                 }
             }
             m.faces_[f] = halfedge_handle(corner_h[e - 1]);
