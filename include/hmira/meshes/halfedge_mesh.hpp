@@ -22,6 +22,7 @@
 #include "detail/link_face.hpp"
 #include "detail/native_traits.hpp"
 #include "detail/slots.hpp"
+#include "detail/trivial_array.hpp"
 #include "face_vertex_mesh.hpp"  // index_remap
 #include "handles.hpp"
 #include "properties.hpp"
@@ -94,10 +95,20 @@ public:
 
     /// Whether the handle names a live element. O(1).
     ///@{
-    bool is_valid(vertex_handle v) const noexcept { return v.index < positions_.size() && !vertex_deleted_[v.index]; }
-    bool is_valid(face_handle f) const noexcept { return f.index < faces_.size() && !face_deleted_[f.index]; }
-    bool is_valid(edge_handle e) const noexcept { return e.index < halfedges_.size() / 2 && !edge_deleted_[e.index]; }
-    bool is_valid(halfedge_handle h) const noexcept { return h.index < halfedges_.size() && !edge_deleted_[h.index >> 1]; }
+    // With nothing deleted no flag is read: add_face checks every corner, and a mesh built
+    // without deletions keeps its flag arrays unwritten (their pages never mapped).
+    bool is_valid(vertex_handle v) const noexcept {
+        return v.index < positions_.size() && (deleted_vertices_ == 0 || !vertex_deleted_[v.index]);
+    }
+    bool is_valid(face_handle f) const noexcept {
+        return f.index < faces_.size() && (deleted_faces_ == 0 || !face_deleted_[f.index]);
+    }
+    bool is_valid(edge_handle e) const noexcept {
+        return e.index < halfedges_.size() / 2 && (deleted_edges_ == 0 || !edge_deleted_[e.index]);
+    }
+    bool is_valid(halfedge_handle h) const noexcept {
+        return h.index < halfedges_.size() && (deleted_edges_ == 0 || !edge_deleted_[h.index >> 1]);
+    }
 
     ///@}
 
@@ -300,6 +311,7 @@ public:
         }
         free_vertices_.ensure_room(positions_.size() + 1);
         vertex_deleted_.ensure(positions_.size() + 1);
+        vertex_out_.ensure_room(positions_.size() + 1);  // so that no push_back fails after the first
         positions_.push_back(p);
         vertex_out_.push_back({});
         vertex_props_.push_back();
@@ -474,9 +486,9 @@ private:
         }
         m.vertex_out_.assign(nv, halfedge_handle{});
         m.vertex_deleted_.ensure(nv);
-        m.halfedges_.resize(2 * edges);
+        m.halfedges_.resize_for_overwrite(2 * edges);  // every record is written below, first touched there
         m.edge_deleted_.ensure(edges);
-        m.faces_.resize(nf);
+        m.faces_.resize_for_overwrite(nf);
         m.face_deleted_.ensure(nf);
         std::fill(stamp.begin(), stamp.end(), none);  // now: the boundary halfedge leaving each vertex
         for (std::size_t f = 0; f < nf; ++f) {
@@ -493,7 +505,8 @@ private:
                         return fail(errc::non_manifold, "from_polygons: vertex " + std::to_string(from) +
                                                             " joins two or more separate fans of faces", static_cast<long long>(from));
                     stamp[from] = h ^ 1u;
-                    m.halfedges_[h ^ 1u].target = vertex_handle(corners[k]);
+                    // next and prev: the boundary loops below
+                    m.halfedges_[h ^ 1u] = {vertex_handle(corners[k]), {}, {}, {}};
                 }
             }
             m.faces_[f] = halfedge_handle(corner_h[e - 1]);
@@ -782,6 +795,7 @@ private:
     halfedge_handle append_edge(vertex_handle a, vertex_handle b) {
         free_edges_.ensure_room(halfedges_.size() / 2 + 1);
         edge_deleted_.ensure(halfedges_.size() / 2 + 1);
+        halfedges_.ensure_room(halfedges_.size() + 2);  // both halfedges or neither
         const auto h = halfedge_handle(halfedges_.size());
         halfedges_.push_back({b, {}, {}, {}});
         halfedges_.push_back({a, {}, {}, {}});
@@ -808,13 +822,15 @@ private:
     // A face stores its outer-loop halfedge only (4 bytes, as CGAL's does): the few faces with
     // holes find their ring list through face_rings_ (list index + 1; 0 for none). Deleted flags
     // read as zero until the first erasure writes one, and hold at least each index bound so
-    // that erasing never allocates.
+    // that erasing never allocates. The connectivity records grow by realloc (trivial_array):
+    // reserve() before a subdivision moves them without a copy and keeps their pages. Positions
+    // stay a std::vector so that assign_polygons can take the caller's vector whole.
     std::vector<point> positions_;
-    std::vector<halfedge_handle> vertex_out_;
+    detail::trivial_array<halfedge_handle> vertex_out_;
     detail::zeroed_array<std::uint8_t> vertex_deleted_;
-    std::vector<halfedge_record> halfedges_;
+    detail::trivial_array<halfedge_record> halfedges_;
     detail::zeroed_array<std::uint8_t> edge_deleted_;
-    std::vector<halfedge_handle> faces_;
+    detail::trivial_array<halfedge_handle> faces_;
     detail::zeroed_array<std::uint8_t> face_deleted_;
     detail::zeroed_array<std::uint32_t> face_rings_;
     std::vector<std::vector<halfedge_handle>> ring_lists_;
