@@ -499,6 +499,16 @@ double seconds(F&& f) {
     return (cpu_now() - t0) / repeat;
 }
 
+/// Seconds per build: `make()` builds a fresh mesh `repeat` times; every mesh is kept until the
+/// timing ends, so freeing it (munmap of its arrays) counts for no side, and no repetition
+/// builds into an earlier one's mesh.
+template <class Make>
+double build_seconds(Make&& make) {
+    std::vector<decltype(make())> kept;
+    kept.reserve(std::size_t(repeat));
+    return seconds([&] { kept.push_back(make()); });
+}
+
 double median(std::vector<double> v) {
     std::sort(v.begin(), v.end());
     const auto n = v.size();
@@ -515,14 +525,14 @@ void run_pairs(int rounds, const std::string& workload_filter, const std::string
         const std::string mesh = g->name + " (" + std::to_string(g->faces()) + " F)";
         // Shared prebuilt meshes for the traversal and flip workloads.
         auto he = std::make_shared<hmira::halfedge_mesh>(bulk_halfedge(*g));
-        auto bulk = [g] { return seconds([&] { auto m = bulk_halfedge(*g); sink = double(m.edge_count()); }); };
-        auto one_by_one = [g] { return seconds([&] { auto m = built<hmira::halfedge_mesh>(*g); sink = double(m.edge_count()); }); };
+        auto bulk = [g] { return build_seconds([&] { return std::make_unique<hmira::halfedge_mesh>(bulk_halfedge(*g)); }); };
+        auto one_by_one = [g] { return build_seconds([&] { return std::make_unique<hmira::halfedge_mesh>(built<hmira::halfedge_mesh>(*g)); }); };
         auto he_ring = [he] { return seconds([&] { sink = one_ring_sum(*he).x; }); };
         auto one_by_one_before = [g] {
-            return seconds([&] {
-                hmira::halfedge_mesh m;
-                build_through_traits<hmira::halfedge_mesh, halfedge_traits_before>(m, *g);
-                sink = double(m.edge_count());
+            return build_seconds([&] {
+                auto m = std::make_unique<hmira::halfedge_mesh>();
+                build_through_traits<hmira::halfedge_mesh, halfedge_traits_before>(*m, *g);
+                return m;
             });
         };
         auto he_flip = [he] { return seconds([&] { sink = double(hmira::flip_normals(*he)); }); };
@@ -535,13 +545,18 @@ void run_pairs(int rounds, const std::string& workload_filter, const std::string
 #ifdef HMIRA_BENCH_WITH_OPENMESH
         auto om = std::make_shared<om_mesh>(om_built(*g));
         auto om_native_build = [g] {
-            auto m = std::make_unique<om_mesh>();
-            const double t = seconds([&] { om_build_native(*m, *g); });
-            return t;  // destruction outside the timed region
+            return build_seconds([&] {
+                auto m = std::make_unique<om_mesh>();
+                om_build_native(*m, *g);
+                return m;
+            });
         };
         auto om_traits_build = [g] {
-            auto m = std::make_unique<om_mesh>();
-            return seconds([&] { build_through_traits(*m, *g); });
+            return build_seconds([&] {
+                auto m = std::make_unique<om_mesh>();
+                build_through_traits(*m, *g);
+                return m;
+            });
         };
         auto om_native_ring = [om] { return seconds([&] { sink = om_one_ring_native(*om).x; }); };
         pairs.push_back({"build", mesh, "OpenMesh add_face", "halfedge_mesh::from_polygons", om_native_build, bulk, 0.5});
@@ -559,20 +574,32 @@ void run_pairs(int rounds, const std::string& workload_filter, const std::string
         (void)soup_of(*g);
         auto cg = std::make_shared<cgal_mesh>(cgal_built(*g));
         auto cgal_soup_build = [g] {
-            auto m = std::make_unique<cgal_mesh>();
-            return seconds([&] { cgal_build_soup(*m, *g, false); });
+            return build_seconds([&] {
+                auto m = std::make_unique<cgal_mesh>();
+                cgal_build_soup(*m, *g, false);
+                return m;
+            });
         };
         auto cgal_soup_checked = [g] {
-            auto m = std::make_unique<cgal_mesh>();
-            return seconds([&] { cgal_build_soup(*m, *g, true); });
+            return build_seconds([&] {
+                auto m = std::make_unique<cgal_mesh>();
+                cgal_build_soup(*m, *g, true);
+                return m;
+            });
         };
         auto cgal_native_add = [g] {
-            auto m = std::make_unique<cgal_mesh>();
-            return seconds([&] { cgal_build_native(*m, *g); });
+            return build_seconds([&] {
+                auto m = std::make_unique<cgal_mesh>();
+                cgal_build_native(*m, *g);
+                return m;
+            });
         };
         auto cgal_traits_add = [g] {
-            auto m = std::make_unique<cgal_mesh>();
-            return seconds([&] { build_through_traits(*m, *g); });
+            return build_seconds([&] {
+                auto m = std::make_unique<cgal_mesh>();
+                build_through_traits(*m, *g);
+                return m;
+            });
         };
         auto cgal_native_ring = [cg] { return seconds([&] { sink = cgal_one_ring_native(*cg).x; }); };
         pairs.push_back({"build", mesh, "CGAL polygon_soup_to_polygon_mesh", "halfedge_mesh::from_polygons", cgal_soup_build, bulk, 0.5});
