@@ -245,6 +245,12 @@ void surface_columns(const tri& tr, const vec3<double>& n, const vec3<double>& b
     const vec3<double>* p = tr.p;
     const double c = dot(n, p[0]);
     const double slack = 0.5 * (std::abs(n[u]) + std::abs(n[v])) / std::abs(n[D]);
+    // The reach widened by far more than the rounding of the height and slack: a voxel that
+    // touches the plane exactly (at a corner or edge, common with corners on the half-voxel
+    // lattice) must stay a candidate, and the exact tests below decide. The height is within
+    // about the triangle's coordinates (|n[u]|, |n[v]| <= |n[D]|), which bounds the rounding.
+    const double reach_slack =
+        slack + 0x1p-30 * (1 + slack + std::max({std::abs(bl[0]), std::abs(bl[1]), std::abs(bl[2]), std::abs(bh[0]), std::abs(bh[1]), std::abs(bh[2])}));
     const detail::triangle_box_tester tester(p[0], p[1], p[2], 0.5);
     // The separating axes D x edge (the shadow's edge normals in the (u, v) plane) give the
     // same answer for every voxel of a column: a column whose square is outside the shadow is
@@ -286,8 +292,8 @@ void surface_columns(const tri& tr, const vec3<double>& n, const vec3<double>& b
     // comparisons that make reach() empty there.
     auto live_columns = [&](long long& iv0, long long& iv1, double cu) {
         auto height = [&](long long iv) { return (cu - n[v] * double(iv)) / n[D]; };
-        auto below = [&](long long iv) { return (height(iv) + slack) + 0.5 < double(r0[D]); };
-        auto above = [&](long long iv) { return (height(iv) - slack) - 0.5 > double(r1[D]); };
+        auto below = [&](long long iv) { return (height(iv) + reach_slack) + 0.5 < double(r0[D]); };
+        auto above = [&](long long iv) { return (height(iv) - reach_slack) - 0.5 > double(r1[D]); };
         if (n[v] == 0) return !below(iv0) && !above(iv0);
         // The column where the height crosses `level`, clamped to [iv0 - 1, iv1 + 1].
         auto crossing = [&](double level) {
@@ -296,7 +302,7 @@ void surface_columns(const tri& tr, const vec3<double>& n, const vec3<double>& b
             if (!(t < double(iv1 + 1))) return iv1 + 1;
             return fast_floor(t);
         };
-        const double top = double(r1[D]) + 0.5 + slack, bottom = double(r0[D]) - 0.5 - slack;
+        const double top = double(r1[D]) + 0.5 + reach_slack, bottom = double(r0[D]) - 0.5 - reach_slack;
         const bool rising = (n[v] > 0) != (n[D] > 0);  // the height grows with iv
         // First column not in the prefix where `pre` holds, and last not in the suffix where `post` holds.
         auto settle = [&](auto&& pre, auto&& post, double pre_level, double post_level) {
@@ -359,7 +365,7 @@ void surface_columns(const tri& tr, const vec3<double>& n, const vec3<double>& b
         // The voxels of column iv within reach of the plane, [w0, w1]; false if none.
         auto reach = [&](long long iv, long long& w0, long long& w1) {
             const double w = (cu - n[v] * double(iv)) / n[D];
-            return window_range(r0[D], r1[D], std::max(w - slack, bl[D]) - 0.5, std::min(w + slack, bh[D]) + 0.5, w0, w1);
+            return window_range(r0[D], r1[D], std::max(w - reach_slack, bl[D]) - 0.5, std::min(w + reach_slack, bh[D]) + 0.5, w0, w1);
         };
         auto edge_column = [&](long long iv) {
             long long w0, w1;
