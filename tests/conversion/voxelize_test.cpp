@@ -413,20 +413,21 @@ std::pair<long long, long long> compare_with_per_voxel_test(std::initializer_lis
 // The surface walk (rows of columns, the plane test alone where a column lies inside the
 // triangle's shadow, the full test at the shadow's edge) sets exactly the voxels that the
 // per-voxel separating-axis test accepts: in general position, with corners on voxel centres,
-// faces, edges and corners, and for slivers.
+// faces, edges and corners, in a voxel-face plane (touching the voxels on both sides), and for
+// slivers. Before the walk's projections were taken relative to a corner and its reach widened,
+// lattice triangles lost touched voxels at exact ties and face-plane ones lost a whole side.
 TEST(VoxelizeSurface, random_triangles_set_exactly_the_voxels_the_per_voxel_test_accepts) {
-    const auto [tested, touched] = compare_with_per_voxel_test({0, 1, 3}, 400, 20);
+    const auto [tested, touched] = compare_with_per_voxel_test({0, 1, 2, 3}, 400, 20);
     EXPECT_GT(touched, 1000);         // the comparison met many touched voxels
     EXPECT_LT(touched, tested / 10);  // and many untouched ones
 }
 
-// Known defect (found by the test above, not fixed yet): a triangle lying in a voxel-face plane
-// (kind 2, e.g. y = 10.5) leaves touched voxels on one side of the plane empty, since the
-// prepared plane test rounds n.a - r and n.centre separately where the per-voxel test takes
-// n.(a - centre) exactly; and triangles a hair (1e-9) from degenerate (kind 4) disagree both
-// ways. Run with --gtest_also_run_disabled_tests.
-TEST(VoxelizeSurface, DISABLED_triangles_in_a_voxel_face_plane_or_nearly_degenerate_match_the_per_voxel_test) {
-    const auto [tested, touched] = compare_with_per_voxel_test({2, 4}, 300, 21);
+// Triangles a hair (1e-9 voxel) from degenerate: the normal is a difference of nearly equal
+// products, so the walk and the per-voxel test (which rounds differently, subtracting the box
+// centre first) disagree both ways on a few voxels, and neither is exact. Kept as a record (run
+// with --gtest_also_run_disabled_tests); settling it needs exact predicates for the 13 axes.
+TEST(VoxelizeSurface, DISABLED_nearly_degenerate_triangles_match_the_per_voxel_test) {
+    const auto [tested, touched] = compare_with_per_voxel_test({4}, 300, 21);
     EXPECT_GT(touched, 1000);
     EXPECT_LT(touched, tested / 10);
 }

@@ -261,8 +261,9 @@ void surface_columns(const tri& tr, const vec3<double>& n, const vec3<double>& b
         const vec3<double> ed = p[(e + 1) % 3] - p[e];
         axis_u[e] = -ed[v];
         axis_v[e] = ed[u];
-        const double pa = axis_u[e] * p[0][u] + axis_v[e] * p[0][v], pb = axis_u[e] * p[1][u] + axis_v[e] * p[1][v],
-                     pc = axis_u[e] * p[2][u] + axis_v[e] * p[2][v];
+        // Relative to corner 0, as the tester's axes (a column side on an edge's line ties exactly).
+        const double pa = 0, pb = axis_u[e] * (p[1][u] - p[0][u]) + axis_v[e] * (p[1][v] - p[0][v]),
+                     pc = axis_u[e] * (p[2][u] - p[0][u]) + axis_v[e] * (p[2][v] - p[0][v]);
         const double r = 0.5 * (std::abs(axis_u[e]) + std::abs(axis_v[e]));
         lo2[e] = std::min({pa, pb, pc}) - r;
         hi2[e] = std::max({pa, pb, pc}) + r;
@@ -328,13 +329,13 @@ void surface_columns(const tri& tr, const vec3<double>& n, const vec3<double>& b
         double vlo = double(r0[v]), vhi = double(r1[v]);
         double base[3];
         for (int e = 0; e < 3; ++e) {
-            base[e] = axis_u[e] * fu;
+            base[e] = axis_u[e] * (fu - p[0][u]);
             if (axis_v[e] > 0) {
-                vlo = std::max(vlo, (lo2[e] - base[e]) / axis_v[e] - 1);
-                vhi = std::min(vhi, (hi2[e] - base[e]) / axis_v[e] + 1);
+                vlo = std::max(vlo, (lo2[e] - base[e]) / axis_v[e] + p[0][v] - 1);
+                vhi = std::min(vhi, (hi2[e] - base[e]) / axis_v[e] + p[0][v] + 1);
             } else if (axis_v[e] < 0) {
-                vlo = std::max(vlo, (hi2[e] - base[e]) / axis_v[e] - 1);
-                vhi = std::min(vhi, (lo2[e] - base[e]) / axis_v[e] + 1);
+                vlo = std::max(vlo, (hi2[e] - base[e]) / axis_v[e] + p[0][v] - 1);
+                vhi = std::min(vhi, (lo2[e] - base[e]) / axis_v[e] + p[0][v] + 1);
             }
         }
         if (!(vlo <= vhi)) continue;
@@ -346,7 +347,7 @@ void surface_columns(const tri& tr, const vec3<double>& n, const vec3<double>& b
             const double fv = double(iv);
             bool outside = false, inner = true;
             for (int e = 0; e < 3; ++e) {
-                const double q = base[e] + axis_v[e] * fv;
+                const double q = base[e] + axis_v[e] * (fv - p[0][v]);
                 outside |= (q < lo2[e]) | (q > hi2[e]);
                 inner &= (q >= inner_lo[e]) & (q <= inner_hi[e]);
             }
