@@ -2,10 +2,15 @@
 // determinism, and the voxelize -> marching cubes round trip on real closed meshes.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <initializer_list>
+#include <iomanip>
 #include <random>
+#include <utility>
 
 #include <hmira/algorithms/conversion/marching_cubes.hpp>
 #include <hmira/algorithms/generators/platonic_solids.hpp>
@@ -320,6 +325,124 @@ TEST(TriangleBox, prepared_test_agrees_with_direct_separating_axis_test) {
     EXPECT_EQ(agree, total);
     EXPECT_GT(overlaps, 0);
     EXPECT_LT(overlaps, total);  // both outcomes occur, so the comparison means something
+}
+
+}  // namespace
+
+namespace {
+
+// Whether the closed box of voxel (i, j, k) (unit voxels centred on integers) meets triangle
+// (a, b, c): the three box normals here, the other ten axes by the direct separating-axis test.
+bool box_meets_triangle(std::size_t i, std::size_t j, std::size_t k, const vec3<double>& a, const vec3<double>& b, const vec3<double>& c) {
+    const vec3<double> centre{double(i), double(j), double(k)};
+    for (std::size_t q = 0; q < 3; ++q)
+        if (std::min({a[q], b[q], c[q]}) > centre[q] + 0.5 || std::max({a[q], b[q], c[q]}) < centre[q] - 0.5) return false;
+    return hmira::detail::triangle_box_overlap(centre, 0.5, a, b, c);
+}
+
+// A random triangle of one of the kinds the surface walk treats specially: general position;
+// corners on the half-voxel lattice (on voxel centres, faces, edges and corners, often axis-
+// aligned or edge-on); flat in one axis (its normal along it); long slivers; one corner a hair
+// off another's edge.
+std::array<vec3<double>, 3> random_triangle(std::mt19937& rng, int kind) {
+    std::uniform_real_distribution<double> u(1.0, 13.0);
+    std::uniform_int_distribution<int> half(2, 26);
+    auto lattice = [&] { return vec3<double>{half(rng) * 0.5, half(rng) * 0.5, half(rng) * 0.5}; };
+    auto point = [&] { return vec3<double>{u(rng), u(rng), u(rng)}; };
+    switch (kind) {
+        case 0: return {point(), point(), point()};
+        case 1: return {lattice(), lattice(), lattice()};
+        case 2: {
+            std::array<vec3<double>, 3> t{point(), point(), point()};
+            const std::size_t axis = std::size_t(half(rng) % 3);
+            const double level = half(rng) % 2 ? half(rng) * 0.5 : u(rng);  // on a voxel face or centre plane, or anywhere
+            for (auto& p : t) p[axis] = level;
+            return t;
+        }
+        case 3: {
+            const vec3<double> a = point(), b = point();
+            return {a, b, a + (b - a) * 0.5 + vec3<double>{0.05, -0.03, 0.02}};
+        }
+        default: {
+            const vec3<double> a = lattice(), b = lattice();
+            return {a, b, a + (b - a) * 0.25 + vec3<double>{0, 0, 1e-9}};
+        }
+    }
+}
+
+// Voxelizes random triangles of the given kinds alone (surface mode, one thread) and compares
+// every voxel of the grid with the per-voxel separating-axis test. Reports the first
+// disagreements of each kind; returns the voxels compared and how many the test accepts.
+std::pair<long long, long long> compare_with_per_voxel_test(std::initializer_list<int> kinds, int trials, unsigned seed) {
+    std::mt19937 rng(seed);
+    const hmira::grid_geometry geo{{15, 15, 15}, {0, 0, 0}, {1, 1, 1}};
+    long long touched = 0, tested = 0;
+    for (int kind : kinds) {
+        long long wrong[2] = {};  // voxels set that the triangle does not touch, touched ones left empty
+        for (int trial = 0; trial < trials; ++trial) {
+            const auto t = random_triangle(rng, kind);
+            hmira::face_vertex_mesh m;
+            auto a = m.add_vertex(t[0]), b = m.add_vertex(t[1]), c = m.add_vertex(t[2]);
+            EXPECT_TRUE(m.add_face({a, b, c}));
+            auto v = hmira::voxelize(m, geo, {.mode = hmira::voxelize_mode::surface, .allow_degenerate = true, .threads = 1});
+            if (!v) {
+                ADD_FAILURE() << v.error().message;
+                continue;
+            }
+            const bool degenerate = v->degenerate_triangles == 1;  // adds no voxels of its own (allow_degenerate)
+            for (std::size_t k = 0; k < 15; ++k)
+                for (std::size_t j = 0; j < 15; ++j)
+                    for (std::size_t i = 0; i < 15; ++i) {
+                        const bool expected = !degenerate && box_meets_triangle(i, j, k, t[0], t[1], t[2]);
+                        touched += expected;
+                        ++tested;
+                        if ((v->voxels.value(i, j, k) != 0) == expected) continue;
+                        if (++wrong[expected] <= 2)
+                            ADD_FAILURE() << "kind " << kind << " trial " << trial << ": voxel " << i << ' ' << j << ' ' << k
+                                          << (expected ? " touched but left empty" : " set but not touched") << "; triangle "
+                                          << std::setprecision(17) << t[0].x << ' ' << t[0].y << ' ' << t[0].z << ", " << t[1].x << ' '
+                                          << t[1].y << ' ' << t[1].z << ", " << t[2].x << ' ' << t[2].y << ' ' << t[2].z;
+                    }
+        }
+        EXPECT_EQ(wrong[0], 0) << "kind " << kind << ": voxels set that the triangle does not touch";
+        EXPECT_EQ(wrong[1], 0) << "kind " << kind << ": voxels the triangle touches left empty";
+    }
+    return {tested, touched};
+}
+
+// The surface walk (rows of columns, the plane test alone where a column lies inside the
+// triangle's shadow, the full test at the shadow's edge) sets exactly the voxels that the
+// per-voxel separating-axis test accepts: in general position, with corners on voxel centres,
+// faces, edges and corners, in a voxel-face plane (touching the voxels on both sides), and for
+// slivers. Before the walk's projections were taken relative to a corner and its reach widened,
+// lattice triangles lost touched voxels at exact ties and face-plane ones lost a whole side.
+TEST(VoxelizeSurface, random_triangles_set_exactly_the_voxels_the_per_voxel_test_accepts) {
+    const auto [tested, touched] = compare_with_per_voxel_test({0, 1, 2, 3}, 400, 20);
+    EXPECT_GT(touched, 1000);         // the comparison met many touched voxels
+    EXPECT_LT(touched, tested / 10);  // and many untouched ones
+}
+
+// Triangles a hair (1e-9 voxel) from degenerate: the normal is a difference of nearly equal
+// products, so the walk and the per-voxel test (which rounds differently, subtracting the box
+// centre first) disagree both ways on a few voxels, and neither is exact. Kept as a record (run
+// with --gtest_also_run_disabled_tests); settling it needs exact predicates for the 13 axes.
+TEST(VoxelizeSurface, DISABLED_nearly_degenerate_triangles_match_the_per_voxel_test) {
+    const auto [tested, touched] = compare_with_per_voxel_test({4}, 300, 21);
+    EXPECT_GT(touched, 1000);
+    EXPECT_LT(touched, tested / 10);
+}
+
+// Exactly collinear corners: refused by default, accepted with no voxels of their own.
+TEST(VoxelizeSurface, a_zero_area_triangle_is_refused_or_adds_no_voxels) {
+    hmira::face_vertex_mesh m;
+    auto a = m.add_vertex({1, 1, 1}), b = m.add_vertex({5, 3, 7}), c = m.add_vertex({3, 2, 4});
+    ASSERT_TRUE(m.add_face({a, b, c}));
+    const hmira::grid_geometry geo{{9, 9, 9}, {0, 0, 0}, {1, 1, 1}};
+    EXPECT_FALSE(hmira::voxelize(m, geo, {.mode = hmira::voxelize_mode::surface}));
+    auto v = hmira::voxelize(m, geo, {.mode = hmira::voxelize_mode::surface, .allow_degenerate = true});
+    ASSERT_TRUE(v);
+    EXPECT_EQ(v->degenerate_triangles, 1u);
+    EXPECT_EQ(v->voxels.count(), 0u);
 }
 
 }  // namespace

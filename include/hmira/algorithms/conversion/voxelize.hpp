@@ -245,6 +245,12 @@ void surface_columns(const tri& tr, const vec3<double>& n, const vec3<double>& b
     const vec3<double>* p = tr.p;
     const double c = dot(n, p[0]);
     const double slack = 0.5 * (std::abs(n[u]) + std::abs(n[v])) / std::abs(n[D]);
+    // The reach widened by far more than the rounding of the height and slack: a voxel that
+    // touches the plane exactly (at a corner or edge, common with corners on the half-voxel
+    // lattice) must stay a candidate, and the exact tests below decide. The height is within
+    // about the triangle's coordinates (|n[u]|, |n[v]| <= |n[D]|), which bounds the rounding.
+    const double reach_slack =
+        slack + 0x1p-30 * (1 + slack + std::max({std::abs(bl[0]), std::abs(bl[1]), std::abs(bl[2]), std::abs(bh[0]), std::abs(bh[1]), std::abs(bh[2])}));
     const detail::triangle_box_tester tester(p[0], p[1], p[2], 0.5);
     // The separating axes D x edge (the shadow's edge normals in the (u, v) plane) give the
     // same answer for every voxel of a column: a column whose square is outside the shadow is
@@ -255,8 +261,9 @@ void surface_columns(const tri& tr, const vec3<double>& n, const vec3<double>& b
         const vec3<double> ed = p[(e + 1) % 3] - p[e];
         axis_u[e] = -ed[v];
         axis_v[e] = ed[u];
-        const double pa = axis_u[e] * p[0][u] + axis_v[e] * p[0][v], pb = axis_u[e] * p[1][u] + axis_v[e] * p[1][v],
-                     pc = axis_u[e] * p[2][u] + axis_v[e] * p[2][v];
+        // Relative to corner 0, as the tester's axes (a column side on an edge's line ties exactly).
+        const double pa = 0, pb = axis_u[e] * (p[1][u] - p[0][u]) + axis_v[e] * (p[1][v] - p[0][v]),
+                     pc = axis_u[e] * (p[2][u] - p[0][u]) + axis_v[e] * (p[2][v] - p[0][v]);
         const double r = 0.5 * (std::abs(axis_u[e]) + std::abs(axis_v[e]));
         lo2[e] = std::min({pa, pb, pc}) - r;
         hi2[e] = std::max({pa, pb, pc}) + r;
@@ -286,8 +293,8 @@ void surface_columns(const tri& tr, const vec3<double>& n, const vec3<double>& b
     // comparisons that make reach() empty there.
     auto live_columns = [&](long long& iv0, long long& iv1, double cu) {
         auto height = [&](long long iv) { return (cu - n[v] * double(iv)) / n[D]; };
-        auto below = [&](long long iv) { return (height(iv) + slack) + 0.5 < double(r0[D]); };
-        auto above = [&](long long iv) { return (height(iv) - slack) - 0.5 > double(r1[D]); };
+        auto below = [&](long long iv) { return (height(iv) + reach_slack) + 0.5 < double(r0[D]); };
+        auto above = [&](long long iv) { return (height(iv) - reach_slack) - 0.5 > double(r1[D]); };
         if (n[v] == 0) return !below(iv0) && !above(iv0);
         // The column where the height crosses `level`, clamped to [iv0 - 1, iv1 + 1].
         auto crossing = [&](double level) {
@@ -296,7 +303,7 @@ void surface_columns(const tri& tr, const vec3<double>& n, const vec3<double>& b
             if (!(t < double(iv1 + 1))) return iv1 + 1;
             return fast_floor(t);
         };
-        const double top = double(r1[D]) + 0.5 + slack, bottom = double(r0[D]) - 0.5 - slack;
+        const double top = double(r1[D]) + 0.5 + reach_slack, bottom = double(r0[D]) - 0.5 - reach_slack;
         const bool rising = (n[v] > 0) != (n[D] > 0);  // the height grows with iv
         // First column not in the prefix where `pre` holds, and last not in the suffix where `post` holds.
         auto settle = [&](auto&& pre, auto&& post, double pre_level, double post_level) {
@@ -322,13 +329,13 @@ void surface_columns(const tri& tr, const vec3<double>& n, const vec3<double>& b
         double vlo = double(r0[v]), vhi = double(r1[v]);
         double base[3];
         for (int e = 0; e < 3; ++e) {
-            base[e] = axis_u[e] * fu;
+            base[e] = axis_u[e] * (fu - p[0][u]);
             if (axis_v[e] > 0) {
-                vlo = std::max(vlo, (lo2[e] - base[e]) / axis_v[e] - 1);
-                vhi = std::min(vhi, (hi2[e] - base[e]) / axis_v[e] + 1);
+                vlo = std::max(vlo, (lo2[e] - base[e]) / axis_v[e] + p[0][v] - 1);
+                vhi = std::min(vhi, (hi2[e] - base[e]) / axis_v[e] + p[0][v] + 1);
             } else if (axis_v[e] < 0) {
-                vlo = std::max(vlo, (hi2[e] - base[e]) / axis_v[e] - 1);
-                vhi = std::min(vhi, (lo2[e] - base[e]) / axis_v[e] + 1);
+                vlo = std::max(vlo, (hi2[e] - base[e]) / axis_v[e] + p[0][v] - 1);
+                vhi = std::min(vhi, (lo2[e] - base[e]) / axis_v[e] + p[0][v] + 1);
             }
         }
         if (!(vlo <= vhi)) continue;
@@ -340,7 +347,7 @@ void surface_columns(const tri& tr, const vec3<double>& n, const vec3<double>& b
             const double fv = double(iv);
             bool outside = false, inner = true;
             for (int e = 0; e < 3; ++e) {
-                const double q = base[e] + axis_v[e] * fv;
+                const double q = base[e] + axis_v[e] * (fv - p[0][v]);
                 outside |= (q < lo2[e]) | (q > hi2[e]);
                 inner &= (q >= inner_lo[e]) & (q <= inner_hi[e]);
             }
@@ -359,7 +366,7 @@ void surface_columns(const tri& tr, const vec3<double>& n, const vec3<double>& b
         // The voxels of column iv within reach of the plane, [w0, w1]; false if none.
         auto reach = [&](long long iv, long long& w0, long long& w1) {
             const double w = (cu - n[v] * double(iv)) / n[D];
-            return window_range(r0[D], r1[D], std::max(w - slack, bl[D]) - 0.5, std::min(w + slack, bh[D]) + 0.5, w0, w1);
+            return window_range(r0[D], r1[D], std::max(w - reach_slack, bl[D]) - 0.5, std::min(w + reach_slack, bh[D]) + 0.5, w0, w1);
         };
         auto edge_column = [&](long long iv) {
             long long w0, w1;

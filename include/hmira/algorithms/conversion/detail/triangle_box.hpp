@@ -43,18 +43,23 @@ inline bool triangle_box_overlap(const vec3<double>& center, double h, vec3<doub
 /// each, so a box costs ten dot products with its centre.
 class triangle_box_tester {
 public:
-    triangle_box_tester(const vec3<double>& a, const vec3<double>& b, const vec3<double>& c, double h) {
+    triangle_box_tester(const vec3<double>& a, const vec3<double>& b, const vec3<double>& c, double h) : origin_(a) {
         const vec3<double> e[3] = {b - a, c - b, a - c};
-        add(cross(e[0], e[1]), a, b, c, h);
+        // Projections are taken relative to corner a, as the direct test takes them relative
+        // to the box: a box face in the triangle's plane (or through an edge) then ties
+        // exactly instead of by how n.a and n.centre happen to round.
+        const vec3<double> zero{0, 0, 0}, rb = b - a, rc = c - a;
+        add(cross(e[0], e[1]), zero, rb, rc, h);
         for (const auto& ed : e) {
-            add({0, -ed.z, ed.y}, a, b, c, h);
-            add({ed.z, 0, -ed.x}, a, b, c, h);
-            add({-ed.y, ed.x, 0}, a, b, c, h);
+            add({0, -ed.z, ed.y}, zero, rb, rc, h);
+            add({ed.z, 0, -ed.x}, zero, rb, rc, h);
+            add({-ed.y, ed.x, 0}, zero, rb, rc, h);
         }
     }
     /// Whether the closed box of half-size h around `center` meets the triangle (the box
     /// normals are the caller's: bounding boxes must overlap).
-    bool overlaps(const vec3<double>& center) const noexcept {
+    bool overlaps(const vec3<double>& centre) const noexcept {
+        const vec3<double> center = centre - origin_;
         bool ok = true;
         for (int q = 0; q < 10; ++q) {
             const double p = axis_[q].x * center.x + axis_[q].y * center.y + axis_[q].z * center.z;
@@ -66,7 +71,8 @@ public:
     /// overlaps() for a box whose centre is already known to pass the three axes D x edge (the
     /// edge normals of the triangle's shadow along axis D): the other seven axes only.
     template <int D>
-    bool overlaps_off(const vec3<double>& center) const noexcept {
+    bool overlaps_off(const vec3<double>& centre) const noexcept {
+        const vec3<double> center = centre - origin_;
         bool ok = true;
         for (int q = 0; q < 10; ++q) {
             if (q > 0 && (q - 1) % 3 == D) continue;
@@ -78,7 +84,8 @@ public:
 
     /// The plane's part of overlaps() alone: whether the triangle's plane meets the box. Where
     /// the box's shadow along an axis lies inside the triangle's, this decides overlaps().
-    bool meets_plane(const vec3<double>& center) const noexcept {
+    bool meets_plane(const vec3<double>& centre) const noexcept {
+        const vec3<double> center = centre - origin_;
         const double p = axis_[0].x * center.x + axis_[0].y * center.y + axis_[0].z * center.z;
         return p >= lo_[0] && p <= hi_[0];
     }
@@ -93,6 +100,7 @@ private:
         hi_[n_] = std::max({pa, pb, pc}) + r;
         ++n_;
     }
+    vec3<double> origin_;
     vec3<double> axis_[10];
     double lo_[10], hi_[10];
     int n_ = 0;
