@@ -183,24 +183,6 @@ struct mesh_traits<CGAL::Surface_mesh<P>> {
         m.reserve(static_cast<typename mesh::size_type>(vertices), static_cast<typename mesh::size_type>(edges),
                   static_cast<typename mesh::size_type>(faces));
     }
-    /// Optional (not a concept requirement): sets the index bounds to these, as
-    /// Surface_mesh::resize. Growing appends live, unlinked elements (null links, null faces,
-    /// default points, not removed), all properties at their defaults, without one call per
-    /// element and property array (what adding them one at a time costs); the caller links
-    /// every one before anything else reads the mesh. Shrinking drops elements from the end,
-    /// which must be unreferenced. Within reserved capacity it never reallocates. O(change).
-    static void resize(mesh& m, std::size_t vertices, std::size_t edges, std::size_t faces) {
-        m.resize(static_cast<typename mesh::size_type>(vertices), static_cast<typename mesh::size_type>(edges),
-                 static_cast<typename mesh::size_type>(faces));
-    }
-    /// Optional (not a concept requirement): the handle of the element at an index below its
-    /// bound (Surface_mesh's handles are their indices), for callers that made elements with
-    /// resize. O(1).
-    static VH vertex_at(const mesh&, std::size_t i) { return VH(static_cast<typename mesh::size_type>(i)); }
-    /// As vertex_at, for edges.
-    static EH edge_at(const mesh&, std::size_t i) { return EH(static_cast<typename mesh::size_type>(i)); }
-    /// As vertex_at, for faces.
-    static FH face_at(const mesh&, std::size_t i) { return FH(static_cast<typename mesh::size_type>(i)); }
 
     /// CGAL's add_face (CGAL::Euler::add_face), with its failure (a null face) turned into an
     /// error; handles are checked first so CGAL never sees a bad one.
