@@ -167,6 +167,20 @@ struct traits_base {
     static VH add_vertex(Mesh& m, const vec3<scalar>& p) { return m.add_vertex(typename Mesh::Point(p.x, p.y, p.z)); }
     /// Optional (not a concept requirement): room for this many elements, as OpenMesh's reserve.
     static void reserve(Mesh& m, std::size_t vertices, std::size_t edges, std::size_t faces) { m.reserve(vertices, edges, faces); }
+    /// Optional (not a concept requirement): sets the index bounds to these, as OpenMesh's
+    /// resize. Growing appends live, unlinked elements (invalid links and faces, default
+    /// points, status clear), every property at its default, without resizing every property
+    /// array once per element (what new_vertex, new_edge and new_face do); the caller links
+    /// every one before anything else reads the mesh. Shrinking drops elements from the end,
+    /// which must be unreferenced. Within reserved capacity it never reallocates. O(change).
+    static void resize(Mesh& m, std::size_t vertices, std::size_t edges, std::size_t faces) { m.resize(vertices, edges, faces); }
+    /// Optional (not a concept requirement): the handle of the element at an index below its
+    /// bound, for callers that made elements with resize. O(1).
+    static VH vertex_at(const Mesh&, std::size_t i) { return VH(static_cast<int>(i)); }
+    /// As vertex_at, for edges.
+    static EH edge_at(const Mesh&, std::size_t i) { return EH(static_cast<int>(i)); }
+    /// As vertex_at, for faces.
+    static FH face_at(const Mesh&, std::size_t i) { return FH(static_cast<int>(i)); }
 
     /// OpenMesh's add_face, with its failure (an invalid handle and a line on omerr) turned
     /// into an error; the handles are checked first so OpenMesh never sees a bad one.

@@ -1,10 +1,12 @@
 // hmira/algorithms/subdivision/catmull_clark.hpp
 // Catmull-Clark subdivision of any polygon mesh, boundaries included, built from the local
-// operators: every edge split at its edge point, then each face cut into quads around a new
-// face-centre vertex (make_edge_vertex, then make_edge_face), and the old vertices moved.
+// operators' links: every edge split at its edge point, then each face cut into quads around a
+// new face-centre vertex (make_edge_vertex's, then make_edge_face's links), and the old
+// vertices moved.
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cassert>
 #include <concepts>
 #include <cstddef>
@@ -15,9 +17,8 @@
 #include <vector>
 
 #include "../../core/progress.hpp"
-#include "../euler/make_edge_face.hpp"
-#include "../euler/make_edge_vertex.hpp"
 #include "../triangle/split_edge.hpp"
+#include "detail/new_elements.hpp"
 #include "detail/reserve.hpp"
 
 namespace hmira {
@@ -70,6 +71,7 @@ struct cc_workspace {
     std::vector<std::uint8_t> boundary_edges;  // saturates at 3: only "none", "two" and "more" matter
     std::vector<typename T::face_handle> faces;
     std::vector<typename T::halfedge_handle> corners;
+    std::array<std::size_t, 3> room{};  // the vertex, edge and face index bounds the mesh has capacity for
 
     void reserve(std::size_t vertex_bound, std::size_t face_bound, std::size_t max_degree) {
         vertex_point.reserve(vertex_bound);
@@ -163,13 +165,16 @@ bool catmull_clark_level(M& mesh, cc_workspace<M, T>& w, progress_gate& gate) {
     // Face by face, so that each is finished while its elements are still in cache: the
     // face's edges not split yet (both ends old) are split at their edge points (split_edge's
     // links, without its checks: the preconditions above make them pass), then the face, now a
-    // 2n-gon alternating old vertices and edge points, becomes n quads: a spike from the first
-    // edge point to the face point, then an edge from the face point to each further edge
-    // point, each closing one quad (make_edge_face walks only that quad). An edge point is the
-    // average of the edge's two ends and the two face points beside it, or the midpoint on a
-    // boundary: the ends are old vertices not moved yet, and an edge not split yet has no
-    // finished face beside it, so the face across it is still the old one (splits keep faces).
-    using S = typename T::scalar;
+    // 2n-gon alternating old vertices and edge points, becomes n quads around its face point:
+    // the links of make_edge_vertex (a spike from the first edge point to the face point) and
+    // of make_edge_face from the face point to each further edge point, each closing one quad,
+    // written at once without their checks (the 2n-gon is known) and without re-pointing the
+    // shrinking rest of the face after each quad. An edge point is the average of the edge's
+    // two ends and the two face points beside it, or the midpoint on a boundary: the ends are
+    // old vertices not moved yet, and an edge not split yet has no finished face beside it, so
+    // the face across it is still the old one (splits keep faces). New elements come from
+    // `make` (in bulk where the model allows) in the order those operators would make them.
+    new_elements<M, T> make(mesh, w.room);
     const auto is_old = [&](typename T::vertex_handle v) { return std::size_t(T::vertex_index(mesh, v)) < vertex_bound; };
     for (std::size_t i = 0; i < w.faces.size(); ++i) {
         const F f = w.faces[i];
@@ -184,20 +189,47 @@ bool catmull_clark_level(M& mesh, cc_workspace<M, T>& w, progress_gate& gate) {
                 const F g = T::face(mesh, o);
                 const vec3<double> ends = dt::position_of<M, T>(mesh, T::target(mesh, x)) + dt::position_of<M, T>(mesh, T::target(mesh, o));
                 const vec3<double> q = g == T::null_face() ? ends * 0.5 : (ends + c + w.face_point[T::face_index(mesh, g)]) * 0.25;
-                const auto v = T::add_vertex(mesh, vec3<S>{S(q.x), S(q.y), S(q.z)});
-                x = dt::split_links<M, T>(mesh, x, v, false, false);  // x now ends at v; continue after the new half
+                x = dt::split_links<M, T>(mesh, x, make.vertex(q), false, false, make);  // x now ends at the edge point; continue after the new half
                 w.corners.push_back(T::prev(mesh, x));
             }
             x = T::next(mesh, x);
         } while (x != start);
-        auto spike = make_edge_vertex<M, T>(mesh, w.corners[0], vec3<S>{S(c.x), S(c.y), S(c.z)});
-        assert(spike);
-        const H into_centre = spike.value().halfedge;  // cannot fail: corners[0] is a live halfedge
+        // corners[k] ends at edge point k; next(corners[k]) runs on to the next old vertex,
+        // whose next is corners[k + 1]. Quad k (k >= 1) is corners[k], the new edge's half
+        // into the centre, the half out of the centre made for quad k - 1, next(corners[k-1]);
+        // f keeps quad 0. Each next(corners[k]) is read before corners[k]'s next changes.
+        const H first = w.corners[0];
+        H side = T::next(mesh, first);  // next(corners[k - 1])
+        const auto centre = make.vertex(c);
+        const H spike = make.edge(T::target(mesh, first), centre);  // edge point 0 -> centre
+        H out_of_centre = T::opposite(mesh, spike);                 // centre -> edge point k - 1
         for (std::size_t k = 1; k < w.corners.size(); ++k) {
-            auto quad = make_edge_face<M, T>(mesh, into_centre, w.corners[k]);
-            assert(quad);
-            (void)quad.value();  // cannot fail: both corners lie on f's outer loop, at different vertices
+            const H corner = w.corners[k];
+            const H next_side = T::next(mesh, corner);
+            const H a = make.edge(centre, T::target(mesh, corner));  // centre -> edge point k
+            const H b = T::opposite(mesh, a);
+            const F g = make.face();
+            T::set_next(mesh, corner, b);
+            T::set_next(mesh, b, out_of_centre);
+            T::set_next(mesh, out_of_centre, side);
+            T::set_face(mesh, corner, g);
+            T::set_face(mesh, b, g);
+            T::set_face(mesh, out_of_centre, g);
+            T::set_face(mesh, side, g);
+            T::set_face_halfedge(mesh, g, b);
+            out_of_centre = a;
+            side = next_side;
         }
+        const H stored = T::face_halfedge(mesh, f);
+        T::set_next(mesh, first, spike);
+        T::set_next(mesh, spike, out_of_centre);
+        T::set_next(mesh, out_of_centre, side);
+        T::set_face(mesh, spike, f);
+        T::set_face(mesh, out_of_centre, f);
+        // As make_edge_face: a stored halfedge that went to another quad gives way to the
+        // last edge out of the centre.
+        if (stored != first && stored != side) T::set_face_halfedge(mesh, f, out_of_centre);
+        T::set_vertex_halfedge(mesh, centre, T::opposite(mesh, spike));
         if ((i + 1) % block == 0 && !gate.advance(1)) return false;
     }
     for (auto v : T::vertices(mesh)) {
@@ -290,6 +322,7 @@ template <class M, class T = default_traits<M>>
     detail::subdivision::reserve_room<M, T>(mesh, vertex_bound, edge_bound, face_bound);
     [[maybe_unused]] const detail::subdivision::appending_guard<M> appending(mesh);  // new vertices are told by index
     ds::cc_workspace<M, T> work;
+    work.room = {vertex_bound, edge_bound, face_bound};
     work.reserve(vertex_bound - std::size_t(counts.vertices - largest_input.vertices), face_bound - std::size_t(counts.faces - largest_input.faces),
                  max_degree);
 

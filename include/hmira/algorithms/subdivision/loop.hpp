@@ -16,6 +16,7 @@
 
 #include "../triangle/flip_edge.hpp"
 #include "../triangle/split_edge.hpp"
+#include "detail/new_elements.hpp"
 #include "detail/reserve.hpp"
 
 namespace hmira {
@@ -65,6 +66,7 @@ struct loop_workspace {
         typename T::halfedge_handle old_corner_cut;            // see loop_level
     };
     std::vector<triangle> triangles;  // by old face index
+    std::array<std::size_t, 3> room{};  // the vertex, edge and face index bounds the mesh has capacity for
 
     void reserve(std::size_t vertex_bound, std::size_t edge_bound, std::size_t face_bound) {
         vertex_point.reserve(vertex_bound);
@@ -95,7 +97,6 @@ template <class M, class T>
 void loop_level(M& mesh, loop_workspace<M, T>& w) {
     namespace dt = detail::triangle_ops;
     using H = typename T::halfedge_handle;
-    using S = typename T::scalar;
     const std::size_t vertex_bound = T::vertex_index_bound(mesh);
     const std::size_t edge_bound = T::edge_index_bound(mesh);
     const auto is_old = [&](typename T::vertex_handle v) { return std::size_t(T::vertex_index(mesh, v)) < vertex_bound; };
@@ -104,6 +105,9 @@ void loop_level(M& mesh, loop_workspace<M, T>& w) {
     w.boundary_edges.assign(vertex_bound, 0);
     w.edge_vertex.assign(edge_bound, typename T::vertex_handle{});
     auto& sum = w.vertex_point;
+    // Every new element comes from here (in bulk where the model allows), in the order the
+    // traits' adds would make them.
+    new_elements<M, T> make(mesh, w.room);
 
     // Edge points (3/8 of each end and 1/8 of each opposite corner; the midpoint on a
     // boundary), computed before any split changes the corners and made into isolated new
@@ -128,7 +132,7 @@ void loop_level(M& mesh, loop_workspace<M, T>& w) {
             w.boundary_edges[ia] = std::uint8_t(std::min(3, w.boundary_edges[ia] + 1));
             w.boundary_edges[ib] = std::uint8_t(std::min(3, w.boundary_edges[ib] + 1));
         }
-        w.edge_vertex[T::edge_index(mesh, e)] = T::add_vertex(mesh, vec3<S>{S(q.x), S(q.y), S(q.z)});
+        w.edge_vertex[T::edge_index(mesh, e)] = make.vertex(q);
     }
     // Old vertices: Loop's rule inside; on the boundary (two boundary edges, the stored
     // halfedge a boundary one) 3/4 of itself and 1/8 of each boundary neighbour; a vertex
@@ -173,7 +177,7 @@ void loop_level(M& mesh, loop_workspace<M, T>& w) {
         const H o = T::opposite(mesh, h);
         const auto fh = T::face(mesh, h), fo = T::face(mesh, o);
         const bool h_side = fh != T::null_face(), o_side = fo != T::null_face() && fo != fh;
-        const H h2 = dt::split_links<M, T>(mesh, h, v, h_side, o_side);
+        const H h2 = dt::split_links<M, T>(mesh, h, v, h_side, o_side, make);
         if (h_side) {
             const H cut = T::next(mesh, h);
             if (is_old(T::target(mesh, cut))) w.triangles[T::face_index(mesh, fh)].old_corner_cut = cut;
@@ -193,14 +197,16 @@ void loop_level(M& mesh, loop_workspace<M, T>& w) {
         assert((is_flip_ok<M, T>(mesh, cut)));
         dt::flip_links<M, T>(mesh, cut);
     }
-    // Edges without a face on either side just gain their vertex.
+    // Edges without a face on either side just gain their vertex. (The bounds still count
+    // the unused end of the last blocks: indices at or above edge_bound are skipped.)
     for (auto e : T::edges(mesh)) {
         const std::size_t i = T::edge_index(mesh, e);
         if (i < edge_bound && w.edge_vertex[i] != typename T::vertex_handle{}) {
-            [[maybe_unused]] const auto new_halfedge = dt::split_links<M, T>(mesh, T::edge_halfedge(mesh, e), w.edge_vertex[i], false, false);
+            [[maybe_unused]] const auto new_halfedge = dt::split_links<M, T>(mesh, T::edge_halfedge(mesh, e), w.edge_vertex[i], false, false, make);
             w.edge_vertex[i] = typename T::vertex_handle{};
         }
     }
+    make.finish();
     if (boundary_moves)
         for (auto v : T::vertices(mesh)) {
             const std::size_t i = T::vertex_index(mesh, v);
@@ -260,6 +266,7 @@ template <class M, class T = default_traits<M>>
     const std::size_t edge_bound = T::edge_index_bound(mesh) + std::size_t(e - e0);
     const std::size_t face_bound = T::face_index_bound(mesh) + std::size_t(f - f0);
     ds::reserve_room<M, T>(mesh, vertex_bound, edge_bound, face_bound);
+    work.room = {vertex_bound, edge_bound, face_bound};
     [[maybe_unused]] const detail::subdivision::appending_guard<M> appending(mesh);  // new vertices are told by index
     work.reserve(vertex_bound - std::size_t(v - largest_v), edge_bound - std::size_t(e - largest_e), face_bound - std::size_t(f - largest_f));
     for (std::size_t l = 0; l < options.levels; ++l) {
