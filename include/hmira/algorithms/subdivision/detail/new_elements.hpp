@@ -14,10 +14,10 @@
 namespace hmira::detail::subdivision {
 
 /// A model whose traits append unlinked elements in bulk (resize) and name an element by its
-/// index (vertex_at, edge_at, face_at): OpenMesh, where adding elements one at a time resizes
-/// every property array once per element, through a virtual call each. (CGAL's Surface_mesh
-/// could too, through Surface_mesh::resize, but there the default fill of a block cost as much
-/// as the per-element push_back it replaced: measured neutral, so its traits do not offer it.)
+/// index (vertex_at, edge_at, face_at): OpenMesh and CGAL's Surface_mesh, where adding
+/// elements one at a time resizes every property array once per element, through a virtual
+/// call each. (On Surface_mesh a block's default fill still costs ~5 ns an element, see its
+/// traits' resize: the bulk path saves the per-element calls, not the fill.)
 template <class M, class T>
 concept bulk_growable_mesh = requires(M& m, const M& cm, std::size_t n) {
     T::resize(m, n, n, n);
