@@ -51,14 +51,20 @@ struct user_maps {
 };
 
 /// Every map has one entry per index, the tags below the old bounds and the default above.
-::testing::AssertionResult maps_follow(const mesh& m, const user_maps& u, std::size_t nv, std::size_t ne, std::size_t nf) {
-    const auto check = [](const auto& map, std::size_t bound, std::size_t old_bound, const char* kind) -> ::testing::AssertionResult {
+::testing::AssertionResult maps_follow(const mesh& m, const user_maps& u, std::size_t nv, std::size_t ne,
+                                       std::size_t nf) {
+    const auto check = [](const auto& map, std::size_t bound, std::size_t old_bound,
+                          const char* kind) -> ::testing::AssertionResult {
         const auto size = std::size_t(map.end() - map.begin());
-        if (size != bound) return ::testing::AssertionFailure() << kind << " map has " << size << " entries for " << bound << " elements";
+        if (size != bound)
+            return ::testing::AssertionFailure() << kind << " map has " << size << " entries for " << bound
+                                                 << " elements";
         for (std::size_t i = 0; i < bound; ++i) {
             const int expected = i < old_bound ? int(i) + 1 : 0;
-            if (map.begin()[std::ptrdiff_t(i)] != expected)
-                return ::testing::AssertionFailure() << kind << " " << i << " holds " << map.begin()[std::ptrdiff_t(i)] << ", expected " << expected;
+            const int held = map.begin()[std::ptrdiff_t(i)];
+            if (held != expected)
+                return ::testing::AssertionFailure() << kind << " " << i << " holds " << held << ", expected "
+                                                     << expected;
         }
         return ::testing::AssertionSuccess();
     };
@@ -154,7 +160,9 @@ TEST(subdivision_cgal_bulk, several_blocks_over_two_levels_leave_exact_counts) {
     for (const mesh* m : {&tri, &quad}) {
         EXPECT_TRUE(valid_topology(*m));
         // A closed torus: V - E + F = 0; no removed element, so the bounds are the counts.
-        EXPECT_EQ((long long)m->number_of_vertices() - (long long)m->number_of_edges() + (long long)m->number_of_faces(), 0);
+        const long long chi = (long long)m->number_of_vertices() - (long long)m->number_of_edges() +
+                              (long long)m->number_of_faces();
+        EXPECT_EQ(chi, 0);
         EXPECT_EQ(m->num_vertices(), m->number_of_vertices());
         EXPECT_EQ(m->num_edges(), m->number_of_edges());
         EXPECT_EQ(m->num_faces(), m->number_of_faces());
