@@ -241,7 +241,9 @@ struct bit_sink {
 template <std::size_t D>
 void surface_columns(const tri& tr, const vec3<double>& n, const vec3<double>& bl, const vec3<double>& bh, const long long (&r0)[3],
                      const long long (&r1)[3], const bit_sink set) {
-    constexpr std::size_t u = (D + 1) % 3, v = (D + 2) % 3;
+    // Columns are walked along v within a row: v is x where it can be (consecutive voxels share
+    // a word), else y (the next row's word, 64 bytes on); never z (a layer, a page, away).
+    constexpr std::size_t u = D == 2 ? 1 : 2, v = D == 0 ? 1 : 0;
     const vec3<double>* p = tr.p;
     const double c = dot(n, p[0]);
     const double slack = 0.5 * (std::abs(n[u]) + std::abs(n[v])) / std::abs(n[D]);
@@ -252,15 +254,21 @@ void surface_columns(const tri& tr, const vec3<double>& n, const vec3<double>& b
     const double reach_slack =
         slack + 0x1p-30 * (1 + slack + std::max({std::abs(bl[0]), std::abs(bl[1]), std::abs(bl[2]), std::abs(bh[0]), std::abs(bh[1]), std::abs(bh[2])}));
     const detail::triangle_box_tester tester(p[0], p[1], p[2], 0.5);
+    // For the inner columns: the reach [w - reach_half, w + reach_half] within the window
+    // and the bounding box widened by half a voxel (the voxels the box normal along D allows).
+    const double inv_nd = 1 / n[D], nv_scaled = n[v] * inv_nd, reach_half = reach_slack + 0.5;
+    long long reach_lo = 0, reach_hi = 0;
+    if (!window_range(r0[D], r1[D], bl[D] - 0.5, bh[D] + 0.5, reach_lo, reach_hi)) return;
     // The separating axes D x edge (the shadow's edge normals in the (u, v) plane) give the
     // same answer for every voxel of a column: a column whose square is outside the shadow is
     // skipped; one whose square lies inside it needs only the plane test, since every point of
     // the plane over the square is then on the triangle.
-    double axis_u[3], axis_v[3], lo2[3], hi2[3], inner_lo[3], inner_hi[3];
+    double axis_u[3], axis_v[3], inv_axis_v[3], lo2[3], hi2[3], inner_lo[3], inner_hi[3];
     for (int e = 0; e < 3; ++e) {
         const vec3<double> ed = p[(e + 1) % 3] - p[e];
         axis_u[e] = -ed[v];
         axis_v[e] = ed[u];
+        inv_axis_v[e] = axis_v[e] != 0 ? 1 / axis_v[e] : 0;
         // Relative to corner 0, as the tester's axes (a column side on an edge's line ties exactly).
         const double pa = 0, pb = axis_u[e] * (p[1][u] - p[0][u]) + axis_v[e] * (p[1][v] - p[0][v]),
                      pc = axis_u[e] * (p[2][u] - p[0][u]) + axis_v[e] * (p[2][v] - p[0][v]);
@@ -281,9 +289,9 @@ void surface_columns(const tri& tr, const vec3<double>& n, const vec3<double>& b
     };
     // set() with the voxel's (u, v, D) indices put back in (x, y, z) order.
     auto put = [&](long long iu, long long iv, long long iw, bool on) {
-        if constexpr (D == 0) set(iw, iu, iv, on);
+        if constexpr (D == 0) set(iw, iv, iu, on);
         else if constexpr (D == 1) set(iv, iw, iu, on);
-        else set(iu, iv, iw, on);
+        else set(iv, iu, iw, on);
     };
     // Where the window cuts the triangle along D (a slab of the grid), many columns reach no
     // voxel of it. Column iv's plane height w is monotone in iv (so is its rounding), hence
@@ -325,17 +333,18 @@ void surface_columns(const tri& tr, const vec3<double>& n, const vec3<double>& b
     for (long long iu = r0[u]; iu <= r1[u]; ++iu) {
         const double fu = double(iu);
         // The columns of this row whose square can meet the shadow: each edge axis bounds
-        // iv to an interval (widened by one; the test per column below decides).
+        // iv to an interval (widened by one, far more than the rounding of the reciprocal;
+        // the test per column below decides).
         double vlo = double(r0[v]), vhi = double(r1[v]);
         double base[3];
         for (int e = 0; e < 3; ++e) {
             base[e] = axis_u[e] * (fu - p[0][u]);
             if (axis_v[e] > 0) {
-                vlo = std::max(vlo, (lo2[e] - base[e]) / axis_v[e] + p[0][v] - 1);
-                vhi = std::min(vhi, (hi2[e] - base[e]) / axis_v[e] + p[0][v] + 1);
+                vlo = std::max(vlo, (lo2[e] - base[e]) * inv_axis_v[e] + p[0][v] - 1);
+                vhi = std::min(vhi, (hi2[e] - base[e]) * inv_axis_v[e] + p[0][v] + 1);
             } else if (axis_v[e] < 0) {
-                vlo = std::max(vlo, (hi2[e] - base[e]) / axis_v[e] + p[0][v] - 1);
-                vhi = std::min(vhi, (lo2[e] - base[e]) / axis_v[e] + p[0][v] + 1);
+                vlo = std::max(vlo, (hi2[e] - base[e]) * inv_axis_v[e] + p[0][v] - 1);
+                vhi = std::min(vhi, (lo2[e] - base[e]) * inv_axis_v[e] + p[0][v] + 1);
             }
         }
         if (!(vlo <= vhi)) continue;
@@ -375,10 +384,15 @@ void surface_columns(const tri& tr, const vec3<double>& n, const vec3<double>& b
                 put(iu, iv, iw, tester.template overlaps_off<int(D)>(centre(fu, double(iv), double(iw))));
         };
         for (long long iv = a; iv < ci; ++iv) edge_column(iv);
+        // The inner run: the height by a multiplication (its rounding, a few ulps of the
+        // triangle's coordinates, is far within reach_slack), the reach cut to the window and
+        // the bounding box by integer clamps.
+        const double cu_scaled = cu * inv_nd;
         for (long long iv = ci; iv <= ce; ++iv) {
-            long long w0, w1;
-            if (!reach(iv, w0, w1)) continue;
             const double fv = double(iv);
+            const double w = cu_scaled - fv * nv_scaled;
+            const long long w0 = std::max(reach_lo, -fast_floor(reach_half - w)), w1 = std::min(reach_hi, fast_floor(w + reach_half));
+            if (w0 > w1) continue;
             // Most columns reach one or two voxels: test two without a branch on how many
             // (the second is w0 again, set only if it passes, when the reach is one voxel).
             const long long second = w0 + (w1 > w0);
