@@ -254,6 +254,21 @@ void surface_columns(const tri& tr, const vec3<double>& n, const vec3<double>& b
     const double reach_slack =
         slack + 0x1p-30 * (1 + slack + std::max({std::abs(bl[0]), std::abs(bl[1]), std::abs(bl[2]), std::abs(bh[0]), std::abs(bh[1]), std::abs(bh[2])}));
     const detail::triangle_box_tester tester(p[0], p[1], p[2], 0.5);
+    // The tester's sums, with the terms of u and v computed once per column: an axis D' x e
+    // (D' != D) is 0 along D', so its projection is the rounded sum of two terms in either
+    // order; the normal's is ((x + y) + z) in the tester's order. Same roundings, same bits.
+    const vec3<double>& o = tester.origin();
+    const vec3<double>& normal = tester.axis(0);
+    const double plane_lo = tester.lo(0), plane_hi = tester.hi(0);
+    double edge_d[6], edge_t[6], edge_lo[6], edge_hi[6];  // j = 2 e + (a == v): axis a x edge e
+    for (int e = 0; e < 3; ++e)
+        for (int k = 0; k < 2; ++k) {
+            const int q = 1 + 3 * e + int(k == 0 ? u : v);
+            edge_d[2 * e + k] = tester.axis(q)[D];
+            edge_t[2 * e + k] = tester.axis(q)[k == 0 ? v : u];  // the other term: along v for a = u
+            edge_lo[2 * e + k] = tester.lo(q);
+            edge_hi[2 * e + k] = tester.hi(q);
+        }
     // For the inner columns: the reach [w - reach_half, w + reach_half] within the window
     // and the bounding box widened by half a voxel (the voxels the box normal along D allows).
     const double inv_nd = 1 / n[D], nv_scaled = n[v] * inv_nd, reach_half = reach_slack + 0.5;
@@ -280,13 +295,6 @@ void surface_columns(const tri& tr, const vec3<double>& n, const vec3<double>& b
         inner_lo[e] = lo2[e] + width + margin;
         inner_hi[e] = hi2[e] - width - margin;
     }
-    auto centre = [](double fu, double fv, double fw) {
-        vec3<double> q;
-        q[u] = fu;
-        q[v] = fv;
-        q[D] = fw;
-        return q;
-    };
     // set() with the voxel's (u, v, D) indices put back in (x, y, z) order.
     auto put = [&](long long iu, long long iv, long long iw, bool on) {
         if constexpr (D == 0) set(iw, iv, iu, on);
@@ -377,11 +385,33 @@ void surface_columns(const tri& tr, const vec3<double>& n, const vec3<double>& b
             const double w = (cu - n[v] * double(iv)) / n[D];
             return window_range(r0[D], r1[D], std::max(w - reach_slack, bl[D]) - 0.5, std::min(w + reach_slack, bh[D]) + 0.5, w0, w1);
         };
+        const double cu_rel = fu - o[u];
+        // Whether the plane meets voxel (iu, iv, iw) given cw = iw - o[D], as meets_plane().
+        auto meets_plane = [&](double tu, double tv, double cw) {
+            double t[3];
+            t[u] = tu;
+            t[v] = tv;
+            t[D] = normal[D] * cw;
+            const double q = (t[0] + t[1]) + t[2];
+            return (q >= plane_lo) & (q <= plane_hi);
+        };
+        const double tu = normal[u] * cu_rel;
+        // overlaps_off<D>(): the plane and the six axes u x edge, v x edge.
         auto edge_column = [&](long long iv) {
             long long w0, w1;
             if (!reach(iv, w0, w1)) return;
-            for (long long iw = w0; iw <= w1; ++iw)
-                put(iu, iv, iw, tester.template overlaps_off<int(D)>(centre(fu, double(iv), double(iw))));
+            const double cv_rel = double(iv) - o[v], tv = normal[v] * cv_rel;
+            double shared[6];
+            for (int j = 0; j < 6; ++j) shared[j] = edge_t[j] * (j % 2 == 0 ? cv_rel : cu_rel);
+            for (long long iw = w0; iw <= w1; ++iw) {
+                const double cw = double(iw) - o[D];
+                bool on = meets_plane(tu, tv, cw);
+                for (int j = 0; j < 6; ++j) {
+                    const double q = shared[j] + edge_d[j] * cw;
+                    on &= (q >= edge_lo[j]) & (q <= edge_hi[j]);
+                }
+                put(iu, iv, iw, on);
+            }
         };
         for (long long iv = a; iv < ci; ++iv) edge_column(iv);
         // The inner run: the height by a multiplication (its rounding, a few ulps of the
@@ -396,9 +426,10 @@ void surface_columns(const tri& tr, const vec3<double>& n, const vec3<double>& b
             // Most columns reach one or two voxels: test two without a branch on how many
             // (the second is w0 again, set only if it passes, when the reach is one voxel).
             const long long second = w0 + (w1 > w0);
-            put(iu, iv, w0, tester.meets_plane(centre(fu, fv, double(w0))));
-            put(iu, iv, second, tester.meets_plane(centre(fu, fv, double(second))));
-            for (long long iw = w0 + 2; iw <= w1; ++iw) put(iu, iv, iw, tester.meets_plane(centre(fu, fv, double(iw))));
+            const double tv = normal[v] * (fv - o[v]);
+            put(iu, iv, w0, meets_plane(tu, tv, double(w0) - o[D]));
+            put(iu, iv, second, meets_plane(tu, tv, double(second) - o[D]));
+            for (long long iw = w0 + 2; iw <= w1; ++iw) put(iu, iv, iw, meets_plane(tu, tv, double(iw) - o[D]));
         }
         for (long long iv = std::max(ce + 1, ci); iv <= b; ++iv) edge_column(iv);
     }
