@@ -516,15 +516,17 @@ inline slab_bins bin_to_slabs(const std::vector<tri>& tris, const std::vector<st
 /// from bit_grid::unwritten(). Returns false when `progress` cancelled.
 ///
 /// The window is cut into slabs of whole z-layers, each filled start to end by one thread:
-/// crossings, prefix XOR, then surface voxels. A slab's words (up to 512 KiB) stay in that
+/// crossings, prefix XOR, then surface voxels. A slab's words (up to 1 MiB) stay in that
 /// core's cache through the three steps, and no two threads write one word, so no atomics.
+/// Larger slabs than 512 KiB measured faster (fewer triangles cut in several slabs, each
+/// prepared once per slab), while a 512^3 grid still has 19 slabs to share out.
 inline bool fill_window(const std::vector<tri>& tris, const std::vector<std::uint32_t>* surface_subset,
                         const std::vector<std::uint32_t>* crossing_subset, const std::array<long long, 3>& lo, bit_grid& out,
                         const window_job& job, unsigned threads, const progress_function& progress) {
     const grid_dims dims = out.dims();
     const long long nx = static_cast<long long>(dims[0]), ny = static_cast<long long>(dims[1]), nz = static_cast<long long>(dims[2]);
     const std::size_t words = out.words_per_row();
-    const long long layers = std::clamp<long long>(static_cast<long long>((std::size_t(1) << 16) / std::max<std::size_t>(1, words * dims[1])), 1, nz);
+    const long long layers = std::clamp<long long>(static_cast<long long>((std::size_t(1) << 17) / std::max<std::size_t>(1, words * dims[1])), 1, nz);
     const std::size_t slabs = std::size_t((nz + layers - 1) / layers);
     slab_bins surface_bins, own_crossing_bins;
     if (job.surface) surface_bins = bin_to_slabs(tris, surface_subset, lo[2], nz, layers);
@@ -669,7 +671,7 @@ inline result<window_job> plan(const voxelize_options& options, bool closed, std
 ///   with a symbolic perturbation of the centre by (eps, eps^2, eps^3): rays through edges
 ///   and vertices count once, and a centre exactly on the surface is inside where the surface
 ///   faces -x. On a mesh that is not closed, see voxelize_options.
-/// - Parallel over slabs of z-layers (about 512 KiB of bits each, one thread per slab, the
+/// - Parallel over slabs of z-layers (about 1 MiB of bits each, one thread per slab, the
 ///   triangles binned to the slabs they reach): the output is the same for every thread count.
 ///
 /// Complexity: O(F + sum over triangles of the slabs they reach + the voxels in their bounding
