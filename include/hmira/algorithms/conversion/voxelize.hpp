@@ -380,10 +380,15 @@ void surface_columns(const tri& tr, const vec3<double>& n, const vec3<double>& b
         long long ci = a, ce = b;
         while (ci <= b && kind(ci) == 1) ++ci;
         while (ce >= ci && kind(ce) == 1) --ce;
-        // The voxels of column iv within reach of the plane, [w0, w1]; false if none.
+        // The voxels of column iv within reach of the plane, [w0, w1], cut to the window and
+        // the bounding box; false if none. The height by a multiplication: its rounding, a
+        // few ulps of the triangle's coordinates, is far within reach_slack.
+        const double cu_scaled = cu * inv_nd;
         auto reach = [&](long long iv, long long& w0, long long& w1) {
-            const double w = (cu - n[v] * double(iv)) / n[D];
-            return window_range(r0[D], r1[D], std::max(w - reach_slack, bl[D]) - 0.5, std::min(w + reach_slack, bh[D]) + 0.5, w0, w1);
+            const double w = cu_scaled - double(iv) * nv_scaled;
+            w0 = std::max(reach_lo, -fast_floor(reach_half - w));
+            w1 = std::min(reach_hi, fast_floor(w + reach_half));
+            return w0 <= w1;
         };
         const double cu_rel = fu - o[u];
         // Whether the plane meets voxel (iu, iv, iw) given cw = iw - o[D], as meets_plane().
@@ -414,15 +419,10 @@ void surface_columns(const tri& tr, const vec3<double>& n, const vec3<double>& b
             }
         };
         for (long long iv = a; iv < ci; ++iv) edge_column(iv);
-        // The inner run: the height by a multiplication (its rounding, a few ulps of the
-        // triangle's coordinates, is far within reach_slack), the reach cut to the window and
-        // the bounding box by integer clamps.
-        const double cu_scaled = cu * inv_nd;
         for (long long iv = ci; iv <= ce; ++iv) {
+            long long w0, w1;
+            if (!reach(iv, w0, w1)) continue;
             const double fv = double(iv);
-            const double w = cu_scaled - fv * nv_scaled;
-            const long long w0 = std::max(reach_lo, -fast_floor(reach_half - w)), w1 = std::min(reach_hi, fast_floor(w + reach_half));
-            if (w0 > w1) continue;
             // Most columns reach one or two voxels: test two without a branch on how many
             // (the second is w0 again, set only if it passes, when the reach is one voxel).
             const long long second = w0 + (w1 > w0);
