@@ -554,8 +554,8 @@ inline bool fill_window(const std::vector<tri>& tris, const std::vector<std::uin
                 const tri& tr = tris[crossing_bins.tri[b]];
                 const crossing_triangle ct(tr.p[0], tr.p[1], tr.p[2]);
                 if (ct.xmin - 1 >= double(lo[0] + nx)) continue;  // crosses no ray before the window's end
-                ct.for_each_ray(lo[1], lo[1] + ny - 1, lo[2] + k0, lo[2] + k1, [&](long long j, long long k) {
-                    const long long first = ct.first_beyond(j, k) - lo[0];
+                ct.for_each_ray(lo[1], lo[1] + ny - 1, lo[2] + k0, lo[2] + k1, [&](long long j, long long k, const crossing_triangle::row_estimate& row) {
+                    const long long first = ct.first_beyond(row, j, k) - lo[0];
                     if (first >= nx) return;
                     const std::size_t i = first <= 0 ? 0 : static_cast<std::size_t>(first);
                     toggles[(std::size_t(k - lo[2]) * dims[1] + std::size_t(j - lo[1])) * words + (i >> 6)] ^= std::uint64_t(1) << (i & 63);
