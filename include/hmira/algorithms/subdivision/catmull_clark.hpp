@@ -97,6 +97,7 @@ bool catmull_clark_level(M& mesh, cc_workspace<M, T>& w, progress_gate& gate) {
     // Every new position is computed before the first operator, in flat arrays indexed by
     // element index, from the old positions only; old positions change only at the very end.
     const std::size_t vertex_bound = T::vertex_index_bound(mesh);
+    const std::size_t old_vertices = T::vertex_count(mesh);
     w.vertex_point.assign(vertex_bound, {});
     w.valence.assign(vertex_bound, 0);
     w.boundary_edges.assign(vertex_bound, 0);
@@ -232,9 +233,14 @@ bool catmull_clark_level(M& mesh, cc_workspace<M, T>& w, progress_gate& gate) {
         T::set_vertex_halfedge(mesh, centre, T::opposite(mesh, spike));
         if ((i + 1) % block == 0 && !gate.advance(1)) return false;
     }
+    // The pass stops once it has seen every old vertex (on the usual models they come first, in
+    // index order), rather than run over the three times as many new ones.
+    std::size_t seen = 0;
     for (auto v : T::vertices(mesh)) {
+        if (seen == old_vertices) break;
         const std::size_t i = T::vertex_index(mesh, v);
         if (i >= vertex_bound) continue;  // a new vertex, placed already
+        ++seen;
         if (w.boundary_edges[i] == 0 && w.valence[i] > 0) {
             const double n = double(w.valence[i]);
             dt::set_position<M, T>(mesh, v, (dt::position_of<M, T>(mesh, v) * (n - 2) + sum[i] / n) / n);
