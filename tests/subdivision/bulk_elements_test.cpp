@@ -37,7 +37,8 @@ snapshot links_and_positions(const hm& m) {
 /// A grid with an inner hole and a user vertex property: an outer and an inner boundary, and a
 /// property array that must follow every new element.
 hm open_mesh(bool triangles) {
-    return mesh_from<hm>(without_faces(triangles ? triangulated(grid(6, 5)) : grid(6, 5), [](std::size_t f) { return f == 17; }));
+    const auto g = triangles ? triangulated(grid(6, 5)) : grid(6, 5);
+    return mesh_from<hm>(without_faces(g, [](std::size_t f) { return f == 17; }));
 }
 
 TEST(halfedge_mesh_bulk, resize_appends_unlinked_defaults_and_dropping_them_restores_the_mesh) {
@@ -97,7 +98,8 @@ TEST(halfedge_mesh_bulk, catmull_clark_in_blocks_equals_catmull_clark_one_elemen
             ASSERT_TRUE(a) << a.error().message;
             ASSERT_TRUE(b) << b.error().message;
             EXPECT_TRUE(valid_topology(bulk));
-            EXPECT_EQ(links_and_positions(bulk), links_and_positions(single)) << levels << " level(s), triangles " << triangles;
+            EXPECT_EQ(links_and_positions(bulk), links_and_positions(single))
+                << levels << " level(s), triangles " << triangles;
             EXPECT_EQ(bulk.vertex_index_bound(), single.vertex_index_bound());
             EXPECT_EQ(bulk.edge_index_bound(), single.edge_index_bound());
             EXPECT_EQ(bulk.face_index_bound(), single.face_index_bound());

@@ -901,7 +901,9 @@ struct mesh_traits<basic_halfedge_mesh<Scalar>> : detail::native_halfedge_traits
     /// Optional (not a concept requirement): unlinked elements appended or dropped in bulk,
     /// and the element of an index, so that subdivision takes its new elements in blocks
     /// (bulk_growable_mesh) instead of one add_vertex, new_edge or new_face each.
-    static void resize(mesh& m, std::size_t vertices, std::size_t edges, std::size_t faces) { m.resize(vertices, edges, faces); }
+    static void resize(mesh& m, std::size_t vertices, std::size_t edges, std::size_t faces) {
+        m.resize(vertices, edges, faces);
+    }
     /// The element of index i (no check: i below the index bound). O(1).
     ///@{
     static vertex_handle vertex_at(const mesh&, std::size_t i) { return vertex_handle(static_cast<std::uint32_t>(i)); }

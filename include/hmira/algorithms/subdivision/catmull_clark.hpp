@@ -60,9 +60,9 @@ struct cc_counts {
 };
 
 /// The per-level arrays, sized once for the largest level so that no level allocates after
-/// the mesh starts changing. Kept lean (29 bytes a vertex, 28 a face; the edge points go
-/// straight into the new vertices): at a million
-/// faces, first touching fresh pages costs as much as the arithmetic.
+/// the mesh starts changing. Kept lean (29 bytes a vertex; 28 a face, or 4 where the face
+/// points go straight into their vertices; the edge points always do): at a million faces,
+/// first touching fresh pages costs as much as the arithmetic.
 template <class M, class T>
 struct cc_workspace {
     std::vector<vec3<double>> vertex_point;  // the sums of neighbours and face points; a boundary vertex's new position
@@ -70,7 +70,7 @@ struct cc_workspace {
     std::vector<std::uint32_t> valence;
     std::vector<std::uint8_t> boundary_edges;  // saturates at 3: only "none", "two" and "more" matter
     std::vector<typename T::face_handle> faces;
-    std::vector<std::uint32_t> centre;  // by face index: the index of its face-point vertex (points in place, see the level)
+    std::vector<std::uint32_t> centre;  // by face index: its face-point vertex's index (points in place)
     std::vector<typename T::halfedge_handle> corners;
     std::array<std::size_t, 3> room{};  // the vertex, edge and face index bounds the mesh has capacity for
 
@@ -136,7 +136,8 @@ bool catmull_clark_level(M& mesh, cc_workspace<M, T>& w, progress_gate& gate) {
         if (in_place) return dt::position_of<M, T>(mesh, vertex_of(w.centre[T::face_index(mesh, f)]));
         return w.face_point[T::face_index(mesh, f)];
     };
-    std::size_t next_vertex = vertex_bound, vertex_end = vertex_bound;  // in place: next new vertex, vertices made so far
+    // In place: the next new vertex's index, and the vertex index bound made so far.
+    std::size_t next_vertex = vertex_bound, vertex_end = vertex_bound;
 
     // Face points (centroids); each vertex sums the face points around it.
     std::size_t done = 0;
@@ -256,7 +257,8 @@ bool catmull_clark_level(M& mesh, cc_workspace<M, T>& w, progress_gate& gate) {
                 const F g = T::face(mesh, o);
                 const vec3<double> ends = dt::position_of<M, T>(mesh, T::target(mesh, x)) + dt::position_of<M, T>(mesh, T::target(mesh, o));
                 const vec3<double> q = g == T::null_face() ? ends * 0.5 : (ends + c + face_point_of(g)) * 0.25;
-                x = dt::split_links<M, T>(mesh, x, new_vertex(q), false, false, make);  // x now ends at the edge point; continue after the new half
+                // x now ends at the edge point; continue after the new half
+                x = dt::split_links<M, T>(mesh, x, new_vertex(q), false, false, make);
                 w.corners.push_back(T::prev(mesh, x));
             }
             x = T::next(mesh, x);
