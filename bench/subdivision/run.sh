@@ -9,20 +9,25 @@
 #      both runs use huge pages, with [never] neither does.
 # At a million faces the kernel's faulting and zeroing of the output's fresh pages is about half
 # the CPU time; run 2 shows how much of that is per-page overhead rather than zeroing.
-#   bench/subdivision/run.sh [--repetitions N] [--filter REGEX] [--build-dir DIR] [--no-huge-pages]
+# --interleave runs the repetitions of all cases in random order
+# (--benchmark_enable_random_interleaving), so that on a loaded machine a busy spell is spread
+# over every side instead of landing on one case's repetitions.
+#   bench/subdivision/run.sh [--repetitions N] [--filter REGEX] [--build-dir DIR] [--no-huge-pages] [--interleave]
 set -euo pipefail
 root="$(cd "$(dirname "$0")/../.." && pwd)"
 build="$root/build-bench-subdivision"
 reps=5
 filter='^(loop|catmull_clark)/'
 huge=1
+interleave=false
 while [ $# -gt 0 ]; do
   case "$1" in
     --repetitions) reps="$2"; shift 2 ;;
     --filter) filter="$2"; shift 2 ;;
     --build-dir) build="$2"; shift 2 ;;
     --no-huge-pages) huge=0; shift ;;
-    *) echo "usage: $0 [--repetitions N] [--filter REGEX] [--build-dir DIR] [--no-huge-pages]" >&2; exit 2 ;;
+    --interleave) interleave=true; shift ;;
+    *) echo "usage: $0 [--repetitions N] [--filter REGEX] [--build-dir DIR] [--no-huge-pages] [--interleave]" >&2; exit 2 ;;
   esac
 done
 cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DHMIRA_BUILD_BENCHMARKS=ON \
@@ -31,8 +36,8 @@ cmake --build "$build" --target subdivision_bench -j2
 bench="$build/bench/subdivision/subdivision_bench"
 echo "transparent_hugepage/enabled: $(cat /sys/kernel/mm/transparent_hugepage/enabled 2>/dev/null || echo unknown)"
 echo "== 4 KiB pages (as built) =="
-"$bench" --benchmark_filter="$filter" --benchmark_repetitions="$reps" | sed -n '/^Median/,$p'
+"$bench" --benchmark_filter="$filter" --benchmark_repetitions="$reps" --benchmark_enable_random_interleaving="$interleave" | sed -n '/^Median/,$p'
 if [ "$huge" = 1 ]; then
   echo "== transparent huge pages for every large allocation (GLIBC_TUNABLES=glibc.malloc.hugetlb=1) =="
-  GLIBC_TUNABLES=glibc.malloc.hugetlb=1 "$bench" --benchmark_filter="$filter" --benchmark_repetitions="$reps" | sed -n '/^Median/,$p'
+  GLIBC_TUNABLES=glibc.malloc.hugetlb=1 "$bench" --benchmark_filter="$filter" --benchmark_repetitions="$reps" --benchmark_enable_random_interleaving="$interleave" | sed -n '/^Median/,$p'
 fi

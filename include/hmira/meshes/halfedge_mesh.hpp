@@ -773,6 +773,45 @@ public:
         faces_.reserve(faces);
         face_deleted_.ensure(faces);
     }
+    /// Sets the index bounds to `vertices`, `edges` and `faces` (raw, like new_edge): appends
+    /// unlinked elements at their defaults (isolated vertices at the origin, edges whose
+    /// halfedges have null target, next, prev and face, faces without a halfedge), always at the
+    /// end whatever slot_reuse() says, with their properties at their defaults; or drops the last
+    /// ones. What subdivision takes its new elements from, in blocks, through the traits'
+    /// optional resize: one call per block instead of one add per element.
+    /// \pre a dropped element is alive and nothing refers to it.
+    /// May throw std::bad_alloc, with the mesh unchanged. O(change) (amortised when it grows).
+    void resize(std::size_t vertices, std::size_t edges, std::size_t faces) {
+        // Every allocation first, so that nothing changes unless all of them succeed.
+        free_vertices_.ensure_room(vertices);
+        free_edges_.ensure_room(edges);
+        free_faces_.ensure_room(faces);
+        vertex_deleted_.ensure(vertices);
+        edge_deleted_.ensure(edges);
+        face_deleted_.ensure(faces);
+        if (vertices > positions_.capacity()) positions_.reserve(std::max(vertices, 2 * positions_.capacity()));
+        vertex_out_.ensure_room(vertices);
+        halfedges_.ensure_room(2 * edges);
+        faces_.ensure_room(faces);
+        const std::size_t old_v = positions_.size(), old_e = halfedges_.size() / 2, old_f = faces_.size();
+        try {
+            vertex_props_.resize(vertices);
+            edge_props_.resize(edges);
+            halfedge_props_.resize(2 * edges);
+            face_props_.resize(faces);
+        } catch (...) {  // a user property array could not grow: shrink them all back (never throws)
+            vertex_props_.resize(old_v);
+            edge_props_.resize(old_e);
+            halfedge_props_.resize(2 * old_e);
+            face_props_.resize(old_f);
+            throw;
+        }
+        positions_.resize(vertices);
+        vertex_out_.resize(vertices, halfedge_handle{});
+        halfedges_.resize(2 * edges, halfedge_record{});
+        faces_.resize(faces, halfedge_handle{});
+        ++changes_;
+    }
     /// Removes everything, properties included.
     void clear() { *this = basic_halfedge_mesh(); }
     /// Removes every element and keeps the named properties (emptied, their defaults kept), as
@@ -859,6 +898,18 @@ struct mesh_traits<basic_halfedge_mesh<Scalar>> : detail::native_halfedge_traits
     /// Optional (not a concept requirement): room for this many elements (index bounds), which
     /// the edits and subdivision use before they grow the mesh.
     static void reserve(mesh& m, std::size_t vertices, std::size_t edges, std::size_t faces) { m.reserve(vertices, edges, faces); }
+    /// Optional (not a concept requirement): unlinked elements appended or dropped in bulk,
+    /// and the element of an index, so that subdivision takes its new elements in blocks
+    /// (bulk_growable_mesh) instead of one add_vertex, new_edge or new_face each.
+    static void resize(mesh& m, std::size_t vertices, std::size_t edges, std::size_t faces) {
+        m.resize(vertices, edges, faces);
+    }
+    /// The element of index i (no check: i below the index bound). O(1).
+    ///@{
+    static vertex_handle vertex_at(const mesh&, std::size_t i) { return vertex_handle(static_cast<std::uint32_t>(i)); }
+    static edge_handle edge_at(const mesh&, std::size_t i) { return edge_handle(static_cast<std::uint32_t>(i)); }
+    static face_handle face_at(const mesh&, std::size_t i) { return face_handle(static_cast<std::uint32_t>(i)); }
+    ///@}
 };
 
 }  // namespace hmira

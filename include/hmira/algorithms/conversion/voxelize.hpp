@@ -241,7 +241,9 @@ struct bit_sink {
 template <std::size_t D>
 void surface_columns(const tri& tr, const vec3<double>& n, const vec3<double>& bl, const vec3<double>& bh, const long long (&r0)[3],
                      const long long (&r1)[3], const bit_sink set) {
-    constexpr std::size_t u = (D + 1) % 3, v = (D + 2) % 3;
+    // Columns are walked along v within a row: v is x where it can be (consecutive voxels share
+    // a word), else y (the next row's word, 64 bytes on); never z (a layer, a page, away).
+    constexpr std::size_t u = D == 2 ? 1 : 2, v = D == 0 ? 1 : 0;
     const vec3<double>* p = tr.p;
     const double c = dot(n, p[0]);
     const double slack = 0.5 * (std::abs(n[u]) + std::abs(n[v])) / std::abs(n[D]);
@@ -252,15 +254,36 @@ void surface_columns(const tri& tr, const vec3<double>& n, const vec3<double>& b
     const double reach_slack =
         slack + 0x1p-30 * (1 + slack + std::max({std::abs(bl[0]), std::abs(bl[1]), std::abs(bl[2]), std::abs(bh[0]), std::abs(bh[1]), std::abs(bh[2])}));
     const detail::triangle_box_tester tester(p[0], p[1], p[2], 0.5);
+    // The tester's sums, with the terms of u and v computed once per column: an axis D' x e
+    // (D' != D) is 0 along D', so its projection is the rounded sum of two terms in either
+    // order; the normal's is ((x + y) + z) in the tester's order. Same roundings, same bits.
+    const vec3<double>& o = tester.origin();
+    const vec3<double>& normal = tester.axis(0);
+    const double plane_lo = tester.lo(0), plane_hi = tester.hi(0);
+    double edge_d[6], edge_t[6], edge_lo[6], edge_hi[6];  // j = 2 e + (a == v): axis a x edge e
+    for (int e = 0; e < 3; ++e)
+        for (int k = 0; k < 2; ++k) {
+            const int q = 1 + 3 * e + int(k == 0 ? u : v);
+            edge_d[2 * e + k] = tester.axis(q)[D];
+            edge_t[2 * e + k] = tester.axis(q)[k == 0 ? v : u];  // the other term: along v for a = u
+            edge_lo[2 * e + k] = tester.lo(q);
+            edge_hi[2 * e + k] = tester.hi(q);
+        }
+    // For the inner columns: the reach [w - reach_half, w + reach_half] within the window
+    // and the bounding box widened by half a voxel (the voxels the box normal along D allows).
+    const double inv_nd = 1 / n[D], nv_scaled = n[v] * inv_nd, reach_half = reach_slack + 0.5;
+    long long reach_lo = 0, reach_hi = 0;
+    if (!window_range(r0[D], r1[D], bl[D] - 0.5, bh[D] + 0.5, reach_lo, reach_hi)) return;
     // The separating axes D x edge (the shadow's edge normals in the (u, v) plane) give the
     // same answer for every voxel of a column: a column whose square is outside the shadow is
     // skipped; one whose square lies inside it needs only the plane test, since every point of
     // the plane over the square is then on the triangle.
-    double axis_u[3], axis_v[3], lo2[3], hi2[3], inner_lo[3], inner_hi[3];
+    double axis_u[3], axis_v[3], inv_axis_v[3], lo2[3], hi2[3], inner_lo[3], inner_hi[3];
     for (int e = 0; e < 3; ++e) {
         const vec3<double> ed = p[(e + 1) % 3] - p[e];
         axis_u[e] = -ed[v];
         axis_v[e] = ed[u];
+        inv_axis_v[e] = axis_v[e] != 0 ? 1 / axis_v[e] : 0;
         // Relative to corner 0, as the tester's axes (a column side on an edge's line ties exactly).
         const double pa = 0, pb = axis_u[e] * (p[1][u] - p[0][u]) + axis_v[e] * (p[1][v] - p[0][v]),
                      pc = axis_u[e] * (p[2][u] - p[0][u]) + axis_v[e] * (p[2][v] - p[0][v]);
@@ -272,18 +295,11 @@ void surface_columns(const tri& tr, const vec3<double>& n, const vec3<double>& b
         inner_lo[e] = lo2[e] + width + margin;
         inner_hi[e] = hi2[e] - width - margin;
     }
-    auto centre = [](double fu, double fv, double fw) {
-        vec3<double> q;
-        q[u] = fu;
-        q[v] = fv;
-        q[D] = fw;
-        return q;
-    };
     // set() with the voxel's (u, v, D) indices put back in (x, y, z) order.
     auto put = [&](long long iu, long long iv, long long iw, bool on) {
-        if constexpr (D == 0) set(iw, iu, iv, on);
+        if constexpr (D == 0) set(iw, iv, iu, on);
         else if constexpr (D == 1) set(iv, iw, iu, on);
-        else set(iu, iv, iw, on);
+        else set(iv, iu, iw, on);
     };
     // Where the window cuts the triangle along D (a slab of the grid), many columns reach no
     // voxel of it. Column iv's plane height w is monotone in iv (so is its rounding), hence
@@ -325,17 +341,18 @@ void surface_columns(const tri& tr, const vec3<double>& n, const vec3<double>& b
     for (long long iu = r0[u]; iu <= r1[u]; ++iu) {
         const double fu = double(iu);
         // The columns of this row whose square can meet the shadow: each edge axis bounds
-        // iv to an interval (widened by one; the test per column below decides).
+        // iv to an interval (widened by one, far more than the rounding of the reciprocal;
+        // the test per column below decides).
         double vlo = double(r0[v]), vhi = double(r1[v]);
         double base[3];
         for (int e = 0; e < 3; ++e) {
             base[e] = axis_u[e] * (fu - p[0][u]);
             if (axis_v[e] > 0) {
-                vlo = std::max(vlo, (lo2[e] - base[e]) / axis_v[e] + p[0][v] - 1);
-                vhi = std::min(vhi, (hi2[e] - base[e]) / axis_v[e] + p[0][v] + 1);
+                vlo = std::max(vlo, (lo2[e] - base[e]) * inv_axis_v[e] + p[0][v] - 1);
+                vhi = std::min(vhi, (hi2[e] - base[e]) * inv_axis_v[e] + p[0][v] + 1);
             } else if (axis_v[e] < 0) {
-                vlo = std::max(vlo, (hi2[e] - base[e]) / axis_v[e] + p[0][v] - 1);
-                vhi = std::min(vhi, (lo2[e] - base[e]) / axis_v[e] + p[0][v] + 1);
+                vlo = std::max(vlo, (hi2[e] - base[e]) * inv_axis_v[e] + p[0][v] - 1);
+                vhi = std::min(vhi, (lo2[e] - base[e]) * inv_axis_v[e] + p[0][v] + 1);
             }
         }
         if (!(vlo <= vhi)) continue;
@@ -363,16 +380,43 @@ void surface_columns(const tri& tr, const vec3<double>& n, const vec3<double>& b
         long long ci = a, ce = b;
         while (ci <= b && kind(ci) == 1) ++ci;
         while (ce >= ci && kind(ce) == 1) --ce;
-        // The voxels of column iv within reach of the plane, [w0, w1]; false if none.
+        // The voxels of column iv within reach of the plane, [w0, w1], cut to the window and
+        // the bounding box; false if none. The height by a multiplication: its rounding, a
+        // few ulps of the triangle's coordinates, is far within reach_slack.
+        const double cu_scaled = cu * inv_nd;
         auto reach = [&](long long iv, long long& w0, long long& w1) {
-            const double w = (cu - n[v] * double(iv)) / n[D];
-            return window_range(r0[D], r1[D], std::max(w - reach_slack, bl[D]) - 0.5, std::min(w + reach_slack, bh[D]) + 0.5, w0, w1);
+            const double w = cu_scaled - double(iv) * nv_scaled;
+            w0 = std::max(reach_lo, -fast_floor(reach_half - w));
+            w1 = std::min(reach_hi, fast_floor(w + reach_half));
+            return w0 <= w1;
         };
+        const double cu_rel = fu - o[u];
+        // Whether the plane meets voxel (iu, iv, iw) given cw = iw - o[D], as meets_plane().
+        auto meets_plane = [&](double tu, double tv, double cw) {
+            double t[3];
+            t[u] = tu;
+            t[v] = tv;
+            t[D] = normal[D] * cw;
+            const double q = (t[0] + t[1]) + t[2];
+            return (q >= plane_lo) & (q <= plane_hi);
+        };
+        const double tu = normal[u] * cu_rel;
+        // overlaps_off<D>(): the plane and the six axes u x edge, v x edge.
         auto edge_column = [&](long long iv) {
             long long w0, w1;
             if (!reach(iv, w0, w1)) return;
-            for (long long iw = w0; iw <= w1; ++iw)
-                put(iu, iv, iw, tester.template overlaps_off<int(D)>(centre(fu, double(iv), double(iw))));
+            const double cv_rel = double(iv) - o[v], tv = normal[v] * cv_rel;
+            double shared[6];
+            for (int j = 0; j < 6; ++j) shared[j] = edge_t[j] * (j % 2 == 0 ? cv_rel : cu_rel);
+            for (long long iw = w0; iw <= w1; ++iw) {
+                const double cw = double(iw) - o[D];
+                bool on = meets_plane(tu, tv, cw);
+                for (int j = 0; j < 6; ++j) {
+                    const double q = shared[j] + edge_d[j] * cw;
+                    on &= (q >= edge_lo[j]) & (q <= edge_hi[j]);
+                }
+                put(iu, iv, iw, on);
+            }
         };
         for (long long iv = a; iv < ci; ++iv) edge_column(iv);
         for (long long iv = ci; iv <= ce; ++iv) {
@@ -382,9 +426,10 @@ void surface_columns(const tri& tr, const vec3<double>& n, const vec3<double>& b
             // Most columns reach one or two voxels: test two without a branch on how many
             // (the second is w0 again, set only if it passes, when the reach is one voxel).
             const long long second = w0 + (w1 > w0);
-            put(iu, iv, w0, tester.meets_plane(centre(fu, fv, double(w0))));
-            put(iu, iv, second, tester.meets_plane(centre(fu, fv, double(second))));
-            for (long long iw = w0 + 2; iw <= w1; ++iw) put(iu, iv, iw, tester.meets_plane(centre(fu, fv, double(iw))));
+            const double tv = normal[v] * (fv - o[v]);
+            put(iu, iv, w0, meets_plane(tu, tv, double(w0) - o[D]));
+            put(iu, iv, second, meets_plane(tu, tv, double(second) - o[D]));
+            for (long long iw = w0 + 2; iw <= w1; ++iw) put(iu, iv, iw, meets_plane(tu, tv, double(iw) - o[D]));
         }
         for (long long iv = std::max(ce + 1, ci); iv <= b; ++iv) edge_column(iv);
     }
@@ -471,15 +516,17 @@ inline slab_bins bin_to_slabs(const std::vector<tri>& tris, const std::vector<st
 /// from bit_grid::unwritten(). Returns false when `progress` cancelled.
 ///
 /// The window is cut into slabs of whole z-layers, each filled start to end by one thread:
-/// crossings, prefix XOR, then surface voxels. A slab's words (up to 512 KiB) stay in that
+/// crossings, prefix XOR, then surface voxels. A slab's words (up to 1 MiB) stay in that
 /// core's cache through the three steps, and no two threads write one word, so no atomics.
+/// Larger slabs than 512 KiB measured faster (fewer triangles cut in several slabs, each
+/// prepared once per slab), while a 512^3 grid still has 19 slabs to share out.
 inline bool fill_window(const std::vector<tri>& tris, const std::vector<std::uint32_t>* surface_subset,
                         const std::vector<std::uint32_t>* crossing_subset, const std::array<long long, 3>& lo, bit_grid& out,
                         const window_job& job, unsigned threads, const progress_function& progress) {
     const grid_dims dims = out.dims();
     const long long nx = static_cast<long long>(dims[0]), ny = static_cast<long long>(dims[1]), nz = static_cast<long long>(dims[2]);
     const std::size_t words = out.words_per_row();
-    const long long layers = std::clamp<long long>(static_cast<long long>((std::size_t(1) << 16) / std::max<std::size_t>(1, words * dims[1])), 1, nz);
+    const long long layers = std::clamp<long long>(static_cast<long long>((std::size_t(1) << 17) / std::max<std::size_t>(1, words * dims[1])), 1, nz);
     const std::size_t slabs = std::size_t((nz + layers - 1) / layers);
     slab_bins surface_bins, own_crossing_bins;
     if (job.surface) surface_bins = bin_to_slabs(tris, surface_subset, lo[2], nz, layers);
@@ -507,8 +554,8 @@ inline bool fill_window(const std::vector<tri>& tris, const std::vector<std::uin
                 const tri& tr = tris[crossing_bins.tri[b]];
                 const crossing_triangle ct(tr.p[0], tr.p[1], tr.p[2]);
                 if (ct.xmin - 1 >= double(lo[0] + nx)) continue;  // crosses no ray before the window's end
-                ct.for_each_ray(lo[1], lo[1] + ny - 1, lo[2] + k0, lo[2] + k1, [&](long long j, long long k) {
-                    const long long first = ct.first_beyond(j, k) - lo[0];
+                ct.for_each_ray(lo[1], lo[1] + ny - 1, lo[2] + k0, lo[2] + k1, [&](long long j, long long k, const crossing_triangle::row_estimate& row) {
+                    const long long first = ct.first_beyond(row, j, k) - lo[0];
                     if (first >= nx) return;
                     const std::size_t i = first <= 0 ? 0 : static_cast<std::size_t>(first);
                     toggles[(std::size_t(k - lo[2]) * dims[1] + std::size_t(j - lo[1])) * words + (i >> 6)] ^= std::uint64_t(1) << (i & 63);
@@ -624,7 +671,7 @@ inline result<window_job> plan(const voxelize_options& options, bool closed, std
 ///   with a symbolic perturbation of the centre by (eps, eps^2, eps^3): rays through edges
 ///   and vertices count once, and a centre exactly on the surface is inside where the surface
 ///   faces -x. On a mesh that is not closed, see voxelize_options.
-/// - Parallel over slabs of z-layers (about 512 KiB of bits each, one thread per slab, the
+/// - Parallel over slabs of z-layers (about 1 MiB of bits each, one thread per slab, the
 ///   triangles binned to the slabs they reach): the output is the same for every thread count.
 ///
 /// Complexity: O(F + sum over triangles of the slabs they reach + the voxels in their bounding

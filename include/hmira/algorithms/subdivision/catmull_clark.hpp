@@ -60,9 +60,9 @@ struct cc_counts {
 };
 
 /// The per-level arrays, sized once for the largest level so that no level allocates after
-/// the mesh starts changing. Kept lean (29 bytes a vertex, 28 a face; the edge points go
-/// straight into the new vertices): at a million
-/// faces, first touching fresh pages costs as much as the arithmetic.
+/// the mesh starts changing. Kept lean (29 bytes a vertex; 28 a face, or 4 where the face
+/// points go straight into their vertices; the edge points always do): at a million faces,
+/// first touching fresh pages costs as much as the arithmetic.
 template <class M, class T>
 struct cc_workspace {
     std::vector<vec3<double>> vertex_point;  // the sums of neighbours and face points; a boundary vertex's new position
@@ -70,6 +70,7 @@ struct cc_workspace {
     std::vector<std::uint32_t> valence;
     std::vector<std::uint8_t> boundary_edges;  // saturates at 3: only "none", "two" and "more" matter
     std::vector<typename T::face_handle> faces;
+    std::vector<std::uint32_t> centre;  // by face index: its face-point vertex's index (points in place)
     std::vector<typename T::halfedge_handle> corners;
     std::array<std::size_t, 3> room{};  // the vertex, edge and face index bounds the mesh has capacity for
 
@@ -79,6 +80,7 @@ struct cc_workspace {
         boundary_edges.reserve(vertex_bound);
         face_point.reserve(face_bound);
         faces.reserve(face_bound);
+        centre.reserve(face_bound);
         corners.reserve(max_degree);
     }
 };
@@ -97,17 +99,50 @@ bool catmull_clark_level(M& mesh, cc_workspace<M, T>& w, progress_gate& gate) {
     // Every new position is computed before the first operator, in flat arrays indexed by
     // element index, from the old positions only; old positions change only at the very end.
     const std::size_t vertex_bound = T::vertex_index_bound(mesh);
+    const std::size_t face_bound = T::face_index_bound(mesh);
+    const std::size_t old_vertices = T::vertex_count(mesh);
     w.vertex_point.assign(vertex_bound, {});
     w.valence.assign(vertex_bound, 0);
     w.boundary_edges.assign(vertex_bound, 0);
-    w.face_point.assign(T::face_index_bound(mesh), {});
     w.faces.clear();
     auto& sum = w.vertex_point;
+
+    // Points in place: on a model that names a vertex by its index (bulk_growable_mesh), with
+    // double positions, every face index live and the faces met in index order, each face's
+    // vertex index is known before the first change (faces of lower index go first, and each
+    // makes the points of its edges not split yet, then its centre), so the face point is
+    // written straight into that vertex rather than into a face_point array that would be
+    // faulted in, filled and read back. Elsewhere the array keeps them; the result is the same.
+    bool in_place = false;
+    if constexpr (bulk_growable_mesh<M, T> && std::same_as<typename T::scalar, double>) {
+        in_place = T::face_count(mesh) == face_bound;
+        std::size_t k = 0;
+        for (auto f : T::faces(mesh)) {
+            if (!in_place) break;
+            in_place = T::face_index(mesh, f) == k++;
+        }
+    }
+    const auto vertex_of = [&](std::size_t i) {
+        if constexpr (bulk_growable_mesh<M, T>) return T::vertex_at(mesh, i);
+        else { (void)i; return typename T::vertex_handle{}; }  // not called: in_place is false
+    };
+    const auto resize_vertices = [&](std::size_t n) {  // in place only
+        if constexpr (bulk_growable_mesh<M, T>) T::resize(mesh, n, T::edge_index_bound(mesh), face_bound);
+        else (void)n;
+    };
+    w.face_point.assign(in_place ? 0 : face_bound, {});
+    w.centre.assign(in_place ? face_bound : 0, 0);
+    const auto face_point_of = [&](F f) -> vec3<double> {
+        if (in_place) return dt::position_of<M, T>(mesh, vertex_of(w.centre[T::face_index(mesh, f)]));
+        return w.face_point[T::face_index(mesh, f)];
+    };
+    // In place: the next new vertex's index, and the vertex index bound made so far.
+    std::size_t next_vertex = vertex_bound, vertex_end = vertex_bound;
 
     // Face points (centroids); each vertex sums the face points around it.
     std::size_t done = 0;
     for (auto f : T::faces(mesh)) {
-        w.faces.push_back(f);
+        if (!in_place) w.faces.push_back(f);
         const H start = T::face_halfedge(mesh, f);
         vec3<double> c{};
         std::size_t n = 0;
@@ -118,13 +153,31 @@ bool catmull_clark_level(M& mesh, cc_workspace<M, T>& w, progress_gate& gate) {
             x = T::next(mesh, x);
         } while (x != start);
         c = c / double(n);
-        w.face_point[T::face_index(mesh, f)] = c;
+        if (in_place) {
+            // The edges f will split: those whose other side is a boundary or a later face.
+            const std::size_t fi = T::face_index(mesh, f);
+            do {
+                const F g = T::face(mesh, T::opposite(mesh, x));
+                next_vertex += g == T::null_face() || T::face_index(mesh, g) > fi;
+                x = T::next(mesh, x);
+            } while (x != start);
+            if (next_vertex >= vertex_end) {  // the vertices made in blocks, as new_elements would
+                vertex_end = std::max(next_vertex + 1, std::min(vertex_end + (1u << 12), w.room[0]));
+                resize_vertices(vertex_end);
+            }
+            w.centre[fi] = std::uint32_t(next_vertex);
+            dt::set_position<M, T>(mesh, vertex_of(next_vertex++), c);
+        } else {
+            w.face_point[T::face_index(mesh, f)] = c;
+        }
         do {
             sum[T::vertex_index(mesh, T::target(mesh, x))] += c;
             x = T::next(mesh, x);
         } while (x != start);
         if (++done % block == 0 && !gate.advance(1)) return false;
     }
+
+    if (in_place && vertex_end != next_vertex) resize_vertices(next_vertex);
 
     // Each vertex adds its neighbours and counts its edges and boundary edges.
     for (auto e : T::edges(mesh)) {
@@ -152,8 +205,12 @@ bool catmull_clark_level(M& mesh, cc_workspace<M, T>& w, progress_gate& gate) {
     // The boundary rule reads the old neighbours, so it runs here, before the splits; the inner
     // rule reads the vertex's own old position only, so it runs in the last pass, which writes
     // the positions (one pass over the vertices fewer).
+    std::size_t seen = 0;  // old vertices met (new ones may exist already: the face points in place)
     for (auto v : T::vertices(mesh)) {
+        if (seen == old_vertices) break;
         const std::size_t i = T::vertex_index(mesh, v);
+        if (i >= vertex_bound) continue;
+        ++seen;
         if (w.boundary_edges[i] == 2) {
             const vec3<double> p = dt::position_of<M, T>(mesh, v);
             const H s = T::vertex_halfedge(mesh, v);
@@ -176,9 +233,20 @@ bool catmull_clark_level(M& mesh, cc_workspace<M, T>& w, progress_gate& gate) {
     // `make` (in bulk where the model allows) in the order those operators would make them.
     new_elements<M, T> make(mesh, w.room);
     const auto is_old = [&](typename T::vertex_handle v) { return std::size_t(T::vertex_index(mesh, v)) < vertex_bound; };
-    for (std::size_t i = 0; i < w.faces.size(); ++i) {
-        const F f = w.faces[i];
-        const vec3<double>& c = w.face_point[T::face_index(mesh, f)];
+    // In place, the new vertices exist already and are taken in the same order.
+    next_vertex = vertex_bound;
+    const auto new_vertex = [&](const vec3<double>& p) {
+        if (!in_place) return make.vertex(p);
+        const auto v = vertex_of(next_vertex++);
+        dt::set_position<M, T>(mesh, v, p);
+        return v;
+    };
+    const std::size_t face_total = in_place ? face_bound : w.faces.size();
+    for (std::size_t i = 0; i < face_total; ++i) {
+        F f{};
+        if constexpr (bulk_growable_mesh<M, T>) f = in_place ? T::face_at(mesh, i) : w.faces[i];
+        else f = w.faces[i];
+        const vec3<double> c = face_point_of(f);
         w.corners.clear();
         const H start = T::face_halfedge(mesh, f);
         H x = start;
@@ -188,8 +256,9 @@ bool catmull_clark_level(M& mesh, cc_workspace<M, T>& w, progress_gate& gate) {
             } else if (const H o = T::opposite(mesh, x); is_old(T::target(mesh, o))) {
                 const F g = T::face(mesh, o);
                 const vec3<double> ends = dt::position_of<M, T>(mesh, T::target(mesh, x)) + dt::position_of<M, T>(mesh, T::target(mesh, o));
-                const vec3<double> q = g == T::null_face() ? ends * 0.5 : (ends + c + w.face_point[T::face_index(mesh, g)]) * 0.25;
-                x = dt::split_links<M, T>(mesh, x, make.vertex(q), false, false, make);  // x now ends at the edge point; continue after the new half
+                const vec3<double> q = g == T::null_face() ? ends * 0.5 : (ends + c + face_point_of(g)) * 0.25;
+                // x now ends at the edge point; continue after the new half
+                x = dt::split_links<M, T>(mesh, x, new_vertex(q), false, false, make);
                 w.corners.push_back(T::prev(mesh, x));
             }
             x = T::next(mesh, x);
@@ -200,7 +269,8 @@ bool catmull_clark_level(M& mesh, cc_workspace<M, T>& w, progress_gate& gate) {
         // f keeps quad 0. Each next(corners[k]) is read before corners[k]'s next changes.
         const H first = w.corners[0];
         H side = T::next(mesh, first);  // next(corners[k - 1])
-        const auto centre = make.vertex(c);
+        const auto centre = in_place ? vertex_of(next_vertex++) : make.vertex(c);  // in place: at c already
+        assert(!in_place || std::size_t(T::vertex_index(mesh, centre)) == w.centre[T::face_index(mesh, f)]);
         const H spike = make.edge(T::target(mesh, first), centre);  // edge point 0 -> centre
         H out_of_centre = T::opposite(mesh, spike);                 // centre -> edge point k - 1
         for (std::size_t k = 1; k < w.corners.size(); ++k) {
@@ -232,9 +302,14 @@ bool catmull_clark_level(M& mesh, cc_workspace<M, T>& w, progress_gate& gate) {
         T::set_vertex_halfedge(mesh, centre, T::opposite(mesh, spike));
         if ((i + 1) % block == 0 && !gate.advance(1)) return false;
     }
+    // The pass stops once it has seen every old vertex (on the usual models they come first, in
+    // index order), rather than run over the three times as many new ones.
+    seen = 0;
     for (auto v : T::vertices(mesh)) {
+        if (seen == old_vertices) break;
         const std::size_t i = T::vertex_index(mesh, v);
         if (i >= vertex_bound) continue;  // a new vertex, placed already
+        ++seen;
         if (w.boundary_edges[i] == 0 && w.valence[i] > 0) {
             const double n = double(w.valence[i]);
             dt::set_position<M, T>(mesh, v, (dt::position_of<M, T>(mesh, v) * (n - 2) + sum[i] / n) / n);

@@ -108,6 +108,8 @@ void loop_level(M& mesh, loop_workspace<M, T>& w) {
     // Every new element comes from here (in bulk where the model allows), in the order the
     // traits' adds would make them.
     new_elements<M, T> make(mesh, w.room);
+    const std::size_t old_vertices = T::vertex_count(mesh);
+    std::size_t faceless_edges = 0;  // edges without a face on either side, split last
 
     // Edge points (3/8 of each end and 1/8 of each opposite corner; the midpoint on a
     // boundary), computed before any split changes the corners and made into isolated new
@@ -129,6 +131,7 @@ void loop_level(M& mesh, loop_workspace<M, T>& w) {
             q = (a + b) * 0.375 + (c + d) * 0.125;
         } else {
             q = (a + b) * 0.5;
+            faceless_edges += T::face(mesh, h) == T::null_face() && T::face(mesh, o) == T::null_face();
             w.boundary_edges[ia] = std::uint8_t(std::min(3, w.boundary_edges[ia] + 1));
             w.boundary_edges[ib] = std::uint8_t(std::min(3, w.boundary_edges[ib] + 1));
         }
@@ -143,9 +146,14 @@ void loop_level(M& mesh, loop_workspace<M, T>& w) {
     std::array<double, 16> betas{};
     for (std::size_t n = 3; n < betas.size(); ++n) betas[n] = loop_beta(n);
     bool boundary_moves = false;
+    // The edge points are vertices too now: the pass stops once it has seen every old vertex
+    // (on the usual models they come first, in index order), rather than run over them all.
+    std::size_t seen = 0;
     for (auto v : T::vertices(mesh)) {
+        if (seen == old_vertices) break;
         const std::size_t i = T::vertex_index(mesh, v);
         if (i >= vertex_bound) continue;  // an edge point, placed already
+        ++seen;
         const std::size_t n = w.valence[i];
         if (w.boundary_edges[i] == 0 && n > 0) {
             const auto p = dt::position_of<M, T>(mesh, v);
@@ -199,19 +207,27 @@ void loop_level(M& mesh, loop_workspace<M, T>& w) {
     }
     // Edges without a face on either side just gain their vertex. (The bounds still count
     // the unused end of the last blocks: indices at or above edge_bound are skipped.)
-    for (auto e : T::edges(mesh)) {
-        const std::size_t i = T::edge_index(mesh, e);
-        if (i < edge_bound && w.edge_vertex[i] != typename T::vertex_handle{}) {
-            [[maybe_unused]] const auto new_halfedge = dt::split_links<M, T>(mesh, T::edge_halfedge(mesh, e), w.edge_vertex[i], false, false, make);
-            w.edge_vertex[i] = typename T::vertex_handle{};
+    // Most meshes have none, and then this pass over the (by now four times as many) edges is skipped.
+    if (faceless_edges > 0)
+        for (auto e : T::edges(mesh)) {
+            const std::size_t i = T::edge_index(mesh, e);
+            if (i < edge_bound && w.edge_vertex[i] != typename T::vertex_handle{}) {
+                [[maybe_unused]] const auto new_halfedge =
+                    dt::split_links<M, T>(mesh, T::edge_halfedge(mesh, e), w.edge_vertex[i], false, false, make);
+                w.edge_vertex[i] = typename T::vertex_handle{};
+            }
+        }
+    make.finish();
+    if (boundary_moves) {
+        seen = 0;
+        for (auto v : T::vertices(mesh)) {
+            if (seen == old_vertices) break;
+            const std::size_t i = T::vertex_index(mesh, v);
+            if (i >= vertex_bound) continue;
+            ++seen;
+            if (w.boundary_edges[i] == 2) dt::set_position<M, T>(mesh, v, sum[i]);
         }
     }
-    make.finish();
-    if (boundary_moves)
-        for (auto v : T::vertices(mesh)) {
-            const std::size_t i = T::vertex_index(mesh, v);
-            if (i < vertex_bound && w.boundary_edges[i] == 2) dt::set_position<M, T>(mesh, v, sum[i]);
-        }
 }
 
 }  // namespace detail::subdivision

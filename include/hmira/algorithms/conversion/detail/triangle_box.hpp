@@ -90,6 +90,16 @@ public:
         return p >= lo_[0] && p <= hi_[0];
     }
 
+    /// Axis q (0: the normal, 1 + 3 e + a: box axis a x edge e), its interval (the triangle's
+    /// projection widened by the box's radius) and the corner projections are relative to:
+    /// for callers that share the parts of the projection that many boxes have in common.
+    ///@{
+    const vec3<double>& axis(int q) const noexcept { return axis_[q]; }
+    double lo(int q) const noexcept { return lo_[q]; }
+    double hi(int q) const noexcept { return hi_[q]; }
+    const vec3<double>& origin() const noexcept { return origin_; }
+    ///@}
+
 private:
     void add(const vec3<double>& u, const vec3<double>& a, const vec3<double>& b, const vec3<double>& c, double h) {
         const double pa = dot(u, a), pb = dot(u, b), pc = dot(u, c);

@@ -70,11 +70,15 @@ struct crossing_triangle {
     int orient = 0;  // exact orientation of the (y, z) shadow; 0: seen edge-on, no crossing
     vec3<double> n;  // (b - a) x (c - a), rounded
     double offset = 0, xmin = 0, xmax = 0, ymin = 0, ymax = 0, zmin = 0, zmax = 0;
+    // 1 / n.x: first_beyond()'s estimate only needs to be within its tolerance (1e-9
+    // relative), so a multiplication replaces two divisions per ray.
+    double inv_nx = 0;
 
     crossing_triangle(const vec3<double>& p0, const vec3<double>& p1, const vec3<double>& p2) : a(p0), b(p1), c(p2) {
         orient = predicates::orient2d(a.y, a.z, b.y, b.z, c.y, c.z);
         n = cross(b - a, c - a);
         offset = dot(n, a);
+        inv_nx = 1 / n.x;
         xmin = std::min({a.x, b.x, c.x});
         xmax = std::max({a.x, b.x, c.x});
         ymin = std::min({a.y, b.y, c.y});
@@ -96,12 +100,28 @@ struct crossing_triangle {
         return s == 0 || s == orient;
     }
 
+    /// The plane's x along the rays of row k with j in [j0, j1], prepared once per row: x
+    /// = base - j * slope, within `tol` of the exact crossing (tol bounds the rounding of n,
+    /// offset and these products, a few ulps, by 1e-9 of the magnitudes involved).
+    struct row_estimate {
+        double base = 0, slope = 0, tol = 0;
+    };
+    row_estimate along_row(long long k, long long j0, long long j1) const noexcept {
+        const double dk = double(k);
+        const double jmax = std::max(std::abs(double(j0)), std::abs(double(j1)));
+        row_estimate r;
+        r.base = (offset - n.z * dk) * inv_nx;
+        r.slope = n.y * inv_nx;
+        r.tol = 1e-9 * (1.0 + std::max(std::abs(xmin), std::abs(xmax)) + (std::abs(offset) + std::abs(n.y) * jmax + std::abs(n.z * dk)) * std::abs(inv_nx));
+        return r;
+    }
+
     /// The first integer i whose centre lies beyond the crossing of ray (j, k), which must
-    /// cross the triangle. Exact: the rounded plane gives it unless it lies near an integer.
-    long long first_beyond(long long j, long long k) const noexcept {
+    /// cross the triangle; `r` is along_row(k, ..) for a range holding j. Exact: the rounded
+    /// plane gives it unless it lies near an integer.
+    long long first_beyond(const row_estimate& r, long long j, long long k) const noexcept {
         const double dj = double(j), dk = double(k);
-        const double num = offset - n.y * dj - n.z * dk;
-        double x = num / n.x;
+        double x = r.base - dj * r.slope;
         if (!std::isfinite(x) || x < xmin - 1 || x > xmax + 1) {
             // Nearly edge-on: search [floor(xmin), ceil(xmax) + 1] exactly (beyond is monotone).
             long long l = static_cast<long long>(std::floor(xmin)), h = static_cast<long long>(std::ceil(xmax)) + 1;
@@ -114,9 +134,8 @@ struct crossing_triangle {
         }
         x = std::clamp(x, xmin, xmax);
         const double f = floor_exact(x);
-        const double tol = 1e-9 * (1.0 + std::abs(x) + (std::abs(offset) + std::abs(n.y * dj) + std::abs(n.z * dk)) / std::abs(n.x));
         const double frac = x - f;
-        if (frac > tol && 1 - frac > tol) return static_cast<long long>(f) + 1;
+        if (frac > r.tol && 1 - frac > r.tol) return static_cast<long long>(f) + 1;
         // Close to integer m = round(x): m itself, or m + 1, is the first beyond.
         const long long m = static_cast<long long>(frac > 0.5 ? f + 1 : f);
         if (!beyond(double(m), dj, dk)) return m + 1;
@@ -124,9 +143,12 @@ struct crossing_triangle {
         return m;
     }
 
-    /// Calls fn(j, k) for every ray (j, k) with j in [j0, j1], k in [k0, k1] crossing the
-    /// triangle: per row k, the ends of the run of j are found by exact tests (the run is an
-    /// interval: the shadow is convex), and the run's inside is not tested again.
+    /// first_beyond() of one ray.
+    long long first_beyond(long long j, long long k) const noexcept { return first_beyond(along_row(k, j, j), j, k); }
+
+    /// Calls fn(j, k, along_row(k, ..)) for every ray (j, k) with j in [j0, j1], k in [k0, k1]
+    /// crossing the triangle: per row k, the ends of the run of j are found by exact tests (the
+    /// run is an interval: the shadow is convex), and the run's inside is not tested again.
     template <class Fn>
     void for_each_ray(long long j0, long long j1, long long k0, long long k1, Fn&& fn) const {
         if (orient == 0) return;
@@ -176,7 +198,8 @@ struct crossing_triangle {
                 --hi;
                 while (hi > lo && !inside(hi)) --hi;
             }
-            for (long long j = lo; j <= hi; ++j) fn(j, k);
+            const row_estimate row = along_row(k, lo, hi);
+            for (long long j = lo; j <= hi; ++j) fn(j, k, row);
         }
     }
 };
