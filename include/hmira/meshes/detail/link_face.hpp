@@ -47,17 +47,24 @@ bool on_boundary(const M& m, typename T::vertex_handle v) {
     return h == T::null_halfedge() || T::face(m, h) == T::null_face();
 }
 
-/// The halfedge a -> b, or null. O(V_adjacentV).
+/// The halfedge a -> b, or null. Walks a's fan (for target b) and b's fan (for target a) in
+/// step, so that the two chains of dependent reads overlap, and stops at the first fan to close:
+/// an edge missing because either end is new or has few edges is known at once. Every fan is
+/// one loop of outgoing halfedges (boundary gaps are linked across), so either walk alone
+/// finds the edge. O(min(V_adjacentV(a), V_adjacentV(b))).
 template <class M, class T>
 typename T::halfedge_handle find_halfedge(const M& m, typename T::vertex_handle a, typename T::vertex_handle b) {
-    const auto start = T::vertex_halfedge(m, a);
-    if (start == T::null_halfedge()) return start;
-    auto h = start;
+    const auto null_h = T::null_halfedge();
+    const auto start_a = T::vertex_halfedge(m, a), start_b = T::vertex_halfedge(m, b);
+    if (start_a == null_h || start_b == null_h) return null_h;
+    auto ha = start_a, hb = start_b;
     do {
-        if (T::target(m, h) == b) return h;
-        h = T::next(m, T::opposite(m, h));
-    } while (h != start);
-    return T::null_halfedge();
+        if (T::target(m, ha) == b) return ha;
+        if (T::target(m, hb) == a) return T::opposite(m, hb);
+        ha = T::next(m, T::opposite(m, ha));
+        hb = T::next(m, T::opposite(m, hb));
+    } while (ha != start_a && hb != start_b);
+    return null_h;
 }
 
 /// For re-linking at the vertex between `in` (incoming) and `out` (outgoing): the boundary
@@ -73,6 +80,30 @@ typename T::halfedge_handle free_gap(const M& m, typename T::halfedge_handle in,
         if (T::face(m, h) == T::null_face()) return h == in ? T::null_halfedge() : h;
     } while (h != start);
     return T::null_halfedge();
+}
+
+/// After v's stored outgoing halfedge `start` gained a face: stores another boundary halfedge
+/// out of v, or keeps start if none is left (v is now interior). The fan is walked from start
+/// both ways at once, forward by next(opposite) and backward by opposite(prev), until a
+/// boundary halfedge turns up or the two walks meet: the two chains of dependent reads overlap,
+/// which matters because a vertex that closes needs its whole fan walked (a sixth of building a
+/// mesh face by face went into that walk when it went one way). O(V_adjacentV).
+template <class M, class T>
+void store_boundary_halfedge(M& m, typename T::vertex_handle v, typename T::halfedge_handle start) {
+    const auto null_f = T::null_face();
+    auto f = start, b = start;
+    for (;;) {
+        f = T::next(m, T::opposite(m, f));
+        if (f == b) return;
+        if (T::face(m, f) == null_f) break;
+        b = T::opposite(m, T::prev(m, b));
+        if (b == f) return;
+        if (T::face(m, b) == null_f) {
+            f = b;
+            break;
+        }
+    }
+    T::set_vertex_halfedge(m, v, f);
 }
 
 }  // namespace linking
@@ -201,8 +232,12 @@ result<typename T::face_handle> link_face(M& m, std::span<const typename T::vert
         const std::size_t ii = (i + 1) % n;
         const auto v = vs[ii];
         const auto in = sides[i], out = sides[ii];
-        const bool in_new = fresh[i] != 0, out_new = fresh[ii] != 0;
-        if (in_new || out_new) {
+        const bool in_new = (fresh[i] & 1) != 0, out_new = (fresh[ii] & 1) != 0;
+        if (!in_new && !out_new) {
+            // The only halfedge out of v that gains a face is `out`: v needs another boundary
+            // halfedge (or none, if it closes) only when it stored that one.
+            if (T::vertex_halfedge(m, v) == out) fresh[ii] |= 2;
+        } else {
             const auto outer_in = T::opposite(m, out), outer_out = T::opposite(m, in);
             if (in_new && !out_new) {
                 add_link(T::prev(m, out), outer_out);
@@ -224,7 +259,9 @@ result<typename T::face_handle> link_face(M& m, std::span<const typename T::vert
         T::set_face(m, in, f);
     }
     for (std::size_t k = 0; k < link_count; ++k) T::set_next(m, links[k].first, links[k].second);
-    for (std::size_t i = 0; i < n; ++i) prefer_boundary_halfedge<M, T>(m, vs[i]);
+    // Every other corner still stores a boundary halfedge: the one it had, or one set above.
+    for (std::size_t i = 0; i < n; ++i)
+        if (fresh[i] & 2) linking::store_boundary_halfedge<M, T>(m, vs[i], sides[i]);
     return f;
 }
 
