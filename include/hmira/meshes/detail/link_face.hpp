@@ -47,24 +47,17 @@ bool on_boundary(const M& m, typename T::vertex_handle v) {
     return h == T::null_halfedge() || T::face(m, h) == T::null_face();
 }
 
-/// The halfedge a -> b, or null. Walks a's fan (for target b) and b's fan (for target a) in
-/// step, so that the two chains of dependent reads overlap, and stops at the first fan to close:
-/// an edge missing because either end is new or has few edges is known at once. Every fan is
-/// one loop of outgoing halfedges (boundary gaps are linked across), so either walk alone
-/// finds the edge. O(min(V_adjacentV(a), V_adjacentV(b))).
+/// The halfedge a -> b, or null. O(V_adjacentV).
 template <class M, class T>
 typename T::halfedge_handle find_halfedge(const M& m, typename T::vertex_handle a, typename T::vertex_handle b) {
-    const auto null_h = T::null_halfedge();
-    const auto start_a = T::vertex_halfedge(m, a), start_b = T::vertex_halfedge(m, b);
-    if (start_a == null_h || start_b == null_h) return null_h;
-    auto ha = start_a, hb = start_b;
+    const auto start = T::vertex_halfedge(m, a);
+    if (start == T::null_halfedge()) return start;
+    auto h = start;
     do {
-        if (T::target(m, ha) == b) return ha;
-        if (T::target(m, hb) == a) return T::opposite(m, hb);
-        ha = T::next(m, T::opposite(m, ha));
-        hb = T::next(m, T::opposite(m, hb));
-    } while (ha != start_a && hb != start_b);
-    return null_h;
+        if (T::target(m, h) == b) return h;
+        h = T::next(m, T::opposite(m, h));
+    } while (h != start);
+    return T::null_halfedge();
 }
 
 /// For re-linking at the vertex between `in` (incoming) and `out` (outgoing): the boundary
