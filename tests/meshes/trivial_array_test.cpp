@@ -66,6 +66,9 @@ TEST(TrivialArray, random_operations_match_std_vector) {
         }
         ASSERT_EQ(a.size(), ref.size());
         ASSERT_EQ(a.empty(), ref.empty());
+        if (a.capacity() > 0) {
+            ASSERT_EQ(reinterpret_cast<std::uintptr_t>(a.data()) % 64, 0u);
+        }
     }
     ASSERT_EQ(std::vector<std::uint32_t>(a.begin(), a.end()), ref);
 }
@@ -79,6 +82,36 @@ TEST(TrivialArray, push_back_of_own_element_survives_growth) {
         ASSERT_EQ(a[a.size() - 1].a, 1u);
         ASSERT_EQ(a[a.size() - 1].b, 2u);
     }
+}
+
+// realloc promises 16-byte alignment only; the array keeps its elements on a 64-byte boundary
+// even when realloc hands back a block at another offset (forced here by growing two arrays in
+// turn between other allocations of odd sizes), moving them there without losing one.
+TEST(TrivialArray, elements_start_on_a_cache_line_through_every_reallocation) {
+    struct odd {
+        std::uint32_t a, b, c;
+    };
+    std::mt19937 rng(7);
+    trivial_array<odd> x, y;
+    std::vector<std::vector<char>> noise;
+    for (std::uint32_t i = 0; i < 3000; ++i) {
+        x.push_back({i, 2 * i, 3 * i});
+        if (i % 3 == 0) y.reserve(y.capacity() + 1 + rng() % 5);
+        y.push_back({i, i + 1, i + 2});
+        if (rng() % 4 == 0) noise.emplace_back(1 + rng() % 200);
+        ASSERT_EQ(reinterpret_cast<std::uintptr_t>(x.data()) % 64, 0u);
+        ASSERT_EQ(reinterpret_cast<std::uintptr_t>(y.data()) % 64, 0u);
+    }
+    for (std::uint32_t i = 0; i < 3000; ++i) {
+        ASSERT_EQ(x[i].a, i);
+        ASSERT_EQ(x[i].b, 2 * i);
+        ASSERT_EQ(x[i].c, 3 * i);
+        ASSERT_EQ(y[i].a, i);
+        ASSERT_EQ(y[i].c, i + 2);
+    }
+    const trivial_array<odd> copy(x);
+    EXPECT_EQ(reinterpret_cast<std::uintptr_t>(copy.data()) % 64, 0u);
+    EXPECT_EQ(copy[2999].c, 3u * 2999);
 }
 
 TEST(TrivialArray, ensure_room_grows_geometrically_and_reserve_exactly) {

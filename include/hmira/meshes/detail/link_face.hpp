@@ -75,6 +75,30 @@ typename T::halfedge_handle free_gap(const M& m, typename T::halfedge_handle in,
     return T::null_halfedge();
 }
 
+/// After v's stored outgoing halfedge `start` gained a face: stores another boundary halfedge
+/// out of v, or keeps start if none is left (v is now interior). The fan is walked from start
+/// both ways at once, forward by next(opposite) and backward by opposite(prev), until a
+/// boundary halfedge turns up or the two walks meet: the two chains of dependent reads overlap,
+/// which matters because a vertex that closes needs its whole fan walked (a sixth of building a
+/// mesh face by face went into that walk when it went one way). O(V_adjacentV).
+template <class M, class T>
+void store_boundary_halfedge(M& m, typename T::vertex_handle v, typename T::halfedge_handle start) {
+    const auto null_f = T::null_face();
+    auto f = start, b = start;
+    for (;;) {
+        f = T::next(m, T::opposite(m, f));
+        if (f == b) return;
+        if (T::face(m, f) == null_f) break;
+        b = T::opposite(m, T::prev(m, b));
+        if (b == f) return;
+        if (T::face(m, b) == null_f) {
+            f = b;
+            break;
+        }
+    }
+    T::set_vertex_halfedge(m, v, f);
+}
+
 }  // namespace linking
 
 /// Makes v's stored outgoing halfedge a boundary one if v has any. O(V_adjacentV).
@@ -201,8 +225,12 @@ result<typename T::face_handle> link_face(M& m, std::span<const typename T::vert
         const std::size_t ii = (i + 1) % n;
         const auto v = vs[ii];
         const auto in = sides[i], out = sides[ii];
-        const bool in_new = fresh[i] != 0, out_new = fresh[ii] != 0;
-        if (in_new || out_new) {
+        const bool in_new = (fresh[i] & 1) != 0, out_new = (fresh[ii] & 1) != 0;
+        if (!in_new && !out_new) {
+            // The only halfedge out of v that gains a face is `out`: v needs another boundary
+            // halfedge (or none, if it closes) only when it stored that one.
+            if (T::vertex_halfedge(m, v) == out) fresh[ii] |= 2;
+        } else {
             const auto outer_in = T::opposite(m, out), outer_out = T::opposite(m, in);
             if (in_new && !out_new) {
                 add_link(T::prev(m, out), outer_out);
@@ -224,7 +252,9 @@ result<typename T::face_handle> link_face(M& m, std::span<const typename T::vert
         T::set_face(m, in, f);
     }
     for (std::size_t k = 0; k < link_count; ++k) T::set_next(m, links[k].first, links[k].second);
-    for (std::size_t i = 0; i < n; ++i) prefer_boundary_halfedge<M, T>(m, vs[i]);
+    // Every other corner still stores a boundary halfedge: the one it had, or one set above.
+    for (std::size_t i = 0; i < n; ++i)
+        if (fresh[i] & 2) linking::store_boundary_halfedge<M, T>(m, vs[i], sides[i]);
     return f;
 }
 
