@@ -160,6 +160,20 @@ TEST(OpenMeshInterop, a_refused_face_is_an_error_and_leaves_the_mesh_unchanged) 
     EXPECT_TRUE(hmira_test::is_valid(m));
 }
 
+// hmira's rings on OpenMesh step like OpenMesh's circulators, without a step guard, so a face
+// loop whose next links never return to its start is endless: validate must stop and say so.
+TEST(OpenMeshInterop, validate_reports_a_face_loop_that_never_closes_instead_of_following_it) {
+    poly m = native_grid(2, 2);
+    const auto f = *m.faces().begin();
+    const auto h1 = m.next_halfedge_handle(m.halfedge_handle(f));
+    m.set_next_halfedge_handle(h1, h1);  // the loop from f's halfedge now cycles at h1 for ever
+    const auto problems = hmira::validate(m);
+    const bool named = std::any_of(problems.begin(), problems.end(), [&](const hmira::mesh_problem& p) {
+        return p.kind == hmira::problem_kind::broken_link && p.message.find("face " + std::to_string(f.idx()) + ": its loop does not return") == 0;
+    });
+    EXPECT_TRUE(named) << "problems found: " << problems.size();
+}
+
 TEST(OpenMeshInterop, a_trimesh_refuses_a_quad_instead_of_triangulating_it) {
     tri m;
     using TT = hmira::mesh_traits<tri>;

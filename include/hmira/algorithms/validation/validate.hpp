@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -250,11 +251,28 @@ std::vector<mesh_problem> validate(const M& mesh, const validate_options& option
     std::vector<std::uint32_t> corner_prev, corner_next;
     std::vector<std::uint32_t> loop;
     bool references_ok = true;
+    // A face loop with more corners than the mesh has halfedges never closes (corrupt next
+    // links): stop there rather than follow it, since a model's rings need not guard.
+    std::size_t longest_loop = std::numeric_limits<std::size_t>::max();
+    bool loops_close = true;
+    if constexpr (halfedge_index_mesh<M, T>) longest_loop = T::halfedge_index_bound(mesh);
     for (auto f : T::faces(mesh)) {
         if (sink.full()) return out;
         const auto fi = T::face_index(mesh, f);
         loop.clear();
-        for (auto v : T::face_vertices(mesh, f)) loop.push_back(static_cast<std::uint32_t>(T::vertex_index(mesh, v)));
+        bool closes = true;
+        for (auto v : T::face_vertices(mesh, f)) {
+            if (loop.size() == longest_loop) {
+                closes = false;
+                break;
+            }
+            loop.push_back(static_cast<std::uint32_t>(T::vertex_index(mesh, v)));
+        }
+        if (!closes) {
+            sink.add(problem_kind::broken_link, fi, "face " + std::to_string(fi) + ": its loop does not return to its first halfedge");
+            loops_close = false;
+            continue;
+        }
         bool bad = false;
         for (auto i : loop)
             if (i >= nv || !live[i]) {
@@ -314,6 +332,13 @@ std::vector<mesh_problem> validate(const M& mesh, const validate_options& option
         }
     }
     if (!references_ok) return out;
+    if (!loops_close) {
+        // The face-based checks below walk every face loop; only the guarded link checks can
+        // say more about the broken one.
+        if constexpr (halfedge_index_mesh<M, T> && vertex_index_mesh<M, T> && edge_index_mesh<M, T>)
+            detail::validate_halfedges<M, T>(mesh, options, sink);
+        return out;
+    }
 
     // Edges: more than two sides, or two sides in the same direction.
     for (const auto& e : edge_census<M, T>(mesh)) {
