@@ -370,6 +370,9 @@ struct mesh_traits<OpenMesh::TriMesh_ArrayKernelT<Traits>> : openmesh_detail::tr
 
 }  // namespace hmira
 
+/// \cond
 // A lap_range only refers to the mesh, so iterators obtained from a temporary range stay valid.
+// (Hidden from Doxygen, which takes this std specialisation for an undeclared hmira symbol.)
 template <class Mesh, class Policy>
 inline constexpr bool std::ranges::enable_borrowed_range<hmira::openmesh_detail::lap_range<Mesh, Policy>> = true;
+/// \endcond
