@@ -112,6 +112,36 @@ TYPED_TEST(smoothing_test, boundary_and_fixed_vertices_stay_exactly_and_noise_go
     }
 }
 
+// The steps of one call share their buffers (allocated once per call): k iterations in one
+// call must give bit for bit what k calls of one iteration give, with fixed, boundary and
+// moving vertices side by side.
+TYPED_TEST(smoothing_test, iterations_in_one_call_equal_one_call_per_iteration) {
+    using M = TypeParam;
+    HMIRA_REQUIRE_TRIANGLE_OPS(M)
+    else {
+        using T = hmira::default_traits<M>;
+        for (auto w : {hmira::laplacian_weights::uniform, hmira::laplacian_weights::cotangent}) {
+            M a = mesh_from<M>(grid(6, 6, true));
+            std::mt19937_64 rng(11);
+            std::uniform_real_distribution<double> noise(-0.3, 0.3);
+            for (auto v : T::vertices(a)) {
+                auto p = T::position(a, v);
+                p[2] = typename T::scalar(noise(rng));
+                T::set_position(a, v, p);
+            }
+            M b = a, c = a, d = a;
+            ASSERT_TRUE(hmira::laplacian_smooth(a, {.iterations = 4, .weights = w, .fixed_vertices = {24}}));
+            for (int k = 0; k < 4; ++k) ASSERT_TRUE(hmira::laplacian_smooth(b, {.iterations = 1, .weights = w, .fixed_vertices = {24}}));
+            EXPECT_EQ(positions(a), positions(b));
+            ASSERT_TRUE(hmira::taubin_smooth(c, {.iterations = 3, .weights = w, .fixed_vertices = {24}}));
+            for (int k = 0; k < 3; ++k) ASSERT_TRUE(hmira::taubin_smooth(d, {.iterations = 1, .weights = w, .fixed_vertices = {24}}));
+            EXPECT_EQ(positions(c), positions(d));
+            EXPECT_NE(positions(a), positions(c));  // the two smoothers did move the vertices
+            for (const M* m : {&a, &b, &c, &d}) EXPECT_TRUE(valid_topology(*m));
+        }
+    }
+}
+
 TYPED_TEST(smoothing_test, bad_options_are_refused_and_change_nothing) {
     using M = TypeParam;
     HMIRA_REQUIRE_TRIANGLE_OPS(M)
