@@ -2,9 +2,12 @@
 # Size sweeps (issue 20): each performance-critical algorithm from 10^4 elements up to 10^7
 # (the linear ones; less where time or memory do not allow, see bench/sweep/sweep_bench.cpp),
 # the fitted exponent of CPU time against size beside the documented complexity, the spread of
-# the time per element, and PASS/FAIL; then the editing sweeps (bench/editing's
-# editing_scaling_bench, 10^4..10^6 faces). A few minutes in all; --quick: at most 10^6 (10^5
-# for remeshing), under a minute plus the build. Not run in CI.
+# the time per element, each size's working set, and PASS/FAIL/UNSURE; then the editing sweeps
+# (bench/editing's editing_scaling_bench, 10^4..10^6 faces). About ten minutes in all
+# (decimation to 10^7 faces takes four); --quick: at most 10^6 (10^5 for remeshing), under a
+# minute plus the build, and UNSURE where its largest decade crosses the last-level cache (the
+# time per element steps up there for memory latency; the full sweep's largest decade lies
+# beyond the cache and decides). Not run in CI.
 #   bench/sweep/run.sh [--quick] [--only SUBSTRING] [--build-dir DIR]
 set -euo pipefail
 root="$(cd "$(dirname "$0")/../.." && pwd)"
