@@ -758,6 +758,9 @@ private:
 /// Complexity: O(N) for N samples, in three passes over z-slabs (classify into bit rows;
 /// count; write), each parallel; the per-sample work is a compare, the per-cube work a few
 /// word operations except on the (few) cubes the surface crosses. Memory: N/8 bytes of bits.
+/// The passes stream the samples in memory order, so the time per sample does not step up
+/// beyond the caches; it falls with N as fixed per-slab costs spread (bench/sweep, 1 thread:
+/// exponent 0.85 over 10^6..10^7 samples).
 /// Preconditions: none beyond the errors below.
 /// Errors (invalid_argument): a dimension below 2, spacing not finite and positive, a
 /// non-finite iso value, or NaN samples (naming the first z-slice holding one);
