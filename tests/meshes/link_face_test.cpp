@@ -37,7 +37,7 @@ template <class M>
 void soups_agree_with_their_rotations(unsigned seed, int vertices, std::size_t max_corners) {
     std::mt19937 rng(seed);
     std::size_t accepted = 0, refused = 0, accepted_large = 0;
-    for (int trial = 0; trial < 120; ++trial) {
+    for (int trial = 0; trial < 40; ++trial) {
         M a, b;
         std::vector<vertex_handle> va, vb;
         for (int i = 0; i < vertices; ++i) {
