@@ -41,26 +41,6 @@ long long vertex_number(const M& m, typename T::vertex_handle v) {
     else { (void)m; (void)v; return -1; }
 }
 
-/// Whether v has a boundary gap (or no edge at all): its stored halfedge is a boundary one.
-template <class M, class T>
-bool on_boundary(const M& m, typename T::vertex_handle v) {
-    const auto h = T::vertex_halfedge(m, v);
-    return h == T::null_halfedge() || T::face(m, h) == T::null_face();
-}
-
-/// The halfedge a -> b, or null. O(V_adjacentV).
-template <class M, class T>
-typename T::halfedge_handle find_halfedge(const M& m, typename T::vertex_handle a, typename T::vertex_handle b) {
-    const auto start = T::vertex_halfedge(m, a);
-    if (start == T::null_halfedge()) return start;
-    auto h = start;
-    do {
-        if (T::target(m, h) == b) return h;
-        h = T::next(m, T::opposite(m, h));
-    } while (h != start);
-    return T::null_halfedge();
-}
-
 /// For re-linking at the vertex between `in` (incoming) and `out` (outgoing): the boundary
 /// halfedge that closes out's fan on its far side, where the patch between them can move;
 /// null if that is `in` itself (the new face would close the fan into a disk while other fans
