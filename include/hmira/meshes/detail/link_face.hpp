@@ -25,6 +25,7 @@ struct face_link_scratch {
     std::vector<Halfedge> sides;                        ///< the halfedge of each side, once known
     std::vector<std::uint8_t> fresh;                    ///< whether that side's edge is new
     std::vector<std::pair<Halfedge, Halfedge>> links;  ///< next links to set, computed first
+    std::vector<Halfedge> starts;                       ///< each corner's stored outgoing halfedge
 };
 
 namespace linking {
@@ -38,26 +39,6 @@ template <class M, class T>
 long long vertex_number(const M& m, typename T::vertex_handle v) {
     if constexpr (vertex_index_mesh<M, T>) return static_cast<long long>(T::vertex_index(m, v));
     else { (void)m; (void)v; return -1; }
-}
-
-/// Whether v has a boundary gap (or no edge at all): its stored halfedge is a boundary one.
-template <class M, class T>
-bool on_boundary(const M& m, typename T::vertex_handle v) {
-    const auto h = T::vertex_halfedge(m, v);
-    return h == T::null_halfedge() || T::face(m, h) == T::null_face();
-}
-
-/// The halfedge a -> b, or null. O(V_adjacentV).
-template <class M, class T>
-typename T::halfedge_handle find_halfedge(const M& m, typename T::vertex_handle a, typename T::vertex_handle b) {
-    const auto start = T::vertex_halfedge(m, a);
-    if (start == T::null_halfedge()) return start;
-    auto h = start;
-    do {
-        if (T::target(m, h) == b) return h;
-        h = T::next(m, T::opposite(m, h));
-    } while (h != start);
-    return T::null_halfedge();
 }
 
 /// For re-linking at the vertex between `in` (incoming) and `out` (outgoing): the boundary
@@ -116,68 +97,72 @@ void prefer_boundary_halfedge(M& m, typename T::vertex_handle v) {
     } while (h != start);
 }
 
-/// Adds the face with corners `vs` (counter-clockwise seen from outside), reusing the edges
-/// that exist and re-linking the boundary fans around its corners, so that no non-manifold
-/// vertex or edge can appear. Faces may arrive in any order: a face may touch a vertex in a fan
-/// of its own, separated from the vertex's other fans by boundary gaps (a pinch that validate()
-/// reports until the faces between the fans are added). `exists(v)` says whether a vertex
-/// handle names a live vertex.
-///
-/// \pre none: every failure is found before the first change.
-/// \post on success the face's halfedges form one loop with the face on their side, every
-/// corner stores a boundary outgoing halfedge if it has one, and each edge has at most two faces.
-///
-/// Fails, with the mesh unchanged, when the face has fewer than 3 or repeated vertices, names
-/// a vertex that does not exist, would give an edge a third face or a face on the wrong side
-/// (orientation conflict), or would make a vertex non-manifold. O(sum of V_adjacentV over the
-/// corners).
-template <class M, class T, class Exists>
-    requires halfedge_mutable_mesh<M, T>
-result<typename T::face_handle> link_face(M& m, std::span<const typename T::vertex_handle> vs,
-                                          face_link_scratch<typename T::halfedge_handle>& scratch, Exists&& exists) {
-    const std::size_t n = vs.size();
+namespace linking {
+
+/// link_face for faces of N corners (N = 0: any number, n given at run time). With N known,
+/// every loop over the corners unrolls and the corner after i is a constant: the `(i + 1) % n`
+/// of the run-time loops is a division, and the one that names the vertex a fan walk looks for
+/// sat on that walk's chain of dependent reads.
+template <std::size_t N, class M, class T>
+result<typename T::face_handle> link_face_sized(M& m, const typename T::vertex_handle* vs, std::size_t n_run,
+                                                face_link_scratch<typename T::halfedge_handle>& scratch) {
+    const std::size_t n = N != 0 ? N : n_run;
     const auto null_h = T::null_halfedge();
-    if (n < 3) return fail(errc::degenerate_face, "add_face: a face needs at least 3 vertices, got " + std::to_string(n));
-    for (std::size_t i = 0; i < n; ++i) {
-        if (!exists(vs[i]))
-            return fail(errc::invalid_handle,
-                        "add_face: corner " + std::to_string(i) + " names vertex " + linking::vertex_name<M, T>(m, vs[i]) +
-                            ", which does not exist",
-                        linking::vertex_number<M, T>(m, vs[i]));
-        for (std::size_t j = 0; j < i; ++j)
-            if (vs[j] == vs[i])
-                return fail(errc::degenerate_face, "add_face: vertex " + linking::vertex_name<M, T>(m, vs[i]) + " appears twice in the face",
-                            linking::vertex_number<M, T>(m, vs[i]));
-    }
+    auto after = [n](std::size_t i) { return i + 1 == n ? std::size_t{0} : i + 1; };
     // Small faces (nearly all) keep their working state on the stack: filling and growing the
     // scratch vectors cost a fifth of a triangle mesh's build when they were used for every face.
     using H = typename T::halfedge_handle;
     constexpr std::size_t small = 8;
-    std::array<H, small> small_sides;
+    std::array<H, small> small_sides, small_starts;
     std::array<std::uint8_t, small> small_fresh;
     std::array<std::pair<H, H>, 3 * small> small_links;
     H* sides = small_sides.data();
+    H* starts = small_starts.data();
     std::uint8_t* fresh = small_fresh.data();
     std::pair<H, H>* links = small_links.data();
     if (n > small) {
         scratch.sides.resize(n);
+        scratch.starts.resize(n);
         scratch.fresh.resize(n);
         scratch.links.resize(3 * n);  // each corner sets at most three next links
         sides = scratch.sides.data();
+        starts = scratch.starts.data();
         fresh = scratch.fresh.data();
         links = scratch.links.data();
     }
-    std::fill(sides, sides + n, null_h);
-    std::fill(fresh, fresh + n, std::uint8_t{0});
+    // The first reads of each corner (its stored halfedge, then that halfedge's record) are
+    // likely cache misses that do not depend on the other corners': each stage is done for all
+    // corners before the next, so that their misses overlap instead of queueing behind each
+    // corner's fan walk. The checks that follow report the same first failure, in corner
+    // order, as a corner-by-corner pass would.
+    for (std::size_t i = 0; i < n; ++i) starts[i] = T::vertex_halfedge(m, vs[i]);
     for (std::size_t i = 0; i < n; ++i) {
-        if (!linking::on_boundary<M, T>(m, vs[i]))
+        // fresh[i] & 4: the corner is interior (a failure, reported in order below).
+        fresh[i] = starts[i] != null_h && T::face(m, starts[i]) != T::null_face() ? 4 : 0;
+        sides[i] = null_h;
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+        const auto start = starts[i];
+        if (start == null_h) continue;
+        const auto b = vs[after(i)];
+        auto h = start;
+        do {
+            if (T::target(m, h) == b) {
+                sides[i] = h;
+                break;
+            }
+            h = T::next(m, T::opposite(m, h));
+        } while (h != start);
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+        if (fresh[i] & 4)
             return fail(errc::non_manifold,
                         "add_face: vertex " + linking::vertex_name<M, T>(m, vs[i]) + " is interior (surrounded by faces); a face there would be non-manifold",
                         linking::vertex_number<M, T>(m, vs[i]));
-        const auto h = linking::find_halfedge<M, T>(m, vs[i], vs[(i + 1) % n]);
+        const auto h = sides[i];
         if (h != null_h && T::face(m, h) != T::null_face()) {
             const bool reversed = T::face(m, T::opposite(m, h)) == T::null_face();
-            std::string edge = linking::vertex_name<M, T>(m, vs[i]) + "->" + linking::vertex_name<M, T>(m, vs[(i + 1) % n]);
+            std::string edge = linking::vertex_name<M, T>(m, vs[i]) + "->" + linking::vertex_name<M, T>(m, vs[after(i)]);
             std::string face = "face";
             if constexpr (face_index_mesh<M, T>) face += " " + std::to_string(T::face_index(m, T::face(m, h)));
             return fail(reversed ? errc::orientation_conflict : errc::non_manifold,
@@ -186,13 +171,12 @@ result<typename T::face_handle> link_face(M& m, std::span<const typename T::vert
                                       : " already has two faces"),
                         linking::vertex_number<M, T>(m, vs[i]));
         }
-        sides[i] = h;
         fresh[i] = h == null_h;
     }
     // A corner between two existing edges must be able to move the boundary patch between them
     // to another gap of the vertex; check them all first so that a failure changes nothing.
     for (std::size_t i = 0; i < n; ++i) {
-        const std::size_t ii = (i + 1) % n;
+        const std::size_t ii = after(i);
         if (fresh[i] || fresh[ii] || T::next(m, sides[i]) == sides[ii]) continue;
         if (linking::free_gap<M, T>(m, sides[i], sides[ii]) == null_h)
             return fail(errc::non_manifold,
@@ -202,7 +186,7 @@ result<typename T::face_handle> link_face(M& m, std::span<const typename T::vert
     // Re-link: move the boundary patch between `in` and `out` into the free gap, so the two
     // become consecutive.
     for (std::size_t i = 0; i < n; ++i) {
-        const std::size_t ii = (i + 1) % n;
+        const std::size_t ii = after(i);
         const auto in = sides[i], out = sides[ii];
         if (fresh[i] || fresh[ii] || T::next(m, in) == out) continue;
         const auto gap_prev = linking::free_gap<M, T>(m, in, out);
@@ -213,7 +197,7 @@ result<typename T::face_handle> link_face(M& m, std::span<const typename T::vert
         T::set_next(m, in, out);
     }
     for (std::size_t i = 0; i < n; ++i)
-        if (fresh[i]) sides[i] = T::new_edge(m, vs[i], vs[(i + 1) % n]);
+        if (fresh[i]) sides[i] = T::new_edge(m, vs[i], vs[after(i)]);
 
     const auto f = T::new_face(m);
     T::set_face_halfedge(m, f, sides[n - 1]);
@@ -222,7 +206,7 @@ result<typename T::face_handle> link_face(M& m, std::span<const typename T::vert
     std::size_t link_count = 0;
     auto add_link = [&](H a, H b) { links[link_count++] = {a, b}; };
     for (std::size_t i = 0; i < n; ++i) {
-        const std::size_t ii = (i + 1) % n;
+        const std::size_t ii = after(i);
         const auto v = vs[ii];
         const auto in = sides[i], out = sides[ii];
         const bool in_new = (fresh[i] & 1) != 0, out_new = (fresh[ii] & 1) != 0;
@@ -256,6 +240,46 @@ result<typename T::face_handle> link_face(M& m, std::span<const typename T::vert
     for (std::size_t i = 0; i < n; ++i)
         if (fresh[i] & 2) linking::store_boundary_halfedge<M, T>(m, vs[i], sides[i]);
     return f;
+}
+
+}  // namespace linking
+
+/// Adds the face with corners `vs` (counter-clockwise seen from outside), reusing the edges
+/// that exist and re-linking the boundary fans around its corners, so that no non-manifold
+/// vertex or edge can appear. Faces may arrive in any order: a face may touch a vertex in a fan
+/// of its own, separated from the vertex's other fans by boundary gaps (a pinch that validate()
+/// reports until the faces between the fans are added). `exists(v)` says whether a vertex
+/// handle names a live vertex.
+///
+/// \pre none: every failure is found before the first change.
+/// \post on success the face's halfedges form one loop with the face on their side, every
+/// corner stores a boundary outgoing halfedge if it has one, and each edge has at most two faces.
+///
+/// Fails, with the mesh unchanged, when the face has fewer than 3 or repeated vertices, names
+/// a vertex that does not exist, would give an edge a third face or a face on the wrong side
+/// (orientation conflict), or would make a vertex non-manifold. O(sum of V_adjacentV over the
+/// corners).
+template <class M, class T, class Exists>
+    requires halfedge_mutable_mesh<M, T>
+result<typename T::face_handle> link_face(M& m, std::span<const typename T::vertex_handle> vs,
+                                          face_link_scratch<typename T::halfedge_handle>& scratch, Exists&& exists) {
+    const std::size_t n = vs.size();
+    if (n < 3) return fail(errc::degenerate_face, "add_face: a face needs at least 3 vertices, got " + std::to_string(n));
+    for (std::size_t i = 0; i < n; ++i) {
+        if (!exists(vs[i]))
+            return fail(errc::invalid_handle,
+                        "add_face: corner " + std::to_string(i) + " names vertex " + linking::vertex_name<M, T>(m, vs[i]) +
+                            ", which does not exist",
+                        linking::vertex_number<M, T>(m, vs[i]));
+        for (std::size_t j = 0; j < i; ++j)
+            if (vs[j] == vs[i])
+                return fail(errc::degenerate_face, "add_face: vertex " + linking::vertex_name<M, T>(m, vs[i]) + " appears twice in the face",
+                            linking::vertex_number<M, T>(m, vs[i]));
+    }
+    // Triangles and quads, nearly every face, take the unrolled code.
+    if (n == 3) return linking::link_face_sized<3, M, T>(m, vs.data(), n, scratch);
+    if (n == 4) return linking::link_face_sized<4, M, T>(m, vs.data(), n, scratch);
+    return linking::link_face_sized<0, M, T>(m, vs.data(), n, scratch);
 }
 
 }  // namespace hmira::detail
