@@ -52,17 +52,15 @@ inline double loop_beta(std::size_t n) {
 }
 
 /// The per-level arrays, sized once for the largest level so that no level allocates after
-/// the mesh starts changing (29 bytes an old vertex, 16 an old face, and an old edge 1 bit,
-/// or 4 bytes where its new vertex cannot be told from its index). The edge points go
-/// straight into the new vertices, made before the splits: at a million faces, first touching
-/// fresh pages costs as much as the arithmetic, so nothing is stored twice.
+/// the mesh starts changing (29 bytes an old vertex, 4 an old edge, 16 an old face). The edge
+/// points go straight into the new vertices, made before the splits: at a million faces,
+/// first touching fresh pages costs as much as the arithmetic, so nothing is stored twice.
 template <class M, class T>
 struct loop_workspace {
     std::vector<vec3<double>> vertex_point;  // the sums of neighbours, then boundary vertices' new positions
     std::vector<std::uint32_t> valence;
     std::vector<std::uint8_t> boundary_edges;              // saturates at 3
-    std::vector<typename T::vertex_handle> edge_vertex;  // by old edge index: its new vertex, null once split (see loop_level)
-    std::vector<std::uint64_t> split;                    // by old edge index, one bit: split already (edge points by index)
+    std::vector<typename T::vertex_handle> edge_vertex;  // by old edge index: its new vertex, null once split
     struct triangle {
         std::array<typename T::halfedge_handle, 3> halfedges;  // null for a deleted face
         typename T::halfedge_handle old_corner_cut;            // see loop_level
@@ -75,7 +73,6 @@ struct loop_workspace {
         valence.reserve(vertex_bound);
         boundary_edges.reserve(vertex_bound);
         edge_vertex.reserve(edge_bound);
-        split.reserve(edge_bound / 64 + 1);
         triangles.reserve(face_bound);
     }
 };
@@ -106,38 +103,11 @@ void loop_level(M& mesh, loop_workspace<M, T>& w) {
     w.vertex_point.assign(vertex_bound, {});
     w.valence.assign(vertex_bound, 0);
     w.boundary_edges.assign(vertex_bound, 0);
+    w.edge_vertex.assign(edge_bound, typename T::vertex_handle{});
     auto& sum = w.vertex_point;
     // Every new element comes from here (in bulk where the model allows), in the order the
     // traits' adds would make them.
     new_elements<M, T> make(mesh, w.room);
-    // Edge points by index: on a model that names a vertex by its index (bulk_growable_mesh),
-    // while the k-th edge met has index k, edge e's point is new vertex vertex_bound + e (make
-    // hands vertices out in index order), so an edge needs one "split already" bit instead of
-    // a 4-byte handle in a 4-byte-an-edge array faulted in, filled and read back. Edges met out
-    // of order switch to the handle array, filled in for the edges met so far.
-    using V = typename T::vertex_handle;
-    const auto vertex_of = [&](std::size_t i) {
-        if constexpr (bulk_growable_mesh<M, T>) return T::vertex_at(mesh, i);
-        else { (void)i; return V{}; }  // not called: by_index is false
-    };
-    bool by_index = bulk_growable_mesh<M, T>;
-    w.edge_vertex.clear();
-    if (!by_index) w.edge_vertex.assign(edge_bound, V{});
-    w.split.assign(by_index ? edge_bound / 64 + 1 : 0, 0);
-    // The new vertex of old edge e, null once split (and from then on).
-    const auto take_edge_vertex = [&](std::size_t e) {
-        if (by_index) {
-            std::uint64_t& word = w.split[e / 64];
-            const std::uint64_t bit = std::uint64_t(1) << (e % 64);
-            if (word & bit) return V{};
-            word |= bit;
-            return vertex_of(vertex_bound + e);
-        }
-        const V v = w.edge_vertex[e];
-        w.edge_vertex[e] = V{};
-        return v;
-    };
-    std::size_t edges_met = 0;
     const std::size_t old_vertices = T::vertex_count(mesh);
     std::size_t faceless_edges = 0;  // edges without a face on either side, split last
 
@@ -165,16 +135,7 @@ void loop_level(M& mesh, loop_workspace<M, T>& w) {
             w.boundary_edges[ia] = std::uint8_t(std::min(3, w.boundary_edges[ia] + 1));
             w.boundary_edges[ib] = std::uint8_t(std::min(3, w.boundary_edges[ib] + 1));
         }
-        const V v = make.vertex(q);
-        const std::size_t ei = T::edge_index(mesh, e);
-        if (by_index && ei != edges_met) {
-            by_index = false;
-            w.edge_vertex.assign(edge_bound, V{});
-            for (std::size_t j = 0; j < edges_met; ++j) w.edge_vertex[j] = vertex_of(vertex_bound + j);
-        }
-        assert(!by_index || std::size_t(T::vertex_index(mesh, v)) == vertex_bound + ei);
-        ++edges_met;
-        if (!by_index) w.edge_vertex[ei] = v;
+        w.edge_vertex[T::edge_index(mesh, e)] = make.vertex(q);
     }
     // Old vertices: Loop's rule inside; on the boundary (two boundary edges, the stored
     // halfedge a boundary one) 3/4 of itself and 1/8 of each boundary neighbour; a vertex
@@ -217,8 +178,10 @@ void loop_level(M& mesh, loop_workspace<M, T>& w) {
     // three edges are split, both sides of that cut are triangles whose far corners are new
     // and not yet joined, so is_flip_ok holds and the flip's own checks are skipped.
     const auto split = [&](H h) {
-        const V v = take_edge_vertex(T::edge_index(mesh, T::edge(mesh, h)));
-        if (v == V{}) return;  // split already
+        const std::size_t e = T::edge_index(mesh, T::edge(mesh, h));
+        const auto v = w.edge_vertex[e];
+        if (v == typename T::vertex_handle{}) return;  // split already
+        w.edge_vertex[e] = typename T::vertex_handle{};
         const H o = T::opposite(mesh, h);
         const auto fh = T::face(mesh, h), fo = T::face(mesh, o);
         const bool h_side = fh != T::null_face(), o_side = fo != T::null_face() && fo != fh;
@@ -248,9 +211,10 @@ void loop_level(M& mesh, loop_workspace<M, T>& w) {
     if (faceless_edges > 0)
         for (auto e : T::edges(mesh)) {
             const std::size_t i = T::edge_index(mesh, e);
-            if (i >= edge_bound) continue;
-            if (const V v = take_edge_vertex(i); v != V{}) {
-                [[maybe_unused]] const auto new_halfedge = dt::split_links<M, T>(mesh, T::edge_halfedge(mesh, e), v, false, false, make);
+            if (i < edge_bound && w.edge_vertex[i] != typename T::vertex_handle{}) {
+                [[maybe_unused]] const auto new_halfedge =
+                    dt::split_links<M, T>(mesh, T::edge_halfedge(mesh, e), w.edge_vertex[i], false, false, make);
+                w.edge_vertex[i] = typename T::vertex_handle{};
             }
         }
     make.finish();
