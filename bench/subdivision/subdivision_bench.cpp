@@ -16,6 +16,13 @@
 // faulting and zeroing of the output's fresh pages (system time) is a large share of the CPU
 // time and depends on the output's size alone, so the summary gives the ratios of user and of
 // system time as well. bench/subdivision/run.sh runs it with and without transparent huge pages.
+// The <scheme>/reserve/<model> cases time the traits' reserve alone, to that scheme's final
+// counts: on halfedge_mesh it moves the records by realloc (mremap keeps their pages), on
+// OpenMesh std::vector copies every array into fresh pages and frees the old ones. The summary
+// then also gives the on-OpenMesh ratio less each model's reserve: what the generic algorithm
+// costs beyond the model's storage. catmull_clark/hmira/openmesh_poly_double runs on a PolyMesh
+// with double points (Vec3d), where the face points go straight into their vertices as on
+// halfedge_mesh; with OpenMesh's default float points they need a double array of their own.
 #include <benchmark/benchmark.h>
 #include <sys/resource.h>
 
@@ -62,6 +69,11 @@ std::map<std::string, std::vector<double>>& sys_seconds_by_case() {
     static std::map<std::string, std::vector<double>> s;
     return s;
 }
+/// User plus system time of each single run (what the CPU-time ratios compare).
+std::map<std::string, std::vector<double>>& cpu_seconds_by_case() {
+    static std::map<std::string, std::vector<double>> s;
+    return s;
+}
 
 double seconds(const timeval& t) { return double(t.tv_sec) + 1e-6 * double(t.tv_usec); }
 
@@ -76,6 +88,7 @@ void measured(benchmark::State& state, const std::string& name, F&& f) {
     const double sys = seconds(after.ru_stime) - seconds(before.ru_stime);
     user_seconds_by_case()[name].push_back(user);
     sys_seconds_by_case()[name].push_back(sys);
+    cpu_seconds_by_case()[name].push_back(user + sys);
     state.counters["user_ms"] = user * 1e3;
     state.counters["sys_ms"] = sys * 1e3;
     state.counters["fresh_MB"] = double(after.ru_minflt - before.ru_minflt) * 4096.0 / 1e6;
@@ -154,6 +167,32 @@ void hmira_sqrt3(benchmark::State& state, const char* name) { hmira_triangle_sch
 const int registered_2 = add_case("loop/hmira/halfedge_mesh", &hmira_loop<hmira::halfedge_mesh>);
 const int registered_11 = add_case("sqrt3/hmira/halfedge_mesh", &hmira_sqrt3<hmira::halfedge_mesh>);
 
+/// The traits' reserve alone, to the counts one Loop (Quad false, triangle torus) or
+/// Catmull-Clark (Quad true, quad torus) level ends with: the share of a scheme's time that
+/// is the model's storage growing, whatever algorithm runs.
+template <class M, bool Quad>
+void reserve_only(benchmark::State& state, const char* name) {
+    using T = hmira::default_traits<M>;
+    const soup& s = Quad ? quad_torus() : triangle_torus();
+    const M base = build<M>(s);
+    const std::size_t v = T::vertex_index_bound(base), e = T::edge_index_bound(base), f = T::face_index_bound(base);
+    const std::size_t corners = (Quad ? 4 : 3) * f;
+    for (auto _ : state) {
+        state.PauseTiming();
+        M m = base;
+        state.ResumeTiming();
+        measured(state, name, [&] {
+            if constexpr (Quad)
+                T::reserve(m, v + e + f, 2 * e + corners, corners);
+            else
+                T::reserve(m, v + e, 2 * e + 3 * f, 4 * f);
+        });
+        benchmark::DoNotOptimize(m);
+    }
+}
+const int registered_16 = add_case("loop/reserve/halfedge_mesh", &reserve_only<hmira::halfedge_mesh, false>);
+const int registered_17 = add_case("catmull_clark/reserve/halfedge_mesh", &reserve_only<hmira::halfedge_mesh, true>);
+
 #ifdef HMIRA_BENCH_WITH_OPENMESH
 using om_tri = OpenMesh::TriMesh_ArrayKernelT<>;
 const int registered_3 = add_case("loop/hmira/openmesh_tri", &hmira_loop<om_tri>);
@@ -186,6 +225,15 @@ const int registered_13 = add_case("sqrt3/openmesh/Sqrt3T", &openmesh_sqrt3);
 
 using om_poly = OpenMesh::PolyMesh_ArrayKernelT<>;
 const int registered_5 = add_case("catmull_clark/hmira/openmesh_poly", &hmira_catmull_clark<om_poly>);
+/// OpenMesh's PolyMesh with double points, as halfedge_mesh has.
+struct om_double_traits : OpenMesh::DefaultTraits {
+    using Point = OpenMesh::Vec3d;
+    using Normal = OpenMesh::Vec3d;
+};
+using om_poly_double = OpenMesh::PolyMesh_ArrayKernelT<om_double_traits>;
+const int registered_18 = add_case("catmull_clark/hmira/openmesh_poly_double", &hmira_catmull_clark<om_poly_double>);
+const int registered_19 = add_case("loop/reserve/openmesh_tri", &reserve_only<om_tri, false>);
+const int registered_20 = add_case("catmull_clark/reserve/openmesh_poly", &reserve_only<om_poly, true>);
 void openmesh_catmull_clark(benchmark::State& state, const char* name) {
     const om_poly base = build<om_poly>(quad_torus());
     for (auto _ : state) {
@@ -292,6 +340,21 @@ int main(int argc, char** argv) {
         }
     }
     }
+    std::printf("\nThe models' storage: the traits' reserve alone (user + system CPU, medians), and the ratio less it:\n");
+    for (const std::string scheme : {"loop", "catmull_clark"}) {
+        const std::string on_om = hmira_on_openmesh_case(scheme), own = scheme + "/hmira/halfedge_mesh";
+        const std::string model = on_om.substr(on_om.rfind('/') + 1);
+        auto& cpu = cpu_seconds_by_case();
+        const double r_om = median_in(cpu, scheme + "/reserve/" + model), r_own = median_in(cpu, scheme + "/reserve/halfedge_mesh");
+        const double t_om = median_in(cpu, on_om), t_own = median_in(cpu, own);
+        if (r_om <= 0 || r_own <= 0 || t_om <= 0 || t_own <= 0) continue;
+        std::printf("%-66s %7.1f ms / %7.1f ms = %5.2f\n", (scheme + ": reserve, OpenMesh / halfedge_mesh").c_str(), r_om * 1e3, r_own * 1e3, r_om / r_own);
+        std::printf("%-66s %7.1f ms / %7.1f ms = %5.2f\n", (scheme + ": hmira on OpenMesh / halfedge_mesh, less reserve").c_str(), (t_om - r_om) * 1e3,
+                    (t_own - r_own) * 1e3, (t_om - r_om) / (t_own - r_own));
+    }
+    if (const double d = median_in(cpu_seconds_by_case(), "catmull_clark/hmira/openmesh_poly_double"), own = median_in(cpu_seconds_by_case(), "catmull_clark/hmira/halfedge_mesh");
+        d > 0 && own > 0)
+        std::printf("%-66s %7.1f ms / %7.1f ms = %5.2f\n", "catmull_clark: hmira on OpenMesh (double points) / halfedge_mesh", d * 1e3, own * 1e3, d / own);
     benchmark::Shutdown();
     return 0;
 }
