@@ -6,9 +6,12 @@ Prints one JSON line per (category, file, library) with the minimum CPU and wall
   mesh: connected mesh  -- trimesh.load(process=True) (welds STL / merges vertices),
                            open3d.io.read_triangle_mesh (triangle mesh with adjacency-free arrays;
                            listed under soup as it builds no connectivity)
+Each library runs in a fresh process of its own: Open3D timed right after trimesh had read the
+same file was ~10% slower than alone, so sharing a process would flatter hmira.
 """
 import json
 import os
+import subprocess
 import sys
 import time
 
@@ -24,20 +27,33 @@ def best(fn, repeats):
     return 1000 * min(cpu), 1000 * min(wall)
 
 
-def main(paths):
-    libs = []
+LIBRARIES = ("trimesh-soup", "trimesh-mesh", "open3d")
+
+
+def load(which):
+    """(category, display name, reader) for one library, or None if it is not installed."""
     try:
-        import trimesh
-        libs.append(("soup", "trimesh(process=False)", lambda p: trimesh.load(p, process=False, force="mesh")))
-        libs.append(("mesh", "trimesh(process=True)", lambda p: trimesh.load(p, process=True, force="mesh")))
-    except Exception as e:  # noqa: BLE001
-        print(f"peers: trimesh unavailable: {e}", file=sys.stderr)
-    try:
+        if which.startswith("trimesh"):
+            import trimesh
+            process = which == "trimesh-mesh"
+            return ("mesh" if process else "soup", f"trimesh(process={process})",
+                    lambda p: trimesh.load(p, process=process, force="mesh"))
         import open3d as o3d
         o3d.utility.set_verbosity_level(o3d.utility.VerbosityLevel.Error)
-        libs.append(("soup", "open3d", lambda p: o3d.io.read_triangle_mesh(p)))
+        return ("soup", "open3d", lambda p: o3d.io.read_triangle_mesh(p))
     except Exception as e:  # noqa: BLE001
-        print(f"peers: open3d unavailable: {e}", file=sys.stderr)
+        print(f"peers: {which} unavailable: {e}", file=sys.stderr)
+        return None
+
+
+def main(argv):
+    if not argv or argv[0] != "--library":
+        for which in LIBRARIES:
+            subprocess.run([sys.executable, os.path.abspath(__file__), "--library", which, *argv], check=False)
+        return
+    lib = load(argv[1])
+    libs = [lib] if lib else []
+    paths = argv[2:]
     for p in paths:
         big = os.path.getsize(p) > (8 << 20)
         for cat, name, fn in libs:
