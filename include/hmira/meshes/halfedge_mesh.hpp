@@ -472,11 +472,6 @@ private:
         return around == degree;
     }
 
-    // A corner in its source vertex's row: the vertex it runs to and its halfedge.
-    struct corner_slot {
-        std::uint32_t target, halfedge;
-    };
-
     // The connectivity of checked polygons (`out_begin[v]` where v's row of corners starts,
     // `stamp` scratch of one entry per vertex) into the empty mesh m, in one pass over the
     // faces: each corner a->b looks for its twin b->a among the corners already seen leaving
@@ -492,7 +487,9 @@ private:
         constexpr u32 none = UINT32_MAX;
         const std::size_t nv = out_begin.size() - 1, nf = face_offsets.empty() ? 0 : face_offsets.size() - 1, nc = corners.size();
         std::copy(out_begin.begin(), out_begin.end() - 1, stamp.begin());  // stamp[v]: where v's row ends so far
-        detail::trivial_array<corner_slot> rows;
+        // Each vertex's row holds the halfedges of the corners seen leaving it; the vertex a
+        // corner runs to is its halfedge's target, written as soon as the corner is seen.
+        detail::trivial_array<u32> rows;
         rows.resize_for_overwrite(nc);  // written before read, row by row
         m.vertex_out_.assign(nv, halfedge_handle{});
         // A closed mesh has one edge per two corners; each boundary edge needs room for two more
@@ -507,11 +504,11 @@ private:
             for (u32 k = b; k < e; ++k) {
                 const u32 a = corners[k], t = corners[k + 1 == e ? b : k + 1];
                 for (u32 r = out_begin[a]; r < stamp[a]; ++r)
-                    if (rows[r].target == t) return false;  // a->b twice: an orientation conflict or a third face
+                    if (m.halfedges_[rows[r]].target.index == t) return false;  // a->b twice: an orientation conflict or a third face
                 u32 h = none;
                 for (u32 r = out_begin[t]; r < stamp[t]; ++r)
-                    if (rows[r].target == a) {
-                        h = rows[r].halfedge ^ 1u;
+                    if (m.halfedges_[rows[r]].target.index == a) {
+                        h = rows[r] ^ 1u;
                         break;
                     }
                 if (h == none) {
@@ -522,7 +519,8 @@ private:
                 } else if ((h & 1u) == 0) {
                     return false;  // b->a was itself a twin (not reached: the a->b check above fires first)
                 }
-                rows[stamp[a]++] = {t, h};
+                rows[stamp[a]++] = h;
+                m.halfedges_[h].target = vertex_handle(t);
                 face_h[k - b] = h;
                 m.vertex_out_[a] = halfedge_handle(h);  // the last corner's, as add_face leaves it
             }
