@@ -126,6 +126,13 @@ TEST(HalfedgeBulkBuild, names_the_fault_by_the_lowest_source_vertex_whatever_the
     EXPECT_EQ(third.error().code, hmira::errc::non_manifold);
     EXPECT_EQ(third.error().message, "from_polygons: edge 1->2 has more than two faces");
     EXPECT_EQ(third.error().element, 1);
+    // The third face on 0-1 arrives after the edge is paired, from either side.
+    for (const auto& corners : {std::vector<std::uint32_t>{1, 0, 2, 0, 1, 3, 0, 1, 4}, std::vector<std::uint32_t>{0, 1, 2, 1, 0, 3, 0, 1, 4}}) {
+        auto paired = halfedge_mesh::from_polygons(p, std::vector<std::uint32_t>{0, 3, 6, 9}, corners);
+        ASSERT_FALSE(paired);
+        EXPECT_EQ(paired.error().message, "from_polygons: edge 0->1 has more than two faces");
+        EXPECT_EQ(paired.error().element, 0);
+    }
 }
 
 TEST(HalfedgeBulkBuild, a_closed_torus_has_no_boundary_and_every_vertex_a_full_fan) {

@@ -500,31 +500,35 @@ private:
         u32 edges = 0;
         for (std::size_t f = 0; f < nf; ++f) {
             const u32 b = static_cast<u32>(face_offsets[f]), e = static_cast<u32>(face_offsets[f + 1]);
+            const face_handle fh(static_cast<u32>(f));
             if (face_h.size() < e - b) face_h.resize(e - b);
             for (u32 k = b; k < e; ++k) {
                 const u32 a = corners[k], t = corners[k + 1 == e ? b : k + 1];
-                for (u32 r = out_begin[a]; r < stamp[a]; ++r)
-                    if (m.halfedges_[rows[r]].target.index == t) return false;  // a->b twice: an orientation conflict or a third face
                 u32 h = none;
                 for (u32 r = out_begin[t]; r < stamp[t]; ++r)
                     if (m.halfedges_[rows[r]].target.index == a) {
                         h = rows[r] ^ 1u;
                         break;
                     }
+                // A directed edge met twice (an orientation conflict or a third face) shows, at
+                // its first repeat, as a b->a that is itself a twin or already has one, or, with
+                // no b->a yet, as the earlier a->b in a's row.
                 if (h == none) {
+                    for (u32 r = out_begin[a]; r < stamp[a]; ++r)
+                        if (m.halfedges_[rows[r]].target.index == t) return false;
                     h = 2 * edges++;
                     if (h + 2 > m.halfedges_.size())
                         m.halfedges_.resize_for_overwrite(std::min<std::size_t>(2 * nc, std::size_t{h} + 2 + (std::size_t{h} + 2) / 8 + 64));
                     m.halfedges_[h + 1] = {vertex_handle(a), {}, {}, {}};  // boundary until a twin turns up
-                } else if ((h & 1u) == 0) {
-                    return false;  // b->a was itself a twin (not reached: the a->b check above fires first)
+                } else {
+                    if ((h & 1u) == 0 || !m.halfedges_[h].face.is_null()) return false;
+                    m.halfedges_[h].face = fh;  // taken: a second a->b must not pair with it
                 }
                 rows[stamp[a]++] = h;
                 m.halfedges_[h].target = vertex_handle(t);
                 face_h[k - b] = h;
                 m.vertex_out_[a] = halfedge_handle(h);  // the last corner's, as add_face leaves it
             }
-            const face_handle fh(static_cast<u32>(f));
             const u32 n = e - b;
             for (u32 i = 0; i < n; ++i)
                 m.halfedges_[face_h[i]] = {vertex_handle(corners[i + 1 == n ? b : b + i + 1]), fh, halfedge_handle(face_h[i + 1 == n ? 0 : i + 1]),
