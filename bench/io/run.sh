@@ -7,18 +7,21 @@
 #          OpenMesh read_mesh (PolyMesh), CGAL read_polygon_mesh (Surface_mesh), trimesh process=True
 # Times are the minimum process CPU time over the repetitions (the machine is shared; CPU time
 # is what a reader costs). ratio = fastest peer / hmira (> 1: hmira is faster).
-#   bench/io/run.sh [--build-dir DIR] [--data-dir DIR] [--quick]
+#   bench/io/run.sh [--build-dir DIR] [--data-dir DIR] [--quick] [--only EXT]
+# --only ply (obj, off, stl): read only the files with that extension, e.g. to time one reader.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/../.." && pwd)"
 build="$root/build-bench-io"
 data="/tmp/hmira-io-bench"
 quick=0
+only=""
 while [ $# -gt 0 ]; do
   case "$1" in
     --build-dir) build="$2"; shift 2 ;;
     --data-dir) data="$2"; shift 2 ;;
     --quick) quick=1; shift ;;
-    *) echo "usage: $0 [--build-dir DIR] [--data-dir DIR] [--quick]" >&2; exit 2 ;;
+    --only) only="$2"; shift 2 ;;
+    *) echo "usage: $0 [--build-dir DIR] [--data-dir DIR] [--quick] [--only EXT]" >&2; exit 2 ;;
   esac
 done
 cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DHMIRA_BUILD_BENCHMARKS=ON \
@@ -32,6 +35,14 @@ if [ "$quick" = 0 ]; then
   for m in refined_elephant.off bunny00.off sphere.ply pig.stl; do
     [ -f "$build/test-data/meshes/$m" ] && files="$files:$build/test-data/meshes/$m"
   done
+fi
+if [ -n "$only" ]; then
+  kept=""
+  for f in ${files//:/ }; do
+    case "$f" in *."$only") kept="$kept${kept:+:}$f" ;; esac
+  done
+  [ -n "$kept" ] || { echo "bench/io: no file ends in .$only" >&2; exit 2; }
+  files="$kept"
 fi
 out="$build/io-bench"
 mkdir -p "$out"

@@ -34,6 +34,33 @@ flat flatten(const hmira_test::face_list& g) {
 
 hmira::result<halfedge_mesh> build(const flat& f) { return halfedge_mesh::from_polygons(f.points, f.offsets, f.corners); }
 
+// Record by record: the same halfedge numbering, links, faces, outgoing halfedges and positions.
+void expect_identical(const halfedge_mesh& a, const halfedge_mesh& b) {
+    ASSERT_EQ(a.halfedge_count(), b.halfedge_count());
+    ASSERT_EQ(a.vertex_count(), b.vertex_count());
+    ASSERT_EQ(a.face_count(), b.face_count());
+    for (std::uint32_t i = 0; i < a.halfedge_count(); ++i) {
+        const hmira::halfedge_handle h(i);
+        ASSERT_EQ(a.target(h), b.target(h)) << "halfedge " << i;
+        ASSERT_EQ(a.face(h), b.face(h)) << "halfedge " << i;
+        ASSERT_EQ(a.next(h), b.next(h)) << "halfedge " << i;
+        ASSERT_EQ(a.prev(h), b.prev(h)) << "halfedge " << i;
+    }
+    for (std::uint32_t i = 0; i < a.vertex_count(); ++i) {
+        const hmira::vertex_handle v(i);
+        ASSERT_EQ(a.vertex_halfedge(v), b.vertex_halfedge(v)) << "vertex " << i;
+        ASSERT_EQ(a.position(v), b.position(v)) << "vertex " << i;
+    }
+    for (std::uint32_t i = 0; i < a.face_count(); ++i) ASSERT_EQ(a.face_halfedge(hmira::face_handle(i)), b.face_halfedge(hmira::face_handle(i))) << "face " << i;
+}
+
+// Face by face with add_face, what from_polygons promises to equal.
+halfedge_mesh one_by_one(const hmira_test::face_list& g) {
+    halfedge_mesh one;
+    EXPECT_TRUE(hmira_test::add_face_list(one, g));
+    return one;
+}
+
 TEST(HalfedgeBulkBuild, builds_the_same_mesh_as_face_by_face_add_face_on_random_meshes) {
     for (unsigned seed = 1; seed <= 12; ++seed) {
         SCOPED_TRACE(seed);
@@ -53,6 +80,58 @@ TEST(HalfedgeBulkBuild, builds_the_same_mesh_as_face_by_face_add_face_on_random_
         for (std::size_t f = 0; f < g.faces.size(); ++f)
             EXPECT_EQ(bulk->face_vertices(hmira::face_handle(f)).begin().cursor(), bulk->face_halfedge(hmira::face_handle(f)));
         EXPECT_EQ((*bulk->face_vertices(hmira::face_handle(0u)).begin()).index, g.faces[0][0]);
+    }
+}
+
+TEST(HalfedgeBulkBuild, numbers_and_links_every_record_as_face_by_face_add_face_does) {
+    for (unsigned seed = 1; seed <= 12; ++seed) {
+        SCOPED_TRACE(seed);
+        const auto g = hmira_test::random_mesh(seed, 40, 30);
+        auto bulk = build(flatten(g));
+        ASSERT_TRUE(bulk) << bulk.error().message;
+        expect_identical(*bulk, one_by_one(g));
+    }
+}
+
+TEST(HalfedgeBulkBuild, disjoint_triangles_are_all_boundary_and_numbered_as_add_face_does) {
+    // Every edge a boundary edge: twice as many halfedges as corners, the most the build makes.
+    hmira_test::face_list g;
+    for (std::size_t t = 0; t < 3000; ++t) {
+        const double x = static_cast<double>(t);
+        g.points.insert(g.points.end(), {{x, 0, 0}, {x + 1, 0, 0}, {x, 1, 0}});
+        g.faces.push_back({3 * t, 3 * t + 1, 3 * t + 2});
+    }
+    auto bulk = build(flatten(g));
+    ASSERT_TRUE(bulk) << bulk.error().message;
+    EXPECT_EQ(bulk->halfedge_count(), 2 * 9000u);
+    ASSERT_TRUE(hmira_test::is_valid(*bulk));
+    EXPECT_EQ(hmira::mesh_topology(*bulk).boundary_loops, 3000u);
+    expect_identical(*bulk, one_by_one(g));
+}
+
+TEST(HalfedgeBulkBuild, names_the_fault_by_the_lowest_source_vertex_whatever_the_face_order) {
+    // Two edges run twice the same way: 2->3 (faces 0 and 1) and 0->1 (faces 2 and 3). Met
+    // first in face order is 2->3, but the message names 0->1, the edge of the lower vertex.
+    const std::vector<hmira::vec3<double>> p{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}, {2, 0, 0}, {2, 1, 0}, {-1, -1, 0}};
+    const std::vector<std::uint32_t> offsets{0, 3, 6, 9, 12};
+    const std::vector<std::uint32_t> corners{2, 3, 4, 2, 3, 5, 0, 1, 5, 0, 1, 6};
+    auto r = halfedge_mesh::from_polygons(p, offsets, corners);
+    ASSERT_FALSE(r);
+    EXPECT_EQ(r.error().code, hmira::errc::orientation_conflict);
+    EXPECT_EQ(r.error().message, "from_polygons: edge 0->1 is run in the same direction by two faces (they are wound against each other)");
+    EXPECT_EQ(r.error().element, 0);
+    // A third face on edge 1->2 (faces 1 and 2 run it the same way, face 0 backwards).
+    auto third = halfedge_mesh::from_polygons(p, std::vector<std::uint32_t>{0, 3, 6, 9}, std::vector<std::uint32_t>{2, 1, 0, 1, 2, 3, 1, 2, 4});
+    ASSERT_FALSE(third);
+    EXPECT_EQ(third.error().code, hmira::errc::non_manifold);
+    EXPECT_EQ(third.error().message, "from_polygons: edge 1->2 has more than two faces");
+    EXPECT_EQ(third.error().element, 1);
+    // The third face on 0-1 arrives after the edge is paired, from either side.
+    for (const auto& corners : {std::vector<std::uint32_t>{1, 0, 2, 0, 1, 3, 0, 1, 4}, std::vector<std::uint32_t>{0, 1, 2, 1, 0, 3, 0, 1, 4}}) {
+        auto paired = halfedge_mesh::from_polygons(p, std::vector<std::uint32_t>{0, 3, 6, 9}, corners);
+        ASSERT_FALSE(paired);
+        EXPECT_EQ(paired.error().message, "from_polygons: edge 0->1 has more than two faces");
+        EXPECT_EQ(paired.error().element, 0);
     }
 }
 

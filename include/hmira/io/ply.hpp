@@ -325,21 +325,24 @@ result<void> ply_read_binary(const ply_header& h, Soup& soup, ply_binary_reader&
             }
             auto type = [&](int prop) { return e.props[static_cast<std::size_t>(prop)].type; };
             const std::size_t n = static_cast<std::size_t>(e.count);
-            soup.points.resize(n);
+            // Appended into reserved room rather than resized and overwritten: no pass that
+            // zeroes the positions first.
+            soup.points.clear();
+            soup.points.reserve(n);
             const char* base = data + r.pos;
             const bool float_xyz = type(l.xyz[0]) == ply_type::f32 && type(l.xyz[1]) == ply_type::f32 && type(l.xyz[2]) == ply_type::f32;
             if (float_xyz) {
                 for (std::size_t i = 0; i < n; ++i) {
                     const char* item = base + i * stride;
-                    soup.points[i] = ply_point<point_type>(ply_raw<float, Swap>(item + off[0]), ply_raw<float, Swap>(item + off[1]), ply_raw<float, Swap>(item + off[2]));
-                    if (!all_finite(soup.points[i])) return r.not_finite(r.pos + i * stride, "vertex", i);
+                    soup.points.push_back(ply_point<point_type>(ply_raw<float, Swap>(item + off[0]), ply_raw<float, Swap>(item + off[1]), ply_raw<float, Swap>(item + off[2])));
+                    if (!all_finite(soup.points.back())) return r.not_finite(r.pos + i * stride, "vertex", i);
                 }
             } else {
                 for (std::size_t i = 0; i < n; ++i) {
                     const char* item = base + i * stride;
-                    soup.points[i] = ply_point<point_type>(ply_load<Swap>(type(l.xyz[0]), item + off[0]), ply_load<Swap>(type(l.xyz[1]), item + off[1]),
-                                                          ply_load<Swap>(type(l.xyz[2]), item + off[2]));
-                    if (!all_finite(soup.points[i])) return r.not_finite(r.pos + i * stride, "vertex", i);
+                    soup.points.push_back(ply_point<point_type>(ply_load<Swap>(type(l.xyz[0]), item + off[0]), ply_load<Swap>(type(l.xyz[1]), item + off[1]),
+                                                                ply_load<Swap>(type(l.xyz[2]), item + off[2])));
+                    if (!all_finite(soup.points.back())) return r.not_finite(r.pos + i * stride, "vertex", i);
                 }
             }
             if (l.has_normals()) {

@@ -354,6 +354,9 @@ public:
     /// an edge with more than two faces or a vertex whose faces form more than one fan (a
     /// pinch, which add_face tolerates as an intermediate state but a finished mesh must not have).
     /// Complexity O(V + C x valence) for C corners, linear in practice; no per-face allocation.
+    /// Scratch memory: 4 bytes per corner and 8 per vertex besides the mesh (an input it
+    /// refuses after the per-face checks is gone over a second time, with 12 bytes per corner
+    /// more, to name the same element whatever the face order).
     static result<basic_halfedge_mesh> from_polygons(std::span<const point> points, std::span<const std::uint32_t> face_offsets,
                                                      std::span<const std::uint32_t> corners) {
         return build_polygons(points.size(), [&](std::vector<point>& out) { out.assign(points.begin(), points.end()); }, face_offsets, corners);
@@ -396,7 +399,10 @@ public:
 
 private:
     // from_polygons' work, over any offset width; fill_positions(positions_) runs only once
-    // every check has passed, so that a refused input is never consumed.
+    // every check has passed, so that a refused input is never consumed. The per-face checks
+    // come first, in face order; then link_polygons_fast builds the mesh in one pass over the
+    // corners and, if it meets anything wrong, link_polygons_checked builds it again in the
+    // order that names the same element every time (what the error messages promise).
     template <class Offset, class FillPositions>
     static result<basic_halfedge_mesh> build_polygons(std::size_t nv, FillPositions&& fill_positions, std::span<const Offset> face_offsets,
                                                       std::span<const std::uint32_t> corners) {
@@ -433,20 +439,152 @@ private:
                 ++out_begin[v + 1];
             }
         }
-        for (std::size_t v = 0; v < nv; ++v) out_begin[v + 1] += out_begin[v];
+        for (std::size_t v = 0; v < nv; ++v) out_begin[v + 1] += out_begin[v];  // out_begin[v]: where v's row starts
+        basic_halfedge_mesh m;
+        if (!link_polygons_fast(m, face_offsets, corners, out_begin, stamp)) {
+            m = basic_halfedge_mesh();
+            if (auto linked = link_polygons_checked(m, face_offsets, corners, out_begin, stamp); !linked) return linked.error();
+        }
+        const std::size_t edges = m.halfedges_.size() / 2;
+        fill_positions(m.positions_);
+        m.free_vertices_.ensure_room(nv);
+        m.free_edges_.ensure_room(edges);
+        m.free_faces_.ensure_room(nf);
+        m.vertex_deleted_.ensure(nv);
+        m.edge_deleted_.ensure(edges);
+        m.face_deleted_.ensure(nf);
+        m.vertex_props_.resize(nv);
+        m.edge_props_.resize(edges);
+        m.halfedge_props_.resize(2 * edges);
+        m.face_props_.resize(nf);
+        m.changes_ = 1;
+        return m;
+    }
+
+    // Whether the halfedges leaving v, `degree` of them, all lie in the one fan around it:
+    // the walk from vertex_out_[v] comes back after exactly `degree` steps. O(degree).
+    bool single_fan(std::uint32_t v, std::uint32_t degree) const {
+        const auto start = vertex_out_[v];
+        if (start.is_null()) return true;
+        std::uint32_t around = 0;
+        auto h = start;
+        do {
+            h = halfedges_[h.index ^ 1u].next;
+            ++around;
+        } while (h != start && around <= degree);
+        return around == degree;
+    }
+
+    // The connectivity of checked polygons (`out_begin[v]` where v's row of corners starts,
+    // `stamp` scratch of one entry per vertex) into the empty mesh m, in one pass over the
+    // faces: each corner a->b looks for its twin b->a among the corners already seen leaving
+    // b, and becomes edge 2e (a new edge) or the twin's halfedge + 1, so edges come in order
+    // of their first corner, as in link_polygons_checked. A corner's record gets its target at
+    // once (the row search reads it), the rest when its face is done; a boundary halfedge gets
+    // its target when its edge is made, its links at the end. False (m then half-built) on
+    // anything wrong: an edge run twice the same way, a vertex with two boundary gaps or
+    // several fans.
+    template <class Offset>
+    static bool link_polygons_fast(basic_halfedge_mesh& m, std::span<const Offset> face_offsets, std::span<const std::uint32_t> corners,
+                                   const std::vector<std::uint32_t>& out_begin, std::vector<std::uint32_t>& stamp) {
+        using u32 = std::uint32_t;
+        constexpr u32 none = UINT32_MAX;
+        const std::size_t nv = out_begin.size() - 1, nf = face_offsets.empty() ? 0 : face_offsets.size() - 1, nc = corners.size();
+        std::copy(out_begin.begin(), out_begin.end() - 1, stamp.begin());  // stamp[v]: where v's row ends so far
+        // Each vertex's row holds the halfedges of the corners seen leaving it; the vertex a
+        // corner runs to is its halfedge's target, written as soon as the corner is seen.
+        detail::trivial_array<u32> rows;
+        rows.resize_for_overwrite(nc);  // written before read, row by row
+        m.vertex_out_.assign(nv, halfedge_handle{});
+        // A closed mesh has one edge per two corners; each boundary edge needs room for two more
+        // halfedges, grown in steps as they appear (realloc: the written records move along).
+        m.halfedges_.resize_for_overwrite(nc);
+        m.faces_.resize_for_overwrite(nf);
+        std::vector<u32> face_h;  // the halfedge of each corner of the face at hand
+        u32 edges = 0;
+        for (std::size_t f = 0; f < nf; ++f) {
+            const u32 b = static_cast<u32>(face_offsets[f]), e = static_cast<u32>(face_offsets[f + 1]);
+            const face_handle fh(static_cast<u32>(f));
+            if (face_h.size() < e - b) face_h.resize(e - b);
+            for (u32 k = b; k < e; ++k) {
+                const u32 a = corners[k], t = corners[k + 1 == e ? b : k + 1];
+                u32 h = none;
+                for (u32 r = out_begin[t]; r < stamp[t]; ++r)
+                    if (m.halfedges_[rows[r]].target.index == a) {
+                        h = rows[r] ^ 1u;
+                        break;
+                    }
+                // A directed edge met twice (an orientation conflict or a third face) shows, at
+                // its first repeat, as a b->a that is itself a twin or already has one, or, with
+                // no b->a yet, as the earlier a->b in a's row.
+                if (h == none) {
+                    for (u32 r = out_begin[a]; r < stamp[a]; ++r)
+                        if (m.halfedges_[rows[r]].target.index == t) return false;
+                    h = 2 * edges++;
+                    if (h + 2 > m.halfedges_.size())
+                        m.halfedges_.resize_for_overwrite(std::min<std::size_t>(2 * nc, std::size_t{h} + 2 + (std::size_t{h} + 2) / 8 + 64));
+                    m.halfedges_[h + 1] = {vertex_handle(a), {}, {}, {}};  // boundary until a twin turns up
+                } else {
+                    if ((h & 1u) == 0 || !m.halfedges_[h].face.is_null()) return false;
+                    m.halfedges_[h].face = fh;  // taken: a second a->b must not pair with it
+                }
+                rows[stamp[a]++] = h;
+                m.halfedges_[h].target = vertex_handle(t);
+                face_h[k - b] = h;
+                m.vertex_out_[a] = halfedge_handle(h);  // the last corner's, as add_face leaves it
+            }
+            const u32 n = e - b;
+            for (u32 i = 0; i < n; ++i)
+                m.halfedges_[face_h[i]] = {vertex_handle(corners[i + 1 == n ? b : b + i + 1]), fh, halfedge_handle(face_h[i + 1 == n ? 0 : i + 1]),
+                                           halfedge_handle(face_h[i == 0 ? n - 1 : i - 1])};
+            m.faces_[f] = halfedge_handle(face_h[n - 1]);
+        }
+        m.halfedges_.resize(2 * std::size_t{edges});
+        // Boundary halfedges (the odd ones no face took) by the vertex they leave, then linked
+        // into loops: the boundary halfedge entering a vertex continues with the one leaving it.
+        std::fill(stamp.begin(), stamp.end(), none);
+        if (2 * std::size_t{edges} > nc) {
+            for (u32 h = 1; h < 2 * edges; h += 2)
+                if (m.halfedges_[h].face.is_null()) {
+                    const u32 from = m.halfedges_[h - 1].target.index;
+                    if (stamp[from] != none) return false;
+                    stamp[from] = h;
+                }
+            for (std::size_t v = 0; v < nv; ++v)
+                if (const u32 hb = stamp[v]; hb != none) {
+                    const u32 nb = stamp[m.halfedges_[hb].target.index];
+                    if (nb == none) return false;
+                    m.halfedges_[hb].next = halfedge_handle(nb);
+                    m.halfedges_[nb].prev = halfedge_handle(hb);
+                    m.vertex_out_[v] = halfedge_handle(hb);
+                }
+        }
+        for (std::size_t v = 0; v < nv; ++v)
+            if (!m.single_fan(static_cast<u32>(v), out_begin[v + 1] - out_begin[v] + (stamp[v] != none ? 1u : 0u))) return false;
+        return true;
+    }
+
+    // link_polygons_fast's mesh, or the first fault in a fixed order: an edge run twice by
+    // its source vertex, then boundary gaps in corner order, then fans by vertex. Slower (more
+    // passes, 24 bytes of scratch per corner); run only when the fast pass found a fault.
+    template <class Offset>
+    static result<void> link_polygons_checked(basic_halfedge_mesh& m, std::span<const Offset> face_offsets, std::span<const std::uint32_t> corners,
+                                              const std::vector<std::uint32_t>& out_begin, std::vector<std::uint32_t>& stamp) {
+        using u32 = std::uint32_t;
+        constexpr u32 none = UINT32_MAX;
+        const std::size_t nv = out_begin.size() - 1, nf = face_offsets.empty() ? 0 : face_offsets.size() - 1, nc = corners.size();
         // Corners grouped by source vertex, with their targets beside them so that the twin
         // search below scans contiguous memory.
         std::vector<u32> out(nc), out_target(nc);
+        std::copy(out_begin.begin(), out_begin.end() - 1, stamp.begin());  // stamp[v]: where v's row ends so far
         for (std::size_t f = 0; f < nf; ++f) {
             const u32 b = static_cast<u32>(face_offsets[f]), e = static_cast<u32>(face_offsets[f + 1]);
             for (u32 k = b; k < e; ++k) {
-                const u32 i = out_begin[corners[k]]++;  // out_begin[v] runs to the end of v's row
+                const u32 i = stamp[corners[k]]++;
                 out[i] = k;
                 out_target[i] = corners[k + 1 == e ? b : k + 1];
             }
         }
-        for (std::size_t v = nv; v > 0; --v) out_begin[v] = out_begin[v - 1];  // back to row starts
-        if (nv > 0) out_begin[0] = 0;
         // Twins: the corner running the same edge backwards; the same direction twice is an error.
         std::vector<u32> twin(nc, none);
         for (std::size_t a = 0; a < nv; ++a) {
@@ -473,7 +611,6 @@ private:
         for (u32 k = 0; k < nc; ++k) edges += (twin[k] == none || twin[k] > k);
         // Halfedge of each corner: 2e for the first corner of an edge, 2e + 1 for its twin or
         // for the boundary halfedge opposite an unpaired corner.
-        basic_halfedge_mesh m;
         std::vector<u32>& corner_h = out_target;  // reuse: the grouping is no longer needed after this
         {
             u32 e = 0;
@@ -485,11 +622,8 @@ private:
             }
         }
         m.vertex_out_.assign(nv, halfedge_handle{});
-        m.vertex_deleted_.ensure(nv);
         m.halfedges_.resize_for_overwrite(2 * edges);  // every record is written below, first touched there
-        m.edge_deleted_.ensure(edges);
         m.faces_.resize_for_overwrite(nf);
-        m.face_deleted_.ensure(nf);
         std::fill(stamp.begin(), stamp.end(), none);  // now: the boundary halfedge leaving each vertex
         for (std::size_t f = 0; f < nf; ++f) {
             const u32 b = static_cast<u32>(face_offsets[f]), e = static_cast<u32>(face_offsets[f + 1]);
@@ -529,30 +663,11 @@ private:
             if (stamp[v] == none) m.vertex_out_[v] = halfedge_handle(corner_h[k]);
         }
         // Every outgoing halfedge of a vertex must lie in the one fan around it.
-        for (std::size_t v = 0; v < nv; ++v) {
-            const auto start = m.vertex_out_[v];
-            if (start.is_null()) continue;
-            const u32 degree = out_begin[v + 1] - out_begin[v] + (stamp[v] != none ? 1u : 0u);
-            u32 around = 0;
-            auto h = start;
-            do {
-                h = m.halfedges_[h.index ^ 1u].next;
-                ++around;
-            } while (h != start && around <= degree);
-            if (around != degree)
+        for (std::size_t v = 0; v < nv; ++v)
+            if (!m.single_fan(static_cast<u32>(v), out_begin[v + 1] - out_begin[v] + (stamp[v] != none ? 1u : 0u)))
                 return fail(errc::non_manifold, "from_polygons: vertex " + std::to_string(v) + " joins two or more separate fans of faces",
                             static_cast<long long>(v));
-        }
-        fill_positions(m.positions_);
-        m.free_vertices_.ensure_room(nv);
-        m.free_edges_.ensure_room(edges);
-        m.free_faces_.ensure_room(nf);
-        m.vertex_props_.resize(nv);
-        m.edge_props_.resize(edges);
-        m.halfedge_props_.resize(2 * edges);
-        m.face_props_.resize(nf);
-        m.changes_ = 1;
-        return m;
+        return {};
     }
 
     // Takes over a built mesh's elements, keeping this mesh's properties (emptied, then sized to
