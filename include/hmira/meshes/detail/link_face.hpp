@@ -108,7 +108,7 @@ result<typename T::face_handle> link_face_sized(M& m, const typename T::vertex_h
                                                 face_link_scratch<typename T::halfedge_handle>& scratch) {
     const std::size_t n = N != 0 ? N : n_run;
     const auto null_h = T::null_halfedge();
-    auto after = [n](std::size_t i) { return i + 1 == n ? std::size_t{0} : i + 1; };
+    auto after = [&](std::size_t i) { return i + 1 == n ? std::size_t{0} : i + 1; };
     // Small faces (nearly all) keep their working state on the stack: filling and growing the
     // scratch vectors cost a fifth of a triangle mesh's build when they were used for every face.
     using H = typename T::halfedge_handle;
