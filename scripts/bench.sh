@@ -2,7 +2,9 @@
 # Runs every benchmark family side by side with its peers (C++ peers from Debian, Python peers
 # from the venv that scripts/bench-venv.sh creates, which this script runs first) and prints each family's ratio table.
 # Usage: bash scripts/bench.sh [family ...]     (default: all of bench/*/run.sh)
-# Families: core euler geometry io marching_cubes voxelize delaunay sweep ... (those with a run.sh).
+# Families: every bench/<family> with a run.sh (core euler io marching_cubes voxelize delaunay
+# geometry subdivision smoothing triangulation holes decimation remeshing editing repair python
+# dask sweep).
 # sweep: size sweeps of the performance-critical algorithms (10^4 to 10^7 elements), the
 # fitted log-log exponent of CPU time beside each doc block's complexity, PASS/FAIL; a few
 # minutes (bench/sweep/run.sh --quick: under a minute). Not run in CI.

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Python peers for bench/io: trimesh and Open3D reading the same files.
 
-Prints one JSON line per (category, file, library) with the minimum CPU and wall time in ms:
+Prints one JSON line per (category, file, library) with the median CPU and wall time in ms
+(5 repetitions after a warm-up, as bench_io's C++ readers):
   soup: indexed arrays  -- trimesh.load(process=False) (no welding, no merging)
   mesh: connected mesh  -- trimesh.load(process=True) (welds STL / merges vertices),
                            open3d.io.read_triangle_mesh (triangle mesh with adjacency-free arrays;
@@ -11,12 +12,13 @@ same file was ~10% slower than alone, so sharing a process would flatter hmira.
 """
 import json
 import os
+import statistics
 import subprocess
 import sys
 import time
 
 
-def best(fn, repeats):
+def median_times(fn, repeats):
     cpu, wall = [], []
     for _ in range(repeats):
         c0, w0 = time.process_time(), time.perf_counter()
@@ -24,7 +26,7 @@ def best(fn, repeats):
         cpu.append(time.process_time() - c0)
         wall.append(time.perf_counter() - w0)
         del out
-    return 1000 * min(cpu), 1000 * min(wall)
+    return 1000 * statistics.median(cpu), 1000 * statistics.median(wall)
 
 
 LIBRARIES = ("trimesh-soup", "trimesh-mesh", "open3d")
@@ -55,11 +57,10 @@ def main(argv):
     libs = [lib] if lib else []
     paths = argv[2:]
     for p in paths:
-        big = os.path.getsize(p) > (8 << 20)
         for cat, name, fn in libs:
             try:
                 fn(p)  # warm-up, and skip formats a library cannot read
-                cpu, wall = best(lambda: fn(p), 3 if big else 10)
+                cpu, wall = median_times(lambda: fn(p), 5)
             except Exception as e:  # noqa: BLE001
                 print(f"peers: {name} cannot read {p}: {e}", file=sys.stderr)
                 continue

@@ -5,8 +5,8 @@
 #          kept), trimesh process=False, Open3D
 #   mesh = into a connected mesh (STL welded): hmira read_mesh into halfedge_mesh |
 #          OpenMesh read_mesh (PolyMesh), CGAL read_polygon_mesh (Surface_mesh), trimesh process=True
-# Times are the minimum process CPU time over the repetitions (the machine is shared; CPU time
-# is what a reader costs). ratio = fastest peer / hmira (> 1: hmira is faster).
+# Times are the median process CPU time of 5 repetitions on both sides (CPU time is what a
+# reader costs on a shared machine). ratio = fastest peer / hmira (> 1: hmira is faster).
 #   bench/io/run.sh [--build-dir DIR] [--data-dir DIR] [--quick] [--only EXT]
 # --only ply (obj, off, stl): read only the files with that extension, e.g. to time one reader.
 set -euo pipefail
@@ -60,7 +60,7 @@ python3 - "$out/cpp.json" "$out/py.jsonl" <<'PY'
 import json, sys, collections
 rows = collections.defaultdict(dict)  # (category, file) -> lib -> cpu ms
 for b in json.load(open(sys.argv[1]))["benchmarks"]:
-    if b.get("aggregate_name") != "min":
+    if b.get("aggregate_name") != "median":
         continue
     cat, f, lib = b["run_name"].split("/")[:3]
     rows[(cat, f)][lib] = b["cpu_time"]
