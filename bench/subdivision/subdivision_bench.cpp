@@ -378,8 +378,9 @@ int main(int argc, char** argv) {
     // step: "reserve" (the traits' reserve alone) or "grow" (reserve, then resize to the
     // final counts: the model's whole storage growth, default fill of every new element too).
     const auto storage_table = [&](const std::string& step, const char* what) {
-        std::printf("\nGeneric on a model / on halfedge_mesh, less each model's %s (medians of the timed call alone: ms of user + system\n"
-                    "CPU; fresh = MB of minor page faults; %s = %s; less-%s = (model - its %s) / (hm - its %s); peers' rows: peer / hm):\n",
+        std::printf("\nGeneric on a model / on halfedge_mesh, less each model's %s step (medians of the timed call alone):\n"
+                    "  ms = user + system CPU; fresh = MB of minor page faults; %s = %s;\n"
+                    "  less-%s = (model - its %s) / (hm - its %s); the peers' rows: peer / hm.\n",
                     step.c_str(), step.c_str(), what, step.c_str(), step.c_str(), step.c_str());
         std::printf("%-44s %9s %9s %6s | %8s %8s %18s | %13s %13s\n", "scheme/model", "model ms", "hm ms", "ratio", (step + " ms").c_str(),
                     (step + " hm").c_str(), ("less-" + step).c_str(), "fresh MB", (step + " MB").c_str());
