@@ -9,6 +9,11 @@
 #      both runs use huge pages, with [never] neither does.
 # At a million faces the kernel's faulting and zeroing of the output's fresh pages is about half
 # the CPU time; run 2 shows how much of that is per-page overhead rather than zeroing.
+# Each run ends with issue 18's tables: the generic algorithm on OpenMesh and Surface_mesh / on
+# halfedge_mesh, whole and less each model's up-front reserve (timed alone as
+# <scheme>/reserve/<model>) or whole storage growth (reserve plus resize to the final counts,
+# <scheme>/grow/<model>), with the fresh MB of the whole run and of that step alone; the load
+# average is printed before and after each run.
 # --interleave runs the repetitions of all cases in random order
 # (--benchmark_enable_random_interleaving), so that on a loaded machine a busy spell is spread
 # over every side instead of landing on one case's repetitions.
@@ -36,8 +41,12 @@ cmake --build "$build" --target subdivision_bench -j2
 bench="$build/bench/subdivision/subdivision_bench"
 echo "transparent_hugepage/enabled: $(cat /sys/kernel/mm/transparent_hugepage/enabled 2>/dev/null || echo unknown)"
 echo "== 4 KiB pages (as built) =="
+echo "load average before: $(cut -d' ' -f1-3 /proc/loadavg)"
 "$bench" --benchmark_filter="$filter" --benchmark_repetitions="$reps" --benchmark_enable_random_interleaving="$interleave" | sed -n '/^Median/,$p'
+echo "load average after: $(cut -d' ' -f1-3 /proc/loadavg)"
 if [ "$huge" = 1 ]; then
   echo "== transparent huge pages for every large allocation (GLIBC_TUNABLES=glibc.malloc.hugetlb=1) =="
+  echo "load average before: $(cut -d' ' -f1-3 /proc/loadavg)"
   GLIBC_TUNABLES=glibc.malloc.hugetlb=1 "$bench" --benchmark_filter="$filter" --benchmark_repetitions="$reps" --benchmark_enable_random_interleaving="$interleave" | sed -n '/^Median/,$p'
+  echo "load average after: $(cut -d' ' -f1-3 /proc/loadavg)"
 fi

@@ -16,15 +16,23 @@
 // faulting and zeroing of the output's fresh pages (system time) is a large share of the CPU
 // time and depends on the output's size alone, so the summary gives the ratios of user and of
 // system time as well. bench/subdivision/run.sh runs it with and without transparent huge pages.
-// The <scheme>/reserve/<model> cases time the traits' reserve alone, to that scheme's final
-// counts: on halfedge_mesh it moves the records by realloc (mremap keeps their pages), on
-// OpenMesh std::vector copies every array into fresh pages and frees the old ones. The summary
-// then also gives the on-OpenMesh ratio less each model's reserve: what the generic algorithm
-// costs beyond the model's storage. catmull_clark/hmira/openmesh_poly_double runs on a PolyMesh
-// with double points (Vec3d), where the face points go straight into their vertices as on
-// halfedge_mesh; with OpenMesh's default float points they need a double array of their own.
+// The <scheme>/reserve/<model> cases time the traits' reserve alone, the same call to the same
+// counts the algorithm makes before its first change (T::reserve(v + e, 2e + 3f, 4f) for Loop,
+// T::reserve(v + e + f, 2e + corners, corners) for Catmull-Clark): on halfedge_mesh the
+// connectivity moves by realloc (mremap keeps its pages) and only the positions' std::vector
+// is copied; on OpenMesh and Surface_mesh std::vector::reserve copies every property array into
+// fresh pages and frees the old ones. The <scheme>/grow/<model> cases add the traits' resize
+// to the same counts (every new element appended at its defaults, which the algorithm does in
+// blocks): the model's whole storage growth. The last two tables give, per model, the generic
+// algorithm on it / on halfedge_mesh, whole and less each model's reserve (or growth): what
+// the algorithm costs beyond the model's storage; and the fresh memory of the whole run and
+// of that step alone.
+// catmull_clark/hmira/openmesh_poly_double runs on a PolyMesh with double points (Vec3d),
+// where the face points go straight into their vertices as on halfedge_mesh; with OpenMesh's
+// default float points they need a double array of their own.
 #include <benchmark/benchmark.h>
 #include <sys/resource.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -74,6 +82,11 @@ std::map<std::string, std::vector<double>>& cpu_seconds_by_case() {
     static std::map<std::string, std::vector<double>> s;
     return s;
 }
+/// Fresh memory each single run touched (minor page faults times the page size), in MB.
+std::map<std::string, std::vector<double>>& fresh_mb_by_case() {
+    static std::map<std::string, std::vector<double>> s;
+    return s;
+}
 
 double seconds(const timeval& t) { return double(t.tv_sec) + 1e-6 * double(t.tv_usec); }
 
@@ -88,10 +101,16 @@ void measured(benchmark::State& state, const std::string& name, F&& f) {
     const double sys = seconds(after.ru_stime) - seconds(before.ru_stime);
     user_seconds_by_case()[name].push_back(user);
     sys_seconds_by_case()[name].push_back(sys);
+    // A minor fault maps one page, or a whole transparent huge page (counted as one base page
+    // here, so with huge pages the figure is a lower bound).
+    static const double page_bytes = double(sysconf(_SC_PAGESIZE));
+    const double fresh_mb = double(after.ru_minflt - before.ru_minflt) * page_bytes / 1e6;
     cpu_seconds_by_case()[name].push_back(user + sys);
+    fresh_mb_by_case()[name].push_back(fresh_mb);
+    state.counters["cpu_ms"] = (user + sys) * 1e3;
     state.counters["user_ms"] = user * 1e3;
     state.counters["sys_ms"] = sys * 1e3;
-    state.counters["fresh_MB"] = double(after.ru_minflt - before.ru_minflt) * 4096.0 / 1e6;
+    state.counters["fresh_MB"] = fresh_mb;
 }
 
 /// Registers a case under its name, which it also receives, one iteration per repetition.
@@ -169,8 +188,10 @@ const int registered_11 = add_case("sqrt3/hmira/halfedge_mesh", &hmira_sqrt3<hmi
 
 /// The traits' reserve alone, to the counts one Loop (Quad false, triangle torus) or
 /// Catmull-Clark (Quad true, quad torus) level ends with: the share of a scheme's time that
-/// is the model's storage growing, whatever algorithm runs.
-template <class M, bool Quad>
+/// is the model's storage growing, whatever algorithm runs. With Grow, also the traits'
+/// resize to those counts: every new element appended at its defaults, as the algorithm's
+/// blocks do (new_elements.hpp; here in one call, so the fill is not in cache when written).
+template <class M, bool Quad, bool Grow = false>
 void reserve_only(benchmark::State& state, const char* name) {
     using T = hmira::default_traits<M>;
     const soup& s = Quad ? quad_torus() : triangle_torus();
@@ -182,16 +203,17 @@ void reserve_only(benchmark::State& state, const char* name) {
         M m = base;
         state.ResumeTiming();
         measured(state, name, [&] {
-            if constexpr (Quad)
-                T::reserve(m, v + e + f, 2 * e + corners, corners);
-            else
-                T::reserve(m, v + e, 2 * e + 3 * f, 4 * f);
+            const std::size_t nv = Quad ? v + e + f : v + e, ne = Quad ? 2 * e + corners : 2 * e + 3 * f, nf = Quad ? corners : 4 * f;
+            T::reserve(m, nv, ne, nf);
+            if constexpr (Grow) T::resize(m, nv, ne, nf);
         });
         benchmark::DoNotOptimize(m);
     }
 }
 const int registered_16 = add_case("loop/reserve/halfedge_mesh", &reserve_only<hmira::halfedge_mesh, false>);
 const int registered_17 = add_case("catmull_clark/reserve/halfedge_mesh", &reserve_only<hmira::halfedge_mesh, true>);
+const int registered_24 = add_case("loop/grow/halfedge_mesh", &reserve_only<hmira::halfedge_mesh, false, true>);
+const int registered_25 = add_case("catmull_clark/grow/halfedge_mesh", &reserve_only<hmira::halfedge_mesh, true, true>);
 
 #ifdef HMIRA_BENCH_WITH_OPENMESH
 using om_tri = OpenMesh::TriMesh_ArrayKernelT<>;
@@ -234,6 +256,10 @@ using om_poly_double = OpenMesh::PolyMesh_ArrayKernelT<om_double_traits>;
 const int registered_18 = add_case("catmull_clark/hmira/openmesh_poly_double", &hmira_catmull_clark<om_poly_double>);
 const int registered_19 = add_case("loop/reserve/openmesh_tri", &reserve_only<om_tri, false>);
 const int registered_20 = add_case("catmull_clark/reserve/openmesh_poly", &reserve_only<om_poly, true>);
+const int registered_21 = add_case("catmull_clark/reserve/openmesh_poly_double", &reserve_only<om_poly_double, true>);
+const int registered_26 = add_case("loop/grow/openmesh_tri", &reserve_only<om_tri, false, true>);
+const int registered_27 = add_case("catmull_clark/grow/openmesh_poly", &reserve_only<om_poly, true, true>);
+const int registered_28 = add_case("catmull_clark/grow/openmesh_poly_double", &reserve_only<om_poly_double, true, true>);
 void openmesh_catmull_clark(benchmark::State& state, const char* name) {
     const om_poly base = build<om_poly>(quad_torus());
     for (auto _ : state) {
@@ -294,6 +320,10 @@ void cgal_catmull_clark(benchmark::State& state, const char* name) {
     }
 }
 const int registered_10 = add_case("catmull_clark/cgal/CatmullClark_subdivision", &cgal_catmull_clark);
+const int registered_22 = add_case("loop/reserve/cgal_surface_mesh", &reserve_only<cgal_mesh, false>);
+const int registered_23 = add_case("catmull_clark/reserve/cgal_surface_mesh", &reserve_only<cgal_mesh, true>);
+const int registered_29 = add_case("loop/grow/cgal_surface_mesh", &reserve_only<cgal_mesh, false, true>);
+const int registered_30 = add_case("catmull_clark/grow/cgal_surface_mesh", &reserve_only<cgal_mesh, true, true>);
 #endif
 
 std::string openmesh_case(const std::string& scheme) {
@@ -340,21 +370,53 @@ int main(int argc, char** argv) {
         }
     }
     }
-    std::printf("\nThe models' storage: the traits' reserve alone (user + system CPU, medians), and the ratio less it:\n");
-    for (const std::string scheme : {"loop", "catmull_clark"}) {
-        const std::string on_om = hmira_on_openmesh_case(scheme), own = scheme + "/hmira/halfedge_mesh";
-        const std::string model = on_om.substr(on_om.rfind('/') + 1);
-        auto& cpu = cpu_seconds_by_case();
-        const double r_om = median_in(cpu, scheme + "/reserve/" + model), r_own = median_in(cpu, scheme + "/reserve/halfedge_mesh");
-        const double t_om = median_in(cpu, on_om), t_own = median_in(cpu, own);
-        if (r_om <= 0 || r_own <= 0 || t_om <= 0 || t_own <= 0) continue;
-        std::printf("%-66s %7.1f ms / %7.1f ms = %5.2f\n", (scheme + ": reserve, OpenMesh / halfedge_mesh").c_str(), r_om * 1e3, r_own * 1e3, r_om / r_own);
-        std::printf("%-66s %7.1f ms / %7.1f ms = %5.2f\n", (scheme + ": hmira on OpenMesh / halfedge_mesh, less reserve").c_str(), (t_om - r_om) * 1e3,
-                    (t_own - r_own) * 1e3, (t_om - r_om) / (t_own - r_own));
-    }
-    if (const double d = median_in(cpu_seconds_by_case(), "catmull_clark/hmira/openmesh_poly_double"), own = median_in(cpu_seconds_by_case(), "catmull_clark/hmira/halfedge_mesh");
-        d > 0 && own > 0)
-        std::printf("%-66s %7.1f ms / %7.1f ms = %5.2f\n", "catmull_clark: hmira on OpenMesh (double points) / halfedge_mesh", d * 1e3, own * 1e3, d / own);
+    // Issue 18's <= 1.1 for the generic algorithm on each model, whole and less that model's
+    // reserve (the <scheme>/reserve/<model> case: the same T::reserve, to the same counts, the
+    // algorithm makes before its first change), with the fresh memory each touched.
+    auto& cpu = cpu_seconds_by_case();
+    auto& fresh = fresh_mb_by_case();
+    // step: "reserve" (the traits' reserve alone) or "grow" (reserve, then resize to the
+    // final counts: the model's whole storage growth, default fill of every new element too).
+    const auto storage_table = [&](const std::string& step, const char* what) {
+        std::printf("\nGeneric on a model / on halfedge_mesh, less each model's %s step (medians of the timed call alone):\n"
+                    "  ms = user + system CPU; fresh = MB of minor page faults; %s = %s;\n"
+                    "  less-%s = (model - its %s) / (hm - its %s); the peers' rows: peer / hm.\n",
+                    step.c_str(), step.c_str(), what, step.c_str(), step.c_str(), step.c_str());
+        std::printf("%-44s %9s %9s %6s | %8s %8s %18s | %13s %13s\n", "scheme/model", "model ms", "hm ms", "ratio", (step + " ms").c_str(),
+                    (step + " hm").c_str(), ("less-" + step).c_str(), "fresh MB", (step + " MB").c_str());
+        for (const std::string scheme : {"loop", "catmull_clark"}) {
+            const std::string own = scheme + "/hmira/halfedge_mesh", own_step = scheme + "/" + step + "/halfedge_mesh";
+            const double t_own = median_in(cpu, own), r_own = median_in(cpu, own_step);
+            if (t_own <= 0) continue;
+            const double m_own = median_in(fresh, own), rm_own = median_in(fresh, own_step);
+            std::printf("%-44s %9.1f %9.1f %6s | %8.1f %8s %18s | %13.1f %13.1f\n", (scheme + "/halfedge_mesh").c_str(), t_own * 1e3, t_own * 1e3, "1.00",
+                        r_own * 1e3, "", "", m_own, rm_own);
+            const std::vector<std::string> models = scheme == "loop" ? std::vector<std::string>{"openmesh_tri", "cgal_surface_mesh"}
+                                                                     : std::vector<std::string>{"openmesh_poly", "openmesh_poly_double", "cgal_surface_mesh"};
+            for (const std::string& model : models) {
+                const std::string on = scheme + "/hmira/" + model, res = scheme + "/" + step + "/" + model;
+                const double t = median_in(cpu, on), r = median_in(cpu, res);
+                if (t <= 0) continue;
+                char less[40] = "";
+                if (r > 0 && r_own > 0)
+                    std::snprintf(less, sizeof less, "%.1f/%.1f=%.2f", (t - r) * 1e3, (t_own - r_own) * 1e3, (t - r) / (t_own - r_own));
+                char fr[40], rfr[40] = "";
+                std::snprintf(fr, sizeof fr, "%.1f/%.1f", median_in(fresh, on), m_own);
+                if (r > 0) std::snprintf(rfr, sizeof rfr, "%.1f/%.1f", median_in(fresh, res), rm_own);
+                std::printf("%-44s %9.1f %9.1f %6.2f | %8.1f %8.1f %18s | %13s %13s\n", (scheme + "/" + model).c_str(), t * 1e3, t_own * 1e3, t / t_own,
+                            r * 1e3, r_own * 1e3, less, fr, rfr);
+            }
+            // The peers' own subdividers on the same input, for scale.
+            for (const std::string& peer : {openmesh_case(scheme), cgal_case(scheme)})
+                if (const double t = median_in(cpu, peer); t > 0) {
+                    char fr[40];
+                    std::snprintf(fr, sizeof fr, "%.1f/%.1f", median_in(fresh, peer), m_own);
+                    std::printf("%-44s %9.1f %9.1f %6.2f | %8s %8s %18s | %13s\n", peer.c_str(), t * 1e3, t_own * 1e3, t / t_own, "", "", "", fr);
+                }
+        }
+    };
+    storage_table("reserve", "the traits' reserve alone, to the level's final counts, as the algorithm calls it");
+    storage_table("grow", "that reserve, then the traits' resize to those counts (every new element at its defaults)");
     benchmark::Shutdown();
     return 0;
 }
