@@ -1,0 +1,98 @@
+#!/usr/bin/env python3
+"""Issue 20: does memory (bandwidth, first touch of the output's fresh pages) explain marching
+cubes' 1 -> 2 thread speed-up on the 384^3 volumes? Runs bandwidth_probe, then hmira and
+vtkFlyingEdges3D at 1 and 2 threads on the same volumes (wall medians), and prints how much
+of hmira's time writing its output to fresh pages would take at the probe's first-touch rate.
+
+usage: bandwidth.py VOLUME_DIR HMIRA_BENCH_BINARY PROBE_BINARY [REPEATS]
+VOLUME_DIR as bench_marching_cubes --export writes it."""
+import json
+import os
+import re
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+
+import numpy as np
+
+from peers import vtk_image
+
+VOLUMES = ("sphere_384", "gyroid_384")
+
+
+def load(volume_dir, names):
+    vols = []
+    with open(f"{volume_dir}/manifest.txt") as f:
+        for line in f:
+            name, nx, ny, nz, iso, *_ = line.split()
+            if name in names:
+                data = np.fromfile(f"{volume_dir}/{name}.raw", dtype="<f4").reshape(int(nz), int(ny), int(nx))
+                vols.append(dict(name=name, dims=(int(nx), int(ny), int(nz)), iso=float(iso), data=data))
+    return vols
+
+
+def hmira(bench, name, threads, repeats):
+    """Wall ms (median), kernel ms per call (all threads) and page faults per call."""
+    with tempfile.NamedTemporaryFile(suffix=".json") as out:
+        subprocess.run([bench, f"--benchmark_filter=^hmira_mc/{name}/{threads}/", f"--benchmark_repetitions={repeats}",
+                        f"--benchmark_out={out.name}", "--benchmark_out_format=json"], check=True, stdout=subprocess.DEVNULL)
+        runs = [b for b in json.load(open(out.name))["benchmarks"] if b.get("run_type") == "iteration"]
+    med = lambda key: statistics.median(b[key] for b in runs)
+    return med("real_time"), med("sys_ms"), med("faults")
+
+
+def vtk_fe(vol, threads, repeats):
+    """Wall ms (median) of vtkFlyingEdges3D, and its output's size in bytes."""
+    import vtk
+    vtk.vtkSMPTools.SetBackend("STDThread")
+    vtk.vtkSMPTools.Initialize(threads)
+    f = vtk.vtkFlyingEdges3D()
+    f.SetInputData(vtk_image(vol))
+    f.SetValue(0, vol["iso"])
+    f.ComputeNormalsOff()
+    f.ComputeScalarsOff()
+    f.ComputeGradientsOff()
+    times = []
+    for _ in range(repeats):
+        f.Modified()
+        t0 = time.perf_counter()
+        f.Update()
+        times.append((time.perf_counter() - t0) * 1000.0)
+    return statistics.median(times), f.GetOutput().GetActualMemorySize() * 1024
+
+
+def main():
+    volume_dir, bench, probe = sys.argv[1:4]
+    repeats = int(sys.argv[4]) if len(sys.argv) > 4 else 5
+    print(f"load average before: {os.getloadavg()[0]:.2f} {os.getloadavg()[1]:.2f} {os.getloadavg()[2]:.2f}")
+    text = subprocess.run([probe, "--reps", str(max(repeats, 5))], check=True, capture_output=True, text=True).stdout
+    print(text)
+    out_bytes = {m[0]: int(m[1]) for m in re.findall(r"^output (\S+) .*bytes=(\d+)$", text, re.M)}
+    fresh = re.search(r"^\| fresh write \(first touch\) \| \S+ \| (\S+) \| (\S+) \|", text, re.M)
+    fresh_gbs = {1: float(fresh[1]), 2: float(fresh[2])}
+
+    print("| volume | output MB | thr | hmira ms | kernel ms/call | faults/call | fresh-page write ms at probe rate | share of hmira | vtkFE ms | vtkFE output MB |")
+    print("|---|---|---|---|---|---|---|---|---|---|")
+    speedups = []
+    for vol in load(volume_dir, VOLUMES):
+        name, b = vol["name"], out_bytes.get(vol["name"], 0)
+        res = {}
+        for t in (1, 2):
+            h, sys_ms, faults = hmira(bench, name, t, repeats)
+            v, vbytes = vtk_fe(vol, t, repeats)
+            touch = b / (fresh_gbs[t] * 1e9) * 1000.0
+            res[t] = (h, v, touch)
+            print(f"| {name} | {b / 1e6:.1f} | {t} | {h:.1f} | {sys_ms:.1f} | {faults:.0f} | {touch:.1f} | {touch / h:.0%} | {v:.1f} | {vbytes / 1e6:.1f} |",
+                  flush=True)
+        (h1, v1, f1), (h2, v2, f2) = res[1], res[2]
+        # If everything but the first touch halved and the first touch went at the probe's rates.
+        bound = h1 / ((h1 - f1) / 2 + f2)
+        speedups.append(f"{name}: hmira 1->2 threads {h1 / h2:.2f} (first-touch bound {bound:.2f}); vtkFlyingEdges3D {v1 / v2:.2f}")
+    print("\n".join(speedups))
+    print(f"load average after: {os.getloadavg()[0]:.2f} {os.getloadavg()[1]:.2f} {os.getloadavg()[2]:.2f}")
+
+
+if __name__ == "__main__":
+    main()
