@@ -37,7 +37,8 @@ def hmira(bench, name, threads, repeats):
     """Wall ms (median), kernel ms per call (all threads) and page faults per call."""
     with tempfile.NamedTemporaryFile(suffix=".json") as out:
         subprocess.run([bench, f"--benchmark_filter=^hmira_mc/{name}/{threads}/", f"--benchmark_repetitions={repeats}",
-                        f"--benchmark_out={out.name}", "--benchmark_out_format=json"], check=True, stdout=subprocess.DEVNULL)
+                        f"--benchmark_out={out.name}", "--benchmark_out_format=json"], check=True,
+                       stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
         runs = [b for b in json.load(open(out.name))["benchmarks"] if b.get("run_type") == "iteration"]
     med = lambda key: statistics.median(b[key] for b in runs)
     return med("real_time"), med("sys_ms"), med("faults")

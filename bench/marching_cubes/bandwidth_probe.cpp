@@ -7,6 +7,8 @@
 //               page is first touched here (kernel page fault + zeroing, then our stores):
 //               MC's output arrays are new each call and written only by the writing pass;
 //   touched write the same stores into a buffer whose pages are already mapped;
+//   fresh write, huge pages  as fresh write, with madvise(MADV_HUGEPAGE) (2 MB pages, where
+//               THP is enabled): what an output allocator asking for huge pages would pay;
 // and the serial munmap of the fresh output (MC's caller frees it on one thread).
 // The output sizes are measured: hmira's MC (serial here, no TBB) on the benchmark's gyroid
 // and sphere at 384^3, bytes = 12 per vertex (vec3<float>) + 12 per triangle (3 x uint32).
@@ -56,13 +58,14 @@ double split_run(std::size_t words, unsigned threads, const F& f) {
     return seconds_since(t0);
 }
 
-std::uint64_t* map_fresh(std::size_t bytes) {
+std::uint64_t* map_fresh(std::size_t bytes, bool huge = false) {
     // mmap, as glibc's malloc does for blocks this large: pages arrive on first touch.
     void* p = mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
     if (p == MAP_FAILED) {
         std::perror("mmap");
         std::exit(1);
     }
+    if (huge) (void)madvise(p, bytes, MADV_HUGEPAGE);  // a hint: ignored where THP is off
     return static_cast<std::uint64_t*>(p);
 }
 
@@ -127,7 +130,7 @@ int main(int argc, char** argv) {
     std::printf("input volume bytes=%zu\n\n", read_bytes);
 
     const std::size_t rwords = read_bytes / 8, wwords = write_bytes / 8;
-    pattern_result read, fresh, touched;
+    pattern_result read, fresh, touched, huge;
     double unmap_ms = 0;
     {
         std::uint64_t* in = map_fresh(read_bytes);
@@ -135,7 +138,7 @@ int main(int argc, char** argv) {
         std::uint64_t* out = map_fresh(write_bytes);
         write_words(out, 0, wwords);
         for (unsigned t = 1; t <= 2; ++t) {
-            std::vector<double> r, f, w, u;
+            std::vector<double> r, f, w, u, h;
             for (int rep = 0; rep < reps; ++rep) {
                 r.push_back(split_run(rwords, t, [&](std::size_t b, std::size_t e) { read_words(in, b, e); }));
                 w.push_back(split_run(wwords, t, [&](std::size_t b, std::size_t e) { write_words(out, b, e); }));
@@ -144,10 +147,14 @@ int main(int argc, char** argv) {
                 const auto t0 = clock_type::now();
                 munmap(p, write_bytes);
                 u.push_back(seconds_since(t0));
+                p = map_fresh(write_bytes, true);
+                h.push_back(split_run(wwords, t, [&](std::size_t b, std::size_t e) { write_words(p, b, e); }));
+                munmap(p, write_bytes);
             }
             read.gbs[t - 1] = double(read_bytes) / median(r) / 1e9;
             touched.gbs[t - 1] = double(write_bytes) / median(w) / 1e9;
             fresh.gbs[t - 1] = double(write_bytes) / median(f) / 1e9;
+            huge.gbs[t - 1] = double(write_bytes) / median(h) / 1e9;
             if (t == 1) unmap_ms = 1000 * median(u);
         }
         munmap(in, read_bytes);
@@ -160,6 +167,7 @@ int main(int argc, char** argv) {
     row("read (touched)", read_bytes, read);
     row("fresh write (first touch)", write_bytes, fresh);
     row("touched write", write_bytes, touched);
+    row("fresh write, huge pages", write_bytes, huge);
     std::printf("munmap of the fresh output (serial): %.1f ms\n", unmap_ms);
     return 0;
 }
