@@ -39,6 +39,8 @@ using clock_type = std::chrono::steady_clock;
 
 double seconds_since(clock_type::time_point t0) { return std::chrono::duration<double>(clock_type::now() - t0).count(); }
 
+double fastest(const std::vector<double>& v) { return *std::min_element(v.begin(), v.end()); }
+
 double median(std::vector<double> v) {
     std::sort(v.begin(), v.end());
     const std::size_t n = v.size();
@@ -84,7 +86,8 @@ void read_words(const std::uint64_t* p, std::size_t b, std::size_t e) {
 }
 
 struct pattern_result {
-    double gbs[2] = {0, 0};  // 1 and 2 threads
+    double gbs[2] = {0, 0};   // medians, 1 and 2 threads
+    double best[2] = {0, 0};  // fastest repetition: on a shared machine, the least disturbed
 };
 
 struct mc_output {
@@ -152,17 +155,22 @@ int main(int argc, char** argv) {
                 munmap(p, write_bytes);
             }
             read.gbs[t - 1] = double(read_bytes) / median(r) / 1e9;
+            read.best[t - 1] = double(read_bytes) / fastest(r) / 1e9;
             touched.gbs[t - 1] = double(write_bytes) / median(w) / 1e9;
+            touched.best[t - 1] = double(write_bytes) / fastest(w) / 1e9;
             fresh.gbs[t - 1] = double(write_bytes) / median(f) / 1e9;
+            fresh.best[t - 1] = double(write_bytes) / fastest(f) / 1e9;
             huge.gbs[t - 1] = double(write_bytes) / median(h) / 1e9;
+            huge.best[t - 1] = double(write_bytes) / fastest(h) / 1e9;
             if (t == 1) unmap_ms = 1000 * median(u);
         }
         munmap(in, read_bytes);
         munmap(out, write_bytes);
     }
-    std::printf("| pattern | MB | 1 thread GB/s | 2 threads GB/s | 2/1 speed-up |\n|---|---|---|---|---|\n");
+    std::printf("| pattern | MB | 1 thread GB/s | 2 threads GB/s | 2/1 speed-up | 2/1 of the fastest runs |\n|---|---|---|---|---|---|\n");
     const auto row = [](const char* name, std::size_t bytes, const pattern_result& p) {
-        std::printf("| %s | %.0f | %.2f | %.2f | %.2f |\n", name, double(bytes) / 1e6, p.gbs[0], p.gbs[1], p.gbs[1] / p.gbs[0]);
+        std::printf("| %s | %.0f | %.2f | %.2f | %.2f | %.2f |\n", name, double(bytes) / 1e6, p.gbs[0], p.gbs[1], p.gbs[1] / p.gbs[0],
+                    p.best[1] / p.best[0]);
     };
     row("read (touched)", read_bytes, read);
     row("fresh write (first touch)", write_bytes, fresh);
