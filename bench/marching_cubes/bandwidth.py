@@ -65,6 +65,14 @@ def vtk_fe(vol, threads, repeats):
     return statistics.median(times), min(times), statistics.median(cpu), f.GetOutput().GetActualMemorySize() * 1024
 
 
+def cpu_jiffies():
+    """(nice, steal, total) from /proc/stat: niced time is other work on this shared machine
+    (this script runs at nice 0), steal the hypervisor's other guests."""
+    with open("/proc/stat") as f:
+        v = [int(x) for x in f.readline().split()[1:]]
+    return v[1], v[7], sum(v[:8])
+
+
 def main():
     volume_dir, bench, probe = sys.argv[1:4]
     repeats = int(sys.argv[4]) if len(sys.argv) > 4 else 5
@@ -79,20 +87,24 @@ def main():
 
     print("Wall ms: median / fastest of the repetitions; CPU ms: all threads, median. 'fresh-page write' is the probe's first-touch")
     print("time for hmira's output bytes, and its share of hmira's median wall time. 'memory bound': the speed-up if all else halved,")
-    print("the first touch scaled as in the probe and the serial munmap of the output did not.\n")
-    print("| volume | output MB | thr | hmira wall ms | hmira CPU ms | kernel ms/call | faults/call | fresh-page write ms | share | vtkFE wall ms | vtkFE CPU ms | vtkFE output MB |")
-    print("|---|---|---|---|---|---|---|---|---|---|---|---|")
+    print("the first touch scaled as in the probe and the serial munmap of the output did not. 'niced / stolen CPU': share of both")
+    print("CPUs' time spent on niced processes (other work here) and stolen by the hypervisor while that row ran.\n")
+    print("| volume | output MB | thr | hmira wall ms | hmira CPU ms | kernel ms/call | faults/call | fresh-page write ms | share | vtkFE wall ms | vtkFE CPU ms | vtkFE output MB | niced / stolen CPU |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|")
     speedups = []
     for vol in load(volume_dir, VOLUMES):
         name, b = vol["name"], out_bytes.get(vol["name"], 0)
         res = {}
         for t in (1, 2):
+            j0 = cpu_jiffies()
             h, hbest, hcpu, sys_ms, faults = hmira(bench, name, t, repeats)
             v, vbest, vcpu, vbytes = vtk_fe(vol, t, repeats)
+            j1 = cpu_jiffies()
+            others = f"{(j1[0] - j0[0]) / max(j1[2] - j0[2], 1):.0%} / {(j1[1] - j0[1]) / max(j1[2] - j0[2], 1):.0%}"
             touch = b / (fresh_gbs[t] * 1e9) * 1000.0
             res[t] = (h, hbest, hcpu, v, vbest, vcpu, touch)
             print(f"| {name} | {b / 1e6:.1f} | {t} | {h:.1f} / {hbest:.1f} | {hcpu:.1f} | {sys_ms:.1f} | {faults:.0f} | {touch:.1f} | {touch / h:.0%} "
-                  f"| {v:.1f} / {vbest:.1f} | {vcpu:.1f} | {vbytes / 1e6:.1f} |", flush=True)
+                  f"| {v:.1f} / {vbest:.1f} | {vcpu:.1f} | {vbytes / 1e6:.1f} | {others} |", flush=True)
         (h1, hb1, hc1, v1, vb1, vc1, f1), (h2, hb2, hc2, v2, vb2, vc2, f2) = res[1], res[2]
         # The speed-up if everything else halved, the first touch went at the probe's rates and
         # the caller's munmap of the output (serial, inside the timed loop) did not shrink.
