@@ -65,12 +65,20 @@ def vtk_fe(vol, threads, repeats):
     return statistics.median(times), min(times), statistics.median(cpu), f.GetOutput().GetActualMemorySize() * 1024
 
 
-def cpu_jiffies():
-    """(nice, steal, total) from /proc/stat: niced time is other work on this shared machine
-    (this script runs at nice 0), steal the hypervisor's other guests."""
+def cpu_state():
+    """(busy, steal, total) seconds of both CPUs from /proc/stat, and this script's own CPU
+    seconds with its finished children (the hmira benchmark runs)."""
     with open("/proc/stat") as f:
-        v = [int(x) for x in f.readline().split()[1:]]
-    return v[1], v[7], sum(v[:8])
+        v = [int(x) / os.sysconf("SC_CLK_TCK") for x in f.readline().split()[1:9]]
+    t = os.times()
+    return v[0] + v[1] + v[2] + v[5] + v[6], v[7], sum(v), t.user + t.system + t.children_user + t.children_system
+
+
+def others(a, b):
+    """Share of both CPUs' time used by other processes, and stolen by the hypervisor, between
+    two cpu_state() readings: what disturbs a 2-thread measurement on a shared machine."""
+    total = max(b[2] - a[2], 1e-9)
+    return f"{max(b[0] - a[0] - (b[3] - a[3]), 0) / total:.0%} / {(b[1] - a[1]) / total:.0%}"
 
 
 def main():
@@ -87,24 +95,23 @@ def main():
 
     print("Wall ms: median / fastest of the repetitions; CPU ms: all threads, median. 'fresh-page write' is the probe's first-touch")
     print("time for hmira's output bytes, and its share of hmira's median wall time. 'memory bound': the speed-up if all else halved,")
-    print("the first touch scaled as in the probe and the serial munmap of the output did not. 'niced / stolen CPU': share of both")
-    print("CPUs' time spent on niced processes (other work here) and stolen by the hypervisor while that row ran.\n")
-    print("| volume | output MB | thr | hmira wall ms | hmira CPU ms | kernel ms/call | faults/call | fresh-page write ms | share | vtkFE wall ms | vtkFE CPU ms | vtkFE output MB | niced / stolen CPU |")
+    print("the first touch scaled as in the probe and the serial munmap of the output did not. 'other processes / stolen CPU': share of")
+    print("both CPUs' time used by processes other than these measurements, and stolen by the hypervisor, while that row ran.\n")
+    print("| volume | output MB | thr | hmira wall ms | hmira CPU ms | kernel ms/call | faults/call | fresh-page write ms | share | vtkFE wall ms | vtkFE CPU ms | vtkFE output MB | other processes / stolen CPU |")
     print("|---|---|---|---|---|---|---|---|---|---|---|---|---|")
     speedups = []
     for vol in load(volume_dir, VOLUMES):
         name, b = vol["name"], out_bytes.get(vol["name"], 0)
         res = {}
         for t in (1, 2):
-            j0 = cpu_jiffies()
+            c0 = cpu_state()
             h, hbest, hcpu, sys_ms, faults = hmira(bench, name, t, repeats)
             v, vbest, vcpu, vbytes = vtk_fe(vol, t, repeats)
-            j1 = cpu_jiffies()
-            others = f"{(j1[0] - j0[0]) / max(j1[2] - j0[2], 1):.0%} / {(j1[1] - j0[1]) / max(j1[2] - j0[2], 1):.0%}"
+            disturbed = others(c0, cpu_state())
             touch = b / (fresh_gbs[t] * 1e9) * 1000.0
             res[t] = (h, hbest, hcpu, v, vbest, vcpu, touch)
             print(f"| {name} | {b / 1e6:.1f} | {t} | {h:.1f} / {hbest:.1f} | {hcpu:.1f} | {sys_ms:.1f} | {faults:.0f} | {touch:.1f} | {touch / h:.0%} "
-                  f"| {v:.1f} / {vbest:.1f} | {vcpu:.1f} | {vbytes / 1e6:.1f} | {others} |", flush=True)
+                  f"| {v:.1f} / {vbest:.1f} | {vcpu:.1f} | {vbytes / 1e6:.1f} | {disturbed} |", flush=True)
         (h1, hb1, hc1, v1, vb1, vc1, f1), (h2, hb2, hc2, v2, vb2, vc2, f2) = res[1], res[2]
         # The speed-up if everything else halved, the first touch went at the probe's rates and
         # the caller's munmap of the output (serial, inside the timed loop) did not shrink.
