@@ -1,6 +1,6 @@
 // Memory-bandwidth probe for issue 20: is marching cubes' 1 -> 2 thread speed-up on the large
 // volumes capped by the machine rather than by the algorithm? Measures GB/s with 1 and 2
-// std::threads for the three memory patterns MC has:
+// std::threads for the memory patterns MC has:
 //   read        streaming read (sum) of an already-touched buffer the size of the input volume
 //               (MC's classification pass reads every sample);
 //   fresh write writing a freshly mapped buffer the size of the gyroid 384^3 output, so every
