@@ -22,11 +22,13 @@ out="$build/euler-results.json"
 python3 - "$out" <<'PY'
 import json, sys
 data = json.load(open(sys.argv[1]))
-med = {}
+med, faults = {}, {}
 for b in data["benchmarks"]:
     if b.get("aggregate_name") == "median":
         name = b["run_name"].split("/iterations")[0]
         med[name] = b["cpu_time"]  # milliseconds
+        if "faults" in b:
+            faults[name] = b["faults"]
 print(f"{'benchmark':52s} {'median CPU ms':>14s}  (all rows cold: a fresh mesh per repetition, each operation once)")
 for k in sorted(med):
     print(f"{k:52s} {med[k]:14.1f}")
@@ -46,6 +48,10 @@ print()
 for op in ("make_edge_face_pass", "kill_edge_face_pass", "make_edge_face_repass"):
     ratio(f"{op}/hmira_halfedge_mesh", f"{op}/cgal_native", "1.0")
     ratio(f"{op}/hmira_halfedge_mesh", f"{op}/openmesh_native", "1.0")
+print("\nMinor page faults of each timed pass (median): first touches of memory the build left"
+      " unmapped, about 2.5 us a 4 KiB page on this machine class (bench/marching_cubes' bandwidth_probe).")
+for k in sorted(faults):
+    print(f"{k:52s} {faults[k]:10.0f} faults")
 print("\nmake_kill_edge_vertex natives are edge split + undo (CGAL split_edge/join_vertex,"
       " OpenMesh split_edge/collapse): the closest native pairs that create and delete one"
       " vertex and one edge; neither library hangs a degree-1 vertex inside a face.")
