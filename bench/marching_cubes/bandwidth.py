@@ -17,7 +17,7 @@ import time
 
 import numpy as np
 
-from peers import vtk_image
+from peers import vtk_filter
 
 VOLUMES = ("sphere_384", "gyroid_384")
 
@@ -47,14 +47,7 @@ def hmira(bench, name, threads, repeats):
 def vtk_fe(vol, threads, repeats):
     """Wall ms (median and fastest) and CPU ms (median, all threads) of vtkFlyingEdges3D, and its output's bytes."""
     import vtk
-    vtk.vtkSMPTools.SetBackend("STDThread")
-    vtk.vtkSMPTools.Initialize(threads)
-    f = vtk.vtkFlyingEdges3D()
-    f.SetInputData(vtk_image(vol))
-    f.SetValue(0, vol["iso"])
-    f.ComputeNormalsOff()
-    f.ComputeScalarsOff()
-    f.ComputeGradientsOff()
+    f = vtk_filter(vtk.vtkFlyingEdges3D, vol, threads)
     times, cpu = [], []
     for _ in range(repeats):
         f.Modified()

@@ -11,7 +11,7 @@ import sys
 import tempfile
 import time
 
-from peers import load, vtk_image
+from peers import load, vtk_filter
 
 
 def hmira_cpu_ms(bench, name, threads, repeats):
@@ -24,14 +24,7 @@ def hmira_cpu_ms(bench, name, threads, repeats):
 
 def vtk_cpu_ms(vol, threads, repeats):
     import vtk
-    vtk.vtkSMPTools.SetBackend("STDThread")
-    vtk.vtkSMPTools.Initialize(threads)
-    f = vtk.vtkFlyingEdges3D()
-    f.SetInputData(vtk_image(vol))
-    f.SetValue(0, vol["iso"])
-    f.ComputeNormalsOff()
-    f.ComputeScalarsOff()
-    f.ComputeGradientsOff()
+    f = vtk_filter(vtk.vtkFlyingEdges3D, vol, threads)
     times = []
     for _ in range(repeats):
         f.Modified()

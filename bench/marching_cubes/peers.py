@@ -66,19 +66,25 @@ def vtk_image(vol):
     return img
 
 
-def vtk_run(cls, vol, threads):
+def vtk_filter(cls, vol, threads):
+    """A VTK contour filter of class `cls` on `vol` at its iso value, on `threads` STDThread
+    threads, computing the surface only (no normals, scalars or gradients), as hmira does."""
     import vtk
-    from vtk.util import numpy_support
     vtk.vtkSMPTools.SetBackend("STDThread")
     vtk.vtkSMPTools.Initialize(threads)
-    img = vtk_image(vol)
     f = cls()
-    f.SetInputData(img)
+    f.SetInputData(vtk_image(vol))
     f.SetValue(0, vol["iso"])
     f.ComputeNormalsOff()
     f.ComputeScalarsOff()
     if hasattr(f, "ComputeGradientsOff"):
         f.ComputeGradientsOff()
+    return f
+
+
+def vtk_run(cls, vol, threads):
+    from vtk.util import numpy_support
+    f = vtk_filter(cls, vol, threads)
 
     def run():
         f.Modified()
