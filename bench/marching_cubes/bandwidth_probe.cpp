@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <charconv>
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
@@ -114,14 +115,33 @@ std::string first_line(const char* path) {
     return s.empty() ? "?" : s;
 }
 
+/// The value of option `name`: a whole number in [lo, hi], or a one-line error and exit 2.
+std::size_t count_option(const char* name, const char* text, std::size_t lo, std::size_t hi) {
+    std::size_t v = 0;
+    const char* end = text + std::strlen(text);
+    const auto [p, ec] = std::from_chars(text, end, v);
+    if (ec != std::errc{} || p != end || v < lo || v > hi) {
+        std::fprintf(stderr, "bandwidth_probe: %s takes a whole number from %zu to %zu, not '%s'\n", name, lo, hi, text);
+        std::exit(2);
+    }
+    return v;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
     int reps = 7;
     std::size_t n = 384;
-    for (int a = 1; a + 1 < argc; a += 2) {
-        if (std::strcmp(argv[a], "--reps") == 0) reps = std::max(1, std::atoi(argv[a + 1]));
-        else if (std::strcmp(argv[a], "--n") == 0) n = std::strtoul(argv[a + 1], nullptr, 10);
+    for (int a = 1; a < argc; a += 2) {
+        const bool known = std::strcmp(argv[a], "--reps") == 0 || std::strcmp(argv[a], "--n") == 0;
+        if (!known || a + 1 == argc) {
+            std::fprintf(stderr, "bandwidth_probe: %s '%s' (usage: bandwidth_probe [--reps N] [--n EDGE])\n",
+                         known ? "no value after" : "unknown option", argv[a]);
+            return 2;
+        }
+        // Volumes of n^3 floats and their outputs: 1024^3 is already 4 GiB of input.
+        if (std::strcmp(argv[a], "--reps") == 0) reps = static_cast<int>(count_option("--reps", argv[a + 1], 1, 1000));
+        else n = count_option("--n", argv[a + 1], 8, 1024);
     }
     const mc_output gyroid = measure_output("gyroid", n), sphere = measure_output("sphere", n);
     const std::size_t read_bytes = n * n * n * sizeof(float);

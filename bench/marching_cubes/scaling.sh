@@ -11,6 +11,9 @@ root="$(cd "$(dirname "$0")/../.." && pwd)"
 build="${HMIRA_BENCH_BUILD:-$root/build-bench}"
 reps="${1:-15}"
 volumes="${2:-.*}"
+case "$reps" in
+  ''|*[!0-9]*|0) echo "scaling.sh: repetitions must be a whole number of at least 1, not '$reps'" >&2; exit 2 ;;
+esac
 "$root/scripts/test-data.sh" "$root/build/test-data" > /dev/null
 export HMIRA_TEST_DATA="$root/build/test-data"
 cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DHMIRA_BUILD_BENCHMARKS=ON > /dev/null
@@ -22,6 +25,7 @@ echo "load average before: $(cut -d' ' -f1-3 /proc/loadavg)"
   --benchmark_repetitions="$reps" --benchmark_enable_random_interleaving=true \
   --benchmark_out="$out" --benchmark_out_format=json > /dev/null 2>&1
 echo "load average after: $(cut -d' ' -f1-3 /proc/loadavg)"
+[ -s "$out" ] || { echo "scaling.sh: no benchmark ran (volume regex '$volumes'; the volumes: gyroid_128 sphere_256 torus_256 gyroid_256 sphere_384 torus_384 gyroid_384 skull)" >&2; exit 2; }
 python3 - "$out" "$reps" <<'PY'
 import json, statistics, sys
 from collections import defaultdict
