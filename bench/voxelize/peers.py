@@ -2,8 +2,9 @@
 """Times the peers' voxelization of the meshes bench_voxelize --export wrote, on the same grid
 (origin, spacing, dimensions) where the peer lets us choose it, and prints one table with
 hmira's Google Benchmark results (JSON, median of 5 repetitions) and the peers' (median of 5
-runs) side by side, with the filled-voxel counts. Times are CPU time of the whole process (all
-threads), so that a machine loaded by other work disturbs them less than wall time. hmira's
+runs) side by side, with the filled-voxel counts. Ratios are of CPU time of the whole process
+(all threads), so that a machine loaded by other work disturbs them less than wall time; the
+wall times (medians too) are printed beside them, for the 2-thread rows. hmira's
 conservative and centres modes are both timed against VTK's stencil; hmira's centres grid is
 compared with the stencil (Tolerance 0) voxel for voxel, except voxels whose centre lies within
 1e-9 of the surface.
@@ -25,24 +26,26 @@ import numpy as np
 
 def hmira_ms(bench, name, threads):
     """Runs hmira's Google Benchmark for one case right before its peers, so that both sides
-    see the same machine load; returns the median CPU time (all threads) of 5 repetitions in ms."""
+    see the same machine load; returns the median CPU time (all threads) and the median wall time
+    of 5 repetitions in ms."""
     with tempfile.NamedTemporaryFile(suffix=".json") as out:
         subprocess.run([bench, f"--benchmark_filter=^{name}/{threads}/", f"--benchmark_out={out.name}",
                         "--benchmark_out_format=json", "--benchmark_repetitions=5", "--benchmark_min_time=0.2"],
                        check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
         runs = [b for b in json.load(open(out.name))["benchmarks"] if b.get("aggregate_name") == "median"]
-    return runs[0]["cpu_time"] if runs else float("nan")
+    return (runs[0]["cpu_time"], runs[0]["real_time"]) if runs else (float("nan"), float("nan"))
 
 
 def best_of(fn, repeat):
-    """The median CPU time (process: all threads) of `repeat` runs in ms (the name is
-    historical), and the last output."""
-    times, out = [], None
+    """The median CPU time (process: all threads) and the median wall time of `repeat` runs in
+    ms (the name is historical), and the last output."""
+    times, walls, out = [], [], None
     for _ in range(repeat):
-        t0 = time.process_time()
+        t0, w0 = time.process_time(), time.perf_counter()
         out = fn()
         times.append(time.process_time() - t0)
-    return float(np.median(times)) * 1000.0, out
+        walls.append(time.perf_counter() - w0)
+    return (float(np.median(times)) * 1000.0, float(np.median(walls)) * 1000.0), out
 
 
 def load(mesh_dir):
@@ -92,7 +95,7 @@ def vtk_stencil(v, f, r, threads):
         st.Modified()
         st.Update()
         return st.GetOutput()
-    ms, stencil = best_of(run, 5)
+    ms, stencil = best_of(run, 5)  # (CPU, wall)
     to_img = vtk.vtkImageStencilToImage()
     to_img.SetInputData(stencil)
     to_img.SetInsideValue(1)
@@ -184,7 +187,7 @@ def main():
             h = hmira_ms(bench, f"hmira_voxelize/{r['name']}/{r['res']}", t)
             hc = hmira_ms(bench, f"hmira_voxelize_centres/{r['name']}/{r['res']}", t)
             vms, vcount, vimg = vtk_stencil(v, f, r, t)
-            out.append((r["name"], r["res"], t, hc, "centres vs vtkPolyDataToImageStencil", vms, hc / vms, "centres",
+            out.append((r["name"], r["res"], t, hc, "centres vs vtkPolyDataToImageStencil", vms, hc[0] / vms[0], "centres",
                         r["hmira_centres"], vcount))
             if t == threads[0]:
                 exact.append((r["name"], r["res"], r["hmira_centres"], vcount) +
@@ -195,19 +198,21 @@ def main():
                     peers.append(("trimesh voxelized.fill", "solid", r["hmira_solid"], trimesh_fill(v, f, r)))
                 peers.append(("Open3D VoxelGrid", "surface", r["hmira_surface"], open3d_surface(v, f, r)))
             for peer, kind, hcount, (ms, count) in peers:
-                out.append((r["name"], r["res"], t, h, peer, ms, h / ms, kind, hcount, count))
+                out.append((r["name"], r["res"], t, h, peer, ms, h[0] / ms[0], kind, hcount, count))
             print(f"# done {r['name']} {r['res']} threads={t}", file=sys.stderr, flush=True)
-    hdr = ("mesh", "res", "thr", "hmira CPU ms", "peer", "peer CPU ms", "hmira/peer", "counted", "hmira voxels", "peer voxels")
+    hdr = ("mesh", "res", "thr", "hmira CPU ms", "peer", "peer CPU ms", "hmira/peer (CPU)", "hmira wall ms", "peer wall ms",
+           "hmira/peer (wall)", "counted", "hmira voxels", "peer voxels")
     if baseline:
         hdr += ("baseline CPU ms", "baseline/peer")
     print("| " + " | ".join(hdr) + " |")
     print("|" + "---|" * len(hdr))
     for row in out:
         name, res, t, h, peer, ms, ratio, kind, hc, pc = row
-        line = f"| {name} | {res} | {t} | {h:.2f} | {peer} | {ms:.2f} | {ratio:.2f} | {kind} | {hc} | {pc} |"
+        line = (f"| {name} | {res} | {t} | {h[0]:.2f} | {peer} | {ms[0]:.2f} | {ratio:.2f} | {h[1]:.2f} | {ms[1]:.2f} | "
+                f"{h[1] / ms[1]:.2f} | {kind} | {hc} | {pc} |")
         if baseline:
-            b = before.get((name, res, t, "centres" if kind == "centres" else "solid"), float("nan"))
-            line += f" {b:.2f} | {b / ms:.2f} |"
+            b = before.get((name, res, t, "centres" if kind == "centres" else "solid"), (float("nan"),))[0]
+            line += f" {b:.2f} | {b / ms[0]:.2f} |"
         print(line)
     print()
     print("| mesh | res | hmira centres voxels | VTK stencil voxels | voxels that differ | of those, centre > 1e-9 "

@@ -9,6 +9,8 @@
 #include <utility>
 #include <vector>
 
+#include "huge_pages.hpp"
+
 namespace hmira {
 
 /// std::allocator, except that constructing an element without arguments does nothing: the
@@ -31,6 +33,14 @@ struct uninitialized_allocator : std::allocator<T> {
     template <class U>
     constexpr uninitialized_allocator(const uninitialized_allocator<U>&) noexcept {}
     ///@}
+
+    /// Room for n elements; a large block is advised to be backed by huge pages, since the
+    /// arrays held in it are outputs that are filled whole (see huge_pages.hpp).
+    T* allocate(std::size_t n) {
+        T* p = std::allocator<T>::allocate(n);
+        detail::advise_huge_pages(p, n * sizeof(T));
+        return p;
+    }
 
     /// Leaves `*p` unwritten.
     template <class U>

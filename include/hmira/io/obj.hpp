@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "../concepts.hpp"
+#include "../core/huge_pages.hpp"
 #include "../core/result.hpp"
 #include "detail/face_loops.hpp"
 #include "detail/files.hpp"
@@ -55,9 +56,9 @@ inline result<polygon_soup> parse_obj(std::string_view text, const std::string& 
     long long max_index = -1;                    // largest resolved positive index, for a late check
     std::size_t max_index_line = 0;
     long long max_index_raw = 0;
-    soup.points.reserve(text.size() / 64);
-    soup.indices.reserve(text.size() / 16);
-    soup.face_offsets.reserve(text.size() / 48);
+    hmira::detail::reserve_huge(soup.points, text.size() / 64);
+    hmira::detail::reserve_huge(soup.indices, text.size() / 16);
+    hmira::detail::reserve_huge(soup.face_offsets, text.size() / 48);
     while (true) {
         c.skip_blanks();
         if (c.at_end()) break;

@@ -12,6 +12,7 @@
 #include <string_view>
 
 #include "../concepts.hpp"
+#include "../core/huge_pages.hpp"
 #include "../core/result.hpp"
 #include "detail/face_loops.hpp"
 #include "detail/files.hpp"
@@ -58,8 +59,8 @@ inline result<polygon_soup> parse_off(std::string_view text, const std::string& 
     if (!c.at_line_end('#') && !c.number(ne)) return fail(errc::parse_error, where() + ": edge count: " + detail::describe_bad_number(c));
     if (nv > static_cast<long long>(UINT32_MAX) - 1) return fail(errc::parse_error, where() + ": vertex count " + std::to_string(nv) + " is too large");
     // Counts may be absurd in a broken file: reserve no more than the text could hold.
-    soup.points.reserve(static_cast<std::size_t>(std::min<long long>(nv, static_cast<long long>(text.size() / 6 + 1))));
-    soup.face_offsets.reserve(static_cast<std::size_t>(std::min<long long>(nf, static_cast<long long>(text.size() / 8 + 1))) + 1);
+    hmira::detail::reserve_huge(soup.points, static_cast<std::size_t>(std::min<long long>(nv, static_cast<long long>(text.size() / 6 + 1))));
+    hmira::detail::reserve_huge(soup.face_offsets, static_cast<std::size_t>(std::min<long long>(nf, static_cast<long long>(text.size() / 8 + 1))) + 1);
     if (has_normals) soup.attributes.normals.reserve(soup.points.capacity());
     if (has_colors) soup.attributes.colors.reserve(soup.points.capacity());
     c.next_line();

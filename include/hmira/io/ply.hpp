@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "../concepts.hpp"
+#include "../core/huge_pages.hpp"
 #include "../core/result.hpp"
 #include "detail/face_loops.hpp"
 #include "detail/files.hpp"
@@ -328,7 +329,7 @@ result<void> ply_read_binary(const ply_header& h, Soup& soup, ply_binary_reader&
             // Appended into reserved room rather than resized and overwritten: no pass that
             // zeroes the positions first.
             soup.points.clear();
-            soup.points.reserve(n);
+            hmira::detail::reserve_huge(soup.points, n);
             const char* base = data + r.pos;
             const bool float_xyz = type(l.xyz[0]) == ply_type::f32 && type(l.xyz[1]) == ply_type::f32 && type(l.xyz[2]) == ply_type::f32;
             if (float_xyz) {
@@ -379,8 +380,8 @@ result<void> ply_read_binary(const ply_header& h, Soup& soup, ply_binary_reader&
             const auto& lp = e.props[static_cast<std::size_t>(std::max(list, 0))];
             if (list >= 0 && !ply_is_integer(lp.type))
                 return fail(errc::parse_error, r.name + ":" + std::to_string(e.line) + ": vertex_indices must have an integer type");
-            soup.face_offsets.reserve(static_cast<std::size_t>(std::min<std::uint64_t>(e.count, r.left())) + 1);
-            soup.indices.reserve(static_cast<std::size_t>(std::min<std::uint64_t>(e.count * 3, r.left())));
+            hmira::detail::reserve_huge(soup.face_offsets, static_cast<std::size_t>(std::min<std::uint64_t>(e.count, r.left())) + 1);
+            hmira::detail::reserve_huge(soup.indices, static_cast<std::size_t>(std::min<std::uint64_t>(e.count * 3, r.left())));
             const bool fast = e.props.size() == 1 && lp.count_type == ply_type::u8 && (lp.type == ply_type::i32 || lp.type == ply_type::u32);
             for (std::uint64_t f = 0; f < e.count; ++f) {
                 if (fast) {
@@ -485,7 +486,7 @@ result<void> ply_read_ascii(const ply_header& h, Soup& soup, std::string_view te
             if (e.count > 0 && (l.xyz[0] < 0 || l.xyz[1] < 0 || l.xyz[2] < 0))
                 return fail(errc::parse_error, name + ":" + std::to_string(e.line) + ": the vertex element has no x, y and z properties");
             if (auto r = ply_check_vertex_scalars(e, l, name); !r) return r.error();
-            soup.points.reserve(static_cast<std::size_t>(std::min<std::uint64_t>(e.count, text.size() / 6 + 1)));
+            hmira::detail::reserve_huge(soup.points, static_cast<std::size_t>(std::min<std::uint64_t>(e.count, text.size() / 6 + 1)));
         }
         if (is_face) {
             list = ply_face_list(e);

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "../concepts.hpp"
+#include "../core/huge_pages.hpp"
 #include "../core/result.hpp"
 #include "detail/face_loops.hpp"
 #include "detail/files.hpp"
@@ -88,8 +89,8 @@ private:
 /// Collects triangles, welding or not, and drops those whose corners weld together.
 struct stl_builder {
     stl_builder(bool weld, std::size_t triangles) : welder(weld ? triangles / 2 + 16 : 0), weld(weld) {
-        soup.indices.reserve(3 * triangles);
-        soup.face_offsets.reserve(triangles + 1);
+        hmira::detail::reserve_huge(soup.indices, 3 * triangles);
+        hmira::detail::reserve_huge(soup.face_offsets, triangles + 1);
         if (!weld) loose.reserve(3 * triangles);
     }
     void add(const std::array<std::array<float, 3>, 3>& t) {

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "../concepts.hpp"
+#include "../core/huge_pages.hpp"
 #include "../core/result.hpp"
 #include "../core/vec3.hpp"
 #include "../traits.hpp"
@@ -141,10 +142,10 @@ public:
         // Filled by push_back into reserved room, not sized up front: zeroing the arrays first
         // would write every fresh page twice (issue 20).
         std::vector<vertex_handle> corners;
-        corners.reserve(corner_indices.size());
+        detail::reserve_huge(corners, corner_indices.size());
         for (const auto i : corner_indices) corners.push_back(vertex_handle(i));
         std::vector<point> positions;
-        positions.reserve(points.size());
+        detail::reserve_huge(positions, points.size());
         for (const auto& p : points)
             positions.push_back(point{static_cast<Scalar>(p[0]), static_cast<Scalar>(p[1]), static_cast<Scalar>(p[2])});
         return assign(std::move(positions), std::move(face_offsets), std::move(corners));
@@ -273,11 +274,11 @@ public:
 
     /// Reserves storage for that many vertices, faces and face corners.
     void reserve(std::size_t vertices, std::size_t faces, std::size_t corners) {
-        positions_.reserve(vertices);
+        detail::reserve_huge(positions_, vertices);
         vertex_deleted_.reserve(vertices);
-        face_begin_.reserve(faces + 1);
+        detail::reserve_huge(face_begin_, faces + 1);
         face_deleted_.reserve(faces);
-        corners_.reserve(corners);
+        detail::reserve_huge(corners_, corners);
     }
 
     /// Removes everything, properties included.

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "../concepts.hpp"
+#include "../core/huge_pages.hpp"
 #include "../core/result.hpp"
 #include "../core/vec3.hpp"
 #include "../traits.hpp"
@@ -418,7 +419,11 @@ private:
 
         // Corners counted by source vertex; a corner's target is the next corner's vertex, read
         // from the face when needed rather than stored (less memory to fault in).
-        std::vector<u32> stamp(nv, none), out_begin(nv + 1, 0);
+        std::vector<u32> stamp, out_begin;
+        detail::reserve_huge(stamp, nv);
+        detail::reserve_huge(out_begin, nv + 1);
+        stamp.assign(nv, none);
+        out_begin.assign(nv + 1, 0);
         for (std::size_t f = 0; f < nf; ++f) {
             // An offset past the end is refused before any corner is read (a decrease is caught
             // one face later, too late for a face that runs past the end).
@@ -880,7 +885,7 @@ public:
         free_vertices_.ensure_room(vertices);
         free_edges_.ensure_room(edges);
         free_faces_.ensure_room(faces);
-        positions_.reserve(vertices);
+        detail::reserve_huge(positions_, vertices);
         vertex_out_.reserve(vertices);
         vertex_deleted_.ensure(vertices);
         halfedges_.reserve(2 * edges);

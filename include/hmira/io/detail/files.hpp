@@ -23,6 +23,7 @@
 #include <system_error>
 #include <utility>
 
+#include "../../core/huge_pages.hpp"
 #include "../../core/result.hpp"
 #include "atomic_write.hpp"
 
@@ -65,6 +66,7 @@ public:
         if (!p) return false;
         data_ = static_cast<char*>(p);
         capacity_ = n;
+        hmira::detail::advise_huge_pages(data_, capacity_);  // read(2) fills it next: fewer page faults
         return true;
     }
     /// Declares the first `n` <= capacity() bytes written.

@@ -14,6 +14,8 @@
 #include <utility>
 #include <vector>
 
+#include "../../core/huge_pages.hpp"
+
 namespace hmira::detail {
 
 /// The deleted slots of one element kind, last freed first. The owning mesh keeps capacity() at
@@ -40,7 +42,7 @@ public:
     /// Room for a bound of n slots, grown geometrically; may throw, so call it before changing
     /// the mesh. Untouched until slots are freed (the pages of a large reservation stay unmapped).
     void ensure_room(std::size_t n) {
-        if (slots_.capacity() < n) slots_.reserve(std::max<std::size_t>({n, 2 * slots_.capacity(), 16}));
+        if (slots_.capacity() < n) reserve_huge(slots_, std::max<std::size_t>({n, 2 * slots_.capacity(), 16}));
     }
     /// Frees slot i. Never allocates while the room covers the bound; a slot that finds no room
     /// (a bound grown behind the mesh's back) is simply not reused until collect_garbage.
