@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Builds subdivision_bench and runs it twice, printing each run's ratio tables (CPU, user and
 # system time, medians):
-#   1. as built: every case, hmira and the peers, on 4 KiB pages;
+#   1. as built: every case; hmira's large arrays ask for huge pages themselves (madvise, see
+#      include/hmira/core/huge_pages.hpp), the peers' use 4 KiB pages;
 #   2. with glibc's transparent-huge-page tunable (GLIBC_TUNABLES=glibc.malloc.hugetlb=1), which
 #      makes malloc madvise(MADV_HUGEPAGE) its large chunks: hmira and the peers alike, in one
 #      process, so the comparison stays like-for-like. It measures what huge pages would save on
@@ -40,7 +41,7 @@ cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DHMIRA_BUILD_B
 cmake --build "$build" --target subdivision_bench -j2
 bench="$build/bench/subdivision/subdivision_bench"
 echo "transparent_hugepage/enabled: $(cat /sys/kernel/mm/transparent_hugepage/enabled 2>/dev/null || echo unknown)"
-echo "== 4 KiB pages (as built) =="
+echo "== as built (hmira advises huge pages for its large arrays; the peers use 4 KiB pages) =="
 echo "load average before: $(cut -d' ' -f1-3 /proc/loadavg)"
 "$bench" --benchmark_filter="$filter" --benchmark_repetitions="$reps" --benchmark_enable_random_interleaving="$interleave" | sed -n '/^Median/,$p'
 echo "load average after: $(cut -d' ' -f1-3 /proc/loadavg)"

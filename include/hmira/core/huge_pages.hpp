@@ -13,26 +13,36 @@
 #include <cstddef>
 #include <cstdint>
 
-#if !defined(HMIRA_NO_HUGE_PAGES) && __has_include(<sys/mman.h>)
+#if !defined(HMIRA_NO_HUGE_PAGES) && __has_include(<sys/mman.h>) && __has_include(<unistd.h>)
 #include <sys/mman.h>
+#include <unistd.h>
 #endif
 
 namespace hmira::detail {
 
 /// Blocks smaller than this are left alone.
 inline constexpr std::size_t huge_page_min_bytes = std::size_t{4} << 20;
-/// The transparent huge page size the hint aligns to (x86-64 and arm64 with 4 KiB pages).
+/// The transparent huge page size (x86-64, and arm64 with 4 KiB pages).
 inline constexpr std::size_t huge_page_bytes = std::size_t{2} << 20;
 
-/// Asks that the whole 2 MiB pages inside [p, p + bytes) be huge pages when first touched.
-/// Touched memory keeps its contents. O(1) (one madvise call); never fails.
+/// Asks that the block [p, p + bytes) be backed by huge pages where it covers whole 2 MiB
+/// pages, when first touched. Touched memory keeps its contents. O(1) (one madvise call);
+/// never fails.
+///
+/// The advice covers every page the block touches, not only its whole 2 MiB pages: advice on
+/// part of a mapping splits it in three, and glibc's realloc can then no longer move a large
+/// block with one mremap (the range must lie in one mapping), so it copied it instead
+/// (trivial_array's growth, measured 2.4x slower in bench/subdivision's reserve case).
 inline void advise_huge_pages([[maybe_unused]] const void* p, [[maybe_unused]] std::size_t bytes) noexcept {
-#if !defined(HMIRA_NO_HUGE_PAGES) && __has_include(<sys/mman.h>) && defined(MADV_HUGEPAGE)
+#if !defined(HMIRA_NO_HUGE_PAGES) && __has_include(<sys/mman.h>) && __has_include(<unistd.h>) && defined(MADV_HUGEPAGE)
     if (p == nullptr || bytes < huge_page_min_bytes) return;
+    static const long page_size = ::sysconf(_SC_PAGESIZE);
+    if (page_size <= 0) return;
+    const auto page = static_cast<std::uintptr_t>(page_size);
     const auto begin = reinterpret_cast<std::uintptr_t>(p);
-    const std::uintptr_t first = (begin + huge_page_bytes - 1) & ~(std::uintptr_t{huge_page_bytes} - 1);
-    const std::uintptr_t last = (begin + bytes) & ~(std::uintptr_t{huge_page_bytes} - 1);
-    if (last > first) static_cast<void>(::madvise(reinterpret_cast<void*>(first), last - first, MADV_HUGEPAGE));
+    const std::uintptr_t first = begin / page * page;
+    const std::uintptr_t last = (begin + bytes + page - 1) / page * page;
+    static_cast<void>(::madvise(reinterpret_cast<void*>(first), last - first, MADV_HUGEPAGE));
 #endif
 }
 
