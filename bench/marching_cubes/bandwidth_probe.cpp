@@ -9,7 +9,12 @@
 //   touched write the same stores into a buffer whose pages are already mapped;
 //   fresh write, huge pages  as fresh write, with madvise(MADV_HUGEPAGE) (2 MB pages, where
 //               THP is enabled): what an output allocator asking for huge pages would pay;
-// and the serial munmap of the fresh output (MC's caller frees it on one thread).
+// and the serial munmap of the fresh output (MC's caller frees it on one thread). Two controls
+// that touch no main memory tell the machine's own 1 -> 2 thread ceiling apart from memory:
+//   compute     a register-only integer loop (no loads or stores);
+//   cached read the read pattern over a 256 KiB buffer per thread, in each core's L2.
+// If these also fall short of 2x, the two vCPUs are not two idle cores (a shared host core or
+// a busy neighbour), and no code change reaches 2x here.
 // The output sizes are measured: hmira's MC (serial here, no TBB) on the benchmark's gyroid
 // and sphere at 384^3, bytes = 12 per vertex (vec3<float>) + 12 per triangle (3 x uint32).
 // usage: bandwidth_probe [--reps N] [--n SIDE]   (medians of N repetitions, default 7)
@@ -84,6 +89,17 @@ void read_words(const std::uint64_t* p, std::size_t b, std::size_t e) {
     std::uint64_t s = 0;
     for (std::size_t i = b; i < e; ++i) s += p[i];
     sink += s;
+}
+
+// A serial chain of multiply-adds per thread: no memory traffic, so its 2/1 speed-up is the
+// machine's compute ceiling. `steps` iterations over [b, e) of a split.
+void compute_steps(std::size_t b, std::size_t e) {
+    std::uint64_t x = b | 1, y = e | 3;
+    for (std::size_t i = b; i < e; ++i) {
+        x = x * 6364136223846793005ull + 1442695040888963407ull;
+        y ^= x >> 29;
+    }
+    sink += x + y;
 }
 
 struct pattern_result {
@@ -187,6 +203,31 @@ int main(int argc, char** argv) {
         munmap(in, read_bytes);
         munmap(out, write_bytes);
     }
+    // Controls: compute (no memory) and a read that stays in each core's L2 (256 KiB a thread,
+    // read 256 times), in G steps/s and GB/s.
+    pattern_result compute, cached;
+    const std::size_t compute_steps_total = std::size_t(1) << 28;
+    const std::size_t cached_words = 256 * 1024 / 8, cached_passes = 256;
+    {
+        std::vector<std::uint64_t> buf(2 * cached_words, 1);
+        for (unsigned t = 1; t <= 2; ++t) {
+            std::vector<double> c, r;
+            for (int rep = 0; rep < reps; ++rep) {
+                c.push_back(split_run(compute_steps_total, t, compute_steps));
+                r.push_back(split_run(cached_passes * t, t, [&](std::size_t b, std::size_t e) {
+                    // each thread reads its own 256 KiB block, (e - b) times
+                    const std::uint64_t* mine = buf.data() + (b / cached_passes) * cached_words;
+                    for (std::size_t pass = b; pass < e; ++pass) read_words(mine, 0, cached_words);
+                }));
+            }
+            compute.gbs[t - 1] = double(compute_steps_total) / median(c) / 1e9;
+            compute.best[t - 1] = double(compute_steps_total) / fastest(c) / 1e9;
+            // 2 threads read twice the bytes (each its own block cached_passes times)
+            const double bytes = double(cached_passes * t * cached_words * 8);
+            cached.gbs[t - 1] = bytes / median(r) / 1e9;
+            cached.best[t - 1] = bytes / fastest(r) / 1e9;
+        }
+    }
     std::printf("| pattern | MB | 1 thread GB/s | 2 threads GB/s | 2/1 speed-up | 2/1 of the fastest runs |\n|---|---|---|---|---|---|\n");
     const auto row = [](const char* name, std::size_t bytes, const pattern_result& p) {
         std::printf("| %s | %.0f | %.2f | %.2f | %.2f | %.2f |\n", name, double(bytes) / 1e6, p.gbs[0], p.gbs[1], p.gbs[1] / p.gbs[0],
@@ -196,6 +237,9 @@ int main(int argc, char** argv) {
     row("fresh write (first touch)", write_bytes, fresh);
     row("touched write", write_bytes, touched);
     row("fresh write, huge pages", write_bytes, huge);
+    row("control: cached read (256 KiB a thread, L2)", 256 * 1024, cached);
+    std::printf("| control: compute, no memory (G steps/s) | 0 | %.2f | %.2f | %.2f | %.2f |\n", compute.gbs[0], compute.gbs[1],
+                compute.gbs[1] / compute.gbs[0], compute.best[1] / compute.best[0]);
     std::printf("munmap of the fresh output (serial): %.1f ms\n", unmap_ms);
     return 0;
 }
