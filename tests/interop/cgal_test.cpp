@@ -4,7 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <ranges>
 #include <set>
+#include <string>
 #include <vector>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -16,6 +18,7 @@
 #include <hmira/algorithms/generators/platonic_solids.hpp>
 #include <hmira/algorithms/orientation/flip_normals.hpp>
 #include <hmira/algorithms/topology/mesh_topology.hpp>
+#include <hmira/algorithms/validation/validate.hpp>
 #include <hmira/interop/cgal.hpp>
 
 #include "support/checks.hpp"
@@ -97,6 +100,37 @@ TYPED_TEST(cgal_interop, hmira_adjacency_equals_cgal_circulators_as_multisets) {
             EXPECT_EQ(mf, tf);
         }
     }
+}
+
+// hmira's rings on Surface_mesh step like CGAL's circulators, without a step guard, so a face
+// loop whose next links never return to its start is endless: validate must stop and say so.
+TYPED_TEST(cgal_interop, validate_reports_a_face_loop_that_never_closes_instead_of_following_it) {
+    using M = TypeParam;
+    M m = native_grid<M>(2, 2);
+    const auto f = *m.faces().begin();
+    const auto h1 = m.next(m.halfedge(f));
+    m.set_next(h1, h1);  // the loop from f's halfedge now cycles at h1 for ever
+    const auto problems = hmira::validate(m);
+    const bool named = std::any_of(problems.begin(), problems.end(), [&](const hmira::mesh_problem& p) {
+        return p.kind == hmira::problem_kind::broken_link && p.message.find("face " + std::to_string(f.idx()) + ": its loop does not return") == 0;
+    });
+    EXPECT_TRUE(named) << "problems found: " << problems.size();
+}
+
+TYPED_TEST(cgal_interop, rings_of_an_isolated_vertex_are_empty_and_rings_close_after_one_lap) {
+    using M = TypeParam;
+    using T = hmira::mesh_traits<M>;
+    M m = native_grid<M>(1, 1);
+    const auto lone = m.add_vertex(typename M::Point(5, 5, 5));
+    EXPECT_TRUE(std::ranges::empty(T::adjacent_vertices(m, lone)));
+    EXPECT_EQ(std::ranges::distance(T::vertex_edges(m, lone)), 0);
+    // Corner 0 of the single quad: two neighbours, each once; the face: four corners.
+    const auto corner = *m.vertices().begin();
+    std::vector<typename M::Vertex_index> ring;
+    for (auto w : T::adjacent_vertices(m, corner)) ring.push_back(w);
+    ASSERT_EQ(ring.size(), 2u);
+    EXPECT_NE(ring[0], ring[1]);
+    EXPECT_EQ(std::ranges::distance(T::face_vertices(m, *m.faces().begin())), 4);
 }
 
 TYPED_TEST(cgal_interop, a_refused_face_is_an_error_and_leaves_the_mesh_unchanged) {

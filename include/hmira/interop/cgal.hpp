@@ -97,6 +97,8 @@ struct steps {
 /// the links already allow it). erase_* call Surface_mesh's remove_*, which marks the element
 /// removed and reuses one of its links for CGAL's free list: read an element before erasing it.
 /// Not change-counted: Surface_mesh keeps no counter and has no mesh-wide property to hold one.
+/// Rings (face_vertices, adjacent_vertices, vertex_edges) trust the links as CGAL's circulators
+/// do, with no step guard: check a mesh of unknown origin with hmira::validate, which bounds its walks.
 template <class P>
 struct mesh_traits<CGAL::Surface_mesh<P>> {
     using mesh = CGAL::Surface_mesh<P>;
@@ -112,6 +114,9 @@ struct mesh_traits<CGAL::Surface_mesh<P>> {
     using S = cgal_detail::steps<mesh>;
     template <class Policy>
     using loop = detail::loop_range<mesh, HH, Policy>;
+    // Rings trust Surface_mesh's links as its circulators do (detail::lap_range: no step guard).
+    template <class Policy>
+    using ring = detail::lap_range<mesh, HH, Policy>;
 
     // ----- whole structure ----------------------------------------------------------------------
     static cgal_detail::element_range<mesh, VH> vertices(const mesh& m) { return {m, m.num_vertices()}; }
@@ -148,15 +153,15 @@ struct mesh_traits<CGAL::Surface_mesh<P>> {
     static HH null_halfedge() { return mesh::null_halfedge(); }
 
     // ----- local getters at thesis cost -----------------------------------------------------------
-    static loop<typename S::loop_vertex> face_vertices(const mesh& m, FH f) { return {m, m.halfedge(f)}; }
+    static ring<typename S::loop_vertex> face_vertices(const mesh& m, FH f) { return {m, m.halfedge(f)}; }
     // A full turn around v may start at any outgoing halfedge: the opposite of the stored
     // incoming one costs no memory access (vertex_halfedge would read its face).
     static HH any_outgoing(const mesh& m, VH v) {
         const HH in = m.halfedge(v);
         return in == mesh::null_halfedge() ? in : m.opposite(in);
     }
-    static loop<typename S::outgoing_target> adjacent_vertices(const mesh& m, VH v) { return {m, any_outgoing(m, v)}; }
-    static loop<typename S::outgoing_edge> vertex_edges(const mesh& m, VH v) { return {m, any_outgoing(m, v)}; }
+    static ring<typename S::outgoing_target> adjacent_vertices(const mesh& m, VH v) { return {m, any_outgoing(m, v)}; }
+    static ring<typename S::outgoing_edge> vertex_edges(const mesh& m, VH v) { return {m, any_outgoing(m, v)}; }
     static auto vertex_faces(const mesh& m, VH v) {
         return loop<typename S::outgoing_halfedge>(m, any_outgoing(m, v)) |
                std::views::filter([&m](HH h) { return m.face(h) != mesh::null_face(); }) |

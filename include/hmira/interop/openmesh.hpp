@@ -96,50 +96,6 @@ struct loop_halfedge : loop_step<Mesh> {
     static HH value(const Mesh&, HH h) { return h; }
 };
 
-/// A closed loop of OpenMesh halfedges from `start`, stepping with Policy::step until back at
-/// start and yielding Policy::value of each; empty if start is invalid. The position is the
-/// halfedge and a lap count, the end being (start, lap 1), as in OpenMesh's own circulators:
-/// ++ only tests the new halfedge against start, and the compiler folds the end test into that
-/// one comparison. hmira's shared loop_range counts steps against a guard besides, and on
-/// OpenMesh's handles that guard kept rings through these traits at 1.1-1.2x OpenMesh's
-/// vv_range (1.05-1.15x when loop_range also ended at the null cursor). Like OpenMesh's
-/// circulators it has no step guard: corrupt links that never return to start loop for ever
-/// here, as they do in OpenMesh.
-template <class Mesh, class Policy>
-class lap_range : public std::ranges::view_base {
-public:
-    class iterator {
-    public:
-        using value_type = std::remove_cvref_t<decltype(Policy::value(std::declval<const Mesh&>(), HH{}))>;
-        using difference_type = std::ptrdiff_t;
-        using iterator_concept = std::forward_iterator_tag;
-        iterator() = default;
-        iterator(const Mesh* m, HH start, HH cur, int lap) : m_(m), start_(start), cur_(cur), lap_(lap) {}
-        value_type operator*() const { return Policy::value(*m_, cur_); }
-        iterator& operator++() {
-            cur_ = Policy::step(*m_, cur_);
-            if (cur_ == start_) ++lap_;
-            return *this;
-        }
-        iterator operator++(int) { auto t = *this; ++*this; return t; }
-        friend bool operator==(const iterator& a, const iterator& b) noexcept { return a.lap_ == b.lap_ && a.cur_ == b.cur_; }
-    private:
-        const Mesh* m_ = nullptr;
-        HH start_{}, cur_{};
-        int lap_ = 0;
-    };
-    lap_range() = default;
-    lap_range(const Mesh& m, HH start) : m_(&m), start_(start) {}
-    iterator begin() const { return iterator(m_, start_, start_, start_.is_valid() ? 0 : 1); }
-    iterator end() const { return iterator(m_, start_, start_, 1); }
-    bool empty() const { return !start_.is_valid(); }
-    explicit operator bool() const { return !empty(); }
-    auto front() const { return *begin(); }
-private:
-    const Mesh* m_ = nullptr;
-    HH start_{};
-};
-
 /// The traits shared by OpenMesh's polygon and triangle meshes.
 template <class Mesh>
 struct traits_base {
@@ -151,8 +107,9 @@ struct traits_base {
     using scalar = typename Mesh::Scalar;
     template <class Policy>
     using loop = detail::loop_range<Mesh, HH, Policy>;
+    // Rings trust OpenMesh's links as its circulators do (detail::lap_range: no step guard).
     template <class Policy>
-    using ring = lap_range<Mesh, Policy>;
+    using ring = detail::lap_range<Mesh, HH, Policy>;
 
     // ----- whole structure: O(V_all), O(F_all), O(E_all) ---------------------------------
     static element_range<Mesh, VH> vertices(const Mesh& m) { return {m, static_cast<int>(m.n_vertices()), m.has_vertex_status()}; }
@@ -369,10 +326,3 @@ struct mesh_traits<OpenMesh::TriMesh_ArrayKernelT<Traits>> : openmesh_detail::tr
 };
 
 }  // namespace hmira
-
-/// \cond
-// A lap_range only refers to the mesh, so iterators obtained from a temporary range stay valid.
-// (Hidden from Doxygen, which takes this std specialisation for an undeclared hmira symbol.)
-template <class Mesh, class Policy>
-inline constexpr bool std::ranges::enable_borrowed_range<hmira::openmesh_detail::lap_range<Mesh, Policy>> = true;
-/// \endcond

@@ -144,6 +144,50 @@ private:
     Cursor start_{};
 };
 
+/// A closed loop of a user's mesh (CGAL, OpenMesh) from `start`, stepping with Policy::step
+/// until back at start and yielding Policy::value of each; empty if start is the null cursor.
+/// The position is the cursor and a lap count, the end being (start, lap 1), as in those
+/// libraries' own circulators: ++ only tests the new cursor against start, and the compiler
+/// folds the end test into that one comparison. Unlike loop_range it has no step guard, as
+/// their circulators have none: on their handles the guard kept rings at 1.05-1.2x the native
+/// circulation (measured: OpenMesh vv_range 1.1-1.2x; CGAL vertices_around_target 1.02-1.11x,
+/// 0.91x without the guard). Corrupt links that never return to start loop for ever here, as
+/// they do in the library's own code; hmira::validate stops on such a loop and names it.
+template <class Mesh, class Cursor, class Policy>
+class lap_range : public std::ranges::view_base {
+public:
+    class iterator {
+    public:
+        using value_type = std::remove_cvref_t<decltype(Policy::value(std::declval<const Mesh&>(), Cursor{}))>;
+        using difference_type = std::ptrdiff_t;
+        using iterator_concept = std::forward_iterator_tag;
+        iterator() = default;
+        iterator(const Mesh* m, Cursor start, Cursor cur, int lap) : m_(m), start_(start), cur_(cur), lap_(lap) {}
+        value_type operator*() const { return Policy::value(*m_, cur_); }
+        iterator& operator++() {
+            cur_ = Policy::step(*m_, cur_);
+            if (cur_ == start_) ++lap_;
+            return *this;
+        }
+        iterator operator++(int) { auto t = *this; ++*this; return t; }
+        friend bool operator==(const iterator& a, const iterator& b) noexcept { return a.lap_ == b.lap_ && a.cur_ == b.cur_; }
+    private:
+        const Mesh* m_ = nullptr;
+        Cursor start_{}, cur_{};
+        int lap_ = 0;
+    };
+    lap_range() = default;
+    lap_range(const Mesh& m, Cursor start) : m_(&m), start_(start) {}
+    iterator begin() const { return iterator(m_, start_, start_, start_ == Cursor{} ? 1 : 0); }
+    iterator end() const { return iterator(m_, start_, start_, 1); }
+    bool empty() const { return start_ == Cursor{}; }
+    explicit operator bool() const { return !empty(); }
+    auto front() const { return *begin(); }
+private:
+    const Mesh* m_ = nullptr;
+    Cursor start_{};
+};
+
 }  // namespace hmira::detail
 
 // Both ranges only refer to the mesh, so iterators obtained from a temporary range stay valid.
@@ -151,3 +195,5 @@ template <class Handle, unsigned Shift>
 inline constexpr bool std::ranges::enable_borrowed_range<hmira::detail::element_range<Handle, Shift>> = true;
 template <class Mesh, class Cursor, class Policy>
 inline constexpr bool std::ranges::enable_borrowed_range<hmira::detail::loop_range<Mesh, Cursor, Policy>> = true;
+template <class Mesh, class Cursor, class Policy>
+inline constexpr bool std::ranges::enable_borrowed_range<hmira::detail::lap_range<Mesh, Cursor, Policy>> = true;
