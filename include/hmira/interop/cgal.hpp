@@ -246,18 +246,20 @@ struct mesh_traits<CGAL::Surface_mesh<P>> {
     }
 
     /// Optional (not a concept requirement): reverses every face, as flip_normals does through
-    /// the raw mutators, in one pass over the edges with one scratch index per halfedge. The
-    /// generic pass costs Surface_mesh 1.6x its own loop: it reads each vertex's halfedge as
-    /// outgoing and writes it back as incoming (set_vertex_halfedge), three dependent reads of
-    /// scattered halfedges per vertex, where Surface_mesh's convention needs one. Here the
-    /// stored incoming halfedge becomes its opposite (a border one: the old border successor,
-    /// which now enters the vertex). Removed elements keep their free-list links.
+    /// the raw mutators, in one pass over the edges: each edge's two halfedges swap targets and
+    /// each halfedge swaps its own next and prev in place (Surface_mesh's set_next_only and
+    /// set_prev_only, public members its documentation files as internals), with no scratch
+    /// memory. The generic pass costs Surface_mesh 1.6x its own loop: it reads each vertex's
+    /// halfedge as outgoing and writes it back as incoming (set_vertex_halfedge), three dependent
+    /// reads of scattered halfedges per vertex, where Surface_mesh's convention needs one; an
+    /// earlier one pass through set_next, which also writes the next's prev, needed a scratch
+    /// copy of every prev (1.13-1.21x CGAL's reverse_face_orientations). Here the stored
+    /// incoming halfedge becomes its opposite (a border one: the old border successor, which
+    /// now enters the vertex). Removed elements keep their free-list links.
     /// Complexity O(H_all + V_all).
     static void reverse_orientation(mesh& m) {
         const std::size_t nh = m.num_halfedges();
         const bool garbage = m.has_garbage();
-        std::vector<HH> old_prev(nh);
-        for (std::size_t i = 0; i < nh; ++i) old_prev[i] = m.prev(HH(static_cast<typename mesh::size_type>(i)));
         for (std::size_t e = 0; e < nh / 2; ++e) {
             const EH edge(static_cast<typename mesh::size_type>(e));
             if (garbage && m.is_removed(edge)) continue;
@@ -265,9 +267,11 @@ struct mesh_traits<CGAL::Surface_mesh<P>> {
             const VH ta = m.target(a), tb = m.target(b);
             m.set_target(a, tb);
             m.set_target(b, ta);
-            // set_next also sets prev(old_prev) = h, its final value: old next(old_prev) is h.
-            m.set_next(a, old_prev[a.idx()]);
-            m.set_next(b, old_prev[b.idx()]);
+            const HH na = m.next(a), pa = m.prev(a), nb = m.next(b), pb = m.prev(b);
+            m.set_next_only(a, pa);
+            m.set_prev_only(a, na);
+            m.set_next_only(b, pb);
+            m.set_prev_only(b, nb);
         }
         for (std::size_t i = 0; i < m.num_vertices(); ++i) {
             const VH v(static_cast<typename mesh::size_type>(i));
