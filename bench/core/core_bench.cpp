@@ -7,10 +7,12 @@
 //                                            ratios; optionally only one workload (build,
 //                                            one_ring, flip) and meshes whose name contains `mesh`
 //
-// The real mesh is $HMIRA_TEST_DATA/meshes/armadillo.off (elephant.off as fallback).
+// The real mesh is $HMIRA_TEST_DATA/meshes/armadillo.off (elephant.off as fallback); the pairs
+// also run on elephant.off refined twice (89k triangles), a size where per-call costs show.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -21,6 +23,7 @@
 #include <memory>
 #include <sstream>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include <hmira/adapters/adapted_mesh.hpp>
@@ -106,6 +109,42 @@ const face_list& real_mesh() {
         }
         std::fprintf(stderr, "bench_core: no real mesh under %s/meshes (run scripts/test-data.sh); using a 160x160 grid\n", dir.c_str());
         return triangle_grid(160, 160, "grid-51k(fallback)");
+    }();
+    return mesh;
+}
+// Each triangle split into four at its edge midpoints, `levels` times: the issue's "refined
+// elephant" (5.6k -> 89k triangles at two levels), a mid-sized mesh in the real mesh's order.
+face_list refined(face_list g, int levels, std::string name) {
+    g.name = std::move(name);
+    for (int level = 0; level < levels; ++level) {
+        std::unordered_map<std::uint64_t, std::uint32_t> midpoint;
+        auto mid = [&](std::uint32_t a, std::uint32_t b) {
+            const auto key = (std::uint64_t(std::min(a, b)) << 32) | std::max(a, b);
+            auto [it, fresh] = midpoint.try_emplace(key, static_cast<std::uint32_t>(g.points.size()));
+            if (fresh) g.points.push_back((g.points[a] + g.points[b]) * 0.5);
+            return it->second;
+        };
+        face_list out;
+        for (std::size_t f = 0; f < g.faces(); ++f) {
+            if (g.offsets[f + 1] - g.offsets[f] != 3) return {};  // triangles only
+            const auto a = g.corners[g.offsets[f]], b = g.corners[g.offsets[f] + 1], c = g.corners[g.offsets[f] + 2];
+            const auto ab = mid(a, b), bc = mid(b, c), ca = mid(c, a);
+            for (auto t : {std::array{a, ab, ca}, std::array{ab, b, bc}, std::array{ca, bc, c}, std::array{ab, bc, ca}}) {
+                out.corners.insert(out.corners.end(), t.begin(), t.end());
+                out.offsets.push_back(static_cast<std::uint32_t>(out.corners.size()));
+            }
+        }
+        g.corners = std::move(out.corners);
+        g.offsets = std::move(out.offsets);
+    }
+    return g;
+}
+const face_list& refined_elephant() {
+    static const face_list mesh = [] {
+        face_list g;
+        std::string dir = std::getenv("HMIRA_TEST_DATA") ? std::getenv("HMIRA_TEST_DATA") : "build/test-data";
+        if (!read_off(dir + "/meshes/elephant.off", g)) return face_list{};
+        return refined(std::move(g), 2, "elephant-refined");
     }();
     return mesh;
 }
@@ -529,7 +568,8 @@ volatile double sink = 0;
 
 void run_pairs(int rounds, const std::string& workload_filter, const std::string& mesh_filter) {
     std::vector<pair_spec> pairs;
-    for (const face_list* g : {&real_mesh(), &grid_2m()}) {
+    for (const face_list* g : {&real_mesh(), &refined_elephant(), &grid_2m()}) {
+        if (g->faces() == 0) continue;  // no elephant.off: the real mesh and the grid only
         const int reps = g->faces() < 200000 ? 20 : 1;
         const std::size_t first = pairs.size();
         const std::string mesh = g->name + " (" + std::to_string(g->faces()) + " F)";

@@ -6,7 +6,9 @@
 # A 20 ms call measured with 5 repetitions per side, one side after the other, gave speed-ups
 # from 1.44 to 2.06 on the same volume. The speed-up of the fastest runs (fastest 1-thread over
 # fastest 2-thread wall) is the least disturbed estimate on a shared machine; the verdict stays
-# on the medians.
+# on the medians. Then twin_ceiling, for the same volumes: per round, one 1-thread call, one
+# 2-thread call and two independent 1-thread calls at once, so that the speed-up this machine
+# allows this very work (2 x solo / twins) stands beside hmira's, round by round.
 #   bench/marching_cubes/scaling.sh [repetitions (default 15)] [volume regex (default: all)]
 set -euo pipefail
 root="$(cd "$(dirname "$0")/../.." && pwd)"
@@ -19,7 +21,7 @@ esac
 "$root/scripts/test-data.sh" "$root/build/test-data" > /dev/null
 export HMIRA_TEST_DATA="$root/build/test-data"
 cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DHMIRA_BUILD_BENCHMARKS=ON > /dev/null
-cmake --build "$build" --target bench_marching_cubes -j2 > /dev/null
+cmake --build "$build" --target bench_marching_cubes twin_ceiling -j2 > /dev/null
 out="$(mktemp)"
 trap 'rm -f "$out"' EXIT
 echo "load average before: $(cut -d' ' -f1-3 /proc/loadavg)"
@@ -54,3 +56,12 @@ for volume in sorted(dict.fromkeys(v for v, _ in wall), key=lambda v: order.inde
           f"{q(one, 0.25) / q(two, 0.75):.2f}, {q(one, 0.75) / q(two, 0.25):.2f} | {one[0] / two[0]:.2f} | "
           f"{statistics.median(cpu[(volume, 2)]) / statistics.median(cpu[(volume, 1)]):.2f} | {verdict} |")
 PY
+# The twins, on the volumes above that twin_ceiling can make (the skull is a file, not a field).
+twin_volumes=()
+for v in gyroid_128 sphere_256 torus_256 gyroid_256 sphere_384 torus_384 gyroid_384; do
+  if [[ "$v" =~ ^($volumes)$ ]]; then twin_volumes+=("$v"); fi
+done
+if [ ${#twin_volumes[@]} -gt 0 ]; then
+  echo
+  "$build/bench/marching_cubes/twin_ceiling" --rounds "$reps" "${twin_volumes[@]}"
+fi
