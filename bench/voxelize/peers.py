@@ -12,7 +12,9 @@ compared with the stencil (Tolerance 0) voxel for voxel, except voxels whose cen
 usage: peers.py MESH_DIR HMIRA_BENCH_BINARY THREADS...
 HMIRA_BENCH_MESHES=a,b limits the meshes; HMIRA_BENCH_RESOLUTIONS=256,512 the resolutions;
 HMIRA_BENCH_VTK_ONLY=1 skips trimesh and Open3D; HMIRA_BENCH_BASELINE=<an older bench_voxelize>
-adds its times (run right before the current binary's) for a before/after column. Only the
+adds its times (run right before the current binary's) for a before/after column;
+HMIRA_BENCH_ROUNDS=N (default 1) measures hmira and VTK N times in turn and gives VTK rows the
+median of the N per-round ratios (the times shown are medians over the rounds). Only the
 voxelization is timed (meshes are already in memory in the peer's own types)."""
 import json
 import os
@@ -34,6 +36,11 @@ def hmira_ms(bench, name, threads):
                        check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
         runs = [b for b in json.load(open(out.name))["benchmarks"] if b.get("aggregate_name") == "median"]
     return (runs[0]["cpu_time"], runs[0]["real_time"]) if runs else (float("nan"), float("nan"))
+
+
+def medians(pairs):
+    """The element-wise median of (CPU ms, wall ms) pairs."""
+    return tuple(float(np.median([p[i] for p in pairs])) for i in range(2))
 
 
 def best_of(fn, repeat):
@@ -176,6 +183,10 @@ def main():
     rows, meshes = load(mesh_dir)
     skip_trimesh = os.environ.get("HMIRA_BENCH_SKIP_TRIMESH_ABOVE", "30000000")
     baseline = os.environ.get("HMIRA_BENCH_BASELINE")
+    rounds_text = os.environ.get("HMIRA_BENCH_ROUNDS", "1")
+    if not rounds_text.isdigit() or not 1 <= int(rounds_text) <= 100:
+        sys.exit(f"peers.py: HMIRA_BENCH_ROUNDS takes a whole number from 1 to 100, not '{rounds_text}'")
+    rounds = int(rounds_text)
     before = {}
     out, exact = [], []
     for r in rows:
@@ -184,10 +195,18 @@ def main():
             if baseline:
                 before[(r["name"], r["res"], t, "solid")] = hmira_ms(baseline, f"hmira_voxelize/{r['name']}/{r['res']}", t)
                 before[(r["name"], r["res"], t, "centres")] = hmira_ms(baseline, f"hmira_voxelize_centres/{r['name']}/{r['res']}", t)
-            h = hmira_ms(bench, f"hmira_voxelize/{r['name']}/{r['res']}", t)
-            hc = hmira_ms(bench, f"hmira_voxelize_centres/{r['name']}/{r['res']}", t)
-            vms, vcount, vimg = vtk_stencil(v, f, r, t)
-            out.append((r["name"], r["res"], t, hc, "centres vs vtkPolyDataToImageStencil", vms, hc[0] / vms[0], "centres",
+            # Rounds of (hmira conservative, hmira centres, VTK), each ratio taken within its round:
+            # this machine's speed drifts by a third over minutes, more than any one row's margin.
+            hs, hcs, vs = [], [], []
+            for _ in range(rounds):
+                hs.append(hmira_ms(bench, f"hmira_voxelize/{r['name']}/{r['res']}", t))
+                hcs.append(hmira_ms(bench, f"hmira_voxelize_centres/{r['name']}/{r['res']}", t))
+                vms, vcount, vimg = vtk_stencil(v, f, r, t)
+                vs.append(vms)
+            h, hc, vms = medians(hs), medians(hcs), medians(vs)
+            solid_ratio = float(np.median([a[0] / b[0] for a, b in zip(hs, vs)]))
+            centres_ratio = float(np.median([a[0] / b[0] for a, b in zip(hcs, vs)]))
+            out.append((r["name"], r["res"], t, hc, "centres vs vtkPolyDataToImageStencil", vms, centres_ratio, "centres",
                         r["hmira_centres"], vcount))
             if t == threads[0]:
                 exact.append((r["name"], r["res"], r["hmira_centres"], vcount) +
@@ -198,7 +217,8 @@ def main():
                     peers.append(("trimesh voxelized.fill", "solid", r["hmira_solid"], trimesh_fill(v, f, r)))
                 peers.append(("Open3D VoxelGrid", "surface", r["hmira_surface"], open3d_surface(v, f, r)))
             for peer, kind, hcount, (ms, count) in peers:
-                out.append((r["name"], r["res"], t, h, peer, ms, h[0] / ms[0], kind, hcount, count))
+                ratio = solid_ratio if peer == "vtkPolyDataToImageStencil" else h[0] / ms[0]
+                out.append((r["name"], r["res"], t, h, peer, ms, ratio, kind, hcount, count))
             print(f"# done {r['name']} {r['res']} threads={t}", file=sys.stderr, flush=True)
     hdr = ("mesh", "res", "thr", "hmira CPU ms", "peer", "peer CPU ms", "hmira/peer (CPU)", "hmira wall ms", "peer wall ms",
            "hmira/peer (wall)", "counted", "hmira voxels", "peer voxels")

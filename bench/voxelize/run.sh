@@ -4,6 +4,9 @@
 #   bench/voxelize/run.sh            # builds into build-bench, prints a markdown table (CPU time)
 # trimesh takes minutes on the big cases; HMIRA_BENCH_SKIP_TRIMESH_ABOVE=<triangles x res>
 # skips it above that size (default 30000000: trimesh is skipped for the 2M-triangle mesh).
+# HMIRA_BENCH_ROUNDS=N measures hmira and VTK N times in turn and takes each VTK ratio within
+# its round (median of N): a machine whose speed drifts over minutes moves single-run ratios.
+# HMIRA_BENCH_MESHES, HMIRA_BENCH_RESOLUTIONS and HMIRA_BENCH_VTK_ONLY narrow the run (peers.py).
 set -euo pipefail
 root="$(cd "$(dirname "$0")/../.." && pwd)"
 build="${HMIRA_BENCH_BUILD:-$root/build-bench}"
