@@ -25,6 +25,7 @@
 #include <random>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include <hmira/algorithms/conversion/marching_cubes.hpp>
@@ -49,7 +50,8 @@ double quantile(std::vector<double> v, double q) {
     return v[std::min(v.size() - 1, static_cast<std::size_t>(q * static_cast<double>(v.size())))];
 }
 
-hmira::dense_grid<float> make_volume(const std::string& name) {
+// The shape and size a volume name gives; exits naming the volume if it is not one.
+std::pair<std::string, std::size_t> parse_volume(const std::string& name) {
     const auto us = name.find('_');
     const std::string shape = name.substr(0, us);
     std::size_t n = 0;
@@ -60,6 +62,11 @@ hmira::dense_grid<float> make_volume(const std::string& name) {
         std::fprintf(stderr, "twin_ceiling: unknown volume '%s' (sphere_N, torus_N or gyroid_N, 8 <= N <= 1024)\n", name.c_str());
         std::exit(2);
     }
+    return {shape, n};
+}
+
+hmira::dense_grid<float> make_volume(const std::string& name) {
+    const auto [shape, n] = parse_volume(name);
     // The same fields as bench_marching_cubes.
     const auto geo = hmira::cube_geometry(n, -1, 1);
     if (shape == "sphere") return *hmira::sample_function(geo, hmira::sphere_field{{0, 0, 0}, 0.8});
@@ -169,6 +176,7 @@ int main(int argc, char** argv) {
         }
     }
     if (names.empty()) names = {"gyroid_128", "gyroid_256", "sphere_384", "torus_384", "gyroid_384"};
+    for (const auto& name : names) static_cast<void>(parse_volume(name));  // refuse a bad name before any work
     std::printf("twin ceiling: %d rounds, %u hardware threads; ratios are medians of per-round ratios\n\n", rounds,
                 std::thread::hardware_concurrency());
     std::printf("| work | solo ms | 2 threads ms | twins ms | hmira speed-up (solo / 2 threads) | ceiling (2 solo / twins) | "

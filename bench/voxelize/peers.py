@@ -180,13 +180,14 @@ def open3d_surface(v, f, r):
 
 def main():
     mesh_dir, bench, threads = sys.argv[1], sys.argv[2], [int(t) for t in sys.argv[3:]]
-    rows, meshes = load(mesh_dir)
-    skip_trimesh = os.environ.get("HMIRA_BENCH_SKIP_TRIMESH_ABOVE", "30000000")
-    baseline = os.environ.get("HMIRA_BENCH_BASELINE")
+    # Checked before the meshes load, so a bad value stops the run at once.
     rounds_text = os.environ.get("HMIRA_BENCH_ROUNDS", "1")
     if not rounds_text.isdigit() or not 1 <= int(rounds_text) <= 100:
         sys.exit(f"peers.py: HMIRA_BENCH_ROUNDS takes a whole number from 1 to 100, not '{rounds_text}'")
     rounds = int(rounds_text)
+    rows, meshes = load(mesh_dir)
+    skip_trimesh = os.environ.get("HMIRA_BENCH_SKIP_TRIMESH_ABOVE", "30000000")
+    baseline = os.environ.get("HMIRA_BENCH_BASELINE")
     before = {}
     out, exact = [], []
     for r in rows:
