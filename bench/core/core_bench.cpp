@@ -98,10 +98,15 @@ bool read_off(const std::string& path, face_list& out) {
     return static_cast<bool>(in);
 }
 
+std::string test_data_dir() {
+    const char* dir = std::getenv("HMIRA_TEST_DATA");
+    return dir ? dir : "build/test-data";
+}
+
 const face_list& real_mesh() {
     static const face_list mesh = [] {
         face_list g;
-        std::string dir = std::getenv("HMIRA_TEST_DATA") ? std::getenv("HMIRA_TEST_DATA") : "build/test-data";
+        const std::string dir = test_data_dir();
         for (const char* name : {"armadillo", "elephant"}) {
             face_list t;
             t.name = name;
@@ -142,7 +147,7 @@ face_list refined(face_list g, int levels, std::string name) {
 const face_list& refined_elephant() {
     static const face_list mesh = [] {
         face_list g;
-        std::string dir = std::getenv("HMIRA_TEST_DATA") ? std::getenv("HMIRA_TEST_DATA") : "build/test-data";
+        const std::string dir = test_data_dir();
         if (!read_off(dir + "/meshes/elephant.off", g)) return face_list{};
         return refined(std::move(g), 2, "elephant-refined");
     }();
