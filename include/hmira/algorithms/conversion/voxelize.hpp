@@ -206,7 +206,9 @@ result<gathered> gather(const M& mesh, const grid_geometry& grid, bool allow_deg
 // floor without a libm call (the x86-64 baseline has no roundsd); the clamp to +-2^40 keeps
 // the conversion defined for far-away geometry.
 inline long long fast_floor(double x) {
-    x = std::clamp(x, -1099511627776.0, 1099511627776.0);
+    // (ternaries, not std::clamp: they compile to maxsd/minsd, no branch)
+    x = x < -0x1p40 ? -0x1p40 : x;
+    x = x > 0x1p40 ? 0x1p40 : x;
     const auto i = static_cast<long long>(x);
     return i - (double(i) > x);
 }
@@ -359,27 +361,20 @@ void surface_columns(const tri& tr, const vec3<double>& n, const vec3<double>& b
         long long iv0 = std::max<long long>(r0[v], -fast_floor(-vlo)), iv1 = std::min<long long>(r1[v], fast_floor(vhi));
         const double cu = c - n[u] * fu;
         if (clipped && !live_columns(iv0, iv1, cu)) continue;
-        // 0: the column's square is outside the shadow, 2: inside it, 1: across its edge.
+        // `outside` when the column's square is outside the shadow, else a mask of the edges
+        // it lies across (bit e: not inside edge e's side by the margin); 0 inside the shadow.
+        constexpr int outside = 8;
         auto kind = [&](long long iv) {
             const double fv = double(iv);
-            bool outside = false, inner = true;
+            bool out = false;
+            int across = 0;
             for (int e = 0; e < 3; ++e) {
                 const double q = base[e] + axis_v[e] * (fv - p[0][v]);
-                outside |= (q < lo2[e]) | (q > hi2[e]);
-                inner &= (q >= inner_lo[e]) & (q <= inner_hi[e]);
+                out |= (q < lo2[e]) | (q > hi2[e]);
+                across |= int((q < inner_lo[e]) | (q > inner_hi[e])) << e;
             }
-            return outside ? 0 : inner ? 2 : 1;
+            return out ? outside : across;
         };
-        // Each edge's projection is monotone in iv (so is its rounding), so the columns not
-        // outside form an interval [a, b], and the inner ones an interval [ci, ce] within it:
-        // classify the ends only, then walk the inner run without testing the edges again.
-        long long a = iv0, b = iv1;
-        while (a <= b && kind(a) == 0) ++a;
-        while (b > a && kind(b) == 0) --b;
-        if (a > b) continue;
-        long long ci = a, ce = b;
-        while (ci <= b && kind(ci) == 1) ++ci;
-        while (ce >= ci && kind(ce) == 1) --ce;
         // The voxels of column iv within reach of the plane, [w0, w1], cut to the window and
         // the bounding box; false if none. The height by a multiplication: its rounding, a
         // few ulps of the triangle's coordinates, is far within reach_slack.
@@ -401,24 +396,56 @@ void surface_columns(const tri& tr, const vec3<double>& n, const vec3<double>& b
             return (q >= plane_lo) & (q <= plane_hi);
         };
         const double tu = normal[u] * cu_rel;
-        // overlaps_off<D>(): the plane and the six axes u x edge, v x edge.
-        auto edge_column = [&](long long iv) {
+        // overlaps_off<D>(): the plane and the axes u x edge, v x edge of the edges in
+        // `across`. An edge whose side holds the whole square (by the margin) cannot separate
+        // a voxel of the column that the other axes leave touching the triangle: clipping the
+        // shadow by that edge's half-plane leaves the column's part of it unchanged.
+        auto edge_column = [&](long long iv, int across) {
             long long w0, w1;
             if (!reach(iv, w0, w1)) return;
             const double cv_rel = double(iv) - o[v], tv = normal[v] * cv_rel;
-            double shared[6];
-            for (int j = 0; j < 6; ++j) shared[j] = edge_t[j] * (j % 2 == 0 ? cv_rel : cu_rel);
+            double shared[6], d[6], lo[6], hi[6];
+            int axes = 0;
+            for (int j = 0; j < 6; ++j)
+                if ((across >> (j / 2)) & 1) {
+                    shared[axes] = edge_t[j] * (j % 2 == 0 ? cv_rel : cu_rel);
+                    d[axes] = edge_d[j];
+                    lo[axes] = edge_lo[j];
+                    hi[axes++] = edge_hi[j];
+                }
             for (long long iw = w0; iw <= w1; ++iw) {
                 const double cw = double(iw) - o[D];
                 bool on = meets_plane(tu, tv, cw);
-                for (int j = 0; j < 6; ++j) {
-                    const double q = shared[j] + edge_d[j] * cw;
-                    on &= (q >= edge_lo[j]) & (q <= edge_hi[j]);
+                for (int j = 0; j < axes; ++j) {
+                    const double q = shared[j] + d[j] * cw;
+                    on &= (q >= lo[j]) & (q <= hi[j]);
                 }
                 put(iu, iv, iw, on);
             }
         };
-        for (long long iv = a; iv < ci; ++iv) edge_column(iv);
+        // Each edge's projection is monotone in iv (so is its rounding), so along the row the
+        // columns run outside.., across.., inside.., across.., outside..: walk in from each
+        // end, classifying each column once and taking the edge columns as they come, up to
+        // the inner run [ci, ce], whose columns are not classified at all.
+        long long ci = iv0;
+        bool inner = false;
+        for (bool met = false; ci <= iv1; ++ci) {
+            const int k = kind(ci);
+            if (k == 0) {
+                inner = true;
+                break;
+            }
+            if (k != outside) {
+                edge_column(ci, k);
+                met = true;
+            } else if (met) {
+                break;  // past the row's only run of edge columns: the rest are outside too
+            }
+        }
+        if (!inner) continue;
+        long long ce = iv1;  // kind(ci) == 0 stops the walk at ci at the latest
+        for (int k; (k = kind(ce)) != 0; --ce)
+            if (k != outside) edge_column(ce, k);
         for (long long iv = ci; iv <= ce; ++iv) {
             long long w0, w1;
             if (!reach(iv, w0, w1)) continue;
@@ -431,7 +458,6 @@ void surface_columns(const tri& tr, const vec3<double>& n, const vec3<double>& b
             put(iu, iv, second, meets_plane(tu, tv, double(second) - o[D]));
             for (long long iw = w0 + 2; iw <= w1; ++iw) put(iu, iv, iw, meets_plane(tu, tv, double(iw) - o[D]));
         }
-        for (long long iv = std::max(ce + 1, ci); iv <= b; ++iv) edge_column(iv);
     }
 }
 
