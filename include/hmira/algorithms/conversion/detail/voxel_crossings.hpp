@@ -122,7 +122,7 @@ struct crossing_triangle {
     long long first_beyond(const row_estimate& r, long long j, long long k) const noexcept {
         const double dj = double(j), dk = double(k);
         double x = r.base - dj * r.slope;
-        if (!std::isfinite(x) || x < xmin - 1 || x > xmax + 1) {
+        if (!(x >= xmin - 1 && x <= xmax + 1)) {  // also NaN and infinity
             // Nearly edge-on: search [floor(xmin), ceil(xmax) + 1] exactly (beyond is monotone).
             long long l = static_cast<long long>(std::floor(xmin)), h = static_cast<long long>(std::ceil(xmax)) + 1;
             while (l < h) {
@@ -132,7 +132,8 @@ struct crossing_triangle {
             }
             return l;
         }
-        x = std::clamp(x, xmin, xmax);
+        x = x < xmin ? xmin : x;  // (ternaries, not std::clamp: no branch)
+        x = x > xmax ? xmax : x;
         const double f = floor_exact(x);
         const double frac = x - f;
         if (frac > r.tol && 1 - frac > r.tol) return static_cast<long long>(f) + 1;
