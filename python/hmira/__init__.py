@@ -407,8 +407,9 @@ def voxelize(vertices: Any, faces: Any = None, *, resolution: Optional[int] = No
     pitch : float, keyword-only
         Voxel size instead of `resolution`.
     mode : {"conservative", "centres", "surface"}, keyword-only
-        The CLI's ``--mode``. "surface": the voxels the surface touches (exact triangle-box
-        test); "conservative" (the default, a solid for collision): those plus every voxel
+        The CLI's ``--mode``. "surface": the voxels the surface touches (touching at a
+        single point counts; none is lost to rounding, and a voxel set beyond them misses the
+        surface by less than about 1e-13 of a triangle's size); "conservative" (the default, a solid for collision): those plus every voxel
         whose centre lies inside a closed mesh; "centres": exactly the voxels whose centre lies
         inside (exact test; for volume, as VTK's stencil and scikit-image count it).
     fill_open : bool, keyword-only

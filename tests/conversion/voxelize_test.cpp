@@ -24,6 +24,7 @@
 #include <hmira/meshes/halfedge_mesh.hpp>
 
 #include "support/checks.hpp"
+#include "support/exact_box_triangle.hpp"
 
 #if defined(HMIRA_HAS_TBB)
 #include <tbb/global_control.h>
@@ -331,22 +332,14 @@ TEST(TriangleBox, prepared_test_agrees_with_direct_separating_axis_test) {
 
 namespace {
 
-// Whether the closed box of voxel (i, j, k) (unit voxels centred on integers) meets triangle
-// (a, b, c): the three box normals here, the other ten axes by the direct separating-axis test.
-bool box_meets_triangle(std::size_t i, std::size_t j, std::size_t k, const vec3<double>& a, const vec3<double>& b, const vec3<double>& c) {
-    const vec3<double> centre{double(i), double(j), double(k)};
-    for (std::size_t q = 0; q < 3; ++q)
-        if (std::min({a[q], b[q], c[q]}) > centre[q] + 0.5 || std::max({a[q], b[q], c[q]}) < centre[q] - 0.5) return false;
-    return hmira::detail::triangle_box_overlap(centre, 0.5, a, b, c);
-}
-
 // A random triangle of one of the kinds the surface walk treats specially: general position;
 // corners on the half-voxel lattice (on voxel centres, faces, edges and corners, often axis-
-// aligned or edge-on); flat in one axis (its normal along it); long slivers; one corner a hair
-// off another's edge.
+// aligned or edge-on); flat in one axis (its normal along it); long slivers; corners on the
+// quarter-voxel lattice; an axis-aligned edge on the lattice with the third corner anywhere
+// (its ends touch voxels at a single corner); two lattice corners and one on a face plane.
 std::array<vec3<double>, 3> random_triangle(std::mt19937& rng, int kind) {
     std::uniform_real_distribution<double> u(1.0, 13.0);
-    std::uniform_int_distribution<int> half(2, 26);
+    std::uniform_int_distribution<int> half(2, 26), quarter(4, 52);
     auto lattice = [&] { return vec3<double>{half(rng) * 0.5, half(rng) * 0.5, half(rng) * 0.5}; };
     auto point = [&] { return vec3<double>{u(rng), u(rng), u(rng)}; };
     switch (kind) {
@@ -363,6 +356,20 @@ std::array<vec3<double>, 3> random_triangle(std::mt19937& rng, int kind) {
             const vec3<double> a = point(), b = point();
             return {a, b, a + (b - a) * 0.5 + vec3<double>{0.05, -0.03, 0.02}};
         }
+        case 4: return {vec3<double>{quarter(rng) * 0.25, quarter(rng) * 0.25, quarter(rng) * 0.25},
+                        vec3<double>{quarter(rng) * 0.25, quarter(rng) * 0.25, quarter(rng) * 0.25},
+                        vec3<double>{quarter(rng) * 0.25, quarter(rng) * 0.25, quarter(rng) * 0.25}};
+        case 5: {
+            const vec3<double> a = lattice();
+            vec3<double> b = a;
+            b[std::size_t(half(rng) % 3)] = half(rng) * 0.5;
+            return {a, b, point()};
+        }
+        case 6: {
+            vec3<double> c = lattice();
+            c[std::size_t(half(rng) % 3)] = u(rng);
+            return {lattice(), lattice(), c};
+        }
         default: {
             const vec3<double> a = lattice(), b = lattice();
             return {a, b, a + (b - a) * 0.25 + vec3<double>{0, 0, 1e-9}};
@@ -371,9 +378,12 @@ std::array<vec3<double>, 3> random_triangle(std::mt19937& rng, int kind) {
 }
 
 // Voxelizes random triangles of the given kinds alone (surface mode, one thread) and compares
-// every voxel of the grid with the per-voxel separating-axis test. Reports the first
-// disagreements of each kind; returns the voxels compared and how many the test accepts.
-std::pair<long long, long long> compare_with_per_voxel_test(std::initializer_list<int> kinds, int trials, unsigned seed) {
+// every voxel of the grid with the exact per-voxel separating-axis test: each voxel the
+// triangle touches must be set (exact ties included), and each voxel set must touch the
+// triangle once its box is widened by `slack` on every side (the walk's rounding margin).
+// Reports the first disagreements of each kind; returns the voxels compared and how many the
+// triangle touches.
+std::pair<long long, long long> compare_with_exact_test(std::initializer_list<int> kinds, int trials, unsigned seed, double slack) {
     std::mt19937 rng(seed);
     const hmira::grid_geometry geo{{15, 15, 15}, {0, 0, 0}, {1, 1, 1}};
     long long touched = 0, tested = 0;
@@ -390,16 +400,30 @@ std::pair<long long, long long> compare_with_per_voxel_test(std::initializer_lis
                 continue;
             }
             const bool degenerate = v->degenerate_triangles == 1;  // adds no voxels of its own (allow_degenerate)
+            // A voxel whose centre lies farther from the plane than its half-diagonal (by a wide
+            // margin: the rounded plane of a well-shaped triangle is off by far less) can
+            // neither touch the triangle nor be set; the exact test (slow) is kept for the rest.
+            const vec3<double> normal = hmira::cross(t[1] - t[0], t[2] - t[1]);
+            const double normal_length = hmira::norm(normal);
+            const bool well_shaped = normal_length > 1e-6 * hmira::norm(t[1] - t[0]) * hmira::norm(t[2] - t[1]);
             for (std::size_t k = 0; k < 15; ++k)
                 for (std::size_t j = 0; j < 15; ++j)
                     for (std::size_t i = 0; i < 15; ++i) {
-                        const bool expected = !degenerate && box_meets_triangle(i, j, k, t[0], t[1], t[2]);
-                        touched += expected;
+                        const vec3<double> centre{double(i), double(j), double(k)};
+                        const bool set = v->voxels.value(i, j, k) != 0;
                         ++tested;
-                        if ((v->voxels.value(i, j, k) != 0) == expected) continue;
-                        if (++wrong[expected] <= 2)
+                        if (well_shaped && std::abs(hmira::dot(normal, centre - t[0])) > (0.8661 + 1e-3) * normal_length) {
+                            if (set && ++wrong[0] <= 2) ADD_FAILURE() << "kind " << kind << " trial " << trial << ": voxel " << i << ' ' << j << ' ' << k << " set, far from the plane";
+                            continue;
+                        }
+                        const bool touches = !degenerate && hmira_test::exact_box_meets_triangle(centre, 0.5, t[0], t[1], t[2]);
+                        touched += touches;
+                        const bool wrongly_empty = touches && !set;
+                        const bool wrongly_set = set && !touches && !hmira_test::exact_box_meets_triangle(centre, 0.5 + slack, t[0], t[1], t[2]);
+                        if (!wrongly_empty && !wrongly_set) continue;
+                        if (++wrong[wrongly_empty] <= 2)
                             ADD_FAILURE() << "kind " << kind << " trial " << trial << ": voxel " << i << ' ' << j << ' ' << k
-                                          << (expected ? " touched but left empty" : " set but not touched") << "; triangle "
+                                          << (wrongly_empty ? " touched but left empty" : " set but not touched") << "; triangle "
                                           << std::setprecision(17) << t[0].x << ' ' << t[0].y << ' ' << t[0].z << ", " << t[1].x << ' '
                                           << t[1].y << ' ' << t[1].z << ", " << t[2].x << ' ' << t[2].y << ' ' << t[2].z;
                     }
@@ -411,25 +435,50 @@ std::pair<long long, long long> compare_with_per_voxel_test(std::initializer_lis
 }
 
 // The surface walk (rows of columns, the plane test alone where a column lies inside the
-// triangle's shadow, the full test at the shadow's edge) sets exactly the voxels that the
-// per-voxel separating-axis test accepts: in general position, with corners on voxel centres,
-// faces, edges and corners, in a voxel-face plane (touching the voxels on both sides), and for
-// slivers. Before the walk's projections were taken relative to a corner and its reach widened,
-// lattice triangles lost touched voxels at exact ties and face-plane ones lost a whole side.
-TEST(VoxelizeSurface, random_triangles_set_exactly_the_voxels_the_per_voxel_test_accepts) {
-    const auto [tested, touched] = compare_with_per_voxel_test({0, 1, 2, 3}, 400, 20);
+// triangle's shadow, the full test at the shadow's edge) sets every voxel the triangle touches
+// and none that misses it by more than 1e-9 of a voxel: in general position, with corners on
+// voxel centres, faces, edges and corners, in a voxel-face plane (touching the voxels on both
+// sides), for slivers, and with a lattice edge whose ends touch voxels at one corner only.
+// Before the walk's projections were taken relative to a corner and its reach widened, lattice
+// triangles lost touched voxels at exact ties and face-plane ones lost a whole side; before
+// its intervals were widened by a rounding margin, a lattice edge's end lost the voxel it
+// touches at a corner (kind 5).
+TEST(VoxelizeSurface, random_triangles_set_every_voxel_they_touch_and_none_they_miss) {
+    const auto [tested, touched] = compare_with_exact_test({0, 1, 2, 3, 4, 5, 6}, 400, 20, 1e-9);
     EXPECT_GT(touched, 1000);         // the comparison met many touched voxels
     EXPECT_LT(touched, tested / 10);  // and many untouched ones
 }
 
 // Triangles a hair (1e-9 voxel) from degenerate: the normal is a difference of nearly equal
-// products, so the walk and the per-voxel test (which rounds differently, subtracting the box
-// centre first) disagree both ways on a few voxels, and neither is exact. Kept as a record (run
-// with --gtest_also_run_disabled_tests); settling it needs exact predicates for the 13 axes.
-TEST(VoxelizeSurface, DISABLED_nearly_degenerate_triangles_match_the_per_voxel_test) {
-    const auto [tested, touched] = compare_with_per_voxel_test({4}, 300, 21);
+// products, known only to about 1e-7 of itself. The walk still sets every voxel the triangle
+// touches; the voxels it sets beyond those lie within 1e-3 of a voxel of the triangle.
+TEST(VoxelizeSurface, nearly_degenerate_triangles_lose_no_voxel) {
+    const auto [tested, touched] = compare_with_exact_test({7}, 300, 21, 1e-3);
     EXPECT_GT(touched, 1000);
     EXPECT_LT(touched, tested / 10);
+}
+
+// The exact oracle itself, on cases decided by hand: a box touching a corner, an edge or a
+// face of the triangle at one point or along a line counts; one a hair away does not.
+TEST(VoxelizeSurface, the_exact_oracle_counts_touching_and_only_touching) {
+    using hmira_test::exact_box_meets_triangle;
+    const vec3<double> o{0, 0, 0};
+    // Corner (0.5, 0.5, 0.5) of the box around the origin is a corner of the triangle.
+    EXPECT_TRUE(exact_box_meets_triangle(o, 0.5, {0.5, 0.5, 0.5}, {3, 0.7, 0.9}, {0.6, 2, 4}));
+    EXPECT_FALSE(exact_box_meets_triangle(o, 0.5, {0.5 + 1e-15, 0.5, 0.5}, {3, 0.7, 0.9}, {0.6, 2, 4}));
+    // The triangle lies in the box's face plane z = 0.5: touching along a region.
+    EXPECT_TRUE(exact_box_meets_triangle(o, 0.5, {-3, -3, 0.5}, {3, -3, 0.5}, {0, 3, 0.5}));
+    EXPECT_FALSE(exact_box_meets_triangle(o, 0.5, {-3, -3, 0.5000000000000001}, {3, -3, 0.5000000000000001}, {0, 3, 0.5000000000000001}));
+    // An edge passes exactly through the box's edge x = 0.5, y = 0.5 (the plane x + y = 1 holds
+    // the triangle), the rest of the triangle outside: touching along a line.
+    EXPECT_TRUE(exact_box_meets_triangle(o, 0.5, {0.5, 0.5, -2}, {0.5, 0.5, 2}, {3, -2, 0}));
+    // The same triangle moved by 2^-50 along y: its bounding box still touches the box, but
+    // no point of it does.
+    const double d = 0x1p-50;
+    EXPECT_FALSE(exact_box_meets_triangle(o, 0.5, {0.5, 0.5 + d, -2}, {0.5, 0.5 + d, 2}, {3, -2 + d, 0}));
+    // Bounding boxes overlap, the plane passes beside the box's corner or through it.
+    EXPECT_FALSE(exact_box_meets_triangle(o, 0.5, {2, 0, 0}, {0, 2, 0}, {0, 0, 2}));  // x + y + z = 2 misses the box (max 1.5)
+    EXPECT_TRUE(exact_box_meets_triangle(o, 0.5, {1.5, 0, 0}, {0, 1.5, 0}, {0, 0, 1.5}));  // x + y + z = 1.5 touches its corner
 }
 
 // Exactly collinear corners: refused by default, accepted with no voxels of their own.

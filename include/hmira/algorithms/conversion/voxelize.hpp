@@ -1,7 +1,8 @@
 // hmira/algorithms/conversion/voxelize.hpp
-// Turns a mesh into voxels (thesis 2.3.2, 8.4): the voxels its surface touches (conservative,
-// exact triangle-box test), and for a closed mesh also the voxels inside it (parity of ray
-// crossings over bit-packed rows). Generic over the mesh; parallel and deterministic.
+// Turns a mesh into voxels (thesis 2.3.2, 8.4): the voxels its surface touches (conservative:
+// triangle-box tests that lose no touching voxel to rounding), and for a closed mesh also the
+// voxels inside it (parity of ray crossings over bit-packed rows). Generic over the mesh;
+// parallel and deterministic.
 #pragma once
 
 #include <algorithm>
@@ -239,7 +240,8 @@ struct bit_sink {
 /// (whole-grid voxel coordinates, already cut to the triangle's bounding box): walks the
 /// columns along D row by row; in each column only the few voxels within the plane's range
 /// over the column can touch the triangle. Calls set(i, j, k, on) for each candidate voxel,
-/// with `on` true exactly for those the triangle touches (a voxel may come more than once).
+/// with `on` true for those the triangle touches, and possibly for a few it misses by less
+/// than the rounding margin below (a voxel may come more than once).
 template <std::size_t D>
 void surface_columns(const tri& tr, const vec3<double>& n, const vec3<double>& bl, const vec3<double>& bh, const long long (&r0)[3],
                      const long long (&r1)[3], const bit_sink set) {
@@ -253,23 +255,42 @@ void surface_columns(const tri& tr, const vec3<double>& n, const vec3<double>& b
     // touches the plane exactly (at a corner or edge, common with corners on the half-voxel
     // lattice) must stay a candidate, and the exact tests below decide. The height is within
     // about the triangle's coordinates (|n[u]|, |n[v]| <= |n[D]|), which bounds the rounding.
+    // For a sliver the rounded normal is known only to about eps |edge 0| |edge 1| (see the
+    // widening below), which moves the height by that over |n[D]| times the coordinates.
+    double edge_size[3];  // |edge e|_1, edge e from corner e to corner e + 1
+    for (int e = 0; e < 3; ++e) {
+        const vec3<double> ed = p[(e + 1) % 3] - p[e];
+        edge_size[e] = std::abs(ed.x) + std::abs(ed.y) + std::abs(ed.z);
+    }
+    const double magnitude = 1 + std::max({std::abs(bl[0]), std::abs(bl[1]), std::abs(bl[2]), std::abs(bh[0]), std::abs(bh[1]), std::abs(bh[2])});
     const double reach_slack =
-        slack + 0x1p-30 * (1 + slack + std::max({std::abs(bl[0]), std::abs(bl[1]), std::abs(bl[2]), std::abs(bh[0]), std::abs(bh[1]), std::abs(bh[2])}));
+        slack + 0x1p-30 * (slack + magnitude) + 0x1p-40 * edge_size[0] * edge_size[1] * magnitude / std::abs(n[D]);
     const detail::triangle_box_tester tester(p[0], p[1], p[2], 0.5);
     // The tester's sums, with the terms of u and v computed once per column: an axis D' x e
     // (D' != D) is 0 along D', so its projection is the rounded sum of two terms in either
     // order; the normal's is ((x + y) + z) in the tester's order. Same roundings, same bits.
     const vec3<double>& o = tester.origin();
     const vec3<double>& normal = tester.axis(0);
-    const double plane_lo = tester.lo(0), plane_hi = tester.hi(0);
+    // Rounding. Each projection below is within a few ulps of |axis|_1 x (the triangle's extent
+    // + 2) of the exact projection on the exact axis (of the exact edge vectors), at any voxel
+    // centre within a voxel of the triangle's bounding box; the normal, a product of two edges,
+    // within a few ulps of |edge 0|_1 |edge 1|_1 x that. Every interval is widened by 2^-44 of
+    // that bound (some 25 times the rounding), so that a voxel the triangle touches, exactly at
+    // a corner or an edge included, is never lost to rounding; the price is that a voxel
+    // missing the triangle by less than the widening (about 1e-13 of the extent for a
+    // well-shaped triangle, more for a sliver) may be set too.
+    const double extent = 2 + std::max({bh[0] - bl[0], bh[1] - bl[1], bh[2] - bl[2]});
+    auto widening = [&](double axis_size) { return 0x1p-44 * axis_size * extent; };
+    const double plane_widening = widening(edge_size[0] * edge_size[1]);
+    const double plane_lo = tester.lo(0) - plane_widening, plane_hi = tester.hi(0) + plane_widening;
     double edge_d[6], edge_t[6], edge_lo[6], edge_hi[6];  // j = 2 e + (a == v): axis a x edge e
     for (int e = 0; e < 3; ++e)
         for (int k = 0; k < 2; ++k) {
             const int q = 1 + 3 * e + int(k == 0 ? u : v);
             edge_d[2 * e + k] = tester.axis(q)[D];
             edge_t[2 * e + k] = tester.axis(q)[k == 0 ? v : u];  // the other term: along v for a = u
-            edge_lo[2 * e + k] = tester.lo(q);
-            edge_hi[2 * e + k] = tester.hi(q);
+            edge_lo[2 * e + k] = tester.lo(q) - widening(edge_size[e]);
+            edge_hi[2 * e + k] = tester.hi(q) + widening(edge_size[e]);
         }
     // For the inner columns: the reach [w - reach_half, w + reach_half] within the window
     // and the bounding box widened by half a voxel (the voxels the box normal along D allows).
@@ -296,6 +317,8 @@ void surface_columns(const tri& tr, const vec3<double>& n, const vec3<double>& b
         const double margin = 1e-9 * (std::abs(lo2[e]) + std::abs(hi2[e]) + width);
         inner_lo[e] = lo2[e] + width + margin;
         inner_hi[e] = hi2[e] - width - margin;
+        lo2[e] -= widening(edge_size[e]);  // (after the inner bounds: those stay as tight as they were)
+        hi2[e] += widening(edge_size[e]);
     }
     // set() with the voxel's (u, v, D) indices put back in (x, y, z) order.
     auto put = [&](long long iu, long long iv, long long iw, bool on) {
@@ -688,8 +711,11 @@ inline result<window_job> plan(const voxelize_options& options, bool closed, std
 /// Voxelizes `mesh` into a bit grid of geometry `grid` (sample (i, j, k) = centre of voxel
 /// (i, j, k), voxel = the box of one spacing around it). Polygons are fanned into triangles.
 ///
-/// - Surface voxels (modes surface and solid): every voxel whose closed box meets a triangle,
-///   by an exact separating-axis test (conservative voxelization).
+/// - Surface voxels (modes surface and solid): every voxel whose closed box meets a triangle
+///   (conservative voxelization), by a separating-axis test in floating point whose intervals
+///   are widened past its rounding: no voxel the triangle touches is lost, a single touching
+///   corner included; a voxel it misses by less than about 1e-13 of its size (more for a
+///   sliver, whose plane is less well known) may be set too.
 /// - Inside voxels (modes solid and centres) on a closed mesh (every edge used by an even
 ///   number of faces, checked by an XOR of edge hashes): every voxel whose centre lies inside,
 ///   by the parity of the crossings of a ray along x, decided by exact predicates (orient2d

@@ -195,6 +195,11 @@ void expansion_product(const expansion<NE>& e, const expansion<NF>& f, expansion
     h.n = 0;
     for (std::size_t j = 0; j < f.n; ++j) {
         const std::size_t pn = scale_components(e.c, e.n, f.c[j], part);
+        if (h.n == 0) {  // (not through tmp: GCC cannot see that an empty tmp is never read)
+            for (std::size_t i = 0; i < pn; ++i) h.c[i] = part[i];
+            h.n = pn;
+            continue;
+        }
         for (std::size_t i = 0; i < h.n; ++i) tmp[i] = h.c[i];
         h.n = sum_components(tmp, h.n, part, pn, h.c);
     }

@@ -1,7 +1,8 @@
 // hmira/algorithms/conversion/detail/triangle_box.hpp
-// Exact separating-axis test between a triangle and an axis-aligned box (the 13 axes of
-// Akenine-Moller's formulation: 3 box normals, the triangle normal, 9 edge cross products).
-// Touching counts as overlapping, so a voxelization built on it is conservative.
+// Separating-axis test between a triangle and an axis-aligned box in floating point (the 13
+// axes of Akenine-Moller's formulation: 3 box normals, the triangle normal, 9 edge cross
+// products). Touching counts as overlapping; where a box only touches the triangle, rounding
+// may decide either way, so the voxelizer widens the tester's intervals (voxelize.hpp).
 #pragma once
 
 #include <algorithm>
