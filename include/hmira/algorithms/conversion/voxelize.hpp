@@ -595,8 +595,12 @@ inline bool fill_window(const std::vector<tri>& tris, const std::vector<std::uin
         const auto slab_words = out.words().subspan(std::size_t(k0) * dims[1] * words, std::size_t(k1 - k0 + 1) * dims[1] * words);
         std::fill(slab_words.begin(), slab_words.end(), std::uint64_t(0));
         if (job.crossings) {
-            // Ray crossings: voxels beyond a crossing along x change side.
+            // Ray crossings: voxels beyond a crossing along x change side. Each row of the slab
+            // notes the first and last word its marks fall in, [span_first, span_last], so that
+            // the prefix pass below skips the words (and rows) that hold none.
             std::uint64_t* toggles = out.words().data();
+            const std::size_t first_row = std::size_t(k0) * dims[1], slab_rows = std::size_t(k1 - k0 + 1) * dims[1];
+            std::vector<std::uint32_t> span_first(slab_rows, std::numeric_limits<std::uint32_t>::max()), span_last(slab_rows, 0);
             for (std::size_t b = crossing_bins.start[s]; b < crossing_bins.start[s + 1]; ++b) {
                 if ((b - crossing_bins.start[s]) % 1024 == 0 && !gate.advance(std::min<std::size_t>(1024, crossing_bins.start[s + 1] - b)))
                     return;
@@ -607,32 +611,50 @@ inline bool fill_window(const std::vector<tri>& tris, const std::vector<std::uin
                     const long long first = ct.first_beyond(row, j, k) - lo[0];
                     if (first >= nx) return;
                     const std::size_t i = first <= 0 ? 0 : static_cast<std::size_t>(first);
-                    toggles[(std::size_t(k - lo[2]) * dims[1] + std::size_t(j - lo[1])) * words + (i >> 6)] ^= std::uint64_t(1) << (i & 63);
+                    const std::size_t r = std::size_t(k - lo[2]) * dims[1] + std::size_t(j - lo[1]) - first_row;
+                    toggles[(first_row + r) * words + (i >> 6)] ^= std::uint64_t(1) << (i & 63);
+                    const auto w = static_cast<std::uint32_t>(i >> 6);
+                    span_first[r] = std::min(span_first[r], w);
+                    span_last[r] = std::max(span_last[r], w);
                 });
             }
-            // Prefix XOR along each row turns crossing marks into inside bits. Most words hold
-            // no mark (a row crosses the surface a few times): they only take the carry.
+            // Prefix XOR along each row turns crossing marks into inside bits. Words before a
+            // row's first mark stay empty; those between its marks mostly hold none and take
+            // only the carry; after its last mark the row is inside to its end only where a
+            // window cut off crossings beyond it (a closed surface's row otherwise ends outside).
             const std::uint64_t last = (dims[0] & 63) ? (std::uint64_t(1) << (dims[0] & 63)) - 1 : ~std::uint64_t(0);
-            const std::size_t r0 = std::size_t(k0) * dims[1], r1 = std::size_t(k1 + 1) * dims[1];
-            for (std::size_t r = r0; r < r1; ++r) {
-                std::uint64_t fill = 0;  // all ones while inside
-                std::uint64_t* row = toggles + r * words;
-                for (std::size_t w = 0; w < words; ++w) {
-                    std::uint64_t x = row[w];
-                    if (x) {
-                        x ^= x << 1;
-                        x ^= x << 2;
-                        x ^= x << 4;
-                        x ^= x << 8;
-                        x ^= x << 16;
-                        x ^= x << 32;
-                    }
+            auto prefix_xor = [](std::uint64_t x) {
+                x ^= x << 1;
+                x ^= x << 2;
+                x ^= x << 4;
+                x ^= x << 8;
+                x ^= x << 16;
+                return x ^ (x << 32);
+            };
+            for (std::size_t r = 0; r < slab_rows; ++r) {
+                const std::size_t a = span_first[r], e = span_last[r];
+                if (a > e) continue;  // no mark: the row stays empty
+                std::uint64_t* row = toggles + (first_row + r) * words;
+                std::uint64_t x = prefix_xor(row[a]);
+                row[a] = x;
+                std::uint64_t fill = std::uint64_t(0) - (x >> 63);  // all ones while inside
+                for (std::size_t w = a + 1; w < e; ++w) {
+                    x = row[w];
+                    if (x) x = prefix_xor(x);
                     x ^= fill;
                     fill = std::uint64_t(0) - (x >> 63);
                     row[w] = x;
                 }
+                if (e > a) {
+                    x = prefix_xor(row[e]) ^ fill;
+                    fill = std::uint64_t(0) - (x >> 63);
+                    row[e] = x;
+                }
+                if (fill)
+                    for (std::size_t w = e + 1; w < words; ++w) row[w] = fill;
                 row[words - 1] &= last;
             }
+            const std::size_t r0 = first_row, r1 = first_row + slab_rows;
             if (!gate.advance(r1 - r0)) return;
         }
         // Surface voxels (most are found set already inside a solid).
