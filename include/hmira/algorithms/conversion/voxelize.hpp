@@ -207,7 +207,7 @@ result<gathered> gather(const M& mesh, const grid_geometry& grid, bool allow_deg
 // floor without a libm call (the x86-64 baseline has no roundsd); the clamp to +-2^40 keeps
 // the conversion defined for far-away geometry.
 inline long long fast_floor(double x) {
-    // (ternaries, not std::clamp: they compile to maxsd/minsd, no branch)
+    // (ternaries rather than std::clamp, which returns a reference: GCC makes maxsd/minsd of them)
     x = x < -0x1p40 ? -0x1p40 : x;
     x = x > 0x1p40 ? 0x1p40 : x;
     const auto i = static_cast<long long>(x);

@@ -132,7 +132,7 @@ struct crossing_triangle {
             }
             return l;
         }
-        x = x < xmin ? xmin : x;  // (ternaries, not std::clamp: no branch)
+        x = x < xmin ? xmin : x;  // (ternaries rather than std::clamp: see fast_floor in voxelize.hpp)
         x = x > xmax ? xmax : x;
         const double f = floor_exact(x);
         const double frac = x - f;
