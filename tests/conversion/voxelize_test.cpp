@@ -458,6 +458,40 @@ TEST(VoxelizeSurface, nearly_degenerate_triangles_lose_no_voxel) {
     EXPECT_LT(touched, tested / 10);
 }
 
+// A triangle whose normal is no larger than its rounding (its third corner 1e-15 off the line
+// of the other two, across a 60-voxel grid): its plane is unknown, so the walk's reach along
+// the columns spans the whole bounding box, and only the edge axes keep the voxels near the
+// segment. Every voxel the segment passes through is set (the triangle holds the segment), and
+// none far from it. With the doubt about the plane capped at two voxels, 34 of those voxels
+// were left empty; uncapped without the edge axes cutting the reach, each column tested the
+// whole bounding box.
+TEST(VoxelizeSurface, a_triangle_flat_to_rounding_sets_its_segment_voxels_and_stays_near_it) {
+    const vec3<double> a{1.3, 2.1, 1.7}, b{58.6, 41.2, 29.9};
+    const vec3<double> c = a + (b - a) * 0.37 + vec3<double>{0, 1e-15, 1e-15};
+    hmira::face_vertex_mesh m;
+    auto va = m.add_vertex(a), vb = m.add_vertex(b), vc = m.add_vertex(c);
+    ASSERT_TRUE(m.add_face({va, vb, vc}));
+    const hmira::grid_geometry geo{{62, 62, 62}, {0, 0, 0}, {1, 1, 1}};
+    auto v = hmira::voxelize(m, geo, {.mode = hmira::voxelize_mode::surface, .allow_degenerate = true, .threads = 1});
+    ASSERT_TRUE(v) << v.error().message;
+    ASSERT_EQ(v->degenerate_triangles, 0u);  // not exactly collinear: the walk does run
+    const vec3<double> d = b - a;
+    std::size_t far = 0, missed = 0;
+    for (std::size_t k = 0; k < 62; ++k)
+        for (std::size_t j = 0; j < 62; ++j)
+            for (std::size_t i = 0; i < 62; ++i) {
+                const vec3<double> p{double(i), double(j), double(k)};
+                const double t = std::clamp(hmira::dot(p - a, d) / hmira::dot(d, d), 0.0, 1.0);
+                const double distance = hmira::norm(p - (a + d * t));
+                const bool set = v->voxels.value(i, j, k) != 0;
+                far += set && distance > 4.5;
+                missed += !set && distance < 0.4;  // the segment passes through its box
+            }
+    EXPECT_EQ(far, 0u);
+    EXPECT_EQ(missed, 0u);
+    EXPECT_GT(v->voxels.count(), 60u);
+}
+
 // The exact oracle itself, on cases decided by hand: a box touching a corner, an edge or a
 // face of the triangle at one point or along a line counts; one a hair away does not.
 TEST(VoxelizeSurface, the_exact_oracle_counts_touching_and_only_touching) {

@@ -256,15 +256,21 @@ void surface_columns(const tri& tr, const vec3<double>& n, const vec3<double>& b
     // lattice) must stay a candidate, and the exact tests below decide. The height is within
     // about the triangle's coordinates (|n[u]|, |n[v]| <= |n[D]|), which bounds the rounding.
     // For a sliver the rounded normal is known only to about eps |edge 0| |edge 1| (see the
-    // widening below), which moves the height by that over |n[D]| times the coordinates.
+    // widening below), which tilts the plane about corner 0 and moves the height over the
+    // triangle by up to that over |n[D]| times the triangle's extent. Where that is large (a
+    // triangle flat to rounding, nearly a segment) the shadow is thinner than a voxel, so every
+    // column is an edge column, and edge_column() cuts the long reach to what the edge axes
+    // allow: the cost stays that of the segment, not of its bounding box.
     double edge_size[3];  // |edge e|_1, edge e from corner e to corner e + 1
     for (int e = 0; e < 3; ++e) {
         const vec3<double> ed = p[(e + 1) % 3] - p[e];
         edge_size[e] = std::abs(ed.x) + std::abs(ed.y) + std::abs(ed.z);
     }
-    const double magnitude = 1 + std::max({std::abs(bl[0]), std::abs(bl[1]), std::abs(bl[2]), std::abs(bh[0]), std::abs(bh[1]), std::abs(bh[2])});
+    const double extent = 2 + std::max({bh[0] - bl[0], bh[1] - bl[1], bh[2] - bl[2]});
+    const double plane_doubt = 0x1p-44 * edge_size[0] * edge_size[1] * extent / std::abs(n[D]);
     const double reach_slack =
-        slack + 0x1p-30 * (slack + magnitude) + 0x1p-40 * edge_size[0] * edge_size[1] * magnitude / std::abs(n[D]);
+        slack + 0x1p-30 * (1 + slack + std::max({std::abs(bl[0]), std::abs(bl[1]), std::abs(bl[2]), std::abs(bh[0]), std::abs(bh[1]), std::abs(bh[2])})) +
+        plane_doubt;
     const detail::triangle_box_tester tester(p[0], p[1], p[2], 0.5);
     // The tester's sums, with the terms of u and v computed once per column: an axis D' x e
     // (D' != D) is 0 along D', so its projection is the rounded sum of two terms in either
@@ -279,7 +285,6 @@ void surface_columns(const tri& tr, const vec3<double>& n, const vec3<double>& b
     // a corner or an edge included, is never lost to rounding; the price is that a voxel
     // missing the triangle by less than the widening (about 1e-13 of the extent for a
     // well-shaped triangle, more for a sliver) may be set too.
-    const double extent = 2 + std::max({bh[0] - bl[0], bh[1] - bl[1], bh[2] - bl[2]});
     auto widening = [&](double axis_size) { return 0x1p-44 * axis_size * extent; };
     const double plane_widening = widening(edge_size[0] * edge_size[1]);
     const double plane_lo = tester.lo(0) - plane_widening, plane_hi = tester.hi(0) + plane_widening;
@@ -436,6 +441,17 @@ void surface_columns(const tri& tr, const vec3<double>& n, const vec3<double>& b
                     lo[axes] = edge_lo[j];
                     hi[axes++] = edge_hi[j];
                 }
+            if (w1 - w0 > 3) {
+                // A long reach (a plane known only roughly): each edge axis bounds cw to an
+                // interval; cut the reach to it, widened by a voxel (far more than the rounding
+                // of the quotient; the tests below decide).
+                for (int j = 0; j < axes; ++j) {
+                    if (d[j] == 0) continue;
+                    const double first = (lo[j] - shared[j]) / d[j], second = (hi[j] - shared[j]) / d[j];
+                    const double from = std::min(first, second) + o[D] - 1, to = std::max(first, second) + o[D] + 1;
+                    if (!window_range(w0, w1, from, to, w0, w1)) return;
+                }
+            }
             for (long long iw = w0; iw <= w1; ++iw) {
                 const double cw = double(iw) - o[D];
                 bool on = meets_plane(tu, tv, cw);
