@@ -254,6 +254,52 @@ TEST_P(BlocksOnRealMesh, blocks_of_random_sizes_equal_the_whole_grid_in_every_mo
 
 INSTANTIATE_TEST_SUITE_P(Closed, BlocksOnRealMesh, ::testing::Values("elephant.off", "fandisk.off", "sphere966.off"));
 
+// The rays a triangle's crossings visit, row by row from the rounded run ends, are exactly
+// those its exact perturbed test counts as crossing it. Corners on lattices of 1/10, 1/3 and
+// 1/7 voxel (whose edges pass within rounding of voxel centres: the run ends then lie within
+// an ulp of an integer) and of whole and half voxels (edges through centres and corners).
+TEST(VoxelizeCrossings, the_rays_visited_are_exactly_those_the_exact_test_counts) {
+    using hmira::detail::vox::crossing_triangle;
+    std::mt19937_64 rng(20261206);
+    const double steps[] = {10, 3, 7, 1, 2};
+    std::size_t visited_total = 0, near_integer_ends = 0;
+    for (int t = 0; t < 6000; ++t) {
+        const double step = steps[t % 5];
+        std::uniform_int_distribution<int> coordinate(int(-3 * step), int(15 * step));
+        vec3<double> p[3];
+        for (auto& q : p) q = {coordinate(rng) / step, coordinate(rng) / step, coordinate(rng) / step};
+        const crossing_triangle ct(p[0], p[1], p[2]);
+        if (ct.orient == 0) continue;
+        std::vector<int> seen(26 * 26, 0);
+        ct.for_each_ray(-5, 20, -5, 20, [&](long long j, long long k, const crossing_triangle::row_estimate&) {
+            ASSERT_TRUE(j >= -5 && j <= 20 && k >= -5 && k <= 20);
+            ++seen[std::size_t((k + 5) * 26 + (j + 5))];
+        });
+        for (long long k = -5; k <= 20; ++k)
+            for (long long j = -5; j <= 20; ++j) {
+                const int expected = ct.crossed_by(double(j), double(k)) ? 1 : 0;
+                const int got = seen[std::size_t((k + 5) * 26 + (j + 5))];
+                ASSERT_EQ(got, expected) << "triangle " << t << " ray (" << j << ", " << k << "): (" << p[0].x << ", " << p[0].y << ", "
+                                         << p[0].z << ") (" << p[1].x << ", " << p[1].y << ", " << p[1].z << ") (" << p[2].x << ", "
+                                         << p[2].y << ", " << p[2].z << ")";
+                visited_total += std::size_t(got);
+            }
+        // How often a run end lies within 1e-12 of an integer without being one (the cases
+        // the rounded ends alone could get wrong): the test must meet some.
+        for (long long k = -5; k <= 20; ++k)
+            for (int e = 0; e < 3; ++e) {
+                const auto& a = p[e];
+                const auto& b = p[(e + 1) % 3];
+                if (!(std::min(a.z, b.z) < double(k) && double(k) < std::max(a.z, b.z))) continue;
+                const double y = a.y + (double(k) - a.z) / (b.z - a.z) * (b.y - a.y);
+                const double off = std::abs(y - std::round(y));
+                near_integer_ends += off > 0 && off < 1e-12;
+            }
+    }
+    EXPECT_GT(visited_total, 100000u);
+    EXPECT_GT(near_integer_ends, 100u);
+}
+
 // voxelize() fills the grid in slabs of z-layers (512 KiB of words each: here 59 layers of
 // 1100 one-word rows, so the grid has two). Octahedra in random orientations, cut by the slab
 // boundary at z = 59: surface voxels equal a direct separating-axis test of every voxel near

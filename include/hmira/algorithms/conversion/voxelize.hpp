@@ -14,6 +14,7 @@
 #include <limits>
 #include <numbers>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "../../concepts.hpp"
@@ -222,6 +223,26 @@ inline bool window_range(long long lo, long long hi, double from, double to, lon
     return r0 <= r1;
 }
 
+/// The voxels of one column along axis D of a window. D = 0: the column lies in one row,
+/// whose words start at `words`; D = 1, 2: it crosses rows or layers at one bit of x, its voxel
+/// w being `bit` of word words[(w - lo) * stride].
+template <std::size_t D>
+struct column_sink {
+    std::uint64_t* words;
+    std::uint64_t bit;
+    std::size_t stride;
+    long long lo;  // the window's first voxel along D (whole-grid coordinates)
+    /// Sets voxel w of the column when `on`, without a branch on it.
+    void operator()(long long w, bool on) const noexcept {
+        if constexpr (D == 0) {
+            const std::size_t x = std::size_t(w - lo);
+            words[x >> 6] |= std::uint64_t(on) << (x & 63);
+        } else {
+            words[std::size_t(w - lo) * stride] |= bit & (std::uint64_t(0) - std::uint64_t(on));
+        }
+    }
+};
+
 /// Where surface voxels go: the words of a window of the grid whose voxel (0, 0, 0) is voxel
 /// `lo` of the whole grid. Passed by value, so that its fields stay in registers while the
 /// walk stores words (which could alias them through a reference).
@@ -233,6 +254,23 @@ struct bit_sink {
     void operator()(long long i, long long j, long long k, bool on) const noexcept {
         const std::size_t x = std::size_t(i - lo[0]);
         words[std::size_t(k - lo[2]) * layer_words + std::size_t(j - lo[1]) * row_words + (x >> 6)] |= std::uint64_t(on) << (x & 63);
+    }
+    /// The words of the plane u = iu of surface_columns<D>()'s walk (u is z for D = 0, 1 and
+    /// y for D = 2), to give column() once per row.
+    template <std::size_t D>
+    std::uint64_t* plane(long long iu) const noexcept {
+        if constexpr (D == 2) return words + std::size_t(iu - lo[1]) * row_words;
+        else return words + std::size_t(iu - lo[2]) * layer_words;
+    }
+    /// Column iv of `plane` (v is y for D = 0, else x).
+    template <std::size_t D>
+    column_sink<D> column(std::uint64_t* plane_words, long long iv) const noexcept {
+        if constexpr (D == 0) {
+            return {plane_words + std::size_t(iv - lo[1]) * row_words, 0, 0, lo[0]};
+        } else {
+            const std::size_t x = std::size_t(iv - lo[0]);
+            return {plane_words + (x >> 6), std::uint64_t(1) << (x & 63), D == 1 ? row_words : layer_words, lo[D]};
+        }
     }
 };
 
@@ -306,7 +344,7 @@ void surface_columns(const tri& tr, const vec3<double>& n, const vec3<double>& b
     // same answer for every voxel of a column: a column whose square is outside the shadow is
     // skipped; one whose square lies inside it needs only the plane test, since every point of
     // the plane over the square is then on the triangle.
-    double axis_u[3], axis_v[3], inv_axis_v[3], lo2[3], hi2[3], inner_lo[3], inner_hi[3];
+    double axis_u[3], axis_v[3], inv_axis_v[3], lo2[3], hi2[3], inner_lo[3], inner_hi[3], bound_size[3];
     for (int e = 0; e < 3; ++e) {
         const vec3<double> ed = p[(e + 1) % 3] - p[e];
         axis_u[e] = -ed[v];
@@ -324,13 +362,11 @@ void surface_columns(const tri& tr, const vec3<double>& n, const vec3<double>& b
         inner_hi[e] = hi2[e] - width - margin;
         lo2[e] -= widening(edge_size[e]);  // (after the inner bounds: those stay as tight as they were)
         hi2[e] += widening(edge_size[e]);
+        // For the doubt of the rows' estimates: the bounds' size in columns.
+        bound_size[e] = (std::abs(lo2[e]) + std::abs(hi2[e]) + std::abs(inner_lo[e]) + std::abs(inner_hi[e])) * std::abs(inv_axis_v[e]);
     }
-    // set() with the voxel's (u, v, D) indices put back in (x, y, z) order.
-    auto put = [&](long long iu, long long iv, long long iw, bool on) {
-        if constexpr (D == 0) set(iw, iv, iu, on);
-        else if constexpr (D == 1) set(iv, iw, iu, on);
-        else set(iv, iu, iw, on);
-    };
+    // ... and a bound of |iv - p0[v]| over the window's columns, and of |p0[v]|.
+    const double column_span = 1 + std::abs(double(r0[v])) + std::abs(double(r1[v])) + 2 * std::abs(p[0][v]);
     // Where the window cuts the triangle along D (a slab of the grid), many columns reach no
     // voxel of it. Column iv's plane height w is monotone in iv (so is its rounding), hence
     // the columns whose reach ends below the window form a prefix or a suffix of the row, and
@@ -370,23 +406,44 @@ void surface_columns(const tri& tr, const vec3<double>& n, const vec3<double>& b
     const bool clipped = r0[D] > -fast_floor(-(bl[D] - 0.5)) || r1[D] < fast_floor(bh[D] + 0.5);
     for (long long iu = r0[u]; iu <= r1[u]; ++iu) {
         const double fu = double(iu);
-        // The columns of this row whose square can meet the shadow: each edge axis bounds
-        // iv to an interval (widened by one, far more than the rounding of the reciprocal;
-        // the test per column below decides).
-        double vlo = double(r0[v]), vhi = double(r1[v]);
-        double base[3];
+        std::uint64_t* const plane_words = set.plane<D>(iu);
+        // Each edge's projection of column iv, q_e(iv) = base_e + axis_v_e (iv - p0[v]) as kind()
+        // computes it, is monotone in iv (so is its rounding): the columns not outside the
+        // shadow by edge e's axis form an interval, and those inside e's side by the margin
+        // another. Their ends follow from the line's equation, each known to within `doubt`
+        // columns (a bound of the rounding of this estimate and of kind()'s q, with a factor
+        // of some 1000 to spare). A column farther than that from every end is classified by
+        // the ends alone; one nearer (rare) gets kind(). No column outside [near_lo, near_hi]
+        // can meet the shadow.
+        constexpr double infinity = std::numeric_limits<double>::infinity();
+        double near_lo = double(r0[v]), near_hi = double(r1[v]), sure_lo = near_lo, sure_hi = near_hi;
+        double base[3], in_lo[3], in_hi[3];
+        bool row_outside = false;
         for (int e = 0; e < 3; ++e) {
             base[e] = axis_u[e] * (fu - p[0][u]);
-            if (axis_v[e] > 0) {
-                vlo = std::max(vlo, (lo2[e] - base[e]) * inv_axis_v[e] + p[0][v] - 1);
-                vhi = std::min(vhi, (hi2[e] - base[e]) * inv_axis_v[e] + p[0][v] + 1);
-            } else if (axis_v[e] < 0) {
-                vlo = std::max(vlo, (hi2[e] - base[e]) * inv_axis_v[e] + p[0][v] - 1);
-                vhi = std::min(vhi, (lo2[e] - base[e]) * inv_axis_v[e] + p[0][v] + 1);
+            if (axis_v[e] == 0) {  // q_e is base_e along the whole row
+                row_outside |= (base[e] < lo2[e]) | (base[e] > hi2[e]);
+                const bool inside = (base[e] >= inner_lo[e]) & (base[e] <= inner_hi[e]);
+                in_lo[e] = inside ? -infinity : infinity;
+                in_hi[e] = inside ? infinity : -infinity;
+                continue;
             }
+            // Where q_e reaches each bound; q_e falls with iv where axis_v_e < 0. (The inner
+            // band may be empty, its "lower" bound above the upper: so is the interval then.)
+            const bool rising = axis_v[e] > 0;
+            auto at = [&](double bound) { return (bound - base[e]) * inv_axis_v[e] + p[0][v]; };
+            const double a = at(rising ? lo2[e] : hi2[e]), b = at(rising ? hi2[e] : lo2[e]);
+            const double ia = at(rising ? inner_lo[e] : inner_hi[e]), ib = at(rising ? inner_hi[e] : inner_lo[e]);
+            const double doubt = 0x1p-40 * (column_span + bound_size[e] + std::abs(base[e]) * std::abs(inv_axis_v[e]));
+            near_lo = std::max(near_lo, a - doubt);
+            near_hi = std::min(near_hi, b + doubt);
+            sure_lo = std::max(sure_lo, a + doubt);
+            sure_hi = std::min(sure_hi, b - doubt);
+            in_lo[e] = ia + doubt;
+            in_hi[e] = ib - doubt;
         }
-        if (!(vlo <= vhi)) continue;
-        long long iv0 = std::max<long long>(r0[v], -fast_floor(-vlo)), iv1 = std::min<long long>(r1[v], fast_floor(vhi));
+        if (row_outside || !(near_lo <= near_hi)) continue;
+        long long iv0 = std::max<long long>(r0[v], -fast_floor(-near_lo)), iv1 = std::min<long long>(r1[v], fast_floor(near_hi));
         const double cu = c - n[u] * fu;
         if (clipped && !live_columns(iv0, iv1, cu)) continue;
         // `outside` when the column's square is outside the shadow, else a mask of the edges
@@ -428,18 +485,20 @@ void surface_columns(const tri& tr, const vec3<double>& n, const vec3<double>& b
         // `across`. An edge whose side holds the whole square (by the margin) cannot separate
         // a voxel of the column that the other axes leave touching the triangle: clipping the
         // shadow by that edge's half-plane leaves the column's part of it unchanged.
-        auto edge_column = [&](long long iv, int across) {
+        // (The edges are a template argument: a column is across one edge, now and then two,
+        // and the tests of each set of edges compile to straight code.)
+        auto edge_column_of = [&]<int across>(std::integral_constant<int, across>, long long iv) {
             long long w0, w1;
             if (!reach(iv, w0, w1)) return;
             const double cv_rel = double(iv) - o[v], tv = normal[v] * cv_rel;
-            double shared[6], d[6], lo[6], hi[6];
-            int axes = 0;
-            for (int j = 0; j < 6; ++j)
+            constexpr int axes = 2 * std::popcount(unsigned(across));
+            double shared[axes], d[axes], lo[axes], hi[axes];
+            for (int j = 0, a = 0; j < 6; ++j)
                 if ((across >> (j / 2)) & 1) {
-                    shared[axes] = edge_t[j] * (j % 2 == 0 ? cv_rel : cu_rel);
-                    d[axes] = edge_d[j];
-                    lo[axes] = edge_lo[j];
-                    hi[axes++] = edge_hi[j];
+                    shared[a] = edge_t[j] * (j % 2 == 0 ? cv_rel : cu_rel);
+                    d[a] = edge_d[j];
+                    lo[a] = edge_lo[j];
+                    hi[a++] = edge_hi[j];
                 }
             if (w1 - w0 > 3) {
                 // A long reach (a plane known only roughly): each edge axis bounds cw to an
@@ -452,51 +511,68 @@ void surface_columns(const tri& tr, const vec3<double>& n, const vec3<double>& b
                     if (!window_range(w0, w1, from, to, w0, w1)) return;
                 }
             }
-            for (long long iw = w0; iw <= w1; ++iw) {
+            auto touches = [&](long long iw) {
                 const double cw = double(iw) - o[D];
                 bool on = meets_plane(tu, tv, cw);
                 for (int j = 0; j < axes; ++j) {
                     const double q = shared[j] + d[j] * cw;
                     on &= (q >= lo[j]) & (q <= hi[j]);
                 }
-                put(iu, iv, iw, on);
+                return on;
+            };
+            // Two voxels without a branch on how many, as inner_column().
+            const auto put = set.column<D>(plane_words, iv);
+            const long long second = w0 + (w1 > w0);
+            put(w0, touches(w0));
+            put(second, touches(second));
+            for (long long iw = w0 + 2; iw <= w1; ++iw) put(iw, touches(iw));
+        };
+        auto edge_column = [&](long long iv, int across) {
+            switch (across) {
+                case 1: return edge_column_of(std::integral_constant<int, 1>{}, iv);
+                case 2: return edge_column_of(std::integral_constant<int, 2>{}, iv);
+                case 3: return edge_column_of(std::integral_constant<int, 3>{}, iv);
+                case 4: return edge_column_of(std::integral_constant<int, 4>{}, iv);
+                case 5: return edge_column_of(std::integral_constant<int, 5>{}, iv);
+                case 6: return edge_column_of(std::integral_constant<int, 6>{}, iv);
+                default: return edge_column_of(std::integral_constant<int, 7>{}, iv);
             }
         };
-        // Each edge's projection is monotone in iv (so is its rounding), so along the row the
-        // columns run outside.., across.., inside.., across.., outside..: walk in from each
-        // end, classifying each column once and taking the edge columns as they come, up to
-        // the inner run [ci, ce], whose columns are not classified at all.
-        long long ci = iv0;
-        bool inner = false;
-        for (bool met = false; ci <= iv1; ++ci) {
-            const int k = kind(ci);
-            if (k == 0) {
-                inner = true;
-                break;
-            }
-            if (k != outside) {
-                edge_column(ci, k);
-                met = true;
-            } else if (met) {
-                break;  // past the row's only run of edge columns: the rest are outside too
-            }
-        }
-        if (!inner) continue;
-        long long ce = iv1;  // kind(ci) == 0 stops the walk at ci at the latest
-        for (int k; (k = kind(ce)) != 0; --ce)
-            if (k != outside) edge_column(ce, k);
-        for (long long iv = ci; iv <= ce; ++iv) {
+        // A column whose square lies inside the shadow: only the plane test.
+        auto inner_column = [&](long long iv) {
             long long w0, w1;
-            if (!reach(iv, w0, w1)) continue;
-            const double fv = double(iv);
+            if (!reach(iv, w0, w1)) return;
             // Most columns reach one or two voxels: test two without a branch on how many
             // (the second is w0 again, set only if it passes, when the reach is one voxel).
             const long long second = w0 + (w1 > w0);
-            const double tv = normal[v] * (fv - o[v]);
-            put(iu, iv, w0, meets_plane(tu, tv, double(w0) - o[D]));
-            put(iu, iv, second, meets_plane(tu, tv, double(second) - o[D]));
-            for (long long iw = w0 + 2; iw <= w1; ++iw) put(iu, iv, iw, meets_plane(tu, tv, double(iw) - o[D]));
-        }
+            const double tv = normal[v] * (double(iv) - o[v]);
+            const auto put = set.column<D>(plane_words, iv);
+            put(w0, meets_plane(tu, tv, double(w0) - o[D]));
+            put(second, meets_plane(tu, tv, double(second) - o[D]));
+            for (long long iw = w0 + 2; iw <= w1; ++iw) put(iw, meets_plane(tu, tv, double(iw) - o[D]));
+        };
+        // The inner run [ci, ce]: columns surely inside every edge's side. The rest of
+        // [iv0, iv1] are edge columns, across the edges they are not surely inside, except
+        // those within doubt of a shadow end, which kind() classifies.
+        const long long sure0 = std::max(iv0, -fast_floor(-sure_lo)), sure1 = std::min(iv1, fast_floor(sure_hi));
+        long long ci = std::max({sure0, -fast_floor(-in_lo[0]), -fast_floor(-in_lo[1]), -fast_floor(-in_lo[2])});
+        long long ce = std::min({sure1, fast_floor(in_hi[0]), fast_floor(in_hi[1]), fast_floor(in_hi[2])});
+        if (ci > ce) ci = iv1 + 1, ce = iv1;  // no inner run: all of [iv0, iv1] is edge columns
+        auto outer_column = [&](long long iv) {
+            if (iv < sure0 || iv > sure1) {
+                const int k = kind(iv);
+                if (k == 0) inner_column(iv);
+                else if (k != outside) edge_column(iv, k);
+                return;
+            }
+            const double fv = double(iv);
+            int across = 0;
+            for (int e = 0; e < 3; ++e) across |= int((fv < in_lo[e]) | (fv > in_hi[e])) << e;
+            edge_column(iv, across);
+        };
+        for (long long iv = iv0; iv < ci; ++iv) outer_column(iv);
+        for (long long iv = ce + 1; iv <= iv1; ++iv) outer_column(iv);
+        for (long long iv = ci; iv <= ce; ++iv) inner_column(iv);
     }
 }
 

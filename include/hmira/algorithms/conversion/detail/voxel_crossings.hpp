@@ -148,8 +148,10 @@ struct crossing_triangle {
     long long first_beyond(long long j, long long k) const noexcept { return first_beyond(along_row(k, j, j), j, k); }
 
     /// Calls fn(j, k, along_row(k, ..)) for every ray (j, k) with j in [j0, j1], k in [k0, k1]
-    /// crossing the triangle: per row k, the ends of the run of j are found by exact tests (the
-    /// run is an interval: the shadow is convex), and the run's inside is not tested again.
+    /// crossing the triangle. Per row k the rays crossing it are a run of j (the shadow is
+    /// convex) between the two edges the line z = k meets: where the line passes no corner and
+    /// both ends lie farther than their rounding from an integer, the rounded ends give the run;
+    /// otherwise exact tests find its ends. The run's inside is never tested again.
     template <class Fn>
     void for_each_ray(long long j0, long long j1, long long k0, long long k1, Fn&& fn) const {
         if (orient == 0) return;
@@ -159,15 +161,21 @@ struct crossing_triangle {
         k1 = std::min<long long>(k1, static_cast<long long>(std::floor(zmax)) + 1);
         if (j0 > j1 || k0 > k1) return;
         const vec3<double>* p[3] = {&a, &b, &c};
+        // An edge's y at z = k, u.y + t (v.y - u.y) with t = (k - u.z) / (v.z - u.z) in [0, 1],
+        // is within 11 eps max(|y|) of the exact one (three roundings in t, two in the product,
+        // one in the sum); 2^-40 leaves a factor of some 700.
+        const double ytol = 0x1p-40 * (1 + std::max(std::abs(ymin), std::abs(ymax)));
         for (long long k = k0; k <= k1; ++k) {
             const double dk = double(k);
             // Where the edges meet the line z = k, rounded: the run's ends up to rounding.
             double ya = std::numeric_limits<double>::infinity(), yb = -ya;
+            bool between_corners = true;  // the line meets edges only strictly between their corners (exact comparisons)
             for (int e = 0; e < 3; ++e) {
                 const vec3<double>& u = *p[e];
                 const vec3<double>& v = *p[(e + 1) % 3];
                 const double zl = std::min(u.z, v.z), zh = std::max(u.z, v.z);
                 if (dk < zl - 1e-9 || dk > zh + 1e-9) continue;
+                between_corners &= dk > zl && dk < zh;
                 double y;
                 if (zh - zl <= 0) {
                     ya = std::min({ya, u.y, v.y});
@@ -180,6 +188,20 @@ struct crossing_triangle {
                 yb = std::max(yb, y);
             }
             if (!(ya <= yb)) continue;
+            if (between_corners) {
+                // The exact run is the integers strictly between the exact ends, which lie
+                // within ytol of ya and yb: unless an integer lies that close, the rounded
+                // ends settle it.
+                const double fa = floor_exact(ya), fb = floor_exact(yb);
+                if (ya - fa > ytol && fa + 1 - ya > ytol && yb - fb > ytol && fb + 1 - yb > ytol) {
+                    const long long lo = std::max<long long>(j0, static_cast<long long>(fa) + 1);
+                    const long long hi = std::min<long long>(j1, static_cast<long long>(fb));
+                    if (lo > hi) continue;
+                    const row_estimate row = along_row(k, lo, hi);
+                    for (long long j = lo; j <= hi; ++j) fn(j, k, row);
+                    continue;
+                }
+            }
             long long lo = std::max<long long>(j0, static_cast<long long>(std::ceil(ya)) - 1);
             long long hi = std::min<long long>(j1, static_cast<long long>(std::floor(yb)) + 1);
             if (lo > hi) continue;
