@@ -214,7 +214,9 @@ concept face_reversible_mesh = face_list_mesh<M, T> && requires(M& m, typename T
 ///   set_vertex_halfedge(m,v,h), set_face_halfedge(m,f,h),
 ///   new_edge(m, from, to) -> halfedge from->to (its opposite runs to->from, links unset),
 ///   new_face(m) -> face, add_vertex(m, p) -> vertex,
-///   erase_edge(m,e), erase_face(m,f), erase_vertex(m,v) (mark deleted, no re-linking).
+///   erase_edge(m,e), erase_face(m,f), erase_vertex(m,v) (mark deleted, no re-linking; a
+///   model may reuse one of the element's links for its free list, as halfedge_mesh and CGAL
+///   do, so read an element's links before erasing it).
 template <class M, class T = default_traits<M>>
 concept halfedge_mutable_mesh = halfedge_navigable_mesh<M, T> &&
     requires(M& m, typename T::halfedge_handle h, typename T::vertex_handle v, typename T::face_handle f,

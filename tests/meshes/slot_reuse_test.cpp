@@ -6,6 +6,7 @@
 
 #include <array>
 #include <atomic>
+#include <cstdint>
 #include <set>
 #include <cstdlib>
 #include <new>
@@ -287,6 +288,54 @@ TEST(slot_reuse, a_copy_reuses_its_own_slots_without_allocating) {
     EXPECT_EQ(bounds_of(copy), start);
     EXPECT_EQ(bounds_of(m), start) << "the original is untouched";
     EXPECT_TRUE(hmira_test::is_valid(copy, {.relaxed = true}));
+}
+
+// The free lists live in the deleted slots' own records (an edge's first next, a face's
+// halfedge, a vertex's outgoing halfedge). reverse_orientation swaps every next with its prev,
+// deleted edges' too, and must put the links back: else the second reuse below reads a stale
+// prev as the list's next slot and hands out a live edge's slot (or one past the bound).
+TEST(slot_reuse, freed_slots_survive_reversal_and_moves_and_are_taken_last_freed_first) {
+    auto m = quad_grid(4);
+    std::vector<face_handle> faces(m.faces().begin(), m.faces().end());
+    std::vector<halfedge_handle> made;
+    for (std::size_t i = 0; i < 6; ++i) {
+        const auto [h0, h1] = diagonal(m, faces[2 * i]);
+        const auto r = make_edge_face(m, h0, h1);
+        ASSERT_TRUE(r);
+        made.push_back(r->halfedge);
+    }
+    std::vector<std::uint32_t> freed;  // edge slots in the order they are freed
+    for (auto h : made) {
+        ASSERT_TRUE(kill_edge_face(m, h));
+        freed.push_back(halfedge_mesh::edge(h).index);
+    }
+    const auto start = bounds_of(m);
+    ASSERT_EQ(start.free_e, 6u);
+    ASSERT_EQ(start.free_f, 6u);
+
+    m.reverse_orientation();
+    ASSERT_TRUE(hmira_test::is_valid(m, {.relaxed = true}));
+    EXPECT_EQ(bounds_of(m), start);
+
+    // A move leaves the source's lists empty (its records went with them).
+    halfedge_mesh moved = std::move(m);
+    EXPECT_EQ(moved.free_edge_slots(), 6u);
+    EXPECT_EQ(m.free_edge_slots() + m.free_face_slots() + m.free_vertex_slots(), 0u);
+    const auto fresh = m.add_vertex({1, 2, 3});
+    EXPECT_EQ(fresh.index, 0u) << "a moved-from mesh appends";
+
+    for (std::size_t i = 0; i < 6; ++i) {
+        const auto [h0, h1] = diagonal(moved, faces[2 * i]);
+        const auto r = make_edge_face(moved, h0, h1);
+        ASSERT_TRUE(r) << "reuse " << i;
+        EXPECT_EQ(halfedge_mesh::edge(r->halfedge).index, freed[freed.size() - 1 - i]) << "reuse " << i << ": last freed first";
+        ASSERT_TRUE(hmira_test::is_valid(moved, {.relaxed = true})) << "reuse " << i;
+    }
+    const auto end = bounds_of(moved);
+    EXPECT_EQ(end.e, start.e) << "every edge came from the free list";
+    EXPECT_EQ(end.f, start.f);
+    EXPECT_EQ(end.free_e, 0u);
+    EXPECT_EQ(end.free_f, 0u);
 }
 
 // Faces as loops of positions, each rotated to start at its smallest: compares two meshes'

@@ -43,7 +43,8 @@ namespace hmira {
 /// next/prev/opposite/target/face O(1); face -> vertices O(V_consistF); vertex -> vertices,
 /// edges, faces O(V_adjacentV); face -> faces O(F_adjacentF).
 ///
-/// Deletion marks elements and puts their slots on a free list; creating an element of that
+/// Deletion marks elements and puts their slots on a free list kept in the deleted slots' own
+/// records (see erase_edge), so that deleting touches no new memory; creating an element of that
 /// kind (add_vertex, new_edge, new_face, add_face) takes the most recently freed slot before it
 /// appends, with its properties back at their defaults. So an operator followed by its inverse
 /// (make_edge_face then kill_edge_face, ...) allocates nothing and leaves the index bounds as
@@ -302,7 +303,7 @@ public:
             const std::uint32_t v = free_vertices_.top();
             ++vertex_generations_.at(v, positions_.size());  // may throw: nothing changed yet
             vertex_props_.reset(v);
-            free_vertices_.pop();
+            free_vertices_.pop(vertex_out_[v].index);
             positions_[v] = p;
             vertex_out_[v] = {};
             vertex_deleted_.set(v, 0);
@@ -310,7 +311,6 @@ public:
             ++changes_;
             return vertex_handle(v);
         }
-        free_vertices_.ensure_room(positions_.size() + 1);
         vertex_deleted_.ensure(positions_.size() + 1);
         vertex_out_.ensure_room(positions_.size() + 1);  // so that no push_back fails after the first
         positions_.push_back(p);
@@ -452,9 +452,6 @@ private:
         }
         const std::size_t edges = m.halfedges_.size() / 2;
         fill_positions(m.positions_);
-        m.free_vertices_.ensure_room(nv);
-        m.free_edges_.ensure_room(edges);
-        m.free_faces_.ensure_room(nf);
         m.vertex_deleted_.ensure(nv);
         m.edge_deleted_.ensure(edges);
         m.face_deleted_.ensure(nf);
@@ -728,7 +725,7 @@ public:
             edge_props_.reset(e);
             halfedge_props_.reset(2 * std::size_t(e));
             halfedge_props_.reset(2 * std::size_t(e) + 1);
-            free_edges_.pop();
+            free_edges_.pop(halfedges_[2 * std::size_t(e)].next.index);
             halfedges_[2 * std::size_t(e)] = {b, {}, {}, {}};
             halfedges_[2 * std::size_t(e) + 1] = {a, {}, {}, {}};
             edge_deleted_.set(e, 0);
@@ -745,7 +742,7 @@ public:
             const std::uint32_t f = free_faces_.top();
             ++face_generations_.at(f, faces_.size());  // may throw: nothing changed yet
             face_props_.reset(f);
-            free_faces_.pop();
+            free_faces_.pop(faces_[f].index);
             faces_[f] = {};  // an emptied ring list is kept for the next holes
             face_deleted_.set(f, 0);
             --deleted_faces_;
@@ -754,16 +751,18 @@ public:
         }
         return append_face();
     }
-    /// Marks an element deleted and frees its slot for reuse (raw: nothing is re-linked, and
-    /// the element's records keep their values until the slot is reused). Erasing a deleted
-    /// element does nothing. O(1); never allocates.
+    /// Marks an element deleted and frees its slot for reuse (raw: nothing is re-linked). The
+    /// slot's records keep their values except one, which now holds the free list (as on CGAL's
+    /// Surface_mesh): a vertex's outgoing halfedge, an edge's first halfedge's next, a face's
+    /// halfedge. Read what you need before erasing. Erasing a deleted element does nothing.
+    /// O(1); never allocates.
     ///@{
     void erase_edge(edge_handle e) noexcept {
         if (!edge_deleted_[e.index]) {
             edge_deleted_.set(e.index, 1);
             ++deleted_edges_;
             ++changes_;
-            free_edges_.push(e.index);
+            free_edges_.push(e.index, halfedges_[2 * std::size_t(e.index)].next.index);
         }
     }
     void erase_face(face_handle f) noexcept {
@@ -772,7 +771,7 @@ public:
             ++deleted_faces_;
             ++changes_;
             if (const auto r = face_rings_[f.index]; r != 0) ring_lists_[r - 1].clear();
-            free_faces_.push(f.index);
+            free_faces_.push(f.index, faces_[f.index].index);
         }
     }
     void erase_vertex(vertex_handle v) noexcept {
@@ -780,7 +779,7 @@ public:
             vertex_deleted_.set(v.index, 1);
             ++deleted_vertices_;
             ++changes_;
-            free_vertices_.push(v.index);
+            free_vertices_.push(v.index, vertex_out_[v.index].index);
         }
     }
 
@@ -799,6 +798,14 @@ public:
             std::swap(a.target, b.target);
             std::swap(a.next, a.prev);
             std::swap(b.next, b.prev);
+        }
+        // That also moved the free list's links (a freed edge's first next) into prev: walk
+        // the list and put them back. O(free edges), no branch in the loop above.
+        std::uint32_t e = free_edges_.empty() ? detail::free_slots::none : free_edges_.top();
+        for (std::size_t k = 0; k < free_edges_.size() && e != detail::free_slots::none; ++k) {
+            auto& a = halfedges_[2 * std::size_t(e)];
+            std::swap(a.next, a.prev);
+            e = a.next.index;
         }
         for (std::size_t v = 0; v < vertex_out_.size(); ++v) {
             const auto h = vertex_out_[v];
@@ -882,9 +889,6 @@ public:
 
     /// Reserves storage for that many vertices, edges and faces (index bounds).
     void reserve(std::size_t vertices, std::size_t edges, std::size_t faces) {
-        free_vertices_.ensure_room(vertices);
-        free_edges_.ensure_room(edges);
-        free_faces_.ensure_room(faces);
         detail::reserve_huge(positions_, vertices);
         vertex_out_.reserve(vertices);
         vertex_deleted_.ensure(vertices);
@@ -903,9 +907,6 @@ public:
     /// May throw std::bad_alloc, with the mesh unchanged. O(change) (amortised when it grows).
     void resize(std::size_t vertices, std::size_t edges, std::size_t faces) {
         // Every allocation first, so that nothing changes unless all of them succeed.
-        free_vertices_.ensure_room(vertices);
-        free_edges_.ensure_room(edges);
-        free_faces_.ensure_room(faces);
         vertex_deleted_.ensure(vertices);
         edge_deleted_.ensure(edges);
         face_deleted_.ensure(faces);
@@ -952,7 +953,6 @@ private:
     };
 
     halfedge_handle append_edge(vertex_handle a, vertex_handle b) {
-        free_edges_.ensure_room(halfedges_.size() / 2 + 1);
         edge_deleted_.ensure(halfedges_.size() / 2 + 1);
         halfedges_.ensure_room(halfedges_.size() + 2);  // both halfedges or neither
         const auto h = halfedge_handle(halfedges_.size());
@@ -965,7 +965,6 @@ private:
         return h;
     }
     face_handle append_face() {
-        free_faces_.ensure_room(faces_.size() + 1);
         face_deleted_.ensure(faces_.size() + 1);
         faces_.push_back({});
         face_props_.push_back();

@@ -186,7 +186,7 @@ result<kill_edge_face_result<M, T>> kill_edge_face(M& mesh, typename T::halfedge
     de::replace_vertex_halfedge<M, T>(mesh, t, o, hn);
     if (f != T::null_face()) {
         if (T::face_halfedge(mesh, f) == h) T::set_face_halfedge(mesh, f, hp);
-        de::replace_ring_halfedge<M, T>(mesh, f, h, hp);
+        if (de::has_rings<M, T>(mesh, f)) de::replace_ring_halfedge<M, T>(mesh, f, h, hp);  // (tested inline: the call was not inlined)
     } else {
         // The killed face's vertices are on the boundary now.
         for (auto x = on; x != hn; x = T::next(mesh, x)) {
