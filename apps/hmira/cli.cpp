@@ -62,7 +62,7 @@ int exit_code_for(const hmira::error& e) {
 int input_exit_code(const hmira::error& e) {
     switch (e.code) {
         case hmira::errc::io_error: return io_failure;
-        case hmira::errc::unsupported: return e.message.find("unknown mesh format") != std::string::npos ? usage : invalid_input;
+        case hmira::errc::unknown_format: return usage;
         default: return invalid_input;
     }
 }

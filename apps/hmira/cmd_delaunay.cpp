@@ -38,7 +38,7 @@ hmira::result<std::vector<hmira::vec3<double>>> read_points(const std::string& p
     }
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec)) return hmira::fail(hmira::errc::io_error, path + ": is a directory, not a point file");
-    return hmira::fail(hmira::errc::unsupported, path + ": unknown mesh format '" + ext + "' for points (use .xyz, .csv or .ply)");
+    return hmira::fail(hmira::errc::unknown_format, path + ": unknown mesh format '" + ext + "' for points (use .xyz, .csv or .ply)");
 }
 
 int run_delaunay(const delaunay_args& a, const common_options& o) {

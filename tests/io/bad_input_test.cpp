@@ -195,7 +195,7 @@ TEST(io_bad_input, an_unknown_extension_is_refused_for_reading_and_writing) {
     ASSERT_TRUE(generate_tetrahedron(m));
     auto w = io::write_mesh(m, dir / "m.xyz");
     ASSERT_FALSE(w);
-    EXPECT_EQ(w.error().code, errc::unsupported);
+    EXPECT_EQ(w.error().code, errc::unknown_format);
     EXPECT_TRUE(dir.files().empty());
     EXPECT_FALSE(io::read_mesh(m, dir / "m.xyz"));
 }

@@ -339,6 +339,7 @@ TYPED_TEST(remeshing_test, cancelling_changes_nothing_and_progress_reaches_one) 
         auto r = hmira::isotropic_remeshing(m, {.target_edge_length = 0.1, .progress = [&](double) { return ++calls < 3; }});
         ASSERT_FALSE(r);
         EXPECT_NE(r.error().message.find("cancelled"), std::string::npos) << r.error().message;
+        EXPECT_EQ(r.error().code, hmira::errc::cancelled);
         EXPECT_EQ(calls, 3);
         EXPECT_EQ(take_snapshot(m), before);
         std::vector<double> seen;

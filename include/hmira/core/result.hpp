@@ -23,6 +23,8 @@ enum class errc {
     io_error,              ///< reading or writing a file failed
     parse_error,           ///< a file's content is malformed
     unsupported,           ///< the input is valid but not handled by this operation
+    cancelled,             ///< the caller's progress callback returned false; inputs are unchanged
+    unknown_format,        ///< a file name's extension names no format this reader or writer knows
 };
 
 /// The error half of a result: a code, a one-line message that names the element, and the

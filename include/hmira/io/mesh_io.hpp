@@ -57,7 +57,7 @@ inline hmira::error unknown_extension(const std::filesystem::path& path) {
     std::error_code ec;
     // A folder is an I/O problem whatever its name says.
     if (std::filesystem::is_directory(path, ec)) return fail(errc::io_error, path.string() + ": is a directory, not a mesh file");
-    return fail(errc::unsupported, path.string() + ": unknown mesh format '" + path.extension().string() + "' (use .obj, .off, .ply or .stl)");
+    return fail(errc::unknown_format, path.string() + ": unknown mesh format '" + path.extension().string() + "' (use .obj, .off, .ply or .stl)");
 }
 }  // namespace detail
 
@@ -73,7 +73,7 @@ inline result<polygon_soup> parse_any(std::string_view data, file_format format,
             return std::move(s->soup);
         }
     }
-    return fail(errc::unsupported, name + ": unknown format");
+    return fail(errc::unknown_format, name + ": unknown format");
 }
 }  // namespace detail
 
@@ -89,7 +89,7 @@ inline result<polygon_soup> parse_soup(std::string_view data, file_format format
 }
 
 /// Reads a file into indexed arrays, the format chosen by extension. No mesh is built.
-/// Complexity O(bytes). Errors: errc::io_error (missing file, directory), errc::unsupported
+/// Complexity O(bytes). Errors: errc::io_error (missing file, directory), errc::unknown_format
 /// (unknown extension) and the parse errors of the format.
 inline result<polygon_soup> read_soup(const std::filesystem::path& path, const read_options& options = {}) {
     const auto format = format_from_extension(path);
@@ -110,7 +110,7 @@ inline result<polygon_soup> read_soup(const std::filesystem::path& path, const r
 /// property maps on Surface_mesh.
 /// On any error the mesh is unchanged. Complexity O(bytes + C log d + mesh insertions), C
 /// corners, d the largest vertex degree.
-/// Errors: errc::io_error, errc::unsupported, the format's parse errors; without repair, a
+/// Errors: errc::io_error, errc::unknown_format, the format's parse errors; without repair, a
 /// file a half-edge model cannot hold (errc::non_manifold, naming the face); for other models,
 /// the mesh's own add_face errors, naming the face.
 template <class M, class T = default_traits<M>>
@@ -129,7 +129,7 @@ result<read_report> read_mesh(M& mesh, const std::filesystem::path& path, const 
 
 /// Writes `mesh` atomically in the format named by the extension: a failure never leaves a
 /// truncated file and never touches an existing one. Complexity O(V + C).
-/// Errors: errc::unsupported (unknown extension), errc::io_error.
+/// Errors: errc::unknown_format (unknown extension), errc::io_error.
 template <class M, class T = default_traits<M>>
     requires writable_mesh<M, T>
 result<void> write_mesh(const M& mesh, const std::filesystem::path& path, const write_options& options = {}) {

@@ -47,7 +47,7 @@ struct marching_cubes_options {
     /// Worker threads (0: all available). The output does not depend on it.
     unsigned threads = 0;
     /// Called between z-slices of each of the three passes; returning false cancels the
-    /// extraction (error errc::unsupported, "marching_cubes: cancelled").
+    /// extraction (error errc::cancelled, "marching_cubes: cancelled").
     progress_function progress = {};
 };
 
@@ -319,7 +319,7 @@ public:
     }
 
 private:
-    static hmira::error cancelled() { return fail(errc::unsupported, "marching_cubes: cancelled"); }
+    static hmira::error cancelled() { return fail(errc::cancelled, "marching_cubes: cancelled"); }
 
     // Passes 1 and 2 of run(): classify, count, and lay out the rows' vertices and triangles.
     result<void> count(progress_gate& gate) {
@@ -852,7 +852,7 @@ struct marching_cubes_output {
 ///
 /// Progress: with a callback, the extraction reports fractions in [0, 0.5] and the insertion
 /// in [0.5, 1], about 64 times, between elements; returning false cancels either part.
-/// Errors: those of marching_cubes_indexed(); unsupported "marching_cubes: cancelled"; the
+/// Errors: those of marching_cubes_indexed(); cancelled "marching_cubes: cancelled"; the
 /// mesh's add_face error, naming the triangle.
 template <class M, class T = default_traits<M>, voxel_grid G>
     requires mesh_builder<M, T>
@@ -889,7 +889,7 @@ result<marching_cubes_output<M, T>> marching_cubes(M& mesh, const G& grid, const
             out.vertices.push_back(T::add_vertex(mesh, p));
             if (!keep_going()) {
                 undo();
-                return fail(errc::unsupported, "marching_cubes: cancelled");
+                return fail(errc::cancelled, "marching_cubes: cancelled");
             }
         }
         for (std::size_t i = 0; i < tri->triangles.size(); ++i) {
@@ -904,7 +904,7 @@ result<marching_cubes_output<M, T>> marching_cubes(M& mesh, const G& grid, const
             out.faces.push_back(f.value());
             if (!keep_going()) {
                 undo();
-                return fail(errc::unsupported, "marching_cubes: cancelled");
+                return fail(errc::cancelled, "marching_cubes: cancelled");
             }
         }
     } catch (...) {

@@ -56,7 +56,7 @@ struct voxelize_options {
     /// Worker threads (0: all available). The output does not depend on it.
     unsigned threads = 0;
     /// Called between blocks of triangles and of rows; returning false cancels the
-    /// voxelization (error errc::unsupported, "voxelize: cancelled").
+    /// voxelization (error errc::cancelled, "voxelize: cancelled").
     progress_function progress = {};
 };
 
@@ -859,7 +859,7 @@ result<voxelization> voxelize(const M& mesh, const grid_geometry& grid, const vo
     auto job = detail::vox::plan(options, g->closed, out.note, out.filled);
     if (!job) return job.error();
     if (!detail::vox::fill_window(g->tris, nullptr, nullptr, {0, 0, 0}, out.voxels, *job, options.threads, options.progress))
-        return fail(errc::unsupported, "voxelize: cancelled");
+        return fail(errc::cancelled, "voxelize: cancelled");
     return out;
 }
 

@@ -52,7 +52,7 @@ inline result<voxelization> fill_block(const gathered& g, const grid_geometry& g
     const std::array<long long, 3> lo{static_cast<long long>(block.lo[0]), static_cast<long long>(block.lo[1]),
                                       static_cast<long long>(block.lo[2])};
     if (!fill_window(g.tris, surface, crossing, lo, out.voxels, *job, options.threads, options.progress))
-        return fail(errc::unsupported, "voxelize: cancelled");
+        return fail(errc::cancelled, "voxelize: cancelled");
     return out;
 }
 

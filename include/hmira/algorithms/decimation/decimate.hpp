@@ -46,7 +46,7 @@ struct decimate_options {
     /// Vertex indices (T::vertex_index) that neither move nor disappear.
     std::vector<std::size_t> locked_vertices = {};
     /// Called between blocks of collapses with the fraction done; returning false cancels
-    /// (errc::unsupported, "decimate: cancelled") and restores the mesh from a copy taken
+    /// (errc::cancelled, "decimate: cancelled") and restores the mesh from a copy taken
     /// before the first change, which is made only when a callback is given.
     progress_function progress = {};
 };
@@ -404,7 +404,7 @@ template <class M, class T = default_traits<M>>
     detail::progress_gate gate(options.progress, total);
     if (!d.run(target, gate, out)) {
         mesh = std::move(backup.front());
-        return fail(errc::unsupported, "decimate: cancelled");
+        return fail(errc::cancelled, "decimate: cancelled");
     }
     out.faces = d.faces();
     out.vertices = T::vertex_count(mesh);

@@ -46,7 +46,7 @@ struct bevel_options {
     /// Called every 1024 elements stepped through (selected edges, touched vertices and corners
     /// while planning; new points, strips and replaced vertices while building), from the
     /// calling thread; returning false cancels: the mesh is rolled back (or, while planning,
-    /// never touched) and the error (errc::unsupported) ends in "cancelled".
+    /// never touched) and the error is errc::cancelled.
     progress_function progress = {};
 };
 

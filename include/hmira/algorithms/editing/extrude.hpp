@@ -38,7 +38,7 @@ struct extrude_options {
     extrude_mode mode = extrude_mode::region;  ///< see extrude_mode
     /// Called every 1024 faces (individual mode) or outline edges (region mode), from the
     /// calling thread; returning false cancels: the mesh is rolled back and the error
-    /// (errc::unsupported) ends in "cancelled".
+    /// is errc::cancelled.
     progress_function progress = {};
 };
 
@@ -234,7 +234,7 @@ result<void> extrude_region(M& m, const std::vector<typename T::face_handle>& fa
 /// region's faces (the pinch check sorts the outline; the rest is hashed, expected O(R);
 /// local: nothing outside the region and its outline fans is read).
 /// Atomic: on any error, when an allocation throws, or when options.progress cancels
-/// (errc::unsupported, "extrude: cancelled"), the mesh is unchanged (see detail/transaction.hpp).
+/// (errc::cancelled, "extrude: cancelled"), the mesh is unchanged (see detail/transaction.hpp).
 /// Errors (mesh unchanged): errc::invalid_argument for a zero, NaN or infinite distance, a
 /// zero direction or a zero normal, an empty selection; errc::invalid_handle for a missing
 /// face; errc::topology for a region that is not connected, has no outline (a whole closed

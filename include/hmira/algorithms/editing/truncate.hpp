@@ -27,7 +27,7 @@ struct truncate_options {
     double fraction = 1.0 / 3.0;  ///< in (0, 1); used when distance is 0
     double distance = 0.0;        ///< > 0: absolute distance along each edge, overrides fraction
     /// Called every 1024 cut points and new faces, from the calling thread; returning false
-    /// cancels: the mesh is rolled back and the error (errc::unsupported) ends in "cancelled".
+    /// cancels: the mesh is rolled back and the error is errc::cancelled.
     progress_function progress = {};
 };
 

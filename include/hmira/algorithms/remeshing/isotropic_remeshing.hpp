@@ -150,7 +150,7 @@ template <class M, class T = default_traits<M>>
     }
 
     detail::progress_gate gate(options.progress, 4 * options.iterations + 1);
-    auto cancelled = [] { return fail(errc::invalid_argument, "isotropic_remeshing: cancelled"); };
+    auto cancelled = [] { return fail(errc::cancelled, "isotropic_remeshing: cancelled"); };
     std::optional<aabb_tree> surface;
     if (options.project) {
         auto tree = aabb_tree_from_mesh<M, T>(mesh);

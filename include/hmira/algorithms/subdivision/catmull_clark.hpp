@@ -29,7 +29,7 @@ struct catmull_clark_options {
     /// multiplies the faces by 4). At most 10.
     std::size_t levels = 1;
     /// Called between blocks of work with the fraction done; returning false cancels (error
-    /// errc::unsupported, "catmull_clark_subdivide: cancelled", mesh unchanged). With a
+    /// errc::cancelled, "catmull_clark_subdivide: cancelled", mesh unchanged). With a
     /// callback the mesh is copied once before the first change, so that a cancellation can
     /// restore it; without one nothing can interrupt the levels and no copy is made.
     progress_function progress = {};
@@ -343,7 +343,7 @@ bool catmull_clark_level(M& mesh, cc_workspace<M, T>& w, progress_gate& gate) {
 /// Errors (mesh unchanged): errc::unsupported for a face with inner rings (naming it);
 /// errc::topology for an edge without faces or with the same face on both sides (naming it);
 /// errc::invalid_argument for more than 10 levels, or when the result would need more than
-/// 2^31 halfedges; errc::unsupported, "cancelled", when options.progress returns false.
+/// 2^31 halfedges; errc::cancelled when options.progress returns false.
 /// The mesh and the working arrays are sized for the last level before the first change, so
 /// std::bad_alloc comes before any change (a model's user property arrays excepted, which
 /// grow element by element).
@@ -410,7 +410,7 @@ template <class M, class T = default_traits<M>>
     for (std::size_t l = 0; l < options.levels; ++l) {
         if (!ds::catmull_clark_level<M, T>(mesh, work, gate)) {
             mesh = std::move(backup.front());
-            return fail(errc::unsupported, "catmull_clark_subdivide: cancelled");
+            return fail(errc::cancelled, "catmull_clark_subdivide: cancelled");
         }
     }
     return catmull_clark_result{T::vertex_count(mesh), T::edge_count(mesh), T::face_count(mesh)};

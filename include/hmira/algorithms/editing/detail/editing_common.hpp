@@ -51,7 +51,7 @@ public:
         if (!report_ || ++done_ % block != 0) return {};
         // Never backwards, though add_work() may grow the total after some reports.
         reported_ = std::max(reported_, done_ >= total_ ? 1.0 : double(done_) / double(total_));
-        if (!report_(reported_)) return fail(errc::unsupported, std::string(what_) + ": cancelled");
+        if (!report_(reported_)) return fail(errc::cancelled, std::string(what_) + ": cancelled");
         return {};
     }
 
