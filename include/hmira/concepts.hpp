@@ -267,4 +267,125 @@ concept change_counted_mesh = requires(const M& m) {
     { T::change_count(m) } -> std::convertible_to<std::uint64_t>;
 };
 
+// ---------------------------------------------------------------------------------------------
+// Optional hooks: operations a model's traits may offer so that an algorithm can take a faster
+// or cheaper path. No algorithm requires one; each tests the hook's concept and otherwise takes
+// its general path, with the same result.
+
+/// The optional hooks, for a traits class to list the ones it means to provide:
+///
+///     static constexpr hmira::hook hooks[] = {hmira::hook::reserve, hmira::hook::reverse_orientation};
+///
+/// Every listed hook is then checked wherever an algorithm looks for it: a hook whose name or
+/// parameters do not match (`reserv` for `reserve`) stops the build with a static_assert that
+/// names it. Without the list, such a hook is simply not found and the general path runs.
+enum class hook {
+    reserve,                  ///< reservable_mesh
+    bulk_growth,              ///< bulk_growable_mesh
+    reverse_orientation,      ///< orientation_reversible_mesh
+    prepare_erase,            ///< erase_preparing_mesh
+    remove_vertices,          ///< bulk_vertex_removal_mesh
+    restore_vertex_halfedge,  ///< vertex_halfedge_restorable_mesh
+    is_removed,               ///< removal_queryable_mesh
+};
+
+namespace detail {
+
+/// Whether T lists `h` in its `hooks` array.
+template <class T>
+consteval bool declares_hook(hook h) {
+    if constexpr (requires { T::hooks; }) {
+        for (hook listed : T::hooks)
+            if (listed == h) return true;
+    }
+    return false;
+}
+
+/// `found`, after stopping the build when T lists hook H but its operation was not found.
+template <class T, hook H, bool found>
+consteval bool checked_hook() {
+    constexpr bool ok = found || !declares_hook<T>(H);
+    if constexpr (H == hook::reserve)
+        static_assert(ok, "the traits list hook::reserve, but T::reserve(m, vertices, edges, faces) does not match");
+    else if constexpr (H == hook::bulk_growth)
+        static_assert(ok, "the traits list hook::bulk_growth, but T::resize(m, vertices, edges, faces), "
+                          "T::vertex_at(m, i), T::edge_at(m, i) or T::face_at(m, i) does not match");
+    else if constexpr (H == hook::reverse_orientation)
+        static_assert(ok, "the traits list hook::reverse_orientation, but T::reverse_orientation(m) does not match");
+    else if constexpr (H == hook::prepare_erase)
+        static_assert(ok, "the traits list hook::prepare_erase, but T::prepare_erase(m) does not match");
+    else if constexpr (H == hook::remove_vertices)
+        static_assert(ok, "the traits list hook::remove_vertices, but T::remove_vertices(m, vertices) does not match");
+    else if constexpr (H == hook::restore_vertex_halfedge)
+        static_assert(ok, "the traits list hook::restore_vertex_halfedge, but T::stored_vertex_halfedge(m, v) or "
+                          "T::restore_vertex_halfedge(m, v, h) does not match");
+    else if constexpr (H == hook::is_removed)
+        static_assert(ok, "the traits list hook::is_removed, but T::is_removed(m, x) does not match");
+    return found;
+}
+
+}  // namespace detail
+
+/// `T::reserve(m, vertices, edges, faces)` makes room for those index bounds, so that a
+/// growing algorithm never reallocates half way. Only capacity changes.
+template <class M, class T = default_traits<M>>
+concept reservable_mesh = detail::checked_hook<T, hook::reserve,
+    (requires(M& m, std::size_t n) { T::reserve(m, n, n, n); })>();
+
+/// `T::resize(m, vertices, edges, faces)` appends unlinked elements up to those index bounds,
+/// and `T::vertex_at(m, i)`, `T::edge_at(m, i)`, `T::face_at(m, i)` name an element by its
+/// index: new elements in blocks instead of one traits add at a time (OpenMesh, Surface_mesh).
+template <class M, class T = default_traits<M>>
+concept bulk_growable_mesh = detail::checked_hook<T, hook::bulk_growth, (requires(M& m, const M& cm, std::size_t n) {
+    T::resize(m, n, n, n);
+    { T::vertex_at(cm, n) } -> std::same_as<typename T::vertex_handle>;
+    { T::edge_at(cm, n) } -> std::same_as<typename T::edge_handle>;
+    { T::face_at(cm, n) } -> std::same_as<typename T::face_handle>;
+})>();
+
+/// `T::reverse_orientation(m)` reverses every face in one pass over the model's own storage.
+template <class M, class T = default_traits<M>>
+concept orientation_reversible_mesh = detail::checked_hook<T, hook::reverse_orientation,
+    (requires(M& m) { T::reverse_orientation(m); })>();
+
+/// `T::prepare_erase(m)` readies the model for erasures that a rollback may undo (OpenMesh
+/// requests its status flags once, before the first change, instead of inside the edit).
+template <class M, class T = default_traits<M>>
+concept erase_preparing_mesh = detail::checked_hook<T, hook::prepare_erase,
+    (requires(M& m) { T::prepare_erase(m); })>();
+
+/// `T::remove_vertices(m, vertices)`, with `vertices` a std::span<const vertex_handle>,
+/// removes them all in one pass, returning result<void>.
+template <class M, class T = default_traits<M>>
+concept bulk_vertex_removal_mesh = detail::checked_hook<T, hook::remove_vertices,
+    (requires(M& m, std::span<const typename T::vertex_handle> vs) {
+        { T::remove_vertices(m, vs) } -> std::same_as<result<void>>;
+    })>();
+
+/// `T::stored_vertex_halfedge(m, v)` reads the halfedge the model stores for v (which may
+/// differ from vertex_halfedge: CGAL keeps an incoming one) and
+/// `T::restore_vertex_halfedge(m, v, h)` writes such a value back, so a rollback restores the
+/// model's storage exactly.
+template <class M, class T = default_traits<M>>
+concept vertex_halfedge_restorable_mesh = detail::checked_hook<T, hook::restore_vertex_halfedge,
+    (requires(M& m, typename T::vertex_handle v, typename T::halfedge_handle h) {
+        { T::stored_vertex_halfedge(m, v) } -> std::convertible_to<typename T::halfedge_handle>;
+        T::restore_vertex_halfedge(m, v, h);
+    })>();
+
+/// `T::is_removed(m, x)` tells whether the element x (a handle of type Handle) was erased.
+template <class M, class T, class Handle>
+concept removal_queryable_mesh = detail::checked_hook<T, hook::is_removed,
+    (requires(const M& m, Handle x) { { T::is_removed(m, x) } -> std::convertible_to<bool>; })>();
+
+/// A triangle-only model: its traits declare `static constexpr bool triangles_only = true;`.
+template <class M, class T = default_traits<M>>
+concept triangle_only_mesh = requires { requires T::triangles_only; };
+
+/// Test hook of the fault-injection suites: `T::fail_inner_call()` returns true to make the
+/// next inner operator call of an edit fail as if its precondition had not held. No real
+/// model has it.
+template <class T>
+concept fault_injecting_traits = requires { { T::fail_inner_call() } -> std::convertible_to<bool>; };
+
 }  // namespace hmira

@@ -811,7 +811,7 @@ void undo_insertion(M& m, std::span<const typename T::face_handle> faces, std::s
         // The handles were just created, so these removals cannot fail.
         for (auto it = faces.rbegin(); it != faces.rend(); ++it)
             if (!T::remove_face(m, *it)) break;
-        if constexpr (requires { T::remove_vertices(m, vertices); }) {
+        if constexpr (bulk_vertex_removal_mesh<M, T>) {
             if (!T::remove_vertices(m, vertices)) return;
         } else {
             for (auto v : vertices)
@@ -870,7 +870,7 @@ result<marching_cubes_output<M, T>> marching_cubes(M& mesh, const G& grid, const
     out.faces.reserve(tri->triangles.size());
     constexpr bool undoable = detail::mc::can_undo_insertion<M, T>;
     if constexpr (undoable)
-        if constexpr (requires { T::prepare_erase(mesh); }) T::prepare_erase(mesh);
+        if constexpr (erase_preparing_mesh<M, T>) T::prepare_erase(mesh);
 
     const std::size_t total = tri->positions.size() + tri->triangles.size();
     const std::size_t block = std::max<std::size_t>(total / 64, 1);

@@ -93,7 +93,7 @@ std::string name(const char* kind, const M& m, Handle h) {
 /// without the query cannot tell; passing it a deleted element stays undefined there.
 template <class M, class T, class Handle>
 bool known_removed(const M& m, Handle x) {
-    if constexpr (requires { { T::is_removed(m, x) } -> std::convertible_to<bool>; }) return T::is_removed(m, x);
+    if constexpr (removal_queryable_mesh<M, T, Handle>) return T::is_removed(m, x);
     else { (void)m; (void)x; return false; }
 }
 

@@ -46,7 +46,7 @@ std::size_t flip_normals(M& mesh) {
 template <class M, class T = default_traits<M>>
     requires halfedge_flip_mesh<M, T> && (!face_reversible_mesh<M, T>)
 std::size_t flip_normals(M& mesh) {
-    if constexpr (requires { T::reverse_orientation(mesh); }) {
+    if constexpr (orientation_reversible_mesh<M, T>) {
         T::reverse_orientation(mesh);
         return T::face_count(mesh);
     }

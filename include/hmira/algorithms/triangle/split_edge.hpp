@@ -141,7 +141,7 @@ template <class M, class T = default_traits<M>>
         return fail(errc::invalid_argument, "split_edge: option position is not finite", de::index_of<M, T>(mesh, h));
     const bool cut_h = options.split_triangles && dt::in_triangle<M, T>(mesh, h);
     const bool cut_o = options.split_triangles && dt::in_triangle<M, T>(mesh, o) && T::face(mesh, o) != T::face(mesh, h);
-    if constexpr (requires { requires T::triangles_only; }) {
+    if constexpr (triangle_only_mesh<M, T>) {
         const bool h_polygon = T::face(mesh, h) != T::null_face() && !cut_h;
         const bool o_polygon = T::face(mesh, o) != T::null_face() && !cut_o;
         if (h_polygon || o_polygon)

@@ -233,7 +233,7 @@ template <class M, class T = default_traits<M>>
     triangulate_faces_result out;
     std::size_t added = quads.size();
     for (const auto& pl : plans) added += pl.triangles.size() - 1;
-    if constexpr (requires { T::reserve(mesh, 0, 0, 0); T::edge_index_bound(mesh); })
+    if constexpr (reservable_mesh<M, T> && edge_index_mesh<M, T>)
         T::reserve(mesh, T::vertex_index_bound(mesh), T::edge_index_bound(mesh) + added, T::face_index_bound(mesh) + added);
     for (const auto& q : quads) {
         // The face's halfedges into the diagonal's two corners.

@@ -322,7 +322,7 @@ result<read_report> build_with_repair(M& mesh, polygon_soup&& soup, const std::s
             return fail(errc::non_manifold, name + (face >= 0 ? ": face " + std::to_string(face) + " " : ": ") + why +
                                                 " (read with repair to fix it)", face);
         }
-        if constexpr (requires { requires T::triangles_only; }) {
+        if constexpr (triangle_only_mesh<M, T>) {
             for (std::size_t f = 0; f < repaired->face_count(); ++f)
                 if (repaired->face_offsets[f + 1] - repaired->face_offsets[f] != 3) {
                     const auto source = repaired->face_source[f];
@@ -335,7 +335,7 @@ result<read_report> build_with_repair(M& mesh, polygon_soup&& soup, const std::s
         detail::clear_for_reading(mesh);
         // Room for every element up front (edges: half the corners, plus room for boundaries), so that the build
         // does not reallocate the mesh's arrays as it grows.
-        if constexpr (requires { T::reserve(mesh, std::size_t{}, std::size_t{}, std::size_t{}); })
+        if constexpr (reservable_mesh<M, T>)
             T::reserve(mesh, repaired->vertex_count, repaired->corners.size() / 2 + repaired->vertex_count, repaired->face_count());
         std::vector<VH> vs;
         vs.reserve(repaired->vertex_count);

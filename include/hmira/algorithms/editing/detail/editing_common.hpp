@@ -90,7 +90,7 @@ point<M, T> to_point(const vec3<double>& p) {
 /// edits would otherwise reallocate (exact reserve) on every call. Only capacity changes.
 template <class M, class T>
 void reserve_growth(M& m, std::size_t vertices, std::size_t edges, std::size_t faces) {
-    if constexpr (requires { T::reserve(m, vertices, edges, faces); T::edge_index_bound(m); }) {
+    if constexpr (reservable_mesh<M, T> && edge_index_mesh<M, T>) {
         const std::size_t nv = T::vertex_index_bound(m), ne = T::edge_index_bound(m), nf = T::face_index_bound(m);
         if (8 * (vertices + edges + faces) >= nv + ne + nf) T::reserve(m, nv + vertices, ne + edges, nf + faces);
     }
@@ -328,7 +328,7 @@ result<void> check_corner_vertex(const M& m, typename T::vertex_handle v, const 
 /// had not held) when it returns true. Absent on every real model: compiles to nothing.
 template <class T>
 result<void> inner_call_allowed(const char* what) {
-    if constexpr (requires { { T::fail_inner_call() } -> std::convertible_to<bool>; }) {
+    if constexpr (fault_injecting_traits<T>) {
         if (T::fail_inner_call()) return fail(errc::topology, std::string(what) + ": failure injected by the traits (test hook)");
     }
     return {};

@@ -120,7 +120,7 @@ public:
         if (!old(m, v)) return;
         // A model whose vertex_halfedge is derived from what it stores (CGAL keeps an incoming
         // halfedge) offers the stored value as is; the rollback writes that back.
-        if constexpr (requires { T::stored_vertex_halfedge(m, v); })
+        if constexpr (vertex_halfedge_restorable_mesh<M, T>)
             entries_.push_back({kind::vertex_halfedge, H{}, T::stored_vertex_halfedge(m, v), v, F{}});
         else
             entries_.push_back({kind::vertex_halfedge, H{}, T::vertex_halfedge(m, v), v, F{}});
@@ -184,7 +184,7 @@ public:
             case kind::target: T::set_target(m, it->h, it->v); break;
             case kind::face: T::set_face(m, it->h, it->f); break;
             case kind::vertex_halfedge:
-                if constexpr (requires { T::restore_vertex_halfedge(m, it->v, it->old_h); })
+                if constexpr (vertex_halfedge_restorable_mesh<M, T>)
                     T::restore_vertex_halfedge(m, it->v, it->old_h);
                 else
                     T::set_vertex_halfedge(m, it->v, it->old_h);
@@ -312,7 +312,7 @@ struct journaled_traits : T {
 template <class M, class T, class Body>
 auto transact(M& m, Body&& body) -> decltype(body.template operator()<journaled_traits<M, T>>()) {
     using JT = journaled_traits<M, T>;
-    if constexpr (requires { T::prepare_erase(m); }) T::prepare_erase(m);
+    if constexpr (erase_preparing_mesh<M, T>) T::prepare_erase(m);
     journal<M, T> j(m);
     struct activation {
         journal<M, T>* saved;

@@ -9,22 +9,10 @@
 #include <cstddef>
 
 #include "../../../core/vec3.hpp"
+#include "../../../concepts.hpp"
 #include "../../../traits.hpp"
 
 namespace hmira::detail::subdivision {
-
-/// A model whose traits append unlinked elements in bulk (resize) and name an element by its
-/// index (vertex_at, edge_at, face_at): OpenMesh and CGAL's Surface_mesh, where adding
-/// elements one at a time resizes every property array once per element, through a virtual
-/// call each. (On Surface_mesh a block's default fill still costs ~5 ns an element, see its
-/// traits' resize: the bulk path saves the per-element calls, not the fill.)
-template <class M, class T>
-concept bulk_growable_mesh = requires(M& m, const M& cm, std::size_t n) {
-    T::resize(m, n, n, n);
-    { T::vertex_at(cm, n) } -> std::same_as<typename T::vertex_handle>;
-    { T::edge_at(cm, n) } -> std::same_as<typename T::edge_handle>;
-    { T::face_at(cm, n) } -> std::same_as<typename T::face_handle>;
-};
 
 /// Hands out new elements in index order, as the traits' add_vertex, new_edge and new_face
 /// would. On a bulk_growable_mesh it appends blocks of unlinked elements (a block is linked

@@ -5,6 +5,7 @@
 
 #include <cstddef>
 
+#include "../../../concepts.hpp"
 #include "../../../traits.hpp"
 
 namespace hmira::detail::subdivision {
@@ -15,7 +16,7 @@ namespace hmira::detail::subdivision {
 /// forward it), else nothing. Only capacity changes.
 template <class M, class T>
 void reserve_room(M& mesh, std::size_t vertices, std::size_t edges, std::size_t faces) {
-    if constexpr (requires { T::reserve(mesh, vertices, edges, faces); })
+    if constexpr (reservable_mesh<M, T>)
         T::reserve(mesh, vertices, edges, faces);
     else if constexpr (requires { mesh.reserve(vertices, edges, faces); } && requires { mesh.edge_index_bound(); })
         mesh.reserve(vertices, edges, faces);
