@@ -144,15 +144,18 @@ result<source_soup> read_source(const MS& src, bool attributes) {
             return " (" + std::to_string(q[0]) + ", " + std::to_string(q[1]) + ", " + std::to_string(q[2]) + ")";
         };
         if (!std::isfinite(q[0]) || !std::isfinite(q[1]) || !std::isfinite(q[2]))
-            return fail(errc::invalid_argument, "copy_mesh: source vertex " + std::to_string(i) + " has a non-finite position" + where(),
+            return fail(errc::invalid_argument,
+                        "copy_mesh: source vertex " + std::to_string(i) + " has a non-finite position" + where(),
                         static_cast<long long>(i));
-        if (!std::isfinite(static_cast<SD>(q[0])) || !std::isfinite(static_cast<SD>(q[1])) || !std::isfinite(static_cast<SD>(q[2])))
+        const auto fits = [](double c) { return std::isfinite(static_cast<SD>(c)); };
+        if (!fits(q[0]) || !fits(q[1]) || !fits(q[2]))
             return fail(errc::invalid_argument,
                         "copy_mesh: source vertex " + std::to_string(i) + "'s position" + where() +
                             " overflows the destination's coordinate type",
                         static_cast<long long>(i));
         if (out.soup.points.size() >= none)
-            return fail(errc::unsupported, "copy_mesh: the source has 2^32 vertices or more; at most 2^32 - 1 are supported");
+            return fail(errc::unsupported,
+                        "copy_mesh: the source has 2^32 vertices or more; at most 2^32 - 1 are supported");
         soup_index[i] = static_cast<std::uint32_t>(out.soup.points.size());
         out.soup.points.push_back(q);
         out.vertex_ids.push_back(i);
@@ -166,7 +169,8 @@ result<source_soup> read_source(const MS& src, bool attributes) {
             for (auto r : TS::inner_rings(src, f))
                 return (void)r, fail(errc::unsupported,
                                      "copy_mesh: " + face_name<MS, TS>(number) +
-                                         " has inner rings, which a vertex loop cannot carry; cut it first with triangulate_faces",
+                                         " has inner rings, which a vertex loop cannot carry;"
+                                         " cut it first with triangulate_faces",
                                      static_cast<long long>(number));
         }
         for (auto v : TS::face_vertices(src, f)) {
@@ -182,16 +186,18 @@ result<source_soup> read_source(const MS& src, bool attributes) {
         out.face_ids.push_back(number);
         if (number >= out.face_bound) out.face_bound = number + 1;
     }
-    if constexpr (face_index_mesh<MS, TS>) out.face_bound = std::max<std::size_t>(out.face_bound, TS::face_index_bound(src));
+    if constexpr (face_index_mesh<MS, TS>)
+        out.face_bound = std::max<std::size_t>(out.face_bound, TS::face_index_bound(src));
     if (attributes) {
         if constexpr (io::detail::has_vertex_properties<MS>) {
             if (auto p = src.template get_vertex_property<vec3<float>>("v:normal"); p && p->values().size() >= bound) {
                 out.soup.attributes.normals.reserve(out.vertex_ids.size());
                 for (auto i : out.vertex_ids) out.soup.attributes.normals.push_back(p->values()[i]);
             }
-            if (auto p = src.template get_vertex_property<io::detail::color4>("v:color"); p && p->values().size() >= bound) {
+            const auto c = src.template get_vertex_property<io::detail::color4>("v:color");
+            if (c && c->values().size() >= bound) {
                 out.soup.attributes.colors.reserve(out.vertex_ids.size());
-                for (auto i : out.vertex_ids) out.soup.attributes.colors.push_back(p->values()[i]);
+                for (auto i : out.vertex_ids) out.soup.attributes.colors.push_back(c->values()[i]);
             }
         }
     }
@@ -221,12 +227,14 @@ template <class MD, class TD>
 result<void> build(MD& dst, const io::polygon_soup& soup) {
     auto origin = [](std::size_t) { return std::string(); };
     if constexpr (io::detail::assigns_polygons<MD, TD>) {
-        if (dst.assign_polygons(std::span<const std::array<double, 3>>(soup.points), std::span<const std::uint64_t>(soup.face_offsets),
+        if (dst.assign_polygons(std::span<const std::array<double, 3>>(soup.points),
+                                std::span<const std::uint64_t>(soup.face_offsets),
                                 std::span<const std::uint32_t>(soup.indices))) {
             std::vector<typename TD::vertex_handle> vs;
             if (!soup.attributes.normals.empty() || !soup.attributes.colors.empty()) {
                 vs.reserve(soup.points.size());
-                for (std::size_t i = 0; i < soup.points.size(); ++i) vs.push_back(typename TD::vertex_handle(static_cast<std::uint32_t>(i)));
+                for (std::size_t i = 0; i < soup.points.size(); ++i)
+                    vs.push_back(typename TD::vertex_handle(static_cast<std::uint32_t>(i)));
             }
             io::detail::store_attribute_properties<MD, TD>(dst, soup.attributes, vs);
             return {};
@@ -242,9 +250,11 @@ template <class MS, class MD, class TS, class TD>
     requires copy_source_mesh<MS, TS> && copy_target_mesh<MD, TD>
 result<copy_mesh_report<MD, TD>> copy_mesh(const MS& src, MD& dst, const copy_mesh_options& options) {
     if (options.vertex_map && !vertex_list_mesh<MD, TD>)
-        return fail(errc::unsupported, "copy_mesh: a vertex map needs a destination model that lists its vertices (T::vertices)");
+        return fail(errc::unsupported,
+                    "copy_mesh: a vertex map needs a destination model that lists its vertices (T::vertices)");
     if (options.face_map && !face_list_mesh<MD, TD>)
-        return fail(errc::unsupported, "copy_mesh: a face map needs a destination model that lists its faces (T::faces)");
+        return fail(errc::unsupported,
+                    "copy_mesh: a face map needs a destination model that lists its faces (T::faces)");
     auto read = detail::copy::read_source<MS, TS, typename TD::scalar>(src, options.attributes);
     if (!read) return read.error();
     const detail::copy::source_soup& s = *read;
