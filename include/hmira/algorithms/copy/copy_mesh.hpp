@@ -78,16 +78,16 @@ concept copy_target_mesh = io::readable_mesh<M, T>;
 ///
 /// \pre `src` and `dst` may be the same object (the copy is taken before `dst` changes).
 /// \post on success, `dst` holds exactly the copy: vertex_count and face_count equal the
-///       source's, each copied face's loop is the mapped source loop (same start, same
-///       winding), and the report's maps say where each source element went. On error `dst`
-///       is unchanged and the message names the element: a non-finite source position
-///       (errc::invalid_argument, "source vertex 4 ..."), a position the destination's scalar
-///       type cannot hold finitely (errc::invalid_argument), a face naming a vertex that is
-///       not a live source vertex (errc::invalid_handle), a face with inner rings
-///       (errc::unsupported), a face the destination refuses (its add_face's code and reason,
-///       e.g. errc::non_manifold for a third face on an edge of a half-edge model, or
-///       errc::unsupported for a quad into a triangles-only one), a map asked of a destination
-///       that cannot list its elements (errc::unsupported), or 2^32 vertices or more
+///       source's, each copied face's loop is the mapped source loop (same winding; the
+///       corner it starts at is the model's), and the report's maps say where each source
+///       element went. On error `dst` is unchanged and the message names the element: a
+///       non-finite source position (errc::invalid_argument, "source vertex 4 ..."), a
+///       position the destination's scalar type cannot hold finitely (errc::invalid_argument),
+///       a face naming a vertex that is not a live source vertex (errc::invalid_handle), a face
+///       with inner rings (errc::unsupported), a face the destination refuses (its add_face's
+///       code and reason, e.g. errc::non_manifold for a third face on an edge of a half-edge
+///       model, or a quad into a triangles-only model), a map asked of a destination that
+///       cannot list its elements (errc::unsupported), or 2^32 vertices or more
 ///       (errc::unsupported).
 /// Complexity: O(V_bound + F + C) to read the source, for C face corners, then O(V + C) calls
 /// to the destination's add operations (V add_vertex, F add_face with C corners in all). A
