@@ -23,6 +23,7 @@
 
 #include <hmira/adapters/adapted_mesh.hpp>
 #include <hmira/algorithms/conversion/delaunay_triangulation.hpp>
+#include <hmira/algorithms/copy/copy_mesh.hpp>
 #include <hmira/algorithms/conversion/marching_cubes.hpp>
 #include <hmira/algorithms/conversion/voxelize.hpp>
 #include <hmira/algorithms/editing/editing.hpp>
@@ -182,6 +183,10 @@ HMIRA_ROW(row_smooth, "laplacian_smooth, taubin_smooth", "algorithms/smoothing/l
           hmira::taubin_smooth<M, T>(m));
 HMIRA_ROW(row_remesh, "isotropic_remeshing", "algorithms/remeshing/isotropic_remeshing.hpp", hmira::remeshable_mesh, (M & m),
           hmira::isotropic_remeshing<M, T>(m, {.target_edge_length = 1}));
+HMIRA_ROW(row_copy_from, "copy_mesh (from this model, e.g. into halfedge_mesh)", "algorithms/copy/copy_mesh.hpp", hmira::copy_source_mesh,
+          (const M& m, hmira::halfedge_mesh& h), hmira::copy_mesh<M, hmira::halfedge_mesh, T>(m, h));
+HMIRA_ROW(row_copy_into, "copy_mesh (into this model, e.g. from halfedge_mesh)", "algorithms/copy/copy_mesh.hpp", hmira::copy_target_mesh,
+          (M & m, const hmira::halfedge_mesh& h), hmira::copy_mesh<hmira::halfedge_mesh, M, hmira::default_traits<hmira::halfedge_mesh>, T>(h, m));
 HMIRA_ROW(row_aabb_tree, "aabb_tree_from_mesh (closest_point, ray_intersect)", "algorithms/spatial/aabb_tree.hpp",
           hmira::aabb_tree_source_mesh, (const M& m), hmira::aabb_tree_from_mesh<M, T>(m));
 HMIRA_ROW(row_marching_cubes, "marching_cubes (into the mesh)", "algorithms/conversion/marching_cubes.hpp", hmira::mesh_builder,
@@ -205,7 +210,7 @@ using rows = row_list<row_triangle_solids, row_polygon_solids, row_torus, row_gr
                       row_vertex_normals, row_euler, row_euler_ring, row_split_vertex, row_add_vertex_face, row_edge_primitives,
                       row_remove_face, row_remove_vertex, row_truncate, row_bevel, row_extrude, row_flip_edge, row_split_edge,
                       row_split_face, row_collapse_edge, row_face_triangles, row_triangulate_faces, row_fill_hole, row_fill_holes,
-                      row_loop, row_sqrt3, row_catmull_clark, row_decimate, row_smooth, row_remesh, row_aabb_tree, row_marching_cubes, row_voxelize, row_delaunay, row_read,
+                      row_loop, row_sqrt3, row_catmull_clark, row_decimate, row_smooth, row_remesh, row_copy_from, row_copy_into, row_aabb_tree, row_marching_cubes, row_voxelize, row_delaunay, row_read,
                       row_write, row_adapt_brute, row_adapt_indexed>;
 
 // ---- the capabilities of concepts.hpp: one row each -------------------------------------------
@@ -680,6 +685,26 @@ void run_everyday_claims() {
         ASSERT_TRUE(r) << title << ": " << r.error().message;
         EXPECT_GT(T::face_count(m), 20u) << title;
         EXPECT_TRUE(valid_closed(m));
+    }
+    if constexpr (row_copy_from::supported<M> && row_copy_into::supported<M>) {
+        // Into a half-edge mesh, decimated there, and back: the way a face list runs decimate.
+        auto m = icosahedron<M>();
+        hmira::halfedge_mesh h;
+        auto in = hmira::copy_mesh(m, h);
+        ASSERT_TRUE(in) << title << ": " << in.error().message;
+        EXPECT_EQ(vef_counts(h), (counts_t{12, 30, 20})) << title;
+        ASSERT_TRUE(hmira::decimate(h, {.target_faces = 16})) << title;
+        auto out = hmira::copy_mesh(h, m);
+        ASSERT_TRUE(out) << title << ": " << out.error().message;
+        EXPECT_EQ(T::vertex_count(m), 10u) << title;
+        EXPECT_EQ(T::face_count(m), 16u) << title;
+        EXPECT_TRUE(valid_closed(m));
+    } else if constexpr (row_copy_from::supported<M>) {
+        const auto m = icosahedron<M>();
+        hmira::halfedge_mesh h;
+        auto in = hmira::copy_mesh(m, h);
+        ASSERT_TRUE(in) << title << ": " << in.error().message;
+        EXPECT_EQ(vef_counts(h), (counts_t{12, 30, 20})) << title;
     }
     if constexpr (row_aabb_tree::supported<M>) {
         auto m = icosahedron<M>();
