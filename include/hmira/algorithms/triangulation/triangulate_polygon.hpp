@@ -364,8 +364,9 @@ struct triangulate_polygon_options {
 /// rightmost corners are split and merge corners of the sweep), then each piece is
 /// triangulated by the linear stack algorithm. Every decision is an exact orientation test or
 /// a comparison of coordinates, so concave and nearly degenerate polygons come out right.
-/// Collinear corners are kept (each is a corner of some triangle); a triangle has zero area
-/// only where the corners leave no other choice.
+/// Collinear corners are kept, each a corner of some triangle. A triangle has zero area only
+/// if a corner of a monotone piece lies on the line through two corners of the piece's other
+/// chain (the tests' random, lattice and comb polygons give none).
 ///
 /// Errors (nothing returned): errc::invalid_argument for a coordinate that is not finite or
 /// out of the exact predicates' range, or an index out of range; errc::degenerate_face for a
