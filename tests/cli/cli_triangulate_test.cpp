@@ -18,7 +18,9 @@ namespace {
 
 using hmira_test::scratch_dir;
 
-hmira_test::run_result hmira(const scratch_dir& dir, const std::string& args) { return hmira_test::run_cli(HMIRA_CLI, dir, args); }
+hmira_test::run_result hmira(const scratch_dir& dir, const std::string& args) {
+    return hmira_test::run_cli(HMIRA_CLI, dir, args);
+}
 
 /// The comb as OFF, counter-clockwise seen from +z; its area is 20,000 for the bar plus 75,000 for the teeth.
 std::string comb_off(std::size_t teeth, double& area) {

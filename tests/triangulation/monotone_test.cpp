@@ -26,7 +26,9 @@ using tris_t = std::vector<std::array<std::size_t, 3>>;
 
 /// Twice the signed area of a, b, c. Exact for the coordinates used here: integers below 2^20,
 /// or quarters below 2^16.
-double cross(const point2& a, const point2& b, const point2& c) { return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]); }
+double cross(const point2& a, const point2& b, const point2& c) {
+    return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+}
 
 /// Twice the signed area of a loop (shoelace).
 double twice_area(const std::vector<point2>& p, const std::vector<std::size_t>& loop) {
@@ -44,7 +46,8 @@ bool meet(const point2& a, const point2& b, const point2& c, const point2& d) {
     auto sgn = [](double x) { return (x > 0) - (x < 0); };
     const int o1 = sgn(cross(a, b, c)), o2 = sgn(cross(a, b, d)), o3 = sgn(cross(c, d, a)), o4 = sgn(cross(c, d, b));
     auto on = [](const point2& p, const point2& q, const point2& r) {
-        return std::min(p[0], q[0]) <= r[0] && r[0] <= std::max(p[0], q[0]) && std::min(p[1], q[1]) <= r[1] && r[1] <= std::max(p[1], q[1]);
+        return std::min(p[0], q[0]) <= r[0] && r[0] <= std::max(p[0], q[0]) && std::min(p[1], q[1]) <= r[1] &&
+               r[1] <= std::max(p[1], q[1]);
     };
     if (o1 * o2 < 0 && o3 * o4 < 0) return true;
     return (o1 == 0 && on(a, b, c)) || (o2 == 0 && on(a, b, d)) || (o3 == 0 && on(c, d, a)) || (o4 == 0 && on(c, d, b));
@@ -57,7 +60,8 @@ bool simple(const std::vector<point2>& p, const loops_t& loops) {
     };
     std::vector<seg> segs;
     for (std::size_t l = 0; l < loops.size(); ++l)
-        for (std::size_t i = 0; i < loops[l].size(); ++i) segs.push_back({l, i, loops[l][i], loops[l][(i + 1) % loops[l].size()]});
+        for (std::size_t i = 0; i < loops[l].size(); ++i)
+            segs.push_back({l, i, loops[l][i], loops[l][(i + 1) % loops[l].size()]});
     for (std::size_t i = 0; i < segs.size(); ++i)
         for (std::size_t j = i + 1; j < segs.size(); ++j) {
             const auto& s = segs[i];
@@ -65,9 +69,11 @@ bool simple(const std::vector<point2>& p, const loops_t& loops) {
             const std::size_t k = loops[s.loop].size();
             const bool consecutive = s.loop == t.loop && (t.pos == (s.pos + 1) % k || s.pos == (t.pos + 1) % k);
             if (consecutive && k > 3) {
-                const std::size_t mid = t.a == s.b ? s.b : s.a, near = t.a == s.b ? s.a : s.b, far = t.a == s.b ? t.b : t.a;
+                const std::size_t mid = t.a == s.b ? s.b : s.a, near = t.a == s.b ? s.a : s.b,
+                                  far = t.a == s.b ? t.b : t.a;
                 const auto &m = p[mid], &u = p[near], &w = p[far];
-                if (cross(u, m, w) == 0 && (w[0] - m[0]) * (u[0] - m[0]) + (w[1] - m[1]) * (u[1] - m[1]) > 0) return false;
+                if (cross(u, m, w) == 0 && (w[0] - m[0]) * (u[0] - m[0]) + (w[1] - m[1]) * (u[1] - m[1]) > 0)
+                    return false;
                 continue;
             }
             if (consecutive) continue;
@@ -81,7 +87,8 @@ bool simple(const std::vector<point2>& p, const loops_t& loops) {
 /// triangle of zero area in these polygons), the exact area, each loop
 /// edge used once and every other side twice in opposite directions. A triangulated region whose
 /// triangles all wind positively and whose boundary is the loops covers each point once.
-void expect_exact_cover(const std::vector<point2>& p, const loops_t& loops, const tris_t& tris, bool proper, const std::string& what) {
+void expect_exact_cover(const std::vector<point2>& p, const loops_t& loops, const tris_t& tris, bool proper,
+                        const std::string& what) {
     std::size_t corners = 0;
     double area = 0;
     for (const auto& l : loops) {
@@ -109,7 +116,8 @@ void expect_exact_cover(const std::vector<point2>& p, const loops_t& loops, cons
         }
     for (const auto& [e, n] : uses) {
         ASSERT_EQ(n, 1) << what << ": side " << e.first << "-" << e.second << " used twice the same way";
-        ASSERT_EQ(uses.count({e.second, e.first}), 1u) << what << ": inner side " << e.first << "-" << e.second << " has no twin";
+        ASSERT_EQ(uses.count({e.second, e.first}), 1u)
+            << what << ": inner side " << e.first << "-" << e.second << " has no twin";
     }
 }
 
@@ -126,8 +134,11 @@ void expect_no_overlap(const std::vector<point2>& p, const tris_t& tris, const s
     };
     for (std::size_t i = 0; i < tris.size(); ++i)
         for (std::size_t j = i + 1; j < tris.size(); ++j) {
-            if (cross(p[tris[i][0]], p[tris[i][1]], p[tris[i][2]]) == 0 || cross(p[tris[j][0]], p[tris[j][1]], p[tris[j][2]]) == 0) continue;
-            ASSERT_TRUE(separates(tris[i], tris[j]) || separates(tris[j], tris[i])) << what << ": triangles " << i << " and " << j;
+            if (cross(p[tris[i][0]], p[tris[i][1]], p[tris[i][2]]) == 0 ||
+                cross(p[tris[j][0]], p[tris[j][1]], p[tris[j][2]]) == 0)
+                continue;
+            ASSERT_TRUE(separates(tris[i], tris[j]) || separates(tris[j], tris[i]))
+                << what << ": triangles " << i << " and " << j;
         }
 }
 
@@ -174,10 +185,14 @@ TEST(triangulate_polygon_monotone, a_comb_of_ten_thousand_trapezoid_teeth_is_tri
 point2 transform(const point2& q, int s) {
     const double x = q[0], y = q[1];
     switch (s & 3) {
-        case 0: return s & 4 ? point2{-x, y} : point2{x, y};
-        case 1: return s & 4 ? point2{y, x} : point2{-y, x};
-        case 2: return s & 4 ? point2{x, -y} : point2{-x, -y};
-        default: return s & 4 ? point2{-y, -x} : point2{y, -x};
+        case 0:
+            return s & 4 ? point2{-x, y} : point2{x, y};
+        case 1:
+            return s & 4 ? point2{y, x} : point2{-y, x};
+        case 2:
+            return s & 4 ? point2{x, -y} : point2{-x, -y};
+        default:
+            return s & 4 ? point2{-y, -x} : point2{y, -x};
     }
 }
 
@@ -360,7 +375,8 @@ std::size_t sweep_work(const std::vector<point2>& p, const loops_t& loops) {
 TEST(triangulate_polygon_monotone, the_work_grows_as_n_log_n) {
     // Four times the corners costs less than five times the work (n log n from 4,000 to 16,000
     // corners grows 4.7 times; quadratic would be 16). Counted, not timed.
-    const double comb = double(sweep_work(trapezoid_comb(4000), one_loop(16003))) / double(sweep_work(trapezoid_comb(1000), one_loop(4003)));
+    const double comb = double(sweep_work(trapezoid_comb(4000), one_loop(16003))) /
+                        double(sweep_work(trapezoid_comb(1000), one_loop(4003)));
     EXPECT_LT(comb, 5.0) << "comb";
     std::printf("work ratios at 4n / n: comb %.2f", comb);
     EXPECT_GT(comb, 3.5) << "comb";
@@ -374,7 +390,8 @@ TEST(triangulate_polygon_monotone, the_work_grows_as_n_log_n) {
         }
         return p;
     };
-    const double star = double(sweep_work(jagged(16000), one_loop(16000))) / double(sweep_work(jagged(4000), one_loop(4000)));
+    const double star =
+        double(sweep_work(jagged(16000), one_loop(16000))) / double(sweep_work(jagged(4000), one_loop(4000)));
     EXPECT_LT(star, 5.0) << "star";
     std::printf(", star %.2f", star);
     const auto s1 = random_spiral(rng, 100, 10), s4 = random_spiral(rng, 400, 10);

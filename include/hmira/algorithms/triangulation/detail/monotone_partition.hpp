@@ -86,76 +86,100 @@ inline corner_kind classify(monotone_context& x, std::size_t v) {
 /// split corner back to the helper of the edge below it, one from every merge corner forward
 /// to the next corner that becomes that helper. The helper of a status edge is the last corner
 /// swept whose view down ends on that edge.
-inline std::vector<std::array<std::size_t, 2>> monotone_diagonals(monotone_context& x, const std::vector<std::size_t>& order) {
-    const std::size_t n = x.vid.size();
-    std::vector<corner_kind> kind(n);
-    for (std::size_t c = 0; c < n; ++c) kind[c] = classify(x, c);
-    using status_t = std::set<std::size_t, edge_below>;
-    status_t status(edge_below{&x});
-    std::vector<status_t::iterator> where(n, status.end());
-    std::vector<std::size_t> helper(n, n);
-    std::vector<std::array<std::size_t, 2>> out;
-    auto below = [&](std::size_t v) {  // the status edge directly below corner v
-        auto it = status.lower_bound(n + v);
-        return *std::prev(it);
-    };
-    auto close = [&](std::size_t e, std::size_t v) {  // edge e ends at v
-        if (kind[helper[e]] == corner_kind::merge) out.push_back({v, helper[e]});
-        status.erase(where[e]);
-        where[e] = status.end();
-    };
-    auto open = [&](std::size_t v) {  // edge v -> next[v] starts
-        where[v] = status.insert(v).first;
-        helper[v] = v;
-    };
-    for (const std::size_t v : order) {
-        switch (kind[v]) {
-            case corner_kind::start:
-                open(v);
-                break;
-            case corner_kind::end:
-                close(x.prev[v], v);
-                break;
-            case corner_kind::split: {
-                const std::size_t e = below(v);
-                out.push_back({v, helper[e]});
-                helper[e] = v;
-                open(v);
-                break;
-            }
-            case corner_kind::merge: {
-                close(x.prev[v], v);
-                const std::size_t e = below(v);
-                if (kind[helper[e]] == corner_kind::merge) out.push_back({v, helper[e]});
-                helper[e] = v;
-                break;
-            }
-            case corner_kind::lower:
-                close(x.prev[v], v);
-                open(v);
-                break;
-            case corner_kind::upper: {
-                const std::size_t e = below(v);
-                if (kind[helper[e]] == corner_kind::merge) out.push_back({v, helper[e]});
-                helper[e] = v;
-                break;
+class monotone_sweep {
+public:
+    explicit monotone_sweep(monotone_context& x)
+        : x_(x), n_(x.vid.size()), kind_(n_), status_(edge_below{&x}), where_(n_, status_.end()), helper_(n_, n_) {
+        for (std::size_t c = 0; c < n_; ++c) kind_[c] = classify(x_, c);
+    }
+
+    /// Sweeps the corners in `order`; false if a corner finds no edge below it (invalid input).
+    bool run(const std::vector<std::size_t>& order) {
+        for (const std::size_t v : order) {
+            const std::size_t u = x_.prev[v];
+            switch (kind_[v]) {
+                case corner_kind::start:
+                    open(v);
+                    break;
+                case corner_kind::end:
+                    close(u, v);
+                    break;
+                case corner_kind::split: {
+                    const std::size_t e = below(v);
+                    if (e == n_) return false;
+                    diagonals.push_back({v, helper_[e]});
+                    helper_[e] = v;
+                    open(v);
+                    break;
+                }
+                case corner_kind::merge:
+                    close(u, v);
+                    if (!help_below(v)) return false;
+                    break;
+                case corner_kind::lower:
+                    close(u, v);
+                    open(v);
+                    break;
+                case corner_kind::upper:
+                    if (!help_below(v)) return false;
+                    break;
             }
         }
+        return true;
     }
-    return out;
+
+    std::vector<std::array<std::size_t, 2>> diagonals;
+
+private:
+    using status_t = std::set<std::size_t, edge_below>;
+
+    /// The status edge directly below corner v, or n.
+    std::size_t below(std::size_t v) const {
+        const auto it = status_.lower_bound(n_ + v);
+        return it == status_.begin() ? n_ : *std::prev(it);
+    }
+    /// Edge e ends at corner v: a merge corner that helps it is joined to v.
+    void close(std::size_t e, std::size_t v) {
+        if (kind_[helper_[e]] == corner_kind::merge) diagonals.push_back({v, helper_[e]});
+        status_.erase(where_[e]);
+        where_[e] = status_.end();
+    }
+    /// The edge v -> next[v] starts, helped by v.
+    void open(std::size_t v) {
+        where_[v] = status_.insert(v).first;
+        helper_[v] = v;
+    }
+    /// Corner v becomes the helper of the edge below it, joined to a merge corner that was.
+    bool help_below(std::size_t v) {
+        const std::size_t e = below(v);
+        if (e == n_) return false;
+        if (kind_[helper_[e]] == corner_kind::merge) diagonals.push_back({v, helper_[e]});
+        helper_[e] = v;
+        return true;
+    }
+
+    monotone_context& x_;
+    std::size_t n_;
+    std::vector<corner_kind> kind_;
+    status_t status_;
+    std::vector<status_t::iterator> where_;
+    std::vector<std::size_t> helper_;
+};
+
+/// Which half-turn, counted counter-clockwise from corner v's edge to next[v], the direction
+/// from v to s lies in: 0 for [0, pi), 1 for [pi, 2 pi). Exact.
+inline int half_turn(monotone_context& x, std::size_t v, std::size_t s) {
+    const std::size_t r = x.next[v];
+    const int o = x.orient(v, r, s);
+    if (o != 0) return o > 0 ? 0 : 1;
+    return x.before(v, s) == x.before(v, r) ? 0 : 1;  // along the edge, or straight back
 }
 
 /// Whether, seen from corner v, the direction to p comes before the direction to q counter-
-/// clockwise, starting at the direction of v's loop edge to next[v]. Exact: a half-turn test
-/// against that edge, then one orientation test.
+/// clockwise, starting at the direction of v's loop edge to next[v]. Exact: the half-turns,
+/// then one orientation test.
 inline bool turns_before(monotone_context& x, std::size_t v, std::size_t p, std::size_t q) {
-    const std::size_t r = x.next[v];
-    auto half = [&](std::size_t s) {
-        const int o = x.orient(v, r, s);
-        if (o != 0) return o > 0 ? 0 : 1;
-        return x.before(v, s) == x.before(v, r) ? 0 : 1;  // along the edge, or straight back
-    };
-    const int hp = half(p), hq = half(q);
+    const int hp = half_turn(x, v, p), hq = half_turn(x, v, q);
     if (hp != hq) return hp < hq;
     return x.orient(v, p, q) > 0;
 }
@@ -210,6 +234,17 @@ inline std::vector<std::vector<std::size_t>> monotone_pieces(monotone_context& x
     return pieces;
 }
 
+/// Appends the triangle of sequence entries p, q (consecutive on one chain, p first) and u
+/// (after both, on the other chain or the last corner), counter-clockwise.
+inline void emit_triangle(const monotone_context& x, const std::vector<std::size_t>& seq,
+                          const std::vector<char>& upper, std::size_t p, std::size_t q, std::size_t u,
+                          std::vector<std::array<std::size_t, 3>>& out) {
+    if (upper[q])
+        out.push_back({x.vid[seq[q]], x.vid[seq[p]], x.vid[seq[u]]});
+    else
+        out.push_back({x.vid[seq[p]], x.vid[seq[q]], x.vid[seq[u]]});
+}
+
 /// Triangulates one piece, a counter-clockwise cycle of corners monotone in sweep order, by the
 /// stack algorithm: corners in sweep order, each either closing triangles with the whole stack
 /// (other chain) or with the stack's top while the diagonal lies strictly inside (same chain).
@@ -249,12 +284,7 @@ inline bool triangulate_monotone(monotone_context& x, const std::vector<std::siz
     if (!x.before(seq.back(), piece[hi])) return false;
     seq.push_back(piece[hi]);
     upper.push_back(0);
-    auto emit = [&](std::size_t p, std::size_t q, std::size_t u) {  // p before q on one chain, u after both
-        if (upper[q])
-            out.push_back({x.vid[seq[q]], x.vid[seq[p]], x.vid[seq[u]]});
-        else
-            out.push_back({x.vid[seq[p]], x.vid[seq[q]], x.vid[seq[u]]});
-    };
+    const auto emit = [&](std::size_t p, std::size_t q, std::size_t u) { emit_triangle(x, seq, upper, p, q, u, out); };
     std::vector<std::size_t> stack{0, 1};
     for (std::size_t j = 2; j + 1 < m; ++j) {
         if (upper[j] != upper[stack.back()]) {
@@ -263,7 +293,9 @@ inline bool triangulate_monotone(monotone_context& x, const std::vector<std::siz
                 stack.pop_back();
                 emit(stack.back(), q, j);
             }
-            stack = {j - 1, j};
+            stack.clear();
+            stack.push_back(j - 1);
+            stack.push_back(j);
         } else {
             std::size_t q = stack.back();
             stack.pop_back();
@@ -312,8 +344,12 @@ inline bool monotone_triangulate(std::span<const point2> points, std::span<const
     });
     x.rank.resize(n);
     for (std::size_t i = 0; i < n; ++i) x.rank[order[i]] = i;
-    const auto diagonals = monotone_diagonals(x, order);
-    const auto pieces = monotone_pieces(x, diagonals);
+    monotone_sweep sweep(x);
+    if (!sweep.run(order)) {
+        work += x.work;
+        return false;
+    }
+    const auto pieces = monotone_pieces(x, sweep.diagonals);
     out.clear();
     out.reserve(n + 2 * (loops.size() - 1) - 2);
     bool ok = true;
