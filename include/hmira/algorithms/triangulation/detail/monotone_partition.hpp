@@ -320,9 +320,11 @@ inline bool triangulate_monotone(monotone_context& x, const std::vector<std::siz
 }
 
 /// Triangulates a polygon with holes that is known to be valid: loops simple and disjoint, no
-/// point repeated, the outer loop counter-clockwise, holes clockwise and inside it. Returns
-/// the triangles (point indices, counter-clockwise), n + 2h - 2 of them, or nothing if a piece
-/// came out not monotone (not expected for valid input). O(n log n) time, O(n) memory.
+/// point repeated, the outer loop counter-clockwise, holes clockwise and inside it. Sets `out`
+/// to the triangles (point indices, counter-clockwise), n + 2h - 2 of them, and adds the
+/// orientation tests and comparisons made to `work`. False if the sweep found a corner with no
+/// edge below it, or a piece that is not monotone (not expected for valid input).
+/// O(n log n) time, O(n) memory.
 inline bool monotone_triangulate(std::span<const point2> points, std::span<const std::vector<std::size_t>> loops,
                                  std::vector<std::array<std::size_t, 3>>& out, std::size_t& work) {
     monotone_context x;
