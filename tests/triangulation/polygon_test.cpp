@@ -314,7 +314,7 @@ TEST(triangulate_polygon, random_loops_on_a_small_lattice_are_refused_exactly_wh
 TEST(triangulate_polygon, big_jagged_polygons_take_near_linear_time_and_stay_exact) {
     // Star-shaped loops with many corners: a smooth circle, alternating spikes (half the
     // corners reflex) and random radii (reflex corners everywhere). All-pairs tests would take
-    // minutes here; the sweep and the box tree take well under a second each (ctest TIMEOUT).
+    // minutes here; the sweeps take well under a second each (ctest TIMEOUT).
 #ifdef HMIRA_SANITIZER_BUILD
     const std::size_t n = 20000;
 #else
@@ -338,7 +338,7 @@ TEST(triangulate_polygon, big_jagged_polygons_take_near_linear_time_and_stay_exa
 }
 
 TEST(triangulate_polygon, a_polygon_with_thousands_of_holes_is_refused_in_bounded_time) {
-    // Each hole is checked against every other (and bridged past them): quadratic in the
+    // Each hole is checked against the outer loop and every other hole: quadratic in the
     // holes, so 20,000 of them must hit the work limit and be refused, not run for an hour.
     std::vector<point2> p{{0, 0}, {1000, 0}, {1000, 1000}, {0, 1000}};
     loops_t loops{{0, 1, 2, 3}};

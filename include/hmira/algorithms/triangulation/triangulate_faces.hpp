@@ -85,8 +85,8 @@ result<face_polygon<M, T>> project_face(const M& m, typename T::face_handle f) {
 /// A ringless face of four corners, decided without building its polygon: its corners in
 /// face_vertices order and the first corner of the diagonal to cut, to corner from + 2. Only
 /// strictly convex quads (all four turns left in the projection project_face uses, exact) take
-/// this path: there ear clipping's first ear cuts 1-3, and the Delaunay option picks 0-2 when
-/// corner 2 lies inside the circle through 3, 0, 1. Anything else (more corners, concave,
+/// this path: they are cut along 1-3, or with the Delaunay option along 0-2 when corner 2 lies
+/// inside the circle through 3, 0, 1. Anything else (more corners, concave,
 /// degenerate, not finite) gives from = -1: the general path.
 template <class M, class T>
 struct quad_cut {
@@ -144,7 +144,7 @@ quad_cut<M, T> convex_quad_cut(const M& m, typename T::face_handle f, bool delau
 /// for non-finite coordinates.
 /// With options.delaunay the diagonals are flipped to the constrained Delaunay triangulation
 /// in that plane (triangulate_polygon_options::delaunay).
-/// Complexity: that of triangulate_polygon on the face's corners (O(n log n) typical).
+/// Complexity: that of triangulate_polygon on the face's corners (O(n log n)).
 template <class M, class T = default_traits<M>>
     requires face_triangulable_mesh<M, T>
 [[nodiscard]] result<std::vector<std::array<typename T::vertex_handle, 3>>> face_triangles(const M& mesh, typename T::face_handle f,
@@ -154,7 +154,7 @@ template <class M, class T = default_traits<M>>
     if (!detail::euler::has_rings<M, T>(mesh, f)) {
         if (const auto q = dt::convex_quad_cut<M, T>(mesh, f, options.delaunay); q.from >= 0) {
             const auto c = [&](int k) { return q.corner[std::size_t((q.from + k) % 4)]; };
-            return out_t{{c(2), c(3), c(0)}, {c(0), c(1), c(2)}};  // the diagonal c(0)-c(2), in ear clipping's order
+            return out_t{{c(2), c(3), c(0)}, {c(0), c(1), c(2)}};  // the diagonal c(0)-c(2)
         }
     }
     auto poly = dt::project_face<M, T>(mesh, f);
