@@ -2,8 +2,13 @@
 // `hmira voxelize`: the voxels a mesh's surface touches, and for a closed mesh those inside it,
 // on a cubic grid around the mesh, written as .binvox or as .raw bytes with a text sidecar
 // giving the grid (and the `hmira mc` command that reads it back).
+#include <sys/resource.h>
+
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <limits>
+#include <optional>
 #include <sstream>
 
 #include <hmira/algorithms/conversion/voxelize.hpp>
@@ -56,6 +61,51 @@ std::string raw_sidecar(const hmira::grid_geometry& g, const std::string& raw_na
     return s.str();
 }
 
+/// A number from the first line of a file (cgroup's memory.max: a number or "max").
+std::optional<std::uint64_t> number_in(const char* path) {
+    std::ifstream in(path);
+    std::uint64_t v = 0;
+    if (!(in >> v)) return std::nullopt;
+    return v;
+}
+
+/// A "Key: N kB" line of a /proc file, in bytes.
+std::optional<std::uint64_t> proc_kib(const char* path, const std::string& key) {
+    std::ifstream in(path);
+    std::string line;
+    while (std::getline(in, line))
+        if (line.rfind(key + ":", 0) == 0) {
+            std::istringstream s(line.substr(key.size() + 1));
+            std::uint64_t kib = 0;
+            if (s >> kib) return kib * 1024;
+        }
+    return std::nullopt;
+}
+
+/// The memory this process can still take: the system's available memory (MemAvailable), or
+/// less where the address-space limit (ulimit -v) or the cgroup's memory.max leaves less.
+/// nullopt when none of them can be read.
+std::optional<std::uint64_t> free_memory() {
+    std::optional<std::uint64_t> free = proc_kib("/proc/meminfo", "MemAvailable");
+    auto lower = [&](std::uint64_t v) { free = free ? std::min(*free, v) : v; };
+    rlimit as{};
+    if (::getrlimit(RLIMIT_AS, &as) == 0 && as.rlim_cur != RLIM_INFINITY) {
+        const std::uint64_t used = proc_kib("/proc/self/status", "VmSize").value_or(0);
+        lower(as.rlim_cur > used ? as.rlim_cur - used : 0);
+    }
+    if (auto max = number_in("/sys/fs/cgroup/memory.max")) {
+        const std::uint64_t used = number_in("/sys/fs/cgroup/memory.current").value_or(0);
+        lower(*max > used ? *max - used : 0);
+    }
+    return free;
+}
+
+std::string gigabytes(std::uint64_t bytes) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%.1f GB", double(bytes) / 1e9);
+    return b;
+}
+
 int run_voxelize(const voxelize_args& a, const common_options& o) {
     const std::string ext = lower_extension(a.output);
     if (ext != ".binvox" && ext != ".raw") return report(usage, a.output + ": unknown voxel format '" + ext + "' (use .binvox or .raw)");
@@ -68,6 +118,17 @@ int run_voxelize(const voxelize_args& a, const common_options& o) {
     auto grid = hmira::voxel_grid_around(mesh, a.resolution, a.padding);
     // --resolution and --padding were checked on the command line: what is left is the mesh.
     if (!grid) return report(input_exit_code(grid.error()), a.input + ": " + grid.error().message);
+    // The grid, padding included, must fit in the memory free now: its bits are allocated
+    // untouched, so the system would otherwise only run out part way through, after minutes.
+    std::size_t triangles = 0;
+    for (auto f : mesh.faces()) triangles += std::max<std::size_t>(mesh.face_vertices(f).size(), 3) - 2;
+    const std::uint64_t needed = hmira::voxelize_memory_estimate(*grid, triangles);
+    if (const auto free = free_memory(); free && needed > *free)
+        return report(invalid_input, a.input + ": voxelize: a grid of " + std::to_string(grid->dims[0]) + " x " +
+                                         std::to_string(grid->dims[1]) + " x " + std::to_string(grid->dims[2]) +
+                                         " voxels (--resolution " + std::to_string(a.resolution) + ", --padding " +
+                                         std::to_string(a.padding) + ") needs about " + gigabytes(needed) + ", but only " +
+                                         gigabytes(*free) + " of memory is free; lower --resolution or --padding");
     const std::string mode = a.surface ? "surface" : a.mode;
     const hmira::voxelize_options options{.mode = mode == "surface"  ? hmira::voxelize_mode::surface
                                                   : mode == "centres" ? hmira::voxelize_mode::centres
@@ -78,10 +139,16 @@ int run_voxelize(const voxelize_args& a, const common_options& o) {
     hmira::result<hmira::voxelization> voxels = hmira::fail(hmira::errc::invalid_argument, "");
     {
         auto bar = stage_bar("voxelizing " + a.input, o, grid->size(), std::uint64_t(64) << 20);
-        bar.update(0, 2);
-        voxels = hmira::voxelize(mesh, *grid, options);
+        bar.update(0, 1000);
+        // A large grid takes minutes: the bar follows the voxelization itself, then the write.
+        hmira::voxelize_options watched = options;
+        watched.progress = [&bar](double done) {
+            bar.update(static_cast<std::uint64_t>(900 * done), 1000);
+            return true;
+        };
+        voxels = hmira::voxelize(mesh, *grid, watched);
         if (!voxels) return report(input_exit_code(voxels.error()), a.input + ": " + voxels.error().message);
-        bar.update(1, 2);
+        bar.update(900, 1000);
         if (ext == ".binvox") {
             if (auto w = hmira::io::write_binvox(voxels->voxels, a.output); !w) return report(exit_code_for(w.error()), w.error().message);
         } else {

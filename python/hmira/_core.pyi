@@ -17,9 +17,12 @@ def marching_cubes(volume: Annotated[NDArray, dict(shape=(None, None, None), dev
     ----------
     volume : ndarray, shape (n0, n1, n2)
         Samples, float32, float64, uint8, uint16 or int16; C- or Fortran-ordered or
-        strided, read in place (never copied). NaN samples raise ValueError.
+        strided, read in place (never copied). A NaN or infinite sample raises
+        ValueError naming it ("volume[3, 4, 5] is inf").
     iso : float
-        The iso value.
+        The iso value, within the samples' range [min, max]: outside it there is no
+        surface, and ValueError names the range. Scans (CT, MRI) need a positive iso
+        and ``inside="above"``, e.g. ``hmira.marching_cubes(ct, 300.0, inside="above")``.
     spacing : sequence of 3 floats, keyword-only
         Distance between samples along array axes 0, 1, 2.
     origin : sequence of 3 floats, keyword-only

@@ -133,6 +133,27 @@ def _checked(darr, iso, spacing, origin, inside):
     return darr, spacing, origin
 
 
+def _number(x):
+    """A float as its shortest text, as the C++ messages print it ("12", "0.5", "1e+30")."""
+    r = repr(float(x))
+    return r[:-2] if r.endswith(".0") else r
+
+
+def _refuse_outside_range(darr, iso):
+    """Raises ValueError when `iso` lies outside the samples' range [min, max]: called only when
+    the mesh came out empty (a surface needs samples on both sides of the iso value), so that
+    the extra pass over the chunks is paid only then. The chunks hold no NaN or infinity: the
+    meshing refused those."""
+    import dask
+    import dask.array as da
+
+    darr = da.asarray(darr)
+    lo, hi = (float(x) for x in dask.compute(darr.min(), darr.max()))
+    if not lo <= float(iso) <= hi:
+        raise ValueError(f"hmira.dask.marching_cubes: iso {_number(iso)} is outside the samples' range [{_number(lo)}, "
+                         f"{_number(hi)}], so there is no surface; choose an iso between them")
+
+
 def _chunk_inputs(darr):
     """For every chunk, in C order of the chunk grid: (parts, index, offset, core). The parts are
     the chunk and one-sample slices of up to seven neighbours after it (a plain getitem each),
@@ -357,9 +378,13 @@ def marching_cubes(darr, iso: float = 0.0, *, spacing: Sequence[float] = (1.0, 1
     ----------
     darr : dask.array.Array (or anything ``dask.array.asarray`` takes), shape (n0, n1, n2)
         Samples, float32, float64, uint8, uint16 or int16, in chunks of any sizes (zarr,
-        HDF5, a lazily generated field, ...). NaN samples raise ValueError naming the block.
+        HDF5, a lazily generated field, ...). A NaN or infinite sample raises ValueError
+        naming the block and the sample's index in the whole grid (x along array axis 2
+        for C-ordered chunks).
     iso : float
-        The iso value.
+        The iso value, within the samples' range [min, max]: when the mesh comes out empty,
+        the range is computed (one more pass over the chunks) and an iso outside it raises
+        ValueError naming the range; with ``out``, before the file is put in place.
     spacing, origin : sequences of 3 floats, keyword-only
         As in :func:`hmira.marching_cubes`.
     inside : {"below", "above"}, keyword-only
@@ -402,13 +427,20 @@ def marching_cubes(darr, iso: float = 0.0, *, spacing: Sequence[float] = (1.0, 1
     if int(threads) < 0:
         raise ValueError(f"hmira.dask.marching_cubes: threads must be 0 (all cores) or more, got {threads}")
     if out is None and _in_process(darr):
-        return _direct(darr, iso, spacing, origin, inside)
+        vertices, faces = _direct(darr, iso, spacing, origin, inside)
+        if len(faces) == 0:
+            _refuse_outside_range(darr, iso)
+        return vertices, faces
     darr, tasks = _block_tasks(darr, iso, spacing, origin, inside)
     if out is None:
         blocks = dask.compute(*tasks)
-        return _core._merge_blocks(list(blocks), whole=list(darr.shape), chunks=[list(c) for c in darr.chunks],
-                                   threads=int(threads))
-    _stream_ply(os.fspath(out), darr.shape, darr.chunks, tasks, window or 2 * (os.cpu_count() or 1))
+        vertices, faces = _core._merge_blocks(list(blocks), whole=list(darr.shape), chunks=[list(c) for c in darr.chunks],
+                                              threads=int(threads))
+        if len(faces) == 0:
+            _refuse_outside_range(darr, iso)
+        return vertices, faces
+    _stream_ply(os.fspath(out), darr.shape, darr.chunks, tasks, window or 2 * (os.cpu_count() or 1),
+                empty=lambda: _refuse_outside_range(darr, iso))
     return None
 
 
@@ -527,7 +559,7 @@ def _results_in_order(tasks, window):
         yield from dask.compute(*tasks[w0:w0 + window])
 
 
-def _stream_ply(path, shape, chunks, tasks, window):
+def _stream_ply(path, shape, chunks, tasks, window, empty=None):
 
     directory = os.path.dirname(os.path.abspath(path))
     vfile = tempfile.NamedTemporaryFile(dir=directory, prefix=".hmira-vertices-", delete=False)
@@ -567,6 +599,8 @@ def _stream_ply(path, shape, chunks, tasks, window):
             n_faces += len(triangles)
         vfile.close()
         ffile.close()
+        if n_faces == 0 and empty is not None:
+            empty()  # raises before anything is put in place when there is no surface to write
         header = ("ply\nformat binary_little_endian 1.0\ncomment hmira.dask.marching_cubes\n"
                   f"element vertex {n_vertices}\nproperty double x\nproperty double y\nproperty double z\n"
                   f"element face {n_faces}\nproperty list uchar int vertex_indices\nend_header\n").encode()

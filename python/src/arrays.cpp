@@ -35,9 +35,12 @@ Parameters
 ----------
 volume : ndarray, shape (n0, n1, n2)
     Samples, float32, float64, uint8, uint16 or int16; C- or Fortran-ordered or
-    strided, read in place (never copied). NaN samples raise ValueError.
+    strided, read in place (never copied). A NaN or infinite sample raises
+    ValueError naming it ("volume[3, 4, 5] is inf").
 iso : float
-    The iso value.
+    The iso value, within the samples' range [min, max]: outside it there is no
+    surface, and ValueError names the range. Scans (CT, MRI) need a positive iso
+    and ``inside="above"``, e.g. ``hmira.marching_cubes(ct, 300.0, inside="above")``.
 spacing : sequence of 3 floats, keyword-only
     Distance between samples along array axes 0, 1, 2.
 origin : sequence of 3 floats, keyword-only
@@ -113,6 +116,12 @@ struct contiguous_view {
         return static_cast<double>(samples[i + size[0] * (j + size[1] * k)]);
     }
     const V* data() const { return samples; }
+    bool c_order = false;  // the grid's x is array axis 2
+    /// How an error names sample (i, j, k): by its index in the caller's array.
+    std::string sample_name(std::size_t i, std::size_t j, std::size_t k) const {
+        const std::size_t a = c_order ? k : i, c = c_order ? i : k;
+        return "volume[" + std::to_string(a) + ", " + std::to_string(j) + ", " + std::to_string(c) + "]";
+    }
 };
 
 /// Any strided numpy volume, read sample by sample: (i, j, k) is array index [i, j, k].
@@ -128,6 +137,9 @@ struct strided_view {
     vec3<double> spacing() const { return step; }
     double value(std::size_t i, std::size_t j, std::size_t k) const {
         return static_cast<double>(samples[std::int64_t(i) * stride[0] + std::int64_t(j) * stride[1] + std::int64_t(k) * stride[2]]);
+    }
+    std::string sample_name(std::size_t i, std::size_t j, std::size_t k) const {
+        return "volume[" + std::to_string(i) + ", " + std::to_string(j) + ", " + std::to_string(k) + "]";
     }
 };
 
@@ -170,7 +182,7 @@ hmira::result<hmira::indexed_triangles<double>> extract(const mc_volume& volume,
     if (fits(n2, s2, 1) && fits(n1, s1, std::int64_t(n2)) && fits(n0, s0, std::int64_t(n1 * n2))) {
         // C order: the grid's x is array axis 2; the caller swaps columns 0 and 2 back.
         swapped = true;
-        const contiguous_view<V> g{p, {n2, n1, n0}, {origin.z, origin.y, origin.x}, {spacing.z, spacing.y, spacing.x}};
+        const contiguous_view<V> g{p, {n2, n1, n0}, {origin.z, origin.y, origin.x}, {spacing.z, spacing.y, spacing.x}, true};
         return hmira::marching_cubes_indexed<double>(g, options);
     }
     const strided_view<V> g{p, {n0, n1, n2}, {s0, s1, s2}, origin, spacing};

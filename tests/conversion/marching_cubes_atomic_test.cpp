@@ -167,7 +167,23 @@ TYPED_TEST(mc_atomic, bad_volumes_are_refused_before_the_mesh_is_touched) {
     auto r = hmira::marching_cubes<M, T>(m, grid);
     ASSERT_FALSE(r);
     EXPECT_EQ(r.error().code, hmira::errc::invalid_argument);
-    EXPECT_NE(r.error().message.find("z-slice 6"), std::string::npos) << r.error().message;
+    EXPECT_NE(r.error().message.find("sample (3, 3, 6) is NaN"), std::string::npos) << r.error().message;
+    EXPECT_TRUE((hmira_test::snapshot<M, T>(m) == before));
+    // Infinite samples are refused the same way: they would interpolate NaN vertices.
+    for (double bad : {std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()}) {
+        auto inf_grid = small_sphere();
+        inf_grid.set(2, 4, 1, bad);
+        auto q = hmira::marching_cubes<M, T>(m, inf_grid);
+        ASSERT_FALSE(q);
+        EXPECT_EQ(q.error().code, hmira::errc::invalid_argument);
+        EXPECT_NE(q.error().message.find(bad > 0 ? "sample (2, 4, 1) is inf" : "sample (2, 4, 1) is -inf"), std::string::npos)
+            << q.error().message;
+        EXPECT_TRUE((hmira_test::snapshot<M, T>(m) == before));
+    }
+    // An iso outside the samples' range gives no surface: refused, the mesh untouched.
+    auto far = hmira::marching_cubes<M, T>(m, small_sphere(), {.iso = 1000.0});
+    ASSERT_FALSE(far);
+    EXPECT_NE(far.error().message.find("iso 1000 is outside the samples' range"), std::string::npos) << far.error().message;
     EXPECT_TRUE((hmira_test::snapshot<M, T>(m) == before));
     EXPECT_FALSE((hmira::marching_cubes<M, T>(m, small_sphere(), {.iso = std::numeric_limits<double>::quiet_NaN()})));
     EXPECT_TRUE((hmira_test::snapshot<M, T>(m) == before));

@@ -5,9 +5,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <charconv>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <limits>
+#include <span>
 #include <random>
 #include <string>
 #include <vector>
@@ -354,8 +357,95 @@ TEST(MarchingCubesBlocks, block_outside_the_grid_or_with_nan_names_the_block) {
     grid.set(1, 2, 3, std::nanf(""));
     b = hmira::marching_cubes_block(grid, {.offset = {0, 0, 8}, .whole = {4, 4, 16}});
     ASSERT_FALSE(b);
-    EXPECT_NE(b.error().message.find("marching_cubes_block at (0, 0, 8): marching_cubes: the grid holds NaN"), std::string::npos)
+    EXPECT_NE(b.error().message.find("marching_cubes_block at (0, 0, 8): marching_cubes: sample (1, 2, 11) is NaN"), std::string::npos)
         << b.error().message;
+}
+
+TEST(MarchingCubesBlocks, infinite_samples_are_refused_by_blocks_slabs_and_the_direct_path_naming_the_whole_grids_sample) {
+    // A sphere field over 9 x 8 x 20 samples with one infinite sample at (6, 5, 13).
+    const auto g = box(9, 8, 20);
+    auto grid = hmira::sample_function(g, [](hmira::vec3<double> p) { return p.x * p.x + p.y * p.y + p.z * p.z - 0.3; });
+    ASSERT_TRUE(grid);
+    for (float bad : {std::numeric_limits<float>::infinity(), -std::numeric_limits<float>::infinity()}) {
+        grid->set(6, 5, 13, bad);
+        const std::string name = std::string("sample (6, 5, 13) is ") + (bad > 0 ? "inf" : "-inf");
+        // One block holding it, seen in place: the index is the whole grid's.
+        auto view = hmira::make_grid_view(std::span<const float>(grid->values().subspan(10 * 72, 6 * 72)),
+                                           {{9, 8, 6}, g.origin, g.spacing});
+        ASSERT_TRUE(view);
+        auto b = hmira::marching_cubes_block(*view, {.offset = {0, 0, 10}, .whole = g.dims});
+        ASSERT_FALSE(b);
+        EXPECT_NE(b.error().message.find("marching_cubes_block at (0, 0, 10): marching_cubes: " + name), std::string::npos)
+            << b.error().message;
+        // Slab by slab, whatever the slab size.
+        for (std::size_t slab : {std::size_t(1), std::size_t(4), std::size_t(30)}) {
+            auto fetch = [&](std::size_t k0, std::size_t count, std::vector<float>& out) -> hmira::result<void> {
+                const auto begin = grid->values().begin() + std::ptrdiff_t(k0 * 72);
+                out.assign(begin, begin + std::ptrdiff_t(count * 72));
+                return {};
+            };
+            auto r = hmira::marching_cubes_by_slabs<double, float>(g, slab, fetch);
+            ASSERT_FALSE(r) << "slab " << slab;
+            EXPECT_NE(r.error().message.find(name), std::string::npos) << r.error().message;
+        }
+        // The direct path's counting step.
+        auto c = hmira::detail::mc_direct::count_block(*view, {.offset = {0, 0, 10}, .whole = g.dims});
+        ASSERT_FALSE(c);
+        EXPECT_NE(c.error().message.find(name), std::string::npos) << c.error().message;
+    }
+}
+
+TEST(MarchingCubesBlocks, slabs_refuse_an_iso_outside_the_whole_grids_range_and_accept_one_inside_without_surface) {
+    // Samples 3 + k: the range is [3, 12], and each slab's own range is narrower.
+    const auto g = box(5, 6, 10);
+    auto fetch = [&](std::size_t k0, std::size_t count, std::vector<float>& out) -> hmira::result<void> {
+        out.clear();
+        for (std::size_t k = k0; k < k0 + count; ++k) out.insert(out.end(), 30, float(3 + k));
+        return {};
+    };
+    for (std::size_t slab : {std::size_t(1), std::size_t(3), std::size_t(20)})
+        for (double iso : {0.0, 2.5, 12.5, 100.0}) {
+            auto r = hmira::marching_cubes_by_slabs<double, float>(g, slab, fetch, {.iso = iso});
+            ASSERT_FALSE(r) << "slab " << slab << " iso " << iso;
+            EXPECT_EQ(r.error().code, hmira::errc::invalid_argument);
+            EXPECT_NE(r.error().message.find("outside the samples' range [3, 12]"), std::string::npos) << r.error().message;
+        }
+    // Every sample inside (iso = max, inside below): in the range, no surface, no error.
+    auto all_inside = hmira::marching_cubes_by_slabs<double, float>(g, 3, fetch, {.iso = 12.0});
+    ASSERT_TRUE(all_inside) << all_inside.error().message;
+    EXPECT_EQ(all_inside->triangles.size(), 0u);
+    // A surface in the last slab only.
+    auto late = hmira::marching_cubes_by_slabs<double, float>(g, 3, fetch, {.iso = 11.5});
+    ASSERT_TRUE(late) << late.error().message;
+    EXPECT_GT(late->triangles.size(), 0u);
+}
+
+TEST(MarchingCubesBlocks, skull_at_the_default_iso_is_refused_whole_and_by_slabs) {
+    if (data_dir().empty()) GTEST_SKIP() << "HMIRA_TEST_DATA not set";
+    const auto path = data_dir() / "images" / "skull_2.9.inr";
+    if (!std::filesystem::exists(path)) GTEST_SKIP() << path << " missing";
+    auto grid = hmira::io::read_inr(path);
+    ASSERT_TRUE(grid) << grid.error().message;
+    const auto [lo, hi] = std::minmax_element(grid->values().begin(), grid->values().end());
+    ASSERT_GT(*lo, 0.0f);  // the default iso 0 lies below every sample
+    // As the shortest decimal text that reads back as the same double.
+    auto text = [](double x) {
+        char b[32];
+        return std::string(b, std::to_chars(b, b + sizeof b, x).ptr);
+    };
+    const std::string range = "range [" + text(double(*lo)) + ", " + text(double(*hi)) + "]";
+    auto whole = hmira::marching_cubes_indexed<double>(*grid);
+    ASSERT_FALSE(whole);
+    EXPECT_NE(whole.error().message.find("iso 0 is outside the samples' " + range), std::string::npos) << whole.error().message;
+    const auto g = grid->geometry();
+    auto fetch = [&](std::size_t k0, std::size_t count, std::vector<float>& out) -> hmira::result<void> {
+        const auto begin = grid->values().begin() + std::ptrdiff_t(k0 * g.dims[0] * g.dims[1]);
+        out.assign(begin, begin + std::ptrdiff_t(count * g.dims[0] * g.dims[1]));
+        return {};
+    };
+    auto slabs = hmira::marching_cubes_by_slabs<double, float>(g, 16, fetch);
+    ASSERT_FALSE(slabs);
+    EXPECT_NE(slabs.error().message.find(range), std::string::npos) << slabs.error().message;
 }
 
 TEST(MarchingCubesBlocks, thin_blocks_are_empty_and_overlapping_blocks_are_refused) {

@@ -2,7 +2,9 @@
 // and 8-bit-like volumes.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <cstring>
 #include <memory>
 #include <type_traits>
@@ -10,6 +12,7 @@
 #include <numbers>
 #include <random>
 #include <set>
+#include <string>
 
 #include <hmira/algorithms/conversion/marching_cubes.hpp>
 #include <hmira/algorithms/topology/mesh_topology.hpp>
@@ -316,6 +319,125 @@ TEST(MarchingCubes, generic_grid_without_storage_matches_dense_grid) {
     EXPECT_TRUE(a->triangles == b->triangles);
 }
 
+template <class V>
+class MarchingCubesNonFinite : public ::testing::Test {};
+using non_finite_sample_types = ::testing::Types<float, double>;
+TYPED_TEST_SUITE(MarchingCubesNonFinite, non_finite_sample_types);
+
+// A sphere field (inside below 0) of 70 x 9 x 8 samples: rows of one whole 64-sample word
+// and a tail, so that the vectorised and the scalar classification both meet the bad sample.
+template <class V>
+hmira::dense_grid<V> sphere_70() {
+    hmira::dense_grid<V> g({{70, 9, 8}, {-1, -1, -1}, {2.0 / 69, 0.25, 2.0 / 7}});
+    for (std::size_t k = 0; k < 8; ++k)
+        for (std::size_t j = 0; j < 9; ++j)
+            for (std::size_t i = 0; i < 70; ++i) {
+                const auto p = g.geometry().position(i, j, k);
+                g.set(i, j, k, static_cast<V>(p.x * p.x + p.y * p.y + p.z * p.z - 0.5));
+            }
+    return g;
+}
+
+TYPED_TEST(MarchingCubesNonFinite, infinite_and_nan_samples_are_refused_naming_the_sample) {
+    using V = TypeParam;
+    const V inf = std::numeric_limits<V>::infinity();
+    struct where {
+        std::size_t i, j, k;
+    };
+    // In a whole word, in the tail word, on the first and the last sample, on an inside and an
+    // outside sample.
+    for (const where w : {where{5, 4, 3}, where{66, 1, 6}, where{0, 0, 0}, where{69, 8, 7}, where{35, 4, 4}}) {
+        for (const V bad : {inf, -inf, std::numeric_limits<V>::quiet_NaN()}) {
+            auto g = sphere_70<V>();
+            g.set(w.i, w.j, w.k, bad);
+            const std::string name = "sample (" + std::to_string(w.i) + ", " + std::to_string(w.j) + ", " + std::to_string(w.k) + ") is " +
+                                     (bad != bad ? "NaN" : bad > 0 ? "inf" : "-inf");
+            for (unsigned threads : {1u, 2u}) {
+                auto r = hmira::marching_cubes_indexed<double>(g, {.threads = threads});
+                ASSERT_FALSE(r) << name << ": " << r->positions.size() << " vertices";
+                EXPECT_EQ(r.error().code, hmira::errc::invalid_argument);
+                EXPECT_NE(r.error().message.find(name), std::string::npos) << r.error().message;
+                EXPECT_EQ(r.error().element, static_cast<long long>(w.i + 70 * (w.j + 9 * w.k)));
+                EXPECT_EQ(std::count(r.error().message.begin(), r.error().message.end(), '\n'), 0);
+            }
+            // Into a mesh: refused before the mesh is touched.
+            hmira::halfedge_mesh m;
+            auto into = hmira::marching_cubes(m, g);
+            ASSERT_FALSE(into);
+            EXPECT_EQ(m.vertex_count(), 0u);
+            EXPECT_EQ(m.face_count(), 0u);
+        }
+    }
+    // The same grid without the bad sample meshes, with finite positions only.
+    auto r = hmira::marching_cubes_indexed<double>(sphere_70<V>());
+    ASSERT_TRUE(r);
+    EXPECT_GT(r->triangles.size(), 0u);
+    for (const auto& p : r->positions) EXPECT_TRUE(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z));
+}
+
+// Samples read through value() only (no data()): the generic classification path.
+struct infinite_at_grid {
+    using value_type = double;
+    hmira::grid_geometry g{{6, 5, 4}, {0, 0, 0}, {1, 1, 1}};
+    hmira::grid_dims dims() const { return g.dims; }
+    vec3<double> origin() const { return g.origin; }
+    vec3<double> spacing() const { return g.spacing; }
+    double value(std::size_t i, std::size_t j, std::size_t k) const {
+        return (i == 4 && j == 1 && k == 2) ? std::numeric_limits<double>::infinity() : double(i) - 2.5;
+    }
+};
+
+TEST(MarchingCubesBadInput, an_infinite_sample_of_a_grid_without_storage_is_refused) {
+    auto r = hmira::marching_cubes_indexed<double>(infinite_at_grid{});
+    ASSERT_FALSE(r);
+    EXPECT_NE(r.error().message.find("sample (4, 1, 2) is inf"), std::string::npos) << r.error().message;
+}
+
+template <class V>
+class MarchingCubesIsoRange : public ::testing::Test {};
+using iso_range_sample_types = ::testing::Types<std::uint8_t, std::int16_t, float, double>;
+TYPED_TEST_SUITE(MarchingCubesIsoRange, iso_range_sample_types);
+
+TYPED_TEST(MarchingCubesIsoRange, an_iso_outside_the_samples_range_is_refused_naming_the_range) {
+    using V = TypeParam;
+    // A ball of 40 in a background of 12, as a CT's bone in air: range [12, 40].
+    hmira::dense_grid<V> g({{12, 11, 10}, {0, 0, 0}, {1, 1, 1}}, V(12));
+    for (std::size_t k = 3; k < 7; ++k)
+        for (std::size_t j = 3; j < 8; ++j)
+            for (std::size_t i = 4; i < 8; ++i) g.set(i, j, k, V(40));
+    for (auto inside : {hmira::iso_inside::below, hmira::iso_inside::above})
+        for (double iso : {0.0, 11.5, 40.5, 300.0, -7.0}) {
+            auto r = hmira::marching_cubes_indexed<double>(g, {.iso = iso, .inside = inside});
+            ASSERT_FALSE(r) << "iso " << iso;
+            EXPECT_EQ(r.error().code, hmira::errc::invalid_argument);
+            EXPECT_NE(r.error().message.find("outside the samples' range [12, 40]"), std::string::npos) << r.error().message;
+            hmira::face_vertex_mesh m;
+            EXPECT_FALSE(hmira::marching_cubes(m, g, {.iso = iso, .inside = inside}));
+            EXPECT_EQ(m.vertex_count(), 0u);
+        }
+    // Inside the range: the ball's surface, closed.
+    auto ball = hmira::marching_cubes_indexed<double>(g, {.iso = 26, .inside = hmira::iso_inside::above});
+    ASSERT_TRUE(ball);
+    EXPECT_GT(ball->triangles.size(), 0u);
+    // At either end of the range: accepted. The ends that put every sample on one side give
+    // no triangles; the others still give the ball (samples equal to iso count as inside).
+    auto at = [&](double iso, hmira::iso_inside inside) { return hmira::marching_cubes_indexed<double>(g, {.iso = iso, .inside = inside}); };
+    auto below_max = at(40, hmira::iso_inside::below), above_min = at(12, hmira::iso_inside::above);
+    ASSERT_TRUE(below_max && above_min);
+    EXPECT_EQ(below_max->triangles.size(), 0u);
+    EXPECT_EQ(above_min->triangles.size(), 0u);
+    auto below_min = at(12, hmira::iso_inside::below), above_max = at(40, hmira::iso_inside::above);
+    ASSERT_TRUE(below_min && above_max);
+    EXPECT_GT(below_min->triangles.size(), 0u);
+    EXPECT_GT(above_max->triangles.size(), 0u);
+    // A grid of equal samples: its one value is its range.
+    hmira::dense_grid<V> flat({{5, 5, 5}, {0, 0, 0}, {1, 1, 1}}, V(7));
+    EXPECT_TRUE(hmira::marching_cubes_indexed<double>(flat, {.iso = 7}));
+    auto off = hmira::marching_cubes_indexed<double>(flat, {.iso = 8});
+    ASSERT_FALSE(off);
+    EXPECT_NE(off.error().message.find("iso 8 is outside the samples' range [7, 7]"), std::string::npos) << off.error().message;
+}
+
 TEST(MarchingCubesBadInput, nan_zero_spacing_and_empty_grids_are_refused_without_touching_the_mesh) {
     hmira::dense_grid<float> g({{4, 4, 4}, {0, 0, 0}, {1, 1, 1}}, 1.0f);
     g.set(1, 2, 3, std::numeric_limits<float>::quiet_NaN());
@@ -323,7 +445,7 @@ TEST(MarchingCubesBadInput, nan_zero_spacing_and_empty_grids_are_refused_without
     auto r = hmira::marching_cubes(m, g);
     ASSERT_FALSE(r);
     EXPECT_EQ(r.error().code, hmira::errc::invalid_argument);
-    EXPECT_NE(r.error().message.find("NaN"), std::string::npos);
+    EXPECT_NE(r.error().message.find("sample (1, 2, 3) is NaN"), std::string::npos) << r.error().message;
     EXPECT_EQ(m.vertex_count(), 0u);
 
     hmira::dense_grid<float> zero({{4, 4, 4}, {0, 0, 0}, {1, 0, 1}}, 1.0f);
@@ -340,12 +462,16 @@ TEST(MarchingCubesBadInput, nan_zero_spacing_and_empty_grids_are_refused_without
     EXPECT_EQ(m.face_count(), 0u);
 }
 
-TEST(MarchingCubes, surface_with_no_crossing_is_empty) {
+TEST(MarchingCubes, surface_with_no_crossing_is_empty_when_the_iso_is_in_the_range_and_refused_otherwise) {
     hmira::dense_grid<float> g({{5, 5, 5}, {0, 0, 0}, {1, 1, 1}}, 2.0f);
-    auto tri = hmira::marching_cubes_indexed(g);
+    auto tri = hmira::marching_cubes_indexed(g, {.iso = 2.0});
     ASSERT_TRUE(tri);
     EXPECT_TRUE(tri->positions.empty());
     EXPECT_TRUE(tri->triangles.empty());
+    auto outside = hmira::marching_cubes_indexed(g);  // the default iso 0 lies below every sample
+    ASSERT_FALSE(outside);
+    EXPECT_EQ(outside.error().message,
+              "marching_cubes: iso 0 is outside the samples' range [2, 2], so there is no surface; choose an iso between them");
 }
 
 }  // namespace

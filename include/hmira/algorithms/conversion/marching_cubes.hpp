@@ -7,7 +7,9 @@
 #include <algorithm>
 #include <array>
 #include <bit>
+#include <charconv>
 #include <cmath>
+#include <concepts>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -15,6 +17,7 @@
 #include <span>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "../../concepts.hpp"
@@ -38,7 +41,8 @@ enum class iso_inside { below, above };
 
 /// Options of marching_cubes() and marching_cubes_indexed().
 struct marching_cubes_options {
-    /// The iso value; any finite value.
+    /// The iso value: finite, and within the samples' range [min, max] (else an error, since
+    /// there would be no surface; scans are often inside above a positive iso, see `inside`).
     double iso = 0.0;
     /// Which side of `iso` is inside. Normals point from inside to outside.
     iso_inside inside = iso_inside::below;
@@ -137,10 +141,11 @@ inline unsigned bits2(const std::uint64_t* a, std::size_t i) noexcept {
     return static_cast<unsigned>((a[w] >> 63) | ((a[w + 1] & 1u) << 1));
 }
 
-// Packs one row's classification (bit i set: sample i is inside) and reports NaN samples.
+// Packs one row's classification (bit i set: sample i is inside) and reports non-finite
+// samples (NaN or infinite: x - x is NaN exactly for those).
 template <class V>
 bool classify_row(const V* row, std::size_t nx, double iso, bool above, std::uint64_t* out) {
-    bool nan = false;
+    bool bad_row = false;
     const std::size_t words = (nx + 63) / 64;
     if constexpr (std::is_same_v<V, float>) {
         // The float threshold that classifies every float exactly as the double iso would.
@@ -162,7 +167,8 @@ bool classify_row(const V* row, std::size_t nx, double iso, bool above, std::uin
                     const __m128 x = _mm_loadu_ps(p + b);
                     const __m128 c = above ? _mm_cmpge_ps(x, tt) : _mm_cmple_ps(x, tt);
                     m |= std::uint64_t(unsigned(_mm_movemask_ps(c))) << b;
-                    unordered |= unsigned(_mm_movemask_ps(_mm_cmpunord_ps(x, x)));
+                    const __m128 d = _mm_sub_ps(x, x);
+                    unordered |= unsigned(_mm_movemask_ps(_mm_cmpunord_ps(d, d)));
                 }
                 bad |= unordered;
 #else
@@ -170,16 +176,16 @@ bool classify_row(const V* row, std::size_t nx, double iso, bool above, std::uin
                     for (unsigned b = 0; b < 64; ++b) m |= std::uint64_t(p[b] >= t) << b;
                 else
                     for (unsigned b = 0; b < 64; ++b) m |= std::uint64_t(p[b] <= t) << b;
-                for (unsigned b = 0; b < 64; ++b) bad |= unsigned(p[b] != p[b]);
+                for (unsigned b = 0; b < 64; ++b) bad |= unsigned(!(p[b] - p[b] == 0.0f));
 #endif
             } else {
                 for (unsigned b = 0; b < n; ++b) {
                     m |= std::uint64_t(above ? p[b] >= t : p[b] <= t) << b;
-                    bad |= unsigned(p[b] != p[b]);
+                    bad |= unsigned(!(p[b] - p[b] == 0.0f));
                 }
             }
             out[w] = m;
-            nan |= bad != 0;
+            bad_row |= bad != 0;
         }
     } else {
         for (std::size_t w = 0; w < words; ++w) {
@@ -188,12 +194,26 @@ bool classify_row(const V* row, std::size_t nx, double iso, bool above, std::uin
             for (unsigned b = 0; b < n; ++b) {
                 const double v = static_cast<double>(row[w * 64 + b]);
                 m |= std::uint64_t(above ? v >= iso : v <= iso) << b;
-                nan |= v != v;
+                bad_row |= !(v - v == 0.0);
             }
             out[w] = m;
         }
     }
-    return nan;
+    return bad_row;
+}
+
+/// A number as the shortest text that reads back as the same double ("12", "0.5", "1e+30").
+inline std::string shortest(double x) {
+    char b[32];
+    const auto r = std::to_chars(b, b + sizeof b, x);
+    return std::string(b, r.ptr);
+}
+
+/// The error for an iso value outside the samples' range [lo, hi], which would give no surface.
+inline hmira::error iso_outside_range(double iso, double lo, double hi) {
+    return fail(errc::invalid_argument, "marching_cubes: iso " + shortest(iso) + " is outside the samples' range [" +
+                                            shortest(lo) + ", " + shortest(hi) +
+                                            "], so there is no surface; choose an iso between them");
 }
 
 template <class G>
@@ -229,6 +249,13 @@ public:
             if (auto counted = count(gate); !counted) return counted.error();
 
         indexed_triangles<S> out;
+        // No surface: an iso value outside the samples' range is refused rather than returning
+        // nothing (a surface needs a sample on each side, so only an empty result can have
+        // such an iso, and only then is the range read: one more pass, never on the hot path).
+        if (!tags_ && vbase_[rows] == 0) {
+            const auto [lo, hi] = sample_range();
+            if (!(lo <= opt_.iso && opt_.iso <= hi)) return iso_outside_range(opt_.iso, lo, hi);
+        }
         if (tags_ && tags_->count_only) return out;
         layout_ = tags_ ? tags_->layout : nullptr;
         // Unwritten until pass 3 writes every slot: zeroing them here would be a serial pass
@@ -321,6 +348,52 @@ public:
 private:
     static hmira::error cancelled() { return fail(errc::cancelled, "marching_cubes: cancelled"); }
 
+    // The smallest and largest sample (all finite: pass 1 refused any other). O(N), parallel.
+    std::pair<double, double> sample_range() const {
+        constexpr double inf = std::numeric_limits<double>::infinity();
+        std::vector<double> lo(nz_, inf), hi(nz_, -inf);
+        parallel_chunks(nz_, 1, [&](std::size_t k0, std::size_t k1) {
+            for (std::size_t k = k0; k < k1; ++k) {
+                double l = lo[k], h = hi[k];
+                for (std::size_t j = 0; j < ny_; ++j)
+                    for (std::size_t i = 0; i < nx_; ++i) {
+                        const double v = value(i, j, k);
+                        l = v < l ? v : l;
+                        h = v > h ? v : h;
+                    }
+                lo[k] = l;
+                hi[k] = h;
+            }
+        });
+        return {*std::min_element(lo.begin(), lo.end()), *std::max_element(hi.begin(), hi.end())};
+    }
+
+    // The error for the first sample in (z, y, x) order of slice k that is not finite, named by
+    // its index in the whole grid, or as the grid names that index if it can
+    // (sample_name(i, j, k), e.g. "volume[k, j, i]" for a view of a C-ordered array).
+    // Only on this error path: a second read of one slice.
+    hmira::error non_finite_sample(std::size_t k) const {
+        for (std::size_t j = 0; j < ny_; ++j)
+            for (std::size_t i = 0; i < nx_; ++i) {
+                const double v = value(i, j, k);
+                if (v - v == 0.0) continue;
+                const std::size_t gi = tags_ ? i + tags_->offset[0] : i, gj = tags_ ? j + tags_->offset[1] : j,
+                                  gk = tags_ ? k + tags_->offset[2] : k;
+                const std::size_t wx = tags_ ? tags_->whole[0] : nx_, wy = tags_ ? tags_->whole[1] : ny_;
+                std::string name;
+                if constexpr (requires { { grid_.sample_name(gi, gj, gk) } -> std::convertible_to<std::string>; })
+                    name = grid_.sample_name(gi, gj, gk);
+                else
+                    name = "sample (" + std::to_string(gi) + ", " + std::to_string(gj) + ", " + std::to_string(gk) + ")";
+                const char* what = v != v ? "NaN" : v > 0 ? "inf" : "-inf";
+                return fail(errc::invalid_argument,
+                            "marching_cubes: " + name + " is " + what + "; every sample must be finite",
+                            static_cast<long long>(gi + wx * (gj + wy * gk)));
+            }
+        return fail(errc::invalid_argument,
+                    "marching_cubes: z-slice " + std::to_string(k) + " holds a sample that is not finite");
+    }
+
     // Passes 1 and 2 of run(): classify, count, and lay out the rows' vertices and triangles.
     result<void> count(progress_gate& gate) {
         const std::size_t rows = ny_ * nz_;
@@ -339,29 +412,28 @@ private:
         tbase_.resize(rows + 1);
         vbase_[0] = tbase_[0] = 0;
 
-        // Pass 1: classify every sample into bit rows.
-        std::vector<std::uint8_t> nan_in_slab(nz_, 0);
+        // Pass 1: classify every sample into bit rows, noting the slices holding a sample
+        // that is not finite (the classification reads every sample anyway).
+        std::vector<std::uint8_t> bad_in_slab(nz_, 0);
         parallel_chunks(nz_, 1, [&](std::size_t k0, std::size_t k1) {
             std::vector<double> buffer;
             for (std::size_t k = k0; k < k1 && gate.advance(); ++k)
                 for (std::size_t j = 0; j < ny_; ++j) {
                     std::uint64_t* out = &bits_[(k * ny_ + j) * words_];
-                    bool nan;
+                    bool bad;
                     if constexpr (contiguous_voxel_grid<G>) {
-                        nan = classify_row(data_ + j * sy_ + k * sz_, nx_, opt_.iso, above_, out);
+                        bad = classify_row(data_ + j * sy_ + k * sz_, nx_, opt_.iso, above_, out);
                     } else {
                         buffer.resize(nx_);
                         for (std::size_t i = 0; i < nx_; ++i) buffer[i] = static_cast<double>(grid_.value(i, j, k));
-                        nan = classify_row(buffer.data(), nx_, opt_.iso, above_, out);
+                        bad = classify_row(buffer.data(), nx_, opt_.iso, above_, out);
                     }
-                    if (nan) nan_in_slab[k] = 1;
+                    if (bad) bad_in_slab[k] = 1;
                 }
         });
         if (gate.cancelled()) return cancelled();
         for (std::size_t k = 0; k < nz_; ++k)
-            if (nan_in_slab[k])
-                return fail(errc::invalid_argument, "marching_cubes: the grid holds NaN samples (first in z-slice " +
-                                                        std::to_string(k) + ")", static_cast<long long>(k));
+            if (bad_in_slab[k]) return non_finite_sample(k);
 
         // Pass 2: count crossed edges per row (the vertices it owns) and triangles per cube row.
         parallel_chunks(nz_, 1, [&](std::size_t k0, std::size_t k1) {
@@ -763,7 +835,14 @@ private:
 /// exponent 0.85 over 10^6..10^7 samples).
 /// Preconditions: none beyond the errors below.
 /// Errors (invalid_argument): a dimension below 2, spacing not finite and positive, a
-/// non-finite iso value, or NaN samples (naming the first z-slice holding one);
+/// non-finite iso value; a sample that is NaN or infinite ("marching_cubes: sample (3, 4, 5)
+/// is inf; every sample must be finite", the first in (z, y, x) order; `element` is its offset
+/// i + nx * (j + ny * k)), found by the classifying pass that reads every sample anyway; an iso
+/// value outside the samples' range [min, max] ("marching_cubes: iso 0 is outside the samples'
+/// range [12, 3071], ..."), which would give no surface. An iso equal to min or max is within
+/// the range and accepted even when it gives no triangles (with inside below and iso = max,
+/// every sample is inside); so is any iso on a grid of equal samples that it equals.
+/// The range is read (one more pass) only when there is no surface.
 /// unsupported: more than 2^32 - 1 output vertices.
 template <class S = float, voxel_grid G>
 result<indexed_triangles<S>> marching_cubes_indexed(const G& grid, const marching_cubes_options& options = {}) {
@@ -836,8 +915,8 @@ struct marching_cubes_output {
 /// marching_cubes_indexed(); adding to the mesh is serial, O(V + F) builder calls.
 ///
 /// Atomic: the whole triangle list is extracted before the mesh is touched (so a cancel, a
-/// NaN sample or too many vertices change nothing), then added; if adding fails part way (the
-/// mesh's add_face refuses a triangle, the progress callback cancels, or anything throws, e.g.
+/// non-finite sample, an iso outside the samples' range or too many vertices change nothing),
+/// then added; if adding fails part way (the mesh's add_face refuses a triangle, the progress callback cancels, or anything throws, e.g.
 /// std::bad_alloc), every element added so far is erased again before the error is returned or
 /// the exception rethrown.
 /// \pre none.

@@ -72,7 +72,10 @@ struct block_triangles {
 /// \pre none (checked: the block lies inside `where.whole`).
 /// Errors (invalid_argument): the block does not fit in the whole grid at its offset; the
 /// whole grid too large for 64-bit keys; those of marching_cubes_indexed(), prefixed with the
-/// block's offset ("marching_cubes_block at (64, 0, 128): ...").
+/// block's offset ("marching_cubes_block at (64, 0, 128): marching_cubes: sample (70, 3, 130)
+/// is inf; ...", indices in the whole grid), except the iso range: a block may well lie on one
+/// side of the surface, so only the caller that sees every block can tell an iso outside the
+/// whole grid's range (marching_cubes_by_slabs() does; hmira.dask does it in Python).
 template <class S = float, voxel_grid G>
 result<block_triangles<S>> marching_cubes_block(const G& block, const grid_block& where, const marching_cubes_block_options& options = {}) {
     const grid_dims d = block.dims();
@@ -770,8 +773,11 @@ result<indexed_triangles<S>> merge_blocks(const std::vector<block_triangles<S>>&
 /// Memory: one slab of samples (slab_slices + 1 slices of T), its bit rows, one slab's block
 /// mesh and the output (sizeof(vec3<S>) per vertex, 12 bytes per triangle).
 /// Complexity: O(N) for N samples, each slice but the slab borders read once.
-/// \pre none. Errors: those of fetch and marching_cubes_block(); invalid_argument for a
-/// geometry check_grid_geometry() refuses or a fetch that returns the wrong sample count.
+/// \pre none. Errors: those of fetch and marching_cubes_block() (a non-finite sample, named
+/// by its index in the whole grid); invalid_argument for a geometry check_grid_geometry()
+/// refuses or a fetch that returns the wrong sample count, and, after the last slab, for an
+/// iso outside the samples' range when there is no surface (as marching_cubes_indexed(); the
+/// range is read only from the slabs met while the result is still empty).
 template <class S = float, class T, class Fetch>
 result<indexed_triangles<S>> marching_cubes_by_slabs(const grid_geometry& whole, std::size_t slab_slices, Fetch&& fetch,
                                                      const marching_cubes_block_options& options = {}) {
@@ -806,6 +812,10 @@ result<indexed_triangles<S>> marching_cubes_by_slabs(const grid_geometry& whole,
         pending = {};
         return {};
     };
+    // The samples' range, read only while no slab has given a vertex: the whole grid has a
+    // surface as soon as one slab has, and an empty result is refused as the whole-grid path
+    // refuses it when the iso lies outside the range.
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
     for (std::size_t k0 = 0; k0 + 1 < nz; k0 += slab_slices) {
         const std::size_t count = std::min(slab_slices + 1, nz - k0);
         samples.clear();
@@ -817,6 +827,11 @@ result<indexed_triangles<S>> marching_cubes_by_slabs(const grid_geometry& whole,
         if (!view) return view.error();
         auto blk = marching_cubes_block<S>(*view, {.offset = {0, 0, k0}, .whole = whole.dims}, options);
         if (!blk) return blk.error();
+        if (out.positions.empty() && blk->keys.empty())
+            for (const T& v : samples) {
+                lo = std::min(lo, static_cast<double>(v));
+                hi = std::max(hi, static_cast<double>(v));
+            }
         // Vertices on the top plane belong to the next slab's rows, unless this is the last.
         const bool last = k0 + count == nz;
         const std::uint64_t top = std::uint64_t(k0 + count - 1) * plane_keys;
@@ -832,6 +847,7 @@ result<indexed_triangles<S>> marching_cubes_by_slabs(const grid_geometry& whole,
         pending_emitted = emitted;
     }
     if (auto r = flush_pending(nullptr, 0); !r) return r.error();
+    if (out.positions.empty() && !(lo <= options.iso && options.iso <= hi)) return detail::mc::iso_outside_range(options.iso, lo, hi);
     return out;
 }
 

@@ -113,6 +113,19 @@ result<grid_geometry> voxel_grid_around(const M& mesh, std::size_t resolution, s
     return g;
 }
 
+/// About how many bytes voxelize() holds at its peak on `grid` for a mesh of `triangles`
+/// triangles (polygons fanned): the grid's bits (whole 64-bit words per row, every voxel of
+/// the grid, padding included) plus its copy of the triangles and their slab bins (at most
+/// 96 bytes per triangle for the grids voxel_grid_around() makes). Callers compare it with
+/// the memory they can spare before asking for a large grid: the bits are allocated
+/// untouched (each slab clears its own), so an allocation the system cannot back may only
+/// fail much later. O(1); saturates at the largest std::uint64_t.
+inline std::uint64_t voxelize_memory_estimate(const grid_geometry& grid, std::size_t triangles) {
+    const double words = std::ceil(double(grid.dims[0]) / 64.0) * double(grid.dims[1]) * double(grid.dims[2]);
+    const double bytes = 8.0 * words + 96.0 * double(triangles);
+    return bytes >= 0x1p64 ? std::numeric_limits<std::uint64_t>::max() : static_cast<std::uint64_t>(bytes);
+}
+
 namespace detail::vox {
 
 // Triangle corners in voxel units: voxel (i, j, k)'s centre is (i, j, k), its box +-1/2.
