@@ -54,14 +54,16 @@ mesh_outcome build_and_round_trip(const hmira::io::polygon_soup& soup, hmira::io
         }
         if (k != soup.face_offsets[f + 1]) return {true, kind + ": face " + std::to_string(f) + " lost corners"};
     }
-    std::string again;
+    result<std::string> again = std::string();
     switch (format) {
         case io::file_format::obj: again = io::format_obj(mesh); break;
         case io::file_format::off: again = io::format_off(mesh); break;
         case io::file_format::ply: again = io::format_ply(mesh, {.ply = io::ply_encoding::binary_big_endian}); break;
         case io::file_format::stl: again = io::format_stl(mesh); break;
     }
-    auto back = io::parse_soup(again, format, "again");
+    // What a reader accepted (finite coordinates, one loop per face) the writer must write.
+    if (!again) return {true, kind + ": the writer refused what the reader read: " + again.error().message};
+    auto back = io::parse_soup(*again, format, "again");
     if (!back) return {true, kind + ": re-reading what the writer wrote failed: " + back.error().message};
     // STL stores no shared vertices, so only the other formats keep the counts.
     if (format != io::file_format::stl && (back->points.size() != soup.points.size() || back->face_count() != soup.face_count()))

@@ -14,6 +14,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <cstdlib>
 #include <iostream>
 #include <limits>
@@ -185,10 +186,22 @@ void say(const common_options& o, const std::string& line) {
     if (!o.quiet) std::cout << line << '\n';
 }
 
+namespace {
+
+/// The size of a file to read, for its progress bar (0 when unknown: a pipe, or an error the
+/// reader itself reports).
+std::uint64_t input_size(const std::string& path) {
+    std::error_code ec;
+    const auto size = std::filesystem::file_size(path, ec);
+    return ec ? 0 : static_cast<std::uint64_t>(size);
+}
+
+}  // namespace
+
 std::optional<loaded_mesh> load(const std::string& path, const common_options& o, int& code) {
     loaded_mesh out;
     progress_bar bar("reading " + path, o);
-    auto r = hmira::io::read_mesh(out.mesh, path, {.progress = bar.callback(), .max_input_bytes = o.max_input_bytes});
+    auto r = hmira::io::read_mesh(out.mesh, path, {.progress = bar.callback(input_size(path)), .max_input_bytes = o.max_input_bytes});
     if (!r) {
         code = report(input_exit_code(r.error()), r.error().message);
         return std::nullopt;
@@ -201,7 +214,7 @@ std::optional<loaded_mesh> load(const std::string& path, const common_options& o
 std::optional<loaded_mesh> load_for_edit(const std::string& path, const common_options& o, int& code) {
     loaded_mesh out;
     progress_bar bar("reading " + path, o);
-    auto soup = hmira::io::read_soup(path, {.progress = bar.callback(), .max_input_bytes = o.max_input_bytes});
+    auto soup = hmira::io::read_soup(path, {.progress = bar.callback(input_size(path)), .max_input_bytes = o.max_input_bytes});
     if (!soup) {
         code = report(input_exit_code(soup.error()), soup.error().message);
         return std::nullopt;
@@ -443,9 +456,12 @@ void progress_bar::update(std::uint64_t done, std::uint64_t total) {
     drawn_ = true;
 }
 
-hmira::io::progress_callback progress_bar::callback() {
+hmira::progress_function progress_bar::callback(std::uint64_t total) {
     if (!enabled_) return {};
-    return [this](std::uint64_t d, std::uint64_t t) { update(d, t); };
+    return [this, total](double done) {
+        update(static_cast<std::uint64_t>(done * static_cast<double>(total)), total);
+        return true;
+    };
 }
 
 }  // namespace hmira_cli

@@ -180,7 +180,9 @@ public:
     progress_bar(std::string label, const common_options& o, std::uint64_t min_total = 16u << 20);
     ~progress_bar();
     void update(std::uint64_t done, std::uint64_t total);
-    hmira::io::progress_callback callback();
+    /// A progress function for a reader of `total` bytes: draws the bar, never cancels (Ctrl-C
+    /// ends the program through its signal handler).
+    hmira::progress_function callback(std::uint64_t total);
 
 private:
     std::string label_;

@@ -67,19 +67,19 @@ void expect_rejected(const bad_case& c) {
 std::string off_cube() {
     face_vertex_mesh m;
     (void)generate_cube(m);
-    return io::format_off(m);
+    return io::format_off(m).value();
 }
 
 std::string binary_ply_cube(io::ply_encoding e = io::ply_encoding::binary_little_endian) {
     face_vertex_mesh m;
     (void)generate_cube(m);
-    return io::format_ply(m, {.ply = e, .ply_coordinates = io::ply_scalar::float32});
+    return io::format_ply(m, {.ply = e, .ply_coordinates = io::ply_scalar::float32}).value();
 }
 
 std::string binary_stl_tetra() {
     face_vertex_mesh m;
     (void)generate_tetrahedron(m);
-    return io::format_stl(m);
+    return io::format_stl(m).value();
 }
 
 const std::string ply_ascii_head = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n";

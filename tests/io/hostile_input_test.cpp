@@ -138,17 +138,29 @@ TEST(io_hostile, non_finite_coordinates_and_normals_are_rejected_in_every_format
     for (auto scalar : {io::ply_scalar::float32, io::ply_scalar::float64}) {
         face_vertex_mesh cube;
         ASSERT_TRUE(generate_cube(cube));
-        cube.set_position(vertex_handle(5), {0, std::numeric_limits<double>::quiet_NaN(), 0});
-        const auto bytes = io::format_ply(cube, {.ply = io::ply_encoding::binary_big_endian, .ply_coordinates = scalar});
-        const auto msg = rejection("i.ply", bytes);
+        // The writers refuse a non-finite coordinate, so the NaN is put into the bytes: vertex 5's y,
+        // big-endian, a quiet NaN of the coordinate's width.
+        auto formatted = io::format_ply(cube, {.ply = io::ply_encoding::binary_big_endian, .ply_coordinates = scalar});
+        ASSERT_TRUE(formatted) << formatted.error().message;
+        std::string bytes = std::move(*formatted);
         const std::size_t stride = scalar == io::ply_scalar::float32 ? 12 : 24;
+        const std::size_t y = bytes.find("end_header\n") + 11 + 5 * stride + stride / 3;
+        const std::string nan = scalar == io::ply_scalar::float32 ? std::string("\x7f\xc0\x00\x00", 4)
+                                                                  : std::string("\x7f\xf8\x00\x00\x00\x00\x00\x00", 8);
+        bytes.replace(y, nan.size(), nan);
+        const auto msg = rejection("i.ply", bytes);
         EXPECT_TRUE(contains(msg, "i.ply: byte offset " + std::to_string(bytes.find("end_header\n") + 11 + 5 * stride) + ": vertex 5 is not finite")) << msg;
     }
     {
         face_vertex_mesh tetra;
         ASSERT_TRUE(generate_tetrahedron(tetra));
-        tetra.set_position(vertex_handle(2), {0, 0, std::numeric_limits<double>::infinity()});
-        const auto msg = rejection("j.stl", io::format_stl(tetra));
+        // Triangle 0's first corner's z (after the 80-byte header, the count and the normal),
+        // little-endian +infinity.
+        auto formatted = io::format_stl(tetra);
+        ASSERT_TRUE(formatted) << formatted.error().message;
+        std::string bytes = std::move(*formatted);
+        bytes.replace(84 + 12 + 8, 4, std::string("\x00\x00\x80\x7f", 4));
+        const auto msg = rejection("j.stl", bytes);
         EXPECT_TRUE(contains(msg, "j.stl: byte offset")) << msg;
         EXPECT_TRUE(contains(msg, "has a vertex coordinate that is not finite")) << msg;
     }

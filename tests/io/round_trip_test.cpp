@@ -244,7 +244,7 @@ TEST(io_stl, triangles_that_weld_to_a_line_are_dropped_and_counted) {
 TEST(io_stl, binary_file_starting_with_solid_is_read_as_binary) {
     face_vertex_mesh m;
     ASSERT_TRUE(generate_octahedron(m));
-    auto bytes = io::format_stl(m);
+    auto bytes = io::format_stl(m).value();
     std::memcpy(bytes.data(), "solid but binary", 16);
     auto s = io::parse_stl(bytes, "b.stl");
     ASSERT_TRUE(s) << s.error().message;
@@ -270,7 +270,7 @@ TEST(io_write, writing_over_an_existing_file_replaces_it_whole) {
     scratch_dir dir;
     ASSERT_TRUE(io::write_mesh(big, dir / "m.off"));
     ASSERT_TRUE(io::write_mesh(small, dir / "m.off"));
-    EXPECT_EQ(hmira_test::read_bytes(dir / "m.off"), io::format_off(small));
+    EXPECT_EQ(hmira_test::read_bytes(dir / "m.off"), io::format_off(small).value());
 }
 
 }  // namespace

@@ -106,7 +106,7 @@ TEST(stl_writer, a_face_without_area_is_fanned_into_zero_area_triangles) {
     g.points = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {3, 0, 0}, {1, 1, 0}};
     g.faces = {{0, 1, 2, 3}, {0, 3, 4}};  // a flat sliver, as a bevel at its clamp limit makes
     auto m = mesh_from<face_vertex_mesh>(g);
-    const auto bytes = io::format_stl(m);
+    const auto bytes = io::format_stl(m).value();
     ASSERT_EQ(bytes.size(), 84u + 50u * 3u);  // two fan triangles and the real one
 }
 
@@ -124,7 +124,9 @@ TEST(stl_writer, a_self_crossing_face_is_refused_by_name_and_the_existing_file_s
     EXPECT_NE(r.error().message.find("face " + std::to_string(bowtie)), std::string::npos) << r.error().message;
     EXPECT_EQ(read_bytes(dir / "old.stl"), "previous content");
     EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir.path()), {}), 1);  // no temporary left
-    EXPECT_TRUE(io::format_stl(m).empty());
+    const auto formatted = io::format_stl(m);
+    ASSERT_FALSE(formatted);
+    EXPECT_EQ(formatted.error().code, errc::topology);
 }
 
 TEST(polygon_writers, a_face_with_an_inner_ring_is_refused_by_name_never_dropped) {
@@ -141,9 +143,11 @@ TEST(polygon_writers, a_face_with_an_inner_ring_is_refused_by_name_never_dropped
         EXPECT_NE(r.error().message.find(name + " has inner rings"), std::string::npos) << r.error().message;
         EXPECT_EQ(read_bytes(dir / file), "previous content") << file;
     }
-    EXPECT_TRUE(io::format_obj(m).empty());
-    EXPECT_TRUE(io::format_off(m).empty());
-    EXPECT_TRUE(io::format_ply(m).empty());
+    for (const auto& formatted : {io::format_obj(m), io::format_off(m), io::format_ply(m)}) {
+        ASSERT_FALSE(formatted);
+        EXPECT_EQ(formatted.error().code, errc::unsupported);
+        EXPECT_EQ(formatted.error().element, (long long)T::face_index(m, top));
+    }
 
     // Cut into triangles first, the same mesh writes, and OBJ keeps the area (20 + 3 + 1).
     ASSERT_TRUE(triangulate_faces(m));

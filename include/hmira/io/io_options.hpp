@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "../algorithms/repair/repair_polygon_soup.hpp"
+#include "../core/progress.hpp"
 #include "../core/vec3.hpp"
 
 namespace hmira::io {
@@ -31,16 +32,14 @@ struct mesh_attributes {
     bool empty() const noexcept { return normals.empty() && colors.empty(); }
 };
 
-/// Called now and then while a reader parses: bytes done and total (for progress bars).
-using progress_callback = std::function<void(std::uint64_t done, std::uint64_t total)>;
-
 /// How the readers read.
 struct read_options {
     /// STL only: weld corners with exactly equal coordinates into one vertex (-0 equals +0).
     /// Without welding every triangle gets three vertices of its own (a soup).
     bool weld_stl = true;
-    /// Called every few megabytes of input; leave empty for none.
-    progress_callback progress = {};
+    /// Called every few megabytes of input with the share parsed; returning false stops the
+    /// reader, which returns errc::cancelled and leaves the mesh unchanged. Empty for none.
+    progress_function progress = {};
     /// Largest input read from a non-regular file (pipe, device, FIFO) before giving up with
     /// an error naming the file and the limit; regular files are read up to their size.
     std::uint64_t max_input_bytes = std::uint64_t{4} << 30;

@@ -148,7 +148,7 @@ inline result<polygon_soup> parse_obj(std::string_view text, const std::string& 
         }
         // Other records (vt, g, o, s, l, usemtl, mtllib, comments) carry nothing we keep.
         if (!c.next_line()) break;
-        ticker.tick(c.offset());
+        if (!ticker.tick(c.offset())) return detail::progress_ticker::cancelled(where(c.line()));
     }
     if (max_index >= static_cast<long long>(soup.points.size()))
         return fail(errc::parse_error, where(max_index_line) + ": vertex index " + std::to_string(max_index_raw) + " is out of range (the file has " +
@@ -181,13 +181,11 @@ result<read_report> read_obj(M& mesh, const std::filesystem::path& path, const r
     return finish_read<M, T>(mesh, std::move(*soup), path.string(), "obj", 0, options);
 }
 
-/// Writes OBJ through `out` (false, with nothing written, if a face has inner rings: see
-/// write_obj): `v` lines (with `r g b` when there are colours), `vn` lines
-/// when there are normals, then 1-based `f` lines.
-template <class M, class T = default_traits<M>>
-    requires writable_mesh<M, T>
-bool write_obj_to(const M& mesh, std::ostream& stream, const write_options& options = {}) {
-    if (!detail::refuse_ringed_faces<M, T>(mesh, "OBJ")) return false;  // before any byte is written
+namespace detail {
+
+/// The OBJ bytes of a mesh that refuse_unwritable accepted; false when the stream failed.
+template <class M, class T>
+bool put_obj(const M& mesh, std::ostream& stream, const write_options& options) {
     using S = typename T::scalar;
     detail::chunked_output out(stream);
     auto& b = out.buffer();
@@ -242,24 +240,37 @@ bool write_obj_to(const M& mesh, std::ostream& stream, const write_options& opti
     return out.flush();
 }
 
-/// OBJ text of the mesh (see write_obj_to).
+}  // namespace detail
+
+/// Writes OBJ through `out` (an error, with nothing written, for a face with inner rings or a
+/// non-finite coordinate: see write_obj): `v` lines (with `r g b` when there are colours), `vn` lines
+/// when there are normals, then 1-based `f` lines.
 template <class M, class T = default_traits<M>>
     requires writable_mesh<M, T>
-std::string format_obj(const M& mesh, const write_options& options = {}) {
+result<void> write_obj_to(const M& mesh, std::ostream& stream, const write_options& options = {}) {
+    if (auto ok = detail::refuse_unwritable<M, T>(mesh, "OBJ"); !ok) return ok;  // before any byte is written
+    if (!detail::put_obj<M, T>(mesh, stream, options)) return detail::stream_failed("OBJ");
+    return {};
+}
+
+/// OBJ text of the mesh (see write_obj_to), or its error.
+template <class M, class T = default_traits<M>>
+    requires writable_mesh<M, T>
+result<std::string> format_obj(const M& mesh, const write_options& options = {}) {
     std::ostringstream s;
-    write_obj_to<M, T>(mesh, s, options);
+    if (auto ok = write_obj_to<M, T>(mesh, s, options); !ok) return ok.error();
     return std::move(s).str();
 }
 
 /// Writes the mesh as OBJ, atomically: a failure leaves any existing file untouched.
 /// Complexity: O(V + C). Errors: errc::unsupported naming a face with inner rings (OBJ has one
-/// loop per face, and a ring is never dropped silently; triangulate_faces first), with no file
-/// written; errc::io_error.
+/// loop per face, and a ring is never dropped silently; triangulate_faces first), or a vertex
+/// with a non-finite coordinate, with no file written; errc::io_error.
 template <class M, class T = default_traits<M>>
     requires writable_mesh<M, T>
 result<void> write_obj(const M& mesh, const std::filesystem::path& path, const write_options& options = {}) {
-    if (auto ok = detail::refuse_ringed_faces<M, T>(mesh, "OBJ"); !ok) return ok.error();
-    return detail::write_file_atomically(path, [&](std::ostream& o) { return write_obj_to<M, T>(mesh, o, options); });
+    if (auto ok = detail::refuse_unwritable<M, T>(mesh, "OBJ"); !ok) return ok.error();
+    return detail::write_file_atomically(path, [&](std::ostream& o) { return detail::put_obj<M, T>(mesh, o, options); });
 }
 
 }  // namespace hmira::io

@@ -103,7 +103,7 @@ inline result<polygon_soup> parse_off(std::string_view text, const std::string& 
             soup.attributes.colors.push_back(rgba);
         }
         c.next_line();
-        ticker.tick(c.offset());
+        if (!ticker.tick(c.offset())) return detail::progress_ticker::cancelled(where());
     }
     for (long long f = 0; f < nf; ++f) {
         c.skip_space_and_newlines('#');
@@ -125,7 +125,7 @@ inline result<polygon_soup> parse_off(std::string_view text, const std::string& 
         }
         soup.face_offsets.push_back(soup.indices.size());
         c.next_line();
-        ticker.tick(c.offset());
+        if (!ticker.tick(c.offset())) return detail::progress_ticker::cancelled(where());
     }
     c.skip_space_and_newlines('#');
     if (!c.at_end()) return fail(errc::parse_error, where() + ": unexpected content after the last face (header counts too small?)");
@@ -145,12 +145,11 @@ result<read_report> read_off(M& mesh, const std::filesystem::path& path, const r
     return finish_read<M, T>(mesh, std::move(*soup), path.string(), "off", 0, options);
 }
 
-/// Writes OFF through `out` (false, with nothing written, if a face has inner rings: see
-/// write_off): "[C][N]OFF" as the attributes require, colours as 0..255 RGBA.
-template <class M, class T = default_traits<M>>
-    requires writable_mesh<M, T>
-bool write_off_to(const M& mesh, std::ostream& stream, const write_options& options = {}) {
-    if (!detail::refuse_ringed_faces<M, T>(mesh, "OFF")) return false;  // before any byte is written
+namespace detail {
+
+/// The OFF bytes of a mesh that refuse_unwritable accepted; false when the stream failed.
+template <class M, class T>
+bool put_off(const M& mesh, std::ostream& stream, const write_options& options) {
     using S = typename T::scalar;
     detail::chunked_output out(stream);
     auto& b = out.buffer();
@@ -201,23 +200,36 @@ bool write_off_to(const M& mesh, std::ostream& stream, const write_options& opti
     return out.flush();
 }
 
-/// OFF text of the mesh (see write_off_to).
+}  // namespace detail
+
+/// Writes OFF through `out` (false, with nothing written, if a face has inner rings: see
+/// write_off): "[C][N]OFF" as the attributes require, colours as 0..255 RGBA.
 template <class M, class T = default_traits<M>>
     requires writable_mesh<M, T>
-std::string format_off(const M& mesh, const write_options& options = {}) {
+result<void> write_off_to(const M& mesh, std::ostream& stream, const write_options& options = {}) {
+    if (auto ok = detail::refuse_unwritable<M, T>(mesh, "OFF"); !ok) return ok;  // before any byte is written
+    if (!detail::put_off<M, T>(mesh, stream, options)) return detail::stream_failed("OFF");
+    return {};
+}
+
+/// OFF text of the mesh (see write_off_to), or its error.
+template <class M, class T = default_traits<M>>
+    requires writable_mesh<M, T>
+result<std::string> format_off(const M& mesh, const write_options& options = {}) {
     std::ostringstream s;
-    write_off_to<M, T>(mesh, s, options);
+    if (auto ok = write_off_to<M, T>(mesh, s, options); !ok) return ok.error();
     return std::move(s).str();
 }
 
 /// Writes the mesh as OFF, atomically. Complexity O(V + C). Errors: errc::unsupported naming a
 /// face with inner rings (OFF has one loop per face, and a ring is never dropped silently;
-/// triangulate_faces first), with no file written; errc::io_error.
+/// triangulate_faces first), or a vertex with a non-finite
+/// coordinate, with no file written; errc::io_error.
 template <class M, class T = default_traits<M>>
     requires writable_mesh<M, T>
 result<void> write_off(const M& mesh, const std::filesystem::path& path, const write_options& options = {}) {
-    if (auto ok = detail::refuse_ringed_faces<M, T>(mesh, "OFF"); !ok) return ok.error();
-    return detail::write_file_atomically(path, [&](std::ostream& o) { return write_off_to<M, T>(mesh, o, options); });
+    if (auto ok = detail::refuse_unwritable<M, T>(mesh, "OFF"); !ok) return ok.error();
+    return detail::write_file_atomically(path, [&](std::ostream& o) { return detail::put_off<M, T>(mesh, o, options); });
 }
 
 }  // namespace hmira::io

@@ -403,7 +403,7 @@ result<void> ply_read_binary(const ply_header& h, Soup& soup, ply_binary_reader&
                     }
                     r.pos += 1 + 4 * k;
                     soup.face_offsets.push_back(soup.indices.size());
-                    if ((f & 0xffff) == 0) ticker.tick(r.pos);
+                    if ((f & 0xffff) == 0 && !ticker.tick(r.pos)) return progress_ticker::cancelled(r.at(r.pos));
                     continue;
                 }
                 for (std::size_t pi = 0; pi < e.props.size(); ++pi) {
@@ -435,7 +435,7 @@ result<void> ply_read_binary(const ply_header& h, Soup& soup, ply_binary_reader&
                     }
                     r.pos += static_cast<std::size_t>(k) * is;
                 }
-                if ((f & 0xffff) == 0) ticker.tick(r.pos);
+                if ((f & 0xffff) == 0 && !ticker.tick(r.pos)) return progress_ticker::cancelled(r.at(r.pos));
             }
         } else {
             // An element we do not keep: step over it.
@@ -556,7 +556,8 @@ result<void> ply_read_ascii(const ply_header& h, Soup& soup, std::string_view te
             }
             if (is_face && list >= 0 && soup.indices.size() > face_start) soup.face_offsets.push_back(soup.indices.size());
             c.next_line();
-            ticker.tick(h.data_offset + c.offset());
+            if (!ticker.tick(h.data_offset + c.offset()))
+                return progress_ticker::cancelled(name + ":" + std::to_string(c.line()));
         }
     }
     c.skip_space_and_newlines();
@@ -630,13 +631,11 @@ result<read_report> read_ply(M& mesh, const std::filesystem::path& path, const r
     return finish_read<M, T>(mesh, std::move(*soup), path.string(), format, 0, options);
 }
 
-/// Writes PLY through `out` (false, nothing written, if a face has inner rings; see write_ply) in the chosen encoding: x y z (the mesh's scalar type unless
-/// options say otherwise), nx ny nz and red green blue alpha when there are attributes, and
-/// faces as "list uchar int vertex_indices" ("list uint int" if a face has > 255 vertices).
-template <class M, class T = default_traits<M>>
-    requires writable_mesh<M, T>
-bool write_ply_to(const M& mesh, std::ostream& stream, const write_options& options = {}) {
-    if (!detail::refuse_ringed_faces<M, T>(mesh, "PLY")) return false;  // before any byte is written
+namespace detail {
+
+/// The PLY bytes of a mesh that refuse_unwritable accepted; false when the stream failed.
+template <class M, class T>
+bool put_ply(const M& mesh, std::ostream& stream, const write_options& options) {
     using S = typename T::scalar;
     detail::chunked_output out(stream);
     auto& b = out.buffer();
@@ -723,23 +722,38 @@ bool write_ply_to(const M& mesh, std::ostream& stream, const write_options& opti
     return out.flush();
 }
 
-/// PLY bytes of the mesh (see write_ply_to).
+}  // namespace detail
+
+/// Writes PLY through `out` (an error, with nothing written, for a face with inner rings or a non-finite
+/// coordinate; see write_ply) in the chosen encoding: x y z (the mesh's scalar type unless
+/// options say otherwise), nx ny nz and red green blue alpha when there are attributes, and
+/// faces as "list uchar int vertex_indices" ("list uint int" if a face has > 255 vertices).
 template <class M, class T = default_traits<M>>
     requires writable_mesh<M, T>
-std::string format_ply(const M& mesh, const write_options& options = {}) {
+result<void> write_ply_to(const M& mesh, std::ostream& stream, const write_options& options = {}) {
+    if (auto ok = detail::refuse_unwritable<M, T>(mesh, "PLY"); !ok) return ok;  // before any byte is written
+    if (!detail::put_ply<M, T>(mesh, stream, options)) return detail::stream_failed("PLY");
+    return {};
+}
+
+/// PLY bytes of the mesh (see write_ply_to), or its error.
+template <class M, class T = default_traits<M>>
+    requires writable_mesh<M, T>
+result<std::string> format_ply(const M& mesh, const write_options& options = {}) {
     std::ostringstream s;
-    write_ply_to<M, T>(mesh, s, options);
+    if (auto ok = write_ply_to<M, T>(mesh, s, options); !ok) return ok.error();
     return std::move(s).str();
 }
 
 /// Writes the mesh as PLY, atomically. Complexity O(V + C). Errors: errc::unsupported naming a
 /// face with inner rings (PLY has one loop per face, and a ring is never dropped silently;
-/// triangulate_faces first), with no file written; errc::io_error.
+/// triangulate_faces first), or a vertex with a non-finite
+/// coordinate, with no file written; errc::io_error.
 template <class M, class T = default_traits<M>>
     requires writable_mesh<M, T>
 result<void> write_ply(const M& mesh, const std::filesystem::path& path, const write_options& options = {}) {
-    if (auto ok = detail::refuse_ringed_faces<M, T>(mesh, "PLY"); !ok) return ok.error();
-    return detail::write_file_atomically(path, [&](std::ostream& o) { return write_ply_to<M, T>(mesh, o, options); });
+    if (auto ok = detail::refuse_unwritable<M, T>(mesh, "PLY"); !ok) return ok.error();
+    return detail::write_file_atomically(path, [&](std::ostream& o) { return detail::put_ply<M, T>(mesh, o, options); });
 }
 
 }  // namespace hmira::io

@@ -190,7 +190,7 @@ inline result<void> parse_stl_ascii(std::string_view text, const std::string& na
         if (auto r = expect("endfacet", ctx.c_str()); !r) return r;
         out.add(tri);
         ++facet;
-        ticker.tick(c.offset());
+        if (!ticker.tick(c.offset())) return progress_ticker::cancelled(where());
     }
     if (in_solid) return fail(errc::parse_error, where() + ": file ends before 'endsolid' (truncated file?)");
     ticker.finish();
@@ -253,7 +253,8 @@ inline result<stl_soup> parse_stl(std::string_view text, const std::string& name
                                                    " has a vertex coordinate that is not finite (NaN or infinity)", static_cast<long long>(t));
         }
         b.add(tri);
-        if ((t & 0xffff) == 0) ticker.tick(static_cast<std::uint64_t>(p - text.data()));
+        if ((t & 0xffff) == 0 && !ticker.tick(static_cast<std::uint64_t>(p - text.data())))
+            return detail::progress_ticker::cancelled(name + ": triangle " + std::to_string(t));
     }
     ticker.finish();
     out.dropped_triangles = b.dropped;
@@ -360,33 +361,36 @@ bool write_stl_planned(const M& mesh, std::ostream& stream, const stl_triangles<
 /// with inner rings) as its face_triangles, and a face without area as a zero-area fan (see
 /// detail::plan_stl_triangles). Facet normals are computed from the corners (zero for
 /// degenerate triangles). Per-vertex attributes cannot be stored.
-/// Returns false, having written nothing, when a face's projection is not simple; write_stl
-/// gives the error naming the face.
+/// Errors, with nothing written: those of write_stl.
 template <class M, class T = default_traits<M>>
     requires writable_mesh<M, T>
-bool write_stl_to(const M& mesh, std::ostream& stream, const write_options& options = {}) {
+result<void> write_stl_to(const M& mesh, std::ostream& stream, const write_options& options = {}) {
+    if (auto ok = detail::refuse_non_finite<M, T>(mesh, "STL"); !ok) return ok;
     auto plan = detail::plan_stl_triangles<M, T>(mesh);
-    if (!plan) return false;
-    return detail::write_stl_planned<M, T>(mesh, stream, *plan, options);
+    if (!plan) return plan.error();
+    if (!detail::write_stl_planned<M, T>(mesh, stream, *plan, options)) return detail::stream_failed("STL");
+    return {};
 }
 
-/// STL bytes of the mesh (see write_stl_to); empty when a face is refused.
+/// STL bytes of the mesh (see write_stl_to), or its error.
 template <class M, class T = default_traits<M>>
     requires writable_mesh<M, T>
-std::string format_stl(const M& mesh, const write_options& options = {}) {
+result<std::string> format_stl(const M& mesh, const write_options& options = {}) {
     std::ostringstream s;
-    if (!write_stl_to<M, T>(mesh, s, options)) return {};
+    if (auto ok = write_stl_to<M, T>(mesh, s, options); !ok) return ok.error();
     return std::move(s).str();
 }
 
 /// Writes the mesh as STL, atomically. Coordinates become float. Faces are triangulated as
 /// write_stl_to says, before the file is touched.
 /// Complexity: O(C) for triangle meshes; face_triangles' cost on the other faces.
-/// Errors: errc::topology (or the code face_triangles gives) naming a face whose projection
-/// is not simple, with no file written and any existing file unchanged; errc::io_error.
+/// Errors: errc::unsupported naming a vertex with a non-finite coordinate; errc::topology (or
+/// the code face_triangles gives) naming a face whose projection is not simple; with no file
+/// written and any existing file unchanged; errc::io_error.
 template <class M, class T = default_traits<M>>
     requires writable_mesh<M, T>
 result<void> write_stl(const M& mesh, const std::filesystem::path& path, const write_options& options = {}) {
+    if (auto ok = detail::refuse_non_finite<M, T>(mesh, "STL"); !ok) return ok.error();
     auto plan = detail::plan_stl_triangles<M, T>(mesh);
     if (!plan) return plan.error();
     return detail::write_file_atomically(path, [&](std::ostream& o) { return detail::write_stl_planned<M, T>(mesh, o, *plan, options); });

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -115,6 +116,40 @@ result<stl_triangles<M, T>> plan_stl_triangles(const M& mesh) {
         ++ordinal;
     }
     return plan;
+}
+
+/// No file of any format holds a non-finite coordinate: refuse one, naming the vertex
+/// (errc::unsupported, its index as the element). O(V).
+template <class M, class T>
+result<void> refuse_non_finite(const M& mesh, const char* format) {
+    std::size_t ordinal = 0;
+    for (auto v : T::vertices(mesh)) {
+        const auto p = T::position(mesh, v);
+        if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2])) {
+            const long long index = [&] {
+                if constexpr (vertex_index_mesh<M, T>) return static_cast<long long>(T::vertex_index(mesh, v));
+                else return static_cast<long long>(ordinal);
+            }();
+            return fail(errc::unsupported, std::string(format) + " writer: vertex " + std::to_string(index) +
+                                               " has a coordinate that is not finite (NaN or infinity); nothing is written",
+                        index);
+        }
+        ++ordinal;
+    }
+    return {};
+}
+
+/// What OBJ, OFF and PLY check before writing a byte: no face with inner rings, no
+/// non-finite coordinate.
+template <class M, class T>
+result<void> refuse_unwritable(const M& mesh, const char* format) {
+    if (auto ok = refuse_ringed_faces<M, T>(mesh, format); !ok) return ok;
+    return refuse_non_finite<M, T>(mesh, format);
+}
+
+/// The error of a writer whose stream refused the data.
+inline hmira::error stream_failed(const char* format) {
+    return fail(errc::io_error, std::string(format) + " writer: the output stream failed");
 }
 
 }  // namespace hmira::io::detail

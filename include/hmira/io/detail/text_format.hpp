@@ -4,6 +4,7 @@
 // walks the text once, counting lines for file:line messages.
 #pragma once
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <optional>
@@ -15,6 +16,7 @@
 #include <vector>
 
 #include "../../concepts.hpp"
+#include "../../core/progress.hpp"
 
 namespace hmira::io::detail {
 
@@ -184,24 +186,35 @@ inline std::string describe_bad_number(const text_cursor& c) {
     return s;
 }
 
-/// Reports progress every `step` bytes at most; free when no callback is set.
-template <class Callback>
+/// A reader's progress: reports the share of the input parsed to a progress_function, through
+/// a progress_gate, every `step` bytes at most; free when no function is set. tick() returns
+/// false once the function has asked to stop, and the reader then returns cancelled().
 class progress_ticker {
 public:
-    progress_ticker(const Callback& cb, std::uint64_t total) : cb_(cb), total_(total) {}
-    void tick(std::uint64_t done) {
-        if (!cb_ || done < next_) return;
+    progress_ticker(const progress_function& report, std::uint64_t total)
+        : gate_(report, static_cast<std::size_t>(total)), active_(static_cast<bool>(report)), total_(total) {}
+
+    /// Records that the reader has reached byte `done`.
+    [[nodiscard]] bool tick(std::uint64_t done) {
+        if (!active_ || done < next_) return true;
         next_ = done + step;
-        cb_(done, total_);
+        const bool go = gate_.advance(static_cast<std::size_t>(done > reported_ ? done - reported_ : 0));
+        reported_ = std::max(reported_, done);
+        return go;
     }
+    /// Reports the whole input read.
     void finish() {
-        if (cb_) cb_(total_, total_);
+        if (active_ && reported_ < total_) (void)gate_.advance(static_cast<std::size_t>(total_ - reported_));
     }
+    /// The error a reader returns when tick() said stop, at `where` (file and line or offset).
+    static hmira::error cancelled(const std::string& where) { return fail(errc::cancelled, where + ": reading cancelled"); }
 
 private:
     static constexpr std::uint64_t step = 4u << 20;
-    const Callback& cb_;
+    hmira::detail::progress_gate gate_;
+    bool active_;
     std::uint64_t total_;
+    std::uint64_t reported_ = 0;
     std::uint64_t next_ = 0;
 };
 
