@@ -14,3 +14,8 @@ if [ -x apps/hmira/demo-cli.sh ] || [ -f apps/hmira/demo-cli.sh ]; then
   echo
   bash apps/hmira/demo-cli.sh build/demo demo-output/cli
 fi
+# The viewer bundle is committed (viewer/dist/hmira-viewer.js), so this build's `hmira view`
+# works without node: a page to open in any browser.
+echo
+./build/demo/apps/hmira/hmira generate icosahedron demo-output/icosahedron.off -q
+./build/demo/apps/hmira/hmira view demo-output/icosahedron.off demo-output/icosahedron.html

@@ -2,8 +2,10 @@
 # hmira_viewer_embed(<target>): compiles the viewer bundle (three.js + src/viewer.js, bundled
 # by esbuild) into <target> as a string, for `hmira view`. The bundle comes from, in order:
 #   HMIRA_VIEWER_BUNDLE (a built hmira-viewer.js), a build step when node and viewer/node_modules
-#   are there (viewer/build.sh installs them), or viewer/dist/hmira-viewer.js.
-# Without any of them the target still builds and `hmira view` says how to get the bundle.
+#   are there (viewer/build.sh installs them), or viewer/dist/hmira-viewer.js, the bundle committed
+#   to the repository (so every build has it, without node; viewer/check-bundle.sh checks that it
+#   is what the sources make). Only if that file was deleted does the target build without a
+#   bundle: then `hmira view` is refused with a usage error saying how to get it back.
 set(HMIRA_VIEWER_BUNDLE "" CACHE FILEPATH "A built viewer bundle (hmira-viewer.js) to embed in hmira; empty: build or find one")
 set(_hmira_viewer_dir ${CMAKE_CURRENT_LIST_DIR})
 
@@ -32,6 +34,7 @@ function(hmira_viewer_embed target)
     target_compile_definitions(${target} PRIVATE HMIRA_VIEWER_BUNDLE=1)
     message(STATUS "hmira view: viewer bundle ${bundle} is embedded")
   else()
-    message(STATUS "hmira view: no viewer bundle (run viewer/build.sh, which needs node and npm, then re-run cmake)")
+    message(WARNING "hmira view: no viewer bundle: viewer/dist/hmira-viewer.js is missing (restore it from git, or run "
+                    "viewer/build.sh, which needs node and npm, then re-run cmake); `hmira view` and hmira.view will refuse to run")
   endif()
 endfunction()

@@ -54,7 +54,17 @@ inline std::array<double, 3> bounding_box_centre(std::span<const double> points)
     std::array<double, 3> lo{points[0], points[1], points[2]}, hi = lo;
     for (std::size_t i = 0; i + 2 < points.size(); i += 3)
         for (std::size_t k = 0; k < 3; ++k) lo[k] = std::min(lo[k], points[i + k]), hi[k] = std::max(hi[k], points[i + k]);
-    return {(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2};
+    // Halves first: lo + hi overflows for coordinates beyond half the double range.
+    return {lo[0] / 2 + hi[0] / 2, lo[1] / 2 + hi[1] / 2, lo[2] / 2 + hi[2] / 2};
+}
+
+/// The first vertex whose page position (float, relative to the origin) is not finite: its
+/// distance from the origin exceeds the float range (about 3.4e38). A page holding one would
+/// draw nothing sensible, so a caller refuses the mesh. Returns positions.size() / 3 if none.
+inline std::size_t first_vertex_beyond_float_range(const page_mesh& m) {
+    for (std::size_t i = 0; i < m.positions.size(); ++i)
+        if (!std::isfinite(m.positions[i])) return i / 3;
+    return m.positions.size() / 3;
 }
 
 /// Fans each polygon into triangles, finds which fan edges are polygon edges (each drawn once)

@@ -16,6 +16,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <cstdlib>
+#include <filesystem>
 #include <iostream>
 #include <limits>
 
@@ -186,7 +187,24 @@ void say(const common_options& o, const std::string& line) {
     if (!o.quiet) std::cout << line << '\n';
 }
 
+bool same_file(const std::string& a, const std::string& b) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    // Both exist: the same inode, whatever the spelling (symlinks, hard links, "./", "..").
+    if (fs::exists(a, ec) && fs::exists(b, ec)) return fs::equivalent(a, b, ec) && !ec;
+    // One is missing (an output not written yet): the same file only if the names resolve alike.
+    const auto ca = fs::weakly_canonical(fs::absolute(a, ec), ec);
+    const auto cb = fs::weakly_canonical(fs::absolute(b, ec), ec);
+    return !ec && ca == cb;
+}
+
 namespace {
+
+/// The files this run reads (note_input()): save() refuses to write over one.
+std::vector<std::string>& files_read() {
+    static std::vector<std::string> paths;
+    return paths;
+}
 
 /// The size of a file to read, for its progress bar (0 when unknown: a pipe, or an error the
 /// reader itself reports).
@@ -198,7 +216,10 @@ std::uint64_t input_size(const std::string& path) {
 
 }  // namespace
 
+void note_input(const std::string& path) { files_read().push_back(path); }
+
 std::optional<loaded_mesh> load(const std::string& path, const common_options& o, int& code) {
+    note_input(path);
     loaded_mesh out;
     progress_bar bar("reading " + path, o);
     auto r = hmira::io::read_mesh(out.mesh, path, {.progress = bar.callback(input_size(path)), .max_input_bytes = o.max_input_bytes});
@@ -212,6 +233,7 @@ std::optional<loaded_mesh> load(const std::string& path, const common_options& o
 }
 
 std::optional<loaded_mesh> load_for_edit(const std::string& path, const common_options& o, int& code) {
+    note_input(path);
     loaded_mesh out;
     progress_bar bar("reading " + path, o);
     auto soup = hmira::io::read_soup(path, {.progress = bar.callback(input_size(path)), .max_input_bytes = o.max_input_bytes});
@@ -273,6 +295,27 @@ bool file_faces_to_loaded(const loaded_mesh& loaded, std::vector<std::size_t>& f
 }
 
 int save(const hmira::face_vertex_mesh& mesh, const std::string& path, const hmira::io::write_options& options, const common_options&) {
+    for (const auto& input : files_read())
+        if (same_file(path, input))
+            return report(usage, "output " + path + " is the input " + input + ": hmira never writes over its input; name another output file");
+    // No output holds a non-finite coordinate: a result that overflowed, or one that a float
+    // format (STL, PLY with --float) cannot hold, is refused here whatever the command.
+    std::string ext = std::filesystem::path(path).extension().string();
+    for (auto& c : ext) c = static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
+    const bool as_float = ext == ".stl" || (ext == ".ply" && options.ply_coordinates == hmira::io::ply_scalar::float32);
+    std::size_t n = 0;
+    for (auto v : mesh.vertices()) {
+        const auto p = mesh.position(v);
+        for (double x : {p.x, p.y, p.z}) {
+            if (!std::isfinite(x))
+                return report(invalid_input, path + ": vertex " + std::to_string(n) + " of the result has a coordinate that is not finite "
+                                                    "(the computation overflowed); nothing is written");
+            if (as_float && !std::isfinite(static_cast<float>(x)))
+                return report(invalid_input, path + ": vertex " + std::to_string(n) + " has a coordinate (" + compact(x) + ") beyond the float range (about 3.4e38) that " +
+                                                 ext + (ext == ".stl" ? "" : " with --float") + " stores; nothing is written");
+        }
+        ++n;
+    }
     auto w = hmira::io::write_mesh(mesh, path, options);
     if (!w) return report(exit_code_for(w.error()), w.error().message);
     return ok;

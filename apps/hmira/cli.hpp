@@ -90,6 +90,10 @@ bool refuse_non_finite(const hmira::face_vertex_mesh& mesh, const std::string& p
 /// of an output is written) and HMIRA_TEST_NAMED_TEMPORARY=1 (no O_TMPFILE).
 void install_signal_cleanup();
 
+/// True when `a` and `b` name the same file: std::filesystem::equivalent when both exist (so
+/// symlinks, hard links and other spellings count), else the same weakly canonical path.
+bool same_file(const std::string& a, const std::string& b);
+
 /// Prints a line on stdout unless quiet.
 void say(const common_options& o, const std::string& line);
 
@@ -114,7 +118,14 @@ std::optional<loaded_mesh> load_for_edit(const std::string& path, const common_o
 /// Turns face indices of the input file (--face N) into faces of a load_for_edit() mesh; a
 /// face that was dropped, or out of range, is a usage error naming it.
 bool file_faces_to_loaded(const loaded_mesh& loaded, std::vector<std::size_t>& faces, const std::string& path, int& code);
-/// Writes atomically; prints the error and returns the exit code (ok on success).
+/// Records `path` as an input of this run, so that save() refuses to write over it. load() and
+/// load_for_edit() call it; a subcommand that reads its input another way calls it itself.
+void note_input(const std::string& path);
+/// Writes atomically; prints the error and returns the exit code (ok on success). An output
+/// that is one of this run's inputs (note_input(), compared with same_file()) is refused as a
+/// usage error, and the file is left as it is; so is a mesh with a non-finite coordinate, or
+/// one beyond the float range for a float format (STL, PLY with float32 coordinates), as
+/// invalid input: no output ever holds a non-finite coordinate.
 int save(const hmira::face_vertex_mesh& mesh, const std::string& path, const hmira::io::write_options& options, const common_options& o);
 
 // ---- editing subcommands (truncate, bevel, extrude) ----------------------------------------

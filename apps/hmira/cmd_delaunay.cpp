@@ -42,6 +42,7 @@ hmira::result<std::vector<hmira::vec3<double>>> read_points(const std::string& p
 }
 
 int run_delaunay(const delaunay_args& a, const common_options& o) {
+    note_input(a.input);
     auto pts = read_points(a.input, o);
     if (!pts) return report(input_exit_code(pts.error()), pts.error().message);
     hmira::face_vertex_mesh m;

@@ -31,7 +31,7 @@ const bool registered = register_command({
     [](CLI::App& sub) {
         auto a = std::make_shared<flip_args>();
         sub.add_option("input", a->input, "mesh file to read")->required();
-        sub.add_option("output", a->output, "mesh file to write (may be the input: it is replaced atomically)")->required();
+        sub.add_option("output", a->output, "mesh file to write (replaced atomically; not the input)")->required();
         return [a](const common_options& o) { return run_flip(*a, o); };
     }});
 

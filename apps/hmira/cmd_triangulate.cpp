@@ -52,7 +52,7 @@ const bool registered = register_command({
     [](CLI::App& sub) {
         auto a = std::make_shared<triangulate_args>();
         sub.add_option("input", a->input, "mesh file to read")->required();
-        sub.add_option("output", a->output, "mesh file to write (may be the input: it is replaced atomically)")->required();
+        sub.add_option("output", a->output, "mesh file to write (replaced atomically; not the input)")->required();
         sub.add_flag("--delaunay", a->delaunay,
                      "flip each face's diagonals to its constrained Delaunay triangulation (largest smallest angle)");
         return [a](const common_options& o) { return run_triangulate(*a, o); };

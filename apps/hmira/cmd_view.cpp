@@ -82,11 +82,27 @@ std::string size_text(std::uintmax_t bytes) {
     return b;
 }
 
+/// True when `path` ends in .html or .htm (any case): the only files `view` writes, so a mesh
+/// named as the output by mistake is never replaced by a page.
+bool is_page_name(const std::string& path) {
+    std::string ext = std::filesystem::path(path).extension().string();
+    for (auto& c : ext) c = static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
+    return ext == ".html" || ext == ".htm";
+}
+
 int run_view(const view_args& a, const common_options& o) {
     const std::string_view viewer_bundle = hmira_viewer::bundle();
+    // A build condition, not a fault inside hmira: the build had no bundle to compile in.
     if (viewer_bundle.empty())
-        return report(internal, "this hmira was built without the viewer bundle: run viewer/build.sh (needs node and npm), then re-run cmake and rebuild");
+        return report(usage, "this hmira was built without the viewer bundle (viewer/dist/hmira-viewer.js): restore it or run "
+                             "viewer/build.sh (needs node and npm), then re-run cmake and rebuild");
     const std::string output = a.output.empty() ? std::filesystem::path(a.input).replace_extension(".html").string() : a.output;
+    // Checked before anything is read, so a refused output is never written.
+    if (!is_page_name(output))
+        return report(usage, "output " + output + " is not an .html or .htm file (view writes an HTML page; name the page explicitly)");
+    for (const auto* path : {&a.input, &a.compare})
+        if (!path->empty() && same_file(output, *path))
+            return report(usage, "output " + output + " is the input " + *path + " (view writes an HTML page; choose another name)");
     int code = ok;
     std::vector<plain_mesh> meshes;
     for (const auto* path : {&a.input, &a.compare}) {
@@ -98,7 +114,13 @@ int run_view(const view_args& a, const common_options& o) {
     // Both halves of a comparison share one origin, so a mesh that moved shows as moved.
     const auto origin = hmira_viewer::bounding_box_centre(meshes.front().points);
     std::vector<hmira_viewer::page_mesh> pages;
-    for (const auto& m : meshes) pages.push_back(page_mesh_of(m, origin));
+    for (const auto& m : meshes) {
+        pages.push_back(page_mesh_of(m, origin));
+        // The page stores float positions: a vertex that far from the centre would be infinite.
+        if (const auto v = hmira_viewer::first_vertex_beyond_float_range(pages.back()); v < m.points.size() / 3)
+            return report(invalid_input, m.path + ": vertex " + std::to_string(v) + " (file order) is too far from the page's centre for "
+                                         "its float positions (beyond 3.4e38); nothing is written");
+    }
     meshes.clear();
     auto written = hmira::io::detail::write_file_atomically(output, [&](std::ostream& os) {
         hmira_viewer::write_page(os, pages, viewer_bundle);

@@ -269,9 +269,41 @@ hmira::io::polygon_soup to_soup(const nb::ndarray<const double, nb::ndim<2>, nb:
             return soup;
         }
     }
+    // A sequence of polygons, each an iterable of vertex indices: Python ints, or anything with
+    // __index__ (numpy integers). Anything else (None, str, float, a nested list, bool) is a
+    // TypeError, an index too large for any mesh a ValueError; both name the face and corner.
+    auto type_name = [](nb::handle h) { return std::string(Py_TYPE(h.ptr())->tp_name); };
+    auto type_error = [](const std::string& message) { throw nb::type_error(message.c_str()); };
+    auto corner = [&](nb::handle i, std::size_t f, std::size_t c) -> long long {
+        nb::object number;
+        if (!PyLong_CheckExact(i.ptr())) {
+            if (PyBool_Check(i.ptr()) || !PyIndex_Check(i.ptr()))
+                type_error(std::string(who) + ": face " + std::to_string(f) + ": corner " + std::to_string(c) + " is a " + type_name(i) +
+                           ", not an integer vertex index");
+            number = nb::steal(PyNumber_Index(i.ptr()));
+            if (!number.is_valid()) throw nb::python_error();
+            i = number;
+        }
+        int overflow = 0;
+        const long long idx = PyLong_AsLongLongAndOverflow(i.ptr(), &overflow);
+        if (overflow != 0)
+            value_error(std::string(who) + ": face " + std::to_string(f) + " uses vertex " + nb::str(i).c_str() + ", out of range [0, " +
+                        std::to_string(nv) + ")");
+        return idx;
+    };
     std::size_t f = 0;
     for (nb::handle polygon : faces) {
-        for (nb::handle i : polygon) push(nb::cast<long long>(i), f);
+        nb::object corners = nb::steal(PyObject_GetIter(polygon.ptr()));
+        if (!corners.is_valid()) {
+            PyErr_Clear();
+            type_error(std::string(who) + ": face " + std::to_string(f) + " is a " + type_name(polygon) + ", not a sequence of vertex indices");
+        }
+        std::size_t c = 0;
+        while (PyObject* item = PyIter_Next(corners.ptr())) {
+            const nb::object i = nb::steal(item);
+            push(corner(i, f, c++), f);
+        }
+        if (PyErr_Occurred()) throw nb::python_error();
         soup.face_offsets.push_back(static_cast<std::uint32_t>(soup.indices.size()));
         ++f;
     }
