@@ -82,7 +82,7 @@ struct step_status {
 /// Whether all three coordinates are finite.
 inline bool finite(const vec3<double>& q) {
     constexpr double big = std::numeric_limits<double>::max();
-    return (std::abs(q.x) <= big) & (std::abs(q.y) <= big) & (std::abs(q.z) <= big);
+    return std::abs(q.x) <= big && std::abs(q.y) <= big && std::abs(q.z) <= big;
 }
 
 /// The cotangent of the angle at a in triangle (a, b, c); 0 for a degenerate triangle, NaN
