@@ -228,8 +228,8 @@ result<void> run(M& m, std::size_t iterations, std::initializer_list<double> amo
                 return fail(errc::unsupported, std::string(who) + ": " + vertex + " or a neighbour has a non-finite coordinate",
                             status.beyond_range);
             return fail(errc::unsupported,
-                        std::string(who) + ": " + vertex + " would move beyond the range of double (at step " +
-                            std::to_string(k + 1) + "); mesh unchanged",
+                        std::string(who) + ": " + vertex + " would move beyond the range of double (in iteration " +
+                            std::to_string(k + 1) + ")",
                         status.beyond_range);
         }
     return {};
