@@ -548,7 +548,8 @@ void bind_everyday(nb::class_<py_mesh>& c) {
          "{'vertices': 9, 'edges': 12, 'faces': 4}")
      .def("laplacian_smooth", [](py_mesh& s, std::size_t iterations, double lambda, const std::string& weights, bool fix_boundary,
                                  std::optional<std::vector<long long>> fixed_vertices) {
-             hmira::laplacian_smooth_options o{.iterations = iterations, .lambda = lambda, .weights = weights_arg(weights, "laplacian_smooth"),
+             hmira::laplacian_smooth_options o{.iterations = iterations, .lambda = lambda,
+                                               .weights = weights_arg(weights, "laplacian_smooth"),
                                                      .fix_boundary = fix_boundary, .fixed_vertices = fixed_arg(s.get(), fixed_vertices, "laplacian_smooth")};
              // Positions move in place: the vertices view stays valid and sees them move.
              // Ctrl-C cancels through the progress hook; the smoother then restores every position.
@@ -561,7 +562,8 @@ void bind_everyday(nb::class_<py_mesh>& c) {
          "Laplacian smoothing (uniform or cotangent weights, step lambda_ in (0, 1]); returns the number of vertices free to move.")
      .def("taubin_smooth", [](py_mesh& s, std::size_t iterations, double lambda, double mu, const std::string& weights, bool fix_boundary,
                               std::optional<std::vector<long long>> fixed_vertices) {
-             hmira::taubin_smooth_options o{.iterations = iterations, .lambda = lambda, .mu = mu, .weights = weights_arg(weights, "taubin_smooth"),
+             hmira::taubin_smooth_options o{.iterations = iterations, .lambda = lambda, .mu = mu,
+                                            .weights = weights_arg(weights, "taubin_smooth"),
                                                   .fix_boundary = fix_boundary, .fixed_vertices = fixed_arg(s.get(), fixed_vertices, "taubin_smooth")};
              return change_without_gil(s, false, [&](halfedge_mesh& m, hmira::progress_function progress) {
                         o.progress = std::move(progress);

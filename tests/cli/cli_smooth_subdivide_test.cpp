@@ -23,11 +23,14 @@ namespace {
 
 using hmira_test::scratch_dir;
 
-hmira_test::run_result hmira(const scratch_dir& dir, const std::string& args) { return hmira_test::run_cli(HMIRA_CLI, dir, args); }
+hmira_test::run_result hmira(const scratch_dir& dir, const std::string& args) {
+    return hmira_test::run_cli(HMIRA_CLI, dir, args);
+}
 
 // The tetrahedron from the report, and the same scaled by 2^-600 (printed exactly: 17 digits).
 const char* huge_off =
-    "OFF\n4 4 0\n1.7e308 1.7e308 0\n1.7e308 -1.7e308 0\n-1.7e308 0 0\n0 0 1.7e308\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 2 0 3\n";
+    "OFF\n4 4 0\n1.7e308 1.7e308 0\n1.7e308 -1.7e308 0\n-1.7e308 0 0\n0 0 1.7e308\n"
+    "3 0 2 1\n3 0 1 3\n3 1 2 3\n3 2 0 3\n";
 
 std::string small_off() {
     char c[64];
@@ -121,10 +124,12 @@ TEST(cli_smooth_subdivide, a_taubin_step_beyond_the_range_of_double_exits_1_and_
 
 TEST(cli_smooth_subdivide, ctrl_c_stops_a_long_smoothing_and_writes_nothing) {
     scratch_dir dir;
-    hmira_test::write_bytes(dir / "t.off", "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 2 0 3\n");
+    hmira_test::write_bytes(dir / "t.off",
+                            "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 2 0 3\n");
     ASSERT_EQ(hmira(dir, "subdivide t.off b.off -k 5").code, 0);  // 4096 faces: a million iterations take minutes
     const auto start = std::chrono::steady_clock::now();
-    const std::string cmd = "cd '" + dir.path().string() + "' && exec timeout --preserve-status -s INT 0.5 '" + std::string(HMIRA_CLI) +
+    const std::string cmd = "cd '" + dir.path().string() + "' && exec timeout --preserve-status -s INT 0.5 '" +
+                            std::string(HMIRA_CLI) +
                             "' smooth b.off s.off --iterations 1000000 >/dev/null 2>&1 </dev/null";
     const int status = std::system(cmd.c_str());
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -176,7 +176,8 @@ TYPED_TEST(loop_test, coordinates_near_the_largest_double_subdivide_to_finite_po
         if constexpr (double(std::numeric_limits<typename hmira::default_traits<M>::scalar>::max()) < 1e308) {
             GTEST_SKIP() << "float positions cannot hold 1.7e308";
         } else {
-            expect_huge_coordinates_subdivide_like_small_ones<M>([](M& m) { return hmira::loop_subdivide(m, {.levels = 2}); });
+            expect_huge_coordinates_subdivide_like_small_ones<M>(
+                [](M& m) { return hmira::loop_subdivide(m, {.levels = 2}); });
         }
     }
 }

@@ -256,7 +256,8 @@ TYPED_TEST(sqrt3_test, coordinates_near_the_largest_double_subdivide_to_finite_p
         if constexpr (double(std::numeric_limits<typename hmira::default_traits<M>::scalar>::max()) < 1e308) {
             GTEST_SKIP() << "float positions cannot hold 1.7e308";
         } else {
-            expect_huge_coordinates_subdivide_like_small_ones<M>([](M& m) { return hmira::sqrt3_subdivide(m, {.levels = 2}); });
+            expect_huge_coordinates_subdivide_like_small_ones<M>(
+                [](M& m) { return hmira::sqrt3_subdivide(m, {.levels = 2}); });
         }
     }
 }

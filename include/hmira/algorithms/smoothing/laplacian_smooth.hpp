@@ -98,7 +98,8 @@ inline double cotangent(const vec3<double>& a, const vec3<double>& b, const vec3
 /// positions through `at` (by vertex index); p_i where it cannot move. `s` is a halfedge out
 /// of the vertex.
 template <class M, class T, class At>
-vec3<double> moved(const M& m, std::size_t i, typename T::halfedge_handle s, double amount, laplacian_weights weights, At&& at) {
+vec3<double> moved(const M& m, std::size_t i, typename T::halfedge_handle s, double amount, laplacian_weights weights,
+                   At&& at) {
     const vec3<double> pi = at(i);
     vec3<double> sum{};
     double total = 0;
@@ -111,7 +112,8 @@ vec3<double> moved(const M& m, std::size_t i, typename T::halfedge_handle s, dou
             for (const auto y : {x, T::opposite(m, x)}) {
                 if (T::face(m, y) == T::null_face()) continue;
                 const auto c = T::vertex_index(m, T::target(m, T::next(m, y)));
-                const auto a = T::vertex_index(m, T::target(m, T::opposite(m, y))), b = T::vertex_index(m, T::target(m, y));
+                const auto a = T::vertex_index(m, T::target(m, T::opposite(m, y)));
+                const auto b = T::vertex_index(m, T::target(m, y));
                 w += 0.5 * cotangent(at(c), at(a), at(b));
             }
         }
@@ -130,10 +132,13 @@ vec3<double> moved(const M& m, std::size_t i, typename T::halfedge_handle s, dou
 /// overflow there. Not finite when the true position lies beyond the range of double, or
 /// when a coordinate of the neighbourhood is not finite (`not_finite_input` then set).
 template <class M, class T>
-vec3<double> moved_rescaled(const M& m, std::size_t i, typename T::halfedge_handle s, double amount, laplacian_weights weights,
+vec3<double> moved_rescaled(const M& m, std::size_t i, typename T::halfedge_handle s, double amount,
+                            laplacian_weights weights,
                             const std::vector<vec3<double>>& p, bool& not_finite_input) {
     double largest = 0;
-    const auto widen = [&](std::size_t k) { largest = std::max({largest, std::abs(p[k].x), std::abs(p[k].y), std::abs(p[k].z)}); };
+    const auto widen = [&](std::size_t k) {
+        largest = std::max({largest, std::abs(p[k].x), std::abs(p[k].y), std::abs(p[k].z)});
+    };
     widen(i);
     auto x = s;
     do {
@@ -145,7 +150,9 @@ vec3<double> moved_rescaled(const M& m, std::size_t i, typename T::halfedge_hand
         return {largest, largest, largest};
     }
     const int e = largest > 0 ? std::ilogb(largest) + 1 : 0;
-    const auto scaled = [&](std::size_t k) { return vec3<double>{std::ldexp(p[k].x, -e), std::ldexp(p[k].y, -e), std::ldexp(p[k].z, -e)}; };
+    const auto scaled = [&](std::size_t k) {
+        return vec3<double>{std::ldexp(p[k].x, -e), std::ldexp(p[k].y, -e), std::ldexp(p[k].z, -e)};
+    };
     const vec3<double> q = moved<M, T>(m, i, s, amount, weights, scaled);
     return {std::ldexp(q.x, e), std::ldexp(q.y, e), std::ldexp(q.z, e)};
 }
@@ -158,7 +165,8 @@ vec3<double> moved_rescaled(const M& m, std::size_t i, typename T::halfedge_hand
 /// is still not finite the step writes nothing and names it. Returns what stopped it, if
 /// anything. The finiteness check is one flag per sweep, folded into the loop.
 template <class M, class T>
-step_status step(M& m, double amount, laplacian_weights weights, const std::vector<char>& fixed, std::vector<vec3<double>>& into,
+step_status step(M& m, double amount, laplacian_weights weights, const std::vector<char>& fixed,
+                 std::vector<vec3<double>>& into,
                  std::vector<vec3<double>>& out, progress_gate& gate, std::size_t& visited) {
     namespace dt = detail::triangle_ops;
     auto& p = into;
@@ -209,7 +217,8 @@ result<void> run(M& m, std::size_t iterations, std::initializer_list<double> amo
     const std::size_t vertices = T::vertex_count(m);
     const double steps = double(iterations) * double(amounts.size());
     const double blocks = steps * double(vertices) / double(check_every);
-    detail::progress_gate gate(progress, blocks >= double(std::size_t(-1) / 2) ? std::size_t(-1) / 2 : std::size_t(blocks));
+    const std::size_t most = std::size_t(-1) / 2;
+    detail::progress_gate gate(progress, blocks >= double(most) ? most : std::size_t(blocks));
     buffers b;
     std::size_t visited = 0;
     bool first = true;
@@ -225,7 +234,8 @@ result<void> run(M& m, std::size_t iterations, std::initializer_list<double> amo
             if (status.cancelled) return fail(errc::cancelled, std::string(who) + ": cancelled");
             const std::string vertex = "vertex " + std::to_string(status.beyond_range);
             if (status.not_finite_input)
-                return fail(errc::unsupported, std::string(who) + ": " + vertex + " or a neighbour has a non-finite coordinate",
+                return fail(errc::unsupported,
+                            std::string(who) + ": " + vertex + " or a neighbour has a non-finite coordinate",
                             status.beyond_range);
             return fail(errc::unsupported,
                         std::string(who) + ": " + vertex + " would move beyond the range of double (in iteration " +
@@ -282,8 +292,8 @@ template <class M, class T = default_traits<M>>
         return fail(errc::invalid_argument, "laplacian_smooth: option lambda must lie in (0, 1], got " + std::to_string(options.lambda));
     auto fixed = detail::smoothing::fixed_set<M, T>(mesh, options.fix_boundary, options.fixed_vertices, options.weights, "laplacian_smooth");
     if (!fixed) return fixed.error();
-    if (auto r = detail::smoothing::run<M, T>(mesh, options.iterations, {options.lambda}, options.weights, *fixed, options.progress,
-                                              "laplacian_smooth");
+    if (auto r = detail::smoothing::run<M, T>(mesh, options.iterations, {options.lambda}, options.weights, *fixed,
+                                              options.progress, "laplacian_smooth");
         !r)
         return r.error();
     smooth_result out;
@@ -309,8 +319,8 @@ template <class M, class T = default_traits<M>>
                                                 std::to_string(options.lambda) + ", mu " + std::to_string(options.mu));
     auto fixed = detail::smoothing::fixed_set<M, T>(mesh, options.fix_boundary, options.fixed_vertices, options.weights, "taubin_smooth");
     if (!fixed) return fixed.error();
-    if (auto r = detail::smoothing::run<M, T>(mesh, options.iterations, {options.lambda, options.mu}, options.weights, *fixed,
-                                              options.progress, "taubin_smooth");
+    if (auto r = detail::smoothing::run<M, T>(mesh, options.iterations, {options.lambda, options.mu}, options.weights,
+                                              *fixed, options.progress, "taubin_smooth");
         !r)
         return r.error();
     smooth_result out;

@@ -262,7 +262,9 @@ template <class M, class T = default_traits<M>>
     ds::range_guard<M, T> range(mesh);
     for (std::size_t l = 0; l < options.levels; ++l) {
         // Level 0's triangles were gathered above; later ones are triangles only (-1) unless cancelled (-2).
-        if ((l > 0 && ds::gather_sqrt3_triangles<M, T>(mesh, work, &go_on) == -2) || !ds::sqrt3_level<M, T>(mesh, work, l % 2 == 1, go_on)) {
+        const bool cancelled = (l > 0 && ds::gather_sqrt3_triangles<M, T>(mesh, work, &go_on) == -2) ||
+                               !ds::sqrt3_level<M, T>(mesh, work, l % 2 == 1, go_on);
+        if (cancelled) {
             range.dismiss();
             mesh = std::move(backup.front());
             return fail(errc::cancelled, "sqrt3_subdivide: cancelled");

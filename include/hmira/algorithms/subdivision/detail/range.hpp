@@ -39,7 +39,8 @@ public:
             scaled_ = true;
             for (auto v : T::vertices(mesh)) {
                 const auto p = dt::position_of<M, T>(mesh, v);
-                dt::set_position<M, T>(mesh, v, {std::ldexp(p.x, -shift), std::ldexp(p.y, -shift), std::ldexp(p.z, -shift)});
+                const vec3<double> q{std::ldexp(p.x, -shift), std::ldexp(p.y, -shift), std::ldexp(p.z, -shift)};
+                dt::set_position<M, T>(mesh, v, q);
             }
         }
     }
