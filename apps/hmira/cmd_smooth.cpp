@@ -23,13 +23,27 @@ int run_smooth(const smooth_args& a, const common_options& o) {
     if (!loaded) return code;
     if (!check_indices(a.fixed, loaded->mesh.vertex_count(), "vertex", "--fix", a.input, code)) return code;
     const auto w = a.weights == "cotangent" ? hmira::laplacian_weights::cotangent : hmira::laplacian_weights::uniform;
+    // Vertices times steps: the bar shows for a long run on a small mesh too.
+    const std::uint64_t steps = std::uint64_t(a.iterations) * (a.method == "taubin" ? 2 : 1);
+    const std::uint64_t work = std::uint64_t(loaded->mesh.vertex_count()) * steps;
+    hmira::taubin_smooth_options taubin{.iterations = a.iterations, .lambda = a.lambda, .mu = a.mu, .weights = w,
+                                        .fix_boundary = !a.move_boundary, .fixed_vertices = a.fixed};
+    hmira::laplacian_smooth_options laplacian{.iterations = a.iterations, .lambda = a.lambda, .weights = w,
+                                              .fix_boundary = !a.move_boundary, .fixed_vertices = a.fixed};
     return run_edit(*loaded, a.input, a.output, "smoothing " + a.input, o,
                     [&](hmira::halfedge_mesh& mesh, int& c) -> std::optional<edit_outcome> {
-                        auto r = a.method == "taubin"
-                                     ? hmira::taubin_smooth(mesh, {.iterations = a.iterations, .lambda = a.lambda, .mu = a.mu, .weights = w,
-                                                                   .fix_boundary = !a.move_boundary, .fixed_vertices = a.fixed})
-                                     : hmira::laplacian_smooth(mesh, {.iterations = a.iterations, .lambda = a.lambda, .weights = w,
-                                                                      .fix_boundary = !a.move_boundary, .fixed_vertices = a.fixed});
+                        progress_bar bar("smoothing " + a.input, o, std::uint64_t(1) << 24);
+                        std::uint64_t shown = std::uint64_t(-1);
+                        const auto progress = [&](double f) {
+                            // Redrawn when the tenth of a percent changes.
+                            const auto permille = std::uint64_t(f * 1000);
+                            if (permille != shown) bar.update(std::uint64_t(f * double(work)), work);
+                            shown = permille;
+                            return true;
+                        };
+                        taubin.progress = laplacian.progress = progress;
+                        auto r = a.method == "taubin" ? hmira::taubin_smooth(mesh, taubin)
+                                                      : hmira::laplacian_smooth(mesh, laplacian);
                         if (!r) {
                             c = report(exit_code_for(r.error()), a.input + ": " + r.error().message);
                             return std::nullopt;

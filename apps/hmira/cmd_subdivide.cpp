@@ -23,13 +23,20 @@ int run_subdivide(const subdivide_args& a, const common_options& o) {
     return run_edit(*loaded, a.input, a.output, "subdividing " + a.input, o,
                     [&](hmira::halfedge_mesh& mesh, int& c) -> std::optional<edit_outcome> {
                         std::optional<hmira::error> failed;
-                        if (a.scheme == "loop") {
-                            if (auto r = hmira::loop_subdivide(mesh, {.levels = a.levels}); !r) failed = r.error();
-                        } else if (a.scheme == "sqrt3") {
-                            if (auto r = hmira::sqrt3_subdivide(mesh, {.levels = a.levels}); !r) failed = r.error();
-                        } else if (auto r = hmira::catmull_clark_subdivide(mesh, {.levels = a.levels}); !r) {
-                            failed = r.error();
-                        }
+                        const std::uint64_t faces_made = std::uint64_t(mesh.face_count()) << (2 * a.levels);
+                        auto bar = stage_bar("subdividing " + a.input, o, faces_made);
+                        const auto progress = [&](double f) {
+                            bar.update(std::uint64_t(f * 1000), 1000);
+                            return true;
+                        };
+                        const auto keep = [&](const auto& r) {
+                            if (!r) failed = r.error();
+                        };
+                        const std::size_t k = a.levels;
+                        if (a.scheme == "loop") keep(hmira::loop_subdivide(mesh, {.levels = k, .progress = progress}));
+                        else if (a.scheme == "sqrt3")
+                            keep(hmira::sqrt3_subdivide(mesh, {.levels = k, .progress = progress}));
+                        else keep(hmira::catmull_clark_subdivide(mesh, {.levels = k, .progress = progress}));
                         if (failed) {
                             c = report(exit_code_for(*failed), a.input + ": " + failed->message);
                             return std::nullopt;

@@ -518,12 +518,26 @@ void bind_everyday(nb::class_<py_mesh>& c) {
                  d["edges"] = r.edges;
                  d["faces"] = r.faces;
              };
+             // The schemes leave the mesh unchanged on error and restore it on Ctrl-C (progress).
+             const auto subdivide = [&](auto run) {
+                 return change_without_gil(s, true, [&](halfedge_mesh& m, hmira::progress_function progress) {
+                     auto done = run(m, std::move(progress));
+                     if (done) compact(m);
+                     return done;
+                 });
+             };
              if (scheme == "loop")
-                 counts(on_copy(s, [&](halfedge_mesh& m) { return hmira::loop_subdivide(m, {.levels = levels}); }));
+                 counts(subdivide([&](halfedge_mesh& m, hmira::progress_function p) {
+                     return hmira::loop_subdivide(m, {.levels = levels, .progress = std::move(p)});
+                 }));
              else if (scheme == "sqrt3")
-                 counts(on_copy(s, [&](halfedge_mesh& m) { return hmira::sqrt3_subdivide(m, {.levels = levels}); }));
+                 counts(subdivide([&](halfedge_mesh& m, hmira::progress_function p) {
+                     return hmira::sqrt3_subdivide(m, {.levels = levels, .progress = std::move(p)});
+                 }));
              else
-                 counts(on_copy(s, [&](halfedge_mesh& m) { return hmira::catmull_clark_subdivide(m, {.levels = levels}); }));
+                 counts(subdivide([&](halfedge_mesh& m, hmira::progress_function p) {
+                     return hmira::catmull_clark_subdivide(m, {.levels = levels, .progress = std::move(p)});
+                 }));
              return d;
          }, nb::kw_only(), nb::arg("scheme") = "loop", nb::arg("levels") = 1,
          "Subdivides `levels` times with `scheme`: 'loop' or 'sqrt3' (triangle meshes) or 'catmull-clark' (any\n"
@@ -534,18 +548,27 @@ void bind_everyday(nb::class_<py_mesh>& c) {
          "{'vertices': 9, 'edges': 12, 'faces': 4}")
      .def("laplacian_smooth", [](py_mesh& s, std::size_t iterations, double lambda, const std::string& weights, bool fix_boundary,
                                  std::optional<std::vector<long long>> fixed_vertices) {
-             const hmira::laplacian_smooth_options o{.iterations = iterations, .lambda = lambda, .weights = weights_arg(weights, "laplacian_smooth"),
+             hmira::laplacian_smooth_options o{.iterations = iterations, .lambda = lambda,
+                                               .weights = weights_arg(weights, "laplacian_smooth"),
                                                      .fix_boundary = fix_boundary, .fixed_vertices = fixed_arg(s.get(), fixed_vertices, "laplacian_smooth")};
              // Positions move in place: the vertices view stays valid and sees them move.
-             return change_without_gil(s, false, [&](halfedge_mesh& m, const hmira::progress_function&) { return hmira::laplacian_smooth(m, o); }).moved;
+             // Ctrl-C cancels through the progress hook; the smoother then restores every position.
+             return change_without_gil(s, false, [&](halfedge_mesh& m, hmira::progress_function progress) {
+                        o.progress = std::move(progress);
+                        return hmira::laplacian_smooth(m, o);
+                    }).moved;
          }, nb::kw_only(), nb::arg("iterations") = 1, nb::arg("lambda_") = 0.5, nb::arg("weights") = "uniform", nb::arg("fix_boundary") = true,
          nb::arg("fixed_vertices") = nb::none(),
          "Laplacian smoothing (uniform or cotangent weights, step lambda_ in (0, 1]); returns the number of vertices free to move.")
      .def("taubin_smooth", [](py_mesh& s, std::size_t iterations, double lambda, double mu, const std::string& weights, bool fix_boundary,
                               std::optional<std::vector<long long>> fixed_vertices) {
-             const hmira::taubin_smooth_options o{.iterations = iterations, .lambda = lambda, .mu = mu, .weights = weights_arg(weights, "taubin_smooth"),
+             hmira::taubin_smooth_options o{.iterations = iterations, .lambda = lambda, .mu = mu,
+                                            .weights = weights_arg(weights, "taubin_smooth"),
                                                   .fix_boundary = fix_boundary, .fixed_vertices = fixed_arg(s.get(), fixed_vertices, "taubin_smooth")};
-             return change_without_gil(s, false, [&](halfedge_mesh& m, const hmira::progress_function&) { return hmira::taubin_smooth(m, o); }).moved;
+             return change_without_gil(s, false, [&](halfedge_mesh& m, hmira::progress_function progress) {
+                        o.progress = std::move(progress);
+                        return hmira::taubin_smooth(m, o);
+                    }).moved;
          }, nb::kw_only(), nb::arg("iterations") = 10, nb::arg("lambda_") = 0.5, nb::arg("mu") = -0.53, nb::arg("weights") = "uniform",
          nb::arg("fix_boundary") = true, nb::arg("fixed_vertices") = nb::none(),
          "Taubin lambda/mu smoothing (keeps the volume); returns the number of vertices free to move.");

@@ -16,6 +16,7 @@
 #include <hmira/algorithms/generators/platonic_solids.hpp>
 #include <hmira/algorithms/subdivision/catmull_clark.hpp>
 
+#include "subdivision/subdivision_support.hpp"
 #include "triangle/triangle_support.hpp"
 
 namespace {
@@ -320,6 +321,32 @@ TEST(catmull_clark, an_isolated_vertex_stays_put) {
     EXPECT_EQ(m.position(lone), (hmira::vec3<double>{7, 8, 9}));
     EXPECT_EQ(m.vertex_count(), 1u + 4 + 4 + 1);
     EXPECT_EQ(m.face_count(), 4u);
+}
+
+
+TYPED_TEST(catmull_clark_test, coordinates_near_the_largest_double_subdivide_to_finite_positions) {
+    using M = TypeParam;
+    HMIRA_REQUIRE_CATMULL_CLARK(M)
+    else {
+        if constexpr (double(std::numeric_limits<typename hmira::default_traits<M>::scalar>::max()) < 1e308) {
+            GTEST_SKIP() << "float positions cannot hold 1.7e308";
+        } else {
+            expect_huge_coordinates_subdivide_like_small_ones<M>(
+                [](M& m) { return hmira::catmull_clark_subdivide(m, {.levels = 2}); });
+        }
+    }
+}
+
+TYPED_TEST(catmull_clark_test, the_callback_comes_at_least_once_per_65536_elements) {
+    using M = TypeParam;
+    HMIRA_REQUIRE_CATMULL_CLARK(M)
+    else {
+        // 4096 quads; the levels' inputs: (V, E, F) = (4096, 8192, 4096), (16384, 32768, 16384),
+        // (65536, 131072, 65536).
+        expect_cancellation_restores(mesh_from<M>(torus(64, 64)), 344064, [](M& x, hmira::progress_function p) {
+            return hmira::catmull_clark_subdivide(x, {.levels = 3, .progress = std::move(p)});
+        });
+    }
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include <hmira/algorithms/generators/platonic_solids.hpp>
 #include <hmira/algorithms/subdivision/loop.hpp>
 
+#include "subdivision/subdivision_support.hpp"
 #include "triangle/triangle_support.hpp"
 
 namespace {
@@ -164,6 +165,34 @@ TYPED_TEST(loop_test, a_mesh_with_a_quad_is_refused_and_unchanged) {
             EXPECT_EQ(r.error().code, hmira::errc::topology);
             EXPECT_EQ(take_snapshot(m), before);
         }
+    }
+}
+
+
+TYPED_TEST(loop_test, coordinates_near_the_largest_double_subdivide_to_finite_positions) {
+    using M = TypeParam;
+    HMIRA_REQUIRE_TRIANGLE_OPS(M)
+    else {
+        if constexpr (double(std::numeric_limits<typename hmira::default_traits<M>::scalar>::max()) < 1e308) {
+            GTEST_SKIP() << "float positions cannot hold 1.7e308";
+        } else {
+            expect_huge_coordinates_subdivide_like_small_ones<M>(
+                [](M& m) { return hmira::loop_subdivide(m, {.levels = 2}); });
+        }
+    }
+}
+
+TYPED_TEST(loop_test, a_cancellation_at_any_call_leaves_the_mesh_unchanged) {
+    using M = TypeParam;
+    HMIRA_REQUIRE_TRIANGLE_OPS(M)
+    else {
+        M m;
+        ASSERT_TRUE(hmira::generate_icosahedron(m));
+        ASSERT_TRUE(hmira::loop_subdivide(m, {.levels = 4}));  // 5120 faces; three more levels make 327680
+        // The levels' inputs: (V, E, F) = (2562, 7680, 5120), (10242, 30720, 20480), (40962, 122880, 81920).
+        expect_cancellation_restores(m, 322566, [](M& x, hmira::progress_function p) {
+            return hmira::loop_subdivide(x, {.levels = 3, .progress = std::move(p)});
+        });
     }
 }
 

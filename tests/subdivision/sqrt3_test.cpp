@@ -11,8 +11,10 @@
 #include <vector>
 
 #include <hmira/algorithms/generators/platonic_solids.hpp>
+#include <hmira/algorithms/subdivision/loop.hpp>
 #include <hmira/algorithms/subdivision/sqrt3.hpp>
 
+#include "subdivision/subdivision_support.hpp"
 #include "triangle/triangle_support.hpp"
 
 namespace {
@@ -243,6 +245,34 @@ TYPED_TEST(sqrt3_test, too_many_levels_and_quads_are_refused_and_the_mesh_is_unc
             EXPECT_NE(r.error().message.find("face 0"), std::string::npos) << r.error().message;
             EXPECT_EQ(take_snapshot(q), quads);
         }
+    }
+}
+
+
+TYPED_TEST(sqrt3_test, coordinates_near_the_largest_double_subdivide_to_finite_positions) {
+    using M = TypeParam;
+    HMIRA_REQUIRE_TRIANGLE_OPS(M)
+    else {
+        if constexpr (double(std::numeric_limits<typename hmira::default_traits<M>::scalar>::max()) < 1e308) {
+            GTEST_SKIP() << "float positions cannot hold 1.7e308";
+        } else {
+            expect_huge_coordinates_subdivide_like_small_ones<M>(
+                [](M& m) { return hmira::sqrt3_subdivide(m, {.levels = 2}); });
+        }
+    }
+}
+
+TYPED_TEST(sqrt3_test, a_cancellation_at_any_call_leaves_the_mesh_unchanged) {
+    using M = TypeParam;
+    HMIRA_REQUIRE_TRIANGLE_OPS(M)
+    else {
+        M m;
+        ASSERT_TRUE(hmira::generate_icosahedron(m));
+        ASSERT_TRUE(hmira::loop_subdivide(m, {.levels = 4}));  // 5120 faces; three sqrt(3) levels make 138240
+        // The levels' inputs: (V, E, F) = (2562, 7680, 5120), (7682, 23040, 15360), (23042, 69120, 46080).
+        expect_cancellation_restores(m, 199686, [](M& x, hmira::progress_function p) {
+            return hmira::sqrt3_subdivide(x, {.levels = 3, .progress = std::move(p)});
+        });
     }
 }
 

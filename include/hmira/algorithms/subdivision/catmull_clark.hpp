@@ -19,6 +19,7 @@
 #include "../../core/progress.hpp"
 #include "../triangle/split_edge.hpp"
 #include "detail/new_elements.hpp"
+#include "detail/range.hpp"
 #include "detail/reserve.hpp"
 
 namespace hmira {
@@ -217,6 +218,7 @@ bool catmull_clark_level(M& mesh, cc_workspace<M, T>& w, progress_gate& gate) {
             const auto a = T::target(mesh, s), b = T::target(mesh, T::opposite(mesh, T::prev(mesh, s)));
             sum[i] = p * 0.75 + (dt::position_of<M, T>(mesh, a) + dt::position_of<M, T>(mesh, b)) * 0.125;
         }
+        if (++done % block == 0 && !gate.advance(1)) return false;
     }
 
     // Face by face, so that each is finished while its elements are still in cache: the
@@ -316,6 +318,7 @@ bool catmull_clark_level(M& mesh, cc_workspace<M, T>& w, progress_gate& gate) {
         } else if (w.boundary_edges[i] == 2) {
             dt::set_position<M, T>(mesh, v, sum[i]);
         }  // else it stays
+        if (++done % block == 0 && !gate.advance(1)) return false;
     }
     return true;
 }
@@ -347,6 +350,8 @@ bool catmull_clark_level(M& mesh, cc_workspace<M, T>& w, progress_gate& gate) {
 /// The mesh and the working arrays are sized for the last level before the first change, so
 /// std::bad_alloc comes before any change (a model's user property arrays excepted, which
 /// grow element by element).
+/// Every new position is a convex combination of old ones and is computed without overflow,
+/// coordinates near the largest double included (see detail::subdivision::range_guard).
 /// Complexity O(C) per level (every operator is O(1) or O(face degree)), so O(4^levels C);
 /// plus O(V + E + F) for the copy when a progress callback is given.
 template <class M, class T = default_traits<M>>
@@ -384,7 +389,7 @@ template <class M, class T = default_traits<M>>
     std::uint64_t blocks = 0;
     for (std::size_t l = 0; l < options.levels; ++l) {
         largest_input = counts;
-        blocks += (counts.edges + 2 * counts.faces) / (1u << 14);
+        blocks += (2 * counts.vertices + counts.edges + 2 * counts.faces) / (1u << 14);
         counts = counts.next();
         if (2 * counts.edges >= (std::uint64_t(1) << 31))
             return fail(errc::invalid_argument, "catmull_clark_subdivide: " + std::to_string(options.levels) +
@@ -407,12 +412,15 @@ template <class M, class T = default_traits<M>>
     // what a cancellation restores.
     std::vector<M> backup;
     if (options.progress) backup.push_back(mesh);
+    ds::range_guard<M, T> range(mesh);
     for (std::size_t l = 0; l < options.levels; ++l) {
         if (!ds::catmull_clark_level<M, T>(mesh, work, gate)) {
+            range.dismiss();
             mesh = std::move(backup.front());
             return fail(errc::cancelled, "catmull_clark_subdivide: cancelled");
         }
     }
+    range.restore();
     return catmull_clark_result{T::vertex_count(mesh), T::edge_count(mesh), T::face_count(mesh)};
 }
 

@@ -9,14 +9,18 @@
 #include <cassert>
 #include <cstdint>
 #include <cmath>
+#include <concepts>
 #include <cstddef>
 #include <numbers>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "../triangle/flip_edge.hpp"
 #include "../triangle/split_edge.hpp"
+#include "detail/cancel_point.hpp"
 #include "detail/new_elements.hpp"
+#include "detail/range.hpp"
 #include "detail/reserve.hpp"
 
 namespace hmira {
@@ -25,6 +29,11 @@ namespace hmira {
 struct loop_options {
     /// Levels of subdivision (each multiplies the faces by 4).
     std::size_t levels = 1;
+    /// Called between blocks of work (every 16384 elements) with the fraction done; returning
+    /// false cancels (error errc::cancelled, "loop_subdivide: cancelled", mesh unchanged). With
+    /// a callback the mesh is copied once before the first change, so that a cancellation can
+    /// restore it; without one nothing can interrupt the levels and no copy is made.
+    progress_function progress = {};
 };
 
 /// What loop_subdivide did.
@@ -78,23 +87,26 @@ struct loop_workspace {
 };
 
 /// Gathers the halfedges of every face into `w.triangles`, by face index; returns the index
-/// of the first face that is not a triangle without rings, or -1. Changes nothing in the
-/// mesh. O(F).
+/// of the first face that is not a triangle without rings, -1, or -2 when `go_on` (if given)
+/// cancels. Changes nothing in the mesh. O(F).
 template <class M, class T>
-long long gather_triangles(const M& mesh, loop_workspace<M, T>& w) {
+long long gather_triangles(const M& mesh, loop_workspace<M, T>& w, cancel_point* go_on = nullptr) {
     using H = typename T::halfedge_handle;
     w.triangles.assign(T::face_index_bound(mesh), {{H{}, H{}, H{}}, T::null_halfedge()});
     for (auto f : T::faces(mesh)) {
         const H h0 = T::face_halfedge(mesh, f), h1 = T::next(mesh, h0), h2 = T::next(mesh, h1);
         if (T::next(mesh, h2) != h0 || detail::euler::has_rings<M, T>(mesh, f)) return (long long)T::face_index(mesh, f);
         w.triangles[T::face_index(mesh, f)].halfedges = {h0, h1, h2};
+        if (go_on && !(*go_on)()) return -2;
     }
     return -1;
 }
 
 /// One Loop level, on the triangles gather_triangles found; `w` and the mesh have room for it.
+/// Returns false when `go_on` cancels, which it does only between elements (the caller then
+/// restores its copy).
 template <class M, class T>
-void loop_level(M& mesh, loop_workspace<M, T>& w) {
+bool loop_level(M& mesh, loop_workspace<M, T>& w, cancel_point& go_on) {
     namespace dt = detail::triangle_ops;
     using H = typename T::halfedge_handle;
     const std::size_t vertex_bound = T::vertex_index_bound(mesh);
@@ -136,6 +148,7 @@ void loop_level(M& mesh, loop_workspace<M, T>& w) {
             w.boundary_edges[ib] = std::uint8_t(std::min(3, w.boundary_edges[ib] + 1));
         }
         w.edge_vertex[T::edge_index(mesh, e)] = make.vertex(q);
+        if (!go_on()) return false;
     }
     // Old vertices: Loop's rule inside; on the boundary (two boundary edges, the stored
     // halfedge a boundary one) 3/4 of itself and 1/8 of each boundary neighbour; a vertex
@@ -167,6 +180,7 @@ void loop_level(M& mesh, loop_workspace<M, T>& w) {
             sum[i] = p * 0.75 + (a + b) * 0.125;
             boundary_moves = true;
         }
+        if (!go_on()) return false;
     }
     // Splits (split_edge's links; the triangles were checked), old triangle by old triangle,
     // so that each triangle is finished while its elements are still in cache. A split cuts
@@ -204,6 +218,7 @@ void loop_level(M& mesh, loop_workspace<M, T>& w) {
         const H cut = triangle.old_corner_cut;
         assert((is_flip_ok<M, T>(mesh, cut)));
         dt::flip_links<M, T>(mesh, cut);
+        if (!go_on()) return false;
     }
     // Edges without a face on either side just gain their vertex. (The bounds still count
     // the unused end of the last blocks: indices at or above edge_bound are skipped.)
@@ -216,6 +231,7 @@ void loop_level(M& mesh, loop_workspace<M, T>& w) {
                     dt::split_links<M, T>(mesh, T::edge_halfedge(mesh, e), w.edge_vertex[i], false, false, make);
                 w.edge_vertex[i] = typename T::vertex_handle{};
             }
+            if (!go_on()) return false;
         }
     make.finish();
     if (boundary_moves) {
@@ -226,17 +242,19 @@ void loop_level(M& mesh, loop_workspace<M, T>& w) {
             if (i >= vertex_bound) continue;
             ++seen;
             if (w.boundary_edges[i] == 2) dt::set_position<M, T>(mesh, v, sum[i]);
+            if (!go_on()) return false;
         }
     }
+    return true;
 }
 
 }  // namespace detail::subdivision
 
-/// A mesh loop_subdivide can run on: the triangle operators, and dense vertex, edge and face
-/// indices for its per-level arrays.
+/// A mesh loop_subdivide can run on: the triangle operators, dense vertex, edge and face
+/// indices for its per-level arrays, and copies (to restore the mesh on cancellation).
 template <class M, class T = default_traits<M>>
-concept loop_subdividable_mesh =
-    triangle_operable_mesh<M, T> && vertex_index_mesh<M, T> && edge_index_mesh<M, T> && face_index_mesh<M, T>;
+concept loop_subdividable_mesh = triangle_operable_mesh<M, T> && vertex_index_mesh<M, T> && edge_index_mesh<M, T> &&
+                                 face_index_mesh<M, T> && std::copy_constructible<M> && std::is_move_assignable_v<M>;
 
 /// Loop subdivision, `options.levels` times. Each level splits every edge at its edge point
 /// (3/8 of each end plus 1/8 of each opposite corner; the midpoint on a boundary), flips the
@@ -249,10 +267,14 @@ concept loop_subdividable_mesh =
 /// \post per level: V + E, E * 2 + 3 F, F * 4; genus and boundary loops unchanged.
 /// Errors (mesh unchanged): errc::topology when a face is not a triangle (naming it);
 /// errc::invalid_argument for more than 10 levels (a million-fold growth), or when the result
-/// would need more than 2^31 halfedges. The mesh and working arrays are sized for the last
+/// would need more than 2^31 halfedges; errc::cancelled when options.progress returns false.
+/// The mesh and working arrays are sized for the last
 /// level before the first change, so std::bad_alloc comes before any change (user property
 /// arrays, which grow element by element, excepted).
-/// Complexity O(F) per level (each operator is O(1) or O(valence)), so O(4^levels F).
+/// Every new position is a convex combination of old ones and is computed without overflow,
+/// coordinates near the largest double included (see detail::subdivision::range_guard).
+/// Complexity O(F) per level (each operator is O(1) or O(valence)), so O(4^levels F); plus
+/// O(V + E + F) for the copy when a progress callback is given.
 template <class M, class T = default_traits<M>>
     requires loop_subdividable_mesh<M, T>
 [[nodiscard]] result<loop_result> loop_subdivide(M& mesh, const loop_options& options = {}) {
@@ -265,8 +287,10 @@ template <class M, class T = default_traits<M>>
     const std::uint64_t v0 = v, e0 = e, f0 = f;
     std::uint64_t largest_v = v, largest_e = e, largest_f = f;
     bool overflow = false;
+    std::uint64_t elements = 0;  // what the levels count for the progress gate
     for (std::size_t l = 0; l < options.levels; ++l) {
         largest_v = v, largest_e = e, largest_f = f;
+        elements += 2 * v + e + 2 * f;
         v = v + e, e = 2 * e + 3 * f, f = 4 * f;
         overflow = overflow || 2 * e >= (std::uint64_t(1) << 31);
     }
@@ -285,12 +309,24 @@ template <class M, class T = default_traits<M>>
     work.room = {vertex_bound, edge_bound, face_bound};
     [[maybe_unused]] const detail::subdivision::appending_guard<M> appending(mesh);  // new vertices are told by index
     work.reserve(vertex_bound - std::size_t(v - largest_v), edge_bound - std::size_t(e - largest_e), face_bound - std::size_t(f - largest_f));
+    detail::progress_gate gate(options.progress, std::size_t(elements / ds::check_every));
+    ds::cancel_point go_on{gate};
+    // Without a callback nothing can stop a level half way. With one, a copy taken before the
+    // first change is what a cancellation restores.
+    std::vector<M> backup;
+    if (options.progress) backup.push_back(mesh);
+    ds::range_guard<M, T> range(mesh);
     for (std::size_t l = 0; l < options.levels; ++l) {
-        if (l > 0) {
-            [[maybe_unused]] const long long non_triangle = ds::gather_triangles<M, T>(mesh, work);  // -1: Loop made triangles only
+        // Level 0's triangles were gathered above; later ones are triangles only (-1) unless cancelled (-2).
+        const bool cancelled = (l > 0 && ds::gather_triangles<M, T>(mesh, work, &go_on) == -2) ||
+                               !ds::loop_level<M, T>(mesh, work, go_on);
+        if (cancelled) {
+            range.dismiss();
+            mesh = std::move(backup.front());
+            return fail(errc::cancelled, "loop_subdivide: cancelled");
         }
-        ds::loop_level<M, T>(mesh, work);
     }
+    range.restore();
     return loop_result{T::vertex_count(mesh), T::edge_count(mesh), T::face_count(mesh)};
 }
 

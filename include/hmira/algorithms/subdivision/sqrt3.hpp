@@ -7,15 +7,20 @@
 #include <array>
 #include <cassert>
 #include <cmath>
+#include <concepts>
 #include <cstddef>
 #include <cstdint>
 #include <numbers>
 #include <string>
+#include <type_traits>
 #include <vector>
+
 
 #include "../triangle/flip_edge.hpp"
 #include "../triangle/split_edge.hpp"
 #include "../triangle/split_face.hpp"
+#include "detail/cancel_point.hpp"
+#include "detail/range.hpp"
 #include "detail/reserve.hpp"
 
 namespace hmira {
@@ -24,6 +29,12 @@ namespace hmira {
 struct sqrt3_options {
     /// Levels of subdivision (each multiplies the faces by 3; two levels trisect every edge).
     std::size_t levels = 1;
+    /// Called between blocks of work (every 16384 elements) with the fraction done; returning
+    /// false cancels (error errc::cancelled, "sqrt3_subdivide: cancelled", mesh unchanged).
+    /// With a callback the mesh is copied once before the first change, so that a
+    /// cancellation can restore it; without one nothing can interrupt the levels and no copy
+    /// is made.
+    progress_function progress = {};
 };
 
 /// What sqrt3_subdivide did.
@@ -57,23 +68,27 @@ struct sqrt3_workspace {
 };
 
 /// Fills `w.triangles` with one entry per face; returns the index of the first face that is
-/// not a triangle without rings, or -1. Changes nothing in the mesh. O(F).
+/// not a triangle without rings, -1, or -2 when `go_on` (if given) cancels. Changes nothing in
+/// the mesh. O(F).
 template <class M, class T>
-long long gather_sqrt3_triangles(const M& mesh, sqrt3_workspace<M, T>& w) {
+long long gather_sqrt3_triangles(const M& mesh, sqrt3_workspace<M, T>& w, cancel_point* go_on = nullptr) {
     w.triangles.clear();
     for (auto f : T::faces(mesh)) {
         const auto h0 = T::face_halfedge(mesh, f);
         if (!detail::triangle_ops::in_triangle<M, T>(mesh, h0)) return (long long)T::face_index(mesh, f);
         w.triangles.push_back({h0, T::null_halfedge(), {}, {}});
+        if (go_on && !(*go_on)()) return -2;
     }
     return -1;
 }
 
 /// One level on the triangles gathered in `w`; the mesh has room for it. With
 /// `trisect_boundary`, a triangle with a boundary side has that side trisected instead of a
-/// centroid (each such triangle has one boundary side: the level before split it).
+/// centroid (each such triangle has one boundary side: the level before split it). Returns
+/// false when `go_on` cancels, which it does only between elements (the caller then restores
+/// its copy).
 template <class M, class T>
-void sqrt3_level(M& mesh, sqrt3_workspace<M, T>& w, bool trisect_boundary) {
+bool sqrt3_level(M& mesh, sqrt3_workspace<M, T>& w, bool trisect_boundary, cancel_point& go_on) {
     namespace dt = detail::triangle_ops;
     using H = typename T::halfedge_handle;
     using S = typename T::scalar;
@@ -100,6 +115,7 @@ void sqrt3_level(M& mesh, sqrt3_workspace<M, T>& w, bool trisect_boundary) {
             w.boundary_edges[ia] = std::uint8_t(std::min(3, w.boundary_edges[ia] + 1));
             w.boundary_edges[ib] = std::uint8_t(std::min(3, w.boundary_edges[ib] + 1));
         }
+        if (!go_on()) return false;
     }
     // New points, from the old positions: the centroid of each triangle; on a trisecting
     // level, the two points of the ternary cubic B-spline on each boundary side a -> b, with
@@ -125,6 +141,7 @@ void sqrt3_level(M& mesh, sqrt3_workspace<M, T>& w, bool trisect_boundary) {
             t.first = (u + a * 16.0 + b * 10.0) / 27.0;
             t.second = (a * 10.0 + b * 16.0 + z) / 27.0;
         }
+        if (!go_on()) return false;
     }
     // Old vertices: Kobbelt's rule inside; on a trisecting level a boundary vertex between
     // two boundary edges takes (4 u + 19 p + 4 z) / 27 of itself and its boundary neighbours;
@@ -144,8 +161,12 @@ void sqrt3_level(M& mesh, sqrt3_workspace<M, T>& w, bool trisect_boundary) {
         } else {
             sum[i] = p;
         }
+        if (!go_on()) return false;
     }
-    for (auto v : T::vertices(mesh)) dt::set_position<M, T>(mesh, v, sum[T::vertex_index(mesh, v)]);
+    for (auto v : T::vertices(mesh)) {
+        dt::set_position<M, T>(mesh, v, sum[T::vertex_index(mesh, v)]);
+        if (!go_on()) return false;
+    }
 
     const auto add = [&](const vec3<double>& q) { return T::add_vertex(mesh, vec3<S>{S(q.x), S(q.y), S(q.z)}); };
     for (const auto& t : w.triangles) {
@@ -156,22 +177,26 @@ void sqrt3_level(M& mesh, sqrt3_workspace<M, T>& w, bool trisect_boundary) {
             const H x_to_b = dt::split_links<M, T>(mesh, t.boundary_side, add(t.first), true, false);
             [[maybe_unused]] const H y_to_b = dt::split_links<M, T>(mesh, x_to_b, add(t.second), true, false);
         }
+        if (!go_on()) return false;
     }
     // Each old interior edge now lies between two new triangles whose far corners are new
     // vertices that no edge joins yet, so every flip is allowed and its checks are skipped.
     for (const H h : w.old_interior) {
         assert((is_flip_ok<M, T>(mesh, h)));
         dt::flip_links<M, T>(mesh, h);
+        if (!go_on()) return false;
     }
+    return true;
 }
 
 }  // namespace detail::subdivision
 
-/// A mesh sqrt3_subdivide can run on: the triangle operators, and dense vertex, edge and face
-/// indices for its per-level arrays, sizing and error messages.
+/// A mesh sqrt3_subdivide can run on: the triangle operators, dense vertex, edge and face
+/// indices for its per-level arrays, sizing and error messages, and copies (to restore the
+/// mesh on cancellation).
 template <class M, class T = default_traits<M>>
-concept sqrt3_subdividable_mesh =
-    triangle_operable_mesh<M, T> && vertex_index_mesh<M, T> && edge_index_mesh<M, T> && face_index_mesh<M, T>;
+concept sqrt3_subdividable_mesh = triangle_operable_mesh<M, T> && vertex_index_mesh<M, T> && edge_index_mesh<M, T> &&
+                                  face_index_mesh<M, T> && std::copy_constructible<M> && std::is_move_assignable_v<M>;
 
 /// Kobbelt's sqrt(3) subdivision, `options.levels` times. Each level splits every triangle at
 /// its centroid into three, flips every old edge that has a face on both sides (so each new
@@ -192,9 +217,13 @@ concept sqrt3_subdividable_mesh =
 /// boundary edges, which triple). Genus and boundary loops unchanged.
 /// Errors (mesh unchanged): errc::topology when a face is not a triangle (naming it);
 /// errc::invalid_argument for more than 20 levels, or when the result would need more than
-/// 2^31 halfedges. The mesh is sized for the last level before the first change, so
-/// std::bad_alloc comes before any change (user property arrays excepted).
-/// Complexity O(F) per level, so O(3^levels F).
+/// 2^31 halfedges; errc::cancelled when options.progress returns false. The mesh is sized for
+/// the last level before the first change, so std::bad_alloc comes before any change (user
+/// property arrays excepted). Every new position is a convex combination of old ones and is
+/// computed without overflow, coordinates near the largest double included
+/// (see detail::subdivision::range_guard).
+/// Complexity O(F) per level, so O(3^levels F); plus O(V + E + F) for the copy when a
+/// progress callback is given.
 template <class M, class T = default_traits<M>>
     requires sqrt3_subdividable_mesh<M, T>
 [[nodiscard]] result<sqrt3_result> sqrt3_subdivide(M& mesh, const sqrt3_options& options = {}) {
@@ -211,8 +240,10 @@ template <class M, class T = default_traits<M>>
     }
     std::uint64_t v = T::vertex_count(mesh), e = T::edge_count(mesh), f = T::face_count(mesh);
     const std::uint64_t v0 = v, e0 = e, f0 = f;
+    std::uint64_t elements = 0;  // what the levels count for the progress gate
     for (std::size_t l = 0; l < options.levels; ++l) {
         const std::uint64_t trisected = l % 2 == 1 ? boundary : 0;
+        elements += 2 * v + e + 3 * f + e;
         v += f + trisected, e += 3 * f + trisected, f *= 3, boundary += 2 * trisected;
         if (2 * e >= (std::uint64_t(1) << 31))
             return fail(errc::invalid_argument, "sqrt3_subdivide: " + std::to_string(options.levels) +
@@ -222,12 +253,24 @@ template <class M, class T = default_traits<M>>
     ds::reserve_room<M, T>(mesh, T::vertex_index_bound(mesh) + std::size_t(v - v0), T::edge_index_bound(mesh) + std::size_t(e - e0),
                            T::face_index_bound(mesh) + std::size_t(f - f0));
     work.triangles.reserve(std::size_t(f / 3));
+    detail::progress_gate gate(options.progress, std::size_t(elements / ds::check_every));
+    ds::cancel_point go_on{gate};
+    // Without a callback nothing can stop a level half way. With one, a copy taken before the
+    // first change is what a cancellation restores.
+    std::vector<M> backup;
+    if (options.progress) backup.push_back(mesh);
+    ds::range_guard<M, T> range(mesh);
     for (std::size_t l = 0; l < options.levels; ++l) {
-        if (l > 0) {
-            [[maybe_unused]] const long long non_triangle = ds::gather_sqrt3_triangles<M, T>(mesh, work);  // -1: only triangles made
+        // Level 0's triangles were gathered above; later ones are triangles only (-1) unless cancelled (-2).
+        const bool cancelled = (l > 0 && ds::gather_sqrt3_triangles<M, T>(mesh, work, &go_on) == -2) ||
+                               !ds::sqrt3_level<M, T>(mesh, work, l % 2 == 1, go_on);
+        if (cancelled) {
+            range.dismiss();
+            mesh = std::move(backup.front());
+            return fail(errc::cancelled, "sqrt3_subdivide: cancelled");
         }
-        ds::sqrt3_level<M, T>(mesh, work, l % 2 == 1);
     }
+    range.restore();
     return sqrt3_result{T::vertex_count(mesh), T::edge_count(mesh), T::face_count(mesh)};
 }
 
