@@ -87,9 +87,9 @@ std::string octahedron_off(double s, double offset = 0) {
     return ::testing::AssertionSuccess();
 }
 
-// Without --length the target is the mean edge length. Squaring coordinates above ~1e154 or
-// below ~1e-154 once made it infinite or 0, reported as a bad option (exit 2) the user never
-// gave. What no scaling can help is refused as input, naming the scale.
+// Without --length the target is the mean edge length, which must not come out infinite or 0
+// (squared coordinates above ~1e154 or below ~1e-154) and be reported as a bad option (exit 2)
+// the user never gave. What no scaling can help is refused as input, naming the scale.
 TEST(cli_remesh_scale, an_input_no_rescaling_helps_is_refused_as_input_naming_its_scale) {
     scratch_dir dir;
     const struct {
@@ -131,8 +131,8 @@ TEST(cli_remesh_scale, meshes_far_from_unit_size_remesh_at_their_mean_edge_lengt
     }
 }
 
-// An explicit --length on a 1e-200 mesh printed "about -nan triangles" (area and L^2 both
-// underflowed to 0) and called it a bad option.
+// An explicit --length on a 1e-200 mesh: area and L^2 both underflow to 0 when squared
+// directly, so the estimate must not be their ratio (NaN).
 TEST(cli_remesh_scale, an_explicit_length_on_a_tiny_mesh_remeshes_it) {
     scratch_dir dir;
     hmira_test::write_bytes(dir / "tiny.off", octahedron_off(1e-200));
@@ -159,8 +159,8 @@ TEST(cli_remesh_scale, a_length_absurdly_small_for_the_mesh_is_a_usage_error_wit
     }
 }
 
-// --length 0.0005 on the elephant ran 28 s and then ran out of memory: the refusal only
-// started at 2^28 triangles. Now an estimate above the free memory is refused up front.
+// An estimate above the free memory is refused up front, naming it, rather than running
+// until the memory runs out (the fixed limit of 2^28 triangles is far beyond most machines).
 TEST(cli_remesh_memory, an_estimate_above_the_free_memory_is_refused_at_once_naming_it) {
     scratch_dir dir;
     hmira_test::write_bytes(dir / "in.off", octahedron_off(1));
@@ -199,8 +199,8 @@ TEST(cli_remesh_memory, the_elephant_at_a_tiny_length_is_refused_without_running
     EXPECT_FALSE(std::filesystem::exists(dir / "out.off"));
 }
 
-// A direction whose squared length underflows to 0 passed the command line's check (not all
-// components 0) and failed inside extrude as invalid input (exit 1).
+// A direction whose squared length underflows to 0 (or overflows) has no length to normalise
+// by: a bad option value, though not all its components are 0.
 TEST(cli_extrude_direction, a_direction_that_cannot_be_normalised_is_a_usage_error) {
     scratch_dir dir;
     hmira_test::write_bytes(dir / "in.off", octahedron_off(1));

@@ -403,8 +403,8 @@ double plain_triangle_estimate(const M& m, double L) {
 template <class M, class T = hmira::default_traits<M>>
 constexpr bool double_coordinates = std::numeric_limits<typename T::scalar>::max_exponent >= 1024;
 
-// The default target length is the mean edge length; squaring coordinates made it infinite
-// above ~1e154 and 0 below ~1e-154.
+// The default target length is the mean edge length, right at every scale (squaring the
+// coordinates would make it infinite above ~1e154 and 0 below ~1e-154).
 TYPED_TEST(remeshing_test, the_mean_edge_length_is_right_at_every_scale) {
     using M = TypeParam;
     HMIRA_REQUIRE_REMESHABLE(M)
@@ -470,9 +470,9 @@ TYPED_TEST(remeshing_test, a_mesh_at_a_scale_no_rescaling_helps_is_refused_as_in
     }
 }
 
-// Squared lengths overflowed above ~1e154 and underflowed below ~1e-154 (and the projection's
-// products of four lengths at ~1e+-77): such meshes are remeshed as a copy scaled by a power of
-// two, so the result is exactly the one at unit size, scaled.
+// Squared lengths overflow above ~1e154 and underflow below ~1e-154 (the projection's products
+// of four lengths at ~1e+-77): such meshes are remeshed as a copy scaled by a power of two, so
+// the result is exactly the one at unit size, scaled.
 TYPED_TEST(remeshing_test, meshes_far_from_unit_scale_remesh_exactly_as_at_unit_scale) {
     using M = TypeParam;
     HMIRA_REQUIRE_REMESHABLE(M)
@@ -524,7 +524,8 @@ TYPED_TEST(remeshing_test, meshes_far_from_unit_scale_remesh_exactly_as_at_unit_
     }
 }
 
-// The estimate divided an underflowed area by an underflowed L^2 ("about -nan triangles").
+// The estimate scales each triangle before squaring: an underflowed area over an underflowed
+// L^2 would be NaN.
 TYPED_TEST(remeshing_test, the_estimate_is_scale_free_and_never_nan) {
     using M = TypeParam;
     HMIRA_REQUIRE_REMESHABLE(M)
