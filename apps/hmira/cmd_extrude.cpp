@@ -65,7 +65,8 @@ int run_extrude(const extrude_args& a, const common_options& o) {
         const double length = hmira::norm(*direction);
         if (!(length > 0) || !std::isfinite(length))
             return report(usage, "--direction " + a.direction + ": cannot be normalised (its squared length " +
-                                     (length > 0 ? "overflows" : "underflows to 0") + "); only the direction counts, so scale it");
+                                     (length > 0 ? "overflows" : "underflows to 0") +
+                                     "); only the direction counts, so scale it");
     }
     int code = ok;
     auto loaded = load_for_edit(a.input, o, code);

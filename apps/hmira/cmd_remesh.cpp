@@ -72,9 +72,10 @@ int run_remesh(const remesh_args& a, const common_options& o) {
                             c = report(given ? usage : invalid_input,
                                        a.input + ": " + (given ? "--length " : "edge length ") +
                                            hmira::detail::remeshing::number(length) + " would make " +
-                                           hmira::detail::remeshing::count_text(estimate->triangles) + " triangles needing " +
-                                           (std::isinf(estimate->bytes) ? "" : "about ") +
-                                           hmira::detail::remeshing::bytes(estimate->bytes) + " of memory, more than the " +
+                                           hmira::detail::remeshing::count_text(estimate->triangles) +
+                                           " triangles needing " + (std::isinf(estimate->bytes) ? "" : "about ") +
+                                           hmira::detail::remeshing::bytes(estimate->bytes) +
+                                           " of memory, more than the " +
                                            hmira::detail::remeshing::bytes(double(*memory)) + " free");
                             return std::nullopt;
                         }
@@ -94,8 +95,8 @@ int run_remesh(const remesh_args& a, const common_options& o) {
                         if (memory) options.max_bytes = *memory;
                         auto r = hmira::isotropic_remeshing(mesh, options);
                         if (!r) return fail(r.error());
-                        return edit_outcome{"remeshed to edge length " + hmira::detail::remeshing::number(length) + " (" +
-                                                count_of(a.iterations, "iteration", "iterations") + "; " +
+                        return edit_outcome{"remeshed to edge length " + hmira::detail::remeshing::number(length) +
+                                                " (" + count_of(a.iterations, "iteration", "iterations") + "; " +
                                                 count_of(r->splits, "split", "splits") + ", " +
                                                 count_of(r->collapses, "collapse", "collapses") + ", " +
                                                 count_of(r->flips, "flip", "flips") + ", " +

@@ -33,8 +33,8 @@ struct run_result {
 run_result hmira(const scratch_dir& dir, const std::string& args, const std::string& env = "") {
     const auto out = dir.path().parent_path() / (dir.path().filename().string() + ".stdout");
     const auto err = dir.path().parent_path() / (dir.path().filename().string() + ".stderr");
-    const std::string cmd = "cd '" + dir.path().string() + "' && " + env + " exec '" + std::string(HMIRA_CLI) + "' " + args +
-                            " >'" + out.string() + "' 2>'" + err.string() + "' </dev/null";
+    const std::string cmd = "cd '" + dir.path().string() + "' && " + env + " exec '" + std::string(HMIRA_CLI) + "' " +
+                            args + " >'" + out.string() + "' 2>'" + err.string() + "' </dev/null";
     const auto start = std::chrono::steady_clock::now();
     const int status = std::system(cmd.c_str());
     run_result r;
@@ -48,9 +48,12 @@ run_result hmira(const scratch_dir& dir, const std::string& args, const std::str
 }
 
 ::testing::AssertionResult one_line_error(const run_result& r, const std::string& part) {
-    if (r.err.rfind("hmira: error: ", 0) != 0) return ::testing::AssertionFailure() << "no 'hmira: error: ' prefix: " << r.err;
-    if (std::count(r.err.begin(), r.err.end(), '\n') != 1) return ::testing::AssertionFailure() << "not one line: " << r.err;
-    if (r.err.find(part) == std::string::npos) return ::testing::AssertionFailure() << "'" << part << "' not in: " << r.err;
+    if (r.err.rfind("hmira: error: ", 0) != 0)
+        return ::testing::AssertionFailure() << "no 'hmira: error: ' prefix: " << r.err;
+    if (std::count(r.err.begin(), r.err.end(), '\n') != 1)
+        return ::testing::AssertionFailure() << "not one line: " << r.err;
+    if (r.err.find(part) == std::string::npos)
+        return ::testing::AssertionFailure() << "'" << part << "' not in: " << r.err;
     return ::testing::AssertionSuccess();
 }
 
@@ -192,7 +195,8 @@ TEST(cli_remesh_memory, the_elephant_at_a_tiny_length_is_refused_without_running
     const std::filesystem::path elephant = data ? std::filesystem::path(data) / "meshes" / "elephant.off" : "";
     if (!data || !std::filesystem::exists(elephant)) GTEST_SKIP() << "run scripts/test-data.sh first";
     scratch_dir dir;
-    const auto r = hmira(dir, "remesh '" + elephant.string() + "' out.off --length 0.0005", "HMIRA_TEST_MEMAVAILABLE=2147483648");  // 2.74 GiB needed
+    const auto r = hmira(dir, "remesh '" + elephant.string() + "' out.off --length 0.0005",
+                         "HMIRA_TEST_MEMAVAILABLE=2147483648");  // 2.74 GiB needed
     EXPECT_EQ(r.code, 2) << r.err;
     EXPECT_TRUE(one_line_error(r, "about 2.74 GiB of memory, more than the 2 GiB free"));
     EXPECT_LT(r.seconds, 10.0);

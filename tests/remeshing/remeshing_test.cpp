@@ -490,10 +490,11 @@ TYPED_TEST(remeshing_test, meshes_far_from_unit_scale_remesh_exactly_as_at_unit_
         }
         const int j = std::ilogb(std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z}));  // 2^j <= extent < 2^(j+1)
         scale_by_power_of_two(reference, -j);
-        ASSERT_TRUE(hmira::isotropic_remeshing(reference, {.target_edge_length = std::ldexp(unit / 2, -j), .iterations = 3}));
+        ASSERT_TRUE(
+            hmira::isotropic_remeshing(reference, {.target_edge_length = std::ldexp(unit / 2, -j), .iterations = 3}));
         ASSERT_TRUE(hmira_test::is_valid(reference));
-        const std::vector<int> scales = double_coordinates<M> ? std::vector<int>{-960, -600, -300, 300, 600, 1000}
-                                                              : std::vector<int>{-100, 100};
+        const std::vector<int> scales =
+            double_coordinates<M> ? std::vector<int>{-960, -600, -300, 300, 600, 1000} : std::vector<int>{-100, 100};
         for (const int k : scales) {
             SCOPED_TRACE(k);
             M m = unit_sphere<M>();
@@ -532,7 +533,8 @@ TYPED_TEST(remeshing_test, the_estimate_is_scale_free_and_never_nan) {
     else {
         const M unit_mesh = unit_sphere<M>();
         const double want = plain_triangle_estimate(unit_mesh, 0.05);
-        const std::vector<int> scales = double_coordinates<M> ? std::vector<int>{-960, -480, 0, 480, 1000} : std::vector<int>{-100, 0, 100};
+        const std::vector<int> scales =
+            double_coordinates<M> ? std::vector<int>{-960, -480, 0, 480, 1000} : std::vector<int>{-100, 0, 100};
         for (const int k : scales) {
             SCOPED_TRACE(k);
             M m = unit_sphere<M>();
@@ -553,7 +555,8 @@ TYPED_TEST(remeshing_test, the_estimate_is_scale_free_and_never_nan) {
             auto r = hmira::isotropic_remeshing(m, {.target_edge_length = std::ldexp(1.0, -500)});
             ASSERT_FALSE(r);
             EXPECT_EQ(r.error().code, hmira::errc::invalid_argument);
-            EXPECT_NE(r.error().message.find("would make more than 1e308 triangles"), std::string::npos) << r.error().message;
+            EXPECT_NE(r.error().message.find("would make more than 1e308 triangles"), std::string::npos)
+                << r.error().message;
             EXPECT_EQ(take_snapshot(m), before);
         }
     }
@@ -575,11 +578,14 @@ TYPED_TEST(remeshing_test, max_bytes_refuses_a_run_whose_estimate_exceeds_it) {
         ASSERT_FALSE(r);
         EXPECT_EQ(r.error().code, hmira::errc::invalid_argument);
         const std::string& msg = r.error().message;
-        EXPECT_NE(msg.find("would make about " + hmira::detail::remeshing::number(triangles).substr(0, 4)), std::string::npos) << msg;
+        EXPECT_NE(msg.find("would make about " + hmira::detail::remeshing::number(triangles).substr(0, 4)),
+                  std::string::npos)
+            << msg;
         EXPECT_NE(msg.find("triangles needing about"), std::string::npos) << msg;
         EXPECT_NE(msg.find("MiB, more than max_bytes"), std::string::npos) << msg;
         EXPECT_EQ(take_snapshot(m), before);
-        auto ok = hmira::isotropic_remeshing(m, {.target_edge_length = L, .iterations = 1, .max_bytes = std::uint64_t(bytes * 1.01)});
+        auto ok = hmira::isotropic_remeshing(
+            m, {.target_edge_length = L, .iterations = 1, .max_bytes = std::uint64_t(bytes * 1.01)});
         ASSERT_TRUE(ok) << ok.error().message;
         EXPECT_TRUE(hmira_test::is_valid(m));
         EXPECT_GT(ok->splits, 0u);

@@ -76,7 +76,9 @@ inline result<void> check_length(double L) {
 }
 
 /// An estimated count as a message shows it: "about 1.2e+07", or "more than 1e308" past the largest double.
-inline std::string count_text(double n) { return std::isinf(n) ? std::string("more than 1e308") : "about " + number(n); }
+inline std::string count_text(double n) {
+    return std::isinf(n) ? std::string("more than 1e308") : "about " + number(n);
+}
 
 /// Refuses a mesh at a scale remeshing cannot work at (errc::unsupported, naming it): all the
 /// edges' ends at one point, an extent below remeshing_min_extent, or a coordinate above
@@ -100,7 +102,8 @@ result<double> check_scale(const M& mesh) {
                                            ", too large to remesh (above ~" + number(remeshing_max_coordinate) +
                                            " the points computed between vertices could overflow)");
     const double extent = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
-    if (extent == 0) return fail(errc::unsupported, "isotropic_remeshing: all vertices coincide, so there is nothing to remesh");
+    if (extent == 0)
+        return fail(errc::unsupported, "isotropic_remeshing: all vertices coincide, so there is nothing to remesh");
     if (extent < remeshing_min_extent)
         return fail(errc::unsupported, "isotropic_remeshing: the mesh spans only " + number(extent) +
                                            ", too small to remesh (below ~" + number(remeshing_min_extent) +
@@ -114,7 +117,8 @@ result<void> check_finite(const M& mesh) {
     for (auto v : T::vertices(mesh))
         if (!triangle_ops::finite(triangle_ops::position_of<M, T>(mesh, v)))
             return fail(errc::unsupported,
-                        "isotropic_remeshing: vertex " + std::to_string(T::vertex_index(mesh, v)) + " has a non-finite position",
+                        "isotropic_remeshing: vertex " + std::to_string(T::vertex_index(mesh, v)) +
+                            " has a non-finite position",
                         (long long)T::vertex_index(mesh, v));
     return {};
 }
@@ -131,7 +135,8 @@ double area_over_squared_length(const M& mesh, double L) {
         for (auto v : T::face_vertices(mesh, f)) corners.push_back(triangle_ops::position_of<M, T>(mesh, v));
         for (std::size_t i = 1; i + 1 < corners.size(); ++i) {
             const vec3<double> u = corners[i] - corners[0], w = corners[i + 1] - corners[0];
-            const double s = std::max({std::abs(u.x), std::abs(u.y), std::abs(u.z), std::abs(w.x), std::abs(w.y), std::abs(w.z)});
+            const double s =
+                std::max({std::abs(u.x), std::abs(u.y), std::abs(u.z), std::abs(w.x), std::abs(w.y), std::abs(w.z)});
             if (!(s > 0)) continue;
             const double unit_area = 0.5 * norm(cross(u / s, w / s));  // in [0, 1]
             if (!(unit_area > 0)) continue;
@@ -200,8 +205,9 @@ template <class M, class T = default_traits<M>>
     if (T::edge_count(mesh) == 0) return 1.0;
     const double mean = mean_edge_length<M, T>(mesh);
     if (!(mean > 0))
-        return fail(errc::unsupported, "isotropic_remeshing: every edge has length 0 (the vertices of each face coincide), "
-                                       "so there is no edge length to remesh at");
+        return fail(errc::unsupported,
+                    "isotropic_remeshing: every edge has length 0 (the vertices of each face coincide), "
+                    "so there is no edge length to remesh at");
     return mean;
 }
 
@@ -226,7 +232,8 @@ template <class M, class T = default_traits<M>>
     if (auto ok = detail::remeshing::check_finite<M, T>(mesh); !ok) return ok.error();
     if (auto ok = detail::remeshing::check_scale<M, T>(mesh); !ok) return ok.error();
     const double triangles = detail::remeshing::area_over_squared_length<M, T>(mesh, L) / (std::sqrt(3.0) / 4);
-    return isotropic_remeshing_estimate{triangles, (triangles + double(T::face_count(mesh))) * remeshing_bytes_per_triangle};
+    return isotropic_remeshing_estimate{triangles,
+                                        (triangles + double(T::face_count(mesh))) * remeshing_bytes_per_triangle};
 }
 
 /// Remeshes a triangle mesh towards edge length L = options.target_edge_length. Each iteration:
@@ -281,14 +288,16 @@ template <class M, class T = default_traits<M>>
     const auto estimate = estimate_isotropic_remeshing<M, T>(mesh, L);
     if (!estimate) return estimate.error();
     if (!(estimate->triangles <= double(options.max_faces)))
-        return fail(errc::invalid_argument, "isotropic_remeshing: option target_edge_length " + detail::remeshing::number(L) +
-                                                " would make " + detail::remeshing::count_text(estimate->triangles) +
+        return fail(errc::invalid_argument, "isotropic_remeshing: option target_edge_length " +
+                                                detail::remeshing::number(L) + " would make " +
+                                                detail::remeshing::count_text(estimate->triangles) +
                                                 " triangles, more than max_faces " + std::to_string(options.max_faces));
     if (!(estimate->bytes <= double(options.max_bytes)))
-        return fail(errc::invalid_argument, "isotropic_remeshing: option target_edge_length " + detail::remeshing::number(L) +
-                                                " would make " + detail::remeshing::count_text(estimate->triangles) +
-                                                " triangles needing about " + detail::remeshing::bytes(estimate->bytes) +
-                                                ", more than max_bytes " + detail::remeshing::bytes(double(options.max_bytes)));
+        return fail(errc::invalid_argument,
+                    "isotropic_remeshing: option target_edge_length " + detail::remeshing::number(L) + " would make " +
+                        detail::remeshing::count_text(estimate->triangles) + " triangles needing about " +
+                        detail::remeshing::bytes(estimate->bytes) + ", more than max_bytes " +
+                        detail::remeshing::bytes(double(options.max_bytes)));
     std::vector<char> feature(T::edge_index_bound(mesh), 0);
     for (const auto i : options.feature_edges) {
         if (i >= feature.size())
