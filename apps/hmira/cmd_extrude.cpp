@@ -1,6 +1,7 @@
 // apps/hmira/cmd_extrude.cpp
 // `hmira extrude`: pulls chosen faces (or all) out along their normal or a given direction,
 // joining them to where they were by walls of quads.
+#include <cmath>
 #include <cstdio>
 
 #include <hmira/algorithms/editing/extrude.hpp>
@@ -59,6 +60,13 @@ int run_extrude(const extrude_args& a, const common_options& o) {
         if (!d || ((*d)[0] == 0 && (*d)[1] == 0 && (*d)[2] == 0))
             return report(usage, "--direction " + a.direction + ": expected three finite numbers X,Y,Z, not all 0");
         direction = hmira::vec3<double>{(*d)[0], (*d)[1], (*d)[2]};
+        // extrude normalises the direction by its length, hmira::norm: a vector so short that
+        // its squared length underflows to 0, or so long that it overflows, has none to divide by.
+        const double length = hmira::norm(*direction);
+        if (!(length > 0) || !std::isfinite(length))
+            return report(usage, "--direction " + a.direction + ": cannot be normalised (its squared length " +
+                                     (length > 0 ? "overflows" : "underflows to 0") +
+                                     "); only the direction counts, so scale it");
     }
     int code = ok;
     auto loaded = load_for_edit(a.input, o, code);

@@ -1,6 +1,14 @@
 // apps/hmira/cmd_remesh.cpp
 // `hmira remesh`: isotropic remeshing of a triangle mesh towards one edge length, keeping the
 // boundary and, with --features, the edges sharper than an angle.
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
 #include <hmira/algorithms/remeshing/isotropic_remeshing.hpp>
 
 #include "cli.hpp"
@@ -11,44 +19,84 @@ using namespace hmira_cli;
 
 struct remesh_args {
     std::string input, output;
-    double length = 0;  // 0: the input's mean edge length
-    std::size_t iterations = 5;
+    double length = 0;  // 0: the input's mean edge length (hmira::default_target_edge_length)
+    std::size_t iterations = hmira::isotropic_remeshing_options{}.iterations;
     double features = -1;  // < 0: none
 };
+
+/// The memory this process may still take: MemAvailable from /proc/meminfo, else the free
+/// physical pages; nullopt when neither is known. HMIRA_TEST_MEMAVAILABLE=BYTES overrides it
+/// (for the tests of the refusal).
+std::optional<std::uint64_t> available_memory() {
+    if (const char* s = std::getenv("HMIRA_TEST_MEMAVAILABLE")) return std::strtoull(s, nullptr, 10);
+    std::ifstream meminfo("/proc/meminfo");
+    for (std::string line; std::getline(meminfo, line);)
+        if (line.rfind("MemAvailable:", 0) == 0) {
+            std::istringstream fields(line.substr(13));
+            std::uint64_t kib = 0;
+            if (fields >> kib) return kib * 1024;
+        }
+    const long pages = sysconf(_SC_AVPHYS_PAGES), page = sysconf(_SC_PAGESIZE);
+    if (pages > 0 && page > 0) return std::uint64_t(pages) * std::uint64_t(page);
+    return std::nullopt;
+}
 
 int run_remesh(const remesh_args& a, const common_options& o) {
     int code = ok;
     auto loaded = load_for_edit(a.input, o, code);
     if (!loaded) return code;
+    // The options were checked on the command line, so an invalid_argument from the library is
+    // about the target length: a usage error when --length gave it, a property of the input
+    // (whose mean edge length it is) otherwise.
+    const bool given = a.length > 0;
+    auto exit_code = [&](const hmira::error& e) {
+        return e.code == hmira::errc::invalid_argument ? (given ? usage : invalid_input) : input_exit_code(e);
+    };
     return run_edit(*loaded, a.input, a.output, "remeshing " + a.input, o,
                     [&](hmira::halfedge_mesh& mesh, int& c) -> std::optional<edit_outcome> {
                         using T = hmira::default_traits<hmira::halfedge_mesh>;
+                        auto fail = [&](const hmira::error& e) -> std::optional<edit_outcome> {
+                            c = report(exit_code(e), a.input + ": " + e.message);
+                            return std::nullopt;
+                        };
                         double length = a.length;
-                        if (length == 0) {
-                            double sum = 0;
-                            for (auto e : T::edges(mesh)) {
-                                const auto ends = T::edge_vertices(mesh, e);
-                                sum += hmira::norm(mesh.position(ends[0]) - mesh.position(ends[1]));
-                            }
-                            length = T::edge_count(mesh) ? sum / double(T::edge_count(mesh)) : 1.0;
+                        if (!given) {
+                            const auto mean = hmira::default_target_edge_length(mesh);
+                            if (!mean) return fail(mean.error());
+                            length = *mean;
                         }
-                        auto bar = stage_bar("remeshing " + a.input, o, T::face_count(mesh));
-                        auto r = hmira::isotropic_remeshing(
-                            mesh, {.target_edge_length = length,
-                                   .iterations = a.iterations,
-                                   .feature_angle = a.features >= 0 ? std::optional<double>(a.features) : std::nullopt,
-                                   .progress = [&](double f) {
-                                       bar.update(std::uint64_t(f * 1000), 1000);
-                                       return true;
-                                   }});
-                        if (!r) {
-                            // An option out of range is a usage error; a bad mesh is invalid input.
-                            const bool option = r.error().message.find("option") != std::string::npos;
-                            c = report(option ? usage : input_exit_code(r.error()), a.input + ": " + r.error().message);
+                        const auto estimate = hmira::estimate_isotropic_remeshing(mesh, length);
+                        if (!estimate) return fail(estimate.error());
+                        const auto memory = available_memory();
+                        if (memory && !(estimate->bytes <= double(*memory))) {
+                            c = report(given ? usage : invalid_input,
+                                       a.input + ": " + (given ? "--length " : "edge length ") +
+                                           hmira::detail::remeshing::number(length) + " would make " +
+                                           hmira::detail::remeshing::count_text(estimate->triangles) +
+                                           " triangles needing " + (std::isinf(estimate->bytes) ? "" : "about ") +
+                                           hmira::detail::remeshing::bytes(estimate->bytes) +
+                                           " of memory, more than the " +
+                                           hmira::detail::remeshing::bytes(double(*memory)) + " free");
                             return std::nullopt;
                         }
-                        return edit_outcome{"remeshed to edge length " + std::to_string(length) + " (" +
-                                                count_of(a.iterations, "iteration", "iterations") + "; " +
+                        // Sized by the larger of the input and the expected output, so a long
+                        // refinement of a small input shows its progress too.
+                        const double expected = std::min(estimate->triangles, 1e18);
+                        auto bar = stage_bar("remeshing " + a.input, o,
+                                             std::max<std::uint64_t>(T::face_count(mesh), std::uint64_t(expected)));
+                        hmira::isotropic_remeshing_options options{
+                            .target_edge_length = length,
+                            .iterations = a.iterations,
+                            .feature_angle = a.features >= 0 ? std::optional<double>(a.features) : std::nullopt,
+                            .progress = [&](double f) {
+                                bar.update(std::uint64_t(f * 1000), 1000);
+                                return true;
+                            }};
+                        if (memory) options.max_bytes = *memory;
+                        auto r = hmira::isotropic_remeshing(mesh, options);
+                        if (!r) return fail(r.error());
+                        return edit_outcome{"remeshed to edge length " + hmira::detail::remeshing::number(length) +
+                                                " (" + count_of(a.iterations, "iteration", "iterations") + "; " +
                                                 count_of(r->splits, "split", "splits") + ", " +
                                                 count_of(r->collapses, "collapse", "collapses") + ", " +
                                                 count_of(r->flips, "flip", "flips") + ", " +

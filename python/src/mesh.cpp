@@ -625,14 +625,10 @@ void bind_remesh(nb::class_<py_mesh>& c) {
                  }
              const auto r = change_without_gil(s, true, [&](halfedge_mesh& m, hmira::progress_function progress) {
                  double length = target_edge_length.value_or(0.0);
-                 if (!target_edge_length) {  // the mean edge length
-                     using T = hmira::default_traits<halfedge_mesh>;
-                     double sum = 0;
-                     for (auto e : T::edges(m)) {
-                         const auto ends = T::edge_vertices(m, e);
-                         sum += hmira::norm(m.position(ends[0]) - m.position(ends[1]));
-                     }
-                     length = m.edge_count() ? sum / double(m.edge_count()) : 1.0;
+                 if (!target_edge_length) {  // the mean edge length, or why the mesh has none to use
+                     const auto mean = hmira::default_target_edge_length(m);
+                     if (!mean) return hmira::result<hmira::isotropic_remeshing_result>(mean.error());
+                     length = *mean;
                  }
                  auto done = hmira::isotropic_remeshing(m, {.target_edge_length = length, .iterations = iterations,
                                                             .feature_angle = feature_angle, .feature_edges = features,
@@ -646,7 +642,8 @@ void bind_remesh(nb::class_<py_mesh>& c) {
              d["flips"] = r.flips;
              d["feature_edges"] = r.feature_edges;
              return d;
-         }, nb::kw_only(), nb::arg("target_edge_length") = nb::none(), nb::arg("iterations") = 5, nb::arg("feature_angle") = nb::none(),
+         }, nb::kw_only(), nb::arg("target_edge_length") = nb::none(),
+         nb::arg("iterations") = hmira::isotropic_remeshing_options{}.iterations, nb::arg("feature_angle") = nb::none(),
          nb::arg("feature_edges") = nb::none(),
          "Isotropic remeshing of a triangle mesh towards target_edge_length (default: the mean edge length):\n"
          "`iterations` rounds of split, collapse, flip and tangential relaxation with projection onto the input.\n"

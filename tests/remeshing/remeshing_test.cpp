@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <limits>
@@ -16,10 +17,12 @@
 #include <numbers>
 #include <optional>
 #include <set>
+#include <string>
 #include <tuple>
 #include <vector>
 
 #include <hmira/algorithms/generators/platonic_solids.hpp>
+#include <hmira/algorithms/geometry/mean_edge_length.hpp>
 #include <hmira/algorithms/remeshing/isotropic_remeshing.hpp>
 #include <hmira/algorithms/subdivision/loop.hpp>
 #include <hmira/io/mesh_io.hpp>
@@ -362,6 +365,230 @@ TYPED_TEST(remeshing_test, the_same_input_gives_the_same_mesh) {
         ASSERT_TRUE(hmira::isotropic_remeshing(a, {.target_edge_length = 0.12, .iterations = 3}));
         ASSERT_TRUE(hmira::isotropic_remeshing(b, {.target_edge_length = 0.12, .iterations = 3}));
         EXPECT_EQ(take_snapshot(a), take_snapshot(b));
+    }
+}
+
+/// The mesh with every coordinate multiplied by 2^k (exact while the products stay normal).
+template <class M, class T = hmira::default_traits<M>>
+void scale_by_power_of_two(M& m, int k) {
+    using S = typename T::scalar;
+    for (auto v : T::vertices(m)) T::set_position(m, v, T::position(m, v) * S(std::ldexp(1.0, k)));
+}
+
+/// The mean edge length and the surface area over (sqrt 3 / 4) L^2, straight from the
+/// definitions (plain norms and cross products): for meshes near unit scale.
+template <class M, class T = hmira::default_traits<M>>
+double plain_mean_edge_length(const M& m) {
+    double sum = 0;
+    std::size_t n = 0;
+    for (auto e : T::edges(m)) {
+        const auto ends = T::edge_vertices(m, e);
+        sum += hmira::norm(at(m, ends[0]) - at(m, ends[1]));
+        ++n;
+    }
+    return sum / double(n);
+}
+template <class M, class T = hmira::default_traits<M>>
+double plain_triangle_estimate(const M& m, double L) {
+    double area = 0;
+    for (auto f : T::faces(m)) {
+        std::vector<v3> p;
+        for (auto v : T::face_vertices(m, f)) p.push_back(at(m, v));
+        area += 0.5 * hmira::norm(hmira::cross(p[1] - p[0], p[2] - p[0]));
+    }
+    return area / (std::sqrt(3.0) / 4 * L * L);
+}
+
+/// Whether the model's coordinates are doubles (a float model cannot hold the extreme scales).
+template <class M, class T = hmira::default_traits<M>>
+constexpr bool double_coordinates = std::numeric_limits<typename T::scalar>::max_exponent >= 1024;
+
+// The default target length is the mean edge length, right at every scale (squaring the
+// coordinates would make it infinite above ~1e154 and 0 below ~1e-154).
+TYPED_TEST(remeshing_test, the_mean_edge_length_is_right_at_every_scale) {
+    using M = TypeParam;
+    HMIRA_REQUIRE_REMESHABLE(M)
+    else {
+        const double unit = plain_mean_edge_length(unit_sphere<M>());
+        const std::vector<int> scales = double_coordinates<M> ? std::vector<int>{-1000, -600, -300, 0, 300, 600, 1000}
+                                                              : std::vector<int>{-120, -60, 0, 60, 120};
+        for (const int k : scales) {
+            SCOPED_TRACE(k);
+            M m = unit_sphere<M>();
+            scale_by_power_of_two(m, k);
+            const double mean = hmira::mean_edge_length(m);
+            ASSERT_TRUE(std::isfinite(mean) && mean > 0) << mean;
+            EXPECT_NEAR(std::ldexp(mean, -k) / unit, 1.0, 1e-12);
+        }
+        if constexpr (double_coordinates<M>) {
+            // Opposite coordinates near the largest double: the difference itself overflows.
+            M m = mesh_from<M>(cube());
+            using T = hmira::default_traits<M>;
+            for (auto v : T::vertices(m)) T::set_position(m, v, (at(m, v) * 2.0 - v3{1, 1, 1}) * 1e308);
+            const double mean = hmira::mean_edge_length(m);
+            // 12 cube edges of length 2e308 (infinite as a double), 6 diagonals longer still.
+            EXPECT_EQ(mean, std::numeric_limits<double>::infinity());
+        }
+        EXPECT_EQ(hmira::mean_edge_length(M{}), 0.0);
+    }
+}
+
+// All vertices at one point, or a mesh whose coordinates are too small to hold new vertices
+// between them or so large that points between them could overflow: refused as input.
+TYPED_TEST(remeshing_test, a_mesh_at_a_scale_no_rescaling_helps_is_refused_as_input_naming_it) {
+    using M = TypeParam;
+    HMIRA_REQUIRE_REMESHABLE(M)
+    else {
+        using T = hmira::default_traits<M>;
+        auto refused = [](M& m, double L, const std::string& says) {
+            const auto before = take_snapshot(m);
+            const auto d = hmira::default_target_edge_length(m);
+            ASSERT_FALSE(d) << *d;
+            EXPECT_EQ(d.error().code, hmira::errc::unsupported);
+            EXPECT_NE(d.error().message.find(says), std::string::npos) << d.error().message;
+            auto r = hmira::isotropic_remeshing(m, {.target_edge_length = L});
+            ASSERT_FALSE(r);
+            EXPECT_EQ(r.error().code, hmira::errc::unsupported) << r.error().message;
+            EXPECT_NE(r.error().message.find(says), std::string::npos) << r.error().message;
+            EXPECT_EQ(r.error().message.find("nan"), std::string::npos) << r.error().message;
+            const auto e = hmira::estimate_isotropic_remeshing(m, L);
+            ASSERT_FALSE(e);
+            EXPECT_EQ(e.error().code, hmira::errc::unsupported) << e.error().message;
+            EXPECT_EQ(take_snapshot(m), before);
+        };
+        M point = unit_sphere<M>();
+        for (auto v : T::vertices(point)) T::set_position(point, v, {3, 3, 3});
+        refused(point, 1.0, "all vertices coincide");
+        if constexpr (double_coordinates<M>) {
+            M tiny = unit_sphere<M>();
+            scale_by_power_of_two(tiny, -1000);  // spans about 2^-999 < 2^-970
+            refused(tiny, std::ldexp(0.1, -1000), "the mesh spans only");
+            M huge = unit_sphere<M>();
+            scale_by_power_of_two(huge, 1021);  // coordinates up to 2^1021 > 2^1020
+            refused(huge, std::ldexp(0.1, 1021), "too large to remesh");
+        }
+    }
+}
+
+// Squared lengths overflow above ~1e154 and underflow below ~1e-154 (the projection's products
+// of four lengths at ~1e+-77): such meshes are remeshed as a copy scaled by a power of two, so
+// the result is exactly the one at unit size, scaled.
+TYPED_TEST(remeshing_test, meshes_far_from_unit_scale_remesh_exactly_as_at_unit_scale) {
+    using M = TypeParam;
+    HMIRA_REQUIRE_REMESHABLE(M)
+    else {
+        using T = hmira::default_traits<M>;
+        const double unit = plain_mean_edge_length(unit_sphere<M>());
+        // The reference: the unit sphere scaled by a power of two to span [1, 2) on its widest
+        // axis, as the copies of the far ones are, remeshed as it is: those give the same mesh.
+        M reference = unit_sphere<M>();
+        v3 lo{}, hi{};
+        for (auto v : T::vertices(reference)) {
+            const v3 p = at(reference, v);
+            lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
+            hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+        }
+        const int j = std::ilogb(std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z}));  // 2^j <= extent < 2^(j+1)
+        scale_by_power_of_two(reference, -j);
+        ASSERT_TRUE(
+            hmira::isotropic_remeshing(reference, {.target_edge_length = std::ldexp(unit / 2, -j), .iterations = 3}));
+        ASSERT_TRUE(hmira_test::is_valid(reference));
+        const std::vector<int> scales =
+            double_coordinates<M> ? std::vector<int>{-960, -600, -300, 300, 600, 1000} : std::vector<int>{-100, 100};
+        for (const int k : scales) {
+            SCOPED_TRACE(k);
+            M m = unit_sphere<M>();
+            scale_by_power_of_two(m, k);
+            const auto L = hmira::default_target_edge_length(m);
+            ASSERT_TRUE(L) << L.error().message;
+            EXPECT_NEAR(std::ldexp(*L, -k) / unit, 1.0, 1e-12);
+            auto r = hmira::isotropic_remeshing(m, {.target_edge_length = std::ldexp(unit / 2, k), .iterations = 3});
+            ASSERT_TRUE(r) << r.error().message;
+            M copy = m;  // validated at unit size: validate's zero-area test squares coordinates
+            scale_by_power_of_two(copy, -k);
+            EXPECT_TRUE(hmira_test::is_valid(copy));
+            EXPECT_TRUE(all_triangles(m));
+            EXPECT_GT(r->splits, 0u);
+            for (auto v : T::vertices(m)) {
+                const v3 p = at(m, v);
+                ASSERT_TRUE(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z));
+                EXPECT_NEAR(hmira::norm(p * std::ldexp(1.0, -k)), 1.0, 0.05);  // still on the sphere
+            }
+            EXPECT_GE(fraction_in_band(copy, unit / 2), 0.8);  // measured at unit size: it squares lengths
+            if constexpr (double_coordinates<M>) {
+                if (k >= -900) {  // above 2^-1022 / 2^-53 every coordinate of the result is normal
+                    scale_by_power_of_two(m, -k - j);
+                    EXPECT_EQ(take_snapshot(m), take_snapshot(reference));
+                }
+            }
+        }
+    }
+}
+
+// The estimate scales each triangle before squaring: an underflowed area over an underflowed
+// L^2 would be NaN.
+TYPED_TEST(remeshing_test, the_estimate_is_scale_free_and_never_nan) {
+    using M = TypeParam;
+    HMIRA_REQUIRE_REMESHABLE(M)
+    else {
+        const M unit_mesh = unit_sphere<M>();
+        const double want = plain_triangle_estimate(unit_mesh, 0.05);
+        const std::vector<int> scales =
+            double_coordinates<M> ? std::vector<int>{-960, -480, 0, 480, 1000} : std::vector<int>{-100, 0, 100};
+        for (const int k : scales) {
+            SCOPED_TRACE(k);
+            M m = unit_sphere<M>();
+            scale_by_power_of_two(m, k);
+            const auto e = hmira::estimate_isotropic_remeshing(m, std::ldexp(0.05, k));
+            ASSERT_TRUE(e) << e.error().message;
+            EXPECT_NEAR(e->triangles / want, 1.0, 1e-9);
+            EXPECT_GT(e->bytes, e->triangles);
+        }
+        if constexpr (double_coordinates<M>) {
+            // A mesh at 2^500 remeshed at 2^-500: 2^2000 times too many triangles for a double.
+            M m = unit_sphere<M>();
+            scale_by_power_of_two(m, 500);
+            const auto e = hmira::estimate_isotropic_remeshing(m, std::ldexp(1.0, -500));
+            ASSERT_TRUE(e) << e.error().message;
+            EXPECT_EQ(e->triangles, std::numeric_limits<double>::infinity());
+            const auto before = take_snapshot(m);
+            auto r = hmira::isotropic_remeshing(m, {.target_edge_length = std::ldexp(1.0, -500)});
+            ASSERT_FALSE(r);
+            EXPECT_EQ(r.error().code, hmira::errc::invalid_argument);
+            EXPECT_NE(r.error().message.find("would make more than 1e308 triangles"), std::string::npos)
+                << r.error().message;
+            EXPECT_EQ(take_snapshot(m), before);
+        }
+    }
+}
+
+// The memory budget: an estimate above options.max_bytes is refused before allocating, naming
+// the estimated triangles and bytes; one within it runs.
+TYPED_TEST(remeshing_test, max_bytes_refuses_a_run_whose_estimate_exceeds_it) {
+    using M = TypeParam;
+    HMIRA_REQUIRE_REMESHABLE(M)
+    else {
+        using T = hmira::default_traits<M>;
+        M m = unit_sphere<M>();
+        const auto before = take_snapshot(m);
+        const double L = 0.05;
+        const double triangles = plain_triangle_estimate(m, L);
+        const double bytes = (triangles + double(T::face_count(m))) * hmira::remeshing_bytes_per_triangle;
+        auto r = hmira::isotropic_remeshing(m, {.target_edge_length = L, .max_bytes = std::uint64_t(bytes * 0.99)});
+        ASSERT_FALSE(r);
+        EXPECT_EQ(r.error().code, hmira::errc::invalid_argument);
+        const std::string& msg = r.error().message;
+        EXPECT_NE(msg.find("would make about " + hmira::detail::remeshing::number(triangles).substr(0, 4)),
+                  std::string::npos)
+            << msg;
+        EXPECT_NE(msg.find("triangles needing about"), std::string::npos) << msg;
+        EXPECT_NE(msg.find("MiB, more than max_bytes"), std::string::npos) << msg;
+        EXPECT_EQ(take_snapshot(m), before);
+        auto ok = hmira::isotropic_remeshing(
+            m, {.target_edge_length = L, .iterations = 1, .max_bytes = std::uint64_t(bytes * 1.01)});
+        ASSERT_TRUE(ok) << ok.error().message;
+        EXPECT_TRUE(hmira_test::is_valid(m));
+        EXPECT_GT(ok->splits, 0u);
     }
 }
 
