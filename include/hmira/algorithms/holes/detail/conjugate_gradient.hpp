@@ -9,6 +9,8 @@
 #include <utility>
 #include <vector>
 
+#include "../../../core/progress.hpp"
+
 namespace hmira::detail::holes {
 
 /// A square sparse matrix in compressed rows.
@@ -53,6 +55,7 @@ struct solve_outcome {
     bool converged = false;
     std::size_t iterations = 0;
     double relative_residual = 0;  ///< |b - A x| / |b| at the end
+    bool cancelled = false;        ///< the progress gate said stop (x is then the last iterate)
 };
 
 /// Solves A x = b for a symmetric positive definite A by conjugate gradients with the Jacobi
@@ -60,9 +63,11 @@ struct solve_outcome {
 /// the recurrence's residual is at most tolerance |b|, or after max_iterations; x is then the
 /// last iterate, and `converged` says whether the true residual |b - A x| is within 10 x
 /// tolerance |b|. A non-positive diagonal or a non-finite value stops it unconverged.
+/// With a `gate`, reports to it after about every 2^20 multiply-adds and stops (`cancelled`,
+/// not converged) when it says stop.
 /// Complexity O(iterations * non-zeros), O(size) extra memory.
 inline solve_outcome conjugate_gradient(const sparse_matrix& a, const std::vector<double>& b, std::vector<double>& x,
-                                        double tolerance, std::size_t max_iterations) {
+                                        double tolerance, std::size_t max_iterations, progress_gate* gate = nullptr) {
     const std::size_t n = a.size;
     solve_outcome out;
     x.resize(n, 0.0);
@@ -100,7 +105,16 @@ inline solve_outcome conjugate_gradient(const sparse_matrix& a, const std::vecto
         p[i] = z[i];
         rz += r[i] * z[i];
     }
+    std::size_t work = 0;
     for (out.iterations = 1; out.iterations <= max_iterations; ++out.iterations) {
+        work += a.value.size() + 4 * n;
+        if (gate && work >= (std::size_t{1} << 20)) {
+            work = 0;
+            if (!gate->advance(0)) {
+                out.cancelled = true;
+                return out;
+            }
+        }
         a.multiply(p, q);
         double pq = 0;
         for (std::size_t i = 0; i < n; ++i) pq += p[i] * q[i];
