@@ -401,9 +401,10 @@ result<fill_hole_result<M, T>> fill_one(M& mesh, typename T::halfedge_handle bou
 /// The work of fill_hole on one loop estimated in progress blocks (0 for a loop of under three
 /// edges). O(1).
 inline std::size_t fill_blocks(std::size_t n, const fill_hole_options& o) {
-    return n <= std::max(o.max_dynamic_programming_edges, o.max_fallback_dynamic_programming_edges)
-               ? dynamic_programming_blocks(n) + 1
-               : 2;
+    const std::size_t fairing = o.refine && o.fair != fairing::none ? 3 * fairing_blocks : 0;
+    return fairing + (n <= std::max(o.max_dynamic_programming_edges, o.max_fallback_dynamic_programming_edges)
+                          ? dynamic_programming_blocks(n) + 1
+                          : 2);
 }
 
 /// fill_one on a journaled copy of the traits when the model has what the journal needs (a

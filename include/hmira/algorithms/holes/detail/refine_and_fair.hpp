@@ -92,7 +92,7 @@ bool relax_all(M& mesh, patch<M, T>& pt, std::size_t budget, progress_gate& gate
     while (!work.empty() && budget > 0) {
         const auto [a, b] = work.back();
         work.pop_back();
-        std::array<V, 2> cd{};
+        std::array<V, 2> cd{a, b};  // overwritten by a flip
         if (!relax_edge<M, T>(mesh, pt, a, b, &cd)) continue;
         --budget;
         if (++flips % 4096 == 0 && !gate.advance(0)) return false;
@@ -158,6 +158,9 @@ bool refine_patch(M& mesh, patch<M, T>& pt, double density, std::size_t max_new_
     }
     return true;
 }
+
+/// Progress blocks each coordinate solve of a fairing counts, spread over its iteration budget.
+inline constexpr std::size_t fairing_blocks = 1024;
 
 /// The fairing of fill_hole: which energy the added vertices minimise.
 enum class fairing_energy { membrane, thin_plate };
@@ -234,8 +237,8 @@ solve_outcome fair_patch(M& mesh, const patch<M, T>& pt, fairing_energy energy, 
             b[i] = rhs[i][k];
             x[k][i] = dt::position_of<M, T>(mesh, vertex[i])[k];
         }
-        const auto r = conjugate_gradient(a, b, x[k], tolerance, max_iterations, &gate);
-        if (!r.converged) return r;
+        const auto r = conjugate_gradient(a, b, x[k], tolerance, max_iterations, &gate, fairing_blocks);
+        if (!r.converged || r.cancelled) return r;
         worst.iterations = std::max(worst.iterations, r.iterations);
         worst.relative_residual = std::max(worst.relative_residual, r.relative_residual);
     }
