@@ -256,7 +256,12 @@ TEST(fill_holes_reasons, a_thin_plate_fill_of_a_16000_edge_hole_reports_progress
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     ASSERT_FALSE(r);
     EXPECT_EQ(r.error().code, hmira::errc::cancelled);
-    EXPECT_LT(seconds, 10.0);
+#ifdef HMIRA_SANITIZER_BUILD
+    const double limit = 120;  // -O0 with the sanitizers
+#else
+    const double limit = 10;  // the whole fill takes minutes
+#endif
+    EXPECT_LT(seconds, limit);
     EXPECT_TRUE(hmira_test::snapshot(m) == before);
 }
 
