@@ -183,7 +183,7 @@ class MeshCore:
 
     def fill_holes(self, max_size: int, *, max_dynamic_programming_edges: int = 200, refine: bool = False, fair: str = 'none') -> dict:
         """
-        Fills every hole of at most max_size boundary edges (refine and fair as for fill_hole); returns {'filled', 'skipped', 'faces_added', 'vertices_added', 'unfaired'}.
+        Fills every hole of at most max_size boundary edges (refine and fair as for fill_hole); returns {'filled', 'skipped', 'faces_added', 'vertices_added', 'unfaired', 'open'}, 'open' listing each hole left open as {'vertex', 'edges', 'reason'}. Ctrl-C stops it with the mesh unchanged.
         """
 
     def subdivide(self, *, scheme: str = 'loop', levels: int = 1) -> dict:

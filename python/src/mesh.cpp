@@ -486,7 +486,12 @@ void bind_everyday(nb::class_<py_mesh>& c) {
      .def("fill_hole", [](py_mesh& s, long long h, std::size_t max_dynamic_programming_edges, bool refine, const std::string& fair) {
              const auto hh = halfedge_arg(s.get(), h, "fill_hole");
              const auto o = fill_options(max_dynamic_programming_edges, refine, fair, "fill_hole");
-             const auto r = change_without_gil(s, true, [&](halfedge_mesh& m, const hmira::progress_function&) { return hmira::fill_hole(m, hh, o); });
+             // A cancelled fill (Ctrl-C) is rolled back by fill_hole itself.
+             const auto r = change_without_gil(s, true, [&](halfedge_mesh& m, const hmira::progress_function& progress) {
+                 auto with_progress = o;
+                 with_progress.progress = progress;
+                 return hmira::fill_hole(m, hh, with_progress);
+             });
              std::vector<long long> faces;
              for (auto f : r.faces) faces.push_back(idx(f));
              return faces;
@@ -497,18 +502,37 @@ void bind_everyday(nb::class_<py_mesh>& c) {
          "Returns the new faces.")
      .def("fill_holes", [](py_mesh& s, std::size_t max_size, std::size_t max_dynamic_programming_edges, bool refine, const std::string& fair) {
              const auto o = fill_options(max_dynamic_programming_edges, refine, fair, "fill_holes");
-             const auto r = on_copy(s, [&](halfedge_mesh& m) { return hmira::fill_holes(m, max_size, o); });
+             // fill_holes rolls a cancelled run (Ctrl-C) back itself: the mesh is left as it was.
+             const auto r = change_without_gil(s, true, [&](halfedge_mesh& m, const hmira::progress_function& progress) {
+                 auto with_progress = o;
+                 with_progress.progress = progress;
+                 auto done = hmira::fill_holes(m, max_size, with_progress);
+                 if (done) compact(m);
+                 return done;
+             });
              nb::dict d;
              d["filled"] = r.filled;
              d["skipped"] = r.skipped;
              d["faces_added"] = r.faces_added;
              d["vertices_added"] = r.vertices_added;
              d["unfaired"] = r.unfaired;
+             nb::list open;
+             for (const auto& h : r.open) {
+                 nb::dict e;
+                 e["vertex"] = h.vertex;
+                 e["edges"] = h.edges;
+                 e["reason"] = h.reason == hmira::open_hole_reason::too_long
+                                   ? "a loop of " + std::to_string(h.edges) + " edges > max_size " + std::to_string(max_size)
+                                   : h.message;
+                 open.append(e);
+             }
+             d["open"] = open;
              return d;
          }, nb::arg("max_size"), nb::kw_only(), nb::arg("max_dynamic_programming_edges") = 200, nb::arg("refine") = false,
          nb::arg("fair") = "none",
          "Fills every hole of at most max_size boundary edges (refine and fair as for fill_hole); returns {'filled', 'skipped', "
-         "'faces_added', 'vertices_added', 'unfaired'}.")
+         "'faces_added', 'vertices_added', 'unfaired', 'open'}, 'open' listing each hole left open as {'vertex', 'edges', "
+         "'reason'}. Ctrl-C stops it with the mesh unchanged.")
      .def("subdivide", [](py_mesh& s, const std::string& scheme, std::size_t levels) {
              if (scheme != "loop" && scheme != "sqrt3" && scheme != "catmull-clark")
                  value_error("subdivide: unknown scheme '" + scheme + "' (supported: 'loop', 'sqrt3', 'catmull-clark')");

@@ -13,6 +13,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "../../../core/progress.hpp"
 #include "../../../core/result.hpp"
 #include "../../../core/vec3.hpp"
 #include "../../triangulation/triangulate_polygon.hpp"
@@ -71,12 +72,29 @@ inline std::uint64_t pair_key(std::size_t i, std::size_t j) {
     return (std::uint64_t(i) << 32) | std::uint64_t(j);
 }
 
+/// Inner steps of the dynamic programme between two progress reports (a few milliseconds).
+inline constexpr std::size_t steps_per_block = std::size_t{1} << 16;
+
+/// Progress blocks the dynamic programme on a loop of n edges reports: about n^3 / 6 inner
+/// steps, one block per steps_per_block of them.
+inline std::size_t dynamic_programming_blocks(std::size_t n) {
+    const double steps = double(n) * double(n) * double(n) / 6;
+    return std::size_t(steps / double(steps_per_block)) + 1;
+}
+
+/// Bytes the dynamic programme's tables take for a loop of n edges.
+inline double dynamic_programming_bytes(std::size_t n) {
+    return double(n) * double(n) * double(sizeof(weight) + sizeof(std::size_t));
+}
+
 /// Liepa's dynamic programme over all triangulations that add no edge the mesh has; empty when
 /// there is none. As in Liepa (and CGAL), the bend across an inner edge (i, k) is taken against
 /// the triangle the best solution of (i, k) puts there, so the result is optimal only up to that
-/// greedy choice. O(n^3) time, O(n^2) memory.
-inline triangle_list triangulate_by_dynamic_programming(const loop_data& loop) {
+/// greedy choice. Reports to `gate` once every steps_per_block inner steps; errc::cancelled
+/// when it says stop. O(n^3) time, O(n^2) memory.
+inline result<triangle_list> triangulate_by_dynamic_programming(const loop_data& loop, progress_gate& gate) {
     const std::size_t n = loop.size();
+    std::size_t steps = 0;
     const auto& p = loop.p;
     const double inf = std::numeric_limits<double>::infinity();
     std::vector<weight> W(n * n, weight{inf, inf});
@@ -93,6 +111,11 @@ inline triangle_list triangulate_by_dynamic_programming(const loop_data& loop) {
             if (loop.is_joined(i, j)) continue;
             weight best{inf, inf};
             std::size_t best_k = n;
+            steps += len;
+            if (steps >= steps_per_block) {
+                steps = 0;
+                if (!gate.advance()) return fail(errc::cancelled, "fill_hole: cancelled");
+            }
             for (std::size_t k = i + 1; k < j; ++k) {
                 const auto& a = W[i * n + k];
                 const auto& b = W[k * n + j];

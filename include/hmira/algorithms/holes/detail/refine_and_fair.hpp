@@ -4,6 +4,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -42,9 +43,11 @@ inline double angle_at(const vec3<double>& apex, const vec3<double>& a, const ve
 
 /// Flips the patch edge a-b when the angles facing it sum to more than pi (the 3D version of
 /// the Delaunay criterion; the flipped edge then has a sum below pi, so the pair does not flip
-/// back), unless the flip would fold the quadrilateral. Returns whether it flipped. O(valence).
+/// back), unless the flip would fold the quadrilateral. Returns whether it flipped; then
+/// `opposite`, if given, receives the two vertices c and d the new edge joins. O(valence).
 template <class M, class T>
-bool relax_edge(M& mesh, patch<M, T>& pt, typename T::vertex_handle a, typename T::vertex_handle b) {
+bool relax_edge(M& mesh, patch<M, T>& pt, typename T::vertex_handle a, typename T::vertex_handle b,
+                std::array<typename T::vertex_handle, 2>* opposite = nullptr) {
     namespace dt = triangle_ops;
     const auto key = edge_key<M, T>(mesh, a, b);
     if (!pt.inner_edges.count(key)) return false;
@@ -63,34 +66,42 @@ bool relax_edge(M& mesh, patch<M, T>& pt, typename T::vertex_handle a, typename 
     if (!r) return false;
     pt.inner_edges.erase(key);
     pt.inner_edges.insert(edge_key<M, T>(mesh, c, d));
+    if (opposite) *opposite = {c, d};
     return true;
 }
 
-/// Relaxes every patch edge until none flips, at most `budget` flips. O(flips * valence + E).
+/// Relaxes every patch edge until none flips, at most `budget` flips, by Lawson's work list:
+/// every patch edge once, then the four sides of each quadrilateral a flip changed (the only
+/// edges whose facing angles a flip changes). Reports to `gate` every 4096 flips; returns false
+/// when it says stop. O(flips * valence + E).
 template <class M, class T>
-void relax_all(M& mesh, patch<M, T>& pt, std::size_t budget) {
-    bool flipped = true;
-    while (flipped && budget > 0) {
-        flipped = false;
-        std::vector<std::pair<typename T::vertex_handle, typename T::vertex_handle>> edges;
-        for (const auto f : pt.faces) {
-            const auto h0 = T::face_halfedge(mesh, f);
-            auto x = h0;
-            do {
-                const auto a = T::target(mesh, T::opposite(mesh, x)), b = T::target(mesh, x);
-                if (T::vertex_index(mesh, a) < T::vertex_index(mesh, b) && pt.inner_edges.count(edge_key<M, T>(mesh, a, b)))
-                    edges.emplace_back(a, b);
-                x = T::next(mesh, x);
-            } while (x != h0);
-        }
-        for (const auto& [a, b] : edges) {
-            if (budget == 0) break;
-            if (relax_edge<M, T>(mesh, pt, a, b)) {
-                flipped = true;
-                --budget;
-            }
-        }
+bool relax_all(M& mesh, patch<M, T>& pt, std::size_t budget, progress_gate& gate) {
+    using V = typename T::vertex_handle;
+    std::vector<std::pair<V, V>> work;
+    for (const auto f : pt.faces) {
+        const auto h0 = T::face_halfedge(mesh, f);
+        auto x = h0;
+        do {
+            const auto a = T::target(mesh, T::opposite(mesh, x)), b = T::target(mesh, x);
+            if (T::vertex_index(mesh, a) < T::vertex_index(mesh, b) && pt.inner_edges.count(edge_key<M, T>(mesh, a, b)))
+                work.emplace_back(a, b);
+            x = T::next(mesh, x);
+        } while (x != h0);
     }
+    std::size_t flips = 0;
+    while (!work.empty() && budget > 0) {
+        const auto [a, b] = work.back();
+        work.pop_back();
+        std::array<V, 2> cd{a, b};  // overwritten by a flip
+        if (!relax_edge<M, T>(mesh, pt, a, b, &cd)) continue;
+        --budget;
+        if (++flips % 4096 == 0 && !gate.advance(0)) return false;
+        work.emplace_back(a, cd[0]);
+        work.emplace_back(cd[0], b);
+        work.emplace_back(b, cd[1]);
+        work.emplace_back(cd[1], a);
+    }
+    return true;
 }
 
 /// Liepa's refinement: a triangle whose centroid c lies farther than scale / density from
@@ -98,13 +109,17 @@ void relax_all(M& mesh, patch<M, T>& pt, std::size_t budget) {
 /// takes the mean scale; the split triangle's old edges are relaxed; once a round splits
 /// nothing, the patch is what is wanted. Between rounds all patch edges are relaxed. At most
 /// `max_new_vertices` vertices are added. O(V_new * valence) per round, typically few rounds.
+/// Reports to `gate` once per round, every 4096 splits and every 4096 flips; returns false
+/// (the patch half refined, still a valid surface) when it says stop.
 template <class M, class T>
-void refine_patch(M& mesh, patch<M, T>& pt, double density, std::size_t max_new_vertices) {
+bool refine_patch(M& mesh, patch<M, T>& pt, double density, std::size_t max_new_vertices, progress_gate& gate) {
     namespace dt = triangle_ops;
     for (int round = 0; round < 64; ++round) {
+        if (!gate.advance(0)) return false;
         bool split = false;
         const std::size_t count = pt.faces.size();
         for (std::size_t fi = 0; fi < count && pt.vertices.size() < max_new_vertices; ++fi) {
+            if (fi % 4096 == 4095 && !gate.advance(0)) return false;
             const auto f = pt.faces[fi];
             const auto h0 = T::face_halfedge(mesh, f);
             const auto h1 = T::next(mesh, h0), h2 = T::next(mesh, h1);
@@ -139,9 +154,13 @@ void refine_patch(M& mesh, patch<M, T>& pt, double density, std::size_t max_new_
             for (int i = 0; i < 3; ++i) relax_edge<M, T>(mesh, pt, v[i], v[(i + 1) % 3]);
         }
         if (!split) break;
-        relax_all<M, T>(mesh, pt, 10 * pt.inner_edges.size() + 100);
+        if (!relax_all<M, T>(mesh, pt, 10 * pt.inner_edges.size() + 100, gate)) return false;
     }
+    return true;
 }
+
+/// Progress blocks each coordinate solve of a fairing counts, spread over its iteration budget.
+inline constexpr std::size_t fairing_blocks = 1024;
 
 /// The fairing of fill_hole: which energy the added vertices minimise.
 enum class fairing_energy { membrane, thin_plate };
@@ -149,9 +168,10 @@ enum class fairing_energy { membrane, thin_plate };
 /// Moves the patch's added vertices so that the uniform (umbrella) Laplacian vanishes at each
 /// (membrane), or the Laplacian of the Laplacian (thin plate), every other vertex fixed: the
 /// loop, and for the thin plate also the ring outside it. Writes positions only when all three
-/// coordinate solves converge. Returns the solve with the most iterations. O(iterations * nnz).
+/// coordinate solves converge (not when `gate` cancels one). Returns the solve with the most iterations. O(iterations * nnz).
 template <class M, class T>
-solve_outcome fair_patch(M& mesh, const patch<M, T>& pt, fairing_energy energy, double tolerance, std::size_t max_iterations) {
+solve_outcome fair_patch(M& mesh, const patch<M, T>& pt, fairing_energy energy, double tolerance, std::size_t max_iterations,
+                         progress_gate& gate) {
     namespace dt = triangle_ops;
     using V = typename T::vertex_handle;
     solve_outcome worst{.converged = true, .iterations = 0, .relative_residual = 0};
@@ -217,8 +237,8 @@ solve_outcome fair_patch(M& mesh, const patch<M, T>& pt, fairing_energy energy, 
             b[i] = rhs[i][k];
             x[k][i] = dt::position_of<M, T>(mesh, vertex[i])[k];
         }
-        const auto r = conjugate_gradient(a, b, x[k], tolerance, max_iterations);
-        if (!r.converged) return r;
+        const auto r = conjugate_gradient(a, b, x[k], tolerance, max_iterations, &gate, fairing_blocks);
+        if (!r.converged || r.cancelled) return r;
         worst.iterations = std::max(worst.iterations, r.iterations);
         worst.relative_residual = std::max(worst.relative_residual, r.relative_residual);
     }
