@@ -183,7 +183,11 @@ int run_bevel(const bevel_args& a, const common_options& o) {
         // The requested width, the smallest one the clamp left, and how many edges it limited.
         char widths[96];
         std::snprintf(widths, sizeof widths, "width %.6g requested, smallest used %.6g", r.value().requested_width, r.value().width);
-        return edit_outcome{"bevelled " + count_of(chosen->size(), "edge", "edges") + ": " + widths + ", " +
+        // Edges whose strip would leave a face of zero area are not bevelled: say how many.
+        std::string skipped;
+        if (r.value().skipped_edges > 0)
+            skipped = "; skipped " + std::to_string(r.value().skipped_edges) + " whose strip would leave a face of zero area";
+        return edit_outcome{"bevelled " + count_of(r.value().bevelled_edges, "edge", "edges") + skipped + ": " + widths + ", " +
                                 count_of(r.value().limited_edges, "edge", "edges") + " limited by the clamp",
                             {}};
     });

@@ -64,6 +64,11 @@ struct bevel_result {
     double width = 0;            ///< the smallest width used by any new vertex (after clamping)
     double requested_width = 0;  ///< bevel_options::width
     std::size_t limited_edges = 0;  ///< bevelled edges with at least one new vertex limited by the clamp
+    std::size_t bevelled_edges = 0;  ///< distinct edges bevelled (one strip each)
+    /// Distinct selected edges not bevelled because a face would have had zero area (as
+    /// validate() tests it): with them the strip, a shrunk face next to it or a corner patch
+    /// collapses, as where clamped points from both ends of an edge meet. Left as they were.
+    std::size_t skipped_edges = 0;
 };
 
 namespace detail::editing {
@@ -83,6 +88,24 @@ inline vec3<double> arc_point(const vec3<double>& a, const vec3<double>& c, cons
 
 namespace detail::editing {
 
+/// Whether face f has zero area as validate() tests it (the sum of its corners' cross
+/// products, in the mesh's scalar, exactly zero), from any corner as a start: never true of a
+/// face validate() passes, whichever corner a file lists first. Fewer than 3 corners: true.
+template <class M, class T>
+bool zero_area_face(const M& mesh, typename T::face_handle f) {
+    using S = typename T::scalar;
+    std::vector<vec3<S>> ps;
+    for (auto v : T::face_vertices(mesh, f)) ps.push_back(static_cast<vec3<S>>(T::position(mesh, v)));
+    const std::size_t n = ps.size();
+    if (n < 3) return true;
+    for (std::size_t start = 0; start < n; ++start) {
+        vec3<S> area{};
+        for (std::size_t i = 0; i < n; ++i) area += cross(ps[(start + i) % n], ps[(start + i + 1) % n]);
+        if (area == vec3<S>{}) return true;
+    }
+    return false;
+}
+
 /// Everything bevel() decides before changing the mesh (from the original geometry).
 template <class M, class T>
 struct bevel_plan {
@@ -91,6 +114,8 @@ struct bevel_plan {
         typename T::halfedge_handle h;  ///< the unbevelled edge, leaving the end vertex
         double t = 0;                   ///< fraction of the edge from its source; < 0: split with its partner
         double t_back = -1;             ///< the partner's fraction from the other end, or < 0
+        std::array<std::size_t, 2> edges{};       ///< the bevelled edges (indices) it serves; none: index_map::none
+        std::array<std::size_t, 2> edges_back{};  ///< the partner's, when t_back >= 0
     };
     /// A new vertex inside a corner between two bevelled edges.
     struct inner {
@@ -98,8 +123,10 @@ struct bevel_plan {
         typename T::vertex_handle v;         ///< the end vertex
         vec3<double> dir;                    ///< point = pos(v) + dir * width
         double width = 0;                    ///< after the clamp
+        std::array<std::size_t, 2> edges{};  ///< the two bevelled edges (indices)
     };
     std::vector<typename T::halfedge_handle> sel;     ///< one halfedge per bevelled edge
+    std::vector<std::size_t> sel_edge;                ///< the index of each bevelled edge
     std::vector<typename T::vertex_handle> touched;   ///< the bevelled edges' ends
     std::vector<bool> removed;                        ///< per touched vertex: it goes
     std::vector<slide> slides;                        ///< the slid vertices
@@ -116,9 +143,11 @@ struct bevel_plan {
 };
 
 /// Builds the bevel planned in `plan` (see bevel()). Run inside a transaction (T journaled);
-/// an inner failure, or a cancel through `progress`, is passed on.
+/// an inner failure, or a cancel through `progress`, is passed on. `origin` gets, for every new
+/// vertex, the indices of the bevelled edges it was made for: (vertex index, edge index) pairs.
 template <class M, class T, class Plan, class Out>
-result<void> bevel_build(M& mesh, const Plan& plan, Out& out, edit_progress& progress) {
+result<void> bevel_build(M& mesh, const Plan& plan, Out& out, edit_progress& progress,
+                         std::vector<std::pair<std::size_t, std::size_t>>& origin) {
     namespace du = ::hmira::detail::euler;
     using H = typename T::halfedge_handle;
     using V = typename T::vertex_handle;
@@ -145,14 +174,24 @@ result<void> bevel_build(M& mesh, const Plan& plan, Out& out, edit_progress& pro
         const auto s = split_edge<M, T>(mesh, h, lerp(a, b, sl.t));
         if (!s) return s.error();
         out.vertices.push_back(s.value().vertex);
+        auto made_for = [&](V v, const std::array<std::size_t, 2>& es) {
+            for (auto e : es)
+                if (e != index_map::none) origin.emplace_back(T::vertex_index(mesh, v), e);
+        };
+        made_for(s.value().vertex, sl.edges);
         // Meeting slides share their point in a flat bevel; a rounded one needs both (their end
         // edges would otherwise join the same two vertices twice).
         // Under the local clamp both ends of many short edges reach the middle, where a shared
         // point would close a face next to two strips into a 2-gon: keep both points there.
-        if (sl.t_back < 0 || (sl.t + sl.t_back == 1.0 && plan.segments == 1 && plan.share_meeting_points)) continue;
+        if (sl.t_back < 0) continue;
+        if (sl.t + sl.t_back == 1.0 && plan.segments == 1 && plan.share_meeting_points) {
+            made_for(s.value().vertex, sl.edges_back);
+            continue;
+        }
         const auto s2 = split_edge<M, T>(mesh, s.value().second, lerp(a, b, 1 - sl.t_back));
         if (!s2) return s2.error();
         out.vertices.push_back(s2.value().vertex);
+        made_for(s2.value().vertex, sl.edges_back);
     }
     // 2. Points inside corners between two bevelled edges, hung from the vertex by makeEV.
     for (const auto& in : plan.inners) {
@@ -160,6 +199,7 @@ result<void> bevel_build(M& mesh, const Plan& plan, Out& out, edit_progress& pro
         const auto r = mev<M, T>(mesh, in.corner, pos<M, T>(mesh, in.v) + in.dir * in.width);
         if (!r) return r.error();
         out.vertices.push_back(r.value().vertex);
+        for (auto e : in.edges) origin.emplace_back(T::vertex_index(mesh, r.value().vertex), e);
     }
     // 3. Each bevelled edge: cut the quad (p, v, w, q) off each side, then join the two quads.
     std::vector<H> strip_side(sel.size());  // a halfedge of each strip, on its F_L long side
@@ -210,6 +250,7 @@ result<void> bevel_build(M& mesh, const Plan& plan, Out& out, edit_progress& pro
         bool reversed = false; // the end edge's a is on this strip's F_R side
     };
     std::vector<end_edge> end_edges;
+    std::vector<std::vector<std::size_t>> end_edge_users;  // per end edge: the bevelled edges whose strips end in it
     std::map<std::pair<std::size_t, std::size_t>, std::size_t> end_edge_at;
     std::vector<std::array<strip_end, 2>> strip_ends(sel.size());
     std::vector<typename T::face_handle> strip_face(sel.size());
@@ -221,10 +262,12 @@ result<void> bevel_build(M& mesh, const Plan& plan, Out& out, edit_progress& pro
             const auto& here = side == 0 ? ends[i].first : ends[i].second;
             const auto& there = side == 0 ? ends[i].second : ends[i].first;
             end_edges.push_back({a, b, here, normalized(there - here), 0, along, {}, false});
+            end_edge_users.emplace_back();
             it = end_edge_at.emplace(key, end_edges.size() - 1).first;
         }
         auto& ee = end_edges[it->second];
         ++ee.uses;
+        end_edge_users[it->second].push_back(plan.sel_edge[i]);
         if (plan.on_boundary[i]) ee.straight = true;
         strip_ends[i][side] = {false, V{}, it->second, ee.a != a};
     };
@@ -274,6 +317,8 @@ result<void> bevel_build(M& mesh, const Plan& plan, Out& out, edit_progress& pro
             const auto s = split_edge<M, T>(mesh, x, arc_point(pa, ctrl, pb, forward ? t : 1 - t));
             if (!s) return s.error();
             out.vertices.push_back(s.value().vertex);
+            for (auto e : end_edge_users[std::size_t(&ee - end_edges.data())])
+                origin.emplace_back(T::vertex_index(mesh, s.value().vertex), e);
             arc.push_back(s.value().vertex);
             x = s.value().second;
         }
@@ -321,6 +366,15 @@ result<void> bevel_build(M& mesh, const Plan& plan, Out& out, edit_progress& pro
         const auto filled = grid_fill<M, T>(mesh, pa.face, arcs);
         if (!filled) return filled.error();
         const auto& g = filled.value();
+        // The grid's inner points serve every strip ending in the patch.
+        std::vector<std::size_t> patch_edges;
+        for (std::size_t s = 0; s < k; ++s) {
+            const auto a = T::vertex_index(mesh, pa.corners[(s + k - 1) % k]), b = T::vertex_index(mesh, pa.corners[s]);
+            const auto& users = end_edge_users[end_edge_at.at(std::make_pair(std::min(a, b), std::max(a, b)))];
+            patch_edges.insert(patch_edges.end(), users.begin(), users.end());
+        }
+        for (auto v : g.vertices)
+            for (auto e : patch_edges) origin.emplace_back(T::vertex_index(mesh, v), e);
         out.vertex_faces.insert(out.vertex_faces.end(), g.faces.begin(), g.faces.end());
         out.vertices.insert(out.vertices.end(), g.vertices.begin(), g.vertices.end());
     }
@@ -394,8 +448,14 @@ result<void> bevel_build(M& mesh, const Plan& plan, Out& out, edit_progress& pro
 ///   one face, its sides carrying the arc points: a non-planar polygon (editors' "cutoff"
 ///   corner).
 /// All 12 edges of a cube with segments = 4 give a rounded cube: 6 + 48 + 8 x 12 faces.
-/// At the clamp limit new points from both ends of an edge may coincide; the result is still
-/// valid topologically, but faces of zero area can occur there.
+/// No face of zero area is made (zero as validate() tests it: the sum of the corners' cross
+/// products exactly zero, from any corner as a start). At the clamp limit new points from both
+/// ends of an edge coincide, and new points may fall on one line; a face there would have zero
+/// area. The build is then rolled back, one bevelled edge that made a new vertex of each such
+/// face is dropped from the selection, and the rest is planned and built again from the
+/// unchanged mesh, until no such face remains (each round drops an edge, so at most k rounds;
+/// on real meshes two or three). The dropped edges stay as they were: bevelled_edges and
+/// skipped_edges count both sides. If every edge is dropped, errc::unsupported (mesh unchanged).
 ///
 /// Boundary edges' strips are listed from the side of their face.
 ///
@@ -425,11 +485,9 @@ result<bevel_result<M, T>> bevel(M& mesh, const R& edges, const bevel_options& o
     // Planning is as long as building: it steps the progress too, so a cancel is heard early.
     de::edit_progress progress(options.progress, 0, "bevel");
     if constexpr (std::ranges::sized_range<const R>) progress.add_work(std::ranges::size(edges));
-    // Selection.
-    de::bevel_plan<M, T> plan;
-    plan.segments = options.segments;
-    auto& sel = plan.sel;
-    de::index_set bevelled;
+    // Selection: one halfedge per distinct edge (a boundary edge's in its face).
+    std::vector<std::pair<H, bool>> chosen;  // halfedge, on the boundary
+    de::index_set chosen_edges;
     for (auto e0 : edges) {
         if (auto ok = progress.step(); !ok) return ok.error();
         const typename T::edge_handle e = e0;
@@ -443,145 +501,198 @@ result<bevel_result<M, T>> bevel(M& mesh, const R& edges, const bevel_options& o
                                                " has no face on either side (a wire edge); there is no face to hold the strip",
                         static_cast<long long>(T::edge_index(mesh, e)));
         if (no_left) h = T::opposite(mesh, h);  // a boundary edge's strip lies in its one face
-        if (bevelled.insert(T::edge_index(mesh, e))) {
+        if (chosen_edges.insert(T::edge_index(mesh, e))) chosen.emplace_back(h, no_left || no_right);
+    }
+    if (chosen.empty()) return fail(errc::invalid_argument, "bevel: no edge selected");
+    // Plan and build; an edge that leaves a face of zero area (as validate() tests it) is
+    // dropped, and the rest planned and built again (the failed build rolled back): see below.
+    de::index_set dropped;
+    std::size_t dropped_count = 0;
+    for (;;) {
+        de::bevel_plan<M, T> plan;
+        plan.segments = options.segments;
+        auto& sel = plan.sel;
+        de::index_set bevelled;
+        for (const auto& [h, boundary] : chosen) {
+            const auto e = T::edge_index(mesh, T::edge(mesh, h));
+            if (dropped.contains(e)) continue;
+            bevelled.insert(e);
             sel.push_back(h);
-            plan.on_boundary.push_back(no_left || no_right);
+            plan.sel_edge.push_back(e);
+            plan.on_boundary.push_back(boundary);
         }
-    }
-    if (sel.empty()) return fail(errc::invalid_argument, "bevel: no edge selected");
-    auto edge_of = [&](H h) { return T::edge_index(mesh, T::edge(mesh, h)); };
-    auto is_bev = [&](H h) { return bevelled.contains(edge_of(h)); };
-    auto& touched = plan.touched;
-    de::index_map touched_at;  // vertex index -> position in touched
-    progress.add_work(sel.size());
-    for (auto h : sel) {
-        if (auto ok = progress.step(); !ok) return ok.error();
-        for (auto v : {du::source<M, T>(mesh, h), T::target(mesh, h)}) {
-            if (auto ok = de::check_corner_vertex<M, T>(mesh, v, "bevel"); !ok) return ok.error();
-            if (touched_at.emplace(T::vertex_index(mesh, v), touched.size()) == touched.size()) touched.push_back(v);
-        }
-    }
-
-    // Plan, from the original geometry: slides on unbevelled edges, points inside corners
-    // between two bevelled edges, which vertices go. Offsets are per unit width; each new
-    // point remembers the bevelled edges it serves, for the clamp's count.
-    struct slide { H h; double sum = 0; int n = 0; std::size_t edge_a, edge_b; };
-    std::vector<slide> slides;
-    de::index_map slide_at;  // halfedge index -> position in slides
-    auto& inners = plan.inners;
-    std::vector<std::array<std::size_t, 2>> inner_edges;
-    auto& removed = plan.removed;
-    removed.assign(touched.size(), true);
-    progress.add_work(touched.size());
-    for (std::size_t k = 0; k < touched.size(); ++k) {
-        if (auto ok = progress.step(); !ok) return ok.error();
-        const auto v = touched[k];
-        const auto pv = de::pos<M, T>(mesh, v);
-        const auto hs = de::outgoing<M, T>(mesh, v);
-        const std::size_t d = hs.size();
-        std::vector<bool> near(d, false);
-        for (std::size_t i = 0; i < d; ++i) {
-            const auto a = hs[i], b = hs[(i + 1) % d];
-            if (T::face(mesh, b) == T::null_face()) continue;  // the boundary gap is no corner
-            const bool ba = is_bev(a), bb = is_bev(b);
-            if (!ba && !bb) continue;
-            near[i] = near[(i + 1) % d] = true;
-            const auto ua = normalized(de::pos<M, T>(mesh, T::target(mesh, a)) - pv);
-            const auto ub = normalized(de::pos<M, T>(mesh, T::target(mesh, b)) - pv);
-            const double s = norm(cross(ua, ub));
-            if (!(s > 1e-9))
-                return fail(errc::unsupported, "bevel: the edges of a face corner at " + du::name<M, T>("vertex", mesh, v) +
-                                                   " are collinear; the offset there is undefined",
-                            du::index_of<M, T>(mesh, v));
-            if (ba && bb) {
-                inners.push_back({T::opposite(mesh, a), v, (ua + ub) / s, 0});
-                inner_edges.push_back({edge_of(a), edge_of(b)});
-                continue;
+        if (sel.empty())
+            return fail(errc::unsupported, "bevel: every selected edge would leave a face of zero area "
+                                           "(its width clamped too far); nothing bevelled");
+        auto edge_of = [&](H h) { return T::edge_index(mesh, T::edge(mesh, h)); };
+        auto is_bev = [&](H h) { return bevelled.contains(edge_of(h)); };
+        auto& touched = plan.touched;
+        de::index_map touched_at;  // vertex index -> position in touched
+        progress.add_work(sel.size());
+        for (auto h : sel) {
+            if (auto ok = progress.step(); !ok) return ok.error();
+            for (auto v : {du::source<M, T>(mesh, h), T::target(mesh, h)}) {
+                if (auto ok = de::check_corner_vertex<M, T>(mesh, v, "bevel"); !ok) return ok.error();
+                if (touched_at.emplace(T::vertex_index(mesh, v), touched.size()) == touched.size()) touched.push_back(v);
             }
-            const H along = ba ? b : a;
-            const std::size_t at = slide_at.emplace(T::halfedge_index(mesh, along), slides.size());
-            if (at == slides.size()) slides.push_back({along, 0, 0, edge_of(ba ? a : b), de::index_map::none});
-            else slides[at].edge_b = edge_of(ba ? a : b);
-            slides[at].sum += 1.0 / s;
-            ++slides[at].n;
         }
-        for (std::size_t i = 0; i < d; ++i)
-            if (!near[i]) removed[k] = false;
-    }
-    // A bevelled boundary edge's strip runs along the boundary up to its ends: they stay.
-    for (std::size_t i = 0; i < sel.size(); ++i)
-        if (plan.on_boundary[i])
-            for (auto v : {du::source<M, T>(mesh, sel[i]), T::target(mesh, sel[i])})
-                removed[touched_at.find(T::vertex_index(mesh, v))] = false;
-    // Clamp: each new vertex reaches at most half way along the edges it lies on or projects
-    // onto (a slid vertex at the far end would collapse the face beside the strip). Its own
-    // limit, as a width: `limit` per slide and per inner point.
-    std::vector<double> slide_limit(slides.size()), inner_limit(inners.size(), 1e300);
-    std::vector<double> slide_len(slides.size());
-    for (std::size_t i = 0; i < slides.size(); ++i) {
-        const auto& s = slides[i];
-        slide_len[i] = norm(de::pos<M, T>(mesh, T::target(mesh, s.h)) - de::pos<M, T>(mesh, du::source<M, T>(mesh, s.h)));
-        slide_limit[i] = slide_len[i] / 2 / (s.sum / s.n);
-    }
-    for (std::size_t i = 0; i < inners.size(); ++i) {
-        // The inner point projects onto both bevelled edges at |dir|-scaled distances.
-        const auto& in = inners[i];
-        for (auto h : {T::opposite(mesh, in.corner), T::next(mesh, in.corner)}) {
-            const auto e = de::pos<M, T>(mesh, T::target(mesh, h)) - de::pos<M, T>(mesh, in.v);
-            const double along = dot(in.dir, normalized(e));
-            if (along > 0) inner_limit[i] = std::min(inner_limit[i], norm(e) / 2 / along);
+
+        // Plan, from the original geometry: slides on unbevelled edges, points inside corners
+        // between two bevelled edges, which vertices go. Offsets are per unit width; each new
+        // point remembers the bevelled edges it serves, for the clamp's count.
+        struct slide { H h; double sum = 0; int n = 0; std::size_t edge_a, edge_b; };
+        std::vector<slide> slides;
+        de::index_map slide_at;  // halfedge index -> position in slides
+        auto& inners = plan.inners;
+        std::vector<std::array<std::size_t, 2>> inner_edges;
+        auto& removed = plan.removed;
+        removed.assign(touched.size(), true);
+        progress.add_work(touched.size());
+        for (std::size_t k = 0; k < touched.size(); ++k) {
+            if (auto ok = progress.step(); !ok) return ok.error();
+            const auto v = touched[k];
+            const auto pv = de::pos<M, T>(mesh, v);
+            const auto hs = de::outgoing<M, T>(mesh, v);
+            const std::size_t d = hs.size();
+            std::vector<bool> near(d, false);
+            for (std::size_t i = 0; i < d; ++i) {
+                const auto a = hs[i], b = hs[(i + 1) % d];
+                if (T::face(mesh, b) == T::null_face()) continue;  // the boundary gap is no corner
+                const bool ba = is_bev(a), bb = is_bev(b);
+                if (!ba && !bb) continue;
+                near[i] = near[(i + 1) % d] = true;
+                const auto ua = normalized(de::pos<M, T>(mesh, T::target(mesh, a)) - pv);
+                const auto ub = normalized(de::pos<M, T>(mesh, T::target(mesh, b)) - pv);
+                const double s = norm(cross(ua, ub));
+                if (!(s > 1e-9))
+                    return fail(errc::unsupported, "bevel: the edges of a face corner at " + du::name<M, T>("vertex", mesh, v) +
+                                                       " are collinear; the offset there is undefined",
+                                du::index_of<M, T>(mesh, v));
+                if (ba && bb) {
+                    inners.push_back({T::opposite(mesh, a), v, (ua + ub) / s, 0});
+                    inner_edges.push_back({edge_of(a), edge_of(b)});
+                    continue;
+                }
+                const H along = ba ? b : a;
+                const std::size_t at = slide_at.emplace(T::halfedge_index(mesh, along), slides.size());
+                if (at == slides.size()) slides.push_back({along, 0, 0, edge_of(ba ? a : b), de::index_map::none});
+                else slides[at].edge_b = edge_of(ba ? a : b);
+                slides[at].sum += 1.0 / s;
+                ++slides[at].n;
+            }
+            for (std::size_t i = 0; i < d; ++i)
+                if (!near[i]) removed[k] = false;
         }
-    }
-    double global = options.width;
-    if (options.clamp_overlap && options.clamp_globally) {
-        for (double l : slide_limit) global = std::min(global, l);
-        for (double l : inner_limit) global = std::min(global, l);
-    }
-    auto used = [&](double limit) { return options.clamp_overlap ? std::min(global, limit) : options.width; };
-    de::index_set limited;
-    plan.smallest_width = options.width;
-    auto note = [&](double w, std::size_t e) {
-        plan.smallest_width = std::min(plan.smallest_width, w);
-        if (w < options.width && e != de::index_map::none) limited.insert(e);
-    };
-    for (std::size_t i = 0; i < slides.size(); ++i) {
-        const double w = used(slide_limit[i]);
-        note(w, slides[i].edge_a);
-        note(w, slides[i].edge_b);
-        // The fraction of the edge the slide covers, from its source.
-        const double t = w * slides[i].sum / slides[i].n / slide_len[i];
-        plan.slides.push_back({slides[i].h, t, -1.0});
-    }
-    for (std::size_t i = 0; i < inners.size(); ++i) {
-        inners[i].width = used(inner_limit[i]);
-        note(inners[i].width, inner_edges[i][0]);
-        note(inners[i].width, inner_edges[i][1]);
-    }
-    plan.limited_edges = limited.size();
-    // Slides from both ends of one edge are split together: the first carries the second's
-    // fraction, the second is dropped (t < 0).
-    for (std::size_t i = 0; i < plan.slides.size(); ++i) {
-        if (plan.slides[i].t < 0) continue;
-        const std::size_t j = slide_at.find(T::halfedge_index(mesh, T::opposite(mesh, plan.slides[i].h)));
-        if (j == de::index_map::none || j < i) continue;
-        plan.slides[i].t_back = plan.slides[j].t;
-        plan.slides[j].t = -1.0;
-    }
-    // Which ends of each bevelled edge stay (the strip then ends in a point there).
-    plan.end_kept.resize(sel.size());
-    for (std::size_t i = 0; i < sel.size(); ++i)
-        for (int side = 0; side < 2; ++side) {
-            const auto v = side == 0 ? du::source<M, T>(mesh, sel[i]) : T::target(mesh, sel[i]);
-            // A boundary strip's ends stay, yet its ends are edges (p-u, w-q) for the profile.
-            plan.end_kept[i][side] = !plan.on_boundary[i] && !removed[touched_at.find(T::vertex_index(mesh, v))];
+        // A bevelled boundary edge's strip runs along the boundary up to its ends: they stay.
+        for (std::size_t i = 0; i < sel.size(); ++i)
+            if (plan.on_boundary[i])
+                for (auto v : {du::source<M, T>(mesh, sel[i]), T::target(mesh, sel[i])})
+                    removed[touched_at.find(T::vertex_index(mesh, v))] = false;
+        // Clamp: each new vertex reaches at most half way along the edges it lies on or projects
+        // onto (a slid vertex at the far end would collapse the face beside the strip). Its own
+        // limit, as a width: `limit` per slide and per inner point.
+        std::vector<double> slide_limit(slides.size()), inner_limit(inners.size(), 1e300);
+        std::vector<double> slide_len(slides.size());
+        for (std::size_t i = 0; i < slides.size(); ++i) {
+            const auto& s = slides[i];
+            slide_len[i] = norm(de::pos<M, T>(mesh, T::target(mesh, s.h)) - de::pos<M, T>(mesh, du::source<M, T>(mesh, s.h)));
+            slide_limit[i] = slide_len[i] / 2 / (s.sum / s.n);
         }
-    plan.requested_width = options.width;
-    plan.share_meeting_points = !options.clamp_overlap || options.clamp_globally;
-    return de::transact<M, T>(mesh, [&]<class JT>() -> result<bevel_result<M, T>> {
-        bevel_result<M, T> out;
-        if (auto ok = de::bevel_build<M, JT>(mesh, plan, out, progress); !ok) return ok.error();
-        return out;
-    });
+        for (std::size_t i = 0; i < inners.size(); ++i) {
+            // The inner point projects onto both bevelled edges at |dir|-scaled distances.
+            const auto& in = inners[i];
+            for (auto h : {T::opposite(mesh, in.corner), T::next(mesh, in.corner)}) {
+                const auto e = de::pos<M, T>(mesh, T::target(mesh, h)) - de::pos<M, T>(mesh, in.v);
+                const double along = dot(in.dir, normalized(e));
+                if (along > 0) inner_limit[i] = std::min(inner_limit[i], norm(e) / 2 / along);
+            }
+        }
+        double global = options.width;
+        if (options.clamp_overlap && options.clamp_globally) {
+            for (double l : slide_limit) global = std::min(global, l);
+            for (double l : inner_limit) global = std::min(global, l);
+        }
+        auto used = [&](double limit) { return options.clamp_overlap ? std::min(global, limit) : options.width; };
+        de::index_set limited;
+        plan.smallest_width = options.width;
+        auto note = [&](double w, std::size_t e) {
+            plan.smallest_width = std::min(plan.smallest_width, w);
+            if (w < options.width && e != de::index_map::none) limited.insert(e);
+        };
+        for (std::size_t i = 0; i < slides.size(); ++i) {
+            const double w = used(slide_limit[i]);
+            note(w, slides[i].edge_a);
+            note(w, slides[i].edge_b);
+            // The fraction of the edge the slide covers, from its source.
+            const double t = w * slides[i].sum / slides[i].n / slide_len[i];
+            plan.slides.push_back({slides[i].h, t, -1.0, {slides[i].edge_a, slides[i].edge_b}, {}});
+        }
+        for (std::size_t i = 0; i < inners.size(); ++i) {
+            inners[i].width = used(inner_limit[i]);
+            inners[i].edges = inner_edges[i];
+            note(inners[i].width, inner_edges[i][0]);
+            note(inners[i].width, inner_edges[i][1]);
+        }
+        plan.limited_edges = limited.size();
+        // Slides from both ends of one edge are split together: the first carries the second's
+        // fraction, the second is dropped (t < 0).
+        for (std::size_t i = 0; i < plan.slides.size(); ++i) {
+            if (plan.slides[i].t < 0) continue;
+            const std::size_t j = slide_at.find(T::halfedge_index(mesh, T::opposite(mesh, plan.slides[i].h)));
+            if (j == de::index_map::none || j < i) continue;
+            plan.slides[i].t_back = plan.slides[j].t;
+            plan.slides[i].edges_back = plan.slides[j].edges;
+            plan.slides[j].t = -1.0;
+        }
+        // Which ends of each bevelled edge stay (the strip then ends in a point there).
+        plan.end_kept.resize(sel.size());
+        for (std::size_t i = 0; i < sel.size(); ++i)
+            for (int side = 0; side < 2; ++side) {
+                const auto v = side == 0 ? du::source<M, T>(mesh, sel[i]) : T::target(mesh, sel[i]);
+                // A boundary strip's ends stay, yet its ends are edges (p-u, w-q) for the profile.
+                plan.end_kept[i][side] = !plan.on_boundary[i] && !removed[touched_at.find(T::vertex_index(mesh, v))];
+            }
+        plan.requested_width = options.width;
+        plan.share_meeting_points = !options.clamp_overlap || options.clamp_globally;
+        // Build, then test every face at a new vertex as validate() does (its area vector, the sum
+        // of the corners' cross products, exactly zero), from each corner as a start: a face that
+        // fails there blames one bevelled edge its new vertices were made for. Any blame rolls the
+        // build back; the blamed edges are dropped and the rest planned again from the unchanged
+        // mesh. Each round drops at least one edge, so this ends.
+        std::vector<std::size_t> blamed;
+        auto r = de::transact<M, T>(mesh, [&]<class JT>() -> result<bevel_result<M, T>> {
+            bevel_result<M, T> out;
+            std::vector<std::pair<std::size_t, std::size_t>> origin;
+            if (auto ok = de::bevel_build<M, JT>(mesh, plan, out, progress, origin); !ok) return ok.error();
+            std::sort(origin.begin(), origin.end());
+            de::index_set seen;
+            for (auto v : out.vertices)
+                for (auto h : de::outgoing<M, JT>(mesh, v)) {
+                    const auto f = JT::face(mesh, h);
+                    if (f == JT::null_face() || !seen.insert(JT::face_index(mesh, f))) continue;
+                    if (!de::zero_area_face<M, JT>(mesh, f)) continue;
+                    std::size_t blame = de::index_map::none;
+                    for (auto u : JT::face_vertices(mesh, f)) {
+                        const auto at = std::lower_bound(origin.begin(), origin.end(),
+                                                     std::pair<std::size_t, std::size_t>{JT::vertex_index(mesh, u), 0});
+                        if (at != origin.end() && at->first == JT::vertex_index(mesh, u))
+                            blame = std::min(blame, at->second);
+                    }
+                    if (blame != de::index_map::none) blamed.push_back(blame);
+                }
+            if (!blamed.empty()) return fail(errc::topology, "bevel: a face would have zero area");
+            return out;
+        });
+        if (r || blamed.empty()) {
+            if (r) {
+                r.value().skipped_edges = dropped_count;
+                r.value().bevelled_edges = sel.size();
+            }
+            return r;
+        }
+        for (auto e : blamed)
+            if (dropped.insert(e)) ++dropped_count;
+    }
 }
 
 /// Bevels one edge (see the range overload). A cube edge with segments = 1 gives the chamfer:
