@@ -4,7 +4,7 @@
 #include <charconv>
 #include <filesystem>
 
-#include <hmira/algorithms/conversion/delaunay_triangulation.hpp>
+#include <hmira/algorithms/delaunay/delaunay_triangulation.hpp>
 #include <hmira/io/detail/files.hpp>
 #include <hmira/io/points.hpp>
 

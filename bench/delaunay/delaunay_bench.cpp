@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include <hmira/algorithms/conversion/delaunay_triangulation.hpp>
+#include <hmira/algorithms/delaunay/delaunay_triangulation.hpp>
 
 #ifdef HMIRA_BENCH_WITH_CGAL
 #include <CGAL/Delaunay_triangulation_2.h>

@@ -25,7 +25,7 @@
 #include <malloc.h>
 #include <unistd.h>
 
-#include <hmira/algorithms/conversion/delaunay_triangulation.hpp>
+#include <hmira/algorithms/delaunay/delaunay_triangulation.hpp>
 #include <hmira/algorithms/conversion/marching_cubes.hpp>
 #include <hmira/algorithms/conversion/voxelize.hpp>
 #include <hmira/algorithms/decimation/decimate.hpp>

@@ -18,7 +18,7 @@
 #include <string>
 #include <vector>
 
-#include <hmira/algorithms/conversion/delaunay_triangulation.hpp>
+#include <hmira/algorithms/delaunay/delaunay_triangulation.hpp>
 #include <hmira/algorithms/conversion/marching_cubes.hpp>
 #include <hmira/algorithms/conversion/voxelize.hpp>
 #include <hmira/algorithms/conversion/voxelize_blocks.hpp>

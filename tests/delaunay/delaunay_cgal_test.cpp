@@ -13,7 +13,7 @@
 #include <utility>
 #include <vector>
 
-#include <hmira/algorithms/conversion/delaunay_triangulation.hpp>
+#include <hmira/algorithms/delaunay/delaunay_triangulation.hpp>
 
 #include "delaunay_checks.hpp"
 

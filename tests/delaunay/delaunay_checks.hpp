@@ -16,7 +16,7 @@
 #include <unordered_map>
 #include <vector>
 
-#include <hmira/algorithms/conversion/delaunay_triangulation.hpp>
+#include <hmira/algorithms/delaunay/delaunay_triangulation.hpp>
 #include <hmira/predicates/incircle.hpp>
 #include <hmira/predicates/orient2d.hpp>
 

@@ -4,7 +4,7 @@
 // shrink to keep the CI pass short.
 #include <gtest/gtest.h>
 
-#include <hmira/algorithms/conversion/delaunay_triangulation.hpp>
+#include <hmira/algorithms/delaunay/delaunay_triangulation.hpp>
 
 #include "delaunay_checks.hpp"
 

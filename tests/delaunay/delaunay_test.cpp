@@ -13,7 +13,7 @@
 #include <random>
 #include <vector>
 
-#include <hmira/algorithms/conversion/delaunay_triangulation.hpp>
+#include <hmira/algorithms/delaunay/delaunay_triangulation.hpp>
 #include <hmira/meshes/face_vertex_mesh.hpp>
 #include <hmira/meshes/halfedge_mesh.hpp>
 

@@ -22,7 +22,7 @@
 #include <unistd.h>
 
 #include <hmira/adapters/adapted_mesh.hpp>
-#include <hmira/algorithms/conversion/delaunay_triangulation.hpp>
+#include <hmira/algorithms/delaunay/delaunay_triangulation.hpp>
 #include <hmira/algorithms/copy/copy_mesh.hpp>
 #include <hmira/algorithms/conversion/marching_cubes.hpp>
 #include <hmira/algorithms/conversion/voxelize.hpp>
@@ -193,7 +193,7 @@ HMIRA_ROW(row_marching_cubes, "marching_cubes (into the mesh)", "algorithms/conv
           (M & m, const hmira::dense_grid<float>& g), hmira::marching_cubes<M, T>(m, g));
 HMIRA_ROW(row_voxelize, "voxelize", "algorithms/conversion/voxelize.hpp", hmira::voxelize_mesh, (const M& m, const hmira::grid_geometry& g),
           hmira::voxelize<M, T>(m, g));
-HMIRA_ROW(row_delaunay, "delaunay_triangulation (into the mesh)", "algorithms/conversion/delaunay_triangulation.hpp", hmira::mesh_builder,
+HMIRA_ROW(row_delaunay, "delaunay_triangulation (into the mesh)", "algorithms/delaunay/delaunay_triangulation.hpp", hmira::mesh_builder,
           (M & m, const points2& p), hmira::delaunay_triangulation<M, T>(m, p));
 HMIRA_ROW(row_read, "read_obj, read_off", "io/obj.hpp, io/off.hpp", hmira::io::readable_mesh, (M & m, const std::filesystem::path& p),
           hmira::io::read_obj<M, T>(m, p));

@@ -3,21 +3,15 @@
 // the squared distance of the new vertex to the planes of the faces it stands for.
 #pragma once
 
-#include <algorithm>
-#include <cmath>
 #include <cstddef>
-#include <cstdint>
 #include <limits>
-#include <numbers>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "../../core/progress.hpp"
-#include "../triangle/collapse_edge.hpp"
-#include "../triangulation/triangulate_faces.hpp"
-#include "detail/indexed_heap.hpp"
-#include "detail/quadric.hpp"
+#include "../../core/result.hpp"
+#include "../triangle/triangle_common.hpp"
 
 namespace hmira {
 
@@ -74,348 +68,34 @@ struct decimate_result {
 template <class M, class T = default_traits<M>>
 concept decimatable_mesh = triangle_operable_mesh<M, T> && vertex_index_mesh<M, T> && edge_index_mesh<M, T>;
 
-namespace detail::decimation {
-
-/// One collapse as the queue sees it: the halfedge whose source goes, and where its target
-/// goes. An edge that may not collapse at all (constraints) has no candidate.
-template <class H>
-struct candidate {
-    H halfedge;
-    vec3<double> position;
-    double cost;
-};
-
-template <class M, class T>
-class decimator {
-public:
-    using V = typename T::vertex_handle;
-    using H = typename T::halfedge_handle;
-    using E = typename T::edge_handle;
-
-    decimator(M& mesh, const decimate_options& options) : m_(mesh), o_(options), heap_(T::edge_index_bound(mesh)) {}
-
-    /// Counts per vertex, quadrics, flags, the queue. O(V + E + F log E).
-    void start(std::size_t faces) {
-        namespace dt = detail::triangle_ops;
-        faces_ = faces;
-        const std::size_t vb = T::vertex_index_bound(m_), eb = T::edge_index_bound(m_);
-        quadrics_.assign(vb, quadric{});
-        fixed_.assign(vb, 0);
-        edges_.assign(eb, E{});
-        refused_.assign(eb, 0);
-        cos_limit_ = std::cos(o_.max_normal_angle * std::numbers::pi / 180);
-        for (std::size_t i : o_.locked_vertices) fixed_[i] |= locked;
-        for (auto f : T::faces(m_)) {
-            const H h = T::face_halfedge(m_, f);
-            const V a = T::target(m_, h), b = T::target(m_, T::next(m_, h)), c = T::target(m_, T::prev(m_, h));
-            const auto pa = dt::position_of<M, T>(m_, a);
-            const auto n = cross(dt::position_of<M, T>(m_, b) - pa, dt::position_of<M, T>(m_, c) - pa);
-            const double len = norm(n);
-            if (!(len > 0)) continue;  // a degenerate face pins no plane
-            const quadric q = quadric::of_plane(n * (1 / len), pa);
-            quadrics_[T::vertex_index(m_, a)] += q;
-            quadrics_[T::vertex_index(m_, b)] += q;
-            quadrics_[T::vertex_index(m_, c)] += q;
-        }
-        for (auto e : T::edges(m_)) {
-            const H h = T::edge_halfedge(m_, e), o = T::opposite(m_, h);
-            const bool hb = T::face(m_, h) == T::null_face(), ob = T::face(m_, o) == T::null_face();
-            if (!hb && !ob) continue;
-            const V a = T::target(m_, o), b = T::target(m_, h);
-            fixed_[T::vertex_index(m_, a)] |= boundary;
-            fixed_[T::vertex_index(m_, b)] |= boundary;
-            if (o_.keep_boundary || (hb && ob)) continue;
-            // A plane through the boundary edge, perpendicular to its face, keeps the
-            // boundary from shrinking when boundary edges may collapse.
-            const H inner = hb ? o : h;
-            const auto p0 = dt::position_of<M, T>(m_, T::target(m_, T::opposite(m_, inner)));
-            const auto p1 = dt::position_of<M, T>(m_, T::target(m_, inner));
-            const auto p2 = dt::position_of<M, T>(m_, T::target(m_, T::next(m_, inner)));
-            const auto n = cross(cross(p1 - p0, p2 - p0), p1 - p0);
-            const double len = norm(n);
-            if (!(len > 0)) continue;
-            const quadric q = quadric::of_plane(n * (1 / len), p0);
-            quadrics_[T::vertex_index(m_, a)] += q;
-            quadrics_[T::vertex_index(m_, b)] += q;
-        }
-        for (auto e : T::edges(m_)) {
-            const std::size_t i = T::edge_index(m_, e);
-            edges_[i] = e;
-            update(std::uint32_t(i));
-        }
-    }
-
-    /// Collapses until a target is reached, the queue empties or the callback cancels
-    /// (returns false then; the caller restores the mesh).
-    bool run(std::size_t target_faces, progress_gate& gate, decimate_result& out) {
-        constexpr std::size_t block = 1024;
-        std::size_t since_report = 0;
-        out.stopped_by = decimate_stop::constraints;
-        const double max_cost = o_.max_error ? *o_.max_error * *o_.max_error : std::numeric_limits<double>::infinity();
-        while (faces_ > target_faces) {
-            if (heap_.empty()) break;
-            if (heap_.top_cost() > max_cost) {
-                out.stopped_by = decimate_stop::max_error;
-                break;
-            }
-            const std::uint32_t key = heap_.top_key();
-            heap_.erase(key);
-            const auto c = candidate_of(edges_[key]);
-            if (!c || !collapse(*c)) {
-                refused_[key] = 1;
-                continue;
-            }
-            out.error = std::max(out.error, c->cost);
-            ++out.collapses;
-            if (++since_report == block) {
-                since_report = 0;
-                if (!gate.advance()) return false;
-            }
-        }
-        if (faces_ <= target_faces) out.stopped_by = decimate_stop::target_faces;
-        out.error = std::sqrt(out.error);
-        return true;
-    }
-
-    std::size_t faces() const noexcept { return faces_; }
-
-private:
-    static constexpr std::uint8_t locked = 1, boundary = 2;
-
-    std::size_t index(V v) const { return T::vertex_index(m_, v); }
-    vec3<double> position(V v) const { return detail::triangle_ops::position_of<M, T>(m_, v); }
-    bool pinned(V v) const {
-        const std::uint8_t f = fixed_[index(v)];
-        return (f & locked) || (o_.keep_boundary && (f & boundary));
-    }
-
-    /// The collapse this edge would make, or nothing when the constraints forbid it.
-    std::optional<candidate<H>> candidate_of(E e) const {
-        const H h = T::edge_halfedge(m_, e), o = T::opposite(m_, h);
-        if (o_.keep_boundary && (T::face(m_, h) == T::null_face() || T::face(m_, o) == T::null_face())) return std::nullopt;
-        const V a = T::target(m_, o), b = T::target(m_, h);
-        const bool pa = pinned(a), pb = pinned(b);
-        if (pa && pb) return std::nullopt;
-        const quadric q = quadrics_[index(a)] + quadrics_[index(b)];
-        // A pinned end survives where it is.
-        if (pa) return candidate<H>{o, position(a), q(position(a))};
-        if (pb) return candidate<H>{h, position(b), q(position(b))};
-        if (const auto x = q.minimiser(); x && std::isfinite(x->x) && std::isfinite(x->y) && std::isfinite(x->z))
-            return candidate<H>{h, *x, q(*x)};
-        // No single best point: the best of the two ends and the midpoint.
-        const vec3<double> ends[3] = {position(b), position(a), (position(a) + position(b)) * 0.5};
-        std::size_t best = 0;
-        double cost = q(ends[0]);
-        for (std::size_t i = 1; i < 3; ++i)
-            if (const double c = q(ends[i]); c < cost) cost = c, best = i;
-        return candidate<H>{h, ends[best], cost};
-    }
-
-    /// Puts the edge in the queue at its current cost, or takes it out when it may not
-    /// collapse.
-    void update(std::uint32_t key) {
-        refused_[key] = 0;
-        if (const auto c = candidate_of(edges_[key])) heap_.set(key, c->cost);
-        else heap_.erase(key);
-    }
-
-    /// The normal-angle and aspect-ratio limits on the faces that survive around the edge.
-    bool geometry_ok(const candidate<H>& c) const {
-        const H h = c.halfedge, o = T::opposite(m_, h);
-        const V a = T::target(m_, o), b = T::target(m_, h);
-        const auto f0 = T::face(m_, h), f1 = T::face(m_, o);
-        const bool aspect = std::isfinite(o_.max_aspect_ratio);
-        for (const V v : {a, b}) {
-            const H s = T::vertex_halfedge(m_, v);
-            H x = s;
-            do {
-                const auto g = T::face(m_, x);
-                if (g != T::null_face() && g != f0 && g != f1) {
-                    const V u = T::target(m_, x), w = T::target(m_, T::next(m_, x));
-                    const auto pv = position(v), pu = position(u), pw = position(w);
-                    const auto qu = (u == a || u == b) ? c.position : pu, qw = (w == a || w == b) ? c.position : pw;
-                    const auto before = cross(pu - pv, pw - pv), after = cross(qu - c.position, qw - c.position);
-                    const double lb = squared_norm(before), la = squared_norm(after);
-                    if (!(la > 0)) return false;
-                    const double d = dot(before, after);
-                    // cos(angle) >= cos_limit, squared without a root; a zero-area face before
-                    // has no normal to keep.
-                    if (lb > 0 && (cos_limit_ >= 0 ? d < 0 || d * d < cos_limit_ * cos_limit_ * lb * la
-                                                   : d < 0 && d * d > cos_limit_ * cos_limit_ * lb * la))
-                        return false;
-                    if (aspect) {
-                        const double r_after = aspect_ratio(c.position, qu, qw, la);
-                        if (r_after > o_.max_aspect_ratio && r_after > aspect_ratio(pv, pu, pw, lb)) return false;
-                    }
-                }
-                x = T::next(m_, T::opposite(m_, x));
-            } while (x != s);
-        }
-        return true;
-    }
-
-    /// Longest edge over the height onto it, 1 for an equilateral triangle; `twice_area_sq`
-    /// is the squared norm of the cross product.
-    static double aspect_ratio(const vec3<double>& p, const vec3<double>& q, const vec3<double>& r, double twice_area_sq) {
-        if (!(twice_area_sq > 0)) return std::numeric_limits<double>::infinity();
-        const double l = std::max({squared_norm(q - p), squared_norm(r - q), squared_norm(p - r)});
-        return l / std::sqrt(twice_area_sq) * (std::sqrt(3.0) / 2);
-    }
-
-    /// Makes the collapse if the geometry and the topology allow it; then the quadric of the
-    /// survivor, the queue around it, and edges refused before near it. False: nothing changed.
-    bool collapse(const candidate<H>& c) {
-        namespace dt = detail::triangle_ops;
-        if (!geometry_ok(c)) return false;
-        const H h = c.halfedge, o = T::opposite(m_, h);
-        const V a = T::target(m_, o), b = T::target(m_, h);
-        const auto f0 = T::face(m_, h), f1 = T::face(m_, o);
-        const std::uint32_t side0 = std::uint32_t(T::edge_index(m_, T::edge(m_, T::prev(m_, h))));
-        const std::uint32_t side1 = std::uint32_t(T::edge_index(m_, T::edge(m_, T::next(m_, o))));
-        auto r = collapse_edge<M, T>(m_, h, {.placement = collapse_placement::given, .position = c.position});
-        if (!r) return false;  // the topology rules refused it; collapse_edge changed nothing
-        // The edges beside the edge went with their triangles.
-        if (f0 != T::null_face()) heap_.erase(side0), --faces_;
-        if (f1 != T::null_face()) heap_.erase(side1), --faces_;
-        quadrics_[index(b)] += quadrics_[index(a)];
-        fixed_[index(b)] |= fixed_[index(a)] & boundary;
-        // Every edge at the survivor has a new cost; an edge refused before at a neighbour may
-        // pass now that the neighbourhood changed.
-        const H s = T::vertex_halfedge(m_, b);
-        H x = s;
-        do {
-            update(std::uint32_t(T::edge_index(m_, T::edge(m_, x))));
-            x = T::next(m_, T::opposite(m_, x));
-        } while (x != s);
-        do {
-            const V n = T::target(m_, x);
-            const H t = T::vertex_halfedge(m_, n);
-            H y = t;
-            do {
-                const std::uint32_t k = std::uint32_t(T::edge_index(m_, T::edge(m_, y)));
-                if (refused_[k]) update(k);
-                y = T::next(m_, T::opposite(m_, y));
-            } while (y != t);
-            x = T::next(m_, T::opposite(m_, x));
-        } while (x != s);
-        return true;
-    }
-
-    M& m_;
-    const decimate_options& o_;
-    indexed_heap heap_;
-    std::vector<quadric> quadrics_;   // by vertex index
-    std::vector<std::uint8_t> fixed_;  // by vertex index: locked, boundary
-    std::vector<E> edges_;             // by edge index
-    std::vector<std::uint8_t> refused_;  // by edge index: left the queue refused, retried nearby
-    std::size_t faces_ = 0;
-    double cos_limit_ = 0;
-};
-
-}  // namespace detail::decimation
-
-/// Quadric error decimation (Garland and Heckbert 1997): every edge is queued at the error
-/// of its best collapse point (the point that minimises the summed squared distances to the
-/// planes of the faces merged into its ends; the best of the two ends and the midpoint when
-/// those planes do not pin a point), and the cheapest edge collapses (collapse_edge) until
-/// a target is reached. After a collapse the survivor's edges are re-queued at their new
-/// cost. A collapse is refused, and the edge leaves the queue until its neighbourhood
-/// changes, when collapse_edge's topology rules (the link condition) or the options'
-/// constraints forbid it. Polygon input is triangulated first (triangulate_faces; the note
-/// says so). Deterministic: single-threaded, ties broken by edge index.
+/// Quadric error decimation (Garland and Heckbert 1997): every edge is queued at the error of its best
+/// collapse point (the point that minimises the summed squared distances to the planes of the faces merged
+/// into its ends; the best of the two ends and the midpoint when those planes do not pin a point), and the
+/// cheapest edge collapses (collapse_edge) until a target is reached. After a collapse the survivor's edges
+/// are re-queued at their new cost. A collapse is refused, and the edge leaves the queue until its
+/// neighbourhood changes, when collapse_edge's topology rules (the link condition) or the options'
+/// constraints forbid it. Polygon input is triangulated first (triangulate_faces; the note says so).
+/// Deterministic: single-threaded, ties broken by edge index.
 ///
 /// \pre every vertex position is finite.
-/// \post the faces are triangles; faces <= the face target when stopped_by is target_faces
-///       (one fewer at most: an interior collapse removes two faces). Genus and boundary loops
-///       are kept (the link condition); with keep_boundary the boundary vertices keep their
-///       positions. Locked vertices keep their handles and positions bit for bit. Removed
-///       elements are erased the model's way (nothing is compacted).
-/// Errors (mesh unchanged): errc::invalid_argument naming the option for no target, a NaN or
-/// out-of-range option, a locked vertex index out of range, or a non-finite position (naming
-/// the vertex); errc::unsupported for polygon input on a model that cannot triangulate
-/// (triangles only is fine), and for a cancellation ("decimate: cancelled"); the errors of
-/// triangulate_faces.
-/// Complexity O(V + E + F) to set up plus O(E log E) to queue every edge; each collapse then
-/// costs O(d^2) for the checks and the refused neighbours (d the valence around it) and
-/// O(d log E) for the queue updates. Plus O(V + E + F) for the copy when a progress callback
-/// is given. Memory: 80 bytes of quadric and 1 byte of flags per vertex, about 24 bytes per edge.
-/// Cache: the collapses come in cost order, scattered over the mesh, so nearly every one
-/// misses the caches once the working set (about 100 bytes per input face on halfedge_mesh,
-/// mesh included) outgrows the last-level cache. The work per face stays flat (instructions
-/// per face within 7% from 10^4 to 10^6 faces: the queue's log E) while the time per face
-/// rises about 3.5x from a cache-resident mesh (10^4 faces) to 3x10^6 faces, and is flat
-/// beyond that (bench/sweep, issue 20: 1.73 and 1.78 us per face at 3x10^6 and 10^7 faces;
-/// exponent 1.16 over 10^6..10^7).
+/// \post the faces are triangles; faces <= the face target when stopped_by is target_faces (one fewer at
+///       most: an interior collapse removes two faces). Genus and boundary loops are kept (the link
+///       condition); with keep_boundary the boundary vertices keep their positions. Locked vertices keep
+///       their handles and positions bit for bit. Removed elements are erased the model's way (nothing is
+///       compacted).
+/// Errors (mesh unchanged): errc::invalid_argument naming the option for no target, a NaN or out-of-range
+/// option, a locked vertex index out of range, or a non-finite position (naming the vertex);
+/// errc::unsupported for polygon input on a model that cannot triangulate (triangles only is fine);
+/// errc::cancelled for a cancellation ("decimate: cancelled"); the errors of triangulate_faces.
+/// Complexity O(V + E + F) to set up plus O(E log E) to queue every edge; each collapse then costs O(d^2)
+/// for the checks and the refused neighbours (d the valence around it) and O(d log E) for the queue
+/// updates. Plus O(V + E + F) for the copy when a progress callback is given. Memory: 80 bytes of quadric
+/// and 1 byte of flags per vertex, about 24 bytes per edge. Cache behaviour: detail/decimate_impl.hpp.
 template <class M, class T = default_traits<M>>
     requires decimatable_mesh<M, T>
-[[nodiscard]] result<decimate_result> decimate(M& mesh, const decimate_options& options) {
-    namespace dt = detail::triangle_ops;
-    const auto bad = [](const std::string& what) { return fail(errc::invalid_argument, "decimate: " + what); };
-    if (!options.target_faces && !options.target_ratio && !options.max_error)
-        return bad("set target_faces, target_ratio or max_error");
-    if (options.target_ratio && !(*options.target_ratio >= 0 && *options.target_ratio <= 1))
-        return bad("option target_ratio must be in [0, 1], got " + std::to_string(*options.target_ratio));
-    if (options.max_error && !(*options.max_error >= 0 && std::isfinite(*options.max_error)))
-        return bad("option max_error must be a finite distance >= 0, got " + std::to_string(*options.max_error));
-    if (!(options.max_normal_angle >= 0 && options.max_normal_angle <= 180))
-        return bad("option max_normal_angle must be in [0, 180] degrees, got " + std::to_string(options.max_normal_angle));
-    if (!(options.max_aspect_ratio >= 1))
-        return bad("option max_aspect_ratio must be at least 1, got " + std::to_string(options.max_aspect_ratio));
-    if (!options.locked_vertices.empty()) {
-        std::vector<std::uint8_t> live(T::vertex_index_bound(mesh), 0);
-        for (auto v : T::vertices(mesh)) live[T::vertex_index(mesh, v)] = 1;
-        for (std::size_t i : options.locked_vertices)
-            if (i >= live.size() || !live[i])
-                return bad("option locked_vertices names vertex " + std::to_string(i) + ", which does not exist");
-    }
-    for (auto v : T::vertices(mesh))
-        if (!dt::finite(dt::position_of<M, T>(mesh, v)))
-            return fail(errc::invalid_argument, "decimate: vertex " + std::to_string(T::vertex_index(mesh, v)) + " has a non-finite position",
-                        (long long)T::vertex_index(mesh, v));
-
-    decimate_result out;
-    std::size_t faces = 0;
-    bool triangles = true;
-    for (auto f : T::faces(mesh)) {
-        ++faces;
-        if (triangles && !dt::in_triangle<M, T>(mesh, T::face_halfedge(mesh, f))) triangles = false;
-    }
-    // The copy a cancellation restores, taken before anything changes (triangulation included).
-    std::vector<M> backup;
-    if (options.progress) backup.push_back(mesh);
-    if (!triangles) {
-        if constexpr (triangulable_mesh<M, T>) {
-            auto t = triangulate_faces<M, T>(mesh);
-            if (!t) return t.error();
-            faces = T::face_count(mesh);
-            out.triangulated = true;
-            out.note = "polygon faces were triangulated first; ";
-        } else {
-            return fail(errc::unsupported, "decimate: the mesh has faces that are not triangles and the model cannot triangulate them");
-        }
-    }
-    std::size_t target = 0;
-    if (options.target_faces) target = *options.target_faces;
-    if (options.target_ratio) target = std::max(target, std::size_t(std::ceil(*options.target_ratio * double(faces))));
-
-    detail::decimation::decimator<M, T> d(mesh, options);
-    d.start(faces);
-    const std::size_t total = faces > target ? (faces - target) / 2048 : 0;
-    detail::progress_gate gate(options.progress, total);
-    if (!d.run(target, gate, out)) {
-        mesh = std::move(backup.front());
-        return fail(errc::cancelled, "decimate: cancelled");
-    }
-    out.faces = d.faces();
-    out.vertices = T::vertex_count(mesh);
-    if (out.stopped_by == decimate_stop::constraints)
-        out.note += "stopped at " + std::to_string(out.faces) + " faces, above the target of " + std::to_string(target) +
-                    ": no remaining collapse satisfies the constraints (boundary, locked vertices, normal angle, aspect "
-                    "ratio) and the link condition";
-    else if (out.stopped_by == decimate_stop::max_error && (options.target_faces || options.target_ratio))
-        out.note += "stopped at " + std::to_string(out.faces) + " faces by max_error, before the face target";
-    if (out.note.size() >= 2 && out.note.substr(out.note.size() - 2) == "; ") out.note.resize(out.note.size() - 2);
-    return out;
-}
+[[nodiscard]] result<decimate_result> decimate(M& mesh, const decimate_options& options);
 
 }  // namespace hmira
+
+// The machinery (the decimator and the definition of decimate) is kept apart from the interface.
+#include "detail/decimate_impl.hpp"

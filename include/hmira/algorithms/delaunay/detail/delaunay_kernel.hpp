@@ -1,4 +1,4 @@
-// hmira/algorithms/conversion/detail/delaunay_kernel.hpp
+// hmira/algorithms/delaunay/detail/delaunay_kernel.hpp
 // The engine behind delaunay_triangulation: incremental Bowyer-Watson insertion over a
 // Hilbert/BRIO order, with a visibility walk from the last new triangle, compact triangle
 // arrays, ghost triangles for the outside, and the exact predicates. Not a public interface.
