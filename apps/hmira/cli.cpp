@@ -298,24 +298,8 @@ int save(const hmira::face_vertex_mesh& mesh, const std::string& path, const hmi
     for (const auto& input : files_read())
         if (same_file(path, input))
             return report(usage, "output " + path + " is the input " + input + ": hmira never writes over its input; name another output file");
-    // No output holds a non-finite coordinate: a result that overflowed, or one that a float
-    // format (STL, PLY with --float) cannot hold, is refused here whatever the command.
-    std::string ext = std::filesystem::path(path).extension().string();
-    for (auto& c : ext) c = static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
-    const bool as_float = ext == ".stl" || (ext == ".ply" && options.ply_coordinates == hmira::io::ply_scalar::float32);
-    std::size_t n = 0;
-    for (auto v : mesh.vertices()) {
-        const auto p = mesh.position(v);
-        for (double x : {p.x, p.y, p.z}) {
-            if (!std::isfinite(x))
-                return report(invalid_input, path + ": vertex " + std::to_string(n) + " of the result has a coordinate that is not finite "
-                                                    "(the computation overflowed); nothing is written");
-            if (as_float && !std::isfinite(static_cast<float>(x)))
-                return report(invalid_input, path + ": vertex " + std::to_string(n) + " has a coordinate (" + compact(x) + ") beyond the float range (about 3.4e38) that " +
-                                                 ext + (ext == ".stl" ? "" : " with --float") + " stores; nothing is written");
-        }
-        ++n;
-    }
+    // The writers refuse a coordinate the file cannot hold (non-finite, or beyond float's range
+    // for STL and PLY --float), naming the vertex, before writing a byte.
     auto w = hmira::io::write_mesh(mesh, path, options);
     if (!w) return report(exit_code_for(w.error()), w.error().message);
     return ok;

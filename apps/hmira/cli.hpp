@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include <hmira/core/enum_names.hpp>
 #include <hmira/io/detail/atomic_write.hpp>
 #include <hmira/io/mesh_io.hpp>
 #include <hmira/meshes/face_vertex_mesh.hpp>
@@ -31,6 +32,17 @@ enum exit_code : int {
     io_failure = 3,     ///< a file cannot be read or written (missing, directory, permissions)
     internal = 4,       ///< an unexpected failure inside hmira
 };
+
+/// The names of an option enum's values (core/enum_names.hpp), for CLI::IsMember.
+template <hmira::named_enum E>
+std::vector<std::string> names_of() {
+    std::vector<std::string> out;
+    for (const auto& [value, name] : enum_names(E{})) {
+        (void)value;
+        out.emplace_back(name);
+    }
+    return out;
+}
 
 /// Options every subcommand has.
 struct common_options {

@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include <hmira/algorithms/editing/bevel.hpp>
+#include <hmira/algorithms/geometry/sharp_edges.hpp>
 
 #include "cli.hpp"
 
@@ -45,21 +46,6 @@ std::optional<std::array<std::size_t, 2>> parse_pair(const std::string& text) {
     return v;
 }
 
-/// Newell's normal of f: the area vector, exact for planar polygons, robust for the rest.
-hmira::vec3<double> face_normal(const hmira::halfedge_mesh& m, hmira::face_handle f) {
-    hmira::vec3<double> n{0, 0, 0};
-    std::vector<hmira::vec3<double>> p;
-    for (auto v : m.face_vertices(f)) p.push_back(m.position(v));
-    for (std::size_t i = 0; i < p.size(); ++i) {
-        const auto& a = p[i];
-        const auto& b = p[(i + 1) % p.size()];
-        n.x += (a.y - b.y) * (a.z + b.z);
-        n.y += (a.z - b.z) * (a.x + b.x);
-        n.z += (a.x - b.x) * (a.y + b.y);
-    }
-    return n;
-}
-
 /// The file's index of v: a copy that repair on read made of a split vertex stands for its
 /// original.
 std::size_t file_index(const hmira::halfedge_mesh& m, hmira::vertex_handle v) {
@@ -73,19 +59,8 @@ std::optional<std::vector<hmira::edge_handle>> select_edges(const bevel_args& a,
                                                             int& code) {
     std::vector<hmira::edge_handle> out;
     if (a.all || a.angle >= 0) {
-        // Only edges between two faces can be bevelled: boundary edges are skipped.
-        const double cos_limit = std::cos(a.angle * std::numbers::pi / 180.0);
-        for (auto e : m.edges()) {
-            if (m.is_boundary(e)) continue;
-            if (a.angle >= 0) {
-                const auto n0 = face_normal(m, m.face(m.edge_halfedge(e, 0)));
-                const auto n1 = face_normal(m, m.face(m.edge_halfedge(e, 1)));
-                const double len = std::sqrt(dot(n0, n0) * dot(n1, n1));
-                // The angle between the normals is at least `angle` when its cosine is at most cos(angle).
-                if (!(len > 0) || dot(n0, n1) / len > cos_limit + 1e-12) continue;
-            }
-            out.push_back(e);
-        }
+        // Only edges between two faces can be bevelled: boundary edges are never selected.
+        out = hmira::sharp_edges(m, a.angle >= 0 ? a.angle : 0.0);
         if (out.empty()) {
             char degrees[32];
             std::snprintf(degrees, sizeof degrees, "%g", a.angle);

@@ -9,11 +9,13 @@ namespace {
 
 using namespace hmira_cli;
 
+// Defaults are Taubin's (the default method), read from the library's options.
 struct smooth_args {
-    std::string input, output, method = "taubin", weights = "uniform";
-    std::size_t iterations = 10;
-    double lambda = 0.5, mu = -0.53;
-    bool move_boundary = false;
+    std::string input, output, method = "taubin";
+    std::string weights{hmira::to_string(hmira::taubin_smooth_options{}.weights)};
+    std::size_t iterations = hmira::taubin_smooth_options{}.iterations;
+    double lambda = hmira::taubin_smooth_options{}.lambda, mu = hmira::taubin_smooth_options{}.mu;
+    bool move_boundary = !hmira::taubin_smooth_options{}.fix_boundary;
     std::vector<std::size_t> fixed;
 };
 
@@ -22,7 +24,7 @@ int run_smooth(const smooth_args& a, const common_options& o) {
     auto loaded = load_for_edit(a.input, o, code);
     if (!loaded) return code;
     if (!check_indices(a.fixed, loaded->mesh.vertex_count(), "vertex", "--fix", a.input, code)) return code;
-    const auto w = a.weights == "cotangent" ? hmira::laplacian_weights::cotangent : hmira::laplacian_weights::uniform;
+    const auto w = *hmira::from_string<hmira::laplacian_weights>(a.weights);  // checked by --weights' IsMember
     // Vertices times steps: the bar shows for a long run on a small mesh too.
     const std::uint64_t steps = std::uint64_t(a.iterations) * (a.method == "taubin" ? 2 : 1);
     const std::uint64_t work = std::uint64_t(loaded->mesh.vertex_count()) * steps;
@@ -62,7 +64,7 @@ const bool registered = register_command({
         sub.add_option("input", a->input, "mesh file to read (manifold, consistently oriented)")->required();
         sub.add_option("output", a->output, "mesh file to write (same vertices and faces, moved)")->required();
         sub.add_option("--method", a->method, "taubin (keeps the volume) or laplacian (shrinks)")->check(CLI::IsMember({"taubin", "laplacian"}));
-        sub.add_option("--weights", a->weights, "uniform or cotangent (triangles only)")->check(CLI::IsMember({"uniform", "cotangent"}));
+        sub.add_option("--weights", a->weights, "uniform or cotangent (triangles only)")->check(CLI::IsMember(names_of<hmira::laplacian_weights>()));
         sub.add_option("--iterations", a->iterations, "smoothing steps (Taubin: lambda/mu pairs)")->check(whole_number(0, 1000000));
         sub.add_option("--lambda", a->lambda, "step size, in (0, 1]")->check(finite_number("in (0, 1]", [](double x) { return x > 0 && x <= 1; }));
         sub.add_option("--mu", a->mu, "Taubin's inflating step, in [-1, -lambda)")->check(finite_number("in [-1, 0)", [](double x) { return x >= -1 && x < 0; }));

@@ -20,9 +20,8 @@
 #include <hmira/algorithms/holes/fill_hole.hpp>
 #include <hmira/algorithms/remeshing/isotropic_remeshing.hpp>
 #include <hmira/algorithms/smoothing/laplacian_smooth.hpp>
-#include <hmira/algorithms/subdivision/catmull_clark.hpp>
-#include <hmira/algorithms/subdivision/loop.hpp>
-#include <hmira/algorithms/subdivision/sqrt3.hpp>
+#include <hmira/algorithms/geometry/sharp_edges.hpp>
+#include <hmira/algorithms/subdivision/subdivide.hpp>
 #include <hmira/algorithms/triangle/triangle.hpp>
 #include <hmira/algorithms/triangulation/triangulate_faces.hpp>
 #include <hmira/algorithms/orientation/flip_normals.hpp>
@@ -308,21 +307,7 @@ nb::dict bevel(py_mesh& self, std::optional<std::vector<std::pair<long long, lon
                 es.push_back(m0.edge(h));
             }
         } else {
-            const double cos_limit = angle ? std::cos(*angle * std::numbers::pi / 180.0) : 2.0;
-            for (auto e : m0.edges()) {
-                const auto h = m0.edge_halfedge(e);
-                const auto f0 = m0.face(h), f1 = m0.face(m0.opposite(h));
-                if (!m0.is_valid(f0) || !m0.is_valid(f1)) continue;
-                if (angle) {
-                    auto normal = [&](hmira::face_handle f) {
-                        std::vector<vec3<double>> p;
-                        for (auto v : m0.face_vertices(f)) p.push_back(m0.position(v));
-                        return hmira::normalized(hmira::detail::newell_normal(p));
-                    };
-                    if (hmira::dot(normal(f0), normal(f1)) > cos_limit) continue;
-                }
-                es.push_back(e);
-            }
+            es = hmira::sharp_edges(m0, angle ? *angle : 0.0);
             if (es.empty()) value_error(angle ? "bevel: no edge has a dihedral angle of at least " + std::to_string(*angle) + " degrees"
                                               : std::string("bevel: the mesh has no edge between two faces"));
         }
@@ -417,10 +402,16 @@ auto on_copy(py_mesh& self, Op&& op) {
     });
 }
 
+/// The value of an option enum named by `name` (core/enum_names.hpp), or ValueError listing
+/// the names.
+template <hmira::named_enum E>
+E enum_arg(const std::string& name, const char* who, const char* option) {
+    if (const auto e = hmira::from_string<E>(name)) return *e;
+    value_error(std::string(who) + ": " + option + " must be one of " + hmira::quoted_names<E>() + ", got '" + name + "'");
+}
+
 hmira::laplacian_weights weights_arg(const std::string& w, const char* who) {
-    if (w == "uniform") return hmira::laplacian_weights::uniform;
-    if (w == "cotangent") return hmira::laplacian_weights::cotangent;
-    value_error(std::string(who) + ": weights must be 'uniform' or 'cotangent', got '" + w + "'");
+    return enum_arg<hmira::laplacian_weights>(w, who, "weights");
 }
 
 std::vector<std::size_t> fixed_arg(const halfedge_mesh& m, const std::optional<std::vector<long long>>& fixed, const char* who) {
@@ -534,36 +525,20 @@ void bind_everyday(nb::class_<py_mesh>& c) {
          "'faces_added', 'vertices_added', 'unfaired', 'open'}, 'open' listing each hole left open as {'vertex', 'edges', "
          "'reason'}. Ctrl-C stops it with the mesh unchanged.")
      .def("subdivide", [](py_mesh& s, const std::string& scheme, std::size_t levels) {
-             if (scheme != "loop" && scheme != "sqrt3" && scheme != "catmull-clark")
-                 value_error("subdivide: unknown scheme '" + scheme + "' (supported: 'loop', 'sqrt3', 'catmull-clark')");
-             nb::dict d;
-             const auto counts = [&](const auto& r) {
-                 d["vertices"] = r.vertices;
-                 d["edges"] = r.edges;
-                 d["faces"] = r.faces;
-             };
+             const auto chosen = enum_arg<hmira::subdivision_scheme>(scheme, "subdivide", "scheme");
              // The schemes leave the mesh unchanged on error and restore it on Ctrl-C (progress).
-             const auto subdivide = [&](auto run) {
-                 return change_without_gil(s, true, [&](halfedge_mesh& m, hmira::progress_function progress) {
-                     auto done = run(m, std::move(progress));
-                     if (done) compact(m);
-                     return done;
-                 });
-             };
-             if (scheme == "loop")
-                 counts(subdivide([&](halfedge_mesh& m, hmira::progress_function p) {
-                     return hmira::loop_subdivide(m, {.levels = levels, .progress = std::move(p)});
-                 }));
-             else if (scheme == "sqrt3")
-                 counts(subdivide([&](halfedge_mesh& m, hmira::progress_function p) {
-                     return hmira::sqrt3_subdivide(m, {.levels = levels, .progress = std::move(p)});
-                 }));
-             else
-                 counts(subdivide([&](halfedge_mesh& m, hmira::progress_function p) {
-                     return hmira::catmull_clark_subdivide(m, {.levels = levels, .progress = std::move(p)});
-                 }));
+             const auto r = change_without_gil(s, true, [&](halfedge_mesh& m, hmira::progress_function progress) {
+                 auto done = hmira::subdivide(m, {.scheme = chosen, .levels = levels, .progress = std::move(progress)});
+                 if (done) compact(m);
+                 return done;
+             });
+             nb::dict d;
+             d["vertices"] = r.vertices;
+             d["edges"] = r.edges;
+             d["faces"] = r.faces;
              return d;
-         }, nb::kw_only(), nb::arg("scheme") = "loop", nb::arg("levels") = 1,
+         }, nb::kw_only(), nb::arg("scheme") = std::string(hmira::to_string(hmira::subdivide_options{}.scheme)),
+         nb::arg("levels") = hmira::subdivide_options{}.levels,
          "Subdivides `levels` times with `scheme`: 'loop' or 'sqrt3' (triangle meshes) or 'catmull-clark' (any\n"
          "polygon mesh), boundaries included; returns the counts after the last level. 'sqrt3' refines the\n"
          "boundary on every second level of a call, so give it an even `levels` for a smooth boundary.\n\n"

@@ -246,6 +246,25 @@ HMIRA_CAPABILITY(inner_ring_mutable_mesh);
 HMIRA_CAPABILITY(face_removal_mesh);
 HMIRA_CAPABILITY(vertex_removal_mesh);
 HMIRA_CAPABILITY(change_counted_mesh);
+HMIRA_CAPABILITY(reservable_mesh);
+HMIRA_CAPABILITY(bulk_growable_mesh);
+HMIRA_CAPABILITY(orientation_reversible_mesh);
+HMIRA_CAPABILITY(erase_preparing_mesh);
+HMIRA_CAPABILITY(bulk_vertex_removal_mesh);
+HMIRA_CAPABILITY(vertex_halfedge_restorable_mesh);
+HMIRA_CAPABILITY(triangle_only_mesh);
+// Two hooks whose concepts take other parameters: the vertex handle, and the traits alone.
+struct cap_removal_queryable_mesh {
+    static constexpr const char* name = "removal_queryable_mesh";
+    template <class M>
+    static constexpr bool supported =
+        hmira::removal_queryable_mesh<M, hmira::default_traits<M>, typename hmira::default_traits<M>::vertex_handle>;
+};
+struct cap_fault_injecting_traits {
+    static constexpr const char* name = "fault_injecting_traits";
+    template <class M>
+    static constexpr bool supported = hmira::fault_injecting_traits<hmira::default_traits<M>>;
+};
 using capabilities =
     row_list<cap_mesh_element_types, cap_vertex_list_mesh, cap_face_list_mesh, cap_edge_list_mesh, cap_vertex_index_mesh,
              cap_face_index_mesh, cap_edge_index_mesh, cap_face_vertex_range_mesh, cap_positioned_mesh,
@@ -253,7 +272,9 @@ using capabilities =
              cap_vertex_edge_adjacency_mesh, cap_face_adjacency_mesh, cap_halfedge_navigable_mesh, cap_halfedge_index_mesh,
              cap_inner_ring_mesh, cap_mesh_builder, cap_polygon_mesh_builder, cap_face_reversible_mesh,
              cap_halfedge_mutable_mesh, cap_inner_ring_mutable_mesh, cap_face_removal_mesh, cap_vertex_removal_mesh,
-             cap_change_counted_mesh>;
+             cap_change_counted_mesh, cap_reservable_mesh, cap_bulk_growable_mesh, cap_orientation_reversible_mesh,
+             cap_erase_preparing_mesh, cap_bulk_vertex_removal_mesh, cap_vertex_halfedge_restorable_mesh,
+             cap_removal_queryable_mesh, cap_triangle_only_mesh, cap_fault_injecting_traits>;
 
 // A few claims spelled out, so that the compiler states them even before the table is read.
 static_assert(!hmira::vertex_adjacency_mesh<hmira::face_vertex_mesh>);

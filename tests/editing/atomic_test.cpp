@@ -412,7 +412,17 @@ TYPED_TEST(atomic_test, a_failure_or_bad_alloc_at_every_step_of_an_edit_leaves_t
                 h = T::next(plugged, h);
             } while (h != r);
             planned_edit<M> b{.kind = edit_kind::bevel1, .vertices = {}, .edges = ring_edges, .faces = {}, .amount = 0.1, .clamp = true};
-            check_every_fault(plugged, b, "plugged ring, bevel its edges");
+            {
+                // The ring lies flat in the top face, so its bevelled corners would be faces of
+                // zero area: bevel refuses the selection and leaves the mesh as it was.
+                using FT = faulty_traits<M>;
+                FT::reset();
+                M m = plugged;
+                const auto before = hmira_test::snapshot(m);
+                const auto e = run<M, FT>(m, b);
+                ASSERT_TRUE(e) << "a flat ring's edges were bevelled";
+                EXPECT_TRUE(hmira_test::snapshot(m) == before) << e->message;
+            }
             planned_edit<M> t2{.kind = edit_kind::truncate, .vertices = ring_vertices, .edges = {}, .faces = {}, .amount = 0.25, .clamp = true};
             check_every_fault(plugged, t2, "plugged ring, truncate its vertices");
         }
@@ -474,8 +484,9 @@ TEST(atomic_source, no_result_is_discarded_or_dereferenced_unchecked_in_include)
     ASSERT_TRUE(std::filesystem::is_directory(root)) << root;
     const std::regex discarded(R"(\(void\)\s*[A-Za-z_][A-Za-z_0-9:]*\s*(<[^;]*>)?\s*\()");
     const std::regex arrow_on_call(R"([A-Za-z_0-9>]\s*\([^()]*(\([^()]*\)[^()]*)*\)\s*->\s*[A-Za-z_])");
-    // `*begin()` and the like dereference iterators, not results.
-    const std::regex star_on_call(R"((=|return|\()\s*\*\s*(?!begin\b|end\b)[A-Za-z_][A-Za-z_0-9:]*\s*(<[^;]*>)?\s*\()");
+    // `*begin()`, `*std::prev(it)` and the like dereference iterators, not results.
+    const std::regex star_on_call(
+        R"((=|return|\()\s*\*\s*(?!begin\b|end\b|std::prev\b|std::next\b)[A-Za-z_][A-Za-z_0-9:]*\s*(<[^;]*>)?\s*\()");
     // A trailing return type (`[...](...) -> T {`, `auto f(...) -> T`) is no dereference.
     const std::regex trailing_return(
         R"(\)\s*->\s*(decltype\b|[A-Za-z_:]+\s*<[^;]*>\s*(\{|$|requires)|[A-Za-z_:]+\s*(\{|$|requires)))");

@@ -62,6 +62,31 @@ TYPED_TEST(writer_non_finite, every_writer_refuses_a_non_finite_coordinate_namin
     }
 }
 
+TYPED_TEST(writer_non_finite, float_files_refuse_a_coordinate_beyond_float_range_naming_the_vertex) {
+    using M = TypeParam;
+    using T = default_traits<M>;
+    M m;
+    ASSERT_TRUE(generate_tetrahedron(m));
+    auto v = *std::next(T::vertices(m).begin(), 2);
+    T::set_position(m, v, {0, 1e39, 0});
+    scratch_dir dir;
+    for (const auto& [file, options] : {std::pair<const char*, io::write_options>{"f.stl", {}},
+                                        {"f.ply", {.ply_coordinates = io::ply_scalar::float32}}}) {
+        SCOPED_TRACE(file);
+        auto r = io::write_mesh(m, dir / file, options);
+        ASSERT_FALSE(r);
+        EXPECT_EQ(r.error().code, errc::unsupported);
+        EXPECT_EQ(r.error().element, 2);
+        EXPECT_NE(r.error().message.find((dir / file).string() + ": "), std::string::npos) << r.error().message;
+        EXPECT_NE(r.error().message.find("vertex 2 has a coordinate (1e+39) beyond the range of float"),
+                  std::string::npos)
+            << r.error().message;
+        EXPECT_FALSE(std::filesystem::exists(dir / file));
+    }
+    // Double coordinates hold it: the default PLY, OBJ and OFF write it.
+    for (const char* file : {"d.ply", "d.obj", "d.off"}) EXPECT_TRUE(io::write_mesh(m, dir / file)) << file;
+}
+
 TYPED_TEST(writer_non_finite, the_largest_finite_coordinates_are_written_and_read_back_exactly) {
     using M = TypeParam;
     using T = default_traits<M>;

@@ -248,7 +248,8 @@ bool put_obj(const M& mesh, std::ostream& stream, const write_options& options) 
 template <class M, class T = default_traits<M>>
     requires writable_mesh<M, T>
 result<void> write_obj_to(const M& mesh, std::ostream& stream, const write_options& options = {}) {
-    if (auto ok = detail::refuse_unwritable<M, T>(mesh, "OBJ"); !ok) return ok;  // before any byte is written
+    // Before any byte is written.
+    if (auto ok = detail::refuse_unwritable<M, T>(mesh, "OBJ"); !ok) return ok;
     if (!detail::put_obj<M, T>(mesh, stream, options)) return detail::stream_failed("OBJ");
     return {};
 }
@@ -269,7 +270,7 @@ result<std::string> format_obj(const M& mesh, const write_options& options = {})
 template <class M, class T = default_traits<M>>
     requires writable_mesh<M, T>
 result<void> write_obj(const M& mesh, const std::filesystem::path& path, const write_options& options = {}) {
-    if (auto ok = detail::refuse_unwritable<M, T>(mesh, "OBJ"); !ok) return ok.error();
+    if (auto ok = detail::refuse_unwritable<M, T>(mesh, "OBJ"); !ok) return detail::at_path(path, ok.error());
     return detail::write_file_atomically(path, [&](std::ostream& o) { return detail::put_obj<M, T>(mesh, o, options); });
 }
 

@@ -207,7 +207,8 @@ bool put_off(const M& mesh, std::ostream& stream, const write_options& options) 
 template <class M, class T = default_traits<M>>
     requires writable_mesh<M, T>
 result<void> write_off_to(const M& mesh, std::ostream& stream, const write_options& options = {}) {
-    if (auto ok = detail::refuse_unwritable<M, T>(mesh, "OFF"); !ok) return ok;  // before any byte is written
+    // Before any byte is written.
+    if (auto ok = detail::refuse_unwritable<M, T>(mesh, "OFF"); !ok) return ok;
     if (!detail::put_off<M, T>(mesh, stream, options)) return detail::stream_failed("OFF");
     return {};
 }
@@ -228,7 +229,7 @@ result<std::string> format_off(const M& mesh, const write_options& options = {})
 template <class M, class T = default_traits<M>>
     requires writable_mesh<M, T>
 result<void> write_off(const M& mesh, const std::filesystem::path& path, const write_options& options = {}) {
-    if (auto ok = detail::refuse_unwritable<M, T>(mesh, "OFF"); !ok) return ok.error();
+    if (auto ok = detail::refuse_unwritable<M, T>(mesh, "OFF"); !ok) return detail::at_path(path, ok.error());
     return detail::write_file_atomically(path, [&](std::ostream& o) { return detail::put_off<M, T>(mesh, o, options); });
 }
 

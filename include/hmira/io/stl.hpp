@@ -365,7 +365,7 @@ bool write_stl_planned(const M& mesh, std::ostream& stream, const stl_triangles<
 template <class M, class T = default_traits<M>>
     requires writable_mesh<M, T>
 result<void> write_stl_to(const M& mesh, std::ostream& stream, const write_options& options = {}) {
-    if (auto ok = detail::refuse_non_finite<M, T>(mesh, "STL"); !ok) return ok;
+    if (auto ok = detail::refuse_non_finite<M, T>(mesh, "STL", true); !ok) return ok;
     auto plan = detail::plan_stl_triangles<M, T>(mesh);
     if (!plan) return plan.error();
     if (!detail::write_stl_planned<M, T>(mesh, stream, *plan, options)) return detail::stream_failed("STL");
@@ -384,13 +384,14 @@ result<std::string> format_stl(const M& mesh, const write_options& options = {})
 /// Writes the mesh as STL, atomically. Coordinates become float. Faces are triangulated as
 /// write_stl_to says, before the file is touched.
 /// Complexity: O(C) for triangle meshes; face_triangles' cost on the other faces.
-/// Errors: errc::unsupported naming a vertex with a non-finite coordinate; errc::topology (or
+/// Errors: errc::unsupported naming a vertex with a non-finite coordinate or one beyond float's
+/// range; errc::topology (or
 /// the code face_triangles gives) naming a face whose projection is not simple; with no file
 /// written and any existing file unchanged; errc::io_error.
 template <class M, class T = default_traits<M>>
     requires writable_mesh<M, T>
 result<void> write_stl(const M& mesh, const std::filesystem::path& path, const write_options& options = {}) {
-    if (auto ok = detail::refuse_non_finite<M, T>(mesh, "STL"); !ok) return ok.error();
+    if (auto ok = detail::refuse_non_finite<M, T>(mesh, "STL", true); !ok) return detail::at_path(path, ok.error());
     auto plan = detail::plan_stl_triangles<M, T>(mesh);
     if (!plan) return plan.error();
     return detail::write_file_atomically(path, [&](std::ostream& o) { return detail::write_stl_planned<M, T>(mesh, o, *plan, options); });

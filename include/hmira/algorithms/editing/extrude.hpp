@@ -95,13 +95,8 @@ template <class M, class T>
 vec3<double> area_vector_with_rings(const M& m, typename T::face_handle f) {
     vec3<double> n{};
     for (auto start : face_loops<M, T>(m, f))
-        for (auto h : loop_of<M, T>(m, start)) {
-            const auto a = pos<M, T>(m, T::target(m, T::opposite(m, h)));
-            const auto b = pos<M, T>(m, T::target(m, h));
-            n.x += (a.y - b.y) * (a.z + b.z);
-            n.y += (a.z - b.z) * (a.x + b.x);
-            n.z += (a.x - b.x) * (a.y + b.y);
-        }
+        for (auto h : loop_of<M, T>(m, start))
+            n += newell_term(pos<M, T>(m, T::target(m, T::opposite(m, h))), pos<M, T>(m, T::target(m, h)));
     return n;
 }
 

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "../../concepts.hpp"
+#include "face_normal.hpp"
 
 namespace hmira {
 
@@ -33,21 +34,6 @@ template <class M, class T = default_traits<M>>
 concept vertex_normals_mesh = face_vertex_range_mesh<M, T> && positioned_mesh<M, T> && vertex_index_mesh<M, T>;
 
 namespace detail {
-
-/// Newell's normal of a polygon: exact for planar polygons of any degree (its length is
-/// twice the area) and a stable average for slightly non-planar ones.
-template <class S>
-vec3<S> newell_normal(const std::vector<vec3<S>>& p) {
-    vec3<S> n{};
-    for (std::size_t i = 0, k = p.size(); i < k; ++i) {
-        const auto& a = p[i];
-        const auto& b = p[(i + 1) % k];
-        n.x += (a.y - b.y) * (a.z + b.z);
-        n.y += (a.z - b.z) * (a.x + b.x);
-        n.z += (a.x - b.x) * (a.y + b.y);
-    }
-    return n;
-}
 
 /// Interior angle at corner `at` between the sides to `prev` and `next`, in [0, 2 pi), seen
 /// from the side `unit_normal` points to, so a reflex corner of a concave polygon counts > pi.
@@ -93,7 +79,7 @@ std::vector<vec3<typename T::scalar>> vertex_normals(const M& mesh, const vertex
         }
         const std::size_t k = corner.size();
         if (k < 3) continue;
-        const P face_normal = detail::newell_normal(corner);
+        const P face_normal = newell_normal(corner);
         if (options.weighting == normal_weighting::area) {
             const P weighted = face_normal * S(0.5);  // |Newell normal| is twice the area
             for (std::size_t i = 0; i < k; ++i) normals[slot[i]] += weighted;

@@ -4,6 +4,9 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
+#include <string_view>
+#include <utility>
 #include <cmath>
 #include <cstddef>
 #include <initializer_list>
@@ -12,6 +15,7 @@
 #include <vector>
 
 #include "../../concepts.hpp"
+#include "../../core/enum_names.hpp"
 #include "../../core/progress.hpp"
 #include "../../core/result.hpp"
 #include "../triangle/triangle_common.hpp"
@@ -23,6 +27,12 @@ enum class laplacian_weights {
     uniform,    ///< each neighbour alike (umbrella operator): also evens out the sampling
     cotangent,  ///< (cot alpha + cot beta) / 2 per edge: moves along the normal only (triangles only)
 };
+
+/// The weights' names: "uniform", "cotangent" (see core/enum_names.hpp).
+constexpr auto enum_names(laplacian_weights) {
+    return std::array{std::pair{laplacian_weights::uniform, std::string_view("uniform")},
+                      std::pair{laplacian_weights::cotangent, std::string_view("cotangent")}};
+}
 
 /// Options of laplacian_smooth.
 struct laplacian_smooth_options {

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "../../concepts.hpp"
+#include "../geometry/face_normal.hpp"
 #include "../../core/result.hpp"
 #include "../euler/euler_common.hpp"
 #include "../euler/make_edge_face.hpp"
@@ -64,11 +65,7 @@ result<face_polygon<M, T>> project_face(const M& m, typename T::face_handle f) {
     auto name = [&] { return "face " + std::to_string(T::face_index(m, f)); };
     vec3<double> n{};
     const auto& outer = out.loops[0];
-    for (std::size_t i = 0; i < outer.size(); ++i) {
-        const auto& a = p[outer[i]];
-        const auto& b = p[outer[(i + 1) % outer.size()]];
-        n += vec3<double>{(a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y)};
-    }
+    for (std::size_t i = 0; i < outer.size(); ++i) n += newell_term(p[outer[i]], p[outer[(i + 1) % outer.size()]]);
     if (!std::isfinite(n.x) || !std::isfinite(n.y) || !std::isfinite(n.z))
         return fail(errc::invalid_argument, name() + " has a corner that is not finite", (long long)T::face_index(m, f));
     const double ax = std::fabs(n.x), ay = std::fabs(n.y), az = std::fabs(n.z);
@@ -109,11 +106,7 @@ quad_cut<M, T> convex_quad_cut(const M& m, typename T::face_handle f, bool delau
         p[k] = {double(q.x), double(q.y), double(q.z)};
     }
     vec3<double> nn{};  // the Newell normal, as project_face computes it
-    for (std::size_t i = 0; i < 4; ++i) {
-        const auto& a = p[i];
-        const auto& b = p[(i + 1) % 4];
-        nn += vec3<double>{(a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y)};
-    }
+    for (std::size_t i = 0; i < 4; ++i) nn += newell_term(p[i], p[(i + 1) % 4]);
     if (!std::isfinite(nn.x) || !std::isfinite(nn.y) || !std::isfinite(nn.z)) return out;
     const double ax = std::fabs(nn.x), ay = std::fabs(nn.y), az = std::fabs(nn.z);
     if (ax == 0 && ay == 0 && az == 0) return out;

@@ -6,8 +6,10 @@
 
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <cstddef>
 #include <cstdint>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -119,19 +121,28 @@ result<stl_triangles<M, T>> plan_stl_triangles(const M& mesh) {
 }
 
 /// No file of any format holds a non-finite coordinate: refuse one, naming the vertex
-/// (errc::unsupported, its index as the element). O(V).
+/// (errc::unsupported, its index as the element). `as_float`: the format stores float, so a
+/// coordinate beyond float's range, which would become infinite, is refused too. O(V).
 template <class M, class T>
-result<void> refuse_non_finite(const M& mesh, const char* format) {
+result<void> refuse_non_finite(const M& mesh, const char* format, bool as_float = false) {
     std::size_t ordinal = 0;
     for (auto v : T::vertices(mesh)) {
         const auto p = T::position(mesh, v);
-        if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2])) {
+        for (std::size_t k = 0; k < 3; ++k) {
+            const double x = static_cast<double>(p[k]);
+            const bool finite = std::isfinite(x);
+            if (finite && !(as_float && !std::isfinite(static_cast<float>(x)))) continue;
             const long long index = [&] {
                 if constexpr (vertex_index_mesh<M, T>) return static_cast<long long>(T::vertex_index(mesh, v));
                 else return static_cast<long long>(ordinal);
             }();
-            return fail(errc::unsupported, std::string(format) + " writer: vertex " + std::to_string(index) +
-                                               " has a coordinate that is not finite (NaN or infinity); nothing is written",
+            char shown[32];
+            std::snprintf(shown, sizeof shown, "%g", x);
+            const std::string why = finite ? std::string(" has a coordinate (") + shown +
+                                                 ") beyond the range of float (about 3.4e38), which this file stores"
+                                           : " has a coordinate that is not finite (NaN or infinity)";
+            return fail(errc::unsupported,
+                        std::string(format) + " writer: vertex " + std::to_string(index) + why + "; nothing is written",
                         index);
         }
         ++ordinal;
@@ -140,11 +151,17 @@ result<void> refuse_non_finite(const M& mesh, const char* format) {
 }
 
 /// What OBJ, OFF and PLY check before writing a byte: no face with inner rings, no
-/// non-finite coordinate.
+/// coordinate the file cannot hold.
 template <class M, class T>
-result<void> refuse_unwritable(const M& mesh, const char* format) {
+result<void> refuse_unwritable(const M& mesh, const char* format, bool as_float = false) {
     if (auto ok = refuse_ringed_faces<M, T>(mesh, format); !ok) return ok;
-    return refuse_non_finite<M, T>(mesh, format);
+    return refuse_non_finite<M, T>(mesh, format, as_float);
+}
+
+/// `e` with the file's name in front, for the errors of write_obj and the other path writers.
+inline hmira::error at_path(const std::filesystem::path& path, hmira::error e) {
+    e.message = path.string() + ": " + e.message;
+    return e;
 }
 
 /// The error of a writer whose stream refused the data.

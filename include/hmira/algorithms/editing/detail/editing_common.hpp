@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "../../../concepts.hpp"
+#include "../../geometry/face_normal.hpp"
 #include "../../../core/progress.hpp"
 #include "../../../core/result.hpp"
 #include "../../../core/vec3.hpp"
@@ -442,11 +443,7 @@ vec3<double> face_area_vector(const M& m, typename T::face_handle f) {
     const auto start = T::face_halfedge(m, f);
     auto h = start;
     do {
-        const auto a = pos<M, T>(m, T::target(m, T::opposite(m, h)));
-        const auto b = pos<M, T>(m, T::target(m, h));
-        n.x += (a.y - b.y) * (a.z + b.z);
-        n.y += (a.z - b.z) * (a.x + b.x);
-        n.z += (a.x - b.x) * (a.y + b.y);
+        n += newell_term(pos<M, T>(m, T::target(m, T::opposite(m, h))), pos<M, T>(m, T::target(m, h)));
         h = T::next(m, h);
     } while (h != start);
     return n;
