@@ -407,7 +407,7 @@ auto on_copy(py_mesh& self, Op&& op) {
 template <hmira::named_enum E>
 E enum_arg(const std::string& name, const char* who, const char* option) {
     if (const auto e = hmira::from_string<E>(name)) return *e;
-    value_error(std::string(who) + ": " + option + " must be one of " + hmira::quoted_names<E>() + ", got '" + name + "'");
+    value_error(std::string(who) + ": unknown " + option + " '" + name + "' (supported: " + hmira::quoted_names<E>() + ")");
 }
 
 hmira::laplacian_weights weights_arg(const std::string& w, const char* who) {
