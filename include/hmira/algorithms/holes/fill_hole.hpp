@@ -504,7 +504,7 @@ enum class open_hole_reason {
 struct open_hole {
     std::size_t vertex = 0;  ///< index of the loop's first vertex (the target of its first boundary halfedge)
     std::size_t edges = 0;   ///< the loop's length
-    open_hole_reason reason = open_hole_reason::too_long;
+    open_hole_reason reason = open_hole_reason::too_long;  ///< why it was left open
     errc code = errc::unsupported;  ///< for `refused`: fill_hole's error code
     std::string message;            ///< for `refused`: fill_hole's one-line reason
 };
