@@ -22,9 +22,9 @@ struct one_at_a_time_traits : hmira::mesh_traits<hm> {
     static void resize() = delete;  // hides the bulk resize (bulk_growable_mesh needs resize(m, v, e, f))
 };
 
-static_assert(hmira::detail::subdivision::bulk_growable_mesh<hm, hmira::default_traits<hm>>);
+static_assert(hmira::bulk_growable_mesh<hm, hmira::default_traits<hm>>);
 static_assert(hmira::change_counted_mesh<hm, hmira::default_traits<hm>>);
-static_assert(!hmira::detail::subdivision::bulk_growable_mesh<hm, one_at_a_time_traits>);
+static_assert(!hmira::bulk_growable_mesh<hm, one_at_a_time_traits>);
 
 /// Every index bound, link, position and face halfedge (take_snapshot), without the change
 /// count it ends with: one resize per block counts fewer changes than one add per element.

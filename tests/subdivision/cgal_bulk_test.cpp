@@ -27,7 +27,7 @@ using E = mesh::Edge_index;
 using F = mesh::Face_index;
 using H = mesh::Halfedge_index;
 
-static_assert(hmira::detail::subdivision::bulk_growable_mesh<mesh, traits>,
+static_assert(hmira::bulk_growable_mesh<mesh, traits>,
               "the subdivision schemes must take Surface_mesh's new elements in blocks");
 
 /// The user's property maps of every kind, each old element tagged with its index + 1 (0 is
