@@ -5,6 +5,7 @@
 #include <sys/resource.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -84,9 +85,11 @@ std::optional<std::uint64_t> proc_kib(const char* path, const std::string& key) 
 
 /// The memory this process can still take: the system's available memory (MemAvailable), or
 /// less where the address-space limit (ulimit -v) or the cgroup's memory.max leaves less.
-/// nullopt when none of them can be read.
+/// nullopt when none of them can be read. HMIRA_TEST_MEMAVAILABLE=BYTES stands in for
+/// MemAvailable, for tests (an address-space limit cannot: the sanitizers reserve terabytes).
 std::optional<std::uint64_t> free_memory() {
     std::optional<std::uint64_t> free = proc_kib("/proc/meminfo", "MemAvailable");
+    if (const char* s = std::getenv("HMIRA_TEST_MEMAVAILABLE")) free = std::strtoull(s, nullptr, 10);
     auto lower = [&](std::uint64_t v) { free = free ? std::min(*free, v) : v; };
     rlimit as{};
     if (::getrlimit(RLIMIT_AS, &as) == 0 && as.rlim_cur != RLIM_INFINITY) {

@@ -165,12 +165,12 @@ TEST(CliMarchingCubes, an_iso_at_the_end_of_the_range_is_accepted) {
 TEST(CliVoxelize, a_grid_larger_than_the_free_memory_is_refused_at_once_naming_the_estimate) {
     scratch_dir dir;
     // A 2 x 1 x 1 box: at -n 2048 --padding 1024 the grid is 4096 x 3072 x 3072 voxels, whose
-    // bits (64 words a row) take 8 * 64 * 3072 * 3072 bytes, about 4.8 GB; run where only
-    // 3 GB of address space is left (ulimit -v), so nothing that size can be allocated.
+    // bits (64 words a row) take 8 * 64 * 3072 * 3072 bytes, about 4.8 GB; run as if only 3 GB
+    // were free (HMIRA_TEST_MEMAVAILABLE: an address-space limit would stop the sanitizers).
     hmira_test::write_bytes(dir.path() / "box.off",
                             "OFF\n8 6 0\n0 0 0\n2 0 0\n2 0 1\n0 0 1\n0 1 0\n2 1 0\n2 1 1\n0 1 1\n"
                             "4 0 1 2 3\n4 7 6 5 4\n4 0 4 5 1\n4 1 5 6 2\n4 2 6 7 3\n4 3 7 4 0\n");
-    const auto r = hmira(dir, "voxelize box.off out.raw -n 2048 --padding 1024", "ulimit -v 3000000 &&");
+    const auto r = hmira(dir, "voxelize box.off out.raw -n 2048 --padding 1024", "HMIRA_TEST_MEMAVAILABLE=3000000000");
     EXPECT_EQ(r.code, 1) << r.err;
     EXPECT_TRUE(
         one_line_error(r, "4096 x 3072 x 3072 voxels (--resolution 2048, --padding 1024) needs about 4.8 GB"));
@@ -179,7 +179,7 @@ TEST(CliVoxelize, a_grid_larger_than_the_free_memory_is_refused_at_once_naming_t
     EXPECT_FALSE(std::filesystem::exists(dir.path() / "out.raw"));
     EXPECT_FALSE(std::filesystem::exists(dir.path() / "out.raw.txt"));
     // A grid that fits still voxelizes under the same limit.
-    const auto small = hmira(dir, "voxelize box.off out.raw -n 32", "ulimit -v 3000000 &&");
+    const auto small = hmira(dir, "voxelize box.off out.raw -n 32", "HMIRA_TEST_MEMAVAILABLE=3000000000");
     EXPECT_EQ(small.code, 0) << small.err;
     EXPECT_TRUE(std::filesystem::exists(dir.path() / "out.raw"));
 }

@@ -100,6 +100,9 @@ result<grid_geometry> voxel_grid_around(const M& mesh, std::size_t resolution, s
     }
     if (!any) return fail(errc::invalid_argument, "voxel_grid_around: the mesh has no vertices");
     const double extent = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
+    if (!std::isfinite(extent))
+        return fail(errc::unsupported, "voxel_grid_around: the mesh spans more than the largest double along an axis; "
+                                       "scale it down to voxelize it");
     const double h = extent > 0 ? extent / double(resolution) : 1.0;
     grid_geometry g;
     for (std::size_t a = 0; a < 3; ++a) {
