@@ -1,4 +1,4 @@
-// Core benchmarks (issue 3): each model built from an indexed face list, a one-ring traversal
+// Core benchmarks: each model built from an indexed face list, a one-ring traversal
 // summing neighbour positions, flip normals, and the adapter flavours, on a real mesh and a
 // synthetic 2M-triangle grid; OpenMesh and CGAL run natively and through hmira traits.
 //

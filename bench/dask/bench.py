@@ -1,4 +1,4 @@
-"""Scale benchmark of hmira.dask.marching_cubes (issue 16).
+"""Scale benchmark of hmira.dask.marching_cubes.
 
 scale:   an n^3 float32 gyroid (period 128 samples), generated lazily chunk by chunk by Dask,
          meshed on a LocalCluster of 2 worker processes limited to 2 GiB each, with 128^3 chunks,

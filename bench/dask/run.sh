@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Issue 16's scale benchmark, by one command:
+# The Dask scale benchmark, by one command:
 #   bench/dask/run.sh                 # 512^3 comparison, then the 1024^3 LocalCluster run
 #   bench/dask/run.sh --part scale    # bench.py --help for the options
 #   bench/dask/run.sh raw12g [GiB]    # `hmira mc` on a 12 GiB .raw, peak RSS by /usr/bin/time -v

@@ -1,4 +1,4 @@
-// Scaling of truncate, bevel and extrude applied to every element (issue 13, item 2): each edit
+// Scaling of truncate, bevel and extrude applied to every element: each edit
 // on all vertices / edges / faces of quad tori from 10k to 1M faces, with the fitted exponent of
 // time against size and the time per element; then bevel of every edge against truncate of
 // every vertex of a 128^3 gyroid from marching cubes (~450k edges), library calls only.

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Issue 20: does memory (bandwidth, first touch of the output's fresh pages) explain marching
+"""Does memory (bandwidth, first touch of the output's fresh pages) explain marching
 cubes' 1 -> 2 thread speed-up on the 384^3 volumes? Runs bandwidth_probe, then hmira and
 vtkFlyingEdges3D at 1 and 2 threads on the same volumes (wall medians), and prints how much
 of hmira's time writing its output to fresh pages would take at the probe's first-touch rate.

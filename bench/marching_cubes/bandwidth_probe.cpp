@@ -1,4 +1,4 @@
-// Memory-bandwidth probe for issue 20: is marching cubes' 1 -> 2 thread speed-up on the large
+// Memory-bandwidth probe: is marching cubes' 1 -> 2 thread speed-up on the large
 // volumes capped by the machine rather than by the algorithm? Measures GB/s with 1 and 2
 // std::threads for the memory patterns MC has:
 //   read        streaming read (sum) of an already-touched buffer the size of the input volume

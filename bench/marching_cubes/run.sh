@@ -19,7 +19,7 @@ export HMIRA_TEST_DATA="$root/build/test-data"
 # The same volumes against vtkFlyingEdges3D in CPU time (all threads), medians of 7: on a shared
 # machine the wall times above mostly measure the other processes.
 "$py" "$root/bench/marching_cubes/cpu_side_by_side.py" "$work/volumes" "$build/bench/marching_cubes/bench_marching_cubes" 7 1 2 2>/dev/null
-# Issue 20: memory bandwidth on this machine (bandwidth_probe: read, first-touch write, touched
+# Memory bandwidth on this machine (bandwidth_probe: read, first-touch write, touched
 # write at 1 and 2 threads) against hmira's and vtkFlyingEdges3D's 1 -> 2 thread speed-ups at 384^3.
 echo
 echo "## Memory bandwidth and the 384^3 speed-ups (bandwidth_probe, bandwidth.py)"

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# hmira marching cubes' 1 -> 2 thread speed-up (issue 20: >= 1.8 at 256^3 and above, >= 1.4 at
-# 128^3), measured so that a busy spell on a shared machine cannot land on one side only: the
+# hmira marching cubes' 1 -> 2 thread speed-up (the target is >= 1.8 at 256^3 and above, >= 1.4
+# at 128^3), measured so that a busy spell on a shared machine cannot land on one side only: the
 # 1- and 2-thread repetitions of every volume run in random order
 # (--benchmark_enable_random_interleaving), and each side is the median wall time of N of them.
 # A 20 ms call measured with 5 repetitions per side, one side after the other, gave speed-ups

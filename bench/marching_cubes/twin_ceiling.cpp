@@ -1,4 +1,4 @@
-// Issue 20: how much of marching cubes' 1 -> 2 thread speed-up does this machine allow for this
+// How much of marching cubes' 1 -> 2 thread speed-up does this machine allow for this
 // very work? Each round runs, in random order:
 //   solo   one call with 1 thread;
 //   two    one call with 2 threads (hmira's own parallel passes, TBB);

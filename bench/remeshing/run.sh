@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Isotropic remeshing against CGAL (issue 19): builds remeshing_bench (Release, benchmarks on)
+# Isotropic remeshing against CGAL: builds remeshing_bench (Release, benchmarks on)
 # and runs it on real meshes from scripts/test-data.sh; each run prints times, the ratios
 # against the targets and the quality of every output. Usage: bench/remeshing/run.sh [build-dir]
 set -euo pipefail

@@ -10,7 +10,7 @@
 #      both runs use huge pages, with [never] neither does.
 # At a million faces the kernel's faulting and zeroing of the output's fresh pages is about half
 # the CPU time; run 2 shows how much of that is per-page overhead rather than zeroing.
-# Each run ends with issue 18's tables: the generic algorithm on OpenMesh and Surface_mesh / on
+# Each run ends with the target tables: the generic algorithm on OpenMesh and Surface_mesh / on
 # halfedge_mesh, whole and less each model's up-front reserve (timed alone as
 # <scheme>/reserve/<model>) or whole storage growth (reserve plus resize to the final counts,
 # <scheme>/grow/<model>), with the fresh MB of the whole run and of that step alone; the load

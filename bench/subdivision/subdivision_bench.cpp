@@ -370,7 +370,7 @@ int main(int argc, char** argv) {
         }
     }
     }
-    // Issue 18's <= 1.1 for the generic algorithm on each model, whole and less that model's
+    // The target, <= 1.1, for the generic algorithm on each model, whole and less that model's
     // reserve (the <scheme>/reserve/<model> case: the same T::reserve, to the same counts, the
     // algorithm makes before its first change), with the fresh memory each touched.
     auto& cpu = cpu_seconds_by_case();

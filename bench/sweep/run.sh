@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Size sweeps (issue 20): each performance-critical algorithm from 10^4 elements up to 10^7
+# Size sweeps: each performance-critical algorithm from 10^4 elements up to 10^7
 # (the linear ones; less where time or memory do not allow, see bench/sweep/sweep_bench.cpp),
 # the fitted exponent of CPU time against size beside the documented complexity, the spread of
 # the time per element, each size's working set, and PASS/FAIL/UNSURE; then the editing sweeps

@@ -1,5 +1,5 @@
 // bench/sweep/sweep_bench.cpp
-// Size sweeps (issue 20): each performance-critical algorithm at sizes from 10^4 elements up
+// Size sweeps: each performance-critical algorithm at sizes from 10^4 elements up
 // (10^7 for the linear ones that fit in time and memory), the exponent of CPU time against
 // size fitted on log-log axes and compared with the complexity its doc block states, and the
 // spread of the time per element, and each size's working set (the input and what the call

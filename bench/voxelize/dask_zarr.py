@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Chunked voxelization of a real mesh at 2048^3 (issue 16): hmira.dask.voxelize on a
+"""Chunked voxelization of a real mesh at 2048^3: hmira.dask.voxelize on a
 distributed LocalCluster of 2 worker processes limited to 2 GiB each, 256^3 chunks, written to
 a zarr v3 store; reports wall time, the store's size, whether any worker restarted, and the
 peak RSS of each worker (resource.getrusage through client.run).
