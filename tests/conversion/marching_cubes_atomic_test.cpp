@@ -1,4 +1,4 @@
-// marching_cubes into a mesh is atomic (issue 13, item 1): whatever stops it part way (a
+// marching_cubes into a mesh is atomic: whatever stops it part way (a
 // cancel at any progress call, a triangle the mesh refuses, std::bad_alloc from any builder
 // call, a NaN sample) leaves a mesh that already held elements exactly as it was, on every
 // model; a clean run afterwards still adds the whole surface.

@@ -1,4 +1,4 @@
-// Marching cubes by blocks (issue 16): for random chunkings of analytic fields, noise, samples
+// Marching cubes by blocks: for random chunkings of analytic fields, noise, samples
 // exactly at the iso value and real CT/MRI volumes, the welded blocks equal the whole-grid
 // result element for element, positions bit for bit.
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# `hmira mc` reads .raw and .inr volumes slab by slab (issue 16): its peak memory (/usr/bin/time
+# `hmira mc` reads .raw and .inr volumes slab by slab: its peak memory (/usr/bin/time
 # -v) on a volume four times the allowance stays within a few slabs plus the output mesh, and
 # its output is byte for byte the whole-volume path's (a FIFO or a .inr.gz is read whole).
 #   usage: mc_slabs_rss.sh HMIRA_BINARY [TEST_DATA_DIR]
