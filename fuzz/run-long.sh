@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Long fuzzing runs (issue 14: at least 30 CPU-minutes per target before closing): builds the
+# Long fuzzing runs (at least 30 CPU-minutes per target for a parser change): builds the
 # targets as fuzz/run.sh does, then runs each for the given seconds with its dictionary on a
 # persistent working corpus (seeded from fuzz/corpus/<target>, kept between runs in the build
 # folder), and prints per target: executions, coverage (cov: edges, ft: features), corpus

@@ -19,7 +19,7 @@ command -v "$cxx" >/dev/null || { echo "fuzz: $cxx not found (apt install clang-
 mkdir -p "$out"
 status=0
 
-# Issue 8: the I/O headers, and the meshes users read into, compile with clang 14. One small
+# The I/O headers, and the meshes users read into, compile with clang 14. One small
 # translation unit per public header (detail/ excluded), generated here; a mesh header's TU
 # also instantiates its mesh class explicitly, so that every member (ranges included) is
 # compiled, not only the declarations.
@@ -50,7 +50,7 @@ echo "fuzz: header check: $((headers - failed)) of $headers headers compile with
 
 # Every target: the mesh parsers (fuzz_io.hpp) and the volume and point readers
 # (fuzz_volume.hpp), each with its keyword dictionary (dict/<target>.dict) and a copy of its
-# committed corpus (corpus/<target>/), which holds the reproducers of issue 14.
+# committed corpus (corpus/<target>/), which holds the reproducers of known hostile inputs.
 targets="obj off ply stl inr inr_gz binvox points"
 build_target() {  # build_target NAME: (re)builds $out/fuzz_NAME when a source is newer
   local bin="$out/fuzz_$1"

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Issue 14, "reading is bounded": peak memory (/usr/bin/time -v) of reading hostile inputs
+# Reading is bounded: peak memory (/usr/bin/time -v) of reading hostile inputs
 # stays below what the input may legitimately need plus 64 MiB:
 #  - a .inr.gz gzip bomb (1 GiB of zeros after a header declaring 16 MiB of samples);
 #  - /dev/zero read as a mesh with a 64 MiB input limit.

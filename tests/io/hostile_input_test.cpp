@@ -1,6 +1,6 @@
-// Hostile input (issue 14): files built to crash, exhaust or fool the readers. Each case is a
-// reproducer from the issue; every one must end in a one-line error that names the file and
-// the place, with the mesh being read into left as it was.
+// Hostile input: files built to crash, exhaust or fool the readers. Every one must end in a
+// one-line error that names the file and the place, with the mesh being read into left as it
+// was.
 #include <gtest/gtest.h>
 
 #include <sys/stat.h>
@@ -48,7 +48,7 @@ std::string rejection(const std::string& file, const std::string& bytes) {
 
 bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
 
-// ---- D1: a binary vertex element without properties -------------------------------------------
+// ---- a binary vertex element without properties -------------------------------------------------
 TEST(io_hostile, binary_ply_vertex_element_without_properties_is_rejected) {
     const std::string body = std::string("\003\000\000\000\000\001\000\000\000\002\000\000\000", 13);
     for (const char* format : {"binary_little_endian", "binary_big_endian"}) {
@@ -61,7 +61,7 @@ TEST(io_hostile, binary_ply_vertex_element_without_properties_is_rejected) {
     }
 }
 
-// ---- D8: colours that are no colours ------------------------------------------------------------
+// ---- colours that are no colours ----------------------------------------------------------------
 const std::string ply_ascii_colour_head =
     "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
     "property uchar red\nproperty uchar green\nproperty uchar blue\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n";
@@ -99,7 +99,7 @@ TEST(io_hostile, nan_and_out_of_range_colours_are_rejected_with_their_line) {
     EXPECT_TRUE(contains(msg, "short.ply: byte offset " + std::to_string(header_size + 2 * 18 + 12) + ": vertex 2: colour channel red is 300")) << msg;
 }
 
-// ---- D9: list properties where single values belong --------------------------------------------
+// ---- list properties where single values belong -------------------------------------------------
 TEST(io_hostile, ascii_ply_with_a_list_coordinate_is_rejected_like_binary) {
     const std::string head = "element vertex 3\nproperty list uchar float x\nproperty float y\nproperty float z\n"
                              "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
@@ -109,7 +109,7 @@ TEST(io_hostile, ascii_ply_with_a_list_coordinate_is_rejected_like_binary) {
     EXPECT_TRUE(contains(msg, "listb.ply:3")) << msg;
 }
 
-// ---- D10: non-finite coordinates and normals ----------------------------------------------------
+// ---- non-finite coordinates and normals ---------------------------------------------------------
 TEST(io_hostile, non_finite_coordinates_and_normals_are_rejected_in_every_format) {
     const std::string tri = "3 0 1 2\n";
     struct c {
@@ -166,7 +166,7 @@ TEST(io_hostile, non_finite_coordinates_and_normals_are_rejected_in_every_format
     }
 }
 
-// ---- D14: a negative count is called negative ----------------------------------------------------
+// ---- a negative count is called negative --------------------------------------------------------
 TEST(io_hostile, negative_off_counts_are_named_as_negative) {
     auto msg = rejection("neg.off", "OFF\n-3 1 0\n");
     EXPECT_TRUE(contains(msg, "neg.off:2: the vertex count -3 is negative")) << msg;
@@ -174,15 +174,15 @@ TEST(io_hostile, negative_off_counts_are_named_as_negative) {
     EXPECT_TRUE(contains(msg, "negf.off:2: the face count -1 is negative")) << msg;
 }
 
-// ---- D2: a file that shrinks while it is read -------------------------------------------------
+// ---- a file that shrinks while it is read -------------------------------------------------------
 TEST(io_hostile, a_file_truncated_between_open_and_read_is_an_io_error_not_a_crash) {
     scratch_dir dir;
     const auto in = dir / "shrinks.ply";
     face_vertex_mesh cube;
     ASSERT_TRUE(generate_cube(cube));
     ASSERT_TRUE(io::write_mesh(cube, in, {.ply = io::ply_encoding::binary_little_endian}));
-    // Another process truncates the file after its size is known: what used to be a SIGBUS
-    // on the mapped pages.
+    // Another process truncates the file after its size is known: reading the mapped pages past
+    // the new end would raise SIGBUS, so the reader must notice and report an I/O error.
     io::detail::input_file_size_known_hook = [](const char* path) { ASSERT_EQ(::truncate(path, 100), 0); };
     face_vertex_mesh mesh;
     auto r = io::read_mesh(mesh, in);
@@ -194,7 +194,7 @@ TEST(io_hostile, a_file_truncated_between_open_and_read_is_an_io_error_not_a_cra
     EXPECT_EQ(mesh.vertex_count(), 0u);
 }
 
-// ---- D3: endless non-regular inputs stop at the limit ------------------------------------------
+// ---- endless non-regular inputs stop at the limit -----------------------------------------------
 TEST(io_hostile, a_device_without_end_stops_at_the_input_limit_naming_file_and_limit) {
     scratch_dir dir;
     for (const char* device : {"/dev/zero", "/dev/urandom"}) {

@@ -1,6 +1,6 @@
 // tests/io/ply_face_vertex_test.cpp
-// read_mesh of a PLY file into face_vertex_mesh parses straight into the mesh's own arrays
-// (issue 20): the result must be the file's content exactly, in every PLY encoding, with its
+// read_mesh of a PLY file into face_vertex_mesh parses straight into the mesh's own arrays:
+// the result must be the file's content exactly, in every PLY encoding, with its
 // attributes; and a file the mesh refuses must leave the mesh as it was.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// Reading into a mesh keeps the user's object (issue 13, item 4): the mesh is emptied, not
+// Reading into a mesh keeps the user's object: the mesh is emptied, not
 // replaced, so the properties a user added before reading are still there afterwards, sized
 // to the new elements with their default values; on a failed read nothing changes at all.
 #include <gtest/gtest.h>

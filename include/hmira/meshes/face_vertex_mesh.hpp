@@ -140,7 +140,7 @@ public:
     result<void> assign(std::span<const Point> points, std::vector<std::size_t>&& face_offsets,
                         std::span<const std::uint32_t> corner_indices) {
         // Filled by push_back into reserved room, not sized up front: zeroing the arrays first
-        // would write every fresh page twice (issue 20).
+        // would write every fresh page twice.
         std::vector<vertex_handle> corners;
         detail::reserve_huge(corners, corner_indices.size());
         for (const auto i : corner_indices) corners.push_back(vertex_handle(i));

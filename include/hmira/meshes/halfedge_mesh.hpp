@@ -21,6 +21,7 @@
 #include "../traits.hpp"
 #include "detail/element_range.hpp"
 #include "detail/halfedge_from_polygons.hpp"
+#include "detail/halfedge_maintenance.hpp"
 #include "detail/link_face.hpp"
 #include "detail/native_traits.hpp"
 #include "detail/slots.hpp"
@@ -403,6 +404,9 @@ private:
     // Building from indexed polygons (the checks, the one-pass link and the checked fallback) lives in
     // detail/halfedge_from_polygons.hpp; it reads and writes the records directly.
     friend struct detail::halfedge_from_polygons<basic_halfedge_mesh>;
+    // Reversing the winding, garbage collection and bulk resize live in
+    // detail/halfedge_maintenance.hpp, for the same reason.
+    friend struct detail::halfedge_maintenance<basic_halfedge_mesh>;
 
     // Takes over a built mesh's elements, keeping this mesh's properties (emptied, then sized to
     // the new elements at their defaults) and slot-reuse setting, as clear_elements then add_*.
@@ -523,30 +527,7 @@ public:
     /// its outgoing halfedge, or on the boundary the boundary halfedge that entered it (now
     /// leaving it). Faces keep their outer halfedge and inner rings; handles stay valid.
     /// O(H_all + V_all), no scratch memory.
-    void reverse_orientation() noexcept {
-        for (std::size_t h = 0; h + 1 < halfedges_.size(); h += 2) {
-            auto& a = halfedges_[h];
-            auto& b = halfedges_[h + 1];
-            std::swap(a.target, b.target);
-            std::swap(a.next, a.prev);
-            std::swap(b.next, b.prev);
-        }
-        // That also moved the free list's links (a freed edge's first next) into prev: walk
-        // the list and put them back. O(free edges), no branch in the loop above.
-        std::uint32_t e = free_edges_.empty() ? detail::free_slots::none : free_edges_.top();
-        for (std::size_t k = 0; k < free_edges_.size() && e != detail::free_slots::none; ++k) {
-            auto& a = halfedges_[2 * std::size_t(e)];
-            std::swap(a.next, a.prev);
-            e = a.next.index;
-        }
-        for (std::size_t v = 0; v < vertex_out_.size(); ++v) {
-            const auto h = vertex_out_[v];
-            if (h.is_null() || (deleted_vertices_ && vertex_deleted_[v])) continue;
-            const auto& rec = halfedges_[h.index];
-            vertex_out_[v] = rec.face.is_null() ? rec.next : opposite(h);
-        }
-        ++changes_;
-    }
+    void reverse_orientation() noexcept { detail::halfedge_maintenance<basic_halfedge_mesh>::reverse_orientation(*this); }
 
     /// Whether deleted elements wait for collect_garbage().
     bool has_garbage() const noexcept { return deleted_vertices_ + deleted_edges_ + deleted_faces_ > 0; }
@@ -554,70 +535,7 @@ public:
     /// Drops deleted elements, renumbers the rest in their old order, rewrites every reference,
     /// and compacts the properties. Returns the old -> new maps. Invalidates handles and views.
     /// O(V_all + E_all + F_all).
-    index_remap collect_garbage() {
-        index_remap map;
-        auto make_map = [](const detail::zeroed_array<std::uint8_t>& deleted, std::size_t bound, std::vector<std::uint32_t>& out) {
-            out.assign(bound, UINT32_MAX);
-            std::uint32_t k = 0;
-            for (std::size_t i = 0; i < bound; ++i)
-                if (!deleted[i]) out[i] = k++;
-            return k;
-        };
-        const auto nv = make_map(vertex_deleted_, positions_.size(), map.vertices);
-        const auto ne = make_map(edge_deleted_, halfedges_.size() / 2, map.edges);
-        const auto nf = make_map(face_deleted_, faces_.size(), map.faces);
-        map.halfedges.assign(halfedges_.size(), UINT32_MAX);
-        for (std::size_t h = 0; h < halfedges_.size(); ++h)
-            if (map.edges[h >> 1] != UINT32_MAX) map.halfedges[h] = 2 * map.edges[h >> 1] + (h & 1u);
-        auto mv = [&](vertex_handle v) { return v.is_null() || v.index >= map.vertices.size() ? vertex_handle{} : vertex_handle(map.vertices[v.index]); };
-        auto mh = [&](halfedge_handle h) { return h.is_null() || h.index >= map.halfedges.size() ? halfedge_handle{} : halfedge_handle(map.halfedges[h.index]); };
-        auto mf = [&](face_handle f) { return f.is_null() || f.index >= map.faces.size() ? face_handle{} : face_handle(map.faces[f.index]); };
-
-        for (std::size_t v = 0; v < positions_.size(); ++v)
-            if (map.vertices[v] != UINT32_MAX) {
-                positions_[map.vertices[v]] = positions_[v];
-                vertex_out_[map.vertices[v]] = mh(vertex_out_[v]);
-            }
-        positions_.resize(nv);
-        vertex_out_.resize(nv);
-        for (std::size_t h = 0; h < halfedges_.size(); ++h)
-            if (map.halfedges[h] != UINT32_MAX) {
-                const auto rec = halfedges_[h];
-                halfedges_[map.halfedges[h]] = {mv(rec.target), mf(rec.face), mh(rec.next), mh(rec.prev)};
-            }
-        halfedges_.resize(2 * static_cast<std::size_t>(ne));
-        std::vector<std::vector<halfedge_handle>> rings;
-        detail::zeroed_array<std::uint32_t> face_rings;
-        for (std::size_t f = 0; f < faces_.size(); ++f)
-            if (map.faces[f] != UINT32_MAX) {
-                faces_[map.faces[f]] = mh(faces_[f]);
-                if (const auto r = face_rings_[f]; r != 0 && !ring_lists_[r - 1].empty()) {
-                    auto list = std::move(ring_lists_[r - 1]);
-                    for (auto& h : list) h = mh(h);
-                    rings.push_back(std::move(list));
-                    face_rings.at(map.faces[f], nf) = static_cast<std::uint32_t>(rings.size());
-                }
-            }
-        faces_.resize(nf);
-        ring_lists_ = std::move(rings);
-        face_rings_ = std::move(face_rings);
-        vertex_deleted_.zero();
-        edge_deleted_.zero();
-        face_deleted_.zero();
-        vertex_props_.compact(map.vertices, nv);
-        edge_props_.compact(map.edges, ne);
-        halfedge_props_.compact(map.halfedges, 2 * static_cast<std::size_t>(ne));
-        face_props_.compact(map.faces, nf);
-        deleted_vertices_ = deleted_edges_ = deleted_faces_ = 0;
-        free_vertices_.clear();
-        free_edges_.clear();
-        free_faces_.clear();
-        vertex_generations_.clear();
-        edge_generations_.clear();
-        face_generations_.clear();
-        ++changes_;
-        return map;
-    }
+    index_remap collect_garbage() { return detail::halfedge_maintenance<basic_halfedge_mesh>::collect_garbage(*this); }
 
     /// Reserves storage for that many vertices, edges and faces (index bounds).
     void reserve(std::size_t vertices, std::size_t edges, std::size_t faces) {
@@ -638,32 +556,7 @@ public:
     /// \pre a dropped element is alive and nothing refers to it.
     /// May throw std::bad_alloc, with the mesh unchanged. O(change) (amortised when it grows).
     void resize(std::size_t vertices, std::size_t edges, std::size_t faces) {
-        // Every allocation first, so that nothing changes unless all of them succeed.
-        vertex_deleted_.ensure(vertices);
-        edge_deleted_.ensure(edges);
-        face_deleted_.ensure(faces);
-        if (vertices > positions_.capacity()) positions_.reserve(std::max(vertices, 2 * positions_.capacity()));
-        vertex_out_.ensure_room(vertices);
-        halfedges_.ensure_room(2 * edges);
-        faces_.ensure_room(faces);
-        const std::size_t old_v = positions_.size(), old_e = halfedges_.size() / 2, old_f = faces_.size();
-        try {
-            vertex_props_.resize(vertices);
-            edge_props_.resize(edges);
-            halfedge_props_.resize(2 * edges);
-            face_props_.resize(faces);
-        } catch (...) {  // a user property array could not grow: shrink them all back (never throws)
-            vertex_props_.resize(old_v);
-            edge_props_.resize(old_e);
-            halfedge_props_.resize(2 * old_e);
-            face_props_.resize(old_f);
-            throw;
-        }
-        positions_.resize(vertices);
-        vertex_out_.resize(vertices, halfedge_handle{});
-        halfedges_.resize(2 * edges, halfedge_record{});
-        faces_.resize(faces, halfedge_handle{});
-        ++changes_;
+        detail::halfedge_maintenance<basic_halfedge_mesh>::resize(*this, vertices, edges, faces);
     }
     /// Removes everything, properties included.
     void clear() { *this = basic_halfedge_mesh(); }

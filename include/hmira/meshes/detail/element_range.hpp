@@ -149,10 +149,10 @@ private:
 /// The position is the cursor and a lap count, the end being (start, lap 1), as in those
 /// libraries' own circulators: ++ only tests the new cursor against start, and the compiler
 /// folds the end test into that one comparison. Unlike loop_range it has no step guard, as
-/// their circulators have none: on their handles the guard kept rings at 1.05-1.2x the native
-/// circulation (measured: OpenMesh vv_range 1.1-1.2x; CGAL vertices_around_target 1.02-1.11x,
-/// 0.91x without the guard). Corrupt links that never return to start loop for ever here, as
-/// they do in the library's own code; hmira::validate stops on such a loop and names it.
+/// their circulators have none: a guard costs a comparison per step, which keeps the ring
+/// slower than those libraries' native circulation. Corrupt links that never return to start
+/// loop for ever here, as they do in the library's own code; hmira::validate stops on such a
+/// loop and names it.
 template <class Mesh, class Cursor, class Policy>
 class lap_range : public std::ranges::view_base {
 public:

@@ -2,7 +2,7 @@
 // basic_halfedge_mesh built from indexed polygons (from_polygons, assign_polygons): the per-face
 // checks, the one-pass link over the corners, and the slower checked link that runs only on a
 // refused input, to name the same faulty element whatever the face order. A friend of the mesh,
-// writing its records directly; everything stays an inline template, as it was inside the class.
+// writing its records directly; everything is an inline template.
 #pragma once
 
 #include <algorithm>

@@ -99,52 +99,29 @@ void prefer_boundary_halfedge(M& m, typename T::vertex_handle v) {
 
 namespace linking {
 
-/// link_face for faces of N corners (N = 0: any number, n given at run time). With N known,
-/// every loop over the corners unrolls and the corner after i is a constant: the `(i + 1) % n`
-/// of the run-time loops is a division, and the one that names the vertex a fan walk looks for
-/// sat on that walk's chain of dependent reads.
+/// The corner after corner i of a face of n corners.
+constexpr std::size_t corner_after(std::size_t i, std::size_t n) { return i + 1 == n ? std::size_t{0} : i + 1; }
+
+/// The first stage of link_face_sized: each corner's stored halfedge (starts), whether it is
+/// interior (fresh[i] = 4, reported in order by check_corners), and the existing halfedge from
+/// it to the next corner, or null (sides). The first reads of each corner (its stored halfedge,
+/// then that halfedge's record) are likely cache misses that do not depend on the other
+/// corners': each stage is done for all corners before the next, so that their misses overlap
+/// instead of queueing behind each corner's fan walk.
 template <std::size_t N, class M, class T>
-result<typename T::face_handle> link_face_sized(M& m, const typename T::vertex_handle* vs, std::size_t n_run,
-                                                face_link_scratch<typename T::halfedge_handle>& scratch) {
+void find_sides(M& m, const typename T::vertex_handle* vs, std::size_t n_run, typename T::halfedge_handle* starts,
+                typename T::halfedge_handle* sides, std::uint8_t* fresh) {
     const std::size_t n = N != 0 ? N : n_run;
     const auto null_h = T::null_halfedge();
-    auto after = [&](std::size_t i) { return i + 1 == n ? std::size_t{0} : i + 1; };
-    // Small faces (nearly all) keep their working state on the stack: filling and growing the
-    // scratch vectors cost a fifth of a triangle mesh's build when they were used for every face.
-    using H = typename T::halfedge_handle;
-    constexpr std::size_t small = 8;
-    std::array<H, small> small_sides, small_starts;
-    std::array<std::uint8_t, small> small_fresh;
-    std::array<std::pair<H, H>, 3 * small> small_links;
-    H* sides = small_sides.data();
-    H* starts = small_starts.data();
-    std::uint8_t* fresh = small_fresh.data();
-    std::pair<H, H>* links = small_links.data();
-    if (n > small) {
-        scratch.sides.resize(n);
-        scratch.starts.resize(n);
-        scratch.fresh.resize(n);
-        scratch.links.resize(3 * n);  // each corner sets at most three next links
-        sides = scratch.sides.data();
-        starts = scratch.starts.data();
-        fresh = scratch.fresh.data();
-        links = scratch.links.data();
-    }
-    // The first reads of each corner (its stored halfedge, then that halfedge's record) are
-    // likely cache misses that do not depend on the other corners': each stage is done for all
-    // corners before the next, so that their misses overlap instead of queueing behind each
-    // corner's fan walk. The checks that follow report the same first failure, in corner
-    // order, as a corner-by-corner pass would.
     for (std::size_t i = 0; i < n; ++i) starts[i] = T::vertex_halfedge(m, vs[i]);
     for (std::size_t i = 0; i < n; ++i) {
-        // fresh[i] & 4: the corner is interior (a failure, reported in order below).
         fresh[i] = starts[i] != null_h && T::face(m, starts[i]) != T::null_face() ? 4 : 0;
         sides[i] = null_h;
     }
     for (std::size_t i = 0; i < n; ++i) {
         const auto start = starts[i];
         if (start == null_h) continue;
-        const auto b = vs[after(i)];
+        const auto b = vs[corner_after(i, n)];
         auto h = start;
         do {
             if (T::target(m, h) == b) {
@@ -154,6 +131,17 @@ result<typename T::face_handle> link_face_sized(M& m, const typename T::vertex_h
             h = T::next(m, T::opposite(m, h));
         } while (h != start);
     }
+}
+
+/// Every check of link_face_sized, before anything changes, reporting the same first failure,
+/// in corner order, as a corner-by-corner pass would: an interior corner, an edge that already
+/// has two faces or runs the wrong way, a corner with no free boundary gap. On success
+/// fresh[i] is 1 where the side from corner i is a new edge, else 0.
+template <std::size_t N, class M, class T>
+result<void> check_corners(M& m, const typename T::vertex_handle* vs, std::size_t n_run, const typename T::halfedge_handle* sides,
+                           std::uint8_t* fresh) {
+    const std::size_t n = N != 0 ? N : n_run;
+    const auto null_h = T::null_halfedge();
     for (std::size_t i = 0; i < n; ++i) {
         if (fresh[i] & 4)
             return fail(errc::non_manifold,
@@ -162,7 +150,7 @@ result<typename T::face_handle> link_face_sized(M& m, const typename T::vertex_h
         const auto h = sides[i];
         if (h != null_h && T::face(m, h) != T::null_face()) {
             const bool reversed = T::face(m, T::opposite(m, h)) == T::null_face();
-            std::string edge = linking::vertex_name<M, T>(m, vs[i]) + "->" + linking::vertex_name<M, T>(m, vs[after(i)]);
+            std::string edge = linking::vertex_name<M, T>(m, vs[i]) + "->" + linking::vertex_name<M, T>(m, vs[corner_after(i, n)]);
             std::string face = "face";
             if constexpr (face_index_mesh<M, T>) face += " " + std::to_string(T::face_index(m, T::face(m, h)));
             return fail(reversed ? errc::orientation_conflict : errc::non_manifold,
@@ -176,17 +164,23 @@ result<typename T::face_handle> link_face_sized(M& m, const typename T::vertex_h
     // A corner between two existing edges must be able to move the boundary patch between them
     // to another gap of the vertex; check them all first so that a failure changes nothing.
     for (std::size_t i = 0; i < n; ++i) {
-        const std::size_t ii = after(i);
+        const std::size_t ii = corner_after(i, n);
         if (fresh[i] || fresh[ii] || T::next(m, sides[i]) == sides[ii]) continue;
         if (linking::free_gap<M, T>(m, sides[i], sides[ii]) == null_h)
             return fail(errc::non_manifold,
                         "add_face: vertex " + linking::vertex_name<M, T>(m, vs[ii]) + " has no free boundary gap to move its fans to",
                         linking::vertex_number<M, T>(m, vs[ii]));
     }
-    // Re-link: move the boundary patch between `in` and `out` into the free gap, so the two
-    // become consecutive.
+    return {};
+}
+
+/// Re-links each corner between two existing edges: the boundary patch between `in` and `out`
+/// moves into the vertex's free gap, so the two become consecutive.
+template <std::size_t N, class M, class T>
+void relink_patches(M& m, std::size_t n_run, const typename T::halfedge_handle* sides, const std::uint8_t* fresh) {
+    const std::size_t n = N != 0 ? N : n_run;
     for (std::size_t i = 0; i < n; ++i) {
-        const std::size_t ii = after(i);
+        const std::size_t ii = corner_after(i, n);
         const auto in = sides[i], out = sides[ii];
         if (fresh[i] || fresh[ii] || T::next(m, in) == out) continue;
         const auto gap_prev = linking::free_gap<M, T>(m, in, out);
@@ -196,17 +190,21 @@ result<typename T::face_handle> link_face_sized(M& m, const typename T::vertex_h
         T::set_next(m, patch_last, gap_next);
         T::set_next(m, in, out);
     }
-    for (std::size_t i = 0; i < n; ++i)
-        if (fresh[i]) sides[i] = T::new_edge(m, vs[i], vs[after(i)]);
+}
 
-    const auto f = T::new_face(m);
-    T::set_face_halfedge(m, f, sides[n - 1]);
-
-    // The new next links, computed from the state before this face and applied afterwards.
+/// Puts face f on the sides (new edges already made) and links them: the new next links are
+/// computed from the state before this face into `links` and applied afterwards; each corner
+/// keeps a boundary outgoing halfedge if it has one.
+template <std::size_t N, class M, class T>
+void link_sides(M& m, const typename T::vertex_handle* vs, std::size_t n_run, const typename T::halfedge_handle* sides, std::uint8_t* fresh,
+                std::pair<typename T::halfedge_handle, typename T::halfedge_handle>* links, typename T::face_handle f) {
+    using H = typename T::halfedge_handle;
+    const std::size_t n = N != 0 ? N : n_run;
+    const auto null_h = T::null_halfedge();
     std::size_t link_count = 0;
     auto add_link = [&](H a, H b) { links[link_count++] = {a, b}; };
     for (std::size_t i = 0; i < n; ++i) {
-        const std::size_t ii = after(i);
+        const std::size_t ii = corner_after(i, n);
         const auto v = vs[ii];
         const auto in = sides[i], out = sides[ii];
         const bool in_new = (fresh[i] & 1) != 0, out_new = (fresh[ii] & 1) != 0;
@@ -239,8 +237,48 @@ result<typename T::face_handle> link_face_sized(M& m, const typename T::vertex_h
     // Every other corner still stores a boundary halfedge: the one it had, or one set above.
     for (std::size_t i = 0; i < n; ++i)
         if (fresh[i] & 2) linking::store_boundary_halfedge<M, T>(m, vs[i], sides[i]);
+}
+
+/// link_face for faces of N corners (N = 0: any number, n given at run time). With N known,
+/// every loop over the corners unrolls and the corner after i is a constant: the `(i + 1) % n`
+/// of the run-time loops is a division, and the one that names the vertex a fan walk looks for
+/// sits on that walk's chain of dependent reads.
+template <std::size_t N, class M, class T>
+result<typename T::face_handle> link_face_sized(M& m, const typename T::vertex_handle* vs, std::size_t n_run,
+                                                face_link_scratch<typename T::halfedge_handle>& scratch) {
+    const std::size_t n = N != 0 ? N : n_run;
+    // Small faces (nearly all) keep their working state on the stack rather than in the
+    // scratch vectors, which would be filled and grown for every face.
+    using H = typename T::halfedge_handle;
+    constexpr std::size_t small = 8;
+    std::array<H, small> small_sides, small_starts;
+    std::array<std::uint8_t, small> small_fresh;
+    std::array<std::pair<H, H>, 3 * small> small_links;
+    H* sides = small_sides.data();
+    H* starts = small_starts.data();
+    std::uint8_t* fresh = small_fresh.data();
+    std::pair<H, H>* links = small_links.data();
+    if (n > small) {
+        scratch.sides.resize(n);
+        scratch.starts.resize(n);
+        scratch.fresh.resize(n);
+        scratch.links.resize(3 * n);  // each corner sets at most three next links
+        sides = scratch.sides.data();
+        starts = scratch.starts.data();
+        fresh = scratch.fresh.data();
+        links = scratch.links.data();
+    }
+    find_sides<N, M, T>(m, vs, n, starts, sides, fresh);
+    if (auto ok = check_corners<N, M, T>(m, vs, n, sides, fresh); !ok) return ok.error();
+    relink_patches<N, M, T>(m, n, sides, fresh);
+    for (std::size_t i = 0; i < n; ++i)
+        if (fresh[i]) sides[i] = T::new_edge(m, vs[i], vs[corner_after(i, n)]);
+    const auto f = T::new_face(m);
+    T::set_face_halfedge(m, f, sides[n - 1]);
+    link_sides<N, M, T>(m, vs, n, sides, fresh, links, f);
     return f;
 }
+
 
 }  // namespace linking
 
