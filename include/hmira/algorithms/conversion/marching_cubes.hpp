@@ -16,6 +16,7 @@
 #include <memory>
 #include <span>
 #include <string>
+#include <string_view>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -38,6 +39,11 @@ namespace hmira {
 /// Which side of the iso value is the solid. Scans (CT, MRI) are usually inside above the iso
 /// value; signed distance fields are inside below it.
 enum class iso_inside { below, above };
+/// The sides' names: "below", "above" (see core/enum_names.hpp).
+constexpr auto enum_names(iso_inside) {
+    return std::array{std::pair{iso_inside::below, std::string_view("below")},
+                      std::pair{iso_inside::above, std::string_view("above")}};
+}
 
 /// Options of marching_cubes() and marching_cubes_indexed().
 struct marching_cubes_options {
