@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -46,11 +47,9 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-    fs::path out = "demo-output";
-    fs::path data;
+/// Reads the command line into `out` and `data`; an exit code when the run ends there (--help,
+/// an unknown argument).
+std::optional<int> parse_arguments(int argc, char** argv, fs::path& out, fs::path& data) {
     for (int i = 1; i < argc; ++i) {
         const std::string_view a = argv[i];
         if ((a == "--out" || a == "-o") && i + 1 < argc) out = argv[++i];
@@ -66,14 +65,10 @@ int main(int argc, char** argv) {
             return 2;
         }
     }
-    std::error_code ec;
-    fs::create_directories(out, ec);
-    if (ec) {
-        std::fprintf(stderr, "hmira-demo: cannot create %s: %s\n", out.string().c_str(), ec.message().c_str());
-        return 3;
-    }
+    return std::nullopt;
+}
 
-    std::puts("hmira demo: one generic algorithm, several mesh representations\n");
+void generated_solids(const fs::path& out) {
     std::puts("1. Generated solids on the half-edge mesh, checked by validate() and topology:");
     struct solid { const char* name; result<generated_elements<halfedge_mesh>> (*make)(halfedge_mesh&, const solid_options&); };
     const solid solids[] = {{"tetrahedron", generate_tetrahedron<halfedge_mesh>}, {"cube", generate_cube<halfedge_mesh>},
@@ -86,88 +81,113 @@ int main(int argc, char** argv) {
         check(mesh_topology(m).euler_characteristic == 2, std::string(s.name) + ": V - E + F must be 2");
         save(m, out / (std::string(s.name) + ".obj"));
     }
-    {
-        halfedge_mesh torus;
-        check(static_cast<bool>(generate_torus(torus, {.major_radius = 1, .minor_radius = 0.3, .rings = 48, .sides = 24})), "generate torus");
-        row("torus 48x24", torus);
-        check(mesh_topology(torus).genus == 1, "torus genus must be 1");
-        save(torus, out / "torus.obj");
-    }
+    halfedge_mesh torus;
+    check(static_cast<bool>(generate_torus(torus, {.major_radius = 1, .minor_radius = 0.3, .rings = 48, .sides = 24})), "generate torus");
+    row("torus 48x24", torus);
+    check(mesh_topology(torus).genus == 1, "torus genus must be 1");
+    save(torus, out / "torus.obj");
+}
 
+void face_vertex_model(const fs::path& out) {
     std::puts("\n2. The same algorithms on the face-vertex mesh (no adjacency stored):");
-    {
-        face_vertex_mesh m;
-        check(static_cast<bool>(generate_dodecahedron(m)), "generate dodecahedron (face-vertex)");
-        row("dodecahedron", m);
-        face_vertex_mesh g;
-        check(static_cast<bool>(generate_grid(g, {.columns = 20, .rows = 10, .triangles = true})), "generate grid");
-        row("grid 20x10 (open)", g);
-        save(g, out / "grid.obj");
-    }
+    face_vertex_mesh m;
+    check(static_cast<bool>(generate_dodecahedron(m)), "generate dodecahedron (face-vertex)");
+    row("dodecahedron", m);
+    face_vertex_mesh g;
+    check(static_cast<bool>(generate_grid(g, {.columns = 20, .rows = 10, .triangles = true})), "generate grid");
+    row("grid 20x10 (open)", g);
+    save(g, out / "grid.obj");
+}
 
+/// The signed volume a closed mesh encloses (negative when its faces wind inwards).
+template <class M>
+double signed_volume(const M& mesh) {
+    using T = default_traits<M>;
+    double v = 0;
+    for (auto f : T::faces(mesh)) {
+        std::vector<vec3<double>> p;
+        for (auto w : T::face_vertices(mesh, f)) p.push_back(T::position(mesh, w));
+        v += dot(p[0], cross(p[1], p[2])) / 6;
+    }
+    return v;
+}
+
+/// Flips an icosahedron of model M twice, printing the signed volume after each flip.
+template <class M>
+void flip_twice(const fs::path& out, const char* name, bool keep) {
+    M mesh;
+    check(static_cast<bool>(generate_icosahedron(mesh)), "generate");
+    const double v0 = signed_volume(mesh);
+    flip_normals(mesh);
+    const double v1 = signed_volume(mesh);
+    flip_normals(mesh);
+    const double v2 = signed_volume(mesh);
+    std::printf("  %-22s volume %+.4f -> %+.4f -> %+.4f  %s\n", name, v0, v1, v2, validate(mesh).empty() ? "valid" : "INVALID");
+    check(v1 < 0 && v0 > 0 && std::abs(v2 - v0) < 1e-12, std::string(name) + ": flip must negate the volume");
+    if (keep) save(mesh, out / "icosahedron-flipped-twice.obj");
+}
+
+void flipping(const fs::path& out) {
     std::puts("\n3. flip_normals really flips (signed volume changes sign, twice restores it):");
-    for (int model = 0; model < 2; ++model) {
-        auto run = [&](auto mesh, const char* name) {
-            using M = decltype(mesh);
-            check(static_cast<bool>(generate_icosahedron(mesh)), "generate");
-            auto volume = [&] {
-                using T = default_traits<M>;
-                double v = 0;
-                for (auto f : T::faces(mesh)) {
-                    std::vector<vec3<double>> p;
-                    for (auto w : T::face_vertices(mesh, f)) p.push_back(T::position(mesh, w));
-                    v += dot(p[0], cross(p[1], p[2])) / 6;
-                }
-                return v;
-            };
-            const double v0 = volume();
-            flip_normals(mesh);
-            const double v1 = volume();
-            flip_normals(mesh);
-            const double v2 = volume();
-            std::printf("  %-22s volume %+.4f -> %+.4f -> %+.4f  %s\n", name, v0, v1, v2, validate(mesh).empty() ? "valid" : "INVALID");
-            check(v1 < 0 && v0 > 0 && std::abs(v2 - v0) < 1e-12, std::string(name) + ": flip must negate the volume");
-            if (model == 0) save(mesh, out / "icosahedron-flipped-twice.obj");
-        };
-        if (model == 0) run(halfedge_mesh{}, "half-edge icosahedron");
-        else run(face_vertex_mesh{}, "face-vertex icosahedron");
-    }
+    flip_twice<halfedge_mesh>(out, "half-edge icosahedron", true);
+    flip_twice<face_vertex_mesh>(out, "face-vertex icosahedron", false);
+}
 
+void components(const fs::path& out) {
     std::puts("\n4. Connected components of a disjoint union (union-find):");
-    {
-        halfedge_mesh m;
-        for (int i = 0; i < 4; ++i) check(static_cast<bool>(generate_octahedron(m, {.center = {3.0 * i, 0, 0}})), "generate");
-        m.add_vertex({-3, 0, 0});
-        const auto c = connected_components(m);
-        std::printf("  4 octahedra + 1 isolated vertex -> %zu components\n", c.count);
-        check(c.count == 5, "components must be 5");
-        save(m, out / "octahedra.obj");
+    halfedge_mesh m;
+    for (int i = 0; i < 4; ++i) check(static_cast<bool>(generate_octahedron(m, {.center = {3.0 * i, 0, 0}})), "generate");
+    m.add_vertex({-3, 0, 0});
+    const auto c = connected_components(m);
+    std::printf("  4 octahedra + 1 isolated vertex -> %zu components\n", c.count);
+    check(c.count == 5, "components must be 5");
+    save(m, out / "octahedra.obj");
+}
+
+void real_meshes(const fs::path& out, const fs::path& data) {
+    std::puts("\n5. Real meshes from Debian's libcgal-demo, read as OFF into both models:");
+    for (const char* name : {"elephant.off", "fandisk.off", "armadillo.off", "cube-ouvert.off", "double-torus-example.off"}) {
+        const fs::path p = data / "meshes" / name;
+        if (!fs::exists(p)) {
+            std::printf("  %-22s (not found in %s)\n", name, (data / "meshes").string().c_str());
+            continue;
+        }
+        halfedge_mesh he;
+        const auto t0 = std::chrono::steady_clock::now();
+        auto r = io::read_off(he, p);
+        const double t_read = seconds_since(t0);
+        if (!r) {
+            std::printf("  %-22s read error: %s\n", name, r.error().message.c_str());
+            face_vertex_mesh fv;
+            auto r2 = io::read_off(fv, p);
+            if (r2) row((std::string(name) + " (face-vertex)").c_str(), fv);
+            continue;
+        }
+        row(name, he);
+        std::printf("  %-22s read in %.1f ms\n", "", t_read * 1e3);
+        save(he, out / (fs::path(name).stem().string() + ".obj"));
+    }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    fs::path out = "demo-output";
+    fs::path data;
+    if (const auto code = parse_arguments(argc, argv, out, data)) return *code;
+    std::error_code ec;
+    fs::create_directories(out, ec);
+    if (ec) {
+        std::fprintf(stderr, "hmira-demo: cannot create %s: %s\n", out.string().c_str(), ec.message().c_str());
+        return 3;
     }
 
-    if (!data.empty()) {
-        std::puts("\n5. Real meshes from Debian's libcgal-demo, read as OFF into both models:");
-        for (const char* name : {"elephant.off", "fandisk.off", "armadillo.off", "cube-ouvert.off", "double-torus-example.off"}) {
-            const fs::path p = data / "meshes" / name;
-            if (!fs::exists(p)) {
-                std::printf("  %-22s (not found in %s)\n", name, (data / "meshes").string().c_str());
-                continue;
-            }
-            halfedge_mesh he;
-            const auto t0 = std::chrono::steady_clock::now();
-            auto r = io::read_off(he, p);
-            const double t_read = seconds_since(t0);
-            if (!r) {
-                std::printf("  %-22s read error: %s\n", name, r.error().message.c_str());
-                face_vertex_mesh fv;
-                auto r2 = io::read_off(fv, p);
-                if (r2) row((std::string(name) + " (face-vertex)").c_str(), fv);
-                continue;
-            }
-            row(name, he);
-            std::printf("  %-22s read in %.1f ms\n", "", t_read * 1e3);
-            save(he, out / (fs::path(name).stem().string() + ".obj"));
-        }
-    }
+    std::puts("hmira demo: one generic algorithm, several mesh representations\n");
+    generated_solids(out);
+    face_vertex_model(out);
+    flipping(out);
+    components(out);
+    if (!data.empty()) real_meshes(out, data);
 
     std::printf("\nwrote OBJ files to %s\n", out.string().c_str());
     if (failures) {

@@ -4,6 +4,7 @@
 
 #include <hmira/algorithms/repair/repair_polygon_soup.hpp>
 
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include <csignal>
@@ -14,13 +15,59 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <limits>
+#include <sstream>
 
 namespace hmira_cli {
+
+namespace {
+
+/// A number from the first line of a file (cgroup's memory.max: a number or "max").
+std::optional<std::uint64_t> number_in(const char* path) {
+    std::ifstream in(path);
+    std::uint64_t v = 0;
+    if (!(in >> v)) return std::nullopt;
+    return v;
+}
+
+/// A "Key: N kB" line of a /proc file, in bytes.
+std::optional<std::uint64_t> proc_kib(const char* path, const std::string& key) {
+    std::ifstream in(path);
+    std::string line;
+    while (std::getline(in, line))
+        if (line.rfind(key + ":", 0) == 0) {
+            std::istringstream s(line.substr(key.size() + 1));
+            std::uint64_t kib = 0;
+            if (s >> kib) return kib * 1024;
+        }
+    return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<std::uint64_t> free_memory() {
+    if (const char* s = std::getenv("HMIRA_TEST_MEMAVAILABLE")) return std::strtoull(s, nullptr, 10);
+    std::optional<std::uint64_t> free = proc_kib("/proc/meminfo", "MemAvailable");
+    if (!free) {
+        const long pages = sysconf(_SC_AVPHYS_PAGES), page = sysconf(_SC_PAGESIZE);
+        if (pages > 0 && page > 0) free = std::uint64_t(pages) * std::uint64_t(page);
+    }
+    auto lower = [&](std::uint64_t v) { free = free ? std::min(*free, v) : v; };
+    rlimit as{};
+    if (::getrlimit(RLIMIT_AS, &as) == 0 && as.rlim_cur != RLIM_INFINITY) {
+        const std::uint64_t used = proc_kib("/proc/self/status", "VmSize").value_or(0);
+        lower(as.rlim_cur > used ? as.rlim_cur - used : 0);
+    }
+    if (auto max = number_in("/sys/fs/cgroup/memory.max")) {
+        const std::uint64_t used = number_in("/sys/fs/cgroup/memory.current").value_or(0);
+        lower(*max > used ? *max - used : 0);
+    }
+    return free;
+}
 
 std::vector<command>& commands() {
     static std::vector<command> all;
@@ -69,15 +116,11 @@ int input_exit_code(const hmira::error& e) {
     }
 }
 
-namespace {
-
-std::string compact(double x) {
+std::string number_text(double x) {
     char b[32];
     std::snprintf(b, sizeof b, "%g", x);
     return b;
 }
-
-}  // namespace
 
 CLI::Validator finite_number(std::string rule, std::function<bool(double)> holds) {
     const std::string wanted = "a finite number" + (rule.empty() ? std::string() : " " + rule);
@@ -89,7 +132,7 @@ CLI::Validator finite_number(std::string rule, std::function<bool(double)> holds
             const double x = std::strtod(text.c_str(), &end);
             if (text.empty() || end != text.c_str() + text.size()) return "expected " + wanted + ", got " + shown;
             if (!std::isfinite(x)) return "expected " + wanted + ", got " + shown + " (NaN and infinity are not allowed)";
-            if (holds && !holds(x)) return "expected " + wanted + ", got " + compact(x);
+            if (holds && !holds(x)) return "expected " + wanted + ", got " + number_text(x);
             return {};
         },
         rule.empty() ? "FINITE" : "FINITE " + rule);
@@ -145,8 +188,9 @@ bool refuse_non_finite(const hmira::face_vertex_mesh& mesh, const std::string& p
         const auto p = mesh.position(v);
         if (std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z)) continue;
         // The face-vertex mesh of a freshly read file numbers vertices densely in file order.
-        code = report(invalid_input, path + ": " + what + ": vertex " + std::to_string(v.index) + " has a non-finite coordinate (" +
-                                         compact(p.x) + ", " + compact(p.y) + ", " + compact(p.z) + "); nothing written");
+        code = report(invalid_input, path + ": " + what + ": vertex " + std::to_string(v.index) +
+                                         " has a non-finite coordinate (" + number_text(p.x) + ", " + number_text(p.y) + ", " +
+                                         number_text(p.z) + "); nothing written");
         return false;
     }
     code = ok;

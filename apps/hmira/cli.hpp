@@ -44,6 +44,18 @@ std::vector<std::string> names_of() {
     return out;
 }
 
+/// The name of an option enum's value, such as an options struct's default.
+template <hmira::named_enum E>
+std::string name_of(E value) {
+    return std::string(hmira::to_string(value));
+}
+
+/// The value named `name`, which the option's IsMember(names_of<E>()) check has accepted.
+template <hmira::named_enum E>
+E named(const std::string& name) {
+    return *hmira::from_string<E>(name);
+}
+
 /// Options every subcommand has.
 struct common_options {
     int threads = 0;  ///< 0: all cores
@@ -61,6 +73,9 @@ CLI::Validator whole_number(std::uint64_t lo, std::uint64_t hi);
 /// The check of a size option: a whole number of bytes, optionally with a binary suffix (K, M,
 /// G, T, or KiB, MiB, GiB, TiB: powers of 1024), at least 1; rewrites the value to bytes.
 CLI::Validator byte_count();
+
+/// `x` as printf's %g writes it ("0.1", "90", "1e+06"), for messages and help texts.
+std::string number_text(double x);
 
 /// `text` safe to print on one line: control characters (a newline in a file name) become
 /// escapes such as \n or \x1b.
@@ -105,6 +120,13 @@ void install_signal_cleanup();
 /// True when `a` and `b` name the same file: std::filesystem::equivalent when both exist (so
 /// symlinks, hard links and other spellings count), else the same weakly canonical path.
 bool same_file(const std::string& a, const std::string& b);
+
+/// The memory this process can still take, in bytes: the system's available memory
+/// (MemAvailable in /proc/meminfo, else the free physical pages), or less where the
+/// address-space limit (ulimit -v) or the cgroup's memory.max leaves less; nullopt when none of
+/// them is known. HMIRA_TEST_MEMAVAILABLE=BYTES is the answer instead, for the tests of the
+/// refusals (an address-space limit cannot stand in: the sanitizers reserve terabytes).
+std::optional<std::uint64_t> free_memory();
 
 /// Prints a line on stdout unless quiet.
 void say(const common_options& o, const std::string& line);

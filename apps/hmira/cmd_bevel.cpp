@@ -21,9 +21,9 @@ struct bevel_args {
     std::vector<std::string> edges;  ///< "A,B" each
     bool all = false;
     double angle = -1;  ///< < 0: not given
-    double width = 0.1;
-    int segments = 1;
-    bool no_clamp = false;
+    double width = hmira::bevel_options{}.width;
+    int segments = hmira::bevel_options{}.segments;
+    bool no_clamp = !hmira::bevel_options{}.clamp_overlap;
     std::vector<std::size_t> vertices;
     bool vertices_all = false;
 };
@@ -62,11 +62,10 @@ std::optional<std::vector<hmira::edge_handle>> select_edges(const bevel_args& a,
         // Only edges between two faces can be bevelled: boundary edges are never selected.
         out = hmira::sharp_edges(m, a.angle >= 0 ? a.angle : 0.0);
         if (out.empty()) {
-            char degrees[32];
-            std::snprintf(degrees, sizeof degrees, "%g", a.angle);
             code = report(invalid_input, a.input + ": nothing to bevel: " +
                                              (a.all ? std::string("every edge is on the boundary")
-                                                    : "no edge has a dihedral angle of at least " + std::string(degrees) + " degrees"));
+                                                    : "no edge has a dihedral angle of at least " + number_text(a.angle) +
+                                                          " degrees"));
             return std::nullopt;
         }
         code = ok;

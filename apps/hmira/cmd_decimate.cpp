@@ -15,8 +15,9 @@ struct decimate_args {
     std::string input, output;
     std::optional<std::size_t> faces;
     std::optional<double> ratio, max_error;
-    double max_normal_angle = 90, max_aspect_ratio = 0;
-    bool move_boundary = false;
+    double max_normal_angle = hmira::decimate_options{}.max_normal_angle;
+    double max_aspect_ratio = 0;  // 0: not given (the library's default, no limit)
+    bool move_boundary = !hmira::decimate_options{}.keep_boundary;
     std::vector<std::size_t> locked;
 };
 
@@ -65,7 +66,8 @@ const bool registered = register_command({
             ->check(finite_number("in [0, 1]", [](double x) { return x >= 0 && x <= 1; }));
         sub.add_option("--max-error", a->max_error, "stop before a collapse whose error exceeds this distance (model units), >= 0")
             ->check(finite_number(">= 0", [](double x) { return x >= 0; }));
-        sub.add_option("--max-normal-angle", a->max_normal_angle, "refuse collapses that turn a face normal by more than this, in [0, 180] degrees (default 90)")
+        sub.add_option("--max-normal-angle", a->max_normal_angle, "refuse collapses that turn a face normal by more than this, in [0, 180] degrees (default " +
+                            number_text(a->max_normal_angle) + ")")
             ->check(finite_number("in [0, 180]", [](double x) { return x >= 0 && x <= 180; }));
         sub.add_option("--max-aspect-ratio", a->max_aspect_ratio, "refuse collapses that make a face thinner than this (1 = equilateral), >= 1")
             ->check(finite_number(">= 1", [](double x) { return x >= 1; }));

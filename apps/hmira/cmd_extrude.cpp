@@ -16,9 +16,9 @@ struct extrude_args {
     std::string input, output;
     std::vector<std::size_t> faces;
     bool all = false;
-    double distance = 1.0;
+    double distance = hmira::extrude_options{}.distance;
     std::string direction;  ///< "X,Y,Z", or empty: the normal
-    std::string mode = "region";
+    std::string mode = name_of(hmira::extrude_options{}.mode);
 };
 
 /// Region mode moves the region's own vertices and leaves new ones at the outline's old place
@@ -81,18 +81,15 @@ int run_extrude(const extrude_args& a, const common_options& o) {
         } else {
             for (auto i : faces) chosen.emplace_back(i);
         }
-        const hmira::extrude_options options{.distance = a.distance,
-                                             .direction = direction,
-                                             .mode = a.mode == "individual" ? hmira::extrude_mode::individual : hmira::extrude_mode::region};
+        const hmira::extrude_options options{
+            .distance = a.distance, .direction = direction, .mode = named<hmira::extrude_mode>(a.mode)};
         auto r = hmira::extrude(mesh, chosen, options);
         if (!r) {
             c = report(input_exit_code(r.error()), a.input + ": " + r.error().message);  // the options were checked up front
             return std::nullopt;
         }
-        char distance[32];
-        std::snprintf(distance, sizeof distance, "%g", a.distance);
-        return edit_outcome{"extruded " + count_of(r->top_faces.size(), "face", "faces") + " by " + distance + " with " +
-                                count_of(r->side_faces.size(), "wall", "walls"),
+        return edit_outcome{"extruded " + count_of(r->top_faces.size(), "face", "faces") + " by " + number_text(a.distance) +
+                                " with " + count_of(r->side_faces.size(), "wall", "walls"),
                             stayed_behind(mesh, *r, loaded->mesh.positions())};
     });
 }
@@ -115,7 +112,7 @@ const bool registered = register_command({
         sub.add_option("--direction", a->direction, "move along this direction (normalised) instead of the normal")->type_name("X,Y,Z");
         sub.add_option("--mode", a->mode, "region: connected faces move as one piece, walls only on the outline; individual: each face on its own")
             ->capture_default_str()
-            ->check(CLI::IsMember({"region", "individual"}));
+            ->check(CLI::IsMember(names_of<hmira::extrude_mode>()));
         return [a](const common_options& o) { return run_extrude(*a, o); };
     }});
 

@@ -5,9 +5,6 @@
 // named with its reason.
 #include <hmira/algorithms/holes/fill_hole.hpp>
 
-#include <fstream>
-#include <sstream>
-
 #include "cli.hpp"
 
 namespace {
@@ -17,23 +14,9 @@ using namespace hmira_cli;
 struct fill_holes_args {
     std::string input, output;
     std::size_t max_edges = 1000;
-    bool refine = false;
-    std::string fair = "none";
+    bool refine = hmira::fill_hole_options{}.refine;
+    std::string fair = name_of(hmira::fill_hole_options{}.fair);
 };
-
-/// The memory the kernel says it can give without swapping (MemAvailable), in bytes; 0 when
-/// it cannot be read (no limit then).
-std::size_t available_memory() {
-    std::ifstream in("/proc/meminfo");
-    std::string line;
-    while (std::getline(in, line)) {
-        std::istringstream s(line);
-        std::string key;
-        std::size_t kib = 0;
-        if (s >> key >> kib && key == "MemAvailable:") return kib * 1024;
-    }
-    return 0;
-}
 
 /// "1,240": a count with thousands separators, as the summary prints lengths.
 std::string grouped(std::size_t n) {
@@ -53,11 +36,10 @@ int run_fill_holes(const fill_holes_args& a, const common_options& o) {
                     [&](hmira::halfedge_mesh& mesh, int& c) -> std::optional<edit_outcome> {
                         progress_bar bar("filling holes in " + a.input, o, 1u << 20);
                         hmira::fill_hole_options options{};
-                        options.refine = a.refine || a.fair != "none";  // fairing moves the vertices refinement adds
-                        options.fair = a.fair == "membrane"     ? hmira::fairing::membrane
-                                       : a.fair == "thin-plate" ? hmira::fairing::thin_plate
-                                                                : hmira::fairing::none;
-                        options.max_memory_bytes = available_memory();
+                        options.fair = named<hmira::fairing>(a.fair);
+                        // Fairing moves the vertices refinement adds.
+                        options.refine = a.refine || options.fair != hmira::fairing::none;
+                        options.max_memory_bytes = free_memory().value_or(0);  // 0: no limit
                         options.progress = [&](double f) {
                             bar.update(std::uint64_t(f * double(1u << 20)), 1u << 20);
                             return true;
@@ -98,7 +80,7 @@ const bool registered = register_command({
             ->check(whole_number(3, std::numeric_limits<std::uint64_t>::max()));
         sub.add_flag("--refine", a->refine, "refine each patch to the edge length around its hole (Liepa)");
         sub.add_option("--fair", a->fair, "move the refined patch's vertices: none, membrane or thin-plate (implies --refine)")
-            ->check(CLI::IsMember({"none", "membrane", "thin-plate"}));
+            ->check(CLI::IsMember(names_of<hmira::fairing>()));
         const hmira::fill_hole_options defaults{};
         sub.footer("\nLoops of up to " + std::to_string(defaults.max_dynamic_programming_edges) +
                    " edges get the O(n^3) dynamic programme; longer ones are triangulated in their\n"

@@ -25,9 +25,9 @@ using namespace hmira_cli;
 struct mc_args {
     std::string source, output;
     std::size_t resolution = 64;
-    double iso = 0.0;
-    std::string inside = "below";
-    bool normals = false;
+    double iso = hmira::marching_cubes_options{}.iso;
+    std::string inside = name_of(hmira::marching_cubes_options{}.inside);
+    bool normals = hmira::marching_cubes_options{}.normals;
     // .raw volumes only
     std::string dims, type = "float32", spacing, origin, endian = "little";
     std::size_t slab_slices = 0;  // 0: as many as fit in slab_bytes
@@ -170,7 +170,7 @@ std::optional<int> run_mc_by_slabs(const mc_args& a, const common_options& o, co
     auto reader = hmira::io::volume_slab_reader::open(a.source, *layout);
     if (!reader) return std::nullopt;  // a size mismatch: the whole-volume reader names it as usual
     const hmira::marching_cubes_block_options opt{.iso = a.iso,
-                                                  .inside = a.inside == "above" ? hmira::iso_inside::above : hmira::iso_inside::below,
+                                                  .inside = named<hmira::iso_inside>(a.inside),
                                                   .threads = static_cast<unsigned>(o.threads)};
     const auto& g = layout->geometry;
     auto run = [&]<class T>(T) -> hmira::result<hmira::indexed_triangles<double>> {
@@ -227,7 +227,7 @@ int run_mc(const mc_args& a, const common_options& o) {
     if (!grid) return report(code_for(grid.error()), grid.error().message);
     hmira::face_vertex_mesh m;
     const hmira::marching_cubes_options opt{.iso = a.iso,
-                                             .inside = a.inside == "above" ? hmira::iso_inside::above : hmira::iso_inside::below,
+                                             .inside = named<hmira::iso_inside>(a.inside),
                                              .normals = a.normals,
                                              .threads = static_cast<unsigned>(o.threads)};
     auto r = std::visit([&](const auto& g) { return hmira::marching_cubes(m, g, opt); }, *grid);
@@ -250,7 +250,9 @@ const bool registered = register_command({
         sub.add_option("output", a->output, "mesh file to write (.obj .off .ply .stl)")->required();
         sub.add_option("-n,--resolution", a->resolution, "samples per axis for a named shape")->capture_default_str()->check(whole_number(2, 2048));
         sub.add_option("--iso", a->iso, "iso value")->capture_default_str()->check(finite_number());
-        sub.add_option("--inside", a->inside, "which side of the iso value is inside")->capture_default_str()->check(CLI::IsMember({"below", "above"}));
+        sub.add_option("--inside", a->inside, "which side of the iso value is inside")
+            ->capture_default_str()
+            ->check(CLI::IsMember(names_of<hmira::iso_inside>()));
         sub.add_flag("--normals", a->normals, "write per-vertex normals from the field's gradient");
         sub.add_option("--dims", a->dims, ".raw: samples along x, y and z (required for .raw; x varies fastest in the file)")->type_name("X,Y,Z");
         sub.add_option("--type", a->type, ".raw: sample type")

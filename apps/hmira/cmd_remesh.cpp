@@ -1,13 +1,8 @@
 // apps/hmira/cmd_remesh.cpp
 // `hmira remesh`: isotropic remeshing of a triangle mesh towards one edge length, keeping the
 // boundary and, with --features, the edges sharper than an angle.
-#include <unistd.h>
-
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
-#include <fstream>
-#include <sstream>
 
 #include <hmira/algorithms/remeshing/isotropic_remeshing.hpp>
 
@@ -23,23 +18,6 @@ struct remesh_args {
     std::size_t iterations = hmira::isotropic_remeshing_options{}.iterations;
     double features = -1;  // < 0: none
 };
-
-/// The memory this process may still take: MemAvailable from /proc/meminfo, else the free
-/// physical pages; nullopt when neither is known. HMIRA_TEST_MEMAVAILABLE=BYTES overrides it
-/// (for the tests of the refusal).
-std::optional<std::uint64_t> available_memory() {
-    if (const char* s = std::getenv("HMIRA_TEST_MEMAVAILABLE")) return std::strtoull(s, nullptr, 10);
-    std::ifstream meminfo("/proc/meminfo");
-    for (std::string line; std::getline(meminfo, line);)
-        if (line.rfind("MemAvailable:", 0) == 0) {
-            std::istringstream fields(line.substr(13));
-            std::uint64_t kib = 0;
-            if (fields >> kib) return kib * 1024;
-        }
-    const long pages = sysconf(_SC_AVPHYS_PAGES), page = sysconf(_SC_PAGESIZE);
-    if (pages > 0 && page > 0) return std::uint64_t(pages) * std::uint64_t(page);
-    return std::nullopt;
-}
 
 int run_remesh(const remesh_args& a, const common_options& o) {
     int code = ok;
@@ -67,7 +45,7 @@ int run_remesh(const remesh_args& a, const common_options& o) {
                         }
                         const auto estimate = hmira::estimate_isotropic_remeshing(mesh, length);
                         if (!estimate) return fail(estimate.error());
-                        const auto memory = available_memory();
+                        const auto memory = free_memory();
                         if (memory && !(estimate->bytes <= double(*memory))) {
                             c = report(given ? usage : invalid_input,
                                        a.input + ": " + (given ? "--length " : "edge length ") +

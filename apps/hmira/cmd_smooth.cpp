@@ -12,7 +12,7 @@ using namespace hmira_cli;
 // Defaults are Taubin's (the default method), read from the library's options.
 struct smooth_args {
     std::string input, output, method = "taubin";
-    std::string weights{hmira::to_string(hmira::taubin_smooth_options{}.weights)};
+    std::string weights = name_of(hmira::taubin_smooth_options{}.weights);
     std::size_t iterations = hmira::taubin_smooth_options{}.iterations;
     double lambda = hmira::taubin_smooth_options{}.lambda, mu = hmira::taubin_smooth_options{}.mu;
     bool move_boundary = !hmira::taubin_smooth_options{}.fix_boundary;
@@ -24,7 +24,7 @@ int run_smooth(const smooth_args& a, const common_options& o) {
     auto loaded = load_for_edit(a.input, o, code);
     if (!loaded) return code;
     if (!check_indices(a.fixed, loaded->mesh.vertex_count(), "vertex", "--fix", a.input, code)) return code;
-    const auto w = *hmira::from_string<hmira::laplacian_weights>(a.weights);  // checked by --weights' IsMember
+    const auto w = named<hmira::laplacian_weights>(a.weights);
     // Vertices times steps: the bar shows for a long run on a small mesh too.
     const std::uint64_t steps = std::uint64_t(a.iterations) * (a.method == "taubin" ? 2 : 1);
     const std::uint64_t work = std::uint64_t(loaded->mesh.vertex_count()) * steps;

@@ -10,7 +10,7 @@ namespace {
 using namespace hmira_cli;
 
 struct subdivide_args {
-    std::string input, output, scheme{hmira::to_string(hmira::subdivide_options{}.scheme)};
+    std::string input, output, scheme = name_of(hmira::subdivide_options{}.scheme);
     std::size_t levels = hmira::subdivide_options{}.levels;
 };
 
@@ -26,8 +26,7 @@ int run_subdivide(const subdivide_args& a, const common_options& o) {
                             bar.update(std::uint64_t(f * 1000), 1000);
                             return true;
                         };
-                        // The scheme's name was checked by --scheme's IsMember.
-                        const auto r = hmira::subdivide(mesh, {.scheme = *hmira::from_string<hmira::subdivision_scheme>(a.scheme),
+                        const auto r = hmira::subdivide(mesh, {.scheme = named<hmira::subdivision_scheme>(a.scheme),
                                                                .levels = a.levels,
                                                                .progress = progress});
                         if (!r) {

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include <hmira/algorithms/triangulation/triangulate_faces.hpp>
+#include <hmira/algorithms/triangulation/triangulate_polygon.hpp>
 
 #include "cli.hpp"
 
@@ -14,7 +15,7 @@ using namespace hmira_cli;
 
 struct triangulate_args {
     std::string input, output;
-    bool delaunay = false;
+    bool delaunay = hmira::triangulate_polygon_options{}.delaunay;
 };
 
 int run_triangulate(const triangulate_args& a, const common_options& o) {

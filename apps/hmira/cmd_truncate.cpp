@@ -13,8 +13,8 @@ struct truncate_args {
     std::string input, output;
     std::vector<std::size_t> vertices;
     bool all = false;
-    double fraction = 1.0 / 3.0;
-    double distance = 0.0;
+    double fraction = hmira::truncate_options{}.fraction;
+    double distance = hmira::truncate_options{}.distance;
 };
 
 int run_truncate(const truncate_args& a, const common_options& o) {

@@ -14,8 +14,8 @@ using namespace hmira_cli;
 struct validate_args {
     std::string input;
     std::size_t max = 20;
-    bool relaxed = false;
-    bool no_geometry = false;
+    bool relaxed = hmira::validate_options{}.relaxed;
+    bool no_geometry = !hmira::validate_options{}.check_geometry;
 };
 
 int run_validate(const validate_args& a, const common_options& o) {

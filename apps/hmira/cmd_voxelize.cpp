@@ -2,12 +2,9 @@
 // `hmira voxelize`: the voxels a mesh's surface touches, and for a closed mesh those inside it,
 // on a cubic grid around the mesh, written as .binvox or as .raw bytes with a text sidecar
 // giving the grid (and the `hmira mc` command that reads it back).
-#include <sys/resource.h>
-
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <limits>
 #include <optional>
 #include <sstream>
@@ -32,8 +29,8 @@ struct voxelize_args {
     std::size_t padding = 2;
     bool surface = false;
     /// surface, conservative or centres (--surface is an alias of --mode surface).
-    std::string mode = "conservative";
-    bool fill_open = false;
+    std::string mode = name_of(hmira::voxelize_options{}.mode);
+    bool fill_open = hmira::voxelize_options{}.open_mesh == hmira::open_mesh_fill::winding_number;
 };
 
 std::string lower_extension(const std::string& path) {
@@ -60,47 +57,6 @@ std::string raw_sidecar(const hmira::grid_geometry& g, const std::string& raw_na
       << "  # centre of voxel (0, 0, 0)\nset: " << set << "\nmc: hmira mc " << raw_name << " surface.obj --dims " << dims
       << " --type uint8 --spacing " << spacing << " --origin " << origin << " --iso 0.5 --inside above\n";
     return s.str();
-}
-
-/// A number from the first line of a file (cgroup's memory.max: a number or "max").
-std::optional<std::uint64_t> number_in(const char* path) {
-    std::ifstream in(path);
-    std::uint64_t v = 0;
-    if (!(in >> v)) return std::nullopt;
-    return v;
-}
-
-/// A "Key: N kB" line of a /proc file, in bytes.
-std::optional<std::uint64_t> proc_kib(const char* path, const std::string& key) {
-    std::ifstream in(path);
-    std::string line;
-    while (std::getline(in, line))
-        if (line.rfind(key + ":", 0) == 0) {
-            std::istringstream s(line.substr(key.size() + 1));
-            std::uint64_t kib = 0;
-            if (s >> kib) return kib * 1024;
-        }
-    return std::nullopt;
-}
-
-/// The memory this process can still take: the system's available memory (MemAvailable), or
-/// less where the address-space limit (ulimit -v) or the cgroup's memory.max leaves less.
-/// nullopt when none of them can be read. HMIRA_TEST_MEMAVAILABLE=BYTES stands in for
-/// MemAvailable, for tests (an address-space limit cannot: the sanitizers reserve terabytes).
-std::optional<std::uint64_t> free_memory() {
-    std::optional<std::uint64_t> free = proc_kib("/proc/meminfo", "MemAvailable");
-    if (const char* s = std::getenv("HMIRA_TEST_MEMAVAILABLE")) free = std::strtoull(s, nullptr, 10);
-    auto lower = [&](std::uint64_t v) { free = free ? std::min(*free, v) : v; };
-    rlimit as{};
-    if (::getrlimit(RLIMIT_AS, &as) == 0 && as.rlim_cur != RLIM_INFINITY) {
-        const std::uint64_t used = proc_kib("/proc/self/status", "VmSize").value_or(0);
-        lower(as.rlim_cur > used ? as.rlim_cur - used : 0);
-    }
-    if (auto max = number_in("/sys/fs/cgroup/memory.max")) {
-        const std::uint64_t used = number_in("/sys/fs/cgroup/memory.current").value_or(0);
-        lower(*max > used ? *max - used : 0);
-    }
-    return free;
 }
 
 std::string gigabytes(std::uint64_t bytes) {
@@ -132,10 +88,8 @@ int run_voxelize(const voxelize_args& a, const common_options& o) {
                                          " voxels (--resolution " + std::to_string(a.resolution) + ", --padding " +
                                          std::to_string(a.padding) + ") needs about " + gigabytes(needed) + ", but only " +
                                          gigabytes(*free) + " of memory is free; lower --resolution or --padding");
-    const std::string mode = a.surface ? "surface" : a.mode;
-    const hmira::voxelize_options options{.mode = mode == "surface"  ? hmira::voxelize_mode::surface
-                                                  : mode == "centres" ? hmira::voxelize_mode::centres
-                                                                      : hmira::voxelize_mode::solid,
+    const auto mode = a.surface ? hmira::voxelize_mode::surface : named<hmira::voxelize_mode>(a.mode);
+    const hmira::voxelize_options options{.mode = mode,
                                           .open_mesh = a.fill_open ? hmira::open_mesh_fill::winding_number : hmira::open_mesh_fill::surface_only,
                                           .allow_degenerate = true,
                                           .threads = static_cast<unsigned>(o.threads)};
@@ -171,7 +125,7 @@ int run_voxelize(const voxelize_args& a, const common_options& o) {
     std::snprintf(spacing, sizeof spacing, "%.6g", g.spacing.x);
     std::string line = a.input + ": " + std::to_string(g.dims[0]) + " x " + std::to_string(g.dims[1]) + " x " + std::to_string(g.dims[2]) +
                        " voxels of size " + spacing + ", " + std::to_string(voxels->voxels.count()) + " set (" +
-                       (voxels->filled ? (mode == "centres" ? "centres" : "solid") : "surface") + ") -> " + a.output;
+                       (voxels->filled ? (mode == hmira::voxelize_mode::centres ? "centres" : "solid") : "surface") + ") -> " + a.output;
     if (ext == ".raw") line += " (grid in " + a.output + ".txt)";
     say(o, line);
     if (!voxels->note.empty()) say(o, "note: " + voxels->note);
@@ -195,7 +149,7 @@ const bool registered = register_command({
         auto* mode = sub.add_option("--mode", a->mode,
                        "surface: the voxels the surface touches; conservative (default): those and every voxel whose centre is inside a closed mesh "
                        "(for collision); centres: exactly the voxels whose centre is inside (for volume, as VTK's stencil)")
-            ->check(CLI::IsMember({"surface", "conservative", "centres"}));
+            ->check(CLI::IsMember(names_of<hmira::voxelize_mode>()));
         sub.add_flag("--surface", a->surface, "alias of --mode surface")->excludes(mode);
         sub.add_flag("--fill-open", a->fill_open, "conservative or centres mode on a mesh with holes: fill where the winding number is at least 1/2 (default: surface only, with a note)");
         return [a](const common_options& o) { return run_voxelize(*a, o); };

@@ -41,13 +41,6 @@ struct c_block {
     std::array<std::size_t, 2> strides() const { return rows; }
 };
 
-template <class Scalar, class Container>
-nb::ndarray<nb::numpy, Scalar> adopt(Container&& c, std::initializer_list<std::size_t> shape) {
-    auto* owned = new Container(std::move(c));
-    nb::capsule owner(owned, [](void* p) noexcept { delete static_cast<Container*>(p); });
-    return nb::ndarray<nb::numpy, Scalar>(reinterpret_cast<Scalar*>(owned->data()), shape, owner);
-}
-
 template <class Scalar>
 nb::ndarray<nb::numpy, Scalar> adopt_array(std::unique_ptr<Scalar[]> data, std::initializer_list<std::size_t> shape) {
     Scalar* p = data.release();
@@ -108,9 +101,7 @@ struct block_input {
                 const std::vector<double>& spacing, const std::vector<double>& origin, const std::string& inside, unsigned threads)
         : parts(parts_) {
         const auto sp = triple(spacing, "spacing"), org = triple(origin, "origin");
-        hmira::iso_inside side = hmira::iso_inside::below;
-        if (inside == "above") side = hmira::iso_inside::above;
-        else if (inside != "below") value_error("marching_cubes_block: inside must be 'below' or 'above', got '" + inside + "'");
+        const auto side = choice_arg<hmira::iso_inside>(inside, "marching_cubes_block", "inside");
         where = {.offset = index_triple(offset, "offset"), .whole = index_triple(whole, "whole")};
         // The parts: the chunk (step 0, 0, 0) and one-sample slices of the neighbours after it
         // (step 1 on the axes where the neighbour lies), every combination of the steps present.
@@ -426,8 +417,10 @@ nb::tuple merge_blocks(const std::vector<std::tuple<positions_array, keys_array,
 }  // namespace
 
 void bind_blocks(nb::module_& m) {
+    const std::string below = name_of(hmira::marching_cubes_block_options{}.inside);
     m.def("_marching_cubes_block", &marching_cubes_block, nb::arg("parts"), nb::arg("iso"), nb::kw_only(), nb::arg("steps"),
-          nb::arg("core"), nb::arg("offset"), nb::arg("whole"), nb::arg("spacing"), nb::arg("origin"), nb::arg("inside") = "below",
+          nb::arg("core"), nb::arg("offset"), nb::arg("whole"), nb::arg("spacing"), nb::arg("origin"),
+          nb::arg("inside") = below,
           nb::arg("threads") = 1u,
           "Marching cubes of one chunk of shape `core` at `offset` in a volume of shape `whole`, with its one sample of overlap on "
           "the high sides given as `parts` (the chunk at step (0, 0, 0), one-sample slices of the neighbours at the steps "
@@ -435,18 +428,20 @@ void bind_blocks(nb::module_& m) {
     nb::class_<counts_holder>(m, "_BlockCounts", "What one block owns (hmira.dask, the direct path).");
     nb::class_<layout_holder>(m, "_BlockLayout", "The whole result's layout and arrays (hmira.dask, the direct path).");
     m.def("_count_block", &count_block, nb::arg("parts"), nb::arg("iso"), nb::kw_only(), nb::arg("steps"), nb::arg("core"),
-          nb::arg("offset"), nb::arg("whole"), nb::arg("spacing"), nb::arg("origin"), nb::arg("inside") = "below",
+          nb::arg("offset"), nb::arg("whole"), nb::arg("spacing"), nb::arg("origin"), nb::arg("inside") = below,
           "Counts what one chunk (given as for _marching_cubes_block) owns of the surface, for _layout_blocks; see hmira.dask.");
     m.def("_layout_blocks", &layout_blocks, nb::arg("blocks"), nb::kw_only(), nb::arg("whole"), nb::arg("x_chunks"),
           "Lays out the whole result from every chunk's _count_block (any order; `x_chunks`: the chunk sizes along array axis 2) "
           "and allocates it; see hmira.dask.");
     m.def("_write_block", &write_block, nb::arg("parts"), nb::arg("iso"), nb::kw_only(), nb::arg("steps"), nb::arg("core"),
-          nb::arg("offset"), nb::arg("whole"), nb::arg("spacing"), nb::arg("origin"), nb::arg("inside") = "below", nb::arg("layout"),
+          nb::arg("offset"), nb::arg("whole"), nb::arg("spacing"), nb::arg("origin"),
+          nb::arg("inside") = below, nb::arg("layout"),
           nb::arg("counted").none() = nb::none(),
           "Writes one chunk's share of the surface straight into a _layout_blocks result, reusing the chunk's _count_block "
           "(`counted`, whose counted rows it takes) when given; see hmira.dask.");
     m.def("_write_blocks", &write_blocks, nb::arg("parts"), nb::arg("iso"), nb::kw_only(), nb::arg("steps"), nb::arg("cores"),
-          nb::arg("offsets"), nb::arg("whole"), nb::arg("spacing"), nb::arg("origin"), nb::arg("inside") = "below", nb::arg("layout"),
+          nb::arg("offsets"), nb::arg("whole"), nb::arg("spacing"), nb::arg("origin"),
+          nb::arg("inside") = below, nb::arg("layout"),
           nb::arg("counted"),
           "_write_block of several chunks (lists of each chunk's parts, steps, core, offset and _count_block), row by row in turn, "
           "so that a row of chunks along x writes long runs of the result; see hmira.dask.");

@@ -1,5 +1,6 @@
 // python/src/module.cpp
-// The extension module hmira._core: array functions (arrays.cpp) and the Mesh class (mesh.cpp).
+// The extension module hmira._core: the error translator and each family's bindings, in the
+// order their functions and classes appear in the type stubs.
 #include "common.hpp"
 
 namespace hmira_py {
@@ -14,14 +15,16 @@ void register_errors(nb::module_&) {
     });
 }
 
-void bind_blocks(nb::module_& m);  // blocks.cpp: marching cubes by blocks for hmira.dask
-
 }  // namespace hmira_py
 
 NB_MODULE(_core, m) {
     m.doc() = "hmira's compiled core: marching cubes, voxelization, Delaunay, mesh I/O and the Mesh class.";
     hmira_py::register_errors(m);
-    hmira_py::bind_arrays(m);
+    m.def("_last_cpp_seconds", [] { return hmira_py::last_cpp_seconds(); },
+          "Seconds the last marching_cubes / voxelize / delaunay_triangulation / read_mesh spent in C++ (for bench/python).");
+    hmira_py::bind_conversion(m);
+    hmira_py::bind_delaunay(m);
+    hmira_py::bind_io(m);
     hmira_py::bind_mesh(m);
     hmira_py::bind_viewer(m);
     hmira_py::bind_blocks(m);

@@ -1,4 +1,4 @@
-"""hmira.dask.marching_cubes (issue 16): chunked marching cubes on Dask equals hmira.marching_cubes
+"""hmira.dask.marching_cubes: chunked marching cubes on Dask equals hmira.marching_cubes
 on the whole array, element for element, for random chunkings, on the threaded scheduler and on a
 distributed LocalCluster of several worker processes; streamed PLY output; a zarr v3 round trip."""
 import os

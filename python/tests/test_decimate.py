@@ -1,4 +1,4 @@
-"""Mesh.decimate (issue 19): face targets met exactly, the genus kept, boundary and locked
+"""Mesh.decimate: face targets met exactly, the genus kept, boundary and locked
 vertices left where they were, max_error honoured, polygons triangulated with a note, bad
 options refused with the mesh unchanged, and the same result as the C++ CLI on a real mesh."""
 import numpy as np

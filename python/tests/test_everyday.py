@@ -1,4 +1,4 @@
-"""The everyday operations on hmira.Mesh (issue 18): flip/split/collapse with their checks,
+"""The everyday operations on hmira.Mesh: flip/split/collapse with their checks,
 face triangulation, hole filling, subdivision and smoothing. Each is checked against counts
 worked out here, validated after every change, shown to leave the mesh unchanged when it
 refuses, and (where the CLI has the command) compared with the C++ CLI on real meshes."""

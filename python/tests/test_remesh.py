@@ -1,4 +1,4 @@
-"""Mesh.remesh (issue 19): isotropic remeshing reaches the target edge length on a sphere and a
+"""Mesh.remesh: isotropic remeshing reaches the target edge length on a sphere and a
 real mesh, keeps the boundary and sharp edges where they are, refuses bad options with a
 ValueError naming them and leaves the mesh unchanged."""
 import os

@@ -6,7 +6,6 @@
 //      file whose extension is not the format the subcommand writes;
 //   3. a long loop can be interrupted: SIGINT ends `hmira smooth` promptly and leaves no output.
 #include <gtest/gtest.h>
-#include <fcntl.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -26,32 +25,20 @@
 #include <hmira/meshes/face_vertex_mesh.hpp>
 
 #include "io/io_support.hpp"
+#include "support/cli_runner.hpp"
 
 namespace {
 
 using hmira_test::scratch_dir;
 namespace fs = std::filesystem;
 
-struct run_result {
-    int code = -1;  ///< exit status, or -1 if timeout(1) itself was killed
-    std::string out, err;
-};
+using hmira_test::one_line_error;
+using hmira_test::run_result;
 
 /// Runs `hmira <args>` (args already shell-quoted where needed) in `dir`. A run that has not
 /// ended after 120 s is killed (exit 137 from timeout(1)): a hang fails the case, not the suite.
 run_result hmira(const scratch_dir& dir, const std::string& args) {
-    const auto out = dir.path().parent_path() / (dir.path().filename().string() + ".stdout");
-    const auto err = dir.path().parent_path() / (dir.path().filename().string() + ".stderr");
-    const std::string cmd = "cd '" + dir.path().string() + "' && exec timeout -s KILL 120 '" + std::string(HMIRA_CLI) + "' " + args + " >'" +
-                            out.string() + "' 2>'" + err.string() + "' </dev/null";
-    const int status = std::system(cmd.c_str());
-    run_result r;
-    if (WIFEXITED(status)) r.code = WEXITSTATUS(status);
-    r.out = hmira_test::read_bytes(out);
-    r.err = hmira_test::read_bytes(err);
-    fs::remove(out);
-    fs::remove(err);
-    return r;
+    return hmira_test::run_cli(HMIRA_CLI, dir, args, "", "timeout -s KILL 120");
 }
 
 // ---- the hostile inputs ---------------------------------------------------------------------
@@ -342,17 +329,8 @@ TEST(cli_contract, an_existing_file_of_another_format_is_never_written_over) {
 TEST(cli_contract, sigint_stops_a_long_smooth_promptly_and_leaves_no_output) {
     scratch_dir dir;
     ASSERT_EQ(hmira(dir, "mc sphere s.off -n 48").code, 0);
-    const pid_t pid = ::fork();
+    const pid_t pid = hmira_test::start_cli(HMIRA_CLI, dir, {"smooth", "s.off", "out.off", "--iterations", "1000000"});
     ASSERT_GE(pid, 0);
-    if (pid == 0) {
-        if (::chdir(dir.path().c_str()) != 0) ::_exit(120);
-        const int null = ::open("/dev/null", O_RDWR);
-        ::dup2(null, 0);
-        ::dup2(null, 1);
-        ::dup2(null, 2);
-        ::execl(HMIRA_CLI, "hmira", "smooth", "s.off", "out.off", "--iterations", "1000000", static_cast<char*>(nullptr));
-        ::_exit(121);
-    }
     std::this_thread::sleep_for(std::chrono::milliseconds(500));
     int status = 0;
     ASSERT_EQ(::waitpid(pid, &status, WNOHANG), 0) << "smooth ended before the signal: the test needs a longer run";

@@ -3,7 +3,6 @@
 // the built binary as a separate process and checks the exit code, the one-line error and that
 // no output was written.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <algorithm>
 #include <charconv>
@@ -19,42 +18,17 @@
 #include <hmira/io/volume/inr.hpp>
 
 #include "io/io_support.hpp"
+#include "support/cli_runner.hpp"
 
 namespace {
 
+using hmira_test::one_line_error;
+using hmira_test::run_result;
 using hmira_test::scratch_dir;
-
-struct run_result {
-    int code = -1;  ///< exit status, or -1 if killed by a signal
-    std::string out, err;
-    double seconds = 0;
-};
 
 /// Runs `[prefix] hmira <args>` in `dir`; `prefix` is shell text run first ("ulimit -v N &&").
 run_result hmira(const scratch_dir& dir, const std::string& args, const std::string& prefix = "") {
-    const auto out = dir.path().parent_path() / (dir.path().filename().string() + ".stdout");
-    const auto err = dir.path().parent_path() / (dir.path().filename().string() + ".stderr");
-    const std::string cmd = "cd '" + dir.path().string() + "' && " + prefix + " exec '" + std::string(HMIRA_CLI) + "' " + args +
-                            " >'" + out.string() + "' 2>'" + err.string() + "' </dev/null";
-    const auto t0 = std::chrono::steady_clock::now();
-    const int status = std::system(cmd.c_str());
-    run_result r;
-    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    if (WIFEXITED(status)) r.code = WEXITSTATUS(status);
-    r.out = hmira_test::read_bytes(out);
-    r.err = hmira_test::read_bytes(err);
-    std::filesystem::remove(out);
-    std::filesystem::remove(err);
-    return r;
-}
-
-::testing::AssertionResult one_line_error(const run_result& r, const std::string& part) {
-    if (r.err.rfind("hmira: error: ", 0) != 0)
-        return ::testing::AssertionFailure() << "no 'hmira: error: ' prefix: " << r.err;
-    if (std::count(r.err.begin(), r.err.end(), '\n') != 1) return ::testing::AssertionFailure() << "not one line: " << r.err;
-    if (r.err.find(part) == std::string::npos)
-        return ::testing::AssertionFailure() << "'" << part << "' not in: " << r.err;
-    return ::testing::AssertionSuccess();
+    return hmira_test::run_cli(HMIRA_CLI, dir, args, prefix);
 }
 
 std::filesystem::path data_dir() {

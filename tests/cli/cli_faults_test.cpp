@@ -1,4 +1,4 @@
-// The `hmira` tool under hostile input and faults (issue 14): non-finite numbers in files and
+// The `hmira` tool under hostile input and faults: non-finite numbers in files and
 // options, the documented exit code of every documented failure, interrupted and failing
 // writes, long and strange file names. Each case runs the built binary as a separate process.
 #include <gtest/gtest.h>
@@ -19,40 +19,17 @@
 #include <hmira/meshes/face_vertex_mesh.hpp>
 
 #include "io/io_support.hpp"
+#include "support/cli_runner.hpp"
 
 namespace {
 
+using hmira_test::one_line_error;
+using hmira_test::run_result;
 using hmira_test::scratch_dir;
-
-struct run_result {
-    int code = -1;    ///< exit status, or -1 if killed by a signal
-    int signal = 0;   ///< the signal that ended it, or 0
-    std::string out, err;
-};
 
 /// Runs `[env] hmira <args>` (args already shell-quoted where needed) in `dir`.
 run_result hmira(const scratch_dir& dir, const std::string& args, const std::string& env = "") {
-    const auto out = dir.path().parent_path() / (dir.path().filename().string() + ".stdout");
-    const auto err = dir.path().parent_path() / (dir.path().filename().string() + ".stderr");
-    // exec: the status seen is hmira's own, signals included, not a shell's.
-    const std::string cmd = "cd '" + dir.path().string() + "' && " + env + " exec '" + std::string(HMIRA_CLI) + "' " + args + " >'" + out.string() +
-                            "' 2>'" + err.string() + "' </dev/null";
-    const int status = std::system(cmd.c_str());
-    run_result r;
-    if (WIFEXITED(status)) r.code = WEXITSTATUS(status);
-    if (WIFSIGNALED(status)) r.signal = WTERMSIG(status);
-    r.out = hmira_test::read_bytes(out);
-    r.err = hmira_test::read_bytes(err);
-    std::filesystem::remove(out);
-    std::filesystem::remove(err);
-    return r;
-}
-
-::testing::AssertionResult one_line_error(const run_result& r, const std::string& part) {
-    if (r.err.rfind("hmira: error: ", 0) != 0) return ::testing::AssertionFailure() << "no 'hmira: error: ' prefix: " << r.err;
-    if (std::count(r.err.begin(), r.err.end(), '\n') != 1) return ::testing::AssertionFailure() << "not one line: " << r.err;
-    if (r.err.find(part) == std::string::npos) return ::testing::AssertionFailure() << "'" << part << "' not in: " << r.err;
-    return ::testing::AssertionSuccess();
+    return hmira_test::run_cli(HMIRA_CLI, dir, args, env);
 }
 
 const char* cube_off =
@@ -79,7 +56,7 @@ std::string data_file(const std::string& name) {
     return data ? std::string(data) + "/meshes/" + name : std::string();
 }
 
-// ---- D10: non-finite numbers ---------------------------------------------------------------
+// ---- non-finite numbers --------------------------------------------------------------------
 
 // The readers refuse a non-finite coordinate with file:line and the vertex; validate and info
 // therefore never see one from a file (validate's own non-finite check is for meshes built in
@@ -159,7 +136,7 @@ TEST(cli_faults, every_numeric_option_refuses_nan_and_infinity_naming_the_option
         }
 }
 
-// ---- D14: messages ---------------------------------------------------------------------------
+// ---- messages -------------------------------------------------------------------------------
 
 TEST(cli_faults, bevel_angle_nan_names_the_option_not_the_selection) {
     scratch_dir dir;
@@ -214,7 +191,7 @@ TEST(cli_faults, a_control_character_in_a_file_name_cannot_split_the_error_line)
     EXPECT_TRUE(one_line_error(hmira(dir, "info 'a\nb.off'"), "a\\nb.off"));
 }
 
-// ---- D7: the exit code of every documented failure -------------------------------------------
+// ---- the exit code of every documented failure -----------------------------------------------
 
 /// Every failure docs/cli.md documents, with the code it documents: 1 invalid input, 2 usage,
 /// 3 I/O, (4 internal has no reproducer by design).
@@ -247,7 +224,7 @@ TEST(cli_faults, every_documented_failure_exits_with_its_documented_code) {
         {"info bad.off", 1},
         {"validate nonmanifold.off", 1},
         {"validate nan.off", 1},
-        // (truncate of nonmanifold.off now succeeds: edits repair the file on reading, issue 13.)
+        // (truncate of nonmanifold.off is not here: the editing commands repair the file on reading.)
         {"truncate nan.off x.off --all", 1},
         {"bevel open.off x.off --all", 1},
         {"bevel c.off x.off --angle 180", 1},
@@ -316,7 +293,7 @@ TEST(cli_faults, every_documented_failure_exits_with_its_documented_code) {
     }
 }
 
-// ---- D11: signals during a write --------------------------------------------------------------
+// ---- signals during a write -------------------------------------------------------------------
 
 /// Whether `dir` takes unnamed temporaries (O_TMPFILE), with which even SIGKILL leaves nothing.
 bool has_unnamed_temporaries(const std::filesystem::path& dir) {
@@ -365,7 +342,7 @@ TEST(cli_faults, sigkill_during_a_write_leaves_nothing_where_unnamed_temporaries
     EXPECT_EQ(hmira_test::read_bytes(dir / "out.ply"), "old");
 }
 
-// ---- D12: a .raw volume and its sidecar ---------------------------------------------------------
+// ---- a .raw volume and its sidecar --------------------------------------------------------------
 
 TEST(cli_faults, voxelize_raw_never_leaves_a_sidecar_without_its_data_nor_deletes_an_old_file) {
     scratch_dir dir;
@@ -395,7 +372,7 @@ TEST(cli_faults, voxelize_raw_never_leaves_a_sidecar_without_its_data_nor_delete
     EXPECT_EQ(std::filesystem::file_size(dir / "ok.raw"), 12u * 12u * 12u);
 }
 
-// ---- D13: long names, and why a temporary cannot be made ----------------------------------------
+// ---- long names, and why a temporary cannot be made ---------------------------------------------
 
 TEST(cli_faults, an_output_name_of_any_legal_length_is_written) {
     scratch_dir dir;
@@ -467,8 +444,8 @@ TEST(cli_faults, a_fifo_input_under_the_cap_is_read) {
     EXPECT_NE(r.out.find("vertices:        8"), std::string::npos) << r.out;
 }
 
-// Enable once the readers honour read_options::max_input_bytes (the io-readers work of issue
-// 14): the CLI already passes the option through.
+// The CLI passes --max-input-bytes to the readers (read_options::max_input_bytes), which stop
+// reading a pipe at the cap.
 TEST(cli_faults, a_fifo_input_over_the_cap_is_refused_with_exit_1) {
     scratch_dir dir;
     std::string big = cube_off;

@@ -13,16 +13,10 @@
 
 namespace {
 
+using hmira_test::one_line_error;
 using hmira_test::scratch_dir;
 
 hmira_test::run_result hmira(const scratch_dir& dir, const std::string& args) { return hmira_test::run_cli(HMIRA_CLI, dir, args); }
-
-::testing::AssertionResult one_line_error(const hmira_test::run_result& r, const std::string& part) {
-    if (r.err.rfind("hmira: error: ", 0) != 0) return ::testing::AssertionFailure() << "no 'hmira: error: ' prefix: " << r.err;
-    if (std::count(r.err.begin(), r.err.end(), '\n') != 1) return ::testing::AssertionFailure() << "not one line: " << r.err;
-    if (r.err.find(part) == std::string::npos) return ::testing::AssertionFailure() << "'" << part << "' not in: " << r.err;
-    return ::testing::AssertionSuccess();
-}
 
 std::string data(const std::string& name) {
     const char* dir = std::getenv("HMIRA_TEST_DATA");

@@ -2,7 +2,6 @@
 // machine's memory; `hmira extrude` with a direction too short or too long to normalise. Each
 // case runs the built binary as a separate process.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <algorithm>
 #include <chrono>
@@ -17,44 +16,18 @@
 #include <hmira/meshes/halfedge_mesh.hpp>
 
 #include "io/io_support.hpp"
+#include "support/cli_runner.hpp"
 #include "support/checks.hpp"
 
 namespace {
 
+using hmira_test::one_line_error;
+using hmira_test::run_result;
 using hmira_test::scratch_dir;
-
-struct run_result {
-    int code = -1;  ///< exit status, or -1 if killed by a signal
-    std::string out, err;
-    double seconds = 0;
-};
 
 /// Runs `[env] hmira <args>` (args already shell-quoted where needed) in `dir`.
 run_result hmira(const scratch_dir& dir, const std::string& args, const std::string& env = "") {
-    const auto out = dir.path().parent_path() / (dir.path().filename().string() + ".stdout");
-    const auto err = dir.path().parent_path() / (dir.path().filename().string() + ".stderr");
-    const std::string cmd = "cd '" + dir.path().string() + "' && " + env + " exec '" + std::string(HMIRA_CLI) + "' " +
-                            args + " >'" + out.string() + "' 2>'" + err.string() + "' </dev/null";
-    const auto start = std::chrono::steady_clock::now();
-    const int status = std::system(cmd.c_str());
-    run_result r;
-    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (WIFEXITED(status)) r.code = WEXITSTATUS(status);
-    r.out = hmira_test::read_bytes(out);
-    r.err = hmira_test::read_bytes(err);
-    std::filesystem::remove(out);
-    std::filesystem::remove(err);
-    return r;
-}
-
-::testing::AssertionResult one_line_error(const run_result& r, const std::string& part) {
-    if (r.err.rfind("hmira: error: ", 0) != 0)
-        return ::testing::AssertionFailure() << "no 'hmira: error: ' prefix: " << r.err;
-    if (std::count(r.err.begin(), r.err.end(), '\n') != 1)
-        return ::testing::AssertionFailure() << "not one line: " << r.err;
-    if (r.err.find(part) == std::string::npos)
-        return ::testing::AssertionFailure() << "'" << part << "' not in: " << r.err;
-    return ::testing::AssertionSuccess();
+    return hmira_test::run_cli(HMIRA_CLI, dir, args, env);
 }
 
 std::string number(double x) {

@@ -1,7 +1,6 @@
 // The `hmira` tool end to end: each subcommand run as a separate process on real files, its
 // exit code, stdout and stderr checked, and its output files read back with the library.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <algorithm>
 #include <array>
@@ -20,36 +19,20 @@
 #include <hmira/meshes/face_vertex_mesh.hpp>
 
 #include "io/io_support.hpp"
+#include "support/cli_runner.hpp"
 #include "support/checks.hpp"
 
 namespace {
 
+using hmira_test::run_result;
 using hmira_test::scratch_dir;
 
-struct run_result {
-    int code = -1;
-    std::string out, err;
-};
-
 /// Runs `hmira <args>` (args already shell-quoted where needed) in `dir`.
-run_result hmira(const scratch_dir& dir, const std::string& args) {
-    const auto out = dir / ".stdout", err = dir / ".stderr";
-    const std::string cmd = "cd '" + dir.path().string() + "' && '" + std::string(HMIRA_CLI) + "' " + args + " >'" + out.string() + "' 2>'" + err.string() + "' </dev/null";
-    const int status = std::system(cmd.c_str());
-    run_result r;
-    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    r.out = hmira_test::read_bytes(out);
-    r.err = hmira_test::read_bytes(err);
-    std::filesystem::remove(out);
-    std::filesystem::remove(err);
-    return r;
-}
+run_result hmira(const scratch_dir& dir, const std::string& args) { return hmira_test::run_cli(HMIRA_CLI, dir, args); }
 
 /// Checks the one-line error format.
 void expect_one_line_error(const run_result& r, const std::string& part) {
-    EXPECT_EQ(r.err.rfind("hmira: error: ", 0), 0u) << r.err;
-    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
-    EXPECT_NE(r.err.find(part), std::string::npos) << "'" << part << "' not in: " << r.err;
+    EXPECT_TRUE(hmira_test::one_line_error(r, part));
 }
 
 const std::vector<std::string> subcommands = {"info", "validate", "convert", "generate", "flip", "delaunay", "mc", "truncate", "bevel", "extrude", "voxelize", "view", "triangulate", "fill-holes", "subdivide", "smooth"};

@@ -2,7 +2,6 @@
 // .htm name that is none of the inputs), and every build can write it (the viewer bundle is
 // committed, so a build without node embeds it too).
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <algorithm>
 #include <cstdlib>
@@ -11,38 +10,16 @@
 #include <vector>
 
 #include "io/io_support.hpp"
+#include "support/cli_runner.hpp"
 
 namespace {
 
+using hmira_test::one_line_error;
+using hmira_test::run_result;
 using hmira_test::scratch_dir;
 
-struct run_result {
-    int code = -1;  ///< exit status, or -1 if killed by a signal
-    std::string out, err;
-};
-
 /// Runs `hmira <args>` (args already shell-quoted where needed) in `dir`.
-run_result hmira(const scratch_dir& dir, const std::string& args) {
-    const auto out = dir.path().parent_path() / (dir.path().filename().string() + ".stdout");
-    const auto err = dir.path().parent_path() / (dir.path().filename().string() + ".stderr");
-    const std::string cmd = "cd '" + dir.path().string() + "' && exec '" + std::string(HMIRA_CLI) + "' " + args + " >'" + out.string() + "' 2>'" +
-                            err.string() + "' </dev/null";
-    const int status = std::system(cmd.c_str());
-    run_result r;
-    if (WIFEXITED(status)) r.code = WEXITSTATUS(status);
-    r.out = hmira_test::read_bytes(out);
-    r.err = hmira_test::read_bytes(err);
-    std::filesystem::remove(out);
-    std::filesystem::remove(err);
-    return r;
-}
-
-::testing::AssertionResult one_line_error(const run_result& r, const std::string& part) {
-    if (r.err.rfind("hmira: error: ", 0) != 0) return ::testing::AssertionFailure() << "no 'hmira: error: ' prefix: " << r.err;
-    if (std::count(r.err.begin(), r.err.end(), '\n') != 1) return ::testing::AssertionFailure() << "not one line: " << r.err;
-    if (r.err.find(part) == std::string::npos) return ::testing::AssertionFailure() << "'" << part << "' not in: " << r.err;
-    return ::testing::AssertionSuccess();
-}
+run_result hmira(const scratch_dir& dir, const std::string& args) { return hmira_test::run_cli(HMIRA_CLI, dir, args); }
 
 const char* cube_off =
     "OFF\n8 6 0\n-1 -1 -1\n1 -1 -1\n1 -1 1\n-1 -1 1\n-1 1 -1\n1 1 -1\n1 1 1\n-1 1 1\n"

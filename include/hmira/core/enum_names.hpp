@@ -54,4 +54,19 @@ std::string quoted_names() {
     return out;
 }
 
+/// Every name, quoted, as a choice in prose ("'below' or 'above'", "'none', 'membrane' or
+/// 'thin-plate'"), for a message that says what a value must be.
+template <named_enum E>
+std::string quoted_choices() {
+    const auto& names = enum_names(E{});
+    std::string out;
+    for (std::size_t i = 0; i < names.size(); ++i) {
+        if (i > 0) out += i + 1 == names.size() ? " or " : ", ";
+        out += '\'';
+        out.append(names[i].second);
+        out += '\'';
+    }
+    return out;
+}
+
 }  // namespace hmira

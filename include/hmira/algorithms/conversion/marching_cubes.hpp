@@ -6,6 +6,8 @@
 
 #include <array>
 #include <cstdint>
+#include <string_view>
+#include <utility>
 #include <vector>
 
 #include "../../concepts.hpp"
@@ -19,6 +21,11 @@ namespace hmira {
 
 /// Which side of the iso value is the solid: scans (CT, MRI) are usually inside above it, distance fields below.
 enum class iso_inside { below, above };
+/// The sides' names: "below", "above" (see core/enum_names.hpp).
+constexpr auto enum_names(iso_inside) {
+    return std::array{std::pair{iso_inside::below, std::string_view("below")},
+                      std::pair{iso_inside::above, std::string_view("above")}};
+}
 
 /// Options of marching_cubes() and marching_cubes_indexed().
 struct marching_cubes_options {

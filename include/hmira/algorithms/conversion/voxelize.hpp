@@ -14,7 +14,9 @@
 #include <limits>
 #include <numbers>
 #include <string>
+#include <string_view>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "../../concepts.hpp"
@@ -38,6 +40,14 @@ enum class voxelize_mode {
     solid,    ///< surface voxels plus every voxel whose centre lies inside (conservative)
     centres,  ///< exactly the voxels whose centre lies inside the closed mesh
 };
+
+/// The modes' names, as the front ends accept them: "conservative" (solid), "centres",
+/// "surface" (see core/enum_names.hpp).
+constexpr auto enum_names(voxelize_mode) {
+    return std::array{std::pair{voxelize_mode::solid, std::string_view("conservative")},
+                      std::pair{voxelize_mode::centres, std::string_view("centres")},
+                      std::pair{voxelize_mode::surface, std::string_view("surface")}};
+}
 
 /// What the solid and centres modes do with a mesh that is not closed (some edge has an odd number of faces).
 enum class open_mesh_fill {

@@ -6,10 +6,12 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <optional>
 #include <ranges>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -26,6 +28,11 @@ concept extrudable_mesh = editable_mesh<M, T> && position_mutable_mesh<M, T>;
 /// region: a connected selection moves as one piece, with walls only along its outline.
 /// individual: every face is extruded on its own, along its own normal.
 enum class extrude_mode { region, individual };
+/// The modes' names: "region", "individual" (see core/enum_names.hpp).
+constexpr auto enum_names(extrude_mode) {
+    return std::array{std::pair{extrude_mode::region, std::string_view("region")},
+                      std::pair{extrude_mode::individual, std::string_view("individual")}};
+}
 
 /// How extrude() moves the faces.
 struct extrude_options {

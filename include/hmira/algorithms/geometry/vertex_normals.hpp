@@ -5,9 +5,12 @@
 // corners instead of each vertex gathering its faces).
 #pragma once
 
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <numbers>
+#include <string_view>
+#include <utility>
 #include <vector>
 
 #include "../../concepts.hpp"
@@ -20,6 +23,12 @@ enum class normal_weighting {
     area,   ///< by face area: large faces dominate (the unnormalised Newell normal)
     angle,  ///< by the face's interior angle at the vertex: independent of how faces are split
 };
+
+/// The weightings' names: "angle", "area" (see core/enum_names.hpp).
+constexpr auto enum_names(normal_weighting) {
+    return std::array{std::pair{normal_weighting::angle, std::string_view("angle")},
+                      std::pair{normal_weighting::area, std::string_view("area")}};
+}
 
 /// Options of vertex_normals(): `vertex_normals(mesh, {.weighting = normal_weighting::area})`.
 struct vertex_normal_options {

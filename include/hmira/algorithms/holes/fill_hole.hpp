@@ -9,8 +9,10 @@
 #include <cstddef>
 #include <limits>
 #include <optional>
+#include <string_view>
 #include <unordered_map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "../../concepts.hpp"
@@ -30,6 +32,13 @@ enum class fairing {
     membrane,    ///< uniform Laplacian = 0 at each added vertex: a minimal-area-like patch
     thin_plate,  ///< Laplacian of the Laplacian = 0: a patch that continues the surface's slope
 };
+
+/// The fairings' names: "none", "membrane", "thin-plate" (see core/enum_names.hpp).
+constexpr auto enum_names(fairing) {
+    return std::array{std::pair{fairing::none, std::string_view("none")},
+                      std::pair{fairing::membrane, std::string_view("membrane")},
+                      std::pair{fairing::thin_plate, std::string_view("thin-plate")}};
+}
 
 /// How fill_hole triangulates, refines and fairs a loop. The defaults triangulate only.
 struct fill_hole_options {

@@ -3,6 +3,9 @@
 // triangles on either side disappear. The basis of decimation and of the inverse of a split.
 #pragma once
 
+#include <array>
+#include <string_view>
+#include <utility>
 #include <vector>
 
 #include "triangle_common.hpp"
@@ -16,6 +19,14 @@ enum class collapse_placement {
     source,    ///< where the removed vertex (the halfedge's source) was
     given,     ///< at collapse_edge_options::position
 };
+
+/// The placements' names: "midpoint", "target", "source", "given" (see core/enum_names.hpp).
+constexpr auto enum_names(collapse_placement) {
+    return std::array{std::pair{collapse_placement::midpoint, std::string_view("midpoint")},
+                      std::pair{collapse_placement::target, std::string_view("target")},
+                      std::pair{collapse_placement::source, std::string_view("source")},
+                      std::pair{collapse_placement::given, std::string_view("given")}};
+}
 
 /// Options of is_collapse_ok and collapse_edge.
 struct collapse_edge_options {

@@ -1,7 +1,6 @@
-// python/src/arrays.cpp
-// The array functions: marching cubes on any 3-D numpy volume without copying it, voxelization,
-// Delaunay triangulation, and writing (V, F) arrays. Outputs are numpy arrays that take over
-// the C++ vectors (no copy on the way out).
+// python/src/conversion.cpp
+// Marching cubes on any 3-D numpy volume without copying it, and voxelization of (V, F) arrays.
+// Outputs are numpy arrays that take over the C++ vectors (no copy on the way out).
 #include "common.hpp"
 
 #include <nanobind/stl/array.h>
@@ -18,7 +17,6 @@
 #include <string>
 #include <vector>
 
-#include <hmira/algorithms/delaunay/delaunay_triangulation.hpp>
 #include <hmira/algorithms/conversion/marching_cubes.hpp>
 #include <hmira/algorithms/conversion/voxelize.hpp>
 #include <hmira/algorithms/conversion/voxelize_blocks.hpp>
@@ -71,34 +69,6 @@ Examples
 (3, 'int32', True)
 )doc";
 
-constexpr const char* DELAUNAY_DOC = R"doc(Delaunay triangulation of points in the plane.
-
-Parameters
-----------
-points : ndarray of float64, shape (n, 2) or (n, 3)
-    The points; a third column is a height, kept but ignored by the
-    triangulation (2.5-D), unlike scipy's 3-D tetrahedra.
-voronoi : bool, keyword-only
-    Also return the Voronoi diagram.
-
-Returns
--------
-triangles : ndarray of int32, shape (m, 3)
-    Counter-clockwise triangles indexing `points` (duplicates use their first
-    occurrence).
-voronoi_vertices : ndarray of float64, shape (m, 2)
-    Only with ``voronoi=True``: the circumcentre of each triangle.
-voronoi_edges : ndarray of int32, shape (e, 2)
-    Only with ``voronoi=True``: pairs of Voronoi vertex indices, -1 marking the
-    infinite end of a ray.
-
-Examples
---------
->>> import numpy as np, hmira
->>> hmira.delaunay_triangulation(np.array([[0., 0.], [1., 0.], [0., 1.], [1., 1.1]])).shape
-(2, 3)
-)doc";
-
 using hmira::vec3;
 
 /// A numpy volume seen as a grid whose x runs along memory: sample (i, j, k) at
@@ -143,20 +113,6 @@ struct strided_view {
     }
 };
 
-/// A numpy array that owns a heap-allocated C++ container (moved in, freed with the array).
-template <class Scalar, class Container>
-nb::ndarray<nb::numpy, Scalar> adopt(Container&& c, std::initializer_list<std::size_t> shape) {
-    auto* owned = new Container(std::move(c));
-    nb::capsule owner(owned, [](void* p) noexcept { delete static_cast<Container*>(p); });
-    return nb::ndarray<nb::numpy, Scalar>(reinterpret_cast<Scalar*>(owned->data()), shape, owner);
-}
-
-hmira::iso_inside parse_inside(const std::string& s) {
-    if (s == "below") return hmira::iso_inside::below;
-    if (s == "above") return hmira::iso_inside::above;
-    value_error("marching_cubes: inside must be 'below' or 'above', got '" + s + "'");
-}
-
 vec3<double> triple(const std::vector<double>& v, const char* name) {
     if (v.size() != 3) value_error(std::string("marching_cubes: ") + name + " needs 3 values, got " + std::to_string(v.size()));
     return {v[0], v[1], v[2]};
@@ -193,7 +149,7 @@ nb::tuple marching_cubes(const mc_volume& volume, double iso, const std::vector<
                          const std::vector<double>& origin, const std::string& inside, unsigned threads) {
     const auto sp = triple(spacing, "spacing"), org = triple(origin, "origin");
     interrupt_watch watch;
-    hmira::marching_cubes_options options{.iso = iso, .inside = parse_inside(inside), .normals = false, .threads = threads,
+    hmira::marching_cubes_options options{.iso = iso, .inside = choice_arg<hmira::iso_inside>(inside, "marching_cubes", "inside"), .normals = false, .threads = threads,
                                           .progress = watch.callback()};
     const auto dt = volume.dtype();
     hmira::result<hmira::indexed_triangles<double>> r = hmira::fail(hmira::errc::invalid_argument, "");
@@ -225,103 +181,6 @@ nb::tuple marching_cubes(const mc_volume& volume, double iso, const std::vector<
     return nb::make_tuple(vertices, faces);
 }
 
-}  // namespace
-
-// ---- polygons from Python: an (m, k) integer array or a sequence of index sequences --------
-
-hmira::io::polygon_soup to_soup(const nb::ndarray<const double, nb::ndim<2>, nb::c_contig, nb::device::cpu>& vertices,
-                                nb::handle faces, const char* who) {
-    if (vertices.shape(1) != 3) value_error(std::string(who) + ": vertices must have shape (n, 3), got (" + std::to_string(vertices.shape(0)) + ", " + std::to_string(vertices.shape(1)) + ")");
-    hmira::io::polygon_soup soup;
-    const std::size_t nv = vertices.shape(0);
-    soup.points.resize(nv);
-    const double* v = vertices.data();
-    for (std::size_t i = 0; i < nv; ++i) {
-        for (int a = 0; a < 3; ++a) {
-            if (!std::isfinite(v[3 * i + a])) value_error(std::string(who) + ": vertex " + std::to_string(i) + " has a non-finite coordinate");
-            soup.points[i][a] = v[3 * i + a];
-        }
-    }
-    auto push = [&](long long idx, std::size_t f) {
-        if (idx < 0 || std::size_t(idx) >= nv)
-            value_error(std::string(who) + ": face " + std::to_string(f) + " uses vertex " + std::to_string(idx) + ", out of range [0, " + std::to_string(nv) + ")");
-        soup.indices.push_back(static_cast<std::uint32_t>(idx));
-    };
-    // (m, k) arrays of int32 (what marching_cubes returns) or int64 are read in place.
-    auto from_array = [&](const auto& array) {
-        const std::size_t m = array.shape(0), k = array.shape(1);
-        soup.indices.reserve(m * k);
-        soup.face_offsets.reserve(m + 1);
-        for (std::size_t f = 0; f < m; ++f) {
-            for (std::size_t c = 0; c < k; ++c) push(static_cast<long long>(array.data()[f * k + c]), f);
-            soup.face_offsets.push_back(static_cast<std::uint32_t>(soup.indices.size()));
-        }
-    };
-    if (!nb::isinstance<nb::list>(faces) && !nb::isinstance<nb::tuple>(faces)) {
-        nb::ndarray<const std::int32_t, nb::ndim<2>, nb::c_contig, nb::device::cpu> narrow;
-        if (nb::try_cast(faces, narrow, false)) {
-            from_array(narrow);
-            return soup;
-        }
-        nb::ndarray<const std::int64_t, nb::ndim<2>, nb::c_contig, nb::device::cpu> wide;
-        if (nb::try_cast(faces, wide)) {
-            from_array(wide);
-            return soup;
-        }
-    }
-    // A sequence of polygons, each an iterable of vertex indices: Python ints, or anything with
-    // __index__ (numpy integers). Anything else (None, str, float, a nested list, bool) is a
-    // TypeError, an index too large for any mesh a ValueError; both name the face and corner.
-    auto type_name = [](nb::handle h) { return std::string(Py_TYPE(h.ptr())->tp_name); };
-    auto type_error = [](const std::string& message) { throw nb::type_error(message.c_str()); };
-    auto corner = [&](nb::handle i, std::size_t f, std::size_t c) -> long long {
-        nb::object number;
-        if (!PyLong_CheckExact(i.ptr())) {
-            if (PyBool_Check(i.ptr()) || !PyIndex_Check(i.ptr()))
-                type_error(std::string(who) + ": face " + std::to_string(f) + ": corner " + std::to_string(c) + " is a " + type_name(i) +
-                           ", not an integer vertex index");
-            number = nb::steal(PyNumber_Index(i.ptr()));
-            if (!number.is_valid()) throw nb::python_error();
-            i = number;
-        }
-        int overflow = 0;
-        const long long idx = PyLong_AsLongLongAndOverflow(i.ptr(), &overflow);
-        if (overflow != 0)
-            value_error(std::string(who) + ": face " + std::to_string(f) + " uses vertex " + nb::str(i).c_str() + ", out of range [0, " +
-                        std::to_string(nv) + ")");
-        return idx;
-    };
-    std::size_t f = 0;
-    for (nb::handle polygon : faces) {
-        nb::object corners = nb::steal(PyObject_GetIter(polygon.ptr()));
-        if (!corners.is_valid()) {
-            PyErr_Clear();
-            type_error(std::string(who) + ": face " + std::to_string(f) + " is a " + type_name(polygon) + ", not a sequence of vertex indices");
-        }
-        std::size_t c = 0;
-        while (PyObject* item = PyIter_Next(corners.ptr())) {
-            const nb::object i = nb::steal(item);
-            push(corner(i, f, c++), f);
-        }
-        if (PyErr_Occurred()) throw nb::python_error();
-        soup.face_offsets.push_back(static_cast<std::uint32_t>(soup.indices.size()));
-        ++f;
-    }
-    return soup;
-}
-
-hmira::io::write_options write_options_from(bool ascii, bool big_endian, bool float32, bool attributes) {
-    hmira::io::write_options o;
-    o.ply = ascii ? hmira::io::ply_encoding::ascii : big_endian ? hmira::io::ply_encoding::binary_big_endian : hmira::io::ply_encoding::binary_little_endian;
-    o.ply_coordinates = float32 ? hmira::io::ply_scalar::float32 : hmira::io::ply_scalar::float64;
-    o.stl = ascii ? hmira::io::stl_encoding::ascii : hmira::io::stl_encoding::binary;
-    o.write_attributes = attributes;
-    return o;
-}
-
-namespace {
-
-using vertex_array = nb::ndarray<const double, nb::ndim<2>, nb::c_contig, nb::device::cpu>;
 
 /// (V, F) numpy arrays seen as a mesh in place, without building one: what voxelize reads
 /// when the faces come as an (m, k) integer array. The indices must have been checked.
@@ -402,13 +261,6 @@ hmira::result<hmira::grid_geometry> voxel_grid_for(const M& mesh, std::optional<
         geometry.origin[a] = centre - 0.5 * double(geometry.dims[a] - 1) * *pitch;
     }
     return geometry;
-}
-
-/// The mode names of the CLI's --mode.
-hmira::voxelize_mode voxelize_mode_named(const std::string& mode) {
-    if (mode != "conservative" && mode != "surface" && mode != "centres")
-        value_error("voxelize: mode must be 'conservative', 'centres' or 'surface', got '" + mode + "'");
-    return mode == "surface" ? hmira::voxelize_mode::surface : mode == "centres" ? hmira::voxelize_mode::centres : hmira::voxelize_mode::solid;
 }
 
 /// (V, F) read in place as a mesh when F is an (m, k) int32/int64 array, else through a soup
@@ -496,7 +348,7 @@ nb::ndarray<nb::numpy, bool, nb::ndim<3>> bool_grid(std::unique_ptr<std::uint8_t
 
 nb::tuple voxelize(const vertex_array& vertices, nb::handle faces, std::optional<std::size_t> resolution, std::optional<double> pitch,
                    const std::string& mode, bool fill_open, unsigned threads) {
-    const auto named_mode = voxelize_mode_named(mode);
+    const auto named_mode = choice_arg<hmira::voxelize_mode>(mode, "voxelize", "mode");
     if (resolution && pitch) value_error("voxelize: give resolution or pitch, not both");
     if (resolution && *resolution == 0) value_error("voxelize: resolution must be at least 1");
     if (pitch && !(*pitch > 0 && std::isfinite(*pitch))) value_error("voxelize: pitch must be finite and > 0");
@@ -550,7 +402,7 @@ nb::ndarray<nb::numpy, bool, nb::ndim<3>> voxelize_block(const vertex_array& ver
                                                          std::array<double, 3> origin, double pitch, std::array<std::size_t, 3> lo,
                                                          std::array<std::size_t, 3> shape, const std::string& mode, bool fill_open,
                                                          unsigned threads) {
-    const auto named_mode = voxelize_mode_named(mode);
+    const auto named_mode = choice_arg<hmira::voxelize_mode>(mode, "voxelize", "mode");
     if (!(pitch > 0 && std::isfinite(pitch))) value_error("voxelize: pitch must be finite and > 0");
     const mesh_view view(vertices, faces, "voxelize");
     const hmira::grid_geometry grid{{dims[0], dims[1], dims[2]}, {origin[0], origin[1], origin[2]}, {pitch, pitch, pitch}};
@@ -575,80 +427,24 @@ nb::ndarray<nb::numpy, bool, nb::ndim<3>> voxelize_block(const vertex_array& ver
     return bool_grid(std::move(cells), block.dims);
 }
 
-using point_array = nb::ndarray<const double, nb::ndim<2>, nb::c_contig, nb::device::cpu>;
-
-nb::object delaunay(const point_array& points, bool voronoi) {
-    const std::size_t n = points.shape(0), dim = points.shape(1);
-    if (dim != 2 && dim != 3) value_error("delaunay_triangulation: points must have shape (n, 2) or (n, 3), got (" + std::to_string(n) + ", " + std::to_string(dim) + ")");
-    hmira::result<hmira::delaunay_triangles> r = hmira::fail(hmira::errc::invalid_argument, "");
-    {
-        nb::gil_scoped_release release;
-        cpp_timer timer;
-        const hmira::delaunay_options options{.voronoi = voronoi, .brio = true};
-        if (dim == 2) {
-            // (n, 2) doubles in C order are n std::array<double, 2>: read in place.
-            const auto* p = reinterpret_cast<const std::array<double, 2>*>(points.data());
-            r = hmira::delaunay_triangulation(std::span<const std::array<double, 2>>(p, n), options);
-        } else {
-            const auto* p = reinterpret_cast<const std::array<double, 3>*>(points.data());
-            r = hmira::delaunay_triangulation(std::span<const std::array<double, 3>>(p, n), options);
-        }
-    }
-    auto t = take(std::move(r));
-    // Triangles index the caller's points (the first of each group of duplicates).
-    std::vector<std::int32_t> tri(3 * t.triangles.size());
-    for (std::size_t i = 0; i < t.triangles.size(); ++i)
-        for (int c = 0; c < 3; ++c) tri[3 * i + c] = static_cast<std::int32_t>(t.vertex_to_input[t.triangles[i][c]]);
-    const std::size_t m = t.triangles.size();
-    auto triangles = adopt<std::int32_t>(std::move(tri), {m, 3});
-    if (!voronoi) return nb::cast(triangles);
-    std::vector<double> vv(2 * t.voronoi.vertices.size());
-    for (std::size_t i = 0; i < t.voronoi.vertices.size(); ++i) {
-        vv[2 * i] = t.voronoi.vertices[i].x;
-        vv[2 * i + 1] = t.voronoi.vertices[i].y;
-    }
-    std::vector<std::int32_t> ve(2 * t.voronoi.edges.size());
-    for (std::size_t i = 0; i < t.voronoi.edges.size(); ++i) {
-        const auto& e = t.voronoi.edges[i];
-        ve[2 * i] = static_cast<std::int32_t>(e.from);
-        ve[2 * i + 1] = e.to == hmira::voronoi_edge::no_vertex ? -1 : static_cast<std::int32_t>(e.to);
-    }
-    const std::size_t k = t.voronoi.vertices.size(), ne = t.voronoi.edges.size();
-    return nb::make_tuple(triangles, adopt<double>(std::move(vv), {k, 2}), adopt<std::int32_t>(std::move(ve), {ne, 2}));
-}
-
-void write_polygons(const std::string& path, const vertex_array& vertices, nb::handle faces, bool ascii, bool big_endian, bool float32) {
-    const auto soup = to_soup(vertices, faces, "write_mesh");
-    hmira::result<void> r;
-    {
-        nb::gil_scoped_release release;
-        hmira::face_vertex_mesh mesh;
-        r = hmira::io::assign_from_soup(mesh, soup, [&](std::size_t) { return path; });
-        if (r) r = hmira::io::write_mesh(mesh, path, write_options_from(ascii, big_endian, float32, true));
-    }
-    check(r);
-}
-
 }  // namespace
 
-void bind_arrays(nb::module_& m) {
-    m.def("_last_cpp_seconds", [] { return last_cpp_seconds(); },
-          "Seconds the last marching_cubes / voxelize / delaunay_triangulation / read_mesh spent in C++ (for bench/python).");
-    m.def("marching_cubes", &marching_cubes, nb::arg("volume"), nb::arg("iso") = 0.0, nb::kw_only(),
+void bind_conversion(nb::module_& m) {
+    const hmira::marching_cubes_options mc;
+    const hmira::voxelize_options vox;
+    const bool fill_open = vox.open_mesh == hmira::open_mesh_fill::winding_number;
+    m.def("marching_cubes", &marching_cubes, nb::arg("volume"), nb::arg("iso") = mc.iso, nb::kw_only(),
           nb::arg("spacing") = std::vector<double>{1, 1, 1}, nb::arg("origin") = std::vector<double>{0, 0, 0},
-          nb::arg("inside") = "below", nb::arg("threads") = 0u, MC_DOC);
+          nb::arg("inside") = name_of(mc.inside), nb::arg("threads") = mc.threads, MC_DOC);
     m.def("_voxelize", &voxelize, nb::arg("vertices"), nb::arg("faces"), nb::kw_only(), nb::arg("resolution") = nb::none(),
-          nb::arg("pitch") = nb::none(), nb::arg("mode") = "conservative", nb::arg("fill_open") = false, nb::arg("threads") = 0u,
-          "Voxelizes (vertices, faces); see hmira.voxelize.");
+          nb::arg("pitch") = nb::none(), nb::arg("mode") = name_of(vox.mode), nb::arg("fill_open") = fill_open,
+          nb::arg("threads") = vox.threads, "Voxelizes (vertices, faces); see hmira.voxelize.");
     m.def("_voxel_grid", &voxel_grid, nb::arg("vertices"), nb::kw_only(), nb::arg("resolution") = nb::none(), nb::arg("pitch") = nb::none(),
           "The grid hmira.voxelize uses for these vertices: ((nx, ny, nz), origin, pitch).");
     m.def("_voxelize_block", &voxelize_block, nb::arg("vertices"), nb::arg("faces"), nb::kw_only(), nb::arg("dims"), nb::arg("origin"),
-          nb::arg("pitch"), nb::arg("lo"), nb::arg("shape"), nb::arg("mode") = "conservative", nb::arg("fill_open") = false,
-          nb::arg("threads") = 0u, "Voxels [lo, lo + shape) of the grid (dims, origin, pitch), as hmira.voxelize sets them there; see hmira.dask.voxelize.");
-    m.def("delaunay_triangulation", &delaunay, nb::arg("points"), nb::kw_only(), nb::arg("voronoi") = false, DELAUNAY_DOC);
-    m.def("_write_polygons", &write_polygons, nb::arg("path"), nb::arg("vertices"), nb::arg("faces"), nb::kw_only(),
-          nb::arg("ascii") = false, nb::arg("big_endian") = false, nb::arg("float32") = false,
-          "Writes (vertices, faces) arrays as a mesh file; see hmira.write_mesh.");
+          nb::arg("pitch"), nb::arg("lo"), nb::arg("shape"), nb::arg("mode") = name_of(vox.mode), nb::arg("fill_open") = fill_open,
+          nb::arg("threads") = vox.threads,
+          "Voxels [lo, lo + shape) of the grid (dims, origin, pitch), as hmira.voxelize sets them there; see hmira.dask.voxelize.");
 }
 
 }  // namespace hmira_py

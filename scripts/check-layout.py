@@ -1,0 +1,43 @@
+#!/usr/bin/env python3
+"""Checks the header layout the house style asks for: no header under include/ is over 700 lines,
+and every public algorithm header (include/hmira/algorithms/<family>/<name>.hpp, not detail/)
+declares a public function within its first 100 lines, so a reader meets the entry point first.
+Forwarding headers (only #include lines) are exempt from the second rule."""
+import pathlib, re, sys
+
+root = pathlib.Path(__file__).resolve().parent.parent / 'include' / 'hmira'
+max_lines, entry_within = 700, 100
+# A function declared at namespace scope: column 0, a return type, a name, an opening parenthesis.
+decl = re.compile(r'^(?:\[\[nodiscard\]\]\s+)?(?:(?:inline|constexpr|static)\s+)*'
+                  r'(?!return\b|using\b|namespace\b|enum\b|struct\b|class\b|template\b|concept\b)'
+                  r'[\w:<>,\s*&]+?\b(\w+)\s*\(')
+helpers = {'enum_names', 'to_string', 'from_string', 'operator'}
+errors = []
+for path in sorted(root.rglob('*.hpp')):
+    rel = path.relative_to(root.parent.parent)
+    lines = path.read_text(encoding='utf-8').split('\n')
+    if len(lines) > max_lines:
+        errors.append(f'{rel}: {len(lines)} lines (at most {max_lines})')
+    parts = path.relative_to(root).parts
+    if parts[0] != 'algorithms' or 'detail' in parts or len(parts) != 3 or path.name.endswith('_common.hpp'):
+        continue
+    code = [l for l in lines if l.strip() and not l.lstrip().startswith(('//', '#'))]
+    if not code:
+        continue  # a forwarding header
+    depth_detail, first = 0, None
+    for i, line in enumerate(lines, 1):
+        if re.match(r'^namespace\s+[\w:]*detail\b', line):
+            depth_detail += 1
+        elif depth_detail and re.match(r'^}\s*//\s*namespace\s+[\w:]*detail', line):
+            depth_detail -= 1
+        elif not depth_detail:
+            m = decl.match(line)
+            if m and m.group(1) not in helpers:
+                first = i
+                break
+    if first is None or first > entry_within:
+        where = f'line {first}' if first else 'nowhere'
+        errors.append(f'{rel}: first public function at {where} (within the first {entry_within} lines)')
+for e in errors:
+    print(e)
+sys.exit(1 if errors else 0)
