@@ -1,4 +1,4 @@
-// Voxelization modes and blocks (issues 16 and 20): the `centres` mode against lattice counts
+// Voxelization modes and blocks: the `centres` mode against lattice counts
 // decided by hand (centres on faces, edges and vertices), an independent winding-number test,
 // and the divergence-theorem volume of real closed meshes; solid == surface | centres; and
 // voxelization by blocks equal to the whole grid, voxel for voxel, for every mode.

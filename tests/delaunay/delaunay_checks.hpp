@@ -50,7 +50,7 @@ inline std::vector<point3> monotone_chain_hull(std::vector<point3> pts) {
     return h;
 }
 
-/// Everything the issue asks of a Delaunay triangulation of `input`, checked independently.
+/// Everything asked of a Delaunay triangulation of `input`, checked independently.
 inline ::testing::AssertionResult is_delaunay_triangulation(const std::vector<point3>& input,
                                                             const hmira::delaunay_triangles& d) {
     using ::testing::AssertionFailure;

@@ -1,5 +1,5 @@
 // tests/delaunay/delaunay_large_test.cpp
-// The full-size cases: 10^6 uniform and clustered points and the 1000 x 1000 integer
+// The full-size cases: 10^6 uniform and clustered points and the 1000 x 1000 integer
 // lattice, with every property checked. Labelled "large"; under the sanitizers the inputs
 // shrink to keep the CI pass short.
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
 // hmira/algorithms/conversion/voxelize_blocks.hpp
-// Voxelization of a grid too large for memory, one block at a time (issue 16): the triangles
+// Voxelization of a grid too large for memory, one block at a time: the triangles
 // are binned to the blocks they touch, each block is filled on its own, and the parity of the
 // inside fill is carried into a block from the crossings before it, so every block holds
 // exactly the bits voxelize() gives there on the whole grid.
