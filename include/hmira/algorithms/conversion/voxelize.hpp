@@ -4,6 +4,7 @@
 // The machinery is in detail/voxelize_impl.hpp.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <string>
