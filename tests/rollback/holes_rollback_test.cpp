@@ -13,10 +13,10 @@ TYPED_TEST_SUITE(holes_rollback, hmira_test::all_models);
 
 /// A triangulated torus with two holes: one of 4 x 4 quads and one of 8 x 6 quads.
 const hmira_test::face_list& holed() {
-    static const auto g = hmira_test::triangulated(hmira_test::without_faces(hmira_test::torus(48, 24), [](std::size_t f) {
+    static const auto g = hmira_test::compacted(hmira_test::triangulated(hmira_test::without_faces(hmira_test::torus(48, 24), [](std::size_t f) {
         const std::size_t i = f / 24, j = f % 24;
         return (i >= 4 && i < 8 && j >= 4 && j < 8) || (i >= 20 && i < 28 && j >= 10 && j < 16);
-    }));
+    })));
     return g;
 }
 

@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <functional>
 #include <string>
+#include <vector>
 
 #include <hmira/core/progress.hpp>
 #include <hmira/core/result.hpp>
@@ -27,6 +28,24 @@ inline face_list triangulated(const face_list& g) {
     for (const auto& f : g.faces)
         for (std::size_t i = 1; i + 1 < f.size(); ++i) t.faces.push_back({f[0], f[i], f[i + 1]});
     return t;
+}
+
+/// `g` without the points no face uses (a valid mesh has no isolated vertex).
+inline face_list compacted(const face_list& g) {
+    std::vector<std::size_t> id(g.points.size(), std::size_t(-1));
+    face_list out;
+    for (const auto& f : g.faces) {
+        std::vector<std::size_t> loop;
+        for (const auto i : f) {
+            if (id[i] == std::size_t(-1)) {
+                id[i] = out.points.size();
+                out.points.push_back(g.points[i]);
+            }
+            loop.push_back(id[i]);
+        }
+        out.faces.push_back(std::move(loop));
+    }
+    return out;
 }
 
 /// A mesh of model M built from `g`.
@@ -62,7 +81,7 @@ void expect_cancel_restores(Make make, Run run, std::size_t min_calls = 2) {
         EXPECT_EQ(r.error().code, hmira::errc::cancelled) << r.error().message;
         EXPECT_EQ(seen, stop_at) << "the call went on reporting after it was cancelled";
         EXPECT_TRUE(snapshot(m) == before) << "the cancelled call changed the mesh";
-        EXPECT_TRUE(is_valid(m));
+        EXPECT_TRUE(hmira_test::is_valid(m));
     }
 }
 

@@ -366,8 +366,9 @@ void build_triangles(M& mesh, const hole_loop<M, T>& hl, const triangle_list& tr
 /// Refines the patch in `out` (Liepa 2003) and, with options.fair, fairs the vertices it added.
 /// Asks `gate`; a cancellation returns errc::cancelled with the patch half refined.
 template <class M, class T>
-result<void> refine_and_fair_hole(M& mesh, const hole_loop<M, T>& hl, const hole_plan& plan, const std::vector<double>& scale,
-                                  const fill_hole_options& options, progress_gate& gate, fill_hole_result<M, T>& out) {
+result<void> refine_and_fair_hole(M& mesh, const hole_loop<M, T>& hl, const hole_plan& plan,
+                                  const std::vector<double>& scale, const fill_hole_options& options, progress_gate& gate,
+                                  fill_hole_result<M, T>& out) {
     const auto& v = hl.v;
     const std::size_t n = v.size();
     patch<M, T> pt;
@@ -388,7 +389,8 @@ result<void> refine_and_fair_hole(M& mesh, const hole_loop<M, T>& hl, const hole
         return fail(errc::cancelled, "fill_hole: cancelled");
     out.faces = std::move(pt.faces);
     if (options.fair != fairing::none) {
-        const std::size_t budget = options.max_fairing_iterations > 0 ? options.max_fairing_iterations : 10 * pt.vertices.size() + 100;
+        const std::size_t budget =
+            options.max_fairing_iterations > 0 ? options.max_fairing_iterations : 10 * pt.vertices.size() + 100;
         const auto energy = options.fair == fairing::membrane ? fairing_energy::membrane : fairing_energy::thin_plate;
         const auto solved = fair_patch<M, T>(mesh, pt, energy, options.fairing_tolerance, budget, gate);
         if (solved.cancelled) return fail(errc::cancelled, "fill_hole: cancelled");
@@ -405,8 +407,8 @@ result<void> refine_and_fair_hole(M& mesh, const hole_loop<M, T>& hl, const hole
 /// half built, for the caller's journal or copy to undo. Every other error leaves the mesh
 /// unchanged.
 template <class M, class T>
-result<fill_hole_result<M, T>> fill_one(M& mesh, typename T::halfedge_handle boundary_halfedge, const fill_hole_options& options,
-                                        progress_gate& gate, bool can_roll_back) {
+result<fill_hole_result<M, T>> fill_one(M& mesh, typename T::halfedge_handle boundary_halfedge,
+                                        const fill_hole_options& options, progress_gate& gate, bool can_roll_back) {
     namespace dt = detail::triangle_ops;
     const long long element = detail::euler::index_of<M, T>(mesh, boundary_halfedge);
     auto walked = walk_loop<M, T>(mesh, boundary_halfedge);

@@ -121,7 +121,8 @@ private:
     }
 
     vec3<double> face_point_of(F f) {
-        if (in_place_) return detail::triangle_ops::position_of<M, T>(mesh_, vertex_of(w_.centre[T::face_index(mesh_, f)]));
+        namespace dt = detail::triangle_ops;
+        if (in_place_) return dt::position_of<M, T>(mesh_, vertex_of(w_.centre[T::face_index(mesh_, f)]));
         return w_.face_point[T::face_index(mesh_, f)];
     }
 
@@ -211,7 +212,8 @@ private:
                 const vec3<double> p = dt::position_of<M, T>(mesh_, v);
                 const H s = T::vertex_halfedge(mesh_, v);
                 const auto a = T::target(mesh_, s), b = T::target(mesh_, T::opposite(mesh_, T::prev(mesh_, s)));
-                w_.vertex_point[i] = p * 0.75 + (dt::position_of<M, T>(mesh_, a) + dt::position_of<M, T>(mesh_, b)) * 0.125;
+                const auto pa = dt::position_of<M, T>(mesh_, a), pb = dt::position_of<M, T>(mesh_, b);
+                w_.vertex_point[i] = p * 0.75 + (pa + pb) * 0.125;
             }
             if (!tick()) return false;
         }
@@ -265,8 +267,8 @@ private:
                 w_.corners.push_back(x);  // the first half of an edge a neighbour split
             } else if (const H o = T::opposite(mesh_, x); is_old(T::target(mesh_, o))) {
                 const F g = T::face(mesh_, o);
-                const vec3<double> ends =
-                    dt::position_of<M, T>(mesh_, T::target(mesh_, x)) + dt::position_of<M, T>(mesh_, T::target(mesh_, o));
+                const vec3<double> ends = dt::position_of<M, T>(mesh_, T::target(mesh_, x)) +
+                                          dt::position_of<M, T>(mesh_, T::target(mesh_, o));
                 const vec3<double> q = g == T::null_face() ? ends * 0.5 : (ends + c + face_point_of(g)) * 0.25;
                 // x now ends at the edge point; continue after the new half
                 x = dt::split_links<M, T>(mesh_, x, new_vertex(q, make), false, false, make);
@@ -288,7 +290,8 @@ private:
         // f keeps quad 0. Each next(corners[k]) is read before corners[k]'s next changes.
         const H first = w_.corners[0];
         H side = T::next(mesh_, first);  // next(corners[k - 1])
-        const auto centre = in_place_ ? vertex_of(next_vertex_++) : make.vertex(face_point_of(f));  // in place: there already
+        // In place the centre vertex exists already, at the face point.
+        const auto centre = in_place_ ? vertex_of(next_vertex_++) : make.vertex(face_point_of(f));
         assert(!in_place_ || std::size_t(T::vertex_index(mesh_, centre)) == w_.centre[T::face_index(mesh_, f)]);
         const H spike = make.edge(T::target(mesh_, first), centre);  // edge point 0 -> centre
         H out_of_centre = T::opposite(mesh_, spike);                 // centre -> edge point k - 1

@@ -166,7 +166,9 @@ template <class M, class T>
 void loop_split(M& mesh, loop_workspace<M, T>& w, loop_level_state<M, T>& s, typename T::halfedge_handle h) {
     namespace dt = detail::triangle_ops;
     using H = typename T::halfedge_handle;
-    const auto is_old = [&](typename T::vertex_handle v) { return std::size_t(T::vertex_index(mesh, v)) < s.vertex_bound; };
+    const auto is_old = [&](typename T::vertex_handle v) {
+        return std::size_t(T::vertex_index(mesh, v)) < s.vertex_bound;
+    };
     const std::size_t e = T::edge_index(mesh, T::edge(mesh, h));
     const auto v = w.edge_vertex[e];
     if (v == typename T::vertex_handle{}) return;  // split already
