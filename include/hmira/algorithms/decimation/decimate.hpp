@@ -41,7 +41,7 @@ struct decimate_options {
     std::vector<std::size_t> locked_vertices = {};
     /// Called between blocks of collapses with the fraction done; returning false cancels
     /// (errc::cancelled, "decimate: cancelled") and restores the mesh from a copy taken
-    /// before the first change, which is made only when a callback is given.
+    /// before the first change (mesh_rollback), which is made only when a callback is given.
     progress_function progress = {};
 };
 
@@ -89,7 +89,7 @@ concept decimatable_mesh = triangle_operable_mesh<M, T> && vertex_index_mesh<M, 
 /// errc::cancelled for a cancellation ("decimate: cancelled"); the errors of triangulate_faces.
 /// Complexity O(V + E + F) to set up plus O(E log E) to queue every edge; each collapse then costs O(d^2)
 /// for the checks and the refused neighbours (d the valence around it) and O(d log E) for the queue
-/// updates. Plus O(V + E + F) for the copy when a progress callback is given. Memory: 80 bytes of quadric
+/// updates. Plus O(V + E + F) for the copy when a progress callback is given (core/rollback.hpp). Memory: 80 bytes of quadric
 /// and 1 byte of flags per vertex, about 24 bytes per edge. Cache behaviour: detail/decimate_impl.hpp.
 template <class M, class T = default_traits<M>>
     requires decimatable_mesh<M, T>

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "../../../core/progress.hpp"
+#include "../../../core/rollback.hpp"
 #include "../../triangle/collapse_edge.hpp"
 #include "../../triangulation/triangulate_faces.hpp"
 #include "../decimate.hpp"
@@ -303,8 +304,9 @@ result<decimate_result> decimate(M& mesh, const decimate_options& options) {
         if (triangles && !dt::in_triangle<M, T>(mesh, T::face_halfedge(mesh, f))) triangles = false;
     }
     // The copy a cancellation restores, taken before anything changes (triangulation included).
-    std::vector<M> backup;
-    if (options.progress) backup.push_back(mesh);
+    // Without a callback nothing stops the collapses once they have begun (triangulate_faces
+    // fails with the mesh unchanged), so there is nothing to copy.
+    mesh_rollback<M> undo(mesh, bool(options.progress));
     if (!triangles) {
         if constexpr (triangulable_mesh<M, T>) {
             auto t = triangulate_faces<M, T>(mesh);
@@ -325,9 +327,10 @@ result<decimate_result> decimate(M& mesh, const decimate_options& options) {
     const std::size_t total = faces > target ? (faces - target) / 2048 : 0;
     detail::progress_gate gate(options.progress, total);
     if (!d.run(target, gate, out)) {
-        mesh = std::move(backup.front());
+        undo.restore();
         return fail(errc::cancelled, "decimate: cancelled");
     }
+    undo.commit();
     out.faces = d.faces();
     out.vertices = T::vertex_count(mesh);
     if (out.stopped_by == decimate_stop::constraints)
