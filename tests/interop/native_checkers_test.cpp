@@ -17,7 +17,7 @@
 #include <hmira/algorithms/euler/euler.hpp>
 #include <hmira/algorithms/primitives/primitives.hpp>
 
-#include "euler/euler_support.hpp"
+#include "algorithms/euler/euler_support.hpp"
 #include "support/models.hpp"
 
 #ifdef HMIRA_TEST_WITH_OPENMESH

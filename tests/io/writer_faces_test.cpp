@@ -13,7 +13,7 @@
 #include <hmira/io/mesh_io.hpp>
 #include <hmira/meshes/halfedge_mesh.hpp>
 
-#include "euler/euler_support.hpp"
+#include "algorithms/euler/euler_support.hpp"
 #include "io/io_support.hpp"
 #include "support/checks.hpp"
 
