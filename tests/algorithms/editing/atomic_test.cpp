@@ -1,4 +1,4 @@
-// Atomicity of truncate, bevel and extrude (issue 13, item 1): every call either succeeds
+// Atomicity of truncate, bevel and extrude: every call either succeeds
 // with a valid mesh, or fails with the mesh unchanged as seen through the traits (the same live
 // handles with the same indices, connectivity and positions). Checked three ways: seeded
 // random selections on awkward meshes; a failure injected into the k-th inner operator call;

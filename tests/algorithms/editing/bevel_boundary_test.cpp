@@ -1,4 +1,4 @@
-// Bevel of boundary edges (issue 13, item 5): on open quad grids, boundary edges alone, runs of
+// Bevel of boundary edges: on open quad grids, boundary edges alone, runs of
 // them, a whole boundary loop, and boundary and interior edges meeting, for flat and rounded
 // profiles. Each case checks the V/E/F change against counts derived by hand in the comments,
 // that the planar grid keeps its exact area (a boundary strip replaces part of its one face),

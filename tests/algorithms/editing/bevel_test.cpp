@@ -1,4 +1,4 @@
-// Bevel (issue 5): the cube-edge chamfer (volume removed computed here), rounded profiles on
+// Bevel: the cube-edge chamfer (volume removed computed here), rounded profiles on
 // a circle, meeting bevels at a cube corner, kept end vertices on a grid, clamping, the
 // vertex-only mode equal to truncate, and rejected input. Rounded bevels where edges meet
 // (segments > 1): the rounded cube (counts, spheres, cylinders, volume convergence), mitres,

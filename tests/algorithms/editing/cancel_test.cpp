@@ -1,5 +1,5 @@
-// Cancelling truncate, bevel and extrude through their options' progress callback (issue 15,
-// item 4): the edit reports once every 1024 elements it builds; when the callback returns false
+// Cancelling truncate, bevel and extrude through their options' progress callback: the edit
+// reports once every 1024 elements it builds; when the callback returns false
 // at the k-th report the edit stops, returns an error ending in "cancelled", and leaves the
 // mesh exactly as it was (every live element, its links and its position).
 #include <gtest/gtest.h>

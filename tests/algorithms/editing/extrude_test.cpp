@@ -1,4 +1,4 @@
-// Extrusion (issue 5): one face, a region, individual faces, faces with inner rings (holes);
+// Extrusion: one face, a region, individual faces, faces with inner rings (holes);
 // exact deltas, validity, Euler-Poincare with rings, walls of quads, outward orientation, the
 // volume added; random region extrusions; rejected input leaves the mesh unchanged.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Locality (issue 5): the traits operations one truncate, bevel or extrude performs, counted
+// Locality: the traits operations one truncate, bevel or extrude performs, counted
 // through an instrumented traits class, are the same on a small and on a large mesh.
 // g++ 12 at -O3 reports a false -Wrestrict inside std::string concatenation in
 // euler_common.hpp's name() for this instantiation (GCC bug 105329); not a real overlap.

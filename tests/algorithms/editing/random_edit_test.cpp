@@ -1,4 +1,4 @@
-// Randomised (issue 5): seeded random sequences of truncate, bevel (random segments) and extrude on random closed
+// Randomised: seeded random sequences of truncate, bevel (random segments) and extrude on random closed
 // meshes (tori and lattice boxes) stay valid, manifold, closed and of the same genus, and
 // every step has the delta its documentation gives.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Truncation (issue 5): exact deltas, validity, orientation and positions on every model that
+// Truncation: exact deltas, validity, orientation and positions on every model that
 // supports editing; the truncated cube and the cuboctahedron; boundary corners; rejected input.
 #include <gtest/gtest.h>
 

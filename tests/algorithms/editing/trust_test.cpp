@@ -1,4 +1,4 @@
-// Handles and links an edit cannot trust (issue 13, items 3 and 8): a deleted vertex, edge or
+// Handles and links an edit cannot trust: a deleted vertex, edge or
 // face is refused with errc::invalid_handle by the edits and the operators on every model
 // that can tell (hmira's meshes, OpenMesh's status bits, CGAL's is_removed), and a vertex whose
 // rotation is corrupt (a cycle that misses its start, a step that leaves the vertex) is

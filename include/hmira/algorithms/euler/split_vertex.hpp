@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "../../core/vec3.hpp"
+#include "detail/split_vertex_impl.hpp"
 #include "euler_common.hpp"
 #include "make_edge_vertex.hpp"
 
@@ -37,26 +38,6 @@ struct join_vertices_result {
     ///@}
     vec3<typename T::scalar> position{};  ///< where the removed vertex was
 };
-
-namespace detail::euler {
-
-/// The halfedges into target(from) met when turning from `from` (x -> opposite(next(x))) up
-/// to and including `to`; empty if `to` is not met before coming back to `from` (then the
-/// two are not in one rotation). O(halfedges turned over).
-template <class M, class T>
-std::vector<typename T::halfedge_handle> turn_between(const M& m, typename T::halfedge_handle from, typename T::halfedge_handle to) {
-    std::vector<typename T::halfedge_handle> out;
-    auto x = from;
-    do {
-        x = T::opposite(m, T::next(m, x));
-        out.push_back(x);
-        if (x == to) return out;
-    } while (x != from && out.size() <= (std::size_t{1} << 24));
-    out.clear();
-    return out;
-}
-
-}  // namespace detail::euler
 
 /// makeEV (MEV), general form: splits v = target(h0) = target(h1) in two. A new vertex at
 /// `position` takes over the edges of v that lie strictly between the corner of h0 and the
@@ -163,8 +144,6 @@ template <class M, class T = default_traits<M>>
 result<join_vertices_result<M, T>> join_vertices(M& mesh, typename T::halfedge_handle halfedge) {
     namespace de = detail::euler;
     using H = typename T::halfedge_handle;
-    using V = typename T::vertex_handle;
-    using F = typename T::face_handle;
     const auto h = halfedge;
     if (!de::usable<M, T>(mesh, h))
         return fail(errc::invalid_handle, "join_vertices: " + de::name<M, T>("halfedge", mesh, h) + " does not exist", de::index_of<M, T>(mesh, h));
@@ -180,85 +159,9 @@ result<join_vertices_result<M, T>> join_vertices(M& mesh, typename T::halfedge_h
         if (!k) return k.error();
         return join_vertices_result<M, T>{k->vertex, k->corner, k->corner, k->position};
     }
-    if (r == h)
-        return fail(errc::topology,
-                    "join_vertices: " + de::name<M, T>("vertex", mesh, v) +
-                        " (the survivor) has degree 1; join from the other end (the opposite halfedge)",
-                    de::index_of<M, T>(mesh, v));
-    const auto fh = T::face(mesh, h), fo = T::face(mesh, o);
-    if (fh == fo && fh != T::null_face())
-        return fail(errc::topology,
-                    "join_vertices: both sides of the edge lie on " + de::name<M, T>("face", mesh, fh) +
-                        "; joining its ends would make the face touch one vertex twice",
-                    de::index_of<M, T>(mesh, fh));
-    for (auto [loop_start, f] : {std::pair{h, fh}, std::pair{o, fo}}) {
-        const auto a = T::next(mesh, loop_start);
-        if (T::next(mesh, T::next(mesh, a)) == loop_start)
-            return fail(errc::topology,
-                        "join_vertices: the edge is a side of the triangle " + de::name<M, T>("face", mesh, f) +
-                            "; joining its ends would collapse it",
-                        de::index_of<M, T>(mesh, f));
-    }
-    // Neighbours and boundary gaps of both ends.
-    std::vector<V> nv, nw;
-    std::vector<F> fv, fw;  // faces around each end, other than the edge's own two
-    std::size_t gaps = 0, to_w = 0;
-    for (auto x = r;; x = T::next(mesh, T::opposite(mesh, x))) {  // outgoing of v, after h
-        if (x == h) break;
-        nv.push_back(T::target(mesh, x));
-        to_w += T::target(mesh, x) == w ? 1 : 0;
-        const auto f = T::face(mesh, x);
-        gaps += f == T::null_face() ? 1 : 0;
-        if (f != T::null_face() && f != fh && f != fo) fv.push_back(f);
-    }
-    for (auto x = n;; x = T::next(mesh, T::opposite(mesh, x))) {  // outgoing of w, after o
-        if (x == o) break;
-        nw.push_back(T::target(mesh, x));
-        const auto f = T::face(mesh, x);
-        gaps += f == T::null_face() ? 1 : 0;
-        if (f != T::null_face() && f != fh && f != fo) fw.push_back(f);
-    }
-    // h's and o's own corners merge with their neighbours' (counted above through n and r).
-    if (to_w > 0)
-        return fail(errc::topology,
-                    "join_vertices: " + de::name<M, T>("vertex", mesh, v) + " and " + de::name<M, T>("vertex", mesh, w) +
-                        " are joined by more than one edge; joining them would leave a loop edge",
-                    de::index_of<M, T>(mesh, w));
-    const auto common = [&]() -> long long {
-        if constexpr (vertex_index_mesh<M, T>) {
-            std::vector<std::size_t> a, b;
-            for (auto x : nv) a.push_back(T::vertex_index(mesh, x));
-            for (auto x : nw) b.push_back(T::vertex_index(mesh, x));
-            std::sort(a.begin(), a.end());
-            std::sort(b.begin(), b.end());
-            std::vector<std::size_t> both;
-            std::set_intersection(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(both));
-            return both.empty() ? -2 : static_cast<long long>(both.front());
-        } else {
-            for (auto x : nv)
-                for (auto y : nw)
-                    if (x == y) return -1;
-            return -2;
-        }
-    }();
-    if (common != -2)
-        return fail(errc::non_manifold,
-                    "join_vertices: " + de::name<M, T>("vertex", mesh, v) + " and " + de::name<M, T>("vertex", mesh, w) +
-                        " have a common neighbour (vertex " + (common >= 0 ? std::to_string(common) : std::string("(no index)")) +
-                        "); joining them would make a double edge",
-                    common);
-    for (auto a : fv)
-        for (auto b : fw)
-            if (a == b)
-                return fail(errc::non_manifold,
-                            "join_vertices: " + de::name<M, T>("face", mesh, a) + " touches both ends of the edge without containing it; joining them would make it touch one vertex twice",
-                            de::index_of<M, T>(mesh, a));
-    if (gaps > 1)
-        return fail(errc::non_manifold,
-                    "join_vertices: the joined vertex would have " + std::to_string(gaps) + " boundary gaps (" + de::name<M, T>("vertex", mesh, v) +
-                        " and " + de::name<M, T>("vertex", mesh, w) + " are on the boundary and the edge is not), which pinches the surface",
-                    de::index_of<M, T>(mesh, w));
+    if (auto ok = de::join_vertices_refusal<M, T>(mesh, h); !ok) return ok.error();
 
+    const auto fh = T::face(mesh, h), fo = T::face(mesh, o);
     join_vertices_result<M, T> out{v, p, q, vec3<typename T::scalar>{}};
     if constexpr (positioned_mesh<M, T>) out.position = T::position(mesh, w);
     const auto moved = de::turn_between<M, T>(mesh, h, q);  // into w, h excluded

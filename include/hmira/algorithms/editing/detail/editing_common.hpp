@@ -33,41 +33,6 @@ concept editable_mesh = euler_mutable_mesh<M, T> && positioned_mesh<M, T> && ver
 
 namespace detail::editing {
 
-/// An edit's progress reports: counts the elements it has built and calls the caller's
-/// progress_function once every `block` of them (a few thousand Euler operators, so the check
-/// costs nothing next to the edit), from the one thread that edits. Returning false from the
-/// callback makes step() fail with "<what>: cancelled"; the edit returns that error and its
-/// transaction rolls the mesh back.
-class edit_progress {
-public:
-    static constexpr std::size_t block = 1024;
-
-    /// `total` elements make up the edit (the fraction reported is done / total).
-    edit_progress(const progress_function& report, std::size_t total, const char* what)
-        : report_(report), total_(total ? total : 1), what_(what) {}
-
-    /// Counts one element done; an error once the callback has asked to stop. O(1) except at
-    /// the end of a block, where it adds the callback's own cost.
-    result<void> step() {
-        if (!report_ || ++done_ % block != 0) return {};
-        // Never backwards, though add_work() may grow the total after some reports.
-        reported_ = std::max(reported_, done_ >= total_ ? 1.0 : double(done_) / double(total_));
-        if (!report_(reported_)) return fail(errc::cancelled, std::string(what_) + ": cancelled");
-        return {};
-    }
-
-    /// An edit that learns its size phase by phase (bevel plans before it builds) adds each
-    /// phase's elements here, so every phase's loop can step() and be cancelled.
-    void add_work(std::size_t elements) { total_ += elements; }
-
-private:
-    const progress_function& report_;
-    std::size_t total_;
-    std::size_t done_ = 0;
-    double reported_ = 0;
-    const char* what_;
-};
-
 template <class M, class T>
 using point = vec3<typename T::scalar>;
 
@@ -86,7 +51,7 @@ point<M, T> to_point(const vec3<double>& p) {
 /// Room for an edit that creates up to this many vertices, edges and faces, in the mesh
 /// (the traits' optional reserve, as index bounds) and in the active journal (JT's optional
 /// reserve_journal), so that a whole-mesh edit never reallocates half way: growing vectors of
-/// millions of elements copied them and faulted in fresh pages, which made such edits
+/// millions of elements copies them and faults in fresh pages, which makes such edits
 /// superlinear. Only when the edit grows the mesh by at least an eighth: a loop of small
 /// edits would otherwise reallocate (exact reserve) on every call. Only capacity changes.
 template <class M, class T>
@@ -102,8 +67,8 @@ void reserve_growth(M& m, std::size_t vertices, std::size_t edges, std::size_t f
 /// stay local (no array sized by the whole mesh). Sparse sets hash (open addressing, linear
 /// probing, the table doubles at half load); a set whose indices are dense (the largest index
 /// below 64 * 4 times the count, as when a whole mesh is selected) is a bitmap instead, which
-/// keeps neighbouring indices in one cache line: hashed, a million-element selection missed
-/// the cache on every lookup and made whole-mesh edits superlinear. Expected O(1) per insert
+/// keeps neighbouring indices in one cache line (hashed, a million-element selection misses
+/// the cache on every lookup, which makes whole-mesh edits superlinear). Expected O(1) per insert
 /// or lookup, amortised.
 class index_set {
 public:

@@ -36,10 +36,10 @@ namespace hmira::detail::editing {
 // Elements made by the edit itself need no undo (the rollback erases them): a change to an
 // element whose index is at or above the index bound the mesh had when the edit began is not
 // journaled. That keeps a whole-mesh edit's journal to the changes of the old elements (a
-// third of the entries for truncate_all), which is what made such edits slow (memory).
+// third of the entries for truncate_all), and its memory in proportion.
 
 /// Makes room for one more element of v, growing geometrically: reserve(size() + 1) alone
-/// reallocates on every call (libstdc++ reserves exactly), which made a journal of n entries
+/// reallocates on every call (libstdc++ reserves exactly), so a journal of n entries would
 /// cost O(n^2). Amortised O(1).
 template <class X>
 void reserve_one_more(std::vector<X>& v) {
@@ -48,7 +48,8 @@ void reserve_one_more(std::vector<X>& v) {
 
 /// An append-only list in chunks that double up to 64k elements: unlike a vector it never
 /// copies what it holds, so a journal of tens of millions of entries (a whole-mesh edit) needs
-/// no transient 3x of its size, whose fresh pages made such edits superlinear. Amortised O(1).
+/// no transient 3x of its size, whose fresh pages would make such edits superlinear.
+/// Amortised O(1).
 template <class X>
 class chunked_log {
 public:
