@@ -12,7 +12,7 @@ decl = re.compile(r'^(?:\[\[nodiscard\]\]\s+)?(?:(?:inline|constexpr|static)\s+)
                   r'(?!return\b|using\b|namespace\b|enum\b|struct\b|class\b|template\b|concept\b)'
                   r'[\w:<>,\s*&]+?\b(\w+)\s*\(')
 helpers = {'enum_names', 'to_string', 'from_string', 'operator'}
-errors = []
+errors, found = [], []
 for path in sorted(root.rglob('*.hpp')):
     rel = path.relative_to(root.parent.parent)
     lines = path.read_text(encoding='utf-8').split('\n')
@@ -31,13 +31,27 @@ for path in sorted(root.rglob('*.hpp')):
         elif depth_detail and re.match(r'^}\s*//\s*namespace\s+[\w:]*detail', line):
             depth_detail -= 1
         elif not depth_detail:
+            # A template's entry point counts from its `template <...>` line; the declaration
+            # may follow on the next lines, after a requires-clause.
+            start = i
+            if line.startswith('template'):
+                rest = ' '.join(l.strip() for l in lines[i - 1:i + 3])
+                m = re.search(r'>\s*(?:requires\s+[\w:<>, &|()!]+?\s+)?[\w:<>,*& ]+?\b(\w+)\s*\(', rest)
+                if m and m.group(1) not in helpers and not rest.split('>', 1)[-1].lstrip().startswith(
+                        ('struct', 'class', 'concept', 'using', 'inline constexpr', 'constexpr bool')):
+                    first = start
+                    break
+                continue
             m = decl.match(line)
             if m and m.group(1) not in helpers:
                 first = i
                 break
+    found.append(f"{rel}: {first}")
     if first is None or first > entry_within:
         where = f'line {first}' if first else 'nowhere'
         errors.append(f'{rel}: first public function at {where} (within the first {entry_within} lines)')
+if len(sys.argv) > 1 and sys.argv[1] == "--list":
+    print("\n".join(found))
 for e in errors:
     print(e)
 sys.exit(1 if errors else 0)
