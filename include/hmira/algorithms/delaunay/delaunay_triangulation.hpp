@@ -38,8 +38,10 @@ enum class delaunay_status {
 /// is the ray from `from` along `direction` (pointing out of the hull) and to == no_vertex.
 struct voronoi_edge {
     static constexpr std::uint32_t no_vertex = 0xFFFFFFFFu;  ///< `to` of a ray
-    std::uint32_t site0 = 0, site1 = 0;                      ///< the Delaunay edge's end vertices
-    std::uint32_t from = 0, to = no_vertex;                  ///< the Voronoi vertices joined (triangle indices)
+    std::uint32_t site0 = 0;        ///< one end vertex of the Delaunay edge
+    std::uint32_t site1 = 0;        ///< the other end vertex of the Delaunay edge
+    std::uint32_t from = 0;         ///< the Voronoi vertex the edge starts at (a triangle index)
+    std::uint32_t to = no_vertex;   ///< the Voronoi vertex it ends at, or no_vertex for a ray
     vec3<double> direction{};                                ///< a ray's direction (hull edges only)
 };
 
@@ -58,9 +60,10 @@ struct delaunay_triangles {
     /// The convex hull as a counter-clockwise loop of indices into points, starting at any
     /// vertex. Hull vertices on a straight stretch of the hull are included.
     std::vector<std::uint32_t> hull;
-    /// points[i] is input point vertex_to_input[i] (the first of its duplicates, in input
-    /// order); input point j became points[input_to_vertex[j]].
-    std::vector<std::uint32_t> vertex_to_input, input_to_vertex;
+    /// points[i] is input point vertex_to_input[i] (the first of its duplicates, in input order).
+    std::vector<std::uint32_t> vertex_to_input;
+    /// Input point j became points[input_to_vertex[j]].
+    std::vector<std::uint32_t> input_to_vertex;
     voronoi_diagram voronoi;  ///< empty unless options.voronoi
 };
 
@@ -107,8 +110,10 @@ struct delaunay_mesh_result {
     std::vector<vertex_handle_t<Mesh, Traits>> vertices;
     std::vector<face_handle_t<Mesh, Traits>> faces;   ///< the new faces, in the order of delaunay_triangles::triangles
     std::vector<vertex_handle_t<Mesh, Traits>> hull;  ///< the convex hull as a counter-clockwise loop of new vertices
-    /// vertices[i] comes from input point vertex_to_input[i]; input j became vertices[input_to_vertex[j]].
-    std::vector<std::uint32_t> vertex_to_input, input_to_vertex;
+    /// vertices[i] comes from input point vertex_to_input[i].
+    std::vector<std::uint32_t> vertex_to_input;
+    /// Input point j became vertices[input_to_vertex[j]].
+    std::vector<std::uint32_t> input_to_vertex;
     voronoi_diagram voronoi;  ///< empty unless options.voronoi; vertex i is dual to faces[i], sites index `vertices`
 };
 
