@@ -1,5 +1,6 @@
 // fuzz/fuzz_inr_gz.cpp
-// libFuzzer target for the INRIMAGE-4 reader through gzip (the input is compressed first unless it is gzip already), which exercises the bounded inflation (see fuzz_volume.hpp for the property checked).
+// libFuzzer target for the INRIMAGE-4 reader through gzip (the input is compressed first unless it is gzip already),
+// which exercises the bounded inflation (see fuzz_volume.hpp for the property checked).
 #include <cstdio>
 #include <cstdlib>
 

@@ -27,7 +27,8 @@ struct mesh_outcome {
 /// Builds a Mesh from the soup and checks it against the soup, then writes it in `format` and
 /// reads that back. `kind` names the mesh in the returned problem.
 template <class Mesh>
-mesh_outcome build_and_round_trip(const hmira::io::polygon_soup& soup, hmira::io::file_format format, const std::string& kind) {
+mesh_outcome build_and_round_trip(const hmira::io::polygon_soup& soup, hmira::io::file_format format,
+                                  const std::string& kind) {
     using namespace hmira;
     Mesh mesh;
     auto built = io::assign_from_soup(mesh, soup, [](std::size_t) { return std::string("fuzz"); });
@@ -38,7 +39,8 @@ mesh_outcome build_and_round_trip(const hmira::io::polygon_soup& soup, hmira::io
             return {false, kind + ": a rejection message that is empty or of several lines: " + e.message};
         if (e.element < 0 || static_cast<std::size_t>(e.element) >= soup.face_count())
             return {false, kind + ": a rejection naming no face of the soup: " + e.message};
-        if (mesh.vertex_count() != 0 || mesh.face_count() != 0) return {false, kind + ": a rejected soup changed the mesh"};
+        if (mesh.vertex_count() != 0 || mesh.face_count() != 0)
+            return {false, kind + ": a rejected soup changed the mesh"};
         return {false, ""};
     }
     if (mesh.vertex_count() != soup.points.size() || mesh.face_count() != soup.face_count())
@@ -66,7 +68,8 @@ mesh_outcome build_and_round_trip(const hmira::io::polygon_soup& soup, hmira::io
     auto back = io::parse_soup(*again, format, "again");
     if (!back) return {true, kind + ": re-reading what the writer wrote failed: " + back.error().message};
     // STL stores no shared vertices, so only the other formats keep the counts.
-    if (format != io::file_format::stl && (back->points.size() != soup.points.size() || back->face_count() != soup.face_count()))
+    if (format != io::file_format::stl &&
+        (back->points.size() != soup.points.size() || back->face_count() != soup.face_count()))
         return {true, kind + ": the round trip changed the counts"};
     return {true, ""};
 }
@@ -78,7 +81,8 @@ inline std::string one_input(hmira::io::file_format format, const std::uint8_t* 
     auto soup = io::parse_soup(bytes, format, "fuzz");
     if (!soup) {
         if (soup.error().message.empty()) return "an error without a message";
-        if (soup.error().message.find('\n') != std::string::npos) return "a message of several lines: " + soup.error().message;
+        if (soup.error().message.find('\n') != std::string::npos)
+            return "a message of several lines: " + soup.error().message;
         return "";
     }
     // Well-formed soup: indices in range, faces of 3+ corners, attributes sized right.
@@ -86,8 +90,10 @@ inline std::string one_input(hmira::io::file_format format, const std::uint8_t* 
         if (i >= soup->points.size()) return "index out of range in an accepted soup";
     for (std::size_t f = 0; f < soup->face_count(); ++f)
         if (soup->face_offsets[f + 1] < soup->face_offsets[f] + 3) return "face with fewer than 3 corners accepted";
-    if (!soup->attributes.normals.empty() && soup->attributes.normals.size() != soup->points.size()) return "normals not one per vertex";
-    if (!soup->attributes.colors.empty() && soup->attributes.colors.size() != soup->points.size()) return "colours not one per vertex";
+    if (!soup->attributes.normals.empty() && soup->attributes.normals.size() != soup->points.size())
+        return "normals not one per vertex";
+    if (!soup->attributes.colors.empty() && soup->attributes.colors.size() != soup->points.size())
+        return "colours not one per vertex";
 
     const auto polygons = build_and_round_trip<face_vertex_mesh>(*soup, format, "face_vertex_mesh");
     if (!polygons.problem.empty()) return polygons.problem;

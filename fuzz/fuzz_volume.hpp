@@ -66,7 +66,8 @@ inline std::string one_binvox(const std::uint8_t* data, std::size_t size) {
     if (!g) return check_message(g.error().message);
     const auto d = g->dims();
     if (d[0] == 0 || d[0] != d[1] || d[1] != d[2]) return "an accepted binvox grid that is not a cube";
-    if (!std::isfinite(g->origin().x) || !(g->spacing().x > 0) || !std::isfinite(g->spacing().x)) return "an accepted binvox grid with bad geometry";
+    if (!std::isfinite(g->origin().x) || !(g->spacing().x > 0) || !std::isfinite(g->spacing().x))
+        return "an accepted binvox grid with bad geometry";
     return "";
 }
 
@@ -80,7 +81,8 @@ inline std::string one_points(const std::uint8_t* data, std::size_t size) {
             continue;
         }
         for (const auto& p : *pts)
-            if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) return "an accepted point that is not finite";
+            if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+                return "an accepted point that is not finite";
     }
     return "";
 }

@@ -41,10 +41,10 @@ struct page_mesh {
 
 /// The plain-array view of a polygon mesh that make_page_mesh() takes.
 struct mesh_arrays {
-    std::span<const double> points;          ///< x y z per vertex
-    std::span<const std::uint32_t> offsets;  ///< F + 1 entries: face f has corners[offsets[f] .. offsets[f+1])
-    std::span<const std::uint32_t> corners;  ///< vertex indices, each < points.size() / 3
-    std::span<const float> normals = {};     ///< x y z per vertex, or empty
+    std::span<const double> points;             ///< x y z per vertex
+    std::span<const std::uint32_t> offsets;     ///< F + 1 entries: face f has corners[offsets[f] .. offsets[f+1])
+    std::span<const std::uint32_t> corners;     ///< vertex indices, each < points.size() / 3
+    std::span<const float> normals = {};        ///< x y z per vertex, or empty
     std::span<const std::uint8_t> colors = {};  ///< r g b a per vertex, or empty
 };
 
@@ -53,7 +53,8 @@ inline std::array<double, 3> bounding_box_centre(std::span<const double> points)
     if (points.size() < 3) return {0, 0, 0};
     std::array<double, 3> lo{points[0], points[1], points[2]}, hi = lo;
     for (std::size_t i = 0; i + 2 < points.size(); i += 3)
-        for (std::size_t k = 0; k < 3; ++k) lo[k] = std::min(lo[k], points[i + k]), hi[k] = std::max(hi[k], points[i + k]);
+        for (std::size_t k = 0; k < 3; ++k)
+            lo[k] = std::min(lo[k], points[i + k]), hi[k] = std::max(hi[k], points[i + k]);
     // Halves first: lo + hi overflows for coordinates beyond half the double range.
     return {lo[0] / 2 + hi[0] / 2, lo[1] / 2 + hi[1] / 2, lo[2] / 2 + hi[2] / 2};
 }
@@ -73,12 +74,14 @@ inline std::size_t first_vertex_beyond_float_range(const page_mesh& m) {
 /// \pre every corner < points.size() / 3, offsets non-decreasing and ending at corners.size(),
 ///      normals and colors empty or one per vertex (checked by the caller).
 /// \post triangles.size() == 3 * edge_mask.size(). O(C log C) for C corners (the edge sort).
-inline page_mesh make_page_mesh(std::string name, const page_info& info, const mesh_arrays& mesh, std::array<double, 3> origin) {
+inline page_mesh make_page_mesh(std::string name, const page_info& info, const mesh_arrays& mesh,
+                                std::array<double, 3> origin) {
     page_mesh out;
     out.name = std::move(name);
     out.info = info;
     out.positions.resize(mesh.points.size());
-    for (std::size_t i = 0; i < mesh.points.size(); ++i) out.positions[i] = static_cast<float>(mesh.points[i] - origin[i % 3]);
+    for (std::size_t i = 0; i < mesh.points.size(); ++i)
+        out.positions[i] = static_cast<float>(mesh.points[i] - origin[i % 3]);
     out.normals.assign(mesh.normals.begin(), mesh.normals.end());
     out.colors.assign(mesh.colors.begin(), mesh.colors.end());
 
@@ -95,7 +98,8 @@ inline page_mesh make_page_mesh(std::string name, const page_info& info, const m
         if (n < 3) continue;
         const auto first = static_cast<std::uint32_t>(out.triangles.size() / 3);
         for (std::uint32_t i = 1; i + 1 < n; ++i) {
-            out.triangles.insert(out.triangles.end(), {mesh.corners[begin], mesh.corners[begin + i], mesh.corners[begin + i + 1]});
+            out.triangles.insert(out.triangles.end(),
+                                 {mesh.corners[begin], mesh.corners[begin + i], mesh.corners[begin + i + 1]});
             out.edge_mask.push_back(0);
         }
         // Polygon edge (c_j, c_j+1) lies in fan triangle t as edge k: j = 0 is triangle 0 edge 0,
@@ -103,13 +107,17 @@ inline page_mesh make_page_mesh(std::string name, const page_info& info, const m
         for (std::uint32_t j = 0; j < n; ++j) {
             const std::uint32_t a = mesh.corners[begin + j], b = mesh.corners[begin + (j + 1) % n];
             std::uint32_t slot = 0;
-            if (j == 0) slot = 3 * first;
-            else if (j == n - 1) slot = 3 * (first + n - 3) + 2;
-            else slot = 3 * (first + j - 1) + 1;
+            if (j == 0)
+                slot = 3 * first;
+            else if (j == n - 1)
+                slot = 3 * (first + n - 3) + 2;
+            else
+                slot = 3 * (first + j - 1) + 1;
             sides.push_back({(std::uint64_t{std::min(a, b)} << 32) | std::max(a, b), slot});
         }
     }
-    std::sort(sides.begin(), sides.end(), [](const side& x, const side& y) { return x.key < y.key || (x.key == y.key && x.slot < y.slot); });
+    std::sort(sides.begin(), sides.end(),
+              [](const side& x, const side& y) { return x.key < y.key || (x.key == y.key && x.slot < y.slot); });
     for (std::size_t i = 0; i < sides.size();) {
         std::size_t j = i;
         while (j < sides.size() && sides[j].key == sides[i].key) ++j;
@@ -134,10 +142,12 @@ inline void put_base64(std::ostream& os, std::span<const std::uint8_t> bytes) {
         const std::size_t stop = std::min(bytes.size(), i + 3 * 4096);
         for (; i + 3 <= stop; i += 3) {
             const std::uint32_t v = (std::uint32_t{bytes[i]} << 16) | (std::uint32_t{bytes[i + 1]} << 8) | bytes[i + 2];
-            chunk += alphabet[v >> 18], chunk += alphabet[(v >> 12) & 63], chunk += alphabet[(v >> 6) & 63], chunk += alphabet[v & 63];
+            chunk += alphabet[v >> 18], chunk += alphabet[(v >> 12) & 63], chunk += alphabet[(v >> 6) & 63],
+                chunk += alphabet[v & 63];
         }
         if (i < stop) {  // the last 1 or 2 bytes
-            const std::uint32_t v = (std::uint32_t{bytes[i]} << 16) | (i + 1 < stop ? std::uint32_t{bytes[i + 1]} << 8 : 0u);
+            const std::uint32_t v =
+                (std::uint32_t{bytes[i]} << 16) | (i + 1 < stop ? std::uint32_t{bytes[i + 1]} << 8 : 0u);
             chunk += alphabet[v >> 18], chunk += alphabet[(v >> 12) & 63];
             chunk += i + 1 < stop ? alphabet[(v >> 6) & 63] : '=';
             chunk += '=';
@@ -175,10 +185,14 @@ inline std::string json_string(std::string_view s) {
     std::string o = "\"";
     for (char c : s) {
         const auto u = static_cast<unsigned char>(c);
-        if (c == '"' || c == '\\') o += '\\', o += c;
-        else if (c == '<') o += "\\u003c";  // never "</script>" inside the JSON block
-        else if (u < 0x20) o += ' ';
-        else o += c;
+        if (c == '"' || c == '\\')
+            o += '\\', o += c;
+        else if (c == '<')
+            o += "\\u003c";  // never "</script>" inside the JSON block
+        else if (u < 0x20)
+            o += ' ';
+        else
+            o += c;
     }
     return o + '"';
 }
@@ -186,10 +200,14 @@ inline std::string json_string(std::string_view s) {
 inline std::string html_text(std::string_view s) {
     std::string o;
     for (char c : s) {
-        if (c == '<') o += "&lt;";
-        else if (c == '>') o += "&gt;";
-        else if (c == '&') o += "&amp;";
-        else o += c;
+        if (c == '<')
+            o += "&lt;";
+        else if (c == '>')
+            o += "&gt;";
+        else if (c == '&')
+            o += "&amp;";
+        else
+            o += c;
     }
     return o;
 }
@@ -203,19 +221,24 @@ inline std::string html_text(std::string_view s) {
 inline void write_page(std::ostream& os, std::span<const page_mesh> meshes, std::string_view bundle) {
     std::string title = "hmira view:";
     for (const auto& m : meshes) title += " " + m.name;
-    os << "<!doctype html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>" << detail::html_text(title) << "</title>\n"
+    os << "<!doctype html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>" << detail::html_text(title)
+       << "</title>\n"
        << "<meta name=\"generator\" content=\"hmira view\">\n"
        << "<style>html,body{margin:0;height:100%;overflow:hidden;background:#f4f5f7}canvas{display:block}"
-          ".hmira-ui{position:absolute;top:10px;font:13px/1.45 system-ui,sans-serif;color:#222;background:rgba(255,255,255,.8);"
-          "padding:6px 9px;border-radius:5px;pointer-events:auto}.hmira-controls{right:10px}.hmira-controls label{display:block}"
+          ".hmira-ui{position:absolute;top:10px;font:13px/1.45 "
+          "system-ui,sans-serif;color:#222;background:rgba(255,255,255,.8);"
+          "padding:6px 9px;border-radius:5px;pointer-events:auto}.hmira-controls{right:10px}.hmira-controls "
+          "label{display:block}"
           ".hmira-controls button{margin:4px 4px 0 0;font-size:12px}</style>\n</head>\n<body>\n";
     os << "<script type=\"application/json\" id=\"hmira-scene\">{\"version\": 1, \"meshes\": [";
     for (std::size_t i = 0; i < meshes.size(); ++i) {
         const auto& m = meshes[i];
-        os << (i ? ", " : "") << "{\"name\": " << detail::json_string(m.name) << ", \"triangles\": " << m.triangles.size() / 3
-           << ", \"info\": {\"vertices\": " << m.info.vertices << ", \"edges\": " << m.info.edges << ", \"faces\": " << m.info.faces
-           << ", \"genus\": " << m.info.genus << ", \"closed\": " << (m.info.closed ? "true" : "false")
-           << ", \"boundary_edges\": " << m.boundary.size() / 2 << ", \"non_manifold_edges\": " << m.non_manifold.size() / 2 << "}}";
+        os << (i ? ", " : "") << "{\"name\": " << detail::json_string(m.name)
+           << ", \"triangles\": " << m.triangles.size() / 3 << ", \"info\": {\"vertices\": " << m.info.vertices
+           << ", \"edges\": " << m.info.edges << ", \"faces\": " << m.info.faces << ", \"genus\": " << m.info.genus
+           << ", \"closed\": " << (m.info.closed ? "true" : "false")
+           << ", \"boundary_edges\": " << m.boundary.size() / 2
+           << ", \"non_manifold_edges\": " << m.non_manifold.size() / 2 << "}}";
     }
     os << "]}</script>\n";
     for (std::size_t i = 0; i < meshes.size(); ++i) {

@@ -32,9 +32,11 @@ template <class M>
 void row(const char* name, const M& mesh) {
     const auto t = mesh_topology(mesh);
     const auto problems = validate(mesh);
-    std::printf("  %-22s V=%-7zu E=%-7zu F=%-7zu chi=%-4lld genus=%-2lld components=%-3zu boundary loops=%-3zu %s\n", name, t.vertices,
-                t.edges, t.faces, t.euler_characteristic, t.genus, t.components, t.boundary_loops,
-                problems.empty() ? "valid" : (std::to_string(problems.size()) + " problem(s): " + problems.front().message).c_str());
+    std::printf("  %-22s V=%-7zu E=%-7zu F=%-7zu chi=%-4lld genus=%-2lld components=%-3zu boundary loops=%-3zu %s\n",
+                name, t.vertices, t.edges, t.faces, t.euler_characteristic, t.genus, t.components, t.boundary_loops,
+                problems.empty()
+                    ? "valid"
+                    : (std::to_string(problems.size()) + " problem(s): " + problems.front().message).c_str());
 }
 
 template <class M>
@@ -52,13 +54,16 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 std::optional<int> parse_arguments(int argc, char** argv, fs::path& out, fs::path& data) {
     for (int i = 1; i < argc; ++i) {
         const std::string_view a = argv[i];
-        if ((a == "--out" || a == "-o") && i + 1 < argc) out = argv[++i];
-        else if (a == "--data" && i + 1 < argc) data = argv[++i];
+        if ((a == "--out" || a == "-o") && i + 1 < argc)
+            out = argv[++i];
+        else if (a == "--data" && i + 1 < argc)
+            data = argv[++i];
         else if (a == "--help" || a == "-h") {
-            std::puts("usage: hmira-demo [--out DIR] [--data DIR]\n"
-                      "  Runs hmira's algorithms on built-in solids (and on DIR/meshes/*.off from Debian's\n"
-                      "  libcgal-demo when --data is given), prints a summary and writes OBJ files to --out.\n"
-                      "  example: hmira-demo --out demo-output --data build/test-data");
+            std::puts(
+                "usage: hmira-demo [--out DIR] [--data DIR]\n"
+                "  Runs hmira's algorithms on built-in solids (and on DIR/meshes/*.off from Debian's\n"
+                "  libcgal-demo when --data is given), prints a summary and writes OBJ files to --out.\n"
+                "  example: hmira-demo --out demo-output --data build/test-data");
             return 0;
         } else {
             std::fprintf(stderr, "hmira-demo: unknown argument '%s' (try --help)\n", argv[i]);
@@ -70,9 +75,14 @@ std::optional<int> parse_arguments(int argc, char** argv, fs::path& out, fs::pat
 
 void generated_solids(const fs::path& out) {
     std::puts("1. Generated solids on the half-edge mesh, checked by validate() and topology:");
-    struct solid { const char* name; result<generated_elements<halfedge_mesh>> (*make)(halfedge_mesh&, const solid_options&); };
-    const solid solids[] = {{"tetrahedron", generate_tetrahedron<halfedge_mesh>}, {"cube", generate_cube<halfedge_mesh>},
-                            {"octahedron", generate_octahedron<halfedge_mesh>}, {"dodecahedron", generate_dodecahedron<halfedge_mesh>},
+    struct solid {
+        const char* name;
+        result<generated_elements<halfedge_mesh>> (*make)(halfedge_mesh&, const solid_options&);
+    };
+    const solid solids[] = {{"tetrahedron", generate_tetrahedron<halfedge_mesh>},
+                            {"cube", generate_cube<halfedge_mesh>},
+                            {"octahedron", generate_octahedron<halfedge_mesh>},
+                            {"dodecahedron", generate_dodecahedron<halfedge_mesh>},
                             {"icosahedron", generate_icosahedron<halfedge_mesh>}};
     for (const auto& s : solids) {
         halfedge_mesh m;
@@ -82,7 +92,8 @@ void generated_solids(const fs::path& out) {
         save(m, out / (std::string(s.name) + ".obj"));
     }
     halfedge_mesh torus;
-    check(static_cast<bool>(generate_torus(torus, {.major_radius = 1, .minor_radius = 0.3, .rings = 48, .sides = 24})), "generate torus");
+    check(static_cast<bool>(generate_torus(torus, {.major_radius = 1, .minor_radius = 0.3, .rings = 48, .sides = 24})),
+          "generate torus");
     row("torus 48x24", torus);
     check(mesh_topology(torus).genus == 1, "torus genus must be 1");
     save(torus, out / "torus.obj");
@@ -122,7 +133,8 @@ void flip_twice(const fs::path& out, const char* name, bool keep) {
     const double v1 = signed_volume(mesh);
     flip_normals(mesh);
     const double v2 = signed_volume(mesh);
-    std::printf("  %-22s volume %+.4f -> %+.4f -> %+.4f  %s\n", name, v0, v1, v2, validate(mesh).empty() ? "valid" : "INVALID");
+    std::printf("  %-22s volume %+.4f -> %+.4f -> %+.4f  %s\n", name, v0, v1, v2,
+                validate(mesh).empty() ? "valid" : "INVALID");
     check(v1 < 0 && v0 > 0 && std::abs(v2 - v0) < 1e-12, std::string(name) + ": flip must negate the volume");
     if (keep) save(mesh, out / "icosahedron-flipped-twice.obj");
 }
@@ -136,7 +148,8 @@ void flipping(const fs::path& out) {
 void components(const fs::path& out) {
     std::puts("\n4. Connected components of a disjoint union (union-find):");
     halfedge_mesh m;
-    for (int i = 0; i < 4; ++i) check(static_cast<bool>(generate_octahedron(m, {.center = {3.0 * i, 0, 0}})), "generate");
+    for (int i = 0; i < 4; ++i)
+        check(static_cast<bool>(generate_octahedron(m, {.center = {3.0 * i, 0, 0}})), "generate");
     m.add_vertex({-3, 0, 0});
     const auto c = connected_components(m);
     std::printf("  4 octahedra + 1 isolated vertex -> %zu components\n", c.count);
@@ -146,7 +159,8 @@ void components(const fs::path& out) {
 
 void real_meshes(const fs::path& out, const fs::path& data) {
     std::puts("\n5. Real meshes from Debian's libcgal-demo, read as OFF into both models:");
-    for (const char* name : {"elephant.off", "fandisk.off", "armadillo.off", "cube-ouvert.off", "double-torus-example.off"}) {
+    for (const char* name :
+         {"elephant.off", "fandisk.off", "armadillo.off", "cube-ouvert.off", "double-torus-example.off"}) {
         const fs::path p = data / "meshes" / name;
         if (!fs::exists(p)) {
             std::printf("  %-22s (not found in %s)\n", name, (data / "meshes").string().c_str());

@@ -84,9 +84,12 @@ std::string printable(const std::string& text) {
     out.reserve(text.size());
     for (char c : text) {
         const auto u = static_cast<unsigned char>(c);
-        if (c == '\n') out += "\\n";
-        else if (c == '\r') out += "\\r";
-        else if (c == '\t') out += "\\t";
+        if (c == '\n')
+            out += "\\n";
+        else if (c == '\r')
+            out += "\\r";
+        else if (c == '\t')
+            out += "\\t";
         else if (u < 0x20 || u == 0x7f) {
             char hex[8];
             std::snprintf(hex, sizeof hex, "\\x%02x", u);
@@ -131,7 +134,8 @@ CLI::Validator finite_number(std::string rule, std::function<bool(double)> holds
             char* end = nullptr;
             const double x = std::strtod(text.c_str(), &end);
             if (text.empty() || end != text.c_str() + text.size()) return "expected " + wanted + ", got " + shown;
-            if (!std::isfinite(x)) return "expected " + wanted + ", got " + shown + " (NaN and infinity are not allowed)";
+            if (!std::isfinite(x))
+                return "expected " + wanted + ", got " + shown + " (NaN and infinity are not allowed)";
             if (holds && !holds(x)) return "expected " + wanted + ", got " + number_text(x);
             return {};
         },
@@ -140,7 +144,8 @@ CLI::Validator finite_number(std::string rule, std::function<bool(double)> holds
 
 CLI::Validator whole_number(std::uint64_t lo, std::uint64_t hi) {
     const bool unbounded = hi == std::numeric_limits<std::uint64_t>::max();
-    const std::string bounds = unbounded ? ">= " + std::to_string(lo) : "in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
+    const std::string bounds =
+        unbounded ? ">= " + std::to_string(lo) : "in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
     const std::string wanted = "a whole number " + bounds;
     return CLI::Validator(
         [wanted, lo, hi](std::string& text) -> std::string {
@@ -161,7 +166,9 @@ CLI::Validator whole_number(std::uint64_t lo, std::uint64_t hi) {
 CLI::Validator byte_count() {
     return CLI::Validator(
         [](std::string& text) -> std::string {
-            const std::string wanted = "expected a size in bytes, optionally with K, M, G or T (KiB, MiB, GiB, TiB), got '" + printable(text.substr(0, 40)) + "'";
+            const std::string wanted =
+                "expected a size in bytes, optionally with K, M, G or T (KiB, MiB, GiB, TiB), got '" +
+                printable(text.substr(0, 40)) + "'";
             std::uint64_t n = 0;
             const char* b = text.data();
             const char* e = b + text.size();
@@ -170,11 +177,16 @@ CLI::Validator byte_count() {
             std::string unit(r.ptr, e);
             if (unit.size() == 3 && unit.substr(1) == "iB") unit.resize(1);
             int shift = 0;
-            if (unit == "K") shift = 10;
-            else if (unit == "M") shift = 20;
-            else if (unit == "G") shift = 30;
-            else if (unit == "T") shift = 40;
-            else if (!unit.empty()) return wanted;
+            if (unit == "K")
+                shift = 10;
+            else if (unit == "M")
+                shift = 20;
+            else if (unit == "G")
+                shift = 30;
+            else if (unit == "T")
+                shift = 40;
+            else if (!unit.empty())
+                return wanted;
             if (n == 0) return "expected at least 1 byte, got 0";
             if (shift > 0 && n > (std::numeric_limits<std::uint64_t>::max() >> shift)) return wanted + " (too large)";
             text = std::to_string(n << shift);
@@ -183,14 +195,15 @@ CLI::Validator byte_count() {
         "BYTES");
 }
 
-bool refuse_non_finite(const hmira::face_vertex_mesh& mesh, const std::string& path, const std::string& what, int& code) {
+bool refuse_non_finite(const hmira::face_vertex_mesh& mesh, const std::string& path, const std::string& what,
+                       int& code) {
     for (auto v : mesh.vertices()) {
         const auto p = mesh.position(v);
         if (std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z)) continue;
         // The face-vertex mesh of a freshly read file numbers vertices densely in file order.
         code = report(invalid_input, path + ": " + what + ": vertex " + std::to_string(v.index) +
-                                         " has a non-finite coordinate (" + number_text(p.x) + ", " + number_text(p.y) + ", " +
-                                         number_text(p.z) + "); nothing written");
+                                         " has a non-finite coordinate (" + number_text(p.x) + ", " + number_text(p.y) +
+                                         ", " + number_text(p.z) + "); nothing written");
         return false;
     }
     code = ok;
@@ -221,10 +234,15 @@ void install_signal_cleanup() {
     for (int sig : {SIGINT, SIGTERM, SIGHUP}) ::sigaction(sig, &sa, nullptr);
     if (const char* s = std::getenv("HMIRA_TEST_SIGNAL_DURING_WRITE")) {
         const std::string name = s;
-        signal_to_raise = name == "INT" ? SIGINT : name == "TERM" ? SIGTERM : name == "HUP" ? SIGHUP : name == "KILL" ? SIGKILL : 0;
+        signal_to_raise = name == "INT"    ? SIGINT
+                          : name == "TERM" ? SIGTERM
+                          : name == "HUP"  ? SIGHUP
+                          : name == "KILL" ? SIGKILL
+                                           : 0;
         if (signal_to_raise != 0) hmira::io::detail::write_hooks.after_first_chunk = raise_test_signal;
     }
-    if (const char* s = std::getenv("HMIRA_TEST_NAMED_TEMPORARY"); s && std::string(s) == "1") hmira::io::detail::write_hooks.named_temporary_only = true;
+    if (const char* s = std::getenv("HMIRA_TEST_NAMED_TEMPORARY"); s && std::string(s) == "1")
+        hmira::io::detail::write_hooks.named_temporary_only = true;
 }
 
 void say(const common_options& o, const std::string& line) {
@@ -266,7 +284,8 @@ std::optional<loaded_mesh> load(const std::string& path, const common_options& o
     note_input(path);
     loaded_mesh out;
     progress_bar bar("reading " + path, o);
-    auto r = hmira::io::read_mesh(out.mesh, path, {.progress = bar.callback(input_size(path)), .max_input_bytes = o.max_input_bytes});
+    auto r = hmira::io::read_mesh(out.mesh, path,
+                                  {.progress = bar.callback(input_size(path)), .max_input_bytes = o.max_input_bytes});
     if (!r) {
         code = report(input_exit_code(r.error()), r.error().message);
         return std::nullopt;
@@ -280,7 +299,8 @@ std::optional<loaded_mesh> load_for_edit(const std::string& path, const common_o
     note_input(path);
     loaded_mesh out;
     progress_bar bar("reading " + path, o);
-    auto soup = hmira::io::read_soup(path, {.progress = bar.callback(input_size(path)), .max_input_bytes = o.max_input_bytes});
+    auto soup =
+        hmira::io::read_soup(path, {.progress = bar.callback(input_size(path)), .max_input_bytes = o.max_input_bytes});
     if (!soup) {
         code = report(input_exit_code(soup.error()), soup.error().message);
         return std::nullopt;
@@ -301,7 +321,8 @@ std::optional<loaded_mesh> load_for_edit(const std::string& path, const common_o
             dropped.push_back(f);
             continue;
         }
-        kept.indices.insert(kept.indices.end(), soup->indices.begin() + static_cast<std::ptrdiff_t>(soup->face_offsets[f]),
+        kept.indices.insert(kept.indices.end(),
+                            soup->indices.begin() + static_cast<std::ptrdiff_t>(soup->face_offsets[f]),
                             soup->indices.begin() + static_cast<std::ptrdiff_t>(soup->face_offsets[f + 1]));
         kept.face_offsets.push_back(kept.indices.size());
         file_face.push_back(f);
@@ -315,8 +336,10 @@ std::optional<loaded_mesh> load_for_edit(const std::string& path, const common_o
     out.file_faces = soup->face_count();
     out.report.attributes = std::move(kept.attributes);
     if (!dropped.empty()) {
-        out.repairs = std::to_string(dropped.size()) + (dropped.size() == 1 ? " degenerate face" : " degenerate faces") + " dropped (file face";
-        for (std::size_t i = 0; i < dropped.size() && i < 3; ++i) out.repairs += (i ? ", " : " ") + std::to_string(dropped[i]);
+        out.repairs = std::to_string(dropped.size()) +
+                      (dropped.size() == 1 ? " degenerate face" : " degenerate faces") + " dropped (file face";
+        for (std::size_t i = 0; i < dropped.size() && i < 3; ++i)
+            out.repairs += (i ? ", " : " ") + std::to_string(dropped[i]);
         out.repairs += dropped.size() > 3 ? ", ...)" : ")";
         out.file_face = std::move(file_face);
     }
@@ -324,13 +347,16 @@ std::optional<loaded_mesh> load_for_edit(const std::string& path, const common_o
     return out;
 }
 
-bool file_faces_to_loaded(const loaded_mesh& loaded, std::vector<std::size_t>& faces, const std::string& path, int& code) {
+bool file_faces_to_loaded(const loaded_mesh& loaded, std::vector<std::size_t>& faces, const std::string& path,
+                          int& code) {
     code = ok;
     if (loaded.file_face.empty()) return true;
     for (auto& f : faces) {
         const auto at = std::lower_bound(loaded.file_face.begin(), loaded.file_face.end(), f);
         if (at == loaded.file_face.end() || *at != f) {
-            code = report(usage, "--face: face " + std::to_string(f) + " of " + path + " is degenerate (fewer than 3 distinct corners) and was dropped; there is nothing to edit");
+            code = report(
+                usage, "--face: face " + std::to_string(f) + " of " + path +
+                           " is degenerate (fewer than 3 distinct corners) and was dropped; there is nothing to edit");
             return false;
         }
         f = static_cast<std::size_t>(at - loaded.file_face.begin());
@@ -338,10 +364,12 @@ bool file_faces_to_loaded(const loaded_mesh& loaded, std::vector<std::size_t>& f
     return true;
 }
 
-int save(const hmira::face_vertex_mesh& mesh, const std::string& path, const hmira::io::write_options& options, const common_options&) {
+int save(const hmira::face_vertex_mesh& mesh, const std::string& path, const hmira::io::write_options& options,
+         const common_options&) {
     for (const auto& input : files_read())
         if (same_file(path, input))
-            return report(usage, "output " + path + " is the input " + input + ": hmira never writes over its input; name another output file");
+            return report(usage, "output " + path + " is the input " + input +
+                                     ": hmira never writes over its input; name another output file");
     // The writers refuse a coordinate the file cannot hold (non-finite, or beyond float's range
     // for STL and PLY --float), naming the vertex, before writing a byte.
     auto w = hmira::io::write_mesh(mesh, path, options);
@@ -349,7 +377,8 @@ int save(const hmira::face_vertex_mesh& mesh, const std::string& path, const hmi
     return ok;
 }
 
-std::optional<hmira::halfedge_mesh> to_halfedge(const hmira::face_vertex_mesh& mesh, const std::string& path, int& code, std::string* repairs) {
+std::optional<hmira::halfedge_mesh> to_halfedge(const hmira::face_vertex_mesh& mesh, const std::string& path, int& code,
+                                                std::string* repairs) {
     // Dense file order in, dense file order out: from_polygons numbers vertices and faces as given.
     std::vector<hmira::vec3<double>> points;
     std::vector<std::uint64_t> offsets{0};
@@ -368,8 +397,11 @@ std::optional<hmira::halfedge_mesh> to_halfedge(const hmira::face_vertex_mesh& m
     auto repaired = hmira::repair_polygon_soup(points.size(), offsets, corners);
     // The face-vertex mesh refused degenerate faces when the file was read, so no face is dropped
     // here and face i stays the file's face i (what --face N names).
-    if (!repaired || repaired->face_count() != mesh.face_count() || repaired->corners.size() > std::size_t{0xffffffffu}) {
-        code = report(invalid_input, path + ": cannot edit this mesh: " + (repaired ? "a degenerate face or too many corners" : repaired.error().message));
+    if (!repaired || repaired->face_count() != mesh.face_count() ||
+        repaired->corners.size() > std::size_t{0xffffffffu}) {
+        code =
+            report(invalid_input, path + ": cannot edit this mesh: " +
+                                      (repaired ? "a degenerate face or too many corners" : repaired.error().message));
         return std::nullopt;
     }
     for (auto v : repaired->copied_from) points.push_back(points[v]);
@@ -393,19 +425,22 @@ std::optional<hmira::halfedge_mesh> to_halfedge(const hmira::face_vertex_mesh& m
     return std::move(*built);
 }
 
-std::vector<hmira::vertex_handle> file_vertices(const hmira::halfedge_mesh& mesh, std::span<const std::size_t> indices) {
+std::vector<hmira::vertex_handle> file_vertices(const hmira::halfedge_mesh& mesh,
+                                                std::span<const std::size_t> indices) {
     std::vector<hmira::vertex_handle> out;
     for (auto i : indices) out.emplace_back(i);
     if (auto source = mesh.get_vertex_property<std::uint32_t>("v:file_vertex")) {
         std::vector<char> wanted(mesh.vertex_index_bound(), 0);
         for (auto i : indices) wanted[i] = 1;
         for (auto v : mesh.vertices())  // copies: a different index, standing for a wanted one
-            if (const auto from = (*source)[v]; from != v.index && from < wanted.size() && wanted[from]) out.push_back(v);
+            if (const auto from = (*source)[v]; from != v.index && from < wanted.size() && wanted[from])
+                out.push_back(v);
     }
     return out;
 }
 
-hmira::face_vertex_mesh to_face_vertex(const hmira::halfedge_mesh& mesh, std::span<const std::pair<hmira::vertex_handle, hmira::vertex_handle>> exchange) {
+hmira::face_vertex_mesh to_face_vertex(
+    const hmira::halfedge_mesh& mesh, std::span<const std::pair<hmira::vertex_handle, hmira::vertex_handle>> exchange) {
     hmira::face_vertex_mesh out;
     out.reserve(mesh.vertex_count(), mesh.face_count(), 4 * mesh.face_count());
     std::vector<hmira::vertex_handle> order;  // output slot -> mesh vertex
@@ -429,10 +464,13 @@ hmira::face_vertex_mesh to_face_vertex(const hmira::halfedge_mesh& mesh, std::sp
     return out;
 }
 
-mesh_counts counts_of(const hmira::halfedge_mesh& mesh) { return {mesh.vertex_count(), mesh.edge_count(), mesh.face_count()}; }
+mesh_counts counts_of(const hmira::halfedge_mesh& mesh) {
+    return {mesh.vertex_count(), mesh.edge_count(), mesh.face_count()};
+}
 
-int run_edit(const loaded_mesh& loaded, const std::string& input, const std::string& output, const std::string& bar_label,
-             const common_options& o, const std::function<std::optional<edit_outcome>(hmira::halfedge_mesh&, int& code)>& edit) {
+int run_edit(const loaded_mesh& loaded, const std::string& input, const std::string& output,
+             const std::string& bar_label, const common_options& o,
+             const std::function<std::optional<edit_outcome>(hmira::halfedge_mesh&, int& code)>& edit) {
     int code = ok;
     if (!refuse_non_finite(loaded.mesh, input, "cannot edit", code)) return code;
     mesh_counts before, after;
@@ -461,8 +499,11 @@ int run_edit(const loaded_mesh& loaded, const std::string& input, const std::str
 }
 
 std::string describe_change(const mesh_counts& before, const mesh_counts& after) {
-    auto one = [](const char* what, std::size_t a, std::size_t b) { return std::string(what) + " " + std::to_string(a) + " -> " + std::to_string(b); };
-    return one("V", before.vertices, after.vertices) + ", " + one("E", before.edges, after.edges) + ", " + one("F", before.faces, after.faces);
+    auto one = [](const char* what, std::size_t a, std::size_t b) {
+        return std::string(what) + " " + std::to_string(a) + " -> " + std::to_string(b);
+    };
+    return one("V", before.vertices, after.vertices) + ", " + one("E", before.edges, after.edges) + ", " +
+           one("F", before.faces, after.faces);
 }
 
 std::optional<std::array<double, 3>> parse_triple(const std::string& text, bool one_for_all) {
@@ -490,20 +531,23 @@ std::optional<std::array<double, 3>> parse_triple(const std::string& text, bool 
     return v;
 }
 
-bool check_indices(const std::vector<std::size_t>& indices, std::size_t count, const std::string& what, const std::string& option,
-                   const std::string& path, int& code) {
+bool check_indices(const std::vector<std::size_t>& indices, std::size_t count, const std::string& what,
+                   const std::string& option, const std::string& path, int& code) {
     for (auto i : indices)
         if (i >= count) {
             const std::string range = count == 0 ? "none" : "0.." + std::to_string(count - 1);
-            code = report(usage, option + ": " + what + " " + std::to_string(i) + " does not exist: " + path + " has " + count_of(count, what, what == "vertex" ? "vertices" : what + "s") + " (" +
-                                     range + ", in file order)");
+            code = report(usage, option + ": " + what + " " + std::to_string(i) + " does not exist: " + path + " has " +
+                                     count_of(count, what, what == "vertex" ? "vertices" : what + "s") + " (" + range +
+                                     ", in file order)");
             return false;
         }
     code = ok;
     return true;
 }
 
-std::string count_of(std::size_t n, const std::string& one, const std::string& many) { return std::to_string(n) + " " + (n == 1 ? one : many); }
+std::string count_of(std::size_t n, const std::string& one, const std::string& many) {
+    return std::to_string(n) + " " + (n == 1 ? one : many);
+}
 
 progress_bar stage_bar(std::string label, const common_options& o, std::uint64_t size, std::uint64_t min_size) {
     // update(step, steps) with few steps: the bar's own size gate is replaced by the job's.
@@ -521,8 +565,8 @@ void progress_bar::update(std::uint64_t done, std::uint64_t total) {
     if (!enabled_ || total < min_total_ || total == 0) return;
     const int width = 30;
     const int filled = static_cast<int>(width * done / total);
-    std::fprintf(stderr, "\r%s [%.*s%*s] %3d%%", label_.c_str(), filled, "##############################", width - filled, "",
-                 static_cast<int>(100 * done / total));
+    std::fprintf(stderr, "\r%s [%.*s%*s] %3d%%", label_.c_str(), filled, "##############################",
+                 width - filled, "", static_cast<int>(100 * done / total));
     std::fflush(stderr);
     drawn_ = true;
 }

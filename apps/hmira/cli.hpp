@@ -28,9 +28,9 @@ namespace hmira_cli {
 enum exit_code : int {
     ok = 0,             ///< success
     invalid_input = 1,  ///< the input is malformed, an edit cannot apply to it, or validation found problems
-    usage = 2,          ///< bad command line (unknown option, missing argument, value or index out of range, unknown format)
-    io_failure = 3,     ///< a file cannot be read or written (missing, directory, permissions)
-    internal = 4,       ///< an unexpected failure inside hmira
+    usage = 2,  ///< bad command line (unknown option, missing argument, value or index out of range, unknown format)
+    io_failure = 3,  ///< a file cannot be read or written (missing, directory, permissions)
+    internal = 4,    ///< an unexpected failure inside hmira
 };
 
 /// The names of an option enum's values (core/enum_names.hpp), for CLI::IsMember.
@@ -108,7 +108,8 @@ int input_exit_code(const hmira::error& e);
 /// Refuses a mesh with a NaN or infinite coordinate before `what` ("truncate", "voxelize")
 /// uses it: prints one line naming the first such vertex (file order), sets `code` to
 /// invalid_input and returns false.
-bool refuse_non_finite(const hmira::face_vertex_mesh& mesh, const std::string& path, const std::string& what, int& code);
+bool refuse_non_finite(const hmira::face_vertex_mesh& mesh, const std::string& path, const std::string& what,
+                       int& code);
 
 /// Installs handlers for SIGINT, SIGTERM and SIGHUP that remove the temporary files of writes
 /// in progress (the named ones; unnamed O_TMPFILE ones vanish by themselves) and then end the
@@ -151,7 +152,8 @@ std::optional<loaded_mesh> load(const std::string& path, const common_options& o
 std::optional<loaded_mesh> load_for_edit(const std::string& path, const common_options& o, int& code);
 /// Turns face indices of the input file (--face N) into faces of a load_for_edit() mesh; a
 /// face that was dropped, or out of range, is a usage error naming it.
-bool file_faces_to_loaded(const loaded_mesh& loaded, std::vector<std::size_t>& faces, const std::string& path, int& code);
+bool file_faces_to_loaded(const loaded_mesh& loaded, std::vector<std::size_t>& faces, const std::string& path,
+                          int& code);
 /// Records `path` as an input of this run, so that save() refuses to write over it. load() and
 /// load_for_edit() call it; a subcommand that reads its input another way calls it itself.
 void note_input(const std::string& path);
@@ -160,7 +162,8 @@ void note_input(const std::string& path);
 /// usage error, and the file is left as it is; so is a mesh with a non-finite coordinate, or
 /// one beyond the float range for a float format (STL, PLY with float32 coordinates), as
 /// invalid input: no output ever holds a non-finite coordinate.
-int save(const hmira::face_vertex_mesh& mesh, const std::string& path, const hmira::io::write_options& options, const common_options& o);
+int save(const hmira::face_vertex_mesh& mesh, const std::string& path, const hmira::io::write_options& options,
+         const common_options& o);
 
 // ---- editing subcommands (truncate, bevel, extrude) ----------------------------------------
 
@@ -183,8 +186,9 @@ std::vector<hmira::vertex_handle> file_vertices(const hmira::halfedge_mesh& mesh
 /// in the input keep their relative order and come first, new ones follow. Each pair in
 /// `exchange` trades places in that order (an edit that moved a file vertex and left a new one
 /// where it was can so give the file's index back to the one that stayed).
-hmira::face_vertex_mesh to_face_vertex(const hmira::halfedge_mesh& mesh,
-                                       std::span<const std::pair<hmira::vertex_handle, hmira::vertex_handle>> exchange = {});
+hmira::face_vertex_mesh to_face_vertex(
+    const hmira::halfedge_mesh& mesh,
+    std::span<const std::pair<hmira::vertex_handle, hmira::vertex_handle>> exchange = {});
 
 /// Vertex, edge and face counts, to report what an edit created.
 struct mesh_counts {
@@ -203,8 +207,9 @@ struct edit_outcome {
 /// The frame every editing subcommand shares: converts the loaded mesh to a halfedge mesh, runs
 /// `edit` on it (nullopt after it has printed its error and set `code`), writes the result
 /// atomically and reports the change. Returns the exit code.
-int run_edit(const loaded_mesh& loaded, const std::string& input, const std::string& output, const std::string& bar_label,
-             const common_options& o, const std::function<std::optional<edit_outcome>(hmira::halfedge_mesh&, int& code)>& edit);
+int run_edit(const loaded_mesh& loaded, const std::string& input, const std::string& output,
+             const std::string& bar_label, const common_options& o,
+             const std::function<std::optional<edit_outcome>(hmira::halfedge_mesh&, int& code)>& edit);
 
 /// Parses "X,Y,Z" (or one number for all three when `one_for_all`); nullopt if malformed or
 /// not finite.
@@ -212,8 +217,8 @@ std::optional<std::array<double, 3>> parse_triple(const std::string& text, bool 
 
 /// Checks file-order indices of `what` ("vertex", "face") against the mesh's count; on failure
 /// prints a usage error naming the option, the index and the valid range, and returns false.
-bool check_indices(const std::vector<std::size_t>& indices, std::size_t count, const std::string& what, const std::string& option,
-                   const std::string& path, int& code);
+bool check_indices(const std::vector<std::size_t>& indices, std::size_t count, const std::string& what,
+                   const std::string& option, const std::string& path, int& code);
 
 /// "1 vertex", "3 vertices": `n` and the singular or plural noun.
 std::string count_of(std::size_t n, const std::string& one, const std::string& many);

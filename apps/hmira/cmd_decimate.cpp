@@ -22,7 +22,8 @@ struct decimate_args {
 };
 
 int run_decimate(const decimate_args& a, const common_options& o) {
-    if (!a.faces && !a.ratio && !a.max_error) return report(usage, "decimate: give --faces N, --ratio R or --max-error E");
+    if (!a.faces && !a.ratio && !a.max_error)
+        return report(usage, "decimate: give --faces N, --ratio R or --max-error E");
     int code = ok;
     auto loaded = load_for_edit(a.input, o, code);
     if (!loaded) return code;
@@ -31,7 +32,8 @@ int run_decimate(const decimate_args& a, const common_options& o) {
     return run_edit(*loaded, a.input, a.output, "decimating " + a.input, o,
                     [&](hmira::halfedge_mesh& mesh, int& c) -> std::optional<edit_outcome> {
                         progress_bar bar("decimating " + a.input, o, 1u << 20);
-                        hmira::decimate_options options{.target_faces = a.faces, .target_ratio = a.ratio, .max_error = a.max_error};
+                        hmira::decimate_options options{
+                            .target_faces = a.faces, .target_ratio = a.ratio, .max_error = a.max_error};
                         options.keep_boundary = !a.move_boundary;
                         options.max_normal_angle = a.max_normal_angle;
                         if (a.max_aspect_ratio > 0) options.max_aspect_ratio = a.max_aspect_ratio;
@@ -53,29 +55,35 @@ int run_decimate(const decimate_args& a, const common_options& o) {
                     });
 }
 
-const bool registered = register_command({
-    "decimate", "Decimate a mesh by quadric error (Garland-Heckbert) to a face count, ratio or error bound",
-    "hmira decimate scan.off small.off --ratio 0.1", 89,
-    [](CLI::App& sub) {
-        auto a = std::make_shared<decimate_args>();
-        sub.add_option("input", a->input, "mesh file to read (manifold, consistently oriented; polygons are triangulated first)")->required();
-        sub.add_option("output", a->output, "mesh file to write (the surviving file vertices first, in file order)")->required();
-        sub.add_option("--faces", a->faces, "stop at this many faces (reached exactly, or one fewer, unless the constraints stop earlier)")
-            ->check(whole_number(0, std::uint64_t(1) << 40));
-        sub.add_option("--ratio", a->ratio, "stop at this fraction of the faces, in [0, 1]")
-            ->check(finite_number("in [0, 1]", [](double x) { return x >= 0 && x <= 1; }));
-        sub.add_option("--max-error", a->max_error, "stop before a collapse whose error exceeds this distance (model units), >= 0")
-            ->check(finite_number(">= 0", [](double x) { return x >= 0; }));
-        sub.add_option("--max-normal-angle", a->max_normal_angle, "refuse collapses that turn a face normal by more than this, in [0, 180] degrees (default " +
+const bool registered = register_command(
+    {"decimate", "Decimate a mesh by quadric error (Garland-Heckbert) to a face count, ratio or error bound",
+     "hmira decimate scan.off small.off --ratio 0.1", 89, [](CLI::App& sub) {
+         auto a = std::make_shared<decimate_args>();
+         sub.add_option("input", a->input,
+                        "mesh file to read (manifold, consistently oriented; polygons are triangulated first)")
+             ->required();
+         sub.add_option("output", a->output, "mesh file to write (the surviving file vertices first, in file order)")
+             ->required();
+         sub.add_option("--faces", a->faces,
+                        "stop at this many faces (reached exactly, or one fewer, unless the constraints stop earlier)")
+             ->check(whole_number(0, std::uint64_t(1) << 40));
+         sub.add_option("--ratio", a->ratio, "stop at this fraction of the faces, in [0, 1]")
+             ->check(finite_number("in [0, 1]", [](double x) { return x >= 0 && x <= 1; }));
+         sub.add_option("--max-error", a->max_error,
+                        "stop before a collapse whose error exceeds this distance (model units), >= 0")
+             ->check(finite_number(">= 0", [](double x) { return x >= 0; }));
+         sub.add_option("--max-normal-angle", a->max_normal_angle,
+                        "refuse collapses that turn a face normal by more than this, in [0, 180] degrees (default " +
                             number_text(a->max_normal_angle) + ")")
-            ->check(finite_number("in [0, 180]", [](double x) { return x >= 0 && x <= 180; }));
-        sub.add_option("--max-aspect-ratio", a->max_aspect_ratio, "refuse collapses that make a face thinner than this (1 = equilateral), >= 1")
-            ->check(finite_number(">= 1", [](double x) { return x >= 1; }));
-        sub.add_flag("--move-boundary", a->move_boundary, "let boundary edges collapse and boundary vertices move");
-        sub.add_option("--lock", a->locked, "keep vertex N where it is (0-based, file order; repeatable, or N,M,...)")
-            ->delimiter(',')
-            ->check(CLI::NonNegativeNumber);
-        return [a](const common_options& o) { return run_decimate(*a, o); };
-    }});
+             ->check(finite_number("in [0, 180]", [](double x) { return x >= 0 && x <= 180; }));
+         sub.add_option("--max-aspect-ratio", a->max_aspect_ratio,
+                        "refuse collapses that make a face thinner than this (1 = equilateral), >= 1")
+             ->check(finite_number(">= 1", [](double x) { return x >= 1; }));
+         sub.add_flag("--move-boundary", a->move_boundary, "let boundary edges collapse and boundary vertices move");
+         sub.add_option("--lock", a->locked, "keep vertex N where it is (0-based, file order; repeatable, or N,M,...)")
+             ->delimiter(',')
+             ->check(CLI::NonNegativeNumber);
+         return [a](const common_options& o) { return run_decimate(*a, o); };
+     }});
 
 }  // namespace

@@ -20,14 +20,16 @@ struct delaunay_args {
 
 /// x y [z] per line, separated by blanks or commas; '#' starts a comment; in a .csv the first
 /// line may be a header (hmira/io/points.hpp).
-hmira::result<std::vector<hmira::vec3<double>>> read_points_text(const std::string& path, bool csv, std::uint64_t max_input_bytes) {
+hmira::result<std::vector<hmira::vec3<double>>> read_points_text(const std::string& path, bool csv,
+                                                                 std::uint64_t max_input_bytes) {
     return hmira::io::read_points_text(path, {.csv = csv, .max_input_bytes = max_input_bytes});
 }
 
 hmira::result<std::vector<hmira::vec3<double>>> read_points(const std::string& path, const common_options& o) {
     std::string ext = std::filesystem::path(path).extension().string();
     for (auto& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    if (ext == ".xyz" || ext == ".txt" || ext == ".csv") return read_points_text(path, ext == ".csv", o.max_input_bytes);
+    if (ext == ".xyz" || ext == ".txt" || ext == ".csv")
+        return read_points_text(path, ext == ".csv", o.max_input_bytes);
     if (ext == ".ply") {
         auto soup = hmira::io::read_soup(path, {.max_input_bytes = o.max_input_bytes});
         if (!soup) return soup.error();
@@ -37,8 +39,10 @@ hmira::result<std::vector<hmira::vec3<double>>> read_points(const std::string& p
         return pts;
     }
     std::error_code ec;
-    if (std::filesystem::is_directory(path, ec)) return hmira::fail(hmira::errc::io_error, path + ": is a directory, not a point file");
-    return hmira::fail(hmira::errc::unknown_format, path + ": unknown mesh format '" + ext + "' for points (use .xyz, .csv or .ply)");
+    if (std::filesystem::is_directory(path, ec))
+        return hmira::fail(hmira::errc::io_error, path + ": is a directory, not a point file");
+    return hmira::fail(hmira::errc::unknown_format,
+                       path + ": unknown mesh format '" + ext + "' for points (use .xyz, .csv or .ply)");
 }
 
 int run_delaunay(const delaunay_args& a, const common_options& o) {
@@ -49,19 +53,19 @@ int run_delaunay(const delaunay_args& a, const common_options& o) {
     auto r = hmira::delaunay_triangulation(m, *pts);
     if (!r) return report(invalid_input, a.input + ": " + r.error().message);
     if (int c = save(m, a.output, {}, o); c != ok) return c;
-    say(o, a.output + ": " + std::to_string(pts->size()) + " points, " + std::to_string(m.vertex_count()) + " vertices, " + std::to_string(m.face_count()) +
-               " triangles");
+    say(o, a.output + ": " + std::to_string(pts->size()) + " points, " + std::to_string(m.vertex_count()) +
+               " vertices, " + std::to_string(m.face_count()) + " triangles");
     return ok;
 }
 
-const bool registered = register_command({
-    "delaunay", "Delaunay-triangulate points (x, y; z kept as height) from .xyz, .csv or .ply",
-    "hmira delaunay terrain.xyz terrain.ply", 60,
-    [](CLI::App& sub) {
-        auto a = std::make_shared<delaunay_args>();
-        sub.add_option("input", a->input, "points: .xyz (x y [z] per line), .csv (x,y[,z]) or .ply (its vertices)")->required();
-        sub.add_option("output", a->output, "mesh file to write (.obj .off .ply .stl)")->required();
-        return [a](const common_options& o) { return run_delaunay(*a, o); };
-    }});
+const bool registered = register_command(
+    {"delaunay", "Delaunay-triangulate points (x, y; z kept as height) from .xyz, .csv or .ply",
+     "hmira delaunay terrain.xyz terrain.ply", 60, [](CLI::App& sub) {
+         auto a = std::make_shared<delaunay_args>();
+         sub.add_option("input", a->input, "points: .xyz (x y [z] per line), .csv (x,y[,z]) or .ply (its vertices)")
+             ->required();
+         sub.add_option("output", a->output, "mesh file to write (.obj .off .ply .stl)")->required();
+         return [a](const common_options& o) { return run_delaunay(*a, o); };
+     }});
 
 }  // namespace

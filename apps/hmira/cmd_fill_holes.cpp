@@ -53,7 +53,9 @@ int run_fill_holes(const fill_holes_args& a, const common_options& o) {
                                            count_of(r->faces_added, "triangle", "triangles");
                         if (r->vertices_added > 0) what += " and " + count_of(r->vertices_added, "vertex", "vertices");
                         if (r->skipped > 0) what += ", left " + count_of(r->skipped, "hole", "holes") + " open";
-                        if (r->unfaired > 0) what += ", " + count_of(r->unfaired, "patch", "patches") + " not faired (solver did not converge)";
+                        if (r->unfaired > 0)
+                            what += ", " + count_of(r->unfaired, "patch", "patches") +
+                                    " not faired (solver did not converge)";
                         // Each open loop with its reason, the first few in full.
                         const std::size_t shown = std::min<std::size_t>(r->open.size(), 5);
                         for (std::size_t i = 0; i < shown; ++i) {
@@ -64,31 +66,36 @@ int run_fill_holes(const fill_holes_args& a, const common_options& o) {
                             else
                                 what += grouped(h.edges) + " edges, " + h.message;
                         }
-                        if (r->open.size() > shown) what += "; and " + count_of(r->open.size() - shown, "more hole", "more holes");
+                        if (r->open.size() > shown)
+                            what += "; and " + count_of(r->open.size() - shown, "more hole", "more holes");
                         return edit_outcome{what, {}};
                     });
 }
 
-const bool registered = register_command({
-    "fill-holes", "Close boundary loops with triangle patches of least bend, then least area",
-    "hmira fill-holes scan.off closed.off --max-edges 500", 85,
-    [](CLI::App& sub) {
-        auto a = std::make_shared<fill_holes_args>();
-        sub.add_option("input", a->input, "mesh file to read (manifold, consistently oriented)")->required();
-        sub.add_option("output", a->output, "mesh file to write: the input's vertices in file order, new faces after the old")->required();
-        sub.add_option("--max-edges", a->max_edges, "fill only loops of at most this many edges (>= 3; default 1000)")
-            ->check(whole_number(3, std::numeric_limits<std::uint64_t>::max()));
-        sub.add_flag("--refine", a->refine, "refine each patch to the edge length around its hole (Liepa)");
-        sub.add_option("--fair", a->fair, "move the refined patch's vertices: none, membrane or thin-plate (implies --refine)")
-            ->check(CLI::IsMember(names_of<hmira::fairing>()));
-        const hmira::fill_hole_options defaults{};
-        sub.footer("\nLoops of up to " + std::to_string(defaults.max_dynamic_programming_edges) +
-                   " edges get the O(n^3) dynamic programme; longer ones are triangulated in their\n"
-                   "best-fit plane, or, if that projection crosses itself, by the programme up to " +
-                   std::to_string(defaults.max_fallback_dynamic_programming_edges) +
-                   " edges.\nA loop no triangulation of its own vertices can close gets a fan around a new centre vertex.\n"
-                   "Every loop left open is named (its first vertex, in file order) with the reason.\n" + sub.get_footer());
-        return [a](const common_options& o) { return run_fill_holes(*a, o); };
-    }});
+const bool registered = register_command(
+    {"fill-holes", "Close boundary loops with triangle patches of least bend, then least area",
+     "hmira fill-holes scan.off closed.off --max-edges 500", 85, [](CLI::App& sub) {
+         auto a = std::make_shared<fill_holes_args>();
+         sub.add_option("input", a->input, "mesh file to read (manifold, consistently oriented)")->required();
+         sub.add_option("output", a->output,
+                        "mesh file to write: the input's vertices in file order, new faces after the old")
+             ->required();
+         sub.add_option("--max-edges", a->max_edges, "fill only loops of at most this many edges (>= 3; default 1000)")
+             ->check(whole_number(3, std::numeric_limits<std::uint64_t>::max()));
+         sub.add_flag("--refine", a->refine, "refine each patch to the edge length around its hole (Liepa)");
+         sub.add_option("--fair", a->fair,
+                        "move the refined patch's vertices: none, membrane or thin-plate (implies --refine)")
+             ->check(CLI::IsMember(names_of<hmira::fairing>()));
+         const hmira::fill_hole_options defaults{};
+         sub.footer(
+             "\nLoops of up to " + std::to_string(defaults.max_dynamic_programming_edges) +
+             " edges get the O(n^3) dynamic programme; longer ones are triangulated in their\n"
+             "best-fit plane, or, if that projection crosses itself, by the programme up to " +
+             std::to_string(defaults.max_fallback_dynamic_programming_edges) +
+             " edges.\nA loop no triangulation of its own vertices can close gets a fan around a new centre vertex.\n"
+             "Every loop left open is named (its first vertex, in file order) with the reason.\n" +
+             sub.get_footer());
+         return [a](const common_options& o) { return run_fill_holes(*a, o); };
+     }});
 
 }  // namespace

@@ -25,14 +25,13 @@ int run_flip(const flip_args& a, const common_options& o) {
     return ok;
 }
 
-const bool registered = register_command({
-    "flip", "Reverse the orientation of every face (and of vertex normals)",
-    "hmira flip inside_out.obj fixed.obj", 50,
-    [](CLI::App& sub) {
-        auto a = std::make_shared<flip_args>();
-        sub.add_option("input", a->input, "mesh file to read")->required();
-        sub.add_option("output", a->output, "mesh file to write (replaced atomically; not the input)")->required();
-        return [a](const common_options& o) { return run_flip(*a, o); };
-    }});
+const bool registered = register_command(
+    {"flip", "Reverse the orientation of every face (and of vertex normals)", "hmira flip inside_out.obj fixed.obj", 50,
+     [](CLI::App& sub) {
+         auto a = std::make_shared<flip_args>();
+         sub.add_option("input", a->input, "mesh file to read")->required();
+         sub.add_option("output", a->output, "mesh file to write (replaced atomically; not the input)")->required();
+         return [a](const common_options& o) { return run_flip(*a, o); };
+     }});
 
 }  // namespace

@@ -50,10 +50,12 @@ int run_info(const info_args& a, const common_options& o) {
     const auto problems = hmira::validate(m, {.max_problems = 100});
     bool manifold = true;
     for (const auto& p : problems)
-        if (p.kind == hmira::problem_kind::non_manifold_edge || p.kind == hmira::problem_kind::non_manifold_vertex) manifold = false;
+        if (p.kind == hmira::problem_kind::non_manifold_edge || p.kind == hmira::problem_kind::non_manifold_vertex)
+            manifold = false;
     // The box of the finite vertices; the others are counted and named, not silently dropped
     // (std::min and std::max skip a NaN without a word).
-    hmira::vec3<double> lo{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+    hmira::vec3<double> lo{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
+                           std::numeric_limits<double>::infinity()};
     auto hi = -lo;
     std::size_t non_finite = 0, finite = 0, first_non_finite = 0;
     for (auto v : m.vertices()) {
@@ -69,44 +71,52 @@ int run_info(const info_args& a, const common_options& o) {
     const auto& attr = loaded->report.attributes;
     std::ostringstream s;
     if (a.json) {
-        s << "{\"file\": " << json_string(a.input) << ", \"format\": " << json_string(loaded->report.format) << ", \"vertices\": " << t.vertices
-          << ", \"edges\": " << t.edges << ", \"faces\": " << t.faces << ", \"components\": " << t.components << ", \"boundary_loops\": " << t.boundary_loops
-          << ", \"genus\": " << t.genus << ", \"euler_characteristic\": " << t.euler_characteristic << ", \"closed\": " << (t.closed() ? "true" : "false")
-          << ", \"manifold\": " << (manifold ? "true" : "false") << ", \"bounding_box\": [[" << lo.x << ", " << lo.y << ", " << lo.z << "], [" << hi.x << ", "
-          << hi.y << ", " << hi.z << "]], \"non_finite_vertices\": " << non_finite << ", \"normals\": " << (attr.normals.empty() ? "false" : "true") << ", \"colors\": " << (attr.colors.empty() ? "false" : "true")
-          << ", \"dropped_triangles\": " << loaded->report.dropped_triangles << ", \"problems\": " << problems.size() << "}";
+        s << "{\"file\": " << json_string(a.input) << ", \"format\": " << json_string(loaded->report.format)
+          << ", \"vertices\": " << t.vertices << ", \"edges\": " << t.edges << ", \"faces\": " << t.faces
+          << ", \"components\": " << t.components << ", \"boundary_loops\": " << t.boundary_loops
+          << ", \"genus\": " << t.genus << ", \"euler_characteristic\": " << t.euler_characteristic
+          << ", \"closed\": " << (t.closed() ? "true" : "false") << ", \"manifold\": " << (manifold ? "true" : "false")
+          << ", \"bounding_box\": [[" << lo.x << ", " << lo.y << ", " << lo.z << "], [" << hi.x << ", " << hi.y << ", "
+          << hi.z << "]], \"non_finite_vertices\": " << non_finite
+          << ", \"normals\": " << (attr.normals.empty() ? "false" : "true")
+          << ", \"colors\": " << (attr.colors.empty() ? "false" : "true")
+          << ", \"dropped_triangles\": " << loaded->report.dropped_triangles << ", \"problems\": " << problems.size()
+          << "}";
         std::cout << s.str() << '\n';
         return ok;
     }
     s << "file:            " << a.input << " (" << loaded->report.format << ")\n"
       << "vertices:        " << t.vertices << "\nedges:           " << t.edges << "\nfaces:           " << t.faces
-      << "\ncomponents:      " << t.components << "\nboundary loops:  " << t.boundary_loops << "\ngenus:           " << t.genus
-      << "\neuler char.:     " << t.euler_characteristic << "\nclosed:          " << (t.closed() ? "yes" : "no")
-      << "\nmanifold:        " << (manifold ? "yes" : "no") << "\nbounding box:    [" << fmt(lo.x) << ", " << fmt(lo.y) << ", " << fmt(lo.z) << "] .. ["
-      << fmt(hi.x) << ", " << fmt(hi.y) << ", " << fmt(hi.z) << "]" << (non_finite ? " (finite vertices only)" : "") << "\n";
+      << "\ncomponents:      " << t.components << "\nboundary loops:  " << t.boundary_loops
+      << "\ngenus:           " << t.genus << "\neuler char.:     " << t.euler_characteristic
+      << "\nclosed:          " << (t.closed() ? "yes" : "no") << "\nmanifold:        " << (manifold ? "yes" : "no")
+      << "\nbounding box:    [" << fmt(lo.x) << ", " << fmt(lo.y) << ", " << fmt(lo.z) << "] .. [" << fmt(hi.x) << ", "
+      << fmt(hi.y) << ", " << fmt(hi.z) << "]" << (non_finite ? " (finite vertices only)" : "") << "\n";
     if (non_finite)
-        s << "non-finite:      " << count_of(non_finite, "vertex", "vertices") << " with a NaN or infinite coordinate (first: vertex " << first_non_finite
-          << ")\n";
+        s << "non-finite:      " << count_of(non_finite, "vertex", "vertices")
+          << " with a NaN or infinite coordinate (first: vertex " << first_non_finite << ")\n";
     if (!attr.normals.empty() || !attr.colors.empty())
-        s << "attributes:      " << (attr.normals.empty() ? "" : "normals ") << (attr.colors.empty() ? "" : "colours") << '\n';
-    if (loaded->report.dropped_triangles) s << "dropped:         " << loaded->report.dropped_triangles << " STL triangles whose corners weld together\n";
+        s << "attributes:      " << (attr.normals.empty() ? "" : "normals ") << (attr.colors.empty() ? "" : "colours")
+          << '\n';
+    if (loaded->report.dropped_triangles)
+        s << "dropped:         " << loaded->report.dropped_triangles << " STL triangles whose corners weld together\n";
     if (problems.empty()) {
         s << "validate:        ok\n";
     } else {
-        s << "validate:        " << problems.size() << (problems.size() >= 100 ? "+" : "") << " problem(s), first: " << problems.front().message << '\n';
+        s << "validate:        " << problems.size() << (problems.size() >= 100 ? "+" : "")
+          << " problem(s), first: " << problems.front().message << '\n';
     }
     if (!o.quiet) std::cout << s.str();
     return ok;
 }
 
-const bool registered = register_command({
-    "info", "Print a mesh file's counts, topology, bounding box and validation summary",
-    "hmira info elephant.off            # or --json for one machine-readable line", 10,
-    [](CLI::App& sub) {
-        auto a = std::make_shared<info_args>();
-        sub.add_option("input", a->input, "mesh file (.obj .off .ply .stl)")->required();
-        sub.add_flag("--json", a->json, "print one JSON object instead of text");
-        return [a](const common_options& o) { return run_info(*a, o); };
-    }});
+const bool registered = register_command(
+    {"info", "Print a mesh file's counts, topology, bounding box and validation summary",
+     "hmira info elephant.off            # or --json for one machine-readable line", 10, [](CLI::App& sub) {
+         auto a = std::make_shared<info_args>();
+         sub.add_option("input", a->input, "mesh file (.obj .off .ply .stl)")->required();
+         sub.add_flag("--json", a->json, "print one JSON object instead of text");
+         return [a](const common_options& o) { return run_info(*a, o); };
+     }});
 
 }  // namespace

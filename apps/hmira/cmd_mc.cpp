@@ -56,9 +56,10 @@ struct triangle_list_traits {
 };
 
 /// A volume of any sample type read_raw supports; marching cubes runs on it as it is.
-using any_grid = std::variant<hmira::dense_grid<float>, hmira::dense_grid<double>, hmira::dense_grid<std::uint8_t>, hmira::dense_grid<std::int8_t>,
-                              hmira::dense_grid<std::uint16_t>, hmira::dense_grid<std::int16_t>, hmira::dense_grid<std::uint32_t>,
-                              hmira::dense_grid<std::int32_t>>;
+using any_grid =
+    std::variant<hmira::dense_grid<float>, hmira::dense_grid<double>, hmira::dense_grid<std::uint8_t>,
+                 hmira::dense_grid<std::int8_t>, hmira::dense_grid<std::uint16_t>, hmira::dense_grid<std::int16_t>,
+                 hmira::dense_grid<std::uint32_t>, hmira::dense_grid<std::int32_t>>;
 
 bool ends_with_lower(const std::string& s, const std::string& suffix) {
     if (s.size() < suffix.size()) return false;
@@ -70,7 +71,8 @@ bool ends_with_lower(const std::string& s, const std::string& suffix) {
 /// The grid of a .raw file from --dims/--spacing/--origin; nullopt after printing a usage error.
 std::optional<hmira::grid_geometry> raw_geometry(const mc_args& a, int& code) {
     if (a.dims.empty()) {
-        code = report(usage, a.source + ": a .raw volume holds no size: give --dims X,Y,Z (and --type, default float32)");
+        code =
+            report(usage, a.source + ": a .raw volume holds no size: give --dims X,Y,Z (and --type, default float32)");
         return std::nullopt;
     }
     hmira::grid_geometry g;
@@ -111,7 +113,8 @@ std::optional<hmira::grid_geometry> raw_geometry(const mc_args& a, int& code) {
     return g;
 }
 
-hmira::result<any_grid> read_raw_volume(const mc_args& a, const hmira::grid_geometry& g, std::uint64_t max_input_bytes) {
+hmira::result<any_grid> read_raw_volume(const mc_args& a, const hmira::grid_geometry& g,
+                                        std::uint64_t max_input_bytes) {
     const hmira::io::raw_options r{.big_endian = a.endian == "big", .max_input_bytes = max_input_bytes};
     auto as = [&]<class T>(T) -> hmira::result<any_grid> {
         auto grid = hmira::io::read_raw<T>(a.source, g, r);
@@ -129,14 +132,20 @@ hmira::result<any_grid> read_raw_volume(const mc_args& a, const hmira::grid_geom
 }
 
 hmira::result<hmira::dense_grid<float>> make_grid(const mc_args& a, std::uint64_t max_input_bytes) {
-    if (a.source == "sphere") return hmira::sample_function(hmira::cube_geometry(a.resolution, -1.5, 1.5), hmira::sphere_field{});
-    if (a.source == "torus") return hmira::sample_function(hmira::cube_geometry(a.resolution, -1.5, 1.5), hmira::torus_field{});
-    if (a.source == "gyroid") return hmira::sample_function(hmira::cube_geometry(a.resolution, -6.0, 6.0), hmira::gyroid_field{});
+    if (a.source == "sphere")
+        return hmira::sample_function(hmira::cube_geometry(a.resolution, -1.5, 1.5), hmira::sphere_field{});
+    if (a.source == "torus")
+        return hmira::sample_function(hmira::cube_geometry(a.resolution, -1.5, 1.5), hmira::torus_field{});
+    if (a.source == "gyroid")
+        return hmira::sample_function(hmira::cube_geometry(a.resolution, -6.0, 6.0), hmira::gyroid_field{});
     const std::filesystem::path p(a.source);
     std::error_code ec;
-    if (std::filesystem::is_directory(p, ec)) return hmira::fail(hmira::errc::io_error, a.source + ": is a directory, not a volume file");
-    if (ends_with_lower(a.source, ".inr") || ends_with_lower(a.source, ".inr.gz")) return hmira::io::read_inr(p, {.max_input_bytes = max_input_bytes});
-    return hmira::fail(hmira::errc::invalid_argument, a.source + ": not a shape name (sphere, torus, gyroid) nor a .inr, .inr.gz or .raw volume");
+    if (std::filesystem::is_directory(p, ec))
+        return hmira::fail(hmira::errc::io_error, a.source + ": is a directory, not a volume file");
+    if (ends_with_lower(a.source, ".inr") || ends_with_lower(a.source, ".inr.gz"))
+        return hmira::io::read_inr(p, {.max_input_bytes = max_input_bytes});
+    return hmira::fail(hmira::errc::invalid_argument,
+                       a.source + ": not a shape name (sphere, torus, gyroid) nor a .inr, .inr.gz or .raw volume");
 }
 
 /// The layout of a volume file that can be read slab by slab: a regular .raw file, or a
@@ -144,14 +153,19 @@ hmira::result<hmira::dense_grid<float>> make_grid(const mc_args& a, std::uint64_
 /// reads it and reports its errors as before).
 std::optional<hmira::io::volume_layout> slab_layout(const mc_args& a, const std::optional<hmira::grid_geometry>& raw) {
     std::error_code ec;
-    if (a.normals || !std::filesystem::is_regular_file(a.source, ec)) return std::nullopt;  // normals need whole gradients
+    if (a.normals || !std::filesystem::is_regular_file(a.source, ec))
+        return std::nullopt;  // normals need whole gradients
     std::optional<hmira::io::volume_layout> l;
     if (raw) {
         using hmira::io::sample_type;
-        const sample_type type = a.type == "uint8" ? sample_type::uint8 : a.type == "int8" ? sample_type::int8
-                               : a.type == "uint16" ? sample_type::uint16 : a.type == "int16" ? sample_type::int16
-                               : a.type == "uint32" ? sample_type::uint32 : a.type == "int32" ? sample_type::int32
-                               : a.type == "float64" ? sample_type::float64 : sample_type::float32;
+        const sample_type type = a.type == "uint8"     ? sample_type::uint8
+                                 : a.type == "int8"    ? sample_type::int8
+                                 : a.type == "uint16"  ? sample_type::uint16
+                                 : a.type == "int16"   ? sample_type::int16
+                                 : a.type == "uint32"  ? sample_type::uint32
+                                 : a.type == "int32"   ? sample_type::int32
+                                 : a.type == "float64" ? sample_type::float64
+                                                       : sample_type::float32;
         l = hmira::io::volume_layout{.geometry = *raw, .type = type, .big_endian = a.endian == "big", .data_offset = 0};
     } else if (ends_with_lower(a.source, ".inr")) {
         if (auto r = hmira::io::read_inr_layout(a.source)) l = *r;
@@ -164,39 +178,44 @@ std::optional<hmira::io::volume_layout> slab_layout(const mc_args& a, const std:
 /// (64 MiB unless --slab-slices says otherwise) plus the output mesh (24 bytes per vertex, 12
 /// per triangle). The mesh equals the whole-volume path's. nullopt: the file does not suit
 /// (see slab_layout); otherwise the exit code.
-std::optional<int> run_mc_by_slabs(const mc_args& a, const common_options& o, const std::optional<hmira::grid_geometry>& raw) {
+std::optional<int> run_mc_by_slabs(const mc_args& a, const common_options& o,
+                                   const std::optional<hmira::grid_geometry>& raw) {
     const auto layout = slab_layout(a, raw);
     if (!layout) return std::nullopt;
     auto reader = hmira::io::volume_slab_reader::open(a.source, *layout);
     if (!reader) return std::nullopt;  // a size mismatch: the whole-volume reader names it as usual
-    const hmira::marching_cubes_block_options opt{.iso = a.iso,
-                                                  .inside = named<hmira::iso_inside>(a.inside),
-                                                  .threads = static_cast<unsigned>(o.threads)};
+    const hmira::marching_cubes_block_options opt{
+        .iso = a.iso, .inside = named<hmira::iso_inside>(a.inside), .threads = static_cast<unsigned>(o.threads)};
     const auto& g = layout->geometry;
     auto run = [&]<class T>(T) -> hmira::result<hmira::indexed_triangles<double>> {
         const std::size_t plane = g.dims[0] * g.dims[1] * sizeof(T);
         const std::size_t slices = a.slab_slices ? a.slab_slices : std::max<std::size_t>(1, slab_bytes / plane);
-        auto fetch = [&](std::size_t k0, std::size_t count, std::vector<T>& out) { return reader->read_slices(k0, count, out); };
+        auto fetch = [&](std::size_t k0, std::size_t count, std::vector<T>& out) {
+            return reader->read_slices(k0, count, out);
+        };
         return hmira::marching_cubes_by_slabs<double, T>(g, slices, fetch, opt);
     };
     hmira::result<hmira::indexed_triangles<double>> tri = hmira::fail(hmira::errc::invalid_argument, "");
     // .inr samples become float, as read_inr makes them; .raw samples stay as stored.
     using hmira::io::sample_type;
-    if (!raw) tri = run(float{});
-    else switch (layout->type) {
-        case sample_type::uint8: tri = run(std::uint8_t{}); break;
-        case sample_type::int8: tri = run(std::int8_t{}); break;
-        case sample_type::uint16: tri = run(std::uint16_t{}); break;
-        case sample_type::int16: tri = run(std::int16_t{}); break;
-        case sample_type::uint32: tri = run(std::uint32_t{}); break;
-        case sample_type::int32: tri = run(std::int32_t{}); break;
-        case sample_type::float64: tri = run(double{}); break;
-        case sample_type::float32: tri = run(float{}); break;
-    }
+    if (!raw)
+        tri = run(float{});
+    else
+        switch (layout->type) {
+            case sample_type::uint8: tri = run(std::uint8_t{}); break;
+            case sample_type::int8: tri = run(std::int8_t{}); break;
+            case sample_type::uint16: tri = run(std::uint16_t{}); break;
+            case sample_type::int16: tri = run(std::int16_t{}); break;
+            case sample_type::uint32: tri = run(std::uint32_t{}); break;
+            case sample_type::int32: tri = run(std::int32_t{}); break;
+            case sample_type::float64: tri = run(double{}); break;
+            case sample_type::float32: tri = run(float{}); break;
+        }
     if (!tri) return report(input_exit_code(tri.error()), tri.error().message);
     if (auto w = hmira::io::write_mesh<hmira::indexed_triangles<double>, triangle_list_traits>(*tri, a.output); !w)
         return report(exit_code_for(w.error()), w.error().message);
-    say(o, a.output + ": " + std::to_string(tri->positions.size()) + " vertices, " + std::to_string(tri->triangles.size()) + " triangles");
+    say(o, a.output + ": " + std::to_string(tri->positions.size()) + " vertices, " +
+               std::to_string(tri->triangles.size()) + " triangles");
     return ok;
 }
 
@@ -227,9 +246,9 @@ int run_mc(const mc_args& a, const common_options& o) {
     if (!grid) return report(code_for(grid.error()), grid.error().message);
     hmira::face_vertex_mesh m;
     const hmira::marching_cubes_options opt{.iso = a.iso,
-                                             .inside = named<hmira::iso_inside>(a.inside),
-                                             .normals = a.normals,
-                                             .threads = static_cast<unsigned>(o.threads)};
+                                            .inside = named<hmira::iso_inside>(a.inside),
+                                            .normals = a.normals,
+                                            .threads = static_cast<unsigned>(o.threads)};
     auto r = std::visit([&](const auto& g) { return hmira::marching_cubes(m, g, opt); }, *grid);
     if (!r) return report(code_for(r.error()), r.error().message);
     hmira::io::mesh_attributes attributes;
@@ -237,38 +256,51 @@ int run_mc(const mc_args& a, const common_options& o) {
     hmira::io::write_options w;
     if (!attributes.normals.empty()) w.attributes = &attributes;
     if (int c = save(m, a.output, w, o); c != ok) return c;
-    say(o, a.output + ": " + std::to_string(m.vertex_count()) + " vertices, " + std::to_string(m.face_count()) + " triangles");
+    say(o, a.output + ": " + std::to_string(m.vertex_count()) + " vertices, " + std::to_string(m.face_count()) +
+               " triangles");
     return ok;
 }
 
-const bool registered = register_command({
-    "mc", "Marching cubes: an implicit shape (sphere, torus, gyroid) or a .inr/.raw volume to a mesh",
-    "hmira mc torus torus.ply --resolution 128", 70,
-    [](CLI::App& sub) {
-        auto a = std::make_shared<mc_args>();
-        sub.add_option("source", a->source, "sphere | torus | gyroid | volume.inr | volume.inr.gz | volume.raw")->required();
-        sub.add_option("output", a->output, "mesh file to write (.obj .off .ply .stl)")->required();
-        sub.add_option("-n,--resolution", a->resolution, "samples per axis for a named shape")->capture_default_str()->check(whole_number(2, 2048));
-        sub.add_option("--iso", a->iso, "iso value")->capture_default_str()->check(finite_number());
-        sub.add_option("--inside", a->inside, "which side of the iso value is inside")
-            ->capture_default_str()
-            ->check(CLI::IsMember(names_of<hmira::iso_inside>()));
-        sub.add_flag("--normals", a->normals, "write per-vertex normals from the field's gradient");
-        sub.add_option("--dims", a->dims, ".raw: samples along x, y and z (required for .raw; x varies fastest in the file)")->type_name("X,Y,Z");
-        sub.add_option("--type", a->type, ".raw: sample type")
-            ->capture_default_str()
-            ->check(CLI::IsMember({"uint8", "int8", "uint16", "int16", "uint32", "int32", "float32", "float64"}));
-        sub.add_option("--spacing", a->spacing, ".raw: distance between samples, one for all axes or X,Y,Z (default 1)")->type_name("H|X,Y,Z");
-        sub.add_option("--origin", a->origin, ".raw: position of sample (0, 0, 0) (default 0,0,0)")->type_name("X,Y,Z");
-        sub.add_option("--slab-slices", a->slab_slices,
-                       ".raw/.inr: z-slices read at a time (default: 64 MiB worth); the file is read slab by slab, so memory "
-                       "holds a slab plus the output mesh, whatever the volume's size (not with --normals)")
-            ->check(whole_number(1, 1000000));
-        sub.add_option("--endian", a->endian, ".raw: byte order of multi-byte samples")->capture_default_str()->check(CLI::IsMember({"little", "big"}));
-        sub.footer("\nA .raw volume (x fastest, no header) needs its grid on the command line, e.g.\n"
-                   "  hmira mc ct.raw ct.ply --dims 256,256,128 --type int16 --spacing 0.5,0.5,1 --iso 300 --inside above\n"
-                   "A .raw volume from 'hmira voxelize' comes with <file>.txt, which gives the exact 'hmira mc' command.\n" + sub.get_footer());
-        return [a](const common_options& o) { return run_mc(*a, o); };
-    }});
+const bool registered = register_command(
+    {"mc", "Marching cubes: an implicit shape (sphere, torus, gyroid) or a .inr/.raw volume to a mesh",
+     "hmira mc torus torus.ply --resolution 128", 70, [](CLI::App& sub) {
+         auto a = std::make_shared<mc_args>();
+         sub.add_option("source", a->source, "sphere | torus | gyroid | volume.inr | volume.inr.gz | volume.raw")
+             ->required();
+         sub.add_option("output", a->output, "mesh file to write (.obj .off .ply .stl)")->required();
+         sub.add_option("-n,--resolution", a->resolution, "samples per axis for a named shape")
+             ->capture_default_str()
+             ->check(whole_number(2, 2048));
+         sub.add_option("--iso", a->iso, "iso value")->capture_default_str()->check(finite_number());
+         sub.add_option("--inside", a->inside, "which side of the iso value is inside")
+             ->capture_default_str()
+             ->check(CLI::IsMember(names_of<hmira::iso_inside>()));
+         sub.add_flag("--normals", a->normals, "write per-vertex normals from the field's gradient");
+         sub.add_option("--dims", a->dims,
+                        ".raw: samples along x, y and z (required for .raw; x varies fastest in the file)")
+             ->type_name("X,Y,Z");
+         sub.add_option("--type", a->type, ".raw: sample type")
+             ->capture_default_str()
+             ->check(CLI::IsMember({"uint8", "int8", "uint16", "int16", "uint32", "int32", "float32", "float64"}));
+         sub.add_option("--spacing", a->spacing,
+                        ".raw: distance between samples, one for all axes or X,Y,Z (default 1)")
+             ->type_name("H|X,Y,Z");
+         sub.add_option("--origin", a->origin, ".raw: position of sample (0, 0, 0) (default 0,0,0)")
+             ->type_name("X,Y,Z");
+         sub.add_option(
+                "--slab-slices", a->slab_slices,
+                ".raw/.inr: z-slices read at a time (default: 64 MiB worth); the file is read slab by slab, so memory "
+                "holds a slab plus the output mesh, whatever the volume's size (not with --normals)")
+             ->check(whole_number(1, 1000000));
+         sub.add_option("--endian", a->endian, ".raw: byte order of multi-byte samples")
+             ->capture_default_str()
+             ->check(CLI::IsMember({"little", "big"}));
+         sub.footer(
+             "\nA .raw volume (x fastest, no header) needs its grid on the command line, e.g.\n"
+             "  hmira mc ct.raw ct.ply --dims 256,256,128 --type int16 --spacing 0.5,0.5,1 --iso 300 --inside above\n"
+             "A .raw volume from 'hmira voxelize' comes with <file>.txt, which gives the exact 'hmira mc' command.\n" +
+             sub.get_footer());
+         return [a](const common_options& o) { return run_mc(*a, o); };
+     }});
 
 }  // namespace

@@ -83,20 +83,20 @@ int run_remesh(const remesh_args& a, const common_options& o) {
                     });
 }
 
-const bool registered = register_command({
-    "remesh", "Isotropic remeshing of a triangle mesh to one edge length (boundary and sharp edges kept)",
-    "hmira remesh bunny.off even.off --length 0.01 -k 5 --features 45", 88,
-    [](CLI::App& sub) {
-        auto a = std::make_shared<remesh_args>();
-        sub.add_option("input", a->input, "triangle mesh file to read (manifold, consistently oriented)")->required();
-        sub.add_option("output", a->output, "mesh file to write")->required();
-        sub.add_option("--length", a->length, "target edge length (default: the input's mean edge length)")
-            ->check(finite_number("> 0", [](double x) { return x > 0; }));
-        sub.add_option("-k,--iterations", a->iterations, "rounds of split, collapse, flip, relax (1 to 100)")
-            ->check(whole_number(1, 100));
-        sub.add_option("--features", a->features, "keep edges whose faces' normals differ by more than DEG degrees (0 to 180)")
-            ->check(finite_number("in [0, 180]", [](double x) { return x >= 0 && x <= 180; }));
-        return [a](const common_options& o) { return run_remesh(*a, o); };
-    }});
+const bool registered = register_command(
+    {"remesh", "Isotropic remeshing of a triangle mesh to one edge length (boundary and sharp edges kept)",
+     "hmira remesh bunny.off even.off --length 0.01 -k 5 --features 45", 88, [](CLI::App& sub) {
+         auto a = std::make_shared<remesh_args>();
+         sub.add_option("input", a->input, "triangle mesh file to read (manifold, consistently oriented)")->required();
+         sub.add_option("output", a->output, "mesh file to write")->required();
+         sub.add_option("--length", a->length, "target edge length (default: the input's mean edge length)")
+             ->check(finite_number("> 0", [](double x) { return x > 0; }));
+         sub.add_option("-k,--iterations", a->iterations, "rounds of split, collapse, flip, relax (1 to 100)")
+             ->check(whole_number(1, 100));
+         sub.add_option("--features", a->features,
+                        "keep edges whose faces' normals differ by more than DEG degrees (0 to 180)")
+             ->check(finite_number("in [0, 180]", [](double x) { return x >= 0 && x <= 180; }));
+         return [a](const common_options& o) { return run_remesh(*a, o); };
+     }});
 
 }  // namespace

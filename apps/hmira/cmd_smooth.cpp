@@ -28,10 +28,17 @@ int run_smooth(const smooth_args& a, const common_options& o) {
     // Vertices times steps: the bar shows for a long run on a small mesh too.
     const std::uint64_t steps = std::uint64_t(a.iterations) * (a.method == "taubin" ? 2 : 1);
     const std::uint64_t work = std::uint64_t(loaded->mesh.vertex_count()) * steps;
-    hmira::taubin_smooth_options taubin{.iterations = a.iterations, .lambda = a.lambda, .mu = a.mu, .weights = w,
-                                        .fix_boundary = !a.move_boundary, .fixed_vertices = a.fixed};
-    hmira::laplacian_smooth_options laplacian{.iterations = a.iterations, .lambda = a.lambda, .weights = w,
-                                              .fix_boundary = !a.move_boundary, .fixed_vertices = a.fixed};
+    hmira::taubin_smooth_options taubin{.iterations = a.iterations,
+                                        .lambda = a.lambda,
+                                        .mu = a.mu,
+                                        .weights = w,
+                                        .fix_boundary = !a.move_boundary,
+                                        .fixed_vertices = a.fixed};
+    hmira::laplacian_smooth_options laplacian{.iterations = a.iterations,
+                                              .lambda = a.lambda,
+                                              .weights = w,
+                                              .fix_boundary = !a.move_boundary,
+                                              .fixed_vertices = a.fixed};
     return run_edit(*loaded, a.input, a.output, "smoothing " + a.input, o,
                     [&](hmira::halfedge_mesh& mesh, int& c) -> std::optional<edit_outcome> {
                         progress_bar bar("smoothing " + a.input, o, std::uint64_t(1) << 24);
@@ -50,29 +57,36 @@ int run_smooth(const smooth_args& a, const common_options& o) {
                             c = report(exit_code_for(r.error()), a.input + ": " + r.error().message);
                             return std::nullopt;
                         }
-                        return edit_outcome{"smoothed " + count_of(r->moved, "vertex", "vertices") + " (" + a.method + ", " + a.weights + ", " +
+                        return edit_outcome{"smoothed " + count_of(r->moved, "vertex", "vertices") + " (" + a.method +
+                                                ", " + a.weights + ", " +
                                                 count_of(a.iterations, "iteration", "iterations") + ")",
                                             {}};
                     });
 }
 
-const bool registered = register_command({
-    "smooth", "Smooth vertex positions (Taubin lambda/mu or Laplacian; uniform or cotangent weights)",
-    "hmira smooth noisy.off smooth.off --method taubin --iterations 10", 87,
-    [](CLI::App& sub) {
-        auto a = std::make_shared<smooth_args>();
-        sub.add_option("input", a->input, "mesh file to read (manifold, consistently oriented)")->required();
-        sub.add_option("output", a->output, "mesh file to write (same vertices and faces, moved)")->required();
-        sub.add_option("--method", a->method, "taubin (keeps the volume) or laplacian (shrinks)")->check(CLI::IsMember({"taubin", "laplacian"}));
-        sub.add_option("--weights", a->weights, "uniform or cotangent (triangles only)")->check(CLI::IsMember(names_of<hmira::laplacian_weights>()));
-        sub.add_option("--iterations", a->iterations, "smoothing steps (Taubin: lambda/mu pairs)")->check(whole_number(0, 1000000));
-        sub.add_option("--lambda", a->lambda, "step size, in (0, 1]")->check(finite_number("in (0, 1]", [](double x) { return x > 0 && x <= 1; }));
-        sub.add_option("--mu", a->mu, "Taubin's inflating step, in [-1, -lambda)")->check(finite_number("in [-1, 0)", [](double x) { return x >= -1 && x < 0; }));
-        sub.add_flag("--move-boundary", a->move_boundary, "let boundary vertices move too");
-        sub.add_option("--fix", a->fixed, "keep vertex N exactly where it is (0-based, file order; repeatable, or N,M,...)")
-            ->delimiter(',')
-            ->check(CLI::NonNegativeNumber);
-        return [a](const common_options& o) { return run_smooth(*a, o); };
-    }});
+const bool registered = register_command(
+    {"smooth", "Smooth vertex positions (Taubin lambda/mu or Laplacian; uniform or cotangent weights)",
+     "hmira smooth noisy.off smooth.off --method taubin --iterations 10", 87, [](CLI::App& sub) {
+         auto a = std::make_shared<smooth_args>();
+         sub.add_option("input", a->input, "mesh file to read (manifold, consistently oriented)")->required();
+         sub.add_option("output", a->output, "mesh file to write (same vertices and faces, moved)")->required();
+         sub.add_option("--method", a->method, "taubin (keeps the volume) or laplacian (shrinks)")
+             ->check(CLI::IsMember({"taubin", "laplacian"}));
+         sub.add_option("--weights", a->weights, "uniform or cotangent (triangles only)")
+             ->check(CLI::IsMember(names_of<hmira::laplacian_weights>()));
+         sub.add_option("--iterations", a->iterations, "smoothing steps (Taubin: lambda/mu pairs)")
+             ->check(whole_number(0, 1000000));
+         sub.add_option("--lambda", a->lambda, "step size, in (0, 1]")->check(finite_number("in (0, 1]", [](double x) {
+             return x > 0 && x <= 1;
+         }));
+         sub.add_option("--mu", a->mu, "Taubin's inflating step, in [-1, -lambda)")
+             ->check(finite_number("in [-1, 0)", [](double x) { return x >= -1 && x < 0; }));
+         sub.add_flag("--move-boundary", a->move_boundary, "let boundary vertices move too");
+         sub.add_option("--fix", a->fixed,
+                        "keep vertex N exactly where it is (0-based, file order; repeatable, or N,M,...)")
+             ->delimiter(',')
+             ->check(CLI::NonNegativeNumber);
+         return [a](const common_options& o) { return run_smooth(*a, o); };
+     }});
 
 }  // namespace

@@ -36,27 +36,27 @@ int run_triangulate(const triangulate_args& a, const common_options& o) {
     for (const auto& [f, tris] : cuts) {
         if (auto r = mesh.remove_face(f); !r) return report(internal, r.error().message);
         for (const auto& t : tris) {
-            if (auto r = mesh.add_face(std::span<const hmira::vertex_handle>(t)); !r) return report(internal, r.error().message);
+            if (auto r = mesh.add_face(std::span<const hmira::vertex_handle>(t)); !r)
+                return report(internal, r.error().message);
             ++added;
         }
     }
     (void)mesh.collect_garbage();
     if (int c = save(mesh, a.output, {}, o); c != ok) return c;
-    say(o, a.output + ": cut " + count_of(cuts.size(), "face", "faces") + " into " + count_of(added, "triangle", "triangles") + ", " +
-               std::to_string(mesh.face_count()) + " faces in all");
+    say(o, a.output + ": cut " + count_of(cuts.size(), "face", "faces") + " into " +
+               count_of(added, "triangle", "triangles") + ", " + std::to_string(mesh.face_count()) + " faces in all");
     return ok;
 }
 
-const bool registered = register_command({
-    "triangulate", "Cut every polygon into triangles (concave faces included)",
-    "hmira triangulate bevelled.obj triangles.stl", 55,
-    [](CLI::App& sub) {
-        auto a = std::make_shared<triangulate_args>();
-        sub.add_option("input", a->input, "mesh file to read")->required();
-        sub.add_option("output", a->output, "mesh file to write (replaced atomically; not the input)")->required();
-        sub.add_flag("--delaunay", a->delaunay,
-                     "flip each face's diagonals to its constrained Delaunay triangulation (largest smallest angle)");
-        return [a](const common_options& o) { return run_triangulate(*a, o); };
-    }});
+const bool registered = register_command(
+    {"triangulate", "Cut every polygon into triangles (concave faces included)",
+     "hmira triangulate bevelled.obj triangles.stl", 55, [](CLI::App& sub) {
+         auto a = std::make_shared<triangulate_args>();
+         sub.add_option("input", a->input, "mesh file to read")->required();
+         sub.add_option("output", a->output, "mesh file to write (replaced atomically; not the input)")->required();
+         sub.add_flag("--delaunay", a->delaunay,
+                      "flip each face's diagonals to its constrained Delaunay triangulation (largest smallest angle)");
+         return [a](const common_options& o) { return run_triangulate(*a, o); };
+     }});
 
 }  // namespace

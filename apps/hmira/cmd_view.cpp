@@ -18,7 +18,6 @@ namespace {
 
 using namespace hmira_cli;
 
-
 struct view_args {
     std::string input, output, compare;
 };
@@ -42,7 +41,8 @@ std::optional<plain_mesh> plain(const std::string& path, const common_options& o
         return std::nullopt;
     }
     if (m.vertex_count() > std::numeric_limits<std::uint32_t>::max() / 2) {
-        code = report(invalid_input, path + ": " + std::to_string(m.vertex_count()) + " vertices are more than a page can index (32-bit)");
+        code = report(invalid_input, path + ": " + std::to_string(m.vertex_count()) +
+                                         " vertices are more than a page can index (32-bit)");
         return std::nullopt;
     }
     plain_mesh out;
@@ -70,15 +70,23 @@ std::optional<plain_mesh> plain(const std::string& path, const common_options& o
 
 hmira_viewer::page_mesh page_mesh_of(const plain_mesh& m, std::array<double, 3> origin) {
     const auto& t = m.topology;
-    return hmira_viewer::make_page_mesh(std::filesystem::path(m.path).filename().string(),
-                                        {.vertices = t.vertices, .edges = t.edges, .faces = t.faces, .genus = t.genus, .closed = t.faces > 0 && t.closed()},
-                                        {.points = m.points, .offsets = m.offsets, .corners = m.corners, .normals = m.normals, .colors = m.colors}, origin);
+    return hmira_viewer::make_page_mesh(
+        std::filesystem::path(m.path).filename().string(),
+        {.vertices = t.vertices,
+         .edges = t.edges,
+         .faces = t.faces,
+         .genus = t.genus,
+         .closed = t.faces > 0 && t.closed()},
+        {.points = m.points, .offsets = m.offsets, .corners = m.corners, .normals = m.normals, .colors = m.colors},
+        origin);
 }
 
 std::string size_text(std::uintmax_t bytes) {
     char b[32];
-    if (bytes >= (1u << 20)) std::snprintf(b, sizeof b, "%.1f MB", static_cast<double>(bytes) / (1 << 20));
-    else std::snprintf(b, sizeof b, "%.0f KB", static_cast<double>(bytes) / 1024);
+    if (bytes >= (1u << 20))
+        std::snprintf(b, sizeof b, "%.1f MB", static_cast<double>(bytes) / (1 << 20));
+    else
+        std::snprintf(b, sizeof b, "%.0f KB", static_cast<double>(bytes) / 1024);
     return b;
 }
 
@@ -94,15 +102,19 @@ int run_view(const view_args& a, const common_options& o) {
     const std::string_view viewer_bundle = hmira_viewer::bundle();
     // A build condition, not a fault inside hmira: the build had no bundle to compile in.
     if (viewer_bundle.empty())
-        return report(usage, "this hmira was built without the viewer bundle (viewer/dist/hmira-viewer.js): restore it or run "
-                             "viewer/build.sh (needs node and npm), then re-run cmake and rebuild");
-    const std::string output = a.output.empty() ? std::filesystem::path(a.input).replace_extension(".html").string() : a.output;
+        return report(usage,
+                      "this hmira was built without the viewer bundle (viewer/dist/hmira-viewer.js): restore it or run "
+                      "viewer/build.sh (needs node and npm), then re-run cmake and rebuild");
+    const std::string output =
+        a.output.empty() ? std::filesystem::path(a.input).replace_extension(".html").string() : a.output;
     // Checked before anything is read, so a refused output is never written.
     if (!is_page_name(output))
-        return report(usage, "output " + output + " is not an .html or .htm file (view writes an HTML page; name the page explicitly)");
+        return report(usage, "output " + output +
+                                 " is not an .html or .htm file (view writes an HTML page; name the page explicitly)");
     for (const auto* path : {&a.input, &a.compare})
         if (!path->empty() && same_file(output, *path))
-            return report(usage, "output " + output + " is the input " + *path + " (view writes an HTML page; choose another name)");
+            return report(usage, "output " + output + " is the input " + *path +
+                                     " (view writes an HTML page; choose another name)");
     int code = ok;
     std::vector<plain_mesh> meshes;
     for (const auto* path : {&a.input, &a.compare}) {
@@ -118,8 +130,9 @@ int run_view(const view_args& a, const common_options& o) {
         pages.push_back(page_mesh_of(m, origin));
         // The page stores float positions: a vertex that far from the centre would be infinite.
         if (const auto v = hmira_viewer::first_vertex_beyond_float_range(pages.back()); v < m.points.size() / 3)
-            return report(invalid_input, m.path + ": vertex " + std::to_string(v) + " (file order) is too far from the page's centre for "
-                                         "its float positions (beyond 3.4e38); nothing is written");
+            return report(invalid_input, m.path + ": vertex " + std::to_string(v) +
+                                             " (file order) is too far from the page's centre for "
+                                             "its float positions (beyond 3.4e38); nothing is written");
     }
     meshes.clear();
     auto written = hmira::io::detail::write_file_atomically(output, [&](std::ostream& os) {
@@ -131,22 +144,23 @@ int run_view(const view_args& a, const common_options& o) {
     const auto bytes = std::filesystem::file_size(output, ec);
     std::string what;
     for (const auto& p : pages)
-        what += (what.empty() ? "" : " | ") + p.name + ": V " + std::to_string(p.info.vertices) + ", F " + std::to_string(p.info.faces);
+        what += (what.empty() ? "" : " | ") + p.name + ": V " + std::to_string(p.info.vertices) + ", F " +
+                std::to_string(p.info.faces);
     say(o, what + " -> " + output + (ec ? "" : " (" + size_text(bytes) + ")"));
     return ok;
 }
 
-const bool registered = register_command({
-    "view", "Write a self-contained HTML page that shows a mesh (or two side by side) in any browser, offline",
-    "hmira view cube_rounded.obj                 # writes cube_rounded.html\n"
-    "  hmira view cube.obj --compare cube_rounded.obj before_after.html",
-    90,
-    [](CLI::App& sub) {
-        auto a = std::make_shared<view_args>();
-        sub.add_option("input", a->input, "mesh file (.obj .off .ply .stl)")->required();
-        sub.add_option("output", a->output, "page to write (default: input with .html)");
-        sub.add_option("--compare", a->compare, "a second mesh, shown beside the first under the same camera")->type_name("MESH");
-        return [a](const common_options& o) { return run_view(*a, o); };
-    }});
+const bool registered = register_command(
+    {"view", "Write a self-contained HTML page that shows a mesh (or two side by side) in any browser, offline",
+     "hmira view cube_rounded.obj                 # writes cube_rounded.html\n"
+     "  hmira view cube.obj --compare cube_rounded.obj before_after.html",
+     90, [](CLI::App& sub) {
+         auto a = std::make_shared<view_args>();
+         sub.add_option("input", a->input, "mesh file (.obj .off .ply .stl)")->required();
+         sub.add_option("output", a->output, "page to write (default: input with .html)");
+         sub.add_option("--compare", a->compare, "a second mesh, shown beside the first under the same camera")
+             ->type_name("MESH");
+         return [a](const common_options& o) { return run_view(*a, o); };
+     }});
 
 }  // namespace

@@ -30,7 +30,8 @@ int main(int argc, char** argv) {
     install_signal_cleanup();
     CLI::App app{"hmira: generic polygon-mesh algorithms on mesh files (OBJ, OFF, PLY, STL)", "hmira"};
     app.require_subcommand(1);
-    app.footer(std::string("\n") + exit_codes_text + "\nRun 'hmira <subcommand> --help' for a subcommand's options and an example.");
+    app.footer(std::string("\n") + exit_codes_text +
+               "\nRun 'hmira <subcommand> --help' for a subcommand's options and an example.");
     app.set_version_flag("--version", "hmira 0.1.0");
 
     auto& all = commands();
@@ -65,7 +66,9 @@ int main(int argc, char** argv) {
     }
 #ifdef HMIRA_HAS_TBB
     std::unique_ptr<tbb::global_control> threads;
-    if (common.threads > 0) threads = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(common.threads));
+    if (common.threads > 0)
+        threads = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
+                                                        static_cast<std::size_t>(common.threads));
 #endif
     if (!chosen) return report(usage, "no subcommand given (see 'hmira --help')");
     try {

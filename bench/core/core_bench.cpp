@@ -59,7 +59,8 @@ face_list triangle_grid(std::size_t nx, std::size_t ny, std::string name) {
     face_list g;
     g.name = std::move(name);
     for (std::size_t j = 0; j <= ny; ++j)
-        for (std::size_t i = 0; i <= nx; ++i) g.points.push_back({double(i), double(j), 0.001 * double((i * 7 + j * 13) % 17)});
+        for (std::size_t i = 0; i <= nx; ++i)
+            g.points.push_back({double(i), double(j), 0.001 * double((i * 7 + j * 13) % 17)});
     auto id = [&](std::size_t i, std::size_t j) { return static_cast<std::uint32_t>(j * (nx + 1) + i); };
     for (std::size_t j = 0; j < ny; ++j)
         for (std::size_t i = 0; i < nx; ++i) {
@@ -112,7 +113,9 @@ const face_list& real_mesh() {
             t.name = name;
             if (read_off(dir + "/meshes/" + name + ".off", t)) return t;
         }
-        std::fprintf(stderr, "bench_core: no real mesh under %s/meshes (run scripts/test-data.sh); using a 160x160 grid\n", dir.c_str());
+        std::fprintf(stderr,
+                     "bench_core: no real mesh under %s/meshes (run scripts/test-data.sh); using a 160x160 grid\n",
+                     dir.c_str());
         return triangle_grid(160, 160, "grid-51k(fallback)");
     }();
     return mesh;
@@ -134,7 +137,8 @@ face_list refined(face_list g, int levels, std::string name) {
             if (g.offsets[f + 1] - g.offsets[f] != 3) return {};  // triangles only
             const auto a = g.corners[g.offsets[f]], b = g.corners[g.offsets[f] + 1], c = g.corners[g.offsets[f] + 2];
             const auto ab = mid(a, b), bc = mid(b, c), ca = mid(c, a);
-            for (auto t : {std::array{a, ab, ca}, std::array{ab, b, bc}, std::array{ca, bc, c}, std::array{ab, bc, ca}}) {
+            for (auto t :
+                 {std::array{a, ab, ca}, std::array{ab, b, bc}, std::array{ca, bc, c}, std::array{ab, bc, ca}}) {
                 out.corners.insert(out.corners.end(), t.begin(), t.end());
                 out.offsets.push_back(static_cast<std::uint32_t>(out.corners.size()));
             }
@@ -306,7 +310,8 @@ const cgal_soup& soup_of(const face_list& g) {
         if (k == &g) return *v;
     auto s = std::make_unique<cgal_soup>();
     for (const auto& p : g.points) s->points.emplace_back(p.x, p.y, p.z);
-    for (std::size_t f = 0; f < g.faces(); ++f) s->polygons.emplace_back(g.corners.begin() + g.offsets[f], g.corners.begin() + g.offsets[f + 1]);
+    for (std::size_t f = 0; f < g.faces(); ++f)
+        s->polygons.emplace_back(g.corners.begin() + g.offsets[f], g.corners.begin() + g.offsets[f + 1]);
     cache.emplace_back(&g, std::move(s));
     return *cache.back().second;
 }
@@ -316,7 +321,8 @@ void cgal_build_soup(cgal_mesh& m, const face_list& g, bool checked) {
     CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(s.points, s.polygons, m);
 }
 void cgal_build_native(cgal_mesh& m, const face_list& g) {
-    m.reserve(static_cast<cgal_mesh::size_type>(g.points.size()), static_cast<cgal_mesh::size_type>(g.corners.size() / 2 + g.points.size()),
+    m.reserve(static_cast<cgal_mesh::size_type>(g.points.size()),
+              static_cast<cgal_mesh::size_type>(g.corners.size() / 2 + g.points.size()),
               static_cast<cgal_mesh::size_type>(g.faces()));
     std::vector<cgal_mesh::Vertex_index> vs;
     vs.reserve(g.points.size());
@@ -382,7 +388,9 @@ cgal_mesh cgal_built(const face_list& g) {
 
 template <class F>
 void register_bench(const std::string& name, F f) {
-    benchmark::RegisterBenchmark(name.c_str(), [f](benchmark::State& state) { f(state); })->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(name.c_str(), [f](benchmark::State& state) {
+        f(state);
+    })->Unit(benchmark::kMillisecond);
 }
 
 void register_all() {
@@ -390,39 +398,75 @@ void register_all() {
         const std::string n = "/" + g->name;
         // Building.
         register_bench("build/halfedge_mesh/bulk_from_polygons" + n, [g](benchmark::State& s) {
-            for (auto _ : s) { auto m = bulk_halfedge(*g); benchmark::DoNotOptimize(m.edge_count()); }
+            for (auto _ : s) {
+                auto m = bulk_halfedge(*g);
+                benchmark::DoNotOptimize(m.edge_count());
+            }
         });
         register_bench("build/halfedge_mesh/add_face" + n, [g](benchmark::State& s) {
-            for (auto _ : s) { auto m = built<hmira::halfedge_mesh>(*g); benchmark::DoNotOptimize(m.edge_count()); }
+            for (auto _ : s) {
+                auto m = built<hmira::halfedge_mesh>(*g);
+                benchmark::DoNotOptimize(m.edge_count());
+            }
         });
         register_bench("build/winged_edge_mesh/add_face" + n, [g](benchmark::State& s) {
-            for (auto _ : s) { auto m = built<hmira::winged_edge_mesh>(*g); benchmark::DoNotOptimize(m.edge_count()); }
+            for (auto _ : s) {
+                auto m = built<hmira::winged_edge_mesh>(*g);
+                benchmark::DoNotOptimize(m.edge_count());
+            }
         });
         register_bench("build/face_vertex_mesh/add_face" + n, [g](benchmark::State& s) {
-            for (auto _ : s) { auto m = built<hmira::face_vertex_mesh>(*g); benchmark::DoNotOptimize(m.face_count()); }
+            for (auto _ : s) {
+                auto m = built<hmira::face_vertex_mesh>(*g);
+                benchmark::DoNotOptimize(m.face_count());
+            }
         });
 #ifdef HMIRA_BENCH_WITH_OPENMESH
         register_bench("build/openmesh/native_add_face" + n, [g](benchmark::State& s) {
-            for (auto _ : s) { om_mesh m; om_build_native(m, *g); benchmark::DoNotOptimize(m.n_faces()); }
+            for (auto _ : s) {
+                om_mesh m;
+                om_build_native(m, *g);
+                benchmark::DoNotOptimize(m.n_faces());
+            }
         });
         register_bench("build/openmesh/hmira_traits_add_face" + n, [g](benchmark::State& s) {
-            for (auto _ : s) { om_mesh m; build_through_traits(m, *g); benchmark::DoNotOptimize(m.n_faces()); }
+            for (auto _ : s) {
+                om_mesh m;
+                build_through_traits(m, *g);
+                benchmark::DoNotOptimize(m.n_faces());
+            }
         });
 #endif
 #ifdef HMIRA_BENCH_WITH_CGAL
         register_bench("build/cgal/native_polygon_soup_to_polygon_mesh" + n, [g](benchmark::State& s) {
             (void)soup_of(*g);
-            for (auto _ : s) { cgal_mesh m; cgal_build_soup(m, *g, false); benchmark::DoNotOptimize(m.number_of_faces()); }
+            for (auto _ : s) {
+                cgal_mesh m;
+                cgal_build_soup(m, *g, false);
+                benchmark::DoNotOptimize(m.number_of_faces());
+            }
         });
         register_bench("build/cgal/native_soup_checked" + n, [g](benchmark::State& s) {
             (void)soup_of(*g);
-            for (auto _ : s) { cgal_mesh m; cgal_build_soup(m, *g, true); benchmark::DoNotOptimize(m.number_of_faces()); }
+            for (auto _ : s) {
+                cgal_mesh m;
+                cgal_build_soup(m, *g, true);
+                benchmark::DoNotOptimize(m.number_of_faces());
+            }
         });
         register_bench("build/cgal/native_add_face" + n, [g](benchmark::State& s) {
-            for (auto _ : s) { cgal_mesh m; cgal_build_native(m, *g); benchmark::DoNotOptimize(m.number_of_faces()); }
+            for (auto _ : s) {
+                cgal_mesh m;
+                cgal_build_native(m, *g);
+                benchmark::DoNotOptimize(m.number_of_faces());
+            }
         });
         register_bench("build/cgal/hmira_traits_add_face" + n, [g](benchmark::State& s) {
-            for (auto _ : s) { cgal_mesh m; build_through_traits(m, *g); benchmark::DoNotOptimize(m.number_of_faces()); }
+            for (auto _ : s) {
+                cgal_mesh m;
+                build_through_traits(m, *g);
+                benchmark::DoNotOptimize(m.number_of_faces());
+            }
         });
 #endif
         // One-ring traversal.
@@ -441,11 +485,17 @@ void register_all() {
         });
         register_bench("adapter/indexed_vertex_adjacency(build)" + n, [g](benchmark::State& s) {
             auto m = built<hmira::face_vertex_mesh>(*g);
-            for (auto _ : s) { hmira::indexed_vertex_adjacency<hmira::face_vertex_mesh> a(m); benchmark::DoNotOptimize(a.memory_bytes()); }
+            for (auto _ : s) {
+                hmira::indexed_vertex_adjacency<hmira::face_vertex_mesh> a(m);
+                benchmark::DoNotOptimize(a.memory_bytes());
+            }
         });
         register_bench("adapter/indexed_all(build)" + n, [g](benchmark::State& s) {
             auto m = built<hmira::face_vertex_mesh>(*g);
-            for (auto _ : s) { auto a = hmira::adapt_indexed(m); benchmark::DoNotOptimize(&a); }
+            for (auto _ : s) {
+                auto a = hmira::adapt_indexed(m);
+                benchmark::DoNotOptimize(&a);
+            }
         });
 #ifdef HMIRA_BENCH_WITH_OPENMESH
         register_bench("one_ring/openmesh/native_vv_range" + n, [g](benchmark::State& s) {
@@ -512,13 +562,14 @@ void register_all() {
         const auto a = hmira::adapt_brute_force(m);
         for (auto _ : s) benchmark::DoNotOptimize(one_ring_sum(a));
     });
-    register_bench("one_ring/face_vertex_mesh+indexed_adapter(build+query)/" + small->name, [small](benchmark::State& s) {
-        auto m = built<hmira::face_vertex_mesh>(*small);
-        for (auto _ : s) {
-            const auto a = hmira::adapt_indexed(m);
-            benchmark::DoNotOptimize(one_ring_sum(a));
-        }
-    });
+    register_bench("one_ring/face_vertex_mesh+indexed_adapter(build+query)/" + small->name,
+                   [small](benchmark::State& s) {
+                       auto m = built<hmira::face_vertex_mesh>(*small);
+                       for (auto _ : s) {
+                           const auto a = hmira::adapt_indexed(m);
+                           benchmark::DoNotOptimize(one_ring_sum(a));
+                       }
+                   });
     register_bench("one_ring/halfedge_mesh/" + small->name, [small](benchmark::State& s) {
         const auto m = bulk_halfedge(*small);
         for (auto _ : s) benchmark::DoNotOptimize(one_ring_sum(m));
@@ -580,8 +631,13 @@ void run_pairs(int rounds, const std::string& workload_filter, const std::string
         const std::string mesh = g->name + " (" + std::to_string(g->faces()) + " F)";
         // Shared prebuilt meshes for the traversal and flip workloads.
         auto he = std::make_shared<hmira::halfedge_mesh>(bulk_halfedge(*g));
-        auto bulk = [g] { return build_seconds([&] { return std::make_unique<hmira::halfedge_mesh>(bulk_halfedge(*g)); }); };
-        auto one_by_one = [g] { return build_seconds([&] { return std::make_unique<hmira::halfedge_mesh>(built<hmira::halfedge_mesh>(*g)); }); };
+        auto bulk = [g] {
+            return build_seconds([&] { return std::make_unique<hmira::halfedge_mesh>(bulk_halfedge(*g)); });
+        };
+        auto one_by_one = [g] {
+            return build_seconds(
+                [&] { return std::make_unique<hmira::halfedge_mesh>(built<hmira::halfedge_mesh>(*g)); });
+        };
         auto he_ring = [he] { return seconds([&] { sink = one_ring_sum(*he).x; }); };
         auto one_by_one_before = [g] {
             return build_seconds([&] {
@@ -592,7 +648,8 @@ void run_pairs(int rounds, const std::string& workload_filter, const std::string
         };
         auto he_flip = [he] { return seconds([&] { sink = double(hmira::flip_normals(*he)); }); };
         auto he_flip_before = [he] {
-            return seconds([&] { sink = double(hmira::flip_normals<hmira::halfedge_mesh, halfedge_traits_before>(*he)); });
+            return seconds(
+                [&] { sink = double(hmira::flip_normals<hmira::halfedge_mesh, halfedge_traits_before>(*he)); });
         };
         (void)one_by_one_before;  // the peers' sections use these when their libraries are found
         (void)he_flip;
@@ -614,16 +671,20 @@ void run_pairs(int rounds, const std::string& workload_filter, const std::string
             });
         };
         auto om_native_ring = [om] { return seconds([&] { sink = om_one_ring_native(*om).x; }); };
-        pairs.push_back({"build", mesh, "OpenMesh add_face", "halfedge_mesh::from_polygons", om_native_build, bulk, 0.5});
-        pairs.push_back({"build", mesh, "OpenMesh add_face", "halfedge_mesh add_face (one at a time)", om_native_build, one_by_one, 0.5});
-        pairs.push_back({"build", mesh, "OpenMesh add_face", "halfedge_mesh add_face, before (no reserve)", om_native_build, one_by_one_before, 0});
-        pairs.push_back({"build", mesh, "OpenMesh add_face", "OpenMesh via hmira traits", om_native_build, om_traits_build, 1.05});
+        pairs.push_back(
+            {"build", mesh, "OpenMesh add_face", "halfedge_mesh::from_polygons", om_native_build, bulk, 0.5});
+        pairs.push_back({"build", mesh, "OpenMesh add_face", "halfedge_mesh add_face (one at a time)", om_native_build,
+                         one_by_one, 0.5});
+        pairs.push_back({"build", mesh, "OpenMesh add_face", "halfedge_mesh add_face, before (no reserve)",
+                         om_native_build, one_by_one_before, 0});
+        pairs.push_back(
+            {"build", mesh, "OpenMesh add_face", "OpenMesh via hmira traits", om_native_build, om_traits_build, 1.05});
         pairs.push_back({"one_ring", mesh, "OpenMesh vv_range", "OpenMesh via hmira traits", om_native_ring,
                          [om] { return seconds([&] { sink = one_ring_sum(*om).x; }); }, 1.05});
         pairs.push_back({"one_ring", mesh, "OpenMesh vv_range", "halfedge_mesh", om_native_ring, he_ring, 1.0});
         auto he_float = std::make_shared<hmira::basic_halfedge_mesh<float>>(bulk_halfedge_float(*g));
-        pairs.push_back({"one_ring", mesh, "OpenMesh vv_range", "halfedge_mesh<float> (OM-sized points)", om_native_ring,
-                         [he_float] { return seconds([&] { sink = one_ring_sum(*he_float).x; }); }, 0});
+        pairs.push_back({"one_ring", mesh, "OpenMesh vv_range", "halfedge_mesh<float> (OM-sized points)",
+                         om_native_ring, [he_float] { return seconds([&] { sink = one_ring_sum(*he_float).x; }); }, 0});
         pairs.push_back({"flip", mesh, "OpenMesh native loop", "hmira::flip_normals on OpenMesh",
                          [om] { return seconds([&] { om_flip_native(*om); }); },
                          [om] { return seconds([&] { sink = double(hmira::flip_normals(*om)); }); }, 1.05});
@@ -660,29 +721,42 @@ void run_pairs(int rounds, const std::string& workload_filter, const std::string
             });
         };
         auto cgal_native_ring = [cg] { return seconds([&] { sink = cgal_one_ring_native(*cg).x; }); };
-        pairs.push_back({"build", mesh, "CGAL polygon_soup_to_polygon_mesh", "halfedge_mesh::from_polygons", cgal_soup_build, bulk, 0.5});
-        pairs.push_back({"build", mesh, "CGAL soup, checked is_polygon_soup_a_polygon_mesh", "halfedge_mesh::from_polygons", cgal_soup_checked, bulk, 0});
-        pairs.push_back({"build", mesh, "CGAL polygon_soup_to_polygon_mesh", "halfedge_mesh add_face (one at a time)", cgal_soup_build, one_by_one, 0.5});
-        pairs.push_back({"build", mesh, "CGAL add_face", "halfedge_mesh add_face (one at a time)", cgal_native_add, one_by_one, 0.5});
-        pairs.push_back({"build", mesh, "CGAL add_face", "halfedge_mesh add_face, before (no reserve)", cgal_native_add, one_by_one_before, 0});
-        pairs.push_back({"build", mesh, "CGAL add_face", "CGAL via hmira traits", cgal_native_add, cgal_traits_add, 1.05});
+        pairs.push_back({"build", mesh, "CGAL polygon_soup_to_polygon_mesh", "halfedge_mesh::from_polygons",
+                         cgal_soup_build, bulk, 0.5});
+        pairs.push_back({"build", mesh, "CGAL soup, checked is_polygon_soup_a_polygon_mesh",
+                         "halfedge_mesh::from_polygons", cgal_soup_checked, bulk, 0});
+        pairs.push_back({"build", mesh, "CGAL polygon_soup_to_polygon_mesh", "halfedge_mesh add_face (one at a time)",
+                         cgal_soup_build, one_by_one, 0.5});
+        pairs.push_back({"build", mesh, "CGAL add_face", "halfedge_mesh add_face (one at a time)", cgal_native_add,
+                         one_by_one, 0.5});
+        pairs.push_back({"build", mesh, "CGAL add_face", "halfedge_mesh add_face, before (no reserve)", cgal_native_add,
+                         one_by_one_before, 0});
+        pairs.push_back(
+            {"build", mesh, "CGAL add_face", "CGAL via hmira traits", cgal_native_add, cgal_traits_add, 1.05});
         pairs.push_back({"one_ring", mesh, "CGAL vertices_around_target", "CGAL via hmira traits", cgal_native_ring,
                          [cg] { return seconds([&] { sink = one_ring_sum(*cg).x; }); }, 1.05});
-        pairs.push_back({"one_ring", mesh, "CGAL vertices_around_target", "halfedge_mesh", cgal_native_ring, he_ring, 1.0});
+        pairs.push_back(
+            {"one_ring", mesh, "CGAL vertices_around_target", "halfedge_mesh", cgal_native_ring, he_ring, 1.0});
         pairs.push_back({"flip", mesh, "CGAL native loop", "hmira::flip_normals on CGAL",
                          [cg] { return seconds([&] { cgal_flip_native(*cg); }); },
                          [cg] { return seconds([&] { sink = double(hmira::flip_normals(*cg)); }); }, 1.05});
-        pairs.push_back({"flip", mesh, "CGAL PMP::reverse_face_orientations", "hmira::flip_normals on CGAL",
-                         [cg] { return seconds([&] { CGAL::Polygon_mesh_processing::reverse_face_orientations(*cg); }); },
-                         [cg] { return seconds([&] { sink = double(hmira::flip_normals(*cg)); }); }, 1.0});
-        pairs.push_back({"flip", mesh, "CGAL PMP::reverse_face_orientations", "halfedge_mesh flip_normals (one pass)",
-                         [cg] { return seconds([&] { CGAL::Polygon_mesh_processing::reverse_face_orientations(*cg); }); }, he_flip, 1.0});
-        pairs.push_back({"flip", mesh, "CGAL PMP::reverse_face_orientations", "halfedge_mesh flip_normals, before (generic)",
-                         [cg] { return seconds([&] { CGAL::Polygon_mesh_processing::reverse_face_orientations(*cg); }); }, he_flip_before, 0});
+        pairs.push_back(
+            {"flip", mesh, "CGAL PMP::reverse_face_orientations", "hmira::flip_normals on CGAL",
+             [cg] { return seconds([&] { CGAL::Polygon_mesh_processing::reverse_face_orientations(*cg); }); },
+             [cg] { return seconds([&] { sink = double(hmira::flip_normals(*cg)); }); }, 1.0});
+        pairs.push_back(
+            {"flip", mesh, "CGAL PMP::reverse_face_orientations", "halfedge_mesh flip_normals (one pass)",
+             [cg] { return seconds([&] { CGAL::Polygon_mesh_processing::reverse_face_orientations(*cg); }); }, he_flip,
+             1.0});
+        pairs.push_back(
+            {"flip", mesh, "CGAL PMP::reverse_face_orientations", "halfedge_mesh flip_normals, before (generic)",
+             [cg] { return seconds([&] { CGAL::Polygon_mesh_processing::reverse_face_orientations(*cg); }); },
+             he_flip_before, 0});
 #endif
         for (std::size_t i = first; i < pairs.size(); ++i) pairs[i].repeat = reps;
     }
-    std::printf("%-9s %-22s %-50s %-40s %12s %12s %8s %7s\n", "workload", "mesh", "peer", "hmira", "peer CPU ms", "hmira CPU ms", "ratio", "target");
+    std::printf("%-9s %-22s %-50s %-40s %12s %12s %8s %7s\n", "workload", "mesh", "peer", "hmira", "peer CPU ms",
+                "hmira CPU ms", "ratio", "target");
     for (auto& p : pairs) {
         if (!workload_filter.empty() && p.workload != workload_filter) continue;
         if (!mesh_filter.empty() && p.mesh.find(mesh_filter) == std::string::npos) continue;
@@ -710,8 +784,8 @@ void run_pairs(int rounds, const std::string& workload_filter, const std::string
         const double mr = median(ratio);
         char target[16] = "-";
         if (p.target > 0) std::snprintf(target, sizeof target, "%s%.2f", mr <= p.target ? "ok<=" : "NO>", p.target);
-        std::printf("%-9s %-22s %-50s %-40s %12.2f %12.2f %8.3f %7s\n", p.workload.c_str(), p.mesh.c_str(), p.peer.c_str(), p.hmira.c_str(),
-                    1e3 * median(tp), 1e3 * median(th), mr, target);
+        std::printf("%-9s %-22s %-50s %-40s %12.2f %12.2f %8.3f %7s\n", p.workload.c_str(), p.mesh.c_str(),
+                    p.peer.c_str(), p.hmira.c_str(), 1e3 * median(tp), 1e3 * median(th), mr, target);
         std::fflush(stdout);
     }
 }

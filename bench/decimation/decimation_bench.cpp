@@ -48,7 +48,8 @@ M convert(const F& from) {
     std::vector<typename TM::vertex_handle> vs(TF::vertex_index_bound(from));
     for (auto v : TF::vertices(from)) {
         const auto p = TF::position(from, v);
-        vs[TF::vertex_index(from, v)] = TM::add_vertex(m, {typename TM::scalar(p[0]), typename TM::scalar(p[1]), typename TM::scalar(p[2])});
+        vs[TF::vertex_index(from, v)] =
+            TM::add_vertex(m, {typename TM::scalar(p[0]), typename TM::scalar(p[1]), typename TM::scalar(p[2])});
     }
     std::vector<typename TM::vertex_handle> c;
     for (auto f : TF::faces(from)) {
@@ -88,13 +89,15 @@ outcome measure(const std::string& name, const M& base, int reps, const std::fil
         s.push_back(std::chrono::duration<double>(clock_type::now() - t0).count());
         if (i == 0 && !out.empty()) {
             if constexpr (requires { hmira::io::write_mesh(m, out / (name + ".off")); }) {
-                if (!hmira::io::write_mesh(m, out / (name + ".off"))) std::fprintf(stderr, "cannot write %s.off\n", name.c_str());
+                if (!hmira::io::write_mesh(m, out / (name + ".off")))
+                    std::fprintf(stderr, "cannot write %s.off\n", name.c_str());
             }
         }
     }
     std::sort(s.begin(), s.end());
     std::sort(cpu.begin(), cpu.end());
-    std::printf("%-28s %8.3f s wall %8.3f s cpu  %8zu faces\n", name.c_str(), s[s.size() / 2], cpu[cpu.size() / 2], faces);
+    std::printf("%-28s %8.3f s wall %8.3f s cpu  %8zu faces\n", name.c_str(), s[s.size() / 2], cpu[cpu.size() / 2],
+                faces);
     std::fflush(stdout);
     return {s[s.size() / 2], cpu[cpu.size() / 2], faces};
 }
@@ -108,10 +111,14 @@ int main(int argc, char** argv) {
     if (const char* d = std::getenv("HMIRA_TEST_DATA")) bunny = std::filesystem::path(d) / "meshes" / "bunny00.off";
     for (int i = 1; i + 1 < argc; i += 2) {
         const std::string a = argv[i];
-        if (a == "--bunny") bunny = argv[i + 1];
-        else if (a == "--out") out = argv[i + 1];
-        else if (a == "--reps") reps = std::max(1, std::atoi(argv[i + 1]));
-        else if (a == "--ratio") ratio = std::atof(argv[i + 1]);
+        if (a == "--bunny")
+            bunny = argv[i + 1];
+        else if (a == "--out")
+            out = argv[i + 1];
+        else if (a == "--reps")
+            reps = std::max(1, std::atoi(argv[i + 1]));
+        else if (a == "--ratio")
+            ratio = std::atof(argv[i + 1]);
         else {
             std::fprintf(stderr, "unknown option %s\n", a.c_str());
             return 2;
@@ -167,7 +174,8 @@ int main(int argc, char** argv) {
         namespace SMS = CGAL::Surface_mesh_simplification;
         SMS::GarlandHeckbert_plane_policies<sm, CGAL::Simple_cartesian<double>> policies(m);
         auto stop = [&](const auto&, const auto&, std::size_t, std::size_t) { return m.number_of_faces() <= target; };
-        SMS::edge_collapse(m, stop, CGAL::parameters::get_cost(policies.get_cost()).get_placement(policies.get_placement()));
+        SMS::edge_collapse(m, stop,
+                           CGAL::parameters::get_cost(policies.get_cost()).get_placement(policies.get_placement()));
         return std::size_t(m.number_of_faces());
     });
 #endif
@@ -176,10 +184,12 @@ int main(int argc, char** argv) {
     std::printf("\nratios of medians, one run (wall, cpu):\n");
     for (const auto& [name, o] : results)
         if (name.rfind("hmira/", 0) != 0)
-            std::printf("  hmira halfedge_mesh / %-24s %.3f  %.3f\n", name.c_str(), h.seconds / o.seconds, h.cpu_seconds / o.cpu_seconds);
+            std::printf("  hmira halfedge_mesh / %-24s %.3f  %.3f\n", name.c_str(), h.seconds / o.seconds,
+                        h.cpu_seconds / o.cpu_seconds);
     for (const auto& [name, o] : results)
         if (name.rfind("hmira/", 0) == 0 && name != "hmira/halfedge_mesh")
-            std::printf("  %-24s / hmira halfedge_mesh %.3f  %.3f\n", name.c_str(), o.seconds / h.seconds, o.cpu_seconds / h.cpu_seconds);
+            std::printf("  %-24s / hmira halfedge_mesh %.3f  %.3f\n", name.c_str(), o.seconds / h.seconds,
+                        o.cpu_seconds / h.cpu_seconds);
     std::printf("hmira_halfedge_seconds %.6f %.6f\n", h.seconds, h.cpu_seconds);
     return 0;
 }

@@ -26,7 +26,9 @@ struct fixture {
     M mesh;
     hmira::generated_elements<M> g;
     std::size_t next = 0;
-    fixture() { g = hmira::generate_torus(mesh, {.major_radius = 4, .minor_radius = 1, .rings = n, .sides = n}).value(); }
+    fixture() {
+        g = hmira::generate_torus(mesh, {.major_radius = 4, .minor_radius = 1, .rings = n, .sides = n}).value();
+    }
     // The k-th untouched spot: ring 3a, side 3b.
     std::size_t spot() {
         const std::size_t per = n / 3;

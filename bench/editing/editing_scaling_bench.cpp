@@ -92,10 +92,12 @@ bool extrude_half_region(M& m) {
 
 using hmira_bench::median;
 
-/// The median CPU time of `repeats` calls after one untimed warm-up call (each call's CPU time in `all`, the median wall time
+/// The median CPU time of `repeats` calls after one untimed warm-up call (each call's CPU time in `all`, the median
+/// wall time
 /// in `wall`).
 template <class Edit>
-double median_seconds(const M& m, Edit edit, int repeats, std::vector<double>& all, double& wall, long* faults = nullptr) {
+double median_seconds(const M& m, Edit edit, int repeats, std::vector<double>& all, double& wall,
+                      long* faults = nullptr) {
     all.clear();
     (void)seconds(m, edit);  // warm-up: the heap grows to this size once, untimed
     std::vector<double> walls;
@@ -156,14 +158,16 @@ int main(int argc, char** argv) {
             const double t = median_seconds(m, e.run, repeats, runs, wall, &faults);
             by_faces.push_back({double(T::face_count(m)), t});
             by_elements.push_back({k, t});
-            std::printf("%-34s faces %8.0f elements %8.0f  median cpu %7.3f s %7.1f ns/element (runs %s), wall %7.3f s, "
-                        "%.2f page faults/element\n",
-                        e.name, double(T::face_count(m)), k, t, t / k * 1e9, list(runs).c_str(), wall, double(faults) / k);
+            std::printf(
+                "%-34s faces %8.0f elements %8.0f  median cpu %7.3f s %7.1f ns/element (runs %s), wall %7.3f s, "
+                "%.2f page faults/element\n",
+                e.name, double(T::face_count(m)), k, t, t / k * 1e9, list(runs).c_str(), wall, double(faults) / k);
         }
         // Each doc block claims time linear in the elements edited (O(sum of degrees) = O(E)).
         const double k = hmira_bench::fitted_exponent(by_faces);
         std::printf("%-36s fitted exponent %.3f, time per element varies %.2fx  %s (documented linear)\n\n", e.name, k,
-                    hmira_bench::per_element_spread(by_elements), hmira_bench::verdict(k, {.text = "linear", .exponent = 1}));
+                    hmira_bench::per_element_spread(by_elements),
+                    hmira_bench::verdict(k, {.text = "linear", .exponent = 1}));
     }
     // The comparison: a 128^3 gyroid (~450k edges), bevel every edge vs truncate every vertex.
     if (std::string("gyroid").find(only) == std::string::npos) return 0;
@@ -174,17 +178,20 @@ int main(int argc, char** argv) {
     double bevel_wall = 0, truncate_wall = 0;
     const double tb = median_seconds(g, bevel_all, repeats, bevel_runs, bevel_wall);
     const double tt = median_seconds(g, truncate_all, repeats, truncate_runs, truncate_wall);
-    std::printf("gyroid 128^3: %zu V, %zu E, %zu F; median cpu: bevel all edges %.3f s (runs %s), truncate all vertices "
-                "%.3f s (runs %s), ratio %.2f (wall %.3f / %.3f s, ratio %.2f)\n",
-                T::vertex_count(g), T::edge_count(g), T::face_count(g), tb, list(bevel_runs).c_str(), tt,
-                list(truncate_runs).c_str(), tb / tt, bevel_wall, truncate_wall, bevel_wall / truncate_wall);
+    std::printf(
+        "gyroid 128^3: %zu V, %zu E, %zu F; median cpu: bevel all edges %.3f s (runs %s), truncate all vertices "
+        "%.3f s (runs %s), ratio %.2f (wall %.3f / %.3f s, ratio %.2f)\n",
+        T::vertex_count(g), T::edge_count(g), T::face_count(g), tb, list(bevel_runs).c_str(), tt,
+        list(truncate_runs).c_str(), tb / tt, bevel_wall, truncate_wall, bevel_wall / truncate_wall);
     // Boundary edges bevel too (the gyroid is cut open by the box): every edge of the mesh.
     std::size_t boundary = 0;
     for (auto e : T::edges(g)) boundary += g.is_boundary(e) ? 1 : 0;
     std::vector<double> every_runs;
     double every_wall = 0;
     const double te = median_seconds(g, bevel_every, repeats, every_runs, every_wall);
-    std::printf("gyroid 128^3: bevel every edge (%zu on the boundary) %.3f s cpu (runs %s), ratio to truncate %.2f (wall %.3f s)\n",
-                boundary, te, list(every_runs).c_str(), te / tt, every_wall);
+    std::printf(
+        "gyroid 128^3: bevel every edge (%zu on the boundary) %.3f s cpu (runs %s), ratio to truncate %.2f (wall %.3f "
+        "s)\n",
+        boundary, te, list(every_runs).c_str(), te / tt, every_wall);
     return 0;
 }

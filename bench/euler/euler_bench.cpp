@@ -42,7 +42,7 @@
 
 namespace {
 
-constexpr std::size_t grid_n = 1000;   // grid_n^2 quads
+constexpr std::size_t grid_n = 1000;    // grid_n^2 quads
 constexpr std::size_t pairs = 1000000;  // operator pairs per run
 
 /// Builds the grid through the traits (any mesh_builder).
@@ -57,7 +57,8 @@ void build_grid(M& m) {
     for (std::size_t j = 0; j < grid_n; ++j)
         for (std::size_t i = 0; i < grid_n; ++i) {
             const typename T::vertex_handle q[4] = {id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)};
-            if (!T::add_face(m, std::span<const typename T::vertex_handle>(q, 4))) throw std::runtime_error("grid face refused");
+            if (!T::add_face(m, std::span<const typename T::vertex_handle>(q, 4)))
+                throw std::runtime_error("grid face refused");
         }
 }
 
@@ -85,7 +86,8 @@ template <class M>
 void report(benchmark::State& state, long faults) {
     state.counters["pairs"] = static_cast<double>(pairs);
     state.counters["faults"] = static_cast<double>(faults);
-    state.counters["ns_per_pair"] = benchmark::Counter(static_cast<double>(pairs), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+    state.counters["ns_per_pair"] = benchmark::Counter(
+        static_cast<double>(pairs), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 
 // ----- hmira's generic operators, on any model ------------------------------------------------
@@ -97,7 +99,8 @@ void report(benchmark::State& state, long faults) {
 template <class M>
 void reserve_for_pairs(M& m) {
     if constexpr (std::is_same_v<M, hmira::halfedge_mesh>)
-        if (!m.slot_reuse()) m.reserve(m.vertex_index_bound() + pairs, m.edge_index_bound() + pairs, m.face_index_bound() + pairs);
+        if (!m.slot_reuse())
+            m.reserve(m.vertex_index_bound() + pairs, m.edge_index_bound() + pairs, m.face_index_bound() + pairs);
 }
 template <class M>
 void set_reuse([[maybe_unused]] M& m, [[maybe_unused]] bool reuse) {
@@ -177,12 +180,30 @@ void hmira_warm(benchmark::State& state) {
     report<M>(state, minor_faults() - faults_before);
 }
 
-BENCHMARK(hmira_warm<hmira::halfedge_mesh, true>)->Name("make_kill_edge_face/hmira_halfedge_mesh_warm")->Iterations(1)->Unit(benchmark::kMillisecond);
-BENCHMARK(hmira_warm<hmira::halfedge_mesh, false>)->Name("make_kill_edge_vertex/hmira_halfedge_mesh_warm")->Iterations(1)->Unit(benchmark::kMillisecond);
-BENCHMARK(hmira_make_kill_edge_face<hmira::halfedge_mesh>)->Name("make_kill_edge_face/hmira_halfedge_mesh")->Iterations(1)->Unit(benchmark::kMillisecond);
-BENCHMARK(hmira_make_kill_edge_vertex<hmira::halfedge_mesh>)->Name("make_kill_edge_vertex/hmira_halfedge_mesh")->Iterations(1)->Unit(benchmark::kMillisecond);
-BENCHMARK(hmira_make_kill_edge_face<hmira::halfedge_mesh, false>)->Name("make_kill_edge_face/hmira_halfedge_mesh_no_reuse")->Iterations(1)->Unit(benchmark::kMillisecond);
-BENCHMARK(hmira_make_kill_edge_vertex<hmira::halfedge_mesh, false>)->Name("make_kill_edge_vertex/hmira_halfedge_mesh_no_reuse")->Iterations(1)->Unit(benchmark::kMillisecond);
+BENCHMARK(hmira_warm<hmira::halfedge_mesh, true>)
+    ->Name("make_kill_edge_face/hmira_halfedge_mesh_warm")
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(hmira_warm<hmira::halfedge_mesh, false>)
+    ->Name("make_kill_edge_vertex/hmira_halfedge_mesh_warm")
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(hmira_make_kill_edge_face<hmira::halfedge_mesh>)
+    ->Name("make_kill_edge_face/hmira_halfedge_mesh")
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(hmira_make_kill_edge_vertex<hmira::halfedge_mesh>)
+    ->Name("make_kill_edge_vertex/hmira_halfedge_mesh")
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(hmira_make_kill_edge_face<hmira::halfedge_mesh, false>)
+    ->Name("make_kill_edge_face/hmira_halfedge_mesh_no_reuse")
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(hmira_make_kill_edge_vertex<hmira::halfedge_mesh, false>)
+    ->Name("make_kill_edge_vertex/hmira_halfedge_mesh_no_reuse")
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
 
 // ----- passes: one operator over every face of a fresh grid, then its inverse, then again ------
 
@@ -201,7 +222,9 @@ void timed_passes(benchmark::State& state, pass which, Make make, Kill kill) {
     // Minor page faults of the timed pass: a cold pass pays the first touch of whatever memory
     // the build left unmapped (hmira's free-slot lists and deleted flags), about 2.5 us a page.
     long faults = 0;
-    const auto count = [&](pass p, long before) { if (p == which) faults += minor_faults() - before; };
+    const auto count = [&](pass p, long before) {
+        if (p == which) faults += minor_faults() - before;
+    };
     for (auto _ : state) {  // the timer runs at the start and the end of each iteration
         if (which != pass::make) state.PauseTiming();
         long before = minor_faults();
@@ -235,9 +258,18 @@ void hmira_edge_face_passes(benchmark::State& state, pass which) {
         [&](auto h) { benchmark::DoNotOptimize(hmira::kill_edge_face(m, h)); });
 }
 
-BENCHMARK_CAPTURE(hmira_edge_face_passes, make, pass::make)->Name("make_edge_face_pass/hmira_halfedge_mesh")->Iterations(1)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(hmira_edge_face_passes, kill, pass::kill)->Name("kill_edge_face_pass/hmira_halfedge_mesh")->Iterations(1)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(hmira_edge_face_passes, remake, pass::remake)->Name("make_edge_face_repass/hmira_halfedge_mesh")->Iterations(1)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(hmira_edge_face_passes, make, pass::make)
+    ->Name("make_edge_face_pass/hmira_halfedge_mesh")
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(hmira_edge_face_passes, kill, pass::kill)
+    ->Name("kill_edge_face_pass/hmira_halfedge_mesh")
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(hmira_edge_face_passes, remake, pass::remake)
+    ->Name("make_edge_face_repass/hmira_halfedge_mesh")
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
 
 #ifdef HMIRA_BENCH_WITH_CGAL
 using cgal_mesh = CGAL::Surface_mesh<CGAL::Simple_cartesian<double>::Point_3>;
@@ -281,14 +313,32 @@ void cgal_edge_face_passes(benchmark::State& state, pass which) {
         [&](auto h) { benchmark::DoNotOptimize(CGAL::Euler::join_face(h, m)); });
 }
 
-BENCHMARK_CAPTURE(cgal_edge_face_passes, make, pass::make)->Name("make_edge_face_pass/cgal_native")->Iterations(1)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(cgal_edge_face_passes, kill, pass::kill)->Name("kill_edge_face_pass/cgal_native")->Iterations(1)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(cgal_edge_face_passes, remake, pass::remake)->Name("make_edge_face_repass/cgal_native")->Iterations(1)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(cgal_edge_face_passes, make, pass::make)
+    ->Name("make_edge_face_pass/cgal_native")
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(cgal_edge_face_passes, kill, pass::kill)
+    ->Name("kill_edge_face_pass/cgal_native")
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(cgal_edge_face_passes, remake, pass::remake)
+    ->Name("make_edge_face_repass/cgal_native")
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
 
 BENCHMARK(cgal_split_join_face)->Name("make_kill_edge_face/cgal_native")->Iterations(1)->Unit(benchmark::kMillisecond);
-BENCHMARK(hmira_make_kill_edge_face<cgal_mesh>)->Name("make_kill_edge_face/hmira_on_cgal")->Iterations(1)->Unit(benchmark::kMillisecond);
-BENCHMARK(cgal_split_edge_join_vertex)->Name("make_kill_edge_vertex/cgal_native")->Iterations(1)->Unit(benchmark::kMillisecond);
-BENCHMARK(hmira_make_kill_edge_vertex<cgal_mesh>)->Name("make_kill_edge_vertex/hmira_on_cgal")->Iterations(1)->Unit(benchmark::kMillisecond);
+BENCHMARK(hmira_make_kill_edge_face<cgal_mesh>)
+    ->Name("make_kill_edge_face/hmira_on_cgal")
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(cgal_split_edge_join_vertex)
+    ->Name("make_kill_edge_vertex/cgal_native")
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(hmira_make_kill_edge_vertex<cgal_mesh>)
+    ->Name("make_kill_edge_vertex/hmira_on_cgal")
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
 #endif
 
 #ifdef HMIRA_BENCH_WITH_OPENMESH
@@ -343,18 +393,40 @@ void openmesh_edge_face_passes(benchmark::State& state, pass which) {
     prepare_status(m);
     const auto corners = split_corners(m);
     timed_passes(
-        state, which, [&](std::size_t i) { return m.insert_edge(corners[i].first, m.next_halfedge_handle(corners[i].second)); },
+        state, which,
+        [&](std::size_t i) { return m.insert_edge(corners[i].first, m.next_halfedge_handle(corners[i].second)); },
         [&](auto h) { m.remove_edge(m.edge_handle(h)); });
 }
 
-BENCHMARK_CAPTURE(openmesh_edge_face_passes, make, pass::make)->Name("make_edge_face_pass/openmesh_native")->Iterations(1)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(openmesh_edge_face_passes, kill, pass::kill)->Name("kill_edge_face_pass/openmesh_native")->Iterations(1)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(openmesh_edge_face_passes, remake, pass::remake)->Name("make_edge_face_repass/openmesh_native")->Iterations(1)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(openmesh_edge_face_passes, make, pass::make)
+    ->Name("make_edge_face_pass/openmesh_native")
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(openmesh_edge_face_passes, kill, pass::kill)
+    ->Name("kill_edge_face_pass/openmesh_native")
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(openmesh_edge_face_passes, remake, pass::remake)
+    ->Name("make_edge_face_repass/openmesh_native")
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
 
-BENCHMARK(openmesh_insert_remove_edge)->Name("make_kill_edge_face/openmesh_native")->Iterations(1)->Unit(benchmark::kMillisecond);
-BENCHMARK(hmira_make_kill_edge_face<om_mesh>)->Name("make_kill_edge_face/hmira_on_openmesh")->Iterations(1)->Unit(benchmark::kMillisecond);
-BENCHMARK(openmesh_split_edge_collapse)->Name("make_kill_edge_vertex/openmesh_native")->Iterations(1)->Unit(benchmark::kMillisecond);
-BENCHMARK(hmira_make_kill_edge_vertex<om_mesh>)->Name("make_kill_edge_vertex/hmira_on_openmesh")->Iterations(1)->Unit(benchmark::kMillisecond);
+BENCHMARK(openmesh_insert_remove_edge)
+    ->Name("make_kill_edge_face/openmesh_native")
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(hmira_make_kill_edge_face<om_mesh>)
+    ->Name("make_kill_edge_face/hmira_on_openmesh")
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(openmesh_split_edge_collapse)
+    ->Name("make_kill_edge_vertex/openmesh_native")
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(hmira_make_kill_edge_vertex<om_mesh>)
+    ->Name("make_kill_edge_vertex/hmira_on_openmesh")
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
 #endif
 
 }  // namespace

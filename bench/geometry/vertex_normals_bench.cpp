@@ -38,8 +38,10 @@ torus_data torus(std::size_t n) {
     const double R = 2.0, r = 0.7;
     for (std::size_t i = 0; i < n; ++i)
         for (std::size_t j = 0; j < n; ++j) {
-            const double u = 2 * std::numbers::pi * double(i) / double(n), v = 2 * std::numbers::pi * double(j) / double(n);
-            t.points.push_back({(R + r * std::cos(v)) * std::cos(u), (R + r * std::cos(v)) * std::sin(u), r * std::sin(v)});
+            const double u = 2 * std::numbers::pi * double(i) / double(n),
+                         v = 2 * std::numbers::pi * double(j) / double(n);
+            t.points.push_back(
+                {(R + r * std::cos(v)) * std::cos(u), (R + r * std::cos(v)) * std::sin(u), r * std::sin(v)});
         }
     auto id = [&](std::size_t i, std::size_t j) { return (i % n) * n + (j % n); };
     for (std::size_t i = 0; i < n; ++i)
@@ -58,7 +60,8 @@ M build(const torus_data& d) {
     for (const auto& p : d.points) vs.push_back(T::add_vertex(m, hmira::vec3<S>{S(p.x), S(p.y), S(p.z)}));
     for (const auto& t : d.triangles) {
         const std::array<typename T::vertex_handle, 3> c{vs[t[0]], vs[t[1]], vs[t[2]]};
-        if (!T::add_face(m, std::span<const typename T::vertex_handle>(c))) throw std::runtime_error("torus face refused");
+        if (!T::add_face(m, std::span<const typename T::vertex_handle>(c)))
+            throw std::runtime_error("torus face refused");
     }
     return m;
 }
@@ -75,14 +78,21 @@ void hmira_normals(benchmark::State& state, hmira::normal_weighting w) {
 
 void sizes(benchmark::internal::Benchmark* b) { b->Arg(128)->Arg(512)->Unit(benchmark::kMillisecond); }
 
-[[maybe_unused]] const auto* const reg_1 = benchmark::RegisterBenchmark("hmira/face_vertex_mesh/angle", hmira_normals<hmira::face_vertex_mesh>, hmira::normal_weighting::angle)->Apply(sizes);
-[[maybe_unused]] const auto* const reg_2 = benchmark::RegisterBenchmark("hmira/face_vertex_mesh/area", hmira_normals<hmira::face_vertex_mesh>, hmira::normal_weighting::area)->Apply(sizes);
-[[maybe_unused]] const auto* const reg_3 = benchmark::RegisterBenchmark("hmira/halfedge_mesh/angle", hmira_normals<hmira::halfedge_mesh>, hmira::normal_weighting::angle)->Apply(sizes);
+[[maybe_unused]] const auto* const reg_1 =
+    benchmark::RegisterBenchmark("hmira/face_vertex_mesh/angle", hmira_normals<hmira::face_vertex_mesh>,
+                                 hmira::normal_weighting::angle) -> Apply(sizes);
+[[maybe_unused]] const auto* const reg_2 =
+    benchmark::RegisterBenchmark("hmira/face_vertex_mesh/area", hmira_normals<hmira::face_vertex_mesh>,
+                                 hmira::normal_weighting::area) -> Apply(sizes);
+[[maybe_unused]] const auto* const reg_3 = benchmark::RegisterBenchmark(
+    "hmira/halfedge_mesh/angle", hmira_normals<hmira::halfedge_mesh>, hmira::normal_weighting::angle) -> Apply(sizes);
 
 #ifdef HMIRA_BENCH_WITH_OPENMESH
 using om_mesh = OpenMesh::TriMesh_ArrayKernelT<>;
-[[maybe_unused]] const auto* const reg_4 = benchmark::RegisterBenchmark("hmira/openmesh/angle", hmira_normals<om_mesh>, hmira::normal_weighting::angle)->Apply(sizes);
-[[maybe_unused]] const auto* const reg_5 = benchmark::RegisterBenchmark("hmira/openmesh/area", hmira_normals<om_mesh>, hmira::normal_weighting::area)->Apply(sizes);
+[[maybe_unused]] const auto* const reg_4 = benchmark::RegisterBenchmark("hmira/openmesh/angle", hmira_normals<om_mesh>,
+                                                                        hmira::normal_weighting::angle) -> Apply(sizes);
+[[maybe_unused]] const auto* const reg_5 = benchmark::RegisterBenchmark("hmira/openmesh/area", hmira_normals<om_mesh>,
+                                                                        hmira::normal_weighting::area) -> Apply(sizes);
 
 // OpenMesh's vertex normals average stored face normals, so a fresh computation is
 // update_face_normals() followed by update_vertex_normals() (what update_normals() does).
@@ -98,15 +108,19 @@ void openmesh_native(benchmark::State& state, bool include_face_normals) {
     }
     state.SetItemsProcessed(state.iterations() * static_cast<long long>(mesh.n_faces()));
 }
-[[maybe_unused]] const auto* const reg_6 = benchmark::RegisterBenchmark("openmesh/openmesh/face_and_vertex_normals", openmesh_native, true)->Apply(sizes);
-[[maybe_unused]] const auto* const reg_7 = benchmark::RegisterBenchmark("openmesh/openmesh/vertex_normals_only", openmesh_native, false)->Apply(sizes);
+[[maybe_unused]] const auto* const reg_6 =
+    benchmark::RegisterBenchmark("openmesh/openmesh/face_and_vertex_normals", openmesh_native, true) -> Apply(sizes);
+[[maybe_unused]] const auto* const reg_7 =
+    benchmark::RegisterBenchmark("openmesh/openmesh/vertex_normals_only", openmesh_native, false) -> Apply(sizes);
 #endif
 
 #ifdef HMIRA_BENCH_WITH_CGAL
 using cgal_kernel = CGAL::Simple_cartesian<double>;
 using cgal_mesh = CGAL::Surface_mesh<cgal_kernel::Point_3>;
-[[maybe_unused]] const auto* const reg_8 = benchmark::RegisterBenchmark("hmira/cgal/angle", hmira_normals<cgal_mesh>, hmira::normal_weighting::angle)->Apply(sizes);
-[[maybe_unused]] const auto* const reg_9 = benchmark::RegisterBenchmark("hmira/cgal/area", hmira_normals<cgal_mesh>, hmira::normal_weighting::area)->Apply(sizes);
+[[maybe_unused]] const auto* const reg_8 = benchmark::RegisterBenchmark("hmira/cgal/angle", hmira_normals<cgal_mesh>,
+                                                                        hmira::normal_weighting::angle) -> Apply(sizes);
+[[maybe_unused]] const auto* const reg_9 = benchmark::RegisterBenchmark("hmira/cgal/area", hmira_normals<cgal_mesh>,
+                                                                        hmira::normal_weighting::area) -> Apply(sizes);
 
 void cgal_native(benchmark::State& state) {
     auto mesh = build<cgal_mesh>(torus(static_cast<std::size_t>(state.range(0))));
@@ -117,7 +131,8 @@ void cgal_native(benchmark::State& state) {
     }
     state.SetItemsProcessed(state.iterations() * static_cast<long long>(mesh.number_of_faces()));
 }
-[[maybe_unused]] const auto* const reg_cgal = benchmark::RegisterBenchmark("cgal/cgal/compute_vertex_normals", cgal_native)->Apply(sizes);
+[[maybe_unused]] const auto* const reg_cgal =
+    benchmark::RegisterBenchmark("cgal/cgal/compute_vertex_normals", cgal_native) -> Apply(sizes);
 #endif
 
 }  // namespace

@@ -45,7 +45,8 @@ const soup& holed() {
         soup in, out;
         const char* dir = std::getenv("HMIRA_TEST_DATA");
         hmira::face_vertex_mesh m;
-        if (!hmira::io::read_mesh(m, std::filesystem::path(dir ? dir : "/work/test-data") / "meshes" / "bunny00.off")) return out;
+        if (!hmira::io::read_mesh(m, std::filesystem::path(dir ? dir : "/work/test-data") / "meshes" / "bunny00.off"))
+            return out;
         for (auto v : m.vertices()) in.points.push_back(m.position(v));
         for (auto f : m.faces()) {
             std::vector<std::size_t> face;
@@ -91,7 +92,8 @@ template <class M, class T = hmira::default_traits<M>>
 M build() {
     M m;
     std::vector<typename T::vertex_handle> vs;
-    for (const auto& p : holed().points) vs.push_back(T::add_vertex(m, {typename T::scalar(p.x), typename T::scalar(p.y), typename T::scalar(p.z)}));
+    for (const auto& p : holed().points)
+        vs.push_back(T::add_vertex(m, {typename T::scalar(p.x), typename T::scalar(p.y), typename T::scalar(p.z)}));
     std::vector<typename T::vertex_handle> c;
     for (const auto& f : holed().faces) {
         c.clear();
@@ -206,7 +208,10 @@ void hmira_refine_fair(benchmark::State& state) {
     state.counters["loop_edge"] = loop_edge;
     state.counters["unfaired"] = double(unfaired);
 }
-BENCHMARK(hmira_refine_fair<hmira::halfedge_mesh>)->Name("refine_fair/hmira/halfedge_mesh")->Unit(benchmark::kMillisecond)->Iterations(3);
+BENCHMARK(hmira_refine_fair<hmira::halfedge_mesh>)
+    ->Name("refine_fair/hmira/halfedge_mesh")
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(3);
 
 template <class M, class T = hmira::default_traits<M>>
 void hmira_fill(benchmark::State& state) {
@@ -236,11 +241,17 @@ void hmira_fill(benchmark::State& state) {
     state.counters["holes"] = double(holes);
     state.counters["area"] = area;
 }
-BENCHMARK(hmira_fill<hmira::halfedge_mesh>)->Name("fill_hole/hmira/halfedge_mesh")->Unit(benchmark::kMillisecond)->Iterations(3);
+BENCHMARK(hmira_fill<hmira::halfedge_mesh>)
+    ->Name("fill_hole/hmira/halfedge_mesh")
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(3);
 
 #ifdef HMIRA_BENCH_WITH_CGAL
 using cgal_mesh = CGAL::Surface_mesh<CGAL::Simple_cartesian<double>::Point_3>;
-BENCHMARK(hmira_fill<cgal_mesh>)->Name("fill_hole/hmira/cgal_surface_mesh")->Unit(benchmark::kMillisecond)->Iterations(3);
+BENCHMARK(hmira_fill<cgal_mesh>)
+    ->Name("fill_hole/hmira/cgal_surface_mesh")
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(3);
 void cgal_fill(benchmark::State& state) {
     if (holed().points.empty()) {
         state.SkipWithError("bunny00.off not found (HMIRA_TEST_DATA)");
@@ -265,7 +276,10 @@ void cgal_fill(benchmark::State& state) {
     state.counters["area"] = area;
 }
 BENCHMARK(cgal_fill)->Name("fill_hole/cgal/triangulate_hole")->Unit(benchmark::kMillisecond)->Iterations(3);
-BENCHMARK(hmira_refine_fair<cgal_mesh>)->Name("refine_fair/hmira/cgal_surface_mesh")->Unit(benchmark::kMillisecond)->Iterations(3);
+BENCHMARK(hmira_refine_fair<cgal_mesh>)
+    ->Name("refine_fair/hmira/cgal_surface_mesh")
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(3);
 
 /// Hole by hole, on copies of the same mesh: how many hmira patches are larger than CGAL's.
 void area_per_hole(benchmark::State& state) {
@@ -319,7 +333,8 @@ void cgal_refine_fair(benchmark::State& state) {
         state.ResumeTiming();
         for (auto h : hs) {
             const auto r = CGAL::Polygon_mesh_processing::triangulate_refine_and_fair_hole(
-                m, h, std::back_inserter(added), std::back_inserter(new_vertices), CGAL::parameters::use_delaunay_triangulation(false));
+                m, h, std::back_inserter(added), std::back_inserter(new_vertices),
+                CGAL::parameters::use_delaunay_triangulation(false));
             if (!std::get<0>(r)) ++unfaired;
         }
         state.PauseTiming();
@@ -332,7 +347,10 @@ void cgal_refine_fair(benchmark::State& state) {
     state.counters["loop_edge"] = loop_edge;
     state.counters["unfaired"] = double(unfaired);
 }
-BENCHMARK(cgal_refine_fair)->Name("refine_fair/cgal/triangulate_refine_and_fair_hole")->Unit(benchmark::kMillisecond)->Iterations(3);
+BENCHMARK(cgal_refine_fair)
+    ->Name("refine_fair/cgal/triangulate_refine_and_fair_hole")
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(3);
 #endif
 #endif
 

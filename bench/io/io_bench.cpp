@@ -47,13 +47,16 @@ hmira::face_vertex_mesh big_torus(std::size_t nu, std::size_t nv) {
     vs.reserve(nu * nv);
     for (std::size_t i = 0; i < nu; ++i)
         for (std::size_t j = 0; j < nv; ++j) {
-            const double u = 2 * std::numbers::pi * double(i) / double(nu), v = 2 * std::numbers::pi * double(j) / double(nv);
+            const double u = 2 * std::numbers::pi * double(i) / double(nu),
+                         v = 2 * std::numbers::pi * double(j) / double(nv);
             const double r = 0.7 + 1e-4 * std::sin(37.0 * u + 11.0 * v);
-            vs.push_back(m.add_vertex({(2 + r * std::cos(v)) * std::cos(u), (2 + r * std::cos(v)) * std::sin(u), r * std::sin(v)}));
+            vs.push_back(m.add_vertex(
+                {(2 + r * std::cos(v)) * std::cos(u), (2 + r * std::cos(v)) * std::sin(u), r * std::sin(v)}));
         }
     for (std::size_t i = 0; i < nu; ++i)
         for (std::size_t j = 0; j < nv; ++j) {
-            const auto a = vs[i * nv + j], b = vs[((i + 1) % nu) * nv + j], c = vs[((i + 1) % nu) * nv + (j + 1) % nv], d = vs[i * nv + (j + 1) % nv];
+            const auto a = vs[i * nv + j], b = vs[((i + 1) % nu) * nv + j], c = vs[((i + 1) % nu) * nv + (j + 1) % nv],
+                       d = vs[i * nv + (j + 1) % nv];
             (void)m.add_face({a, b, c});
             (void)m.add_face({a, c, d});
         }
@@ -64,8 +67,10 @@ int generate(const std::filesystem::path& dir) {
     std::filesystem::create_directories(dir);
     const auto m = big_torus(1000, 1000);
     namespace io = hmira::io;
-    const io::write_options float_ply{.ply = io::ply_encoding::binary_little_endian, .ply_coordinates = io::ply_scalar::float32};
-    for (auto [name, opts] : {std::pair{"torus_2M.ply", float_ply}, std::pair{"torus_2M.obj", io::write_options{}}, std::pair{"torus_2M.stl", io::write_options{}}}) {
+    const io::write_options float_ply{.ply = io::ply_encoding::binary_little_endian,
+                                      .ply_coordinates = io::ply_scalar::float32};
+    for (auto [name, opts] : {std::pair{"torus_2M.ply", float_ply}, std::pair{"torus_2M.obj", io::write_options{}},
+                              std::pair{"torus_2M.stl", io::write_options{}}}) {
         auto w = io::write_mesh(m, dir / name, opts);
         if (!w) {
             std::cerr << w.error().message << '\n';
@@ -84,8 +89,10 @@ void label(benchmark::State& s, std::size_t v, std::size_t f) {
 void hmira_soup(benchmark::State& s, std::string path) {
     for (auto _ : s) {
         auto soup = hmira::io::read_soup(path);
-        if (!soup) s.SkipWithError(soup.error().message.c_str());
-        else label(s, soup->points.size(), soup->face_count());
+        if (!soup)
+            s.SkipWithError(soup.error().message.c_str());
+        else
+            label(s, soup->points.size(), soup->face_count());
         benchmark::DoNotOptimize(soup);
     }
 }
@@ -95,8 +102,10 @@ void hmira_mesh(benchmark::State& s, std::string path) {
     for (auto _ : s) {
         M m;
         auto r = hmira::io::read_mesh(m, path);
-        if (!r) s.SkipWithError(r.error().message.c_str());
-        else label(s, m.vertex_count(), m.face_count());
+        if (!r)
+            s.SkipWithError(r.error().message.c_str());
+        else
+            label(s, m.vertex_count(), m.face_count());
         benchmark::DoNotOptimize(m);
     }
 }
@@ -105,8 +114,10 @@ void hmira_mesh(benchmark::State& s, std::string path) {
 void openmesh_mesh(benchmark::State& s, std::string path) {
     for (auto _ : s) {
         OpenMesh::PolyMesh_ArrayKernelT<> m;
-        if (!OpenMesh::IO::read_mesh(m, path)) s.SkipWithError("OpenMesh read_mesh failed");
-        else label(s, m.n_vertices(), m.n_faces());
+        if (!OpenMesh::IO::read_mesh(m, path))
+            s.SkipWithError("OpenMesh read_mesh failed");
+        else
+            label(s, m.n_vertices(), m.n_faces());
         benchmark::DoNotOptimize(m);
     }
 }
@@ -118,16 +129,20 @@ void cgal_soup(benchmark::State& s, std::string path) {
     for (auto _ : s) {
         std::vector<K::Point_3> points;
         std::vector<std::vector<std::size_t>> polygons;
-        if (!CGAL::IO::read_polygon_soup(path, points, polygons)) s.SkipWithError("CGAL read_polygon_soup failed");
-        else label(s, points.size(), polygons.size());
+        if (!CGAL::IO::read_polygon_soup(path, points, polygons))
+            s.SkipWithError("CGAL read_polygon_soup failed");
+        else
+            label(s, points.size(), polygons.size());
         benchmark::DoNotOptimize(points);
     }
 }
 void cgal_mesh(benchmark::State& s, std::string path) {
     for (auto _ : s) {
         CGAL::Surface_mesh<K::Point_3> m;
-        if (!CGAL::IO::read_polygon_mesh(path, m)) s.SkipWithError("CGAL read_polygon_mesh failed");
-        else label(s, m.number_of_vertices(), m.number_of_faces());
+        if (!CGAL::IO::read_polygon_mesh(path, m))
+            s.SkipWithError("CGAL read_polygon_mesh failed");
+        else
+            label(s, m.number_of_vertices(), m.number_of_faces());
         benchmark::DoNotOptimize(m);
     }
 }
@@ -141,7 +156,8 @@ void tinyobj_soup(benchmark::State& s, std::string path) {
     config.vertex_color = false;
     for (auto _ : s) {
         tinyobj::ObjReader reader;
-        if (!reader.ParseFromFile(path, config)) s.SkipWithError(("tinyobjloader: " + reader.Error()).c_str());
+        if (!reader.ParseFromFile(path, config))
+            s.SkipWithError(("tinyobjloader: " + reader.Error()).c_str());
         else {
             std::size_t faces = 0;
             for (const auto& shape : reader.GetShapes()) faces += shape.mesh.num_face_vertices.size();

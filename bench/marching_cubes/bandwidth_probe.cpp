@@ -43,7 +43,9 @@ namespace {
 
 using clock_type = std::chrono::steady_clock;
 
-double seconds_since(clock_type::time_point t0) { return std::chrono::duration<double>(clock_type::now() - t0).count(); }
+double seconds_since(clock_type::time_point t0) {
+    return std::chrono::duration<double>(clock_type::now() - t0).count();
+}
 
 double fastest(const std::vector<double>& v) { return *std::min_element(v.begin(), v.end()); }
 
@@ -137,7 +139,8 @@ std::size_t count_option(const char* name, const char* text, std::size_t lo, std
     const char* end = text + std::strlen(text);
     const auto [p, ec] = std::from_chars(text, end, v);
     if (ec != std::errc{} || p != end || v < lo || v > hi) {
-        std::fprintf(stderr, "bandwidth_probe: %s takes a whole number from %zu to %zu, not '%s'\n", name, lo, hi, text);
+        std::fprintf(stderr, "bandwidth_probe: %s takes a whole number from %zu to %zu, not '%s'\n", name, lo, hi,
+                     text);
         std::exit(2);
     }
     return v;
@@ -156,16 +159,20 @@ int main(int argc, char** argv) {
             return 2;
         }
         // Volumes of n^3 floats and their outputs: 1024^3 is already 4 GiB of input.
-        if (std::strcmp(argv[a], "--reps") == 0) reps = static_cast<int>(count_option("--reps", argv[a + 1], 1, 1000));
-        else n = count_option("--n", argv[a + 1], 8, 1024);
+        if (std::strcmp(argv[a], "--reps") == 0)
+            reps = static_cast<int>(count_option("--reps", argv[a + 1], 1, 1000));
+        else
+            n = count_option("--n", argv[a + 1], 8, 1024);
     }
     const mc_output gyroid = measure_output("gyroid", n), sphere = measure_output("sphere", n);
     const std::size_t read_bytes = n * n * n * sizeof(float);
     const std::size_t write_bytes = gyroid.bytes() / 64 * 64;  // whole 64-bit words per thread half
     std::printf("bandwidth probe: %zu^3 volumes, medians of %d, THP %s, %u hardware threads\n", n, reps,
                 first_line("/sys/kernel/mm/transparent_hugepage/enabled").c_str(), std::thread::hardware_concurrency());
-    std::printf("output gyroid_%zu vertices=%zu triangles=%zu bytes=%zu\n", n, gyroid.vertices, gyroid.triangles, gyroid.bytes());
-    std::printf("output sphere_%zu vertices=%zu triangles=%zu bytes=%zu\n", n, sphere.vertices, sphere.triangles, sphere.bytes());
+    std::printf("output gyroid_%zu vertices=%zu triangles=%zu bytes=%zu\n", n, gyroid.vertices, gyroid.triangles,
+                gyroid.bytes());
+    std::printf("output sphere_%zu vertices=%zu triangles=%zu bytes=%zu\n", n, sphere.vertices, sphere.triangles,
+                sphere.bytes());
     std::printf("input volume bytes=%zu\n\n", read_bytes);
 
     const std::size_t rwords = read_bytes / 8, wwords = write_bytes / 8;
@@ -228,18 +235,20 @@ int main(int argc, char** argv) {
             cached.best[t - 1] = bytes / fastest(r) / 1e9;
         }
     }
-    std::printf("| pattern | MB | 1 thread GB/s | 2 threads GB/s | 2/1 speed-up | 2/1 of the fastest runs |\n|---|---|---|---|---|---|\n");
+    std::printf(
+        "| pattern | MB | 1 thread GB/s | 2 threads GB/s | 2/1 speed-up | 2/1 of the fastest runs "
+        "|\n|---|---|---|---|---|---|\n");
     const auto row = [](const char* name, std::size_t bytes, const pattern_result& p) {
-        std::printf("| %s | %.0f | %.2f | %.2f | %.2f | %.2f |\n", name, double(bytes) / 1e6, p.gbs[0], p.gbs[1], p.gbs[1] / p.gbs[0],
-                    p.best[1] / p.best[0]);
+        std::printf("| %s | %.0f | %.2f | %.2f | %.2f | %.2f |\n", name, double(bytes) / 1e6, p.gbs[0], p.gbs[1],
+                    p.gbs[1] / p.gbs[0], p.best[1] / p.best[0]);
     };
     row("read (touched)", read_bytes, read);
     row("fresh write (first touch)", write_bytes, fresh);
     row("touched write", write_bytes, touched);
     row("fresh write, huge pages", write_bytes, huge);
     row("control: cached read (256 KiB a thread, L2)", 256 * 1024, cached);
-    std::printf("| control: compute, no memory (G steps/s) | 0 | %.2f | %.2f | %.2f | %.2f |\n", compute.gbs[0], compute.gbs[1],
-                compute.gbs[1] / compute.gbs[0], compute.best[1] / compute.best[0]);
+    std::printf("| control: compute, no memory (G steps/s) | 0 | %.2f | %.2f | %.2f | %.2f |\n", compute.gbs[0],
+                compute.gbs[1], compute.gbs[1] / compute.gbs[0], compute.best[1] / compute.best[0]);
     std::printf("munmap of the fresh output (serial): %.1f ms\n", unmap_ms);
     return 0;
 }

@@ -60,14 +60,18 @@ const volume& get(const std::string& name) {
         const std::string shape = name.substr(0, us);
         const std::size_t n = std::stoul(name.substr(us + 1));
         const auto geo = hmira::cube_geometry(n, -1, 1);
-        if (shape == "sphere") v.grid = *hmira::sample_function(geo, hmira::sphere_field{{0, 0, 0}, 0.8});
-        else if (shape == "torus") v.grid = *hmira::sample_function(geo, hmira::torus_field{{0, 0, 0}, 0.6, 0.25});
-        else v.grid = *hmira::sample_function(geo, hmira::gyroid_field{4 * std::numbers::pi});
+        if (shape == "sphere")
+            v.grid = *hmira::sample_function(geo, hmira::sphere_field{{0, 0, 0}, 0.8});
+        else if (shape == "torus")
+            v.grid = *hmira::sample_function(geo, hmira::torus_field{{0, 0, 0}, 0.6, 0.25});
+        else
+            v.grid = *hmira::sample_function(geo, hmira::gyroid_field{4 * std::numbers::pi});
     }
     return cache.emplace(name, std::move(v)).first->second;
 }
 
-const char* volumes[] = {"gyroid_128", "sphere_256", "torus_256", "gyroid_256", "sphere_384", "torus_384", "gyroid_384", "skull"};
+const char* volumes[] = {"gyroid_128", "sphere_256", "torus_256",  "gyroid_256",
+                         "sphere_384", "torus_384",  "gyroid_384", "skull"};
 
 void bm_marching_cubes(benchmark::State& state, std::string name) {
     const auto& v = get(name);

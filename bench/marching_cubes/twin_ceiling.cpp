@@ -37,7 +37,9 @@ namespace {
 
 using clock_type = std::chrono::steady_clock;
 
-double seconds_since(clock_type::time_point t0) { return std::chrono::duration<double>(clock_type::now() - t0).count(); }
+double seconds_since(clock_type::time_point t0) {
+    return std::chrono::duration<double>(clock_type::now() - t0).count();
+}
 
 double median(std::vector<double> v) {
     std::sort(v.begin(), v.end());
@@ -59,7 +61,8 @@ std::pair<std::string, std::size_t> parse_volume(const std::string& name) {
     const auto [p, ec] = std::from_chars(digits, name.c_str() + name.size(), n);
     if (us == std::string::npos || ec != std::errc{} || *p != '\0' || n < 8 || n > 1024 ||
         (shape != "sphere" && shape != "torus" && shape != "gyroid")) {
-        std::fprintf(stderr, "twin_ceiling: unknown volume '%s' (sphere_N, torus_N or gyroid_N, 8 <= N <= 1024)\n", name.c_str());
+        std::fprintf(stderr, "twin_ceiling: unknown volume '%s' (sphere_N, torus_N or gyroid_N, 8 <= N <= 1024)\n",
+                     name.c_str());
         std::exit(2);
     }
     return {shape, n};
@@ -94,14 +97,12 @@ double twins(const F& f) {
     double other = 0;
     std::thread second([&] {
         ready.fetch_add(1);
-        while (!go.load(std::memory_order_acquire)) {
-        }
+        while (!go.load(std::memory_order_acquire)) {}
         const auto t0 = clock_type::now();
         f(1);
         other = seconds_since(t0);
     });
-    while (ready.load() < 1) {
-    }
+    while (ready.load() < 1) {}
     const auto t0 = clock_type::now();
     go.store(true, std::memory_order_release);
     f(0);
@@ -153,9 +154,9 @@ struct row {
 };
 
 void print(const row& r) {
-    std::printf("| %s | %.1f | %.1f | %.1f | %.2f | %.2f | %.2f (%.2f-%.2f) |\n", r.name.c_str(), 1e3 * median(r.solo), 1e3 * median(r.two),
-                1e3 * median(r.pair), median(r.speedup), median(r.ceiling), median(r.share), quantile(r.share, 0.25),
-                quantile(r.share, 0.75));
+    std::printf("| %s | %.1f | %.1f | %.1f | %.2f | %.2f | %.2f (%.2f-%.2f) |\n", r.name.c_str(), 1e3 * median(r.solo),
+                1e3 * median(r.two), 1e3 * median(r.pair), median(r.speedup), median(r.ceiling), median(r.share),
+                quantile(r.share, 0.25), quantile(r.share, 0.75));
 }
 
 }  // namespace
@@ -179,8 +180,9 @@ int main(int argc, char** argv) {
     for (const auto& name : names) static_cast<void>(parse_volume(name));  // refuse a bad name before any work
     std::printf("twin ceiling: %d rounds, %u hardware threads; ratios are medians of per-round ratios\n\n", rounds,
                 std::thread::hardware_concurrency());
-    std::printf("| work | solo ms | 2 threads ms | twins ms | hmira speed-up (solo / 2 threads) | ceiling (2 solo / twins) | "
-                "speed-up / ceiling (quartiles) |\n|---|---|---|---|---|---|---|\n");
+    std::printf(
+        "| work | solo ms | 2 threads ms | twins ms | hmira speed-up (solo / 2 threads) | ceiling (2 solo / twins) | "
+        "speed-up / ceiling (quartiles) |\n|---|---|---|---|---|---|---|\n");
     std::mt19937 order_rng(20);
     for (const auto& name : names) {
         const hmira::dense_grid<float> grid = make_volume(name);
@@ -193,9 +195,12 @@ int main(int argc, char** argv) {
             std::shuffle(order, order + 3, order_rng);
             double solo = 0, two = 0, pair = 0;
             for (const int which : order) {
-                if (which == 0) solo = one_call(grid, 1);
-                else if (which == 1) two = one_call(grid, 2);
-                else pair = twins([&](int t) { static_cast<void>(one_call(t == 0 ? grid : copy, 1)); });
+                if (which == 0)
+                    solo = one_call(grid, 1);
+                else if (which == 1)
+                    two = one_call(grid, 2);
+                else
+                    pair = twins([&](int t) { static_cast<void>(one_call(t == 0 ? grid : copy, 1)); });
             }
             r.add(solo, two, pair);
         }

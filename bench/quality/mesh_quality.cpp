@@ -23,11 +23,14 @@ int main(int argc, char** argv) {
             char* end = nullptr;
             const double x = std::strtod(argv[++i], &end);
             if (*end != '\0' || !(x > 0) || x > 1e12) {
-                std::fprintf(stderr, "mesh_quality: option %s needs a positive number, got '%s'\n", arg.c_str(), argv[i]);
+                std::fprintf(stderr, "mesh_quality: option %s needs a positive number, got '%s'\n", arg.c_str(),
+                             argv[i]);
                 return 2;
             }
-            if (arg == "--target") target = x;
-            else samples = std::size_t(x);
+            if (arg == "--target")
+                target = x;
+            else
+                samples = std::size_t(x);
         } else if (a_path.empty()) {
             a_path = arg;
         } else if (b_path.empty()) {

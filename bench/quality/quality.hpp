@@ -47,10 +47,10 @@ triangle_soup soup_of(const M& mesh) {
 
 /// One direction of the sampled distance: from points on `from` to the surface `to`.
 struct one_sided {
-    double max = 0;            ///< the largest distance met (the one-sided Hausdorff distance)
-    double mean = 0;           ///< the mean distance over the samples
-    double rms = 0;            ///< the root mean square distance
-    std::size_t samples = 0;   ///< how many points were sampled
+    double max = 0;           ///< the largest distance met (the one-sided Hausdorff distance)
+    double mean = 0;          ///< the mean distance over the samples
+    double rms = 0;           ///< the root mean square distance
+    std::size_t samples = 0;  ///< how many points were sampled
 };
 
 /// The sampled Hausdorff distance between two surfaces, both ways.
@@ -68,8 +68,7 @@ inline one_sided sample_distance(const triangle_soup& from, const hmira::aabb_tr
                                  std::size_t min_samples = 1000000, unsigned threads = 0) {
     one_sided out;
     if (from.triangles.empty() || to.empty()) return out;
-    const std::size_t k =
-        std::max(per_triangle, (min_samples + from.triangles.size() - 1) / from.triangles.size());
+    const std::size_t k = std::max(per_triangle, (min_samples + from.triangles.size() - 1) / from.triangles.size());
     if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
     struct partial {
         double max = 0, sum = 0, sum2 = 0;
@@ -161,9 +160,9 @@ inline triangle_quality measure_triangles(const triangle_soup& s) {
 
 /// Edge lengths over the unique edges of the soup.
 struct edge_statistics {
-    std::size_t count = 0;                              ///< number of edges
-    double min = 0, max = 0, mean = 0, stddev = 0;      ///< of the lengths
-    std::vector<double> lengths;                        ///< sorted ascending
+    std::size_t count = 0;                          ///< number of edges
+    double min = 0, max = 0, mean = 0, stddev = 0;  ///< of the lengths
+    std::vector<double> lengths;                    ///< sorted ascending
     /// Fraction of the edges with length in [lo, hi].
     double fraction_within(double lo, double hi) const {
         if (lengths.empty()) return 0;
@@ -229,9 +228,9 @@ inline std::string describe(const char* label, const triangle_soup& s, double ta
         out += line;
     }
     out += "\n  aspect ratio: median ";
-    std::snprintf(line, sizeof line, "%.3f  p99 %.3f  max %.3g\n  aspect histogram:",
-                  triangle_quality::percentile(q.aspects, 0.5), triangle_quality::percentile(q.aspects, 0.99),
-                  q.aspects.empty() ? 0 : q.aspects.back());
+    std::snprintf(line, sizeof line,
+                  "%.3f  p99 %.3f  max %.3g\n  aspect histogram:", triangle_quality::percentile(q.aspects, 0.5),
+                  triangle_quality::percentile(q.aspects, 0.99), q.aspects.empty() ? 0 : q.aspects.back());
     out += line;
     const double aspect_edges[] = {0, 1.5, 2, 3, 5, 10, INFINITY};
     for (int b = 0; b < 6; ++b) {

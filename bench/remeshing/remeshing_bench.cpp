@@ -70,7 +70,8 @@ std::pair<double, M> time_case(const M& input, int repeat, const std::function<v
 
 template <class M>
 void hmira_remesh(M& m, double L, const options& o) {
-    auto r = hmira::isotropic_remeshing(m, {.target_edge_length = L, .iterations = o.iterations, .feature_angle = o.features});
+    auto r = hmira::isotropic_remeshing(
+        m, {.target_edge_length = L, .iterations = o.iterations, .feature_angle = o.features});
     if (!r) {
         std::fprintf(stderr, "remeshing_bench: %s\n", r.error().message.c_str());
         std::exit(1);
@@ -81,10 +82,11 @@ void report_quality(const char* label, const q::triangle_soup& input, const q::t
     const auto t = q::measure_triangles(out);
     const auto e = q::measure_edges(out);
     const auto h = q::hausdorff(input, out, 10, 1000000);
-    std::printf("  %-26s %8zu faces  min angle p1 %6.2f median %6.2f min %6.2f  in [4/5,4/3]L %6.2f%%  Hausdorff %.4g\n",
-                label, out.triangles.size(), q::triangle_quality::percentile(t.min_angles, 0.01),
-                q::triangle_quality::percentile(t.min_angles, 0.5), t.min_angles.empty() ? 0.0 : t.min_angles.front(),
-                100 * e.fraction_within(0.8 * L, 4.0 / 3.0 * L), h.symmetric());
+    std::printf(
+        "  %-26s %8zu faces  min angle p1 %6.2f median %6.2f min %6.2f  in [4/5,4/3]L %6.2f%%  Hausdorff %.4g\n", label,
+        out.triangles.size(), q::triangle_quality::percentile(t.min_angles, 0.01),
+        q::triangle_quality::percentile(t.min_angles, 0.5), t.min_angles.empty() ? 0.0 : t.min_angles.front(),
+        100 * e.fraction_within(0.8 * L, 4.0 / 3.0 * L), h.symmetric());
 }
 
 }  // namespace
@@ -100,11 +102,16 @@ int main(int argc, char** argv) {
             }
             return std::atof(argv[++i]);
         };
-        if (a == "--factor") o.factor = number();
-        else if (a == "-k") o.iterations = std::size_t(number());
-        else if (a == "--features") o.features = number();
-        else if (a == "--repeat") o.repeat = std::max(1, int(number()));
-        else o.path = a;
+        if (a == "--factor")
+            o.factor = number();
+        else if (a == "-k")
+            o.iterations = std::size_t(number());
+        else if (a == "--features")
+            o.features = number();
+        else if (a == "--repeat")
+            o.repeat = std::max(1, int(number()));
+        else
+            o.path = a;
     }
     if (o.path.empty()) {
         std::fprintf(stderr, "usage: remeshing_bench MESH [--factor F] [-k K] [--features DEG] [--repeat R]\n");
@@ -125,7 +132,8 @@ int main(int argc, char** argv) {
 #ifdef HMIRA_BENCH_WITH_OPENMESH
     OpenMesh::TriMesh_ArrayKernelT<> om;
     if (!hmira::io::read_mesh(om, o.path)) return 1;
-    const auto [t_om, out_om] = time_case<OpenMesh::TriMesh_ArrayKernelT<>>(om, o.repeat, [&](auto& m) { hmira_remesh(m, L, o); });
+    const auto [t_om, out_om] =
+        time_case<OpenMesh::TriMesh_ArrayKernelT<>>(om, o.repeat, [&](auto& m) { hmira_remesh(m, L, o); });
     std::printf("  hmira OpenMesh TriMesh       %8.3f s  (%.2fx halfedge_mesh, target <= 1.15)\n", t_om, t_om / t_he);
 #endif
 #ifdef HMIRA_BENCH_WITH_CGAL
@@ -138,8 +146,9 @@ int main(int argc, char** argv) {
     const auto [t_cgal, out_cgal] = time_case<surface_mesh>(sm, o.repeat, [&](surface_mesh& m) {
         auto ecm = m.add_property_map<surface_mesh::Edge_index, bool>("e:constrained", false).first;
         if (o.features) PMP::detect_sharp_edges(m, *o.features, ecm);
-        PMP::isotropic_remeshing(faces(m), L, m,
-                                 CGAL::parameters::number_of_iterations(unsigned(o.iterations)).edge_is_constrained_map(ecm));
+        PMP::isotropic_remeshing(
+            faces(m), L, m,
+            CGAL::parameters::number_of_iterations(unsigned(o.iterations)).edge_is_constrained_map(ecm));
     });
     std::printf("  CGAL PMP::isotropic_remeshing %7.3f s\n", t_cgal);
     std::printf("  ratio hmira halfedge_mesh / CGAL: %.2f (target <= 0.7)\n", t_he / t_cgal);

@@ -52,7 +52,8 @@ void repair_damaged_torus(benchmark::State& state) {
     }
     state.counters["faces"] = static_cast<double>(s.offsets.size() - 1);
     state.counters["ns_per_corner"] =
-        benchmark::Counter(static_cast<double>(s.corners.size()), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+        benchmark::Counter(static_cast<double>(s.corners.size()),
+                           benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 // n x n/2 quads, two triangles each: 10k, 40k, 160k, 640k, ~1M faces.
 BENCHMARK(repair_damaged_torus)->Arg(100)->Arg(200)->Arg(400)->Arg(800)->Arg(1000)->Unit(benchmark::kMillisecond);

@@ -38,7 +38,8 @@ cgal_soup to_cgal(const hmira::io::polygon_soup& s) {
     cgal_soup c;
     for (const auto& p : s.points) c.points.emplace_back(p[0], p[1], p[2]);
     for (std::size_t f = 0; f < s.face_count(); ++f)
-        c.polygons.emplace_back(s.indices.begin() + static_cast<long>(s.face_offsets[f]), s.indices.begin() + static_cast<long>(s.face_offsets[f + 1]));
+        c.polygons.emplace_back(s.indices.begin() + static_cast<long>(s.face_offsets[f]),
+                                s.indices.begin() + static_cast<long>(s.face_offsets[f + 1]));
     return c;
 }
 
@@ -72,8 +73,9 @@ bool compare(const std::filesystem::path& path) {
     const double theirs_time = seconds_since(t0);
     const std::size_t theirs_faces = theirs_ok ? theirs.number_of_faces() : 0;
 
-    std::printf("%-32s %10zu %10zu %10zu %10.4f %10.4f  %s%s\n", path.filename().string().c_str(), file_faces, ours_faces, theirs_faces, ours_time,
-                theirs_time, ours_valid ? "valid" : "INVALID", theirs_ok ? "" : " (CGAL's result is still no polygon mesh)");
+    std::printf("%-32s %10zu %10zu %10zu %10.4f %10.4f  %s%s\n", path.filename().string().c_str(), file_faces,
+                ours_faces, theirs_faces, ours_time, theirs_time, ours_valid ? "valid" : "INVALID",
+                theirs_ok ? "" : " (CGAL's result is still no polygon mesh)");
     if (report && !report->repair.clean()) std::printf("%-32s   hmira: %s\n", "", report->repair.summary().c_str());
     return ours_faces >= theirs_faces;
 }
@@ -108,6 +110,7 @@ int main(int argc, char** argv) {
     std::printf("%-32s %10s %10s %10s %10s %10s\n", "file", "faces", "hmira", "CGAL", "hmira s", "CGAL s");
     bool all_kept = true;
     for (const auto& f : files) all_kept &= compare(f);
-    std::printf(all_kept ? "hmira kept at least as many faces as CGAL on every file\n" : "hmira kept FEWER faces than CGAL on some file\n");
+    std::printf(all_kept ? "hmira kept at least as many faces as CGAL on every file\n"
+                         : "hmira kept FEWER faces than CGAL on some file\n");
     return all_kept ? 0 : 1;
 }

@@ -56,7 +56,10 @@ void hmira_laplacian(benchmark::State& state) {
         state.ResumeTiming();
     }
 }
-BENCHMARK(hmira_laplacian<hmira::halfedge_mesh>)->Name("laplacian/hmira/halfedge_mesh")->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(hmira_laplacian<hmira::halfedge_mesh>)
+    ->Name("laplacian/hmira/halfedge_mesh")
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
 
 void hmira_taubin(benchmark::State& state) {
     const hmira::halfedge_mesh base = hmira_bench::build<hmira::halfedge_mesh>(noisy_torus());
@@ -89,7 +92,10 @@ void openmesh_jacobi(benchmark::State& state) {
         benchmark::ClobberMemory();
     }
 }
-BENCHMARK(openmesh_jacobi)->Name("laplacian/openmesh/JacobiLaplaceSmootherT")->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(openmesh_jacobi)
+    ->Name("laplacian/openmesh/JacobiLaplaceSmootherT")
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
 #endif
 
 #ifdef HMIRA_BENCH_WITH_CGAL
@@ -100,12 +106,17 @@ void cgal_angle_smoothing(benchmark::State& state) {
         state.PauseTiming();
         cgal_mesh m = base;
         state.ResumeTiming();
-        CGAL::Polygon_mesh_processing::angle_and_area_smoothing(
-            m, CGAL::parameters::number_of_iterations(unsigned(steps)).use_angle_smoothing(true).use_area_smoothing(false));
+        CGAL::Polygon_mesh_processing::angle_and_area_smoothing(m,
+                                                                CGAL::parameters::number_of_iterations(unsigned(steps))
+                                                                    .use_angle_smoothing(true)
+                                                                    .use_area_smoothing(false));
         benchmark::ClobberMemory();
     }
 }
-BENCHMARK(cgal_angle_smoothing)->Name("angle/cgal/angle_and_area_smoothing")->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(cgal_angle_smoothing)
+    ->Name("angle/cgal/angle_and_area_smoothing")
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
 #endif
 
 }  // namespace
@@ -114,9 +125,12 @@ int main(int argc, char** argv) {
     if (int rc = hmira_bench::run_benchmarks(argc, argv); rc != 0) return rc;
     using hmira_bench::print_ratio;
     std::printf("\nMedian CPU-time ratios (ten steps, ~1M triangles):\n");
-    print_ratio("laplacian: hmira halfedge_mesh / OpenMesh Jacobi", "laplacian/hmira/halfedge_mesh", "laplacian/openmesh/JacobiLaplaceSmootherT", 1.0);
-    print_ratio("laplacian: hmira on OpenMesh / hmira halfedge_mesh", "laplacian/hmira/openmesh_tri", "laplacian/hmira/halfedge_mesh", 1.1);
-    print_ratio("taubin (20 steps) hmira / CGAL angle smoothing (10)", "taubin/hmira/halfedge_mesh", "angle/cgal/angle_and_area_smoothing", 1.0);
+    print_ratio("laplacian: hmira halfedge_mesh / OpenMesh Jacobi", "laplacian/hmira/halfedge_mesh",
+                "laplacian/openmesh/JacobiLaplaceSmootherT", 1.0);
+    print_ratio("laplacian: hmira on OpenMesh / hmira halfedge_mesh", "laplacian/hmira/openmesh_tri",
+                "laplacian/hmira/halfedge_mesh", 1.1);
+    print_ratio("taubin (20 steps) hmira / CGAL angle smoothing (10)", "taubin/hmira/halfedge_mesh",
+                "angle/cgal/angle_and_area_smoothing", 1.0);
     benchmark::Shutdown();
     return 0;
 }

@@ -180,9 +180,13 @@ void hmira_triangle_scheme(benchmark::State& state, const char* name) {
     state.counters["faces_in"] = double(triangle_torus().faces.size());
 }
 template <class M>
-void hmira_loop(benchmark::State& state, const char* name) { hmira_triangle_scheme<M, 4>(state, name); }
+void hmira_loop(benchmark::State& state, const char* name) {
+    hmira_triangle_scheme<M, 4>(state, name);
+}
 template <class M>
-void hmira_sqrt3(benchmark::State& state, const char* name) { hmira_triangle_scheme<M, 3>(state, name); }
+void hmira_sqrt3(benchmark::State& state, const char* name) {
+    hmira_triangle_scheme<M, 3>(state, name);
+}
 const int registered_2 = add_case("loop/hmira/halfedge_mesh", &hmira_loop<hmira::halfedge_mesh>);
 const int registered_11 = add_case("sqrt3/hmira/halfedge_mesh", &hmira_sqrt3<hmira::halfedge_mesh>);
 
@@ -203,7 +207,8 @@ void reserve_only(benchmark::State& state, const char* name) {
         M m = base;
         state.ResumeTiming();
         measured(state, name, [&] {
-            const std::size_t nv = Quad ? v + e + f : v + e, ne = Quad ? 2 * e + corners : 2 * e + 3 * f, nf = Quad ? corners : 4 * f;
+            const std::size_t nv = Quad ? v + e + f : v + e, ne = Quad ? 2 * e + corners : 2 * e + 3 * f,
+                              nf = Quad ? corners : 4 * f;
             T::reserve(m, nv, ne, nf);
             if constexpr (Grow) T::resize(m, nv, ne, nf);
         });
@@ -259,7 +264,8 @@ const int registered_20 = add_case("catmull_clark/reserve/openmesh_poly", &reser
 const int registered_21 = add_case("catmull_clark/reserve/openmesh_poly_double", &reserve_only<om_poly_double, true>);
 const int registered_26 = add_case("loop/grow/openmesh_tri", &reserve_only<om_tri, false, true>);
 const int registered_27 = add_case("catmull_clark/grow/openmesh_poly", &reserve_only<om_poly, true, true>);
-const int registered_28 = add_case("catmull_clark/grow/openmesh_poly_double", &reserve_only<om_poly_double, true, true>);
+const int registered_28 =
+    add_case("catmull_clark/grow/openmesh_poly_double", &reserve_only<om_poly_double, true, true>);
 void openmesh_catmull_clark(benchmark::State& state, const char* name) {
     const om_poly base = build<om_poly>(quad_torus());
     for (auto _ : state) {
@@ -313,7 +319,9 @@ void cgal_catmull_clark(benchmark::State& state, const char* name) {
         state.PauseTiming();
         cgal_mesh m = base;
         state.ResumeTiming();
-        measured(state, name, [&] { CGAL::Subdivision_method_3::CatmullClark_subdivision(m, CGAL::parameters::number_of_iterations(1)); });
+        measured(state, name, [&] {
+            CGAL::Subdivision_method_3::CatmullClark_subdivision(m, CGAL::parameters::number_of_iterations(1));
+        });
         state.PauseTiming();
         if (m.number_of_faces() != 4 * quad_torus().faces.size()) state.SkipWithError("wrong face count");
         state.ResumeTiming();
@@ -327,7 +335,9 @@ const int registered_30 = add_case("catmull_clark/grow/cgal_surface_mesh", &rese
 #endif
 
 std::string openmesh_case(const std::string& scheme) {
-    return scheme == "loop" ? "loop/openmesh/LoopT" : scheme == "sqrt3" ? "sqrt3/openmesh/Sqrt3T" : "catmull_clark/openmesh/CatmullClarkT";
+    return scheme == "loop"    ? "loop/openmesh/LoopT"
+           : scheme == "sqrt3" ? "sqrt3/openmesh/Sqrt3T"
+                               : "catmull_clark/openmesh/CatmullClarkT";
 }
 std::string cgal_case(const std::string& scheme) {
     return scheme == "loop"    ? "loop/cgal/Loop_subdivision"
@@ -355,20 +365,24 @@ int main(int argc, char** argv) {
         print_ratio(scheme + ": hmira on CGAL / hmira halfedge_mesh", scheme + "/hmira/cgal_surface_mesh", own, 1.1);
     }
     for (const bool user : {true, false}) {
-    std::printf(user ? "\nMedian user-CPU-time ratios (without the kernel's zeroing of fresh pages):\n"
-                     : "\nMedian system-CPU-time ratios (the kernel's faulting and zeroing of fresh pages):\n");
-    auto& by_case = user ? user_seconds_by_case() : sys_seconds_by_case();
-    for (const std::string scheme : {"loop", "catmull_clark", "sqrt3"}) {
-        const std::string own = scheme + "/hmira/halfedge_mesh";
-        const std::string om = openmesh_case(scheme), cg = cgal_case(scheme), on_om = hmira_on_openmesh_case(scheme);
-        const std::string on_cg = scheme + "/hmira/cgal_surface_mesh";
-        for (const auto& [label, a, b] : {std::tuple{"hmira halfedge_mesh / OpenMesh", own, om}, std::tuple{"hmira halfedge_mesh / CGAL", own, cg},
-                                          std::tuple{"hmira on OpenMesh / hmira halfedge_mesh", on_om, own},
-                                          std::tuple{"hmira on CGAL / hmira halfedge_mesh", on_cg, own}}) {
-            const double ta = median_in(by_case, a), tb = median_in(by_case, b);
-            if (ta > 0 && tb > 0) std::printf("%-58s %7.1f ms / %7.1f ms = %5.2f\n", (scheme + ": " + label).c_str(), ta * 1e3, tb * 1e3, ta / tb);
+        std::printf(user ? "\nMedian user-CPU-time ratios (without the kernel's zeroing of fresh pages):\n"
+                         : "\nMedian system-CPU-time ratios (the kernel's faulting and zeroing of fresh pages):\n");
+        auto& by_case = user ? user_seconds_by_case() : sys_seconds_by_case();
+        for (const std::string scheme : {"loop", "catmull_clark", "sqrt3"}) {
+            const std::string own = scheme + "/hmira/halfedge_mesh";
+            const std::string om = openmesh_case(scheme), cg = cgal_case(scheme),
+                              on_om = hmira_on_openmesh_case(scheme);
+            const std::string on_cg = scheme + "/hmira/cgal_surface_mesh";
+            for (const auto& [label, a, b] : {std::tuple{"hmira halfedge_mesh / OpenMesh", own, om},
+                                              std::tuple{"hmira halfedge_mesh / CGAL", own, cg},
+                                              std::tuple{"hmira on OpenMesh / hmira halfedge_mesh", on_om, own},
+                                              std::tuple{"hmira on CGAL / hmira halfedge_mesh", on_cg, own}}) {
+                const double ta = median_in(by_case, a), tb = median_in(by_case, b);
+                if (ta > 0 && tb > 0)
+                    std::printf("%-58s %7.1f ms / %7.1f ms = %5.2f\n", (scheme + ": " + label).c_str(), ta * 1e3,
+                                tb * 1e3, ta / tb);
+            }
         }
-    }
     }
     // The target, <= 1.1, for the generic algorithm on each model, whole and less that model's
     // reserve (the <scheme>/reserve/<model> case: the same T::reserve, to the same counts, the
@@ -378,40 +392,46 @@ int main(int argc, char** argv) {
     // step: "reserve" (the traits' reserve alone) or "grow" (reserve, then resize to the
     // final counts: the model's whole storage growth, default fill of every new element too).
     const auto storage_table = [&](const std::string& step, const char* what) {
-        std::printf("\nGeneric on a model / on halfedge_mesh, less each model's %s step (medians of the timed call alone):\n"
-                    "  ms = user + system CPU; fresh = MB of minor page faults; %s = %s;\n"
-                    "  less-%s = (model - its %s) / (hm - its %s); the peers' rows: peer / hm.\n",
-                    step.c_str(), step.c_str(), what, step.c_str(), step.c_str(), step.c_str());
-        std::printf("%-44s %9s %9s %6s | %8s %8s %18s | %13s %13s\n", "scheme/model", "model ms", "hm ms", "ratio", (step + " ms").c_str(),
-                    (step + " hm").c_str(), ("less-" + step).c_str(), "fresh MB", (step + " MB").c_str());
+        std::printf(
+            "\nGeneric on a model / on halfedge_mesh, less each model's %s step (medians of the timed call alone):\n"
+            "  ms = user + system CPU; fresh = MB of minor page faults; %s = %s;\n"
+            "  less-%s = (model - its %s) / (hm - its %s); the peers' rows: peer / hm.\n",
+            step.c_str(), step.c_str(), what, step.c_str(), step.c_str(), step.c_str());
+        std::printf("%-44s %9s %9s %6s | %8s %8s %18s | %13s %13s\n", "scheme/model", "model ms", "hm ms", "ratio",
+                    (step + " ms").c_str(), (step + " hm").c_str(), ("less-" + step).c_str(), "fresh MB",
+                    (step + " MB").c_str());
         for (const std::string scheme : {"loop", "catmull_clark"}) {
             const std::string own = scheme + "/hmira/halfedge_mesh", own_step = scheme + "/" + step + "/halfedge_mesh";
             const double t_own = median_in(cpu, own), r_own = median_in(cpu, own_step);
             if (t_own <= 0) continue;
             const double m_own = median_in(fresh, own), rm_own = median_in(fresh, own_step);
-            std::printf("%-44s %9.1f %9.1f %6s | %8.1f %8s %18s | %13.1f %13.1f\n", (scheme + "/halfedge_mesh").c_str(), t_own * 1e3, t_own * 1e3, "1.00",
-                        r_own * 1e3, "", "", m_own, rm_own);
-            const std::vector<std::string> models = scheme == "loop" ? std::vector<std::string>{"openmesh_tri", "cgal_surface_mesh"}
-                                                                     : std::vector<std::string>{"openmesh_poly", "openmesh_poly_double", "cgal_surface_mesh"};
+            std::printf("%-44s %9.1f %9.1f %6s | %8.1f %8s %18s | %13.1f %13.1f\n", (scheme + "/halfedge_mesh").c_str(),
+                        t_own * 1e3, t_own * 1e3, "1.00", r_own * 1e3, "", "", m_own, rm_own);
+            const std::vector<std::string> models =
+                scheme == "loop"
+                    ? std::vector<std::string>{"openmesh_tri", "cgal_surface_mesh"}
+                    : std::vector<std::string>{"openmesh_poly", "openmesh_poly_double", "cgal_surface_mesh"};
             for (const std::string& model : models) {
                 const std::string on = scheme + "/hmira/" + model, res = scheme + "/" + step + "/" + model;
                 const double t = median_in(cpu, on), r = median_in(cpu, res);
                 if (t <= 0) continue;
                 char less[40] = "";
                 if (r > 0 && r_own > 0)
-                    std::snprintf(less, sizeof less, "%.1f/%.1f=%.2f", (t - r) * 1e3, (t_own - r_own) * 1e3, (t - r) / (t_own - r_own));
+                    std::snprintf(less, sizeof less, "%.1f/%.1f=%.2f", (t - r) * 1e3, (t_own - r_own) * 1e3,
+                                  (t - r) / (t_own - r_own));
                 char fr[40], rfr[40] = "";
                 std::snprintf(fr, sizeof fr, "%.1f/%.1f", median_in(fresh, on), m_own);
                 if (r > 0) std::snprintf(rfr, sizeof rfr, "%.1f/%.1f", median_in(fresh, res), rm_own);
-                std::printf("%-44s %9.1f %9.1f %6.2f | %8.1f %8.1f %18s | %13s %13s\n", (scheme + "/" + model).c_str(), t * 1e3, t_own * 1e3, t / t_own,
-                            r * 1e3, r_own * 1e3, less, fr, rfr);
+                std::printf("%-44s %9.1f %9.1f %6.2f | %8.1f %8.1f %18s | %13s %13s\n", (scheme + "/" + model).c_str(),
+                            t * 1e3, t_own * 1e3, t / t_own, r * 1e3, r_own * 1e3, less, fr, rfr);
             }
             // The peers' own subdividers on the same input, for scale.
             for (const std::string& peer : {openmesh_case(scheme), cgal_case(scheme)})
                 if (const double t = median_in(cpu, peer); t > 0) {
                     char fr[40];
                     std::snprintf(fr, sizeof fr, "%.1f/%.1f", median_in(fresh, peer), m_own);
-                    std::printf("%-44s %9.1f %9.1f %6.2f | %8s %8s %18s | %13s\n", peer.c_str(), t * 1e3, t_own * 1e3, t / t_own, "", "", "", fr);
+                    std::printf("%-44s %9.1f %9.1f %6.2f | %8s %8s %18s | %13s\n", peer.c_str(), t * 1e3, t_own * 1e3,
+                                t / t_own, "", "", "", fr);
                 }
         }
     };

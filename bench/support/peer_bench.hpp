@@ -31,8 +31,10 @@ inline soup make_torus(std::size_t n, bool triangles) {
     soup t;
     for (std::size_t i = 0; i < n; ++i)
         for (std::size_t j = 0; j < n; ++j) {
-            const double u = 2 * std::numbers::pi * double(i) / double(n), v = 2 * std::numbers::pi * double(j) / double(n);
-            t.points.push_back({(2 + 0.7 * std::cos(v)) * std::cos(u), (2 + 0.7 * std::cos(v)) * std::sin(u), 0.7 * std::sin(v)});
+            const double u = 2 * std::numbers::pi * double(i) / double(n),
+                         v = 2 * std::numbers::pi * double(j) / double(n);
+            t.points.push_back(
+                {(2 + 0.7 * std::cos(v)) * std::cos(u), (2 + 0.7 * std::cos(v)) * std::sin(u), 0.7 * std::sin(v)});
         }
     auto id = [n](std::size_t i, std::size_t j) { return (i % n) * n + (j % n); };
     for (std::size_t i = 0; i < n; ++i)
@@ -53,7 +55,8 @@ M build(const soup& s) {
     M m;
     std::vector<typename T::vertex_handle> vs;
     vs.reserve(s.points.size());
-    for (const auto& p : s.points) vs.push_back(T::add_vertex(m, {typename T::scalar(p.x), typename T::scalar(p.y), typename T::scalar(p.z)}));
+    for (const auto& p : s.points)
+        vs.push_back(T::add_vertex(m, {typename T::scalar(p.x), typename T::scalar(p.y), typename T::scalar(p.z)}));
     std::vector<typename T::vertex_handle> c;
     for (const auto& f : s.faces) {
         c.clear();
@@ -94,8 +97,8 @@ inline double median_of(const std::string& name) {
 inline void print_ratio(const std::string& label, const std::string& a, const std::string& b, double target) {
     const double ta = median_of(a), tb = median_of(b);
     if (ta <= 0 || tb <= 0) return;
-    std::printf("%-58s %7.1f ms / %7.1f ms = %5.2f  (target <= %.2f)%s\n", label.c_str(), ta * 1e3, tb * 1e3, ta / tb, target,
-                ta / tb <= target ? "" : "  MISSED");
+    std::printf("%-58s %7.1f ms / %7.1f ms = %5.2f  (target <= %.2f)%s\n", label.c_str(), ta * 1e3, tb * 1e3, ta / tb,
+                target, ta / tb <= target ? "" : "  MISSED");
 }
 
 /// Runs the registered cases, three repetitions unless the command line says otherwise, with

@@ -86,8 +86,10 @@ inline double last_level_cache_bytes() {
         std::string t, sz;
         if (!(level >> l) || !(type >> t) || !(size >> sz) || t == "Instruction") continue;
         double bytes = std::atof(sz.c_str());
-        if (sz.back() == 'K') bytes *= 1024;
-        else if (sz.back() == 'M') bytes *= 1024 * 1024;
+        if (sz.back() == 'K')
+            bytes *= 1024;
+        else if (sz.back() == 'M')
+            bytes *= 1024 * 1024;
         if (l > best_level) best_level = l, best = bytes;
     }
     if (best > 0) return best;
@@ -128,8 +130,8 @@ inline double per_element_spread(const std::vector<sweep_point>& pts) {
 /// 3 for O(n^3), with the allowance above it before the sweep calls the claim wrong.
 struct complexity_claim {
     const char* text = "";  ///< as the doc block says it, e.g. "O(n log n) expected"
-    double exponent = 1;   ///< the exponent it implies
-    double slack = 0.15;   ///< a fitted exponent up to exponent + slack agrees
+    double exponent = 1;    ///< the exponent it implies
+    double slack = 0.15;    ///< a fitted exponent up to exponent + slack agrees
 };
 
 /// The exponent fitted over the largest decade of sizes only (n >= max n / 10; the whole sweep
@@ -204,11 +206,12 @@ inline std::string print_sweep_summary(const std::string& name, const std::vecto
     if (!beyond && v == "FAIL" && largest_decade_crosses_cache(pts, cache)) v = "UNSURE";
     char beyond_text[32] = "too few sizes";
     if (beyond) std::snprintf(beyond_text, sizeof beyond_text, "%.2f", *beyond);
-    std::printf("%-44s exponent %5.2f (largest decade %5.2f; beyond %.0fx the %.0f MiB cache %s; "
-                "documented %s: <= %.2f), time per element max/min %.2fx  %s (judged on the %s)\n",
-                name.c_str(), k, upper, beyond_cache_factor, cache / (1024 * 1024), beyond_text, claim.text,
-                claim.exponent + claim.slack, per_element_spread(pts), v.c_str(),
-                beyond ? "sizes beyond the cache" : "largest decade");
+    std::printf(
+        "%-44s exponent %5.2f (largest decade %5.2f; beyond %.0fx the %.0f MiB cache %s; "
+        "documented %s: <= %.2f), time per element max/min %.2fx  %s (judged on the %s)\n",
+        name.c_str(), k, upper, beyond_cache_factor, cache / (1024 * 1024), beyond_text, claim.text,
+        claim.exponent + claim.slack, per_element_spread(pts), v.c_str(),
+        beyond ? "sizes beyond the cache" : "largest decade");
     return v;
 }
 

@@ -88,7 +88,8 @@ struct config {
 /// one on each side of a cache level, measured the cache, not the algorithm).
 std::vector<double> sizes(const config& c, double hi) {
     std::vector<double> out;
-    for (double e = 4; std::pow(10.0, e) <= std::min(hi, c.max_elements) * 1.001; e += 0.5) out.push_back(std::pow(10.0, e));
+    for (double e = 4; std::pow(10.0, e) <= std::min(hi, c.max_elements) * 1.001; e += 0.5)
+        out.push_back(std::pow(10.0, e));
     return out;
 }
 
@@ -135,7 +136,8 @@ polygons torus_polygons(std::size_t rings, std::size_t sides, bool triangles) {
     p.points.reserve(rings * sides);
     for (std::size_t i = 0; i < rings; ++i)
         for (std::size_t j = 0; j < sides; ++j) {
-            const double u = 2 * std::numbers::pi * double(i) / double(rings), v = 2 * std::numbers::pi * double(j) / double(sides);
+            const double u = 2 * std::numbers::pi * double(i) / double(rings),
+                         v = 2 * std::numbers::pi * double(j) / double(sides);
             p.points.push_back({(4 + std::cos(v)) * std::cos(u), (4 + std::cos(v)) * std::sin(u), std::sin(v)});
         }
     auto id = [&](std::size_t i, std::size_t j) { return std::uint32_t((i % rings) * sides + j % sides); };
@@ -177,17 +179,28 @@ void check(const R& r, const char* what) {
 
 std::vector<sweep_case> cases() {
     std::vector<sweep_case> cs;
-    cs.push_back({"marching_cubes_indexed (samples, 1 thread)", {"O(N) for N samples", 1}, 1e7, 1e6, [](double n, const config& c) {
+    cs.push_back({"marching_cubes_indexed (samples, 1 thread)",
+                  {"O(N) for N samples", 1},
+                  1e7,
+                  1e6,
+                  [](double n, const config& c) {
                       const auto side = std::size_t(std::lround(std::cbrt(n)));
-                      const auto grid = hmira::sample_function(hmira::cube_geometry(side, -6.0, 6.0), hmira::gyroid_field{});
+                      const auto grid =
+                          hmira::sample_function(hmira::cube_geometry(side, -6.0, 6.0), hmira::gyroid_field{});
                       check(grid, "sample_function");
                       const auto& g = *grid;
-                      return timed("marching_cubes_indexed", 0, double(side * side * side), c.repeats, [&](int) {
-                          auto r = hmira::marching_cubes_indexed(g, {.threads = 1});
-                          check(r, "marching_cubes_indexed");
-                      }, double(g.size() * sizeof(*g.data())));
+                      return timed(
+                          "marching_cubes_indexed", 0, double(side * side * side), c.repeats,
+                          [&](int) {
+                              auto r = hmira::marching_cubes_indexed(g, {.threads = 1});
+                              check(r, "marching_cubes_indexed");
+                          },
+                          double(g.size() * sizeof(*g.data())));
                   }});
-    cs.push_back({"voxelize solid (voxels, 2k-triangle torus, 1 thread)", {"O(F + voxels in the triangles' boxes + N/64 + ...), <= O(N)", 1}, 1e7, 1e6,
+    cs.push_back({"voxelize solid (voxels, 2k-triangle torus, 1 thread)",
+                  {"O(F + voxels in the triangles' boxes + N/64 + ...), <= O(N)", 1},
+                  1e7,
+                  1e6,
                   [](double n, const config& c) {
                       // Few triangles, so that the voxels' terms dominate from small grids on.
                       static const M torus = mesh_of(torus_of(2e3, true));
@@ -204,28 +217,41 @@ std::vector<sweep_case> cases() {
                           check(v, "voxelize");
                       });
                   }});
-    cs.push_back({"delaunay_triangulation (points)", {"O(n log n) expected", 1, 0.2}, 3.2e6, 1e6, [](double n, const config& c) {
-                      std::vector<std::array<double, 2>> pts(static_cast<std::size_t>(n));
-                      std::mt19937_64 rng(42);
-                      std::uniform_real_distribution<double> u(0.0, 1.0);
-                      for (auto& p : pts) p = {u(rng), u(rng)};
-                      return timed("delaunay_triangulation", 0, n, c.repeats, [&](int) {
-                          auto d = hmira::delaunay_triangulation(pts);
-                          check(d, "delaunay_triangulation");
-                      }, double(pts.size() * sizeof(pts[0])));
-                  }});
-    cs.push_back({"halfedge_mesh::from_polygons (quads)", {"O(V + C x valence), linear in practice", 1}, 1e7, 1e6, [](double n, const config& c) {
+    cs.push_back(
+        {"delaunay_triangulation (points)", {"O(n log n) expected", 1, 0.2}, 3.2e6, 1e6, [](double n, const config& c) {
+             std::vector<std::array<double, 2>> pts(static_cast<std::size_t>(n));
+             std::mt19937_64 rng(42);
+             std::uniform_real_distribution<double> u(0.0, 1.0);
+             for (auto& p : pts) p = {u(rng), u(rng)};
+             return timed(
+                 "delaunay_triangulation", 0, n, c.repeats,
+                 [&](int) {
+                     auto d = hmira::delaunay_triangulation(pts);
+                     check(d, "delaunay_triangulation");
+                 },
+                 double(pts.size() * sizeof(pts[0])));
+         }});
+    cs.push_back({"halfedge_mesh::from_polygons (quads)",
+                  {"O(V + C x valence), linear in practice", 1},
+                  1e7,
+                  1e6,
+                  [](double n, const config& c) {
                       const auto p = torus_of(n, false);
                       const double shared =
                           double(p.points.size() * sizeof(p.points[0]) + (p.offsets.size() + p.corners.size()) * 4);
                       const double faces = double(p.offsets.size() - 1);
-                      return timed("from_polygons", 0, faces, c.repeats, [&](int) { mesh_of(p); }, shared);
+                      return timed(
+                          "from_polygons", 0, faces, c.repeats, [&](int) { mesh_of(p); }, shared);
                   }});
     const auto dir = std::filesystem::temp_directory_path() / ("hmira-sweep-" + std::to_string(::getpid()));
     for (const bool halfedge : {false, true}) {
         const double full_max = halfedge ? 3.2e6 : 1e7;
-        cs.push_back({std::string("read_mesh binary PLY -> ") + (halfedge ? "halfedge_mesh" : "face_vertex_mesh") + " (triangles)",
-                      {halfedge ? "O(bytes + C log d + insertions)" : "O(bytes)", 1}, full_max, 1e6, [dir, halfedge](double n, const config& c) {
+        cs.push_back({std::string("read_mesh binary PLY -> ") + (halfedge ? "halfedge_mesh" : "face_vertex_mesh") +
+                          " (triangles)",
+                      {halfedge ? "O(bytes + C log d + insertions)" : "O(bytes)", 1},
+                      full_max,
+                      1e6,
+                      [dir, halfedge](double n, const config& c) {
                           std::filesystem::create_directories(dir);
                           const auto path = dir / "torus.ply";
                           const auto p = torus_of(n, true);
@@ -234,50 +260,78 @@ std::vector<sweep_case> cases() {
                               auto r = hmira::io::write_mesh(mesh_of(p), path);
                               check(r, "write_mesh");
                           }
-                          auto pt = timed("read_mesh", 0, faces, c.repeats, [&](int) {
-                              if (halfedge) {
-                                  M m;
-                                  check(hmira::io::read_mesh(m, path), "read_mesh");
-                              } else {
-                                  hmira::face_vertex_mesh m;
-                                  check(hmira::io::read_mesh(m, path), "read_mesh");
-                              }
-                          }, double(std::filesystem::file_size(path)));
+                          auto pt = timed(
+                              "read_mesh", 0, faces, c.repeats,
+                              [&](int) {
+                                  if (halfedge) {
+                                      M m;
+                                      check(hmira::io::read_mesh(m, path), "read_mesh");
+                                  } else {
+                                      hmira::face_vertex_mesh m;
+                                      check(hmira::io::read_mesh(m, path), "read_mesh");
+                                  }
+                              },
+                              double(std::filesystem::file_size(path)));
                           std::filesystem::remove_all(dir);
                           return pt;
                       }});
     }
-    cs.push_back({"loop_subdivide, 1 level (input triangles)", {"O(F) per level", 1}, 1e6, 1e6, [](double n, const config& c) {
-                      const M m = mesh_of(torus_of(n, true));
-                      return timed("loop_subdivide", m, double(T::face_count(m)), c.repeats, [](M& x) { check(hmira::loop_subdivide(x), "loop"); });
-                  }});
-    cs.push_back({"catmull_clark_subdivide, 1 level (input quads)", {"O(C) per level", 1}, 1e6, 1e6, [](double n, const config& c) {
+    cs.push_back(
+        {"loop_subdivide, 1 level (input triangles)", {"O(F) per level", 1}, 1e6, 1e6, [](double n, const config& c) {
+             const M m = mesh_of(torus_of(n, true));
+             return timed("loop_subdivide", m, double(T::face_count(m)), c.repeats,
+                          [](M& x) { check(hmira::loop_subdivide(x), "loop"); });
+         }});
+    cs.push_back({"catmull_clark_subdivide, 1 level (input quads)",
+                  {"O(C) per level", 1},
+                  1e6,
+                  1e6,
+                  [](double n, const config& c) {
                       const M m = mesh_of(torus_of(n, false));
                       return timed("catmull_clark_subdivide", m, double(T::face_count(m)), c.repeats,
                                    [](M& x) { check(hmira::catmull_clark_subdivide(x), "catmull_clark"); });
                   }});
-    cs.push_back({"laplacian_smooth, 10 iterations (vertices)", {"O(iterations (V + E))", 1}, 1e7, 1e6, [](double n, const config& c) {
+    cs.push_back({"laplacian_smooth, 10 iterations (vertices)",
+                  {"O(iterations (V + E))", 1},
+                  1e7,
+                  1e6,
+                  [](double n, const config& c) {
                       const M m = mesh_of(torus_of(n, false));
-                      return timed("laplacian_smooth", m, double(T::vertex_count(m)), c.repeats,
-                                   [](M& x) { check(hmira::laplacian_smooth(x, {.iterations = 10}), "laplacian_smooth"); });
+                      return timed("laplacian_smooth", m, double(T::vertex_count(m)), c.repeats, [](M& x) {
+                          check(hmira::laplacian_smooth(x, {.iterations = 10}), "laplacian_smooth");
+                      });
                   }});
-    cs.push_back({"triangulate_faces (quads)", {"O(sum n_f log n_f) = O(F) for quads", 1}, 3.2e6, 1e6, [](double n, const config& c) {
+    cs.push_back({"triangulate_faces (quads)",
+                  {"O(sum n_f log n_f) = O(F) for quads", 1},
+                  3.2e6,
+                  1e6,
+                  [](double n, const config& c) {
                       const M m = mesh_of(torus_of(n, false));
                       return timed("triangulate_faces", m, double(T::face_count(m)), c.repeats,
                                    [](M& x) { check(hmira::triangulate_faces(x), "triangulate_faces"); });
                   }});
-    cs.push_back({"decimate to half (triangles)", {"O(E log E) + O(d log E) per collapse", 1, 0.2}, 1e7, 1e6, [](double n, const config& c) {
+    cs.push_back({"decimate to half (triangles)",
+                  {"O(E log E) + O(d log E) per collapse", 1, 0.2},
+                  1e7,
+                  1e6,
+                  [](double n, const config& c) {
                       const M m = mesh_of(torus_of(n, true));
                       const auto f = T::face_count(m);
-                      return timed("decimate", m, double(f), c.repeats, [f](M& x) { check(hmira::decimate(x, {.target_faces = f / 2}), "decimate"); });
+                      return timed("decimate", m, double(f), c.repeats,
+                                   [f](M& x) { check(hmira::decimate(x, {.target_faces = f / 2}), "decimate"); });
                   }});
-    cs.push_back({"isotropic_remeshing, 1 iteration (triangles)", {"O(iterations F log F_in)", 1, 0.2}, 1e6, 1e5, [](double n, const config& c) {
+    cs.push_back({"isotropic_remeshing, 1 iteration (triangles)",
+                  {"O(iterations F log F_in)", 1, 0.2},
+                  1e6,
+                  1e5,
+                  [](double n, const config& c) {
                       const auto p = torus_of(n, true);
                       const M m = mesh_of(p);
                       // The torus's own mean edge length: each round does a bounded amount of work per face.
                       const double side = std::sqrt(n / 2), L = 2 * std::numbers::pi * 4.5 / side;
                       return timed("isotropic_remeshing", m, double(T::face_count(m)), c.repeats, [L](M& x) {
-                          check(hmira::isotropic_remeshing(x, {.target_edge_length = L, .iterations = 1}), "isotropic_remeshing");
+                          check(hmira::isotropic_remeshing(x, {.target_edge_length = L, .iterations = 1}),
+                                "isotropic_remeshing");
                       });
                   }});
     return cs;
@@ -320,10 +374,14 @@ int main(int argc, char** argv) {
     config c;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
-        if (a == "--quick") c.quick = true;
-        else if (a == "--only" && i + 1 < argc) c.only = argv[++i];
-        else if (a == "--max" && i + 1 < argc) c.max_elements = std::atof(argv[++i]);
-        else if (a == "--repeats" && i + 1 < argc) c.repeats = std::max(1, std::atoi(argv[++i]));
+        if (a == "--quick")
+            c.quick = true;
+        else if (a == "--only" && i + 1 < argc)
+            c.only = argv[++i];
+        else if (a == "--max" && i + 1 < argc)
+            c.max_elements = std::atof(argv[++i]);
+        else if (a == "--repeats" && i + 1 < argc)
+            c.repeats = std::max(1, std::atoi(argv[++i]));
         else {
             std::fprintf(stderr, "usage: sweep_bench [--quick] [--only SUBSTRING] [--max ELEMENTS] [--repeats N]\n");
             return 2;
@@ -346,7 +404,8 @@ int main(int argc, char** argv) {
     for (const auto& s : cases()) run(s, sizes(c, c.quick ? s.quick_max : s.full_max));
     const auto holes = hole_cases();
     run(holes[0], c.quick ? std::vector<double>{25, 50, 100, 200} : std::vector<double>{25, 50, 100, 141, 200});
-    run(holes[1], c.quick ? std::vector<double>{400, 800, 1600, 3200} : std::vector<double>{400, 800, 1600, 3200, 6400});
+    run(holes[1],
+        c.quick ? std::vector<double>{400, 800, 1600, 3200} : std::vector<double>{400, 800, 1600, 3200, 6400});
     std::printf("sweep: %d claim(s) contradicted", failed);
     if (unsure) std::printf(", %d undecided (largest decade across the last-level cache: run the full sweep)", unsure);
     std::printf("\n");

@@ -69,11 +69,21 @@ void hmira_triangulate(benchmark::State& state, const soup& (*input)()) {
     }
 }
 template <class M>
-void hmira_quads(benchmark::State& state) { hmira_triangulate<M>(state, quads); }
+void hmira_quads(benchmark::State& state) {
+    hmira_triangulate<M>(state, quads);
+}
 template <class M>
-void hmira_jagged(benchmark::State& state) { hmira_triangulate<M>(state, jagged); }
-BENCHMARK(hmira_quads<hmira::halfedge_mesh>)->Name("quads/hmira/halfedge_mesh")->Unit(benchmark::kMillisecond)->Iterations(1);
-BENCHMARK(hmira_jagged<hmira::halfedge_mesh>)->Name("jagged/hmira/halfedge_mesh")->Unit(benchmark::kMillisecond)->Iterations(1);
+void hmira_jagged(benchmark::State& state) {
+    hmira_triangulate<M>(state, jagged);
+}
+BENCHMARK(hmira_quads<hmira::halfedge_mesh>)
+    ->Name("quads/hmira/halfedge_mesh")
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
+BENCHMARK(hmira_jagged<hmira::halfedge_mesh>)
+    ->Name("jagged/hmira/halfedge_mesh")
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
 
 #ifdef HMIRA_BENCH_WITH_OPENMESH
 using om_poly = OpenMesh::PolyMesh_ArrayKernelT<>;
@@ -96,7 +106,10 @@ BENCHMARK(openmesh_fan)->Name("quads/openmesh/triangulate")->Unit(benchmark::kMi
 #ifdef HMIRA_BENCH_WITH_CGAL
 using cgal_mesh = CGAL::Surface_mesh<CGAL::Simple_cartesian<double>::Point_3>;
 BENCHMARK(hmira_quads<cgal_mesh>)->Name("quads/hmira/cgal_surface_mesh")->Unit(benchmark::kMillisecond)->Iterations(1);
-BENCHMARK(hmira_jagged<cgal_mesh>)->Name("jagged/hmira/cgal_surface_mesh")->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(hmira_jagged<cgal_mesh>)
+    ->Name("jagged/hmira/cgal_surface_mesh")
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
 void cgal_triangulate(benchmark::State& state, const soup& (*input)()) {
     const cgal_mesh base = hmira_bench::build<cgal_mesh>(input());
     for (auto _ : state) {
@@ -109,8 +122,14 @@ void cgal_triangulate(benchmark::State& state, const soup& (*input)()) {
         state.ResumeTiming();
     }
 }
-BENCHMARK_CAPTURE(cgal_triangulate, quads, quads)->Name("quads/cgal/triangulate_faces")->Unit(benchmark::kMillisecond)->Iterations(1);
-BENCHMARK_CAPTURE(cgal_triangulate, jagged, jagged)->Name("jagged/cgal/triangulate_faces")->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK_CAPTURE(cgal_triangulate, quads, quads)
+    ->Name("quads/cgal/triangulate_faces")
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
+BENCHMARK_CAPTURE(cgal_triangulate, jagged, jagged)
+    ->Name("jagged/cgal/triangulate_faces")
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
 #endif
 
 }  // namespace
@@ -120,11 +139,15 @@ int main(int argc, char** argv) {
     using hmira_bench::print_ratio;
     std::printf("\nMedian CPU-time ratios (no target in the issue: reported against 1.0 and 1.1):\n");
     for (const std::string input : {"quads", "jagged"}) {
-        print_ratio(input + ": hmira halfedge_mesh / CGAL triangulate_faces", input + "/hmira/halfedge_mesh", input + "/cgal/triangulate_faces", 1.0);
-        print_ratio(input + ": hmira on CGAL / hmira halfedge_mesh", input + "/hmira/cgal_surface_mesh", input + "/hmira/halfedge_mesh", 1.1);
+        print_ratio(input + ": hmira halfedge_mesh / CGAL triangulate_faces", input + "/hmira/halfedge_mesh",
+                    input + "/cgal/triangulate_faces", 1.0);
+        print_ratio(input + ": hmira on CGAL / hmira halfedge_mesh", input + "/hmira/cgal_surface_mesh",
+                    input + "/hmira/halfedge_mesh", 1.1);
     }
-    print_ratio("quads: hmira on OpenMesh / hmira halfedge_mesh", "quads/hmira/openmesh_poly", "quads/hmira/halfedge_mesh", 1.1);
-    print_ratio("quads: hmira halfedge_mesh / OpenMesh fan (not exact)", "quads/hmira/halfedge_mesh", "quads/openmesh/triangulate", 1.0);
+    print_ratio("quads: hmira on OpenMesh / hmira halfedge_mesh", "quads/hmira/openmesh_poly",
+                "quads/hmira/halfedge_mesh", 1.1);
+    print_ratio("quads: hmira halfedge_mesh / OpenMesh fan (not exact)", "quads/hmira/halfedge_mesh",
+                "quads/openmesh/triangulate", 1.0);
     benchmark::Shutdown();
     return 0;
 }

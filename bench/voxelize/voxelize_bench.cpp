@@ -72,8 +72,10 @@ void bm_voxelize(benchmark::State& state, std::string name, std::size_t res, hmi
     const auto geo = *hmira::voxel_grid_around(m, res, 1);
     for (auto _ : state) {
         auto v = hmira::voxelize(m, geo, {.mode = mode, .allow_degenerate = true, .threads = threads});
-        if (!v || !v->filled) state.SkipWithError("not filled");
-        else benchmark::DoNotOptimize(v->voxels.words().data());
+        if (!v || !v->filled)
+            state.SkipWithError("not filled");
+        else
+            benchmark::DoNotOptimize(v->voxels.words().data());
     }
     // Counted outside the timed loop: the peers' times do not include counting either.
     auto v = hmira::voxelize(m, geo, {.mode = mode, .allow_degenerate = true, .threads = threads});
@@ -103,13 +105,15 @@ int export_meshes(const std::filesystem::path& dir) {
             auto surface = hmira::voxelize(m, geo, {.mode = hmira::voxelize_mode::surface, .allow_degenerate = true});
             auto centres = hmira::voxelize(m, geo, {.mode = hmira::voxelize_mode::centres, .allow_degenerate = true});
             {
-                std::ofstream bits(dir / (std::string(name) + "_" + std::to_string(res) + ".centres"), std::ios::binary);
+                std::ofstream bits(dir / (std::string(name) + "_" + std::to_string(res) + ".centres"),
+                                   std::ios::binary);
                 const auto w = centres->voxels.words();
                 bits.write(reinterpret_cast<const char*>(w.data()), std::streamsize(w.size() * sizeof(std::uint64_t)));
             }
-            manifest << name << ' ' << res << ' ' << m.vertex_count() << ' ' << m.face_count() << ' ' << geo.dims[0] << ' '
-                     << geo.dims[1] << ' ' << geo.dims[2] << ' ' << geo.origin.x << ' ' << geo.origin.y << ' ' << geo.origin.z
-                     << ' ' << geo.spacing.x << ' ' << solid->voxels.count() << ' ' << surface->voxels.count() << ' ' << centres->voxels.count() << '\n';
+            manifest << name << ' ' << res << ' ' << m.vertex_count() << ' ' << m.face_count() << ' ' << geo.dims[0]
+                     << ' ' << geo.dims[1] << ' ' << geo.dims[2] << ' ' << geo.origin.x << ' ' << geo.origin.y << ' '
+                     << geo.origin.z << ' ' << geo.spacing.x << ' ' << solid->voxels.count() << ' '
+                     << surface->voxels.count() << ' ' << centres->voxels.count() << '\n';
         }
     }
     return 0;
@@ -120,19 +124,19 @@ int export_meshes(const std::filesystem::path& dir) {
 int main(int argc, char** argv) {
     for (int a = 1; a + 1 < argc; ++a)
         if (std::strcmp(argv[a], "--export") == 0) return export_meshes(argv[a + 1]);
-    const std::pair<const char*, hmira::voxelize_mode> modes[] = {{"hmira_voxelize", hmira::voxelize_mode::solid},
-                                                                  {"hmira_voxelize_centres", hmira::voxelize_mode::centres}};
+    const std::pair<const char*, hmira::voxelize_mode> modes[] = {
+        {"hmira_voxelize", hmira::voxelize_mode::solid}, {"hmira_voxelize_centres", hmira::voxelize_mode::centres}};
     for (const auto& [prefix, mode] : modes)
-    for (const char* name : meshes)
-        for (std::size_t res : resolutions)
-            benchmark::RegisterBenchmark((std::string(prefix) + "/" + name + "/" + std::to_string(res)).c_str(), bm_voxelize,
-                                         std::string(name), res, mode)
-                ->Arg(1)
-                ->Arg(2)
-                ->Unit(benchmark::kMillisecond)
-                ->MinTime(0.5)
-                ->UseRealTime()
-                ->MeasureProcessCPUTime();  // cpu_time: all threads, comparable with the peers' process time
+        for (const char* name : meshes)
+            for (std::size_t res : resolutions)
+                benchmark::RegisterBenchmark((std::string(prefix) + "/" + name + "/" + std::to_string(res)).c_str(),
+                                             bm_voxelize, std::string(name), res, mode)
+                    ->Arg(1)
+                    ->Arg(2)
+                    ->Unit(benchmark::kMillisecond)
+                    ->MinTime(0.5)
+                    ->UseRealTime()
+                    ->MeasureProcessCPUTime();  // cpu_time: all threads, comparable with the peers' process time
     benchmark::Initialize(&argc, argv);
     benchmark::RunSpecifiedBenchmarks();
     benchmark::Shutdown();

@@ -40,6 +40,7 @@ int main() {
     user_mesh m;
     if (!hmira::generate_cube(m)) return 1;
     const auto t = hmira::mesh_topology(m);
-    std::printf("consumer: cube through installed hmira: V=%zu E=%zu F=%zu chi=%lld\n", t.vertices, t.edges, t.faces, t.euler_characteristic);
+    std::printf("consumer: cube through installed hmira: V=%zu E=%zu F=%zu chi=%lld\n", t.vertices, t.edges, t.faces,
+                t.euler_characteristic);
     return t.euler_characteristic == 2 ? 0 : 1;
 }

@@ -34,8 +34,8 @@ bool save(const mesh& m, const std::filesystem::path& dir, const std::string& na
         std::fprintf(stderr, "%s: %s\n", name.c_str(), w.error().message.c_str());
         return false;
     }
-    std::printf("%-18s V %5zu  E %5zu  F %5zu  -> %s\n", name.c_str(), T::vertex_count(m), T::edge_count(m), T::face_count(m),
-                path.string().c_str());
+    std::printf("%-18s V %5zu  E %5zu  F %5zu  -> %s\n", name.c_str(), T::vertex_count(m), T::edge_count(m),
+                T::face_count(m), path.string().c_str());
     return true;
 }
 
@@ -65,7 +65,8 @@ int main(int argc, char** argv) {
     }
     {  // One edge rounded with 6 segments.
         auto m = cube();
-        ok &= hmira::bevel(m, *T::edges(m).begin(), {.width = 0.5, .segments = 6}).has_value() && save(m, dir, "rounded_edge_cube");
+        ok &= hmira::bevel(m, *T::edges(m).begin(), {.width = 0.5, .segments = 6}).has_value() &&
+              save(m, dir, "rounded_edge_cube");
     }
     {  // Every edge rounded with 4 segments: a rounded cube with spherical corner patches.
         auto m = cube();
@@ -80,7 +81,7 @@ int main(int argc, char** argv) {
         ok &= r.has_value() && save(m, dir, "extruded_cube");
     }
     {  // A pocket: chamfer the rim of one face, then push the face into the solid. (Pushing a
-       // whole cube face in would put the pocket walls in the planes of the side faces.)
+        // whole cube face in would put the pocket walls in the planes of the side faces.)
         auto m = cube();
         const auto f = *T::faces(m).begin();
         std::vector<T::edge_handle> rim;

@@ -46,8 +46,8 @@ trimesh make_torus(int n, int m) {
     for (int i = 0; i < n; ++i)
         for (int j = 0; j < m; ++j) {
             const double u = 2 * std::numbers::pi * i / n, v = 2 * std::numbers::pi * j / m;
-            t.add_vertex({float((big_r + small_r * std::cos(v)) * std::cos(u)), float((big_r + small_r * std::cos(v)) * std::sin(u)),
-                          float(small_r * std::sin(v))});
+            t.add_vertex({float((big_r + small_r * std::cos(v)) * std::cos(u)),
+                          float((big_r + small_r * std::cos(v)) * std::sin(u)), float(small_r * std::sin(v))});
         }
     auto id = [&](int i, int j) { return (i % n) * m + (j % m); };
     for (int i = 0; i < n; ++i)
@@ -64,7 +64,8 @@ trimesh make_torus(int n, int m) {
 template <class M, class T = hmira::default_traits<M>>
     requires hmira::vertex_adjacency_mesh<M, T> && hmira::vertex_face_adjacency_mesh<M, T> &&
              hmira::face_adjacency_mesh<M, T>
-std::array<long long, 3> neighbourhood_sums(const M& mesh, const std::vector<int>& vertices, const std::vector<int>& faces) {
+std::array<long long, 3> neighbourhood_sums(const M& mesh, const std::vector<int>& vertices,
+                                            const std::vector<int>& faces) {
     std::array<long long, 3> sum{};
     for (int v : vertices)
         for (auto w : T::adjacent_vertices(mesh, v)) sum[0] += w;
@@ -124,7 +125,8 @@ int main() {
         for (int j = 0; j < m; ++j) {
             const double u = 2 * std::numbers::pi * i / n, v = 2 * std::numbers::pi * j / m;
             const auto& q = normals[static_cast<std::size_t>(i * m + j)];
-            worst = std::min(worst, q.x * std::cos(v) * std::cos(u) + q.y * std::cos(v) * std::sin(u) + q.z * std::sin(v));
+            worst =
+                std::min(worst, q.x * std::cos(v) * std::cos(u) + q.y * std::cos(v) * std::sin(u) + q.z * std::sin(v));
         }
     std::printf("  vertex_normals: worst cosine to the analytic normal %.6f\n", worst);
     check(worst > 0.999, "vertex_normals() on float coordinates matches the analytic torus normals");
@@ -170,8 +172,9 @@ int main() {
 
     const double per_native = native_query / queries_all * 1e9, per_indexed = indexed_query / queries_all * 1e9;
     const double per_brute = brute_query / queries_some * 1e9;
-    std::printf("\n  cost of one neighbourhood query (V_adjacentV, F_adjacentV, F_adjacentF), %zu vertices, %zu faces:\n",
-                all_v.size(), all_f.size());
+    std::printf(
+        "\n  cost of one neighbourhood query (V_adjacentV, F_adjacentV, F_adjacentF), %zu vertices, %zu faces:\n",
+        all_v.size(), all_f.size());
     std::printf("  %-26s %14s %14s %18s\n", "", "native arrays", "indexed adapt", "brute-force adapt");
     std::printf("  %-26s %14.1f %14.1f %18.0f\n", "ns per query", per_native, per_indexed, per_brute);
     std::printf("  %-26s %14.2f %14.2f %18s\n", "build once (ms)", native_build * 1e3, indexed_build * 1e3, "0");
@@ -194,8 +197,16 @@ int main() {
     // An edit leaves the native arrays empty and the indexed adapters stale: both refuse.
     mesh.add_vertex({0, 0, 9});
     bool native_refused = false, index_refused = false;
-    try { (void)hmira::mesh_traits<trimesh>::adjacent_vertices(mesh, 0); } catch (const hmira::hmira_error&) { native_refused = true; }
-    try { (void)hmira::default_traits<decltype(*by_index)>::adjacent_vertices(*by_index, 0); } catch (const hmira::hmira_error&) { index_refused = true; }
+    try {
+        (void)hmira::mesh_traits<trimesh>::adjacent_vertices(mesh, 0);
+    } catch (const hmira::hmira_error&) {
+        native_refused = true;
+    }
+    try {
+        (void)hmira::default_traits<decltype(*by_index)>::adjacent_vertices(*by_index, 0);
+    } catch (const hmira::hmira_error&) {
+        index_refused = true;
+    }
     check(native_refused && index_refused, "after an edit, stale connectivity throws instead of answering");
 
     std::printf("%s\n", failures == 0 ? "all checks passed" : "SOME CHECKS FAILED");

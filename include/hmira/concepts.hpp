@@ -24,8 +24,7 @@ namespace hmira {
 /// A forward range whose elements convert to Handle. Views returned by traits must own or
 /// reference the mesh, never a temporary, so they stay valid while the mesh is unchanged.
 template <class R, class Handle>
-concept range_of_handles =
-    std::ranges::forward_range<R> && std::convertible_to<std::ranges::range_value_t<R>, Handle>;
+concept range_of_handles = std::ranges::forward_range<R> && std::convertible_to<std::ranges::range_value_t<R>, Handle>;
 
 // ---------------------------------------------------------------------------------------------
 // Types
@@ -33,11 +32,12 @@ concept range_of_handles =
 /// T names the element types: `vertex_handle`, `face_handle` (both regular: copyable,
 /// default-constructible, equality-comparable) and the coordinate type `scalar`.
 template <class M, class T = default_traits<M>>
-concept mesh_element_types = requires {
-    typename T::vertex_handle;
-    typename T::face_handle;
-    typename T::scalar;
-} && std::regular<typename T::vertex_handle> && std::regular<typename T::face_handle> &&
+concept mesh_element_types =
+    requires {
+        typename T::vertex_handle;
+        typename T::face_handle;
+        typename T::scalar;
+    } && std::regular<typename T::vertex_handle> && std::regular<typename T::face_handle> &&
     std::floating_point<typename T::scalar>;
 
 // ---------------------------------------------------------------------------------------------
@@ -62,13 +62,12 @@ concept face_list_mesh = mesh_element_types<M, T> && requires(const M& m) {
 /// `[0]` and `[1]` (for example std::array).
 template <class M, class T = default_traits<M>>
 concept edge_list_mesh = mesh_element_types<M, T> && requires { typename T::edge_handle; } &&
-    std::regular<typename T::edge_handle> &&
-    requires(const M& m, typename T::edge_handle e) {
-        { T::edges(m) } -> range_of_handles<typename T::edge_handle>;
-        { T::edge_count(m) } -> std::convertible_to<std::size_t>;
-        { T::edge_vertices(m, e)[0] } -> std::convertible_to<typename T::vertex_handle>;
-        { T::edge_vertices(m, e)[1] } -> std::convertible_to<typename T::vertex_handle>;
-    };
+                         std::regular<typename T::edge_handle> && requires(const M& m, typename T::edge_handle e) {
+                             { T::edges(m) } -> range_of_handles<typename T::edge_handle>;
+                             { T::edge_count(m) } -> std::convertible_to<std::size_t>;
+                             { T::edge_vertices(m, e)[0] } -> std::convertible_to<typename T::vertex_handle>;
+                             { T::edge_vertices(m, e)[1] } -> std::convertible_to<typename T::vertex_handle>;
+                         };
 
 // ---------------------------------------------------------------------------------------------
 // Dense indices: algorithms keep per-element scratch data in plain arrays. An index lies in
@@ -113,7 +112,8 @@ concept positioned_mesh = vertex_list_mesh<M, T> && requires(const M& m, typenam
 
 /// `T::set_position(m, v, p)` moves a vertex.
 template <class M, class T = default_traits<M>>
-concept position_mutable_mesh = positioned_mesh<M, T> &&
+concept position_mutable_mesh =
+    positioned_mesh<M, T> &&
     requires(M& m, typename T::vertex_handle v, vec3<typename T::scalar> p) { T::set_position(m, v, p); };
 
 /// `T::adjacent_vertices(m, v)`: the vertices sharing an edge with v. Allowed: O(V_adjacentV).
@@ -124,8 +124,8 @@ concept vertex_adjacency_mesh = vertex_list_mesh<M, T> && requires(const M& m, t
 
 /// `T::vertex_faces(m, v)`: the faces around v. Allowed: O(F_adjacentV).
 template <class M, class T = default_traits<M>>
-concept vertex_face_adjacency_mesh = vertex_list_mesh<M, T> && face_list_mesh<M, T> &&
-    requires(const M& m, typename T::vertex_handle v) {
+concept vertex_face_adjacency_mesh =
+    vertex_list_mesh<M, T> && face_list_mesh<M, T> && requires(const M& m, typename T::vertex_handle v) {
         { T::vertex_faces(m, v) } -> range_of_handles<typename T::face_handle>;
     };
 
@@ -151,8 +151,8 @@ template <class M, class T = default_traits<M>>
 concept halfedge_navigable_mesh =
     vertex_list_mesh<M, T> && face_list_mesh<M, T> && edge_list_mesh<M, T> &&
     requires { typename T::halfedge_handle; } && std::regular<typename T::halfedge_handle> &&
-    requires(const M& m, typename T::halfedge_handle h, typename T::vertex_handle v,
-             typename T::face_handle f, typename T::edge_handle e) {
+    requires(const M& m, typename T::halfedge_handle h, typename T::vertex_handle v, typename T::face_handle f,
+             typename T::edge_handle e) {
         { T::next(m, h) } -> std::convertible_to<typename T::halfedge_handle>;
         { T::prev(m, h) } -> std::convertible_to<typename T::halfedge_handle>;
         { T::opposite(m, h) } -> std::convertible_to<typename T::halfedge_handle>;
@@ -190,10 +190,10 @@ concept inner_ring_mesh = halfedge_navigable_mesh<M, T> && requires(const M& m, 
 /// (an error, and the mesh unchanged, when the face cannot be added).
 template <class M, class T = default_traits<M>>
 concept mesh_builder = mesh_element_types<M, T> &&
-    requires(M& m, vec3<typename T::scalar> p, std::span<const typename T::vertex_handle> vs) {
-        { T::add_vertex(m, p) } -> std::convertible_to<typename T::vertex_handle>;
-        { T::add_face(m, vs) } -> std::same_as<result<typename T::face_handle>>;
-    };
+                       requires(M& m, vec3<typename T::scalar> p, std::span<const typename T::vertex_handle> vs) {
+                           { T::add_vertex(m, p) } -> std::convertible_to<typename T::vertex_handle>;
+                           { T::add_face(m, vs) } -> std::same_as<result<typename T::face_handle>>;
+                       };
 
 /// A mesh that may hold faces of any degree. A triangle-only model declares
 /// `static constexpr bool triangles_only = true;` in its traits and is rejected by the
@@ -204,9 +204,8 @@ concept polygon_mesh_builder = mesh_builder<M, T> && !requires { requires T::tri
 /// `T::reverse_face(m, f)` reverses one face's vertex order in place. Only a model without
 /// shared connectivity (face-vertex) can do this face by face.
 template <class M, class T = default_traits<M>>
-concept face_reversible_mesh = face_list_mesh<M, T> && requires(M& m, typename T::face_handle f) {
-    T::reverse_face(m, f);
-};
+concept face_reversible_mesh =
+    face_list_mesh<M, T> && requires(M& m, typename T::face_handle f) { T::reverse_face(m, f); };
 
 /// The low-level halfedge mutation that Euler operators and orientation changes are written
 /// against; none of them keeps the mesh consistent by itself:
@@ -218,7 +217,8 @@ concept face_reversible_mesh = face_list_mesh<M, T> && requires(M& m, typename T
 ///   model may reuse one of the element's links for its free list, as halfedge_mesh and CGAL
 ///   do, so read an element's links before erasing it).
 template <class M, class T = default_traits<M>>
-concept halfedge_mutable_mesh = halfedge_navigable_mesh<M, T> &&
+concept halfedge_mutable_mesh =
+    halfedge_navigable_mesh<M, T> &&
     requires(M& m, typename T::halfedge_handle h, typename T::vertex_handle v, typename T::face_handle f,
              typename T::edge_handle e, vec3<typename T::scalar> p) {
         T::set_next(m, h, h);
@@ -238,10 +238,10 @@ concept halfedge_mutable_mesh = halfedge_navigable_mesh<M, T> &&
 /// `T::remove_inner_ring(m, f, h)`.
 template <class M, class T = default_traits<M>>
 concept inner_ring_mutable_mesh = inner_ring_mesh<M, T> && halfedge_mutable_mesh<M, T> &&
-    requires(M& m, typename T::face_handle f, typename T::halfedge_handle h) {
-        T::add_inner_ring(m, f, h);
-        T::remove_inner_ring(m, f, h);
-    };
+                                  requires(M& m, typename T::face_handle f, typename T::halfedge_handle h) {
+                                      T::add_inner_ring(m, f, h);
+                                      T::remove_inner_ring(m, f, h);
+                                  };
 
 /// `T::remove_face(m, f)` removes one face and keeps its vertices, returning result<void>
 /// (an error, and the mesh unchanged, for a face that does not exist). The way a model
@@ -255,8 +255,8 @@ concept face_removal_mesh = face_list_mesh<M, T> && requires(M& m, typename T::f
 /// `T::remove_vertex(m, v)` removes a vertex and every face that uses it, returning
 /// result<void> (an error, and the mesh unchanged, for a vertex that does not exist).
 template <class M, class T = default_traits<M>>
-concept vertex_removal_mesh = vertex_list_mesh<M, T> && face_list_mesh<M, T> &&
-    requires(M& m, typename T::vertex_handle v) {
+concept vertex_removal_mesh =
+    vertex_list_mesh<M, T> && face_list_mesh<M, T> && requires(M& m, typename T::vertex_handle v) {
         { T::remove_vertex(m, v) } -> std::same_as<result<void>>;
     };
 
@@ -308,8 +308,9 @@ consteval bool checked_hook() {
     if constexpr (H == hook::reserve)
         static_assert(ok, "the traits list hook::reserve, but T::reserve(m, vertices, edges, faces) does not match");
     else if constexpr (H == hook::bulk_growth)
-        static_assert(ok, "the traits list hook::bulk_growth, but T::resize(m, vertices, edges, faces), "
-                          "T::vertex_at(m, i), T::edge_at(m, i) or T::face_at(m, i) does not match");
+        static_assert(ok,
+                      "the traits list hook::bulk_growth, but T::resize(m, vertices, edges, faces), "
+                      "T::vertex_at(m, i), T::edge_at(m, i) or T::face_at(m, i) does not match");
     else if constexpr (H == hook::reverse_orientation)
         static_assert(ok, "the traits list hook::reverse_orientation, but T::reverse_orientation(m) does not match");
     else if constexpr (H == hook::prepare_erase)
@@ -317,8 +318,9 @@ consteval bool checked_hook() {
     else if constexpr (H == hook::remove_vertices)
         static_assert(ok, "the traits list hook::remove_vertices, but T::remove_vertices(m, vertices) does not match");
     else if constexpr (H == hook::restore_vertex_halfedge)
-        static_assert(ok, "the traits list hook::restore_vertex_halfedge, but T::stored_vertex_halfedge(m, v) or "
-                          "T::restore_vertex_halfedge(m, v, h) does not match");
+        static_assert(ok,
+                      "the traits list hook::restore_vertex_halfedge, but T::stored_vertex_halfedge(m, v) or "
+                      "T::restore_vertex_halfedge(m, v, h) does not match");
     else if constexpr (H == hook::is_removed)
         static_assert(ok, "the traits list hook::is_removed, but T::is_removed(m, x) does not match");
     return found;
@@ -329,54 +331,58 @@ consteval bool checked_hook() {
 /// `T::reserve(m, vertices, edges, faces)` makes room for those index bounds, so that a
 /// growing algorithm never reallocates half way. Only capacity changes.
 template <class M, class T = default_traits<M>>
-concept reservable_mesh = detail::checked_hook<T, hook::reserve,
-    (requires(M& m, std::size_t n) { T::reserve(m, n, n, n); })>();
+concept reservable_mesh =
+    detail::checked_hook<T, hook::reserve, (requires(M& m, std::size_t n) { T::reserve(m, n, n, n); })>();
 
 /// `T::resize(m, vertices, edges, faces)` appends unlinked elements up to those index bounds,
 /// and `T::vertex_at(m, i)`, `T::edge_at(m, i)`, `T::face_at(m, i)` name an element by its
 /// index: new elements in blocks instead of one traits add at a time (OpenMesh, Surface_mesh).
 template <class M, class T = default_traits<M>>
 concept bulk_growable_mesh = detail::checked_hook<T, hook::bulk_growth, (requires(M& m, const M& cm, std::size_t n) {
-    T::resize(m, n, n, n);
-    { T::vertex_at(cm, n) } -> std::same_as<typename T::vertex_handle>;
-    { T::edge_at(cm, n) } -> std::same_as<typename T::edge_handle>;
-    { T::face_at(cm, n) } -> std::same_as<typename T::face_handle>;
-})>();
+                                                      T::resize(m, n, n, n);
+                                                      {
+                                                          T::vertex_at(cm, n)
+                                                      } -> std::same_as<typename T::vertex_handle>;
+                                                      { T::edge_at(cm, n) } -> std::same_as<typename T::edge_handle>;
+                                                      { T::face_at(cm, n) } -> std::same_as<typename T::face_handle>;
+                                                  })>();
 
 /// `T::reverse_orientation(m)` reverses every face in one pass over the model's own storage.
 template <class M, class T = default_traits<M>>
-concept orientation_reversible_mesh = detail::checked_hook<T, hook::reverse_orientation,
-    (requires(M& m) { T::reverse_orientation(m); })>();
+concept orientation_reversible_mesh =
+    detail::checked_hook<T, hook::reverse_orientation, (requires(M& m) { T::reverse_orientation(m); })>();
 
 /// `T::prepare_erase(m)` readies the model for erasures that a rollback may undo (OpenMesh
 /// requests its status flags once, before the first change, instead of inside the edit).
 template <class M, class T = default_traits<M>>
-concept erase_preparing_mesh = detail::checked_hook<T, hook::prepare_erase,
-    (requires(M& m) { T::prepare_erase(m); })>();
+concept erase_preparing_mesh =
+    detail::checked_hook<T, hook::prepare_erase, (requires(M& m) { T::prepare_erase(m); })>();
 
 /// `T::remove_vertices(m, vertices)`, with `vertices` a std::span<const vertex_handle>,
 /// removes them all in one pass, returning result<void>.
 template <class M, class T = default_traits<M>>
-concept bulk_vertex_removal_mesh = detail::checked_hook<T, hook::remove_vertices,
-    (requires(M& m, std::span<const typename T::vertex_handle> vs) {
-        { T::remove_vertices(m, vs) } -> std::same_as<result<void>>;
-    })>();
+concept bulk_vertex_removal_mesh =
+    detail::checked_hook<T, hook::remove_vertices, (requires(M& m, std::span<const typename T::vertex_handle> vs) {
+                             { T::remove_vertices(m, vs) } -> std::same_as<result<void>>;
+                         })>();
 
 /// `T::stored_vertex_halfedge(m, v)` reads the halfedge the model stores for v (which may
 /// differ from vertex_halfedge: CGAL keeps an incoming one) and
 /// `T::restore_vertex_halfedge(m, v, h)` writes such a value back, so a rollback restores the
 /// model's storage exactly.
 template <class M, class T = default_traits<M>>
-concept vertex_halfedge_restorable_mesh = detail::checked_hook<T, hook::restore_vertex_halfedge,
-    (requires(M& m, typename T::vertex_handle v, typename T::halfedge_handle h) {
-        { T::stored_vertex_halfedge(m, v) } -> std::convertible_to<typename T::halfedge_handle>;
-        T::restore_vertex_halfedge(m, v, h);
-    })>();
+concept vertex_halfedge_restorable_mesh =
+    detail::checked_hook<T, hook::restore_vertex_halfedge,
+                         (requires(M& m, typename T::vertex_handle v, typename T::halfedge_handle h) {
+                             { T::stored_vertex_halfedge(m, v) } -> std::convertible_to<typename T::halfedge_handle>;
+                             T::restore_vertex_halfedge(m, v, h);
+                         })>();
 
 /// `T::is_removed(m, x)` tells whether the element x (a handle of type Handle) was erased.
 template <class M, class T, class Handle>
-concept removal_queryable_mesh = detail::checked_hook<T, hook::is_removed,
-    (requires(const M& m, Handle x) { { T::is_removed(m, x) } -> std::convertible_to<bool>; })>();
+concept removal_queryable_mesh = detail::checked_hook<T, hook::is_removed, (requires(const M& m, Handle x) {
+                                                          { T::is_removed(m, x) } -> std::convertible_to<bool>;
+                                                      })>();
 
 /// A triangle-only model: its traits declare `static constexpr bool triangles_only = true;`.
 template <class M, class T = default_traits<M>>
@@ -386,6 +392,8 @@ concept triangle_only_mesh = requires { requires T::triangles_only; };
 /// next inner operator call of an edit fail as if its precondition had not held. No real
 /// model has it.
 template <class T>
-concept fault_injecting_traits = requires { { T::fail_inner_call() } -> std::convertible_to<bool>; };
+concept fault_injecting_traits = requires {
+    { T::fail_inner_call() } -> std::convertible_to<bool>;
+};
 
 }  // namespace hmira

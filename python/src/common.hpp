@@ -99,7 +99,9 @@ inline double& last_cpp_seconds() {
 /// Times its scope into last_cpp_seconds().
 struct cpp_timer {
     std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
-    ~cpp_timer() { last_cpp_seconds() = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); }
+    ~cpp_timer() {
+        last_cpp_seconds() = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    }
 };
 
 /// The value of an option enum named by `name` (core/enum_names.hpp), or ValueError listing

@@ -106,7 +106,8 @@ struct strided_view {
     vec3<double> origin() const { return at; }
     vec3<double> spacing() const { return step; }
     double value(std::size_t i, std::size_t j, std::size_t k) const {
-        return static_cast<double>(samples[std::int64_t(i) * stride[0] + std::int64_t(j) * stride[1] + std::int64_t(k) * stride[2]]);
+        return static_cast<double>(
+            samples[std::int64_t(i) * stride[0] + std::int64_t(j) * stride[1] + std::int64_t(k) * stride[2]]);
     }
     std::string sample_name(std::size_t i, std::size_t j, std::size_t k) const {
         return "volume[" + std::to_string(i) + ", " + std::to_string(j) + ", " + std::to_string(k) + "]";
@@ -114,7 +115,8 @@ struct strided_view {
 };
 
 vec3<double> triple(const std::vector<double>& v, const char* name) {
-    if (v.size() != 3) value_error(std::string("marching_cubes: ") + name + " needs 3 values, got " + std::to_string(v.size()));
+    if (v.size() != 3)
+        value_error(std::string("marching_cubes: ") + name + " needs 3 values, got " + std::to_string(v.size()));
     return {v[0], v[1], v[2]};
 }
 
@@ -122,8 +124,8 @@ using mc_volume = nb::ndarray<nb::ro, nb::ndim<3>, nb::device::cpu>;
 
 template <class V>
 hmira::result<hmira::indexed_triangles<double>> extract(const mc_volume& volume, const vec3<double>& spacing,
-                                                        const vec3<double>& origin, const hmira::marching_cubes_options& options,
-                                                        bool& swapped) {
+                                                        const vec3<double>& origin,
+                                                        const hmira::marching_cubes_options& options, bool& swapped) {
     const auto* p = static_cast<const V*>(volume.data());
     const std::size_t n0 = volume.shape(0), n1 = volume.shape(1), n2 = volume.shape(2);
     const std::int64_t s0 = volume.stride(0), s1 = volume.stride(1), s2 = volume.stride(2);
@@ -138,7 +140,8 @@ hmira::result<hmira::indexed_triangles<double>> extract(const mc_volume& volume,
     if (fits(n2, s2, 1) && fits(n1, s1, std::int64_t(n2)) && fits(n0, s0, std::int64_t(n1 * n2))) {
         // C order: the grid's x is array axis 2; the caller swaps columns 0 and 2 back.
         swapped = true;
-        const contiguous_view<V> g{p, {n2, n1, n0}, {origin.z, origin.y, origin.x}, {spacing.z, spacing.y, spacing.x}, true};
+        const contiguous_view<V> g{
+            p, {n2, n1, n0}, {origin.z, origin.y, origin.x}, {spacing.z, spacing.y, spacing.x}, true};
         return hmira::marching_cubes_indexed<double>(g, options);
     }
     const strided_view<V> g{p, {n0, n1, n2}, {s0, s1, s2}, origin, spacing};
@@ -149,7 +152,10 @@ nb::tuple marching_cubes(const mc_volume& volume, double iso, const std::vector<
                          const std::vector<double>& origin, const std::string& inside, unsigned threads) {
     const auto sp = triple(spacing, "spacing"), org = triple(origin, "origin");
     interrupt_watch watch;
-    hmira::marching_cubes_options options{.iso = iso, .inside = choice_arg<hmira::iso_inside>(inside, "marching_cubes", "inside"), .normals = false, .threads = threads,
+    hmira::marching_cubes_options options{.iso = iso,
+                                          .inside = choice_arg<hmira::iso_inside>(inside, "marching_cubes", "inside"),
+                                          .normals = false,
+                                          .threads = threads,
                                           .progress = watch.callback()};
     const auto dt = volume.dtype();
     hmira::result<hmira::indexed_triangles<double>> r = hmira::fail(hmira::errc::invalid_argument, "");
@@ -157,17 +163,25 @@ nb::tuple marching_cubes(const mc_volume& volume, double iso, const std::vector<
     {
         nb::gil_scoped_release release;
         cpp_timer timer;
-        if (dt == nb::dtype<float>()) r = extract<float>(volume, sp, org, options, swapped);
-        else if (dt == nb::dtype<double>()) r = extract<double>(volume, sp, org, options, swapped);
-        else if (dt == nb::dtype<std::uint8_t>()) r = extract<std::uint8_t>(volume, sp, org, options, swapped);
-        else if (dt == nb::dtype<std::uint16_t>()) r = extract<std::uint16_t>(volume, sp, org, options, swapped);
-        else if (dt == nb::dtype<std::int16_t>()) r = extract<std::int16_t>(volume, sp, org, options, swapped);
-        else r = hmira::fail(hmira::errc::invalid_argument, "marching_cubes: volume dtype must be float32, float64, uint8, uint16 or int16");
+        if (dt == nb::dtype<float>())
+            r = extract<float>(volume, sp, org, options, swapped);
+        else if (dt == nb::dtype<double>())
+            r = extract<double>(volume, sp, org, options, swapped);
+        else if (dt == nb::dtype<std::uint8_t>())
+            r = extract<std::uint8_t>(volume, sp, org, options, swapped);
+        else if (dt == nb::dtype<std::uint16_t>())
+            r = extract<std::uint16_t>(volume, sp, org, options, swapped);
+        else if (dt == nb::dtype<std::int16_t>())
+            r = extract<std::int16_t>(volume, sp, org, options, swapped);
+        else
+            r = hmira::fail(hmira::errc::invalid_argument,
+                            "marching_cubes: volume dtype must be float32, float64, uint8, uint16 or int16");
     }
     watch.rethrow();
     auto tri = take(std::move(r));
     if (tri.positions.size() > std::size_t(std::numeric_limits<std::int32_t>::max()))
-        value_error("marching_cubes: " + std::to_string(tri.positions.size()) + " vertices do not fit int32 face indices (at most 2^31 - 1)");
+        value_error("marching_cubes: " + std::to_string(tri.positions.size()) +
+                    " vertices do not fit int32 face indices (at most 2^31 - 1)");
     if (swapped) {
         // Swapping two axes mirrors the surface: swap the coordinates back and reverse each
         // triangle so that it still winds counter-clockwise seen from outside.
@@ -175,12 +189,12 @@ nb::tuple marching_cubes(const mc_volume& volume, double iso, const std::vector<
         for (auto& t : tri.triangles) std::swap(t[1], t[2]);
     }
     const std::size_t nv = tri.positions.size(), nt = tri.triangles.size();
-    static_assert(sizeof(vec3<double>) == 3 * sizeof(double) && sizeof(std::array<std::uint32_t, 3>) == 3 * sizeof(std::int32_t));
+    static_assert(sizeof(vec3<double>) == 3 * sizeof(double) &&
+                  sizeof(std::array<std::uint32_t, 3>) == 3 * sizeof(std::int32_t));
     auto vertices = adopt<double>(std::move(tri.positions), {nv, 3});
     auto faces = adopt<std::int32_t>(std::move(tri.triangles), {nt, 3});
     return nb::make_tuple(vertices, faces);
 }
-
 
 /// (V, F) numpy arrays seen as a mesh in place, without building one: what voxelize reads
 /// when the faces come as an (m, k) integer array. The indices must have been checked.
@@ -206,7 +220,9 @@ struct array_mesh_traits {
     static std::span<const I> face_vertices(const M& m, std::size_t f) {
         return {m.corners + f * m.corners_per_face, m.corners_per_face};
     }
-    static vec3<double> position(const M& m, std::size_t v) { return {m.points[3 * v], m.points[3 * v + 1], m.points[3 * v + 2]}; }
+    static vec3<double> position(const M& m, std::size_t v) {
+        return {m.points[3 * v], m.points[3 * v + 1], m.points[3 * v + 2]};
+    }
     static std::size_t vertex_index(const M&, std::size_t v) { return v; }
     static std::size_t vertex_index_bound(const M& m) { return m.vertices; }
 };
@@ -225,8 +241,8 @@ void check_corners(const I* corners, std::size_t faces, std::size_t k, std::size
             }
     }
     if (bad < faces * k)
-        value_error(std::string(who) + ": face " + std::to_string(bad / k) + " uses vertex " + std::to_string(corners[bad]) +
-                    ", out of range [0, " + std::to_string(vertices) + ")");
+        value_error(std::string(who) + ": face " + std::to_string(bad / k) + " uses vertex " +
+                    std::to_string(corners[bad]) + ", out of range [0, " + std::to_string(vertices) + ")");
 }
 
 /// The first vertex with a NaN or infinite coordinate, as a ValueError naming it (as to_soup).
@@ -240,13 +256,15 @@ void check_points(const double* points, std::size_t vertices, const char* who) {
                 break;
             }
     }
-    if (bad < vertices) value_error(std::string(who) + ": vertex " + std::to_string(bad) + " has a non-finite coordinate");
+    if (bad < vertices)
+        value_error(std::string(who) + ": vertex " + std::to_string(bad) + " has a non-finite coordinate");
 }
 
 /// The grid hmira.voxelize uses: `resolution` voxels (256 by default) along the longest side
 /// plus two empty layers, or voxels of size `pitch` over the same centred box.
 template <class M, class T>
-hmira::result<hmira::grid_geometry> voxel_grid_for(const M& mesh, std::optional<std::size_t> resolution, std::optional<double> pitch) {
+hmira::result<hmira::grid_geometry> voxel_grid_for(const M& mesh, std::optional<std::size_t> resolution,
+                                                   std::optional<double> pitch) {
     auto g = hmira::voxel_grid_around<M, T>(mesh, resolution.value_or(256), 2);
     if (!g || !pitch) return g;
     hmira::grid_geometry geometry = *g;
@@ -255,7 +273,9 @@ hmira::result<hmira::grid_geometry> voxel_grid_for(const M& mesh, std::optional<
         const double centre = g->origin[a] + 0.5 * double(g->dims[a] - 1) * g->spacing[a];
         const double extent = double(g->dims[a] - 4) * g->spacing[a];
         const double n = std::ceil(extent / *pitch - 1e-9);
-        if (!(n < 65536)) return hmira::fail(hmira::errc::invalid_argument, "voxelize: pitch too small for the mesh (more than 65536 voxels along an axis)");
+        if (!(n < 65536))
+            return hmira::fail(hmira::errc::invalid_argument,
+                               "voxelize: pitch too small for the mesh (more than 65536 voxels along an axis)");
         geometry.dims[a] = std::max<std::size_t>(std::size_t(n), 1) + 4;
         geometry.spacing[a] = *pitch;
         geometry.origin[a] = centre - 0.5 * double(geometry.dims[a] - 1) * *pitch;
@@ -269,18 +289,20 @@ class mesh_view {
 public:
     mesh_view(const vertex_array& vertices, nb::handle faces, const char* who) : vertices_(vertices) {
         if (vertices.shape(1) != 3)
-            value_error(std::string(who) + ": vertices must have shape (n, 3), got (" + std::to_string(vertices.shape(0)) + ", " +
-                        std::to_string(vertices.shape(1)) + ")");
+            value_error(std::string(who) + ": vertices must have shape (n, 3), got (" +
+                        std::to_string(vertices.shape(0)) + ", " + std::to_string(vertices.shape(1)) + ")");
         const bool is_list = nb::isinstance<nb::list>(faces) || nb::isinstance<nb::tuple>(faces);
         const bool in_place_narrow = !is_list && nb::try_cast(faces, narrow_, false);
         const bool in_place_wide = !is_list && !in_place_narrow && nb::try_cast(faces, wide_, false);
         if (in_place_narrow || in_place_wide) check_points(vertices.data(), vertices.shape(0), who);
         if (in_place_narrow) {
             check_corners(narrow_.data(), narrow_.shape(0), narrow_.shape(1), vertices.shape(0), who);
-            narrow_mesh_ = array_mesh<std::int32_t>{vertices.data(), vertices.shape(0), narrow_.data(), narrow_.shape(0), narrow_.shape(1)};
+            narrow_mesh_ = array_mesh<std::int32_t>{vertices.data(), vertices.shape(0), narrow_.data(),
+                                                    narrow_.shape(0), narrow_.shape(1)};
         } else if (in_place_wide) {
             check_corners(wide_.data(), wide_.shape(0), wide_.shape(1), vertices.shape(0), who);
-            wide_mesh_ = array_mesh<std::int64_t>{vertices.data(), vertices.shape(0), wide_.data(), wide_.shape(0), wide_.shape(1)};
+            wide_mesh_ = array_mesh<std::int64_t>{vertices.data(), vertices.shape(0), wide_.data(), wide_.shape(0),
+                                                  wide_.shape(1)};
         } else {
             soup_ = to_soup(vertices, faces, who);
         }
@@ -289,8 +311,10 @@ public:
     /// Calls run.template operator()<M, T>(mesh); call with the GIL released.
     template <class R, class Run>
     R visit(Run&& run) const {
-        if (narrow_mesh_) return run.template operator()<array_mesh<std::int32_t>, array_mesh_traits<std::int32_t>>(*narrow_mesh_);
-        if (wide_mesh_) return run.template operator()<array_mesh<std::int64_t>, array_mesh_traits<std::int64_t>>(*wide_mesh_);
+        if (narrow_mesh_)
+            return run.template operator()<array_mesh<std::int32_t>, array_mesh_traits<std::int32_t>>(*narrow_mesh_);
+        if (wide_mesh_)
+            return run.template operator()<array_mesh<std::int64_t>, array_mesh_traits<std::int64_t>>(*wide_mesh_);
         hmira::face_vertex_mesh mesh;
         const std::string who = who_;
         auto built = hmira::io::assign_from_soup(mesh, *soup_, [&](std::size_t) { return who; });
@@ -331,7 +355,8 @@ void expand_bits(const hmira::bit_grid& v, std::uint8_t* cells, unsigned threads
                         const auto byte = static_cast<unsigned>((row[q >> 3] >> (8 * (q & 7))) & 0xffu);
                         std::memcpy(out + 8 * q, &expand[byte], 8);  // little-endian: bit q -> byte q
                     }
-                    for (std::size_t i = 8 * full; i < d[0]; ++i) out[i] = static_cast<std::uint8_t>((row[i >> 6] >> (i & 63)) & 1u);
+                    for (std::size_t i = 8 * full; i < d[0]; ++i)
+                        out[i] = static_cast<std::uint8_t>((row[i >> 6] >> (i & 63)) & 1u);
                 }
         });
     });
@@ -346,19 +371,20 @@ nb::ndarray<nb::numpy, bool, nb::ndim<3>> bool_grid(std::unique_ptr<std::uint8_t
     return nb::ndarray<nb::numpy, bool, nb::ndim<3>>(reinterpret_cast<bool*>(owned), 3, shape, owner, strides);
 }
 
-nb::tuple voxelize(const vertex_array& vertices, nb::handle faces, std::optional<std::size_t> resolution, std::optional<double> pitch,
-                   const std::string& mode, bool fill_open, unsigned threads) {
+nb::tuple voxelize(const vertex_array& vertices, nb::handle faces, std::optional<std::size_t> resolution,
+                   std::optional<double> pitch, const std::string& mode, bool fill_open, unsigned threads) {
     const auto named_mode = choice_arg<hmira::voxelize_mode>(mode, "voxelize", "mode");
     if (resolution && pitch) value_error("voxelize: give resolution or pitch, not both");
     if (resolution && *resolution == 0) value_error("voxelize: resolution must be at least 1");
     if (pitch && !(*pitch > 0 && std::isfinite(*pitch))) value_error("voxelize: pitch must be finite and > 0");
     const mesh_view view(vertices, faces, "voxelize");
     interrupt_watch watch;
-    const hmira::voxelize_options options{.mode = named_mode,
-                                          .open_mesh = fill_open ? hmira::open_mesh_fill::winding_number : hmira::open_mesh_fill::surface_only,
-                                          .allow_degenerate = true,
-                                          .threads = threads,
-                                          .progress = watch.callback()};
+    const hmira::voxelize_options options{
+        .mode = named_mode,
+        .open_mesh = fill_open ? hmira::open_mesh_fill::winding_number : hmira::open_mesh_fill::surface_only,
+        .allow_degenerate = true,
+        .threads = threads,
+        .progress = watch.callback()};
     hmira::result<hmira::voxelization> r = hmira::fail(hmira::errc::invalid_argument, "");
     hmira::grid_geometry geometry;
     std::unique_ptr<std::uint8_t[]> cells;
@@ -367,17 +393,18 @@ nb::tuple voxelize(const vertex_array& vertices, nb::handle faces, std::optional
         // The C++ work timed for bench/python: the grid around the mesh, the voxelization, and
         // the bools numpy gets, expanded from the bits in parallel (every byte is written: no
         // zeroing first).
-        r = view.visit<hmira::result<hmira::voxelization>>([&]<class M, class T>(const M& mesh) -> hmira::result<hmira::voxelization> {
-            cpp_timer timer;
-            auto g = voxel_grid_for<M, T>(mesh, resolution, pitch);
-            if (!g) return g.error();
-            geometry = *g;
-            auto v = hmira::voxelize<M, T>(mesh, geometry, options);
-            if (!v) return v;
-            cells.reset(new std::uint8_t[geometry.dims[0] * geometry.dims[1] * geometry.dims[2]]);
-            expand_bits(v->voxels, cells.get(), threads);
-            return v;
-        });
+        r = view.visit<hmira::result<hmira::voxelization>>(
+            [&]<class M, class T>(const M& mesh) -> hmira::result<hmira::voxelization> {
+                cpp_timer timer;
+                auto g = voxel_grid_for<M, T>(mesh, resolution, pitch);
+                if (!g) return g.error();
+                geometry = *g;
+                auto v = hmira::voxelize<M, T>(mesh, geometry, options);
+                if (!v) return v;
+                cells.reset(new std::uint8_t[geometry.dims[0] * geometry.dims[1] * geometry.dims[2]]);
+                expand_bits(v->voxels, cells.get(), threads);
+                return v;
+            });
     }
     watch.rethrow();
     auto v = take(std::move(r));
@@ -394,34 +421,39 @@ nb::tuple voxel_grid(const vertex_array& vertices, std::optional<std::size_t> re
     check_points(vertices.data(), vertices.shape(0), "voxelize");
     const array_mesh<std::int32_t> points{vertices.data(), vertices.shape(0), nullptr, 0, 3};
     auto g = take(voxel_grid_for<array_mesh<std::int32_t>, array_mesh_traits<std::int32_t>>(points, resolution, pitch));
-    return nb::make_tuple(nb::make_tuple(g.dims[0], g.dims[1], g.dims[2]), nb::make_tuple(g.origin.x, g.origin.y, g.origin.z), g.spacing.x);
+    return nb::make_tuple(nb::make_tuple(g.dims[0], g.dims[1], g.dims[2]),
+                          nb::make_tuple(g.origin.x, g.origin.y, g.origin.z), g.spacing.x);
 }
 
 /// One block of the grid (dims, origin, pitch): voxels [lo, lo + shape) as a bool array.
-nb::ndarray<nb::numpy, bool, nb::ndim<3>> voxelize_block(const vertex_array& vertices, nb::handle faces, std::array<std::size_t, 3> dims,
-                                                         std::array<double, 3> origin, double pitch, std::array<std::size_t, 3> lo,
-                                                         std::array<std::size_t, 3> shape, const std::string& mode, bool fill_open,
-                                                         unsigned threads) {
+nb::ndarray<nb::numpy, bool, nb::ndim<3>> voxelize_block(const vertex_array& vertices, nb::handle faces,
+                                                         std::array<std::size_t, 3> dims, std::array<double, 3> origin,
+                                                         double pitch, std::array<std::size_t, 3> lo,
+                                                         std::array<std::size_t, 3> shape, const std::string& mode,
+                                                         bool fill_open, unsigned threads) {
     const auto named_mode = choice_arg<hmira::voxelize_mode>(mode, "voxelize", "mode");
     if (!(pitch > 0 && std::isfinite(pitch))) value_error("voxelize: pitch must be finite and > 0");
     const mesh_view view(vertices, faces, "voxelize");
-    const hmira::grid_geometry grid{{dims[0], dims[1], dims[2]}, {origin[0], origin[1], origin[2]}, {pitch, pitch, pitch}};
+    const hmira::grid_geometry grid{
+        {dims[0], dims[1], dims[2]}, {origin[0], origin[1], origin[2]}, {pitch, pitch, pitch}};
     const hmira::voxel_block block{lo, {shape[0], shape[1], shape[2]}};
-    const hmira::voxelize_options options{.mode = named_mode,
-                                          .open_mesh = fill_open ? hmira::open_mesh_fill::winding_number : hmira::open_mesh_fill::surface_only,
-                                          .allow_degenerate = true,
-                                          .threads = threads};
+    const hmira::voxelize_options options{
+        .mode = named_mode,
+        .open_mesh = fill_open ? hmira::open_mesh_fill::winding_number : hmira::open_mesh_fill::surface_only,
+        .allow_degenerate = true,
+        .threads = threads};
     std::unique_ptr<std::uint8_t[]> cells;
     hmira::result<hmira::voxelization> r = hmira::fail(hmira::errc::invalid_argument, "");
     {
         nb::gil_scoped_release release;
-        r = view.visit<hmira::result<hmira::voxelization>>([&]<class M, class T>(const M& mesh) -> hmira::result<hmira::voxelization> {
-            auto v = hmira::voxelize_block<M, T>(mesh, grid, block, options);
-            if (!v) return v;
-            cells.reset(new std::uint8_t[shape[0] * shape[1] * shape[2]]);
-            expand_bits(v->voxels, cells.get(), threads);
-            return v;
-        });
+        r = view.visit<hmira::result<hmira::voxelization>>(
+            [&]<class M, class T>(const M& mesh) -> hmira::result<hmira::voxelization> {
+                auto v = hmira::voxelize_block<M, T>(mesh, grid, block, options);
+                if (!v) return v;
+                cells.reset(new std::uint8_t[shape[0] * shape[1] * shape[2]]);
+                expand_bits(v->voxels, cells.get(), threads);
+                return v;
+            });
     }
     (void)take(std::move(r));
     return bool_grid(std::move(cells), block.dims);
@@ -436,15 +468,18 @@ void bind_conversion(nb::module_& m) {
     m.def("marching_cubes", &marching_cubes, nb::arg("volume"), nb::arg("iso") = mc.iso, nb::kw_only(),
           nb::arg("spacing") = std::vector<double>{1, 1, 1}, nb::arg("origin") = std::vector<double>{0, 0, 0},
           nb::arg("inside") = name_of(mc.inside), nb::arg("threads") = mc.threads, MC_DOC);
-    m.def("_voxelize", &voxelize, nb::arg("vertices"), nb::arg("faces"), nb::kw_only(), nb::arg("resolution") = nb::none(),
-          nb::arg("pitch") = nb::none(), nb::arg("mode") = name_of(vox.mode), nb::arg("fill_open") = fill_open,
-          nb::arg("threads") = vox.threads, "Voxelizes (vertices, faces); see hmira.voxelize.");
-    m.def("_voxel_grid", &voxel_grid, nb::arg("vertices"), nb::kw_only(), nb::arg("resolution") = nb::none(), nb::arg("pitch") = nb::none(),
+    m.def("_voxelize", &voxelize, nb::arg("vertices"), nb::arg("faces"), nb::kw_only(),
+          nb::arg("resolution") = nb::none(), nb::arg("pitch") = nb::none(), nb::arg("mode") = name_of(vox.mode),
+          nb::arg("fill_open") = fill_open, nb::arg("threads") = vox.threads,
+          "Voxelizes (vertices, faces); see hmira.voxelize.");
+    m.def("_voxel_grid", &voxel_grid, nb::arg("vertices"), nb::kw_only(), nb::arg("resolution") = nb::none(),
+          nb::arg("pitch") = nb::none(),
           "The grid hmira.voxelize uses for these vertices: ((nx, ny, nz), origin, pitch).");
-    m.def("_voxelize_block", &voxelize_block, nb::arg("vertices"), nb::arg("faces"), nb::kw_only(), nb::arg("dims"), nb::arg("origin"),
-          nb::arg("pitch"), nb::arg("lo"), nb::arg("shape"), nb::arg("mode") = name_of(vox.mode), nb::arg("fill_open") = fill_open,
-          nb::arg("threads") = vox.threads,
-          "Voxels [lo, lo + shape) of the grid (dims, origin, pitch), as hmira.voxelize sets them there; see hmira.dask.voxelize.");
+    m.def("_voxelize_block", &voxelize_block, nb::arg("vertices"), nb::arg("faces"), nb::kw_only(), nb::arg("dims"),
+          nb::arg("origin"), nb::arg("pitch"), nb::arg("lo"), nb::arg("shape"), nb::arg("mode") = name_of(vox.mode),
+          nb::arg("fill_open") = fill_open, nb::arg("threads") = vox.threads,
+          "Voxels [lo, lo + shape) of the grid (dims, origin, pitch), as hmira.voxelize sets them there; see "
+          "hmira.dask.voxelize.");
 }
 
 }  // namespace hmira_py

@@ -47,7 +47,9 @@ using point_array = nb::ndarray<const double, nb::ndim<2>, nb::c_contig, nb::dev
 
 nb::object delaunay(const point_array& points, bool voronoi) {
     const std::size_t n = points.shape(0), dim = points.shape(1);
-    if (dim != 2 && dim != 3) value_error("delaunay_triangulation: points must have shape (n, 2) or (n, 3), got (" + std::to_string(n) + ", " + std::to_string(dim) + ")");
+    if (dim != 2 && dim != 3)
+        value_error("delaunay_triangulation: points must have shape (n, 2) or (n, 3), got (" + std::to_string(n) +
+                    ", " + std::to_string(dim) + ")");
     hmira::result<hmira::delaunay_triangles> r = hmira::fail(hmira::errc::invalid_argument, "");
     {
         nb::gil_scoped_release release;
@@ -88,7 +90,8 @@ nb::object delaunay(const point_array& points, bool voronoi) {
 }  // namespace
 
 void bind_delaunay(nb::module_& m) {
-    m.def("delaunay_triangulation", &delaunay, nb::arg("points"), nb::kw_only(), nb::arg("voronoi") = hmira::delaunay_options{}.voronoi, DELAUNAY_DOC);
+    m.def("delaunay_triangulation", &delaunay, nb::arg("points"), nb::kw_only(),
+          nb::arg("voronoi") = hmira::delaunay_options{}.voronoi, DELAUNAY_DOC);
 }
 
 }  // namespace hmira_py

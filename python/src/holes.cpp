@@ -9,7 +9,8 @@ namespace hmira_py {
 
 namespace {
 
-hmira::fill_hole_options fill_options(std::size_t max_dynamic_programming_edges, bool refine, const std::string& fair, const char* who) {
+hmira::fill_hole_options fill_options(std::size_t max_dynamic_programming_edges, bool refine, const std::string& fair,
+                                      const char* who) {
     hmira::fill_hole_options o;
     o.max_dynamic_programming_edges = max_dynamic_programming_edges;
     o.fair = choice_arg<hmira::fairing>(fair, who, "fair");
@@ -31,7 +32,8 @@ nb::list open_holes(const hmira::fill_holes_result& r, std::size_t max_size) {
     return open;
 }
 
-nb::dict fill_holes(py_mesh& s, std::size_t max_size, std::size_t max_dynamic_programming_edges, bool refine, const std::string& fair) {
+nb::dict fill_holes(py_mesh& s, std::size_t max_size, std::size_t max_dynamic_programming_edges, bool refine,
+                    const std::string& fair) {
     const auto o = fill_options(max_dynamic_programming_edges, refine, fair, "fill_holes");
     const auto r = change_compacted(s, [&](halfedge_mesh& m, hmira::progress_function progress) {
         auto with_progress = o;
@@ -52,29 +54,37 @@ nb::dict fill_holes(py_mesh& s, std::size_t max_size, std::size_t max_dynamic_pr
 
 void bind_mesh_holes(nb::class_<py_mesh>& c) {
     const hmira::fill_hole_options defaults;
-    c.def("fill_hole", [](py_mesh& s, long long h, std::size_t max_dynamic_programming_edges, bool refine, const std::string& fair) {
+    c.def(
+         "fill_hole",
+         [](py_mesh& s, long long h, std::size_t max_dynamic_programming_edges, bool refine, const std::string& fair) {
              const auto hh = halfedge_arg(s.get(), h, "fill_hole");
              const auto o = fill_options(max_dynamic_programming_edges, refine, fair, "fill_hole");
-             const auto r = change_without_gil(s, true, [&](halfedge_mesh& m, const hmira::progress_function& progress) {
-                 auto with_progress = o;
-                 with_progress.progress = progress;
-                 return hmira::fill_hole(m, hh, with_progress);
-             });
+             const auto r =
+                 change_without_gil(s, true, [&](halfedge_mesh& m, const hmira::progress_function& progress) {
+                     auto with_progress = o;
+                     with_progress.progress = progress;
+                     return hmira::fill_hole(m, hh, with_progress);
+                 });
              std::vector<long long> faces;
              for (auto f : r.faces) faces.push_back(idx(f));
              return faces;
-         }, nb::arg("boundary_halfedge"), nb::kw_only(),
-         nb::arg("max_dynamic_programming_edges") = defaults.max_dynamic_programming_edges, nb::arg("refine") = defaults.refine,
-         nb::arg("fair") = name_of(defaults.fair),
-         "Closes the boundary loop of a boundary halfedge with triangles (minimal area, maximal dihedral, Liepa 2003); with refine=True "
-         "the patch is refined to the edge length around the hole, and fair='membrane' or 'thin-plate' (implies refine) smooths it. "
+         },
+         nb::arg("boundary_halfedge"), nb::kw_only(),
+         nb::arg("max_dynamic_programming_edges") = defaults.max_dynamic_programming_edges,
+         nb::arg("refine") = defaults.refine, nb::arg("fair") = name_of(defaults.fair),
+         "Closes the boundary loop of a boundary halfedge with triangles (minimal area, maximal dihedral, Liepa 2003); "
+         "with refine=True "
+         "the patch is refined to the edge length around the hole, and fair='membrane' or 'thin-plate' (implies "
+         "refine) smooths it. "
          "Returns the new faces.")
-     .def("fill_holes", &fill_holes, nb::arg("max_size"), nb::kw_only(),
-         nb::arg("max_dynamic_programming_edges") = defaults.max_dynamic_programming_edges, nb::arg("refine") = defaults.refine,
-         nb::arg("fair") = name_of(defaults.fair),
-         "Fills every hole of at most max_size boundary edges (refine and fair as for fill_hole); returns {'filled', 'skipped', "
-         "'faces_added', 'vertices_added', 'unfaired', 'open'}, 'open' listing each hole left open as {'vertex', 'edges', "
-         "'reason'}. Ctrl-C stops it with the mesh unchanged.");
+        .def("fill_holes", &fill_holes, nb::arg("max_size"), nb::kw_only(),
+             nb::arg("max_dynamic_programming_edges") = defaults.max_dynamic_programming_edges,
+             nb::arg("refine") = defaults.refine, nb::arg("fair") = name_of(defaults.fair),
+             "Fills every hole of at most max_size boundary edges (refine and fair as for fill_hole); returns "
+             "{'filled', 'skipped', "
+             "'faces_added', 'vertices_added', 'unfaired', 'open'}, 'open' listing each hole left open as {'vertex', "
+             "'edges', "
+             "'reason'}. Ctrl-C stops it with the mesh unchanged.");
 }
 
 }  // namespace hmira_py

@@ -13,20 +13,24 @@
 namespace hmira_py {
 
 hmira::io::polygon_soup to_soup(const vertex_array& vertices, nb::handle faces, const char* who) {
-    if (vertices.shape(1) != 3) value_error(std::string(who) + ": vertices must have shape (n, 3), got (" + std::to_string(vertices.shape(0)) + ", " + std::to_string(vertices.shape(1)) + ")");
+    if (vertices.shape(1) != 3)
+        value_error(std::string(who) + ": vertices must have shape (n, 3), got (" + std::to_string(vertices.shape(0)) +
+                    ", " + std::to_string(vertices.shape(1)) + ")");
     hmira::io::polygon_soup soup;
     const std::size_t nv = vertices.shape(0);
     soup.points.resize(nv);
     const double* v = vertices.data();
     for (std::size_t i = 0; i < nv; ++i) {
         for (int a = 0; a < 3; ++a) {
-            if (!std::isfinite(v[3 * i + a])) value_error(std::string(who) + ": vertex " + std::to_string(i) + " has a non-finite coordinate");
+            if (!std::isfinite(v[3 * i + a]))
+                value_error(std::string(who) + ": vertex " + std::to_string(i) + " has a non-finite coordinate");
             soup.points[i][a] = v[3 * i + a];
         }
     }
     auto push = [&](long long idx, std::size_t f) {
         if (idx < 0 || std::size_t(idx) >= nv)
-            value_error(std::string(who) + ": face " + std::to_string(f) + " uses vertex " + std::to_string(idx) + ", out of range [0, " + std::to_string(nv) + ")");
+            value_error(std::string(who) + ": face " + std::to_string(f) + " uses vertex " + std::to_string(idx) +
+                        ", out of range [0, " + std::to_string(nv) + ")");
         soup.indices.push_back(static_cast<std::uint32_t>(idx));
     };
     // (m, k) arrays of int32 (what marching_cubes returns) or int64 are read in place.
@@ -60,8 +64,8 @@ hmira::io::polygon_soup to_soup(const vertex_array& vertices, nb::handle faces, 
         nb::object number;
         if (!PyLong_CheckExact(i.ptr())) {
             if (PyBool_Check(i.ptr()) || !PyIndex_Check(i.ptr()))
-                type_error(std::string(who) + ": face " + std::to_string(f) + ": corner " + std::to_string(c) + " is a " + type_name(i) +
-                           ", not an integer vertex index");
+                type_error(std::string(who) + ": face " + std::to_string(f) + ": corner " + std::to_string(c) +
+                           " is a " + type_name(i) + ", not an integer vertex index");
             number = nb::steal(PyNumber_Index(i.ptr()));
             if (!number.is_valid()) throw nb::python_error();
             i = number;
@@ -69,8 +73,8 @@ hmira::io::polygon_soup to_soup(const vertex_array& vertices, nb::handle faces, 
         int overflow = 0;
         const long long idx = PyLong_AsLongLongAndOverflow(i.ptr(), &overflow);
         if (overflow != 0)
-            value_error(std::string(who) + ": face " + std::to_string(f) + " uses vertex " + nb::str(i).c_str() + ", out of range [0, " +
-                        std::to_string(nv) + ")");
+            value_error(std::string(who) + ": face " + std::to_string(f) + " uses vertex " + nb::str(i).c_str() +
+                        ", out of range [0, " + std::to_string(nv) + ")");
         return idx;
     };
     std::size_t f = 0;
@@ -78,7 +82,8 @@ hmira::io::polygon_soup to_soup(const vertex_array& vertices, nb::handle faces, 
         nb::object corners = nb::steal(PyObject_GetIter(polygon.ptr()));
         if (!corners.is_valid()) {
             PyErr_Clear();
-            type_error(std::string(who) + ": face " + std::to_string(f) + " is a " + type_name(polygon) + ", not a sequence of vertex indices");
+            type_error(std::string(who) + ": face " + std::to_string(f) + " is a " + type_name(polygon) +
+                       ", not a sequence of vertex indices");
         }
         std::size_t c = 0;
         while (PyObject* item = PyIter_Next(corners.ptr())) {
@@ -94,7 +99,9 @@ hmira::io::polygon_soup to_soup(const vertex_array& vertices, nb::handle faces, 
 
 hmira::io::write_options write_options_from(bool ascii, bool big_endian, bool float32, bool attributes) {
     hmira::io::write_options o;
-    o.ply = ascii ? hmira::io::ply_encoding::ascii : big_endian ? hmira::io::ply_encoding::binary_big_endian : hmira::io::ply_encoding::binary_little_endian;
+    o.ply = ascii        ? hmira::io::ply_encoding::ascii
+            : big_endian ? hmira::io::ply_encoding::binary_big_endian
+                         : hmira::io::ply_encoding::binary_little_endian;
     o.ply_coordinates = float32 ? hmira::io::ply_scalar::float32 : hmira::io::ply_scalar::float64;
     o.stl = ascii ? hmira::io::stl_encoding::ascii : hmira::io::stl_encoding::binary;
     o.write_attributes = attributes;
@@ -103,7 +110,8 @@ hmira::io::write_options write_options_from(bool ascii, bool big_endian, bool fl
 
 namespace {
 
-void write_polygons(const std::string& path, const vertex_array& vertices, nb::handle faces, bool ascii, bool big_endian, bool float32) {
+void write_polygons(const std::string& path, const vertex_array& vertices, nb::handle faces, bool ascii,
+                    bool big_endian, bool float32) {
     const auto soup = to_soup(vertices, faces, "write_mesh");
     hmira::result<void> r;
     {

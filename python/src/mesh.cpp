@@ -85,10 +85,11 @@ nb::ndarray<nb::numpy, std::int32_t, nb::ndim<2>> faces(const py_mesh& self) {
             out.push_back(static_cast<std::int32_t>(v.index));
             ++n;
         }
-        if (count == 0) k = n;
+        if (count == 0)
+            k = n;
         else if (n != k)
-            value_error("Mesh.faces: face " + std::to_string(f.index) + " has " + std::to_string(n) + " corners, face 0 has " +
-                        std::to_string(k) + "; use Mesh.polygons for mixed polygons");
+            value_error("Mesh.faces: face " + std::to_string(f.index) + " has " + std::to_string(n) +
+                        " corners, face 0 has " + std::to_string(k) + "; use Mesh.polygons for mixed polygons");
         ++count;
     }
     auto* owned = new std::vector<std::int32_t>(std::move(out));
@@ -97,15 +98,25 @@ nb::ndarray<nb::numpy, std::int32_t, nb::ndim<2>> faces(const py_mesh& self) {
 }
 
 struct topology {
-    std::size_t vertices, edges, faces, components, boundary_loops, boundary_edges, isolated_vertices, non_manifold_edges;
+    std::size_t vertices, edges, faces, components, boundary_loops, boundary_edges, isolated_vertices,
+        non_manifold_edges;
     long long genus, euler_characteristic;
     bool closed;
 };
 
 topology topology_of(const py_mesh& self) {
     const auto s = read_without_gil(self, [](const halfedge_mesh& m) { return hmira::mesh_topology(m); });
-    return {s.vertices, s.edges, s.faces, s.components, s.boundary_loops, s.boundary_edges, s.isolated_vertices,
-            s.non_manifold_edges, s.genus, s.euler_characteristic, s.closed()};
+    return {s.vertices,
+            s.edges,
+            s.faces,
+            s.components,
+            s.boundary_loops,
+            s.boundary_edges,
+            s.isolated_vertices,
+            s.non_manifold_edges,
+            s.genus,
+            s.euler_characteristic,
+            s.closed()};
 }
 
 std::vector<std::string> validate(const py_mesh& self, bool relaxed) {
@@ -115,8 +126,7 @@ std::vector<std::string> validate(const py_mesh& self, bool relaxed) {
         o.relaxed = relaxed;
         return hmira::validate(m, o);
     });
-    for (auto& p : problems)
-        out.push_back(std::move(p.message));
+    for (auto& p : problems) out.push_back(std::move(p.message));
     return out;
 }
 
@@ -149,7 +159,8 @@ void bind_topology(nb::module_& m) {
         .def("__repr__", [](const topology& t) {
             return "Topology(vertices=" + std::to_string(t.vertices) + ", edges=" + std::to_string(t.edges) +
                    ", faces=" + std::to_string(t.faces) + ", genus=" + std::to_string(t.genus) +
-                   ", components=" + std::to_string(t.components) + ", boundary_loops=" + std::to_string(t.boundary_loops) + ")";
+                   ", components=" + std::to_string(t.components) +
+                   ", boundary_loops=" + std::to_string(t.boundary_loops) + ")";
         });
 }
 
@@ -157,18 +168,21 @@ void bind_topology(nb::module_& m) {
 void bind_contents(nb::class_<py_mesh>& core) {
     const hmira::validate_options validate_defaults;
     const hmira::vertex_normal_options normal_defaults;
-    core
-        .def(nb::init<>(), "An empty mesh.")
+    core.def(nb::init<>(), "An empty mesh.")
         .def("_set_polygons", &set_polygons, nb::arg("vertices"), nb::arg("faces"),
              "Replaces the content by (vertices, faces); faces an (m, k) integer array or a sequence of polygons.")
         .def("_read", &read, nb::arg("path"), nb::kw_only(), nb::arg("weld_stl") = hmira::io::read_options{}.weld_stl,
              "Replaces the content by a mesh file's.")
-        .def("_assign", [](py_mesh& self, const py_mesh& other) {
-                 self.replace(read_without_gil(other, [](const halfedge_mesh& m) { return halfedge_mesh(m); }));
-             }, nb::arg("other"),
-             "Replaces the content by a copy of `other`'s.")
-        .def("_positions", &positions, "The positions as a writable (n, 3) float64 view (unchecked; see Mesh.vertices).")
-        .def_prop_ro("_topology_version", [](const py_mesh& s) { return s.version; }, "Bumped by every topology change.")
+        .def(
+            "_assign",
+            [](py_mesh& self, const py_mesh& other) {
+                self.replace(read_without_gil(other, [](const halfedge_mesh& m) { return halfedge_mesh(m); }));
+            },
+            nb::arg("other"), "Replaces the content by a copy of `other`'s.")
+        .def("_positions", &positions,
+             "The positions as a writable (n, 3) float64 view (unchecked; see Mesh.vertices).")
+        .def_prop_ro(
+            "_topology_version", [](const py_mesh& s) { return s.version; }, "Bumped by every topology change.")
         .def("write", &write, nb::arg("path"), nb::kw_only(), nb::arg("ascii") = false, nb::arg("big_endian") = false,
              nb::arg("float32") = false, nb::arg("attributes") = hmira::io::write_options{}.write_attributes,
              R"doc(Write the mesh to a file (OBJ, OFF, PLY or STL by extension), atomically.
@@ -184,29 +198,38 @@ float32 : bool, keyword-only
     PLY: 32-bit coordinates (default 64-bit).
 attributes : bool, keyword-only
     Write per-vertex normals and colours read from a file.)doc")
-        .def_prop_ro("vertex_count", [](const py_mesh& s) { return s.get().vertex_count(); }, "Live vertices.")
-        .def_prop_ro("edge_count", [](const py_mesh& s) { return s.get().edge_count(); }, "Live edges.")
-        .def_prop_ro("face_count", [](const py_mesh& s) { return s.get().face_count(); }, "Live faces.")
-        .def_prop_ro("faces", &faces, nb::rv_policy::automatic, "Faces as an (m, k) int32 array (ValueError when faces differ in size).")
+        .def_prop_ro(
+            "vertex_count", [](const py_mesh& s) { return s.get().vertex_count(); }, "Live vertices.")
+        .def_prop_ro(
+            "edge_count", [](const py_mesh& s) { return s.get().edge_count(); }, "Live edges.")
+        .def_prop_ro(
+            "face_count", [](const py_mesh& s) { return s.get().face_count(); }, "Live faces.")
+        .def_prop_ro("faces", &faces, nb::rv_policy::automatic,
+                     "Faces as an (m, k) int32 array (ValueError when faces differ in size).")
         .def_prop_ro("polygons", &polygons, nb::rv_policy::automatic, "Faces as a list of vertex-index lists.")
         .def("topology", &topology_of, "V, E, F, genus, components and boundary loops (a Topology).")
         .def("validate", &validate, nb::kw_only(), nb::arg("relaxed") = validate_defaults.relaxed,
              "The mesh's problems, one message each; an empty list for a valid mesh.")
-        .def("flip", [](py_mesh& s) {
-                 // The positions do not move: views stay valid (no topology change for them).
-                 return change_without_gil(s, false, [](halfedge_mesh& m, const hmira::progress_function&) {
-                     return hmira::result<std::size_t>(hmira::flip_normals(m));
-                 });
-             }, "Reverse every face's winding; returns the faces flipped.")
+        .def(
+            "flip",
+            [](py_mesh& s) {
+                // The positions do not move: views stay valid (no topology change for them).
+                return change_without_gil(s, false, [](halfedge_mesh& m, const hmira::progress_function&) {
+                    return hmira::result<std::size_t>(hmira::flip_normals(m));
+                });
+            },
+            "Reverse every face's winding; returns the faces flipped.")
         .def("vertex_normals", &normals, nb::kw_only(), nb::arg("weighting") = name_of(normal_defaults.weighting),
              "Unit vertex normals (n, 3), faces weighted by corner angle ('angle') or area ('area').")
-        .def("collect_garbage", [](py_mesh& s) {
-                 change_without_gil(s, true, [](halfedge_mesh& m, const hmira::progress_function&) {
-                     compact(m);
-                     return hmira::result<bool>(true);
-                 });
-             },
-             "Drop deleted elements and renumber densely (after kill operators).");
+        .def(
+            "collect_garbage",
+            [](py_mesh& s) {
+                change_without_gil(s, true, [](halfedge_mesh& m, const hmira::progress_function&) {
+                    compact(m);
+                    return hmira::result<bool>(true);
+                });
+            },
+            "Drop deleted elements and renumber densely (after kill operators).");
 }
 
 }  // namespace

@@ -48,11 +48,13 @@ struct py_mesh {
         return *mesh;
     }
     void refuse_while_writing() const {
-        if (writing) throw std::runtime_error("Mesh: another thread is changing this mesh (a call on it is still running)");
+        if (writing)
+            throw std::runtime_error("Mesh: another thread is changing this mesh (a call on it is still running)");
     }
     void refuse_while_in_use() const {
         refuse_while_writing();
-        if (readers > 0) throw std::runtime_error("Mesh: another thread is reading this mesh (a call on it is still running)");
+        if (readers > 0)
+            throw std::runtime_error("Mesh: another thread is reading this mesh (a call on it is still running)");
     }
 
     /// Call before a topology change: a view exported earlier keeps the old storage.

@@ -20,8 +20,10 @@ void register_errors(nb::module_&) {
 NB_MODULE(_core, m) {
     m.doc() = "hmira's compiled core: marching cubes, voxelization, Delaunay, mesh I/O and the Mesh class.";
     hmira_py::register_errors(m);
-    m.def("_last_cpp_seconds", [] { return hmira_py::last_cpp_seconds(); },
-          "Seconds the last marching_cubes / voxelize / delaunay_triangulation / read_mesh spent in C++ (for bench/python).");
+    m.def(
+        "_last_cpp_seconds", [] { return hmira_py::last_cpp_seconds(); },
+        "Seconds the last marching_cubes / voxelize / delaunay_triangulation / read_mesh spent in C++ (for "
+        "bench/python).");
     hmira_py::bind_conversion(m);
     hmira_py::bind_delaunay(m);
     hmira_py::bind_io(m);

@@ -9,8 +9,8 @@ namespace hmira_py {
 
 namespace {
 
-nb::dict remesh(py_mesh& s, std::optional<double> target_edge_length, std::size_t iterations, std::optional<double> feature_angle,
-                std::optional<std::vector<long long>> feature_edges) {
+nb::dict remesh(py_mesh& s, std::optional<double> target_edge_length, std::size_t iterations,
+                std::optional<double> feature_angle, std::optional<std::vector<long long>> feature_edges) {
     std::vector<std::size_t> features;
     if (feature_edges)
         for (long long e : *feature_edges) {
@@ -24,8 +24,10 @@ nb::dict remesh(py_mesh& s, std::optional<double> target_edge_length, std::size_
             if (!mean) return hmira::result<hmira::isotropic_remeshing_result>(mean.error());
             length = *mean;
         }
-        return hmira::isotropic_remeshing(m, {.target_edge_length = length, .iterations = iterations,
-                                              .feature_angle = feature_angle, .feature_edges = features,
+        return hmira::isotropic_remeshing(m, {.target_edge_length = length,
+                                              .iterations = iterations,
+                                              .feature_angle = feature_angle,
+                                              .feature_edges = features,
                                               .progress = std::move(progress)});
     });
     nb::dict d;
@@ -40,8 +42,8 @@ nb::dict remesh(py_mesh& s, std::optional<double> target_edge_length, std::size_
 
 void bind_mesh_remeshing(nb::class_<py_mesh>& c) {
     c.def("remesh", &remesh, nb::kw_only(), nb::arg("target_edge_length") = nb::none(),
-          nb::arg("iterations") = hmira::isotropic_remeshing_options{}.iterations, nb::arg("feature_angle") = nb::none(),
-          nb::arg("feature_edges") = nb::none(),
+          nb::arg("iterations") = hmira::isotropic_remeshing_options{}.iterations,
+          nb::arg("feature_angle") = nb::none(), nb::arg("feature_edges") = nb::none(),
           "Isotropic remeshing of a triangle mesh towards target_edge_length (default: the mean edge length):\n"
           "`iterations` rounds of split, collapse, flip and tangential relaxation with projection onto the input.\n"
           "The boundary is kept, and so are edges sharper than feature_angle degrees and the edges listed in\n"

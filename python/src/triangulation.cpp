@@ -8,15 +8,20 @@
 namespace hmira_py {
 
 void bind_mesh_triangulation(nb::class_<py_mesh>& c) {
-    c.def("triangulate_faces", [](py_mesh& s, bool delaunay) {
-             const auto r = on_copy(s, [&](halfedge_mesh& m) { return hmira::triangulate_faces(m, {.delaunay = delaunay}); });
-             nb::dict d;
-             d["faces_cut"] = r.faces_cut;
-             d["triangles_added"] = r.triangles_added;
-             return d;
-         }, nb::kw_only(), nb::arg("delaunay") = hmira::triangulate_polygon_options{}.delaunay,
-         "Triangulates every polygon (inner rings included, robust on concave faces); with delaunay=True each face's diagonals "
-         "are its constrained Delaunay ones (largest smallest angle). Returns {'faces_cut', 'triangles_added'}.");
+    c.def(
+        "triangulate_faces",
+        [](py_mesh& s, bool delaunay) {
+            const auto r =
+                on_copy(s, [&](halfedge_mesh& m) { return hmira::triangulate_faces(m, {.delaunay = delaunay}); });
+            nb::dict d;
+            d["faces_cut"] = r.faces_cut;
+            d["triangles_added"] = r.triangles_added;
+            return d;
+        },
+        nb::kw_only(), nb::arg("delaunay") = hmira::triangulate_polygon_options{}.delaunay,
+        "Triangulates every polygon (inner rings included, robust on concave faces); with delaunay=True each face's "
+        "diagonals "
+        "are its constrained Delaunay ones (largest smallest angle). Returns {'faces_cut', 'triangles_added'}.");
 }
 
 }  // namespace hmira_py

@@ -19,28 +19,58 @@ inline std::size_t operations = 0;
 // Every operation of the base traits, counted once per call.
 template <class B>
 struct counting_traits : B {
-    using typename B::vertex_handle;
     using typename B::face_handle;
+    using typename B::vertex_handle;
     template <class M>
-    static auto vertices(const M& m) { ++operations; return B::vertices(m); }
+    static auto vertices(const M& m) {
+        ++operations;
+        return B::vertices(m);
+    }
     template <class M>
-    static auto faces(const M& m) { ++operations; return B::faces(m); }
+    static auto faces(const M& m) {
+        ++operations;
+        return B::faces(m);
+    }
     template <class M, class F>
-    static auto face_vertices(const M& m, F f) { ++operations; return B::face_vertices(m, f); }
+    static auto face_vertices(const M& m, F f) {
+        ++operations;
+        return B::face_vertices(m, f);
+    }
     template <class M, class V>
-    static auto vertex_index(const M& m, V v) { ++operations; return B::vertex_index(m, v); }
+    static auto vertex_index(const M& m, V v) {
+        ++operations;
+        return B::vertex_index(m, v);
+    }
     template <class M, class F>
-    static auto face_index(const M& m, F f) { ++operations; return B::face_index(m, f); }
+    static auto face_index(const M& m, F f) {
+        ++operations;
+        return B::face_index(m, f);
+    }
     template <class M>
-    static auto change_count(const M& m) { ++operations; return B::change_count(m); }
+    static auto change_count(const M& m) {
+        ++operations;
+        return B::change_count(m);
+    }
     template <class M, class H>
-    static auto next(const M& m, H h) { ++operations; return B::next(m, h); }
+    static auto next(const M& m, H h) {
+        ++operations;
+        return B::next(m, h);
+    }
     template <class M, class H>
-    static auto opposite(const M& m, H h) { ++operations; return B::opposite(m, h); }
+    static auto opposite(const M& m, H h) {
+        ++operations;
+        return B::opposite(m, h);
+    }
     template <class M, class H>
-    static auto target(const M& m, H h) { ++operations; return B::target(m, h); }
+    static auto target(const M& m, H h) {
+        ++operations;
+        return B::target(m, h);
+    }
     template <class M, class V>
-    static auto vertex_halfedge(const M& m, V v) { ++operations; return B::vertex_halfedge(m, v); }
+    static auto vertex_halfedge(const M& m, V v) {
+        ++operations;
+        return B::vertex_halfedge(m, v);
+    }
 };
 
 // One-ring through halfedge navigation only, written against the traits.

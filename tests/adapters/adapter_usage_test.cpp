@@ -46,13 +46,13 @@ static_assert(hmira::face_adjacency_mesh<hmira::with_adjacency<fvm>>);
 static_assert(hmira::edge_list_mesh<hmira::with_brute_force_adjacency<fvm>>);
 static_assert(hmira::face_vertex_range_mesh<hmira::with_adjacency<fvm>>);
 static_assert(hmira::mesh_builder<hmira::with_adjacency<fvm>>);
-static_assert(std::is_same_v<hmira::with_adjacency<fvm>, hmira::with_indexed_adjacency<fvm>>, "documented default: indexed");
+static_assert(std::is_same_v<hmira::with_adjacency<fvm>, hmira::with_indexed_adjacency<fvm>>,
+              "documented default: indexed");
 
 // Asking a temporary adapted mesh would return views into an index about to be destroyed.
 template <class W>
-concept rvalue_query_compiles = requires(W&& w, hmira::vertex_handle v) {
-    hmira::default_traits<W>::adjacent_vertices(std::move(w), v);
-};
+concept rvalue_query_compiles =
+    requires(W&& w, hmira::vertex_handle v) { hmira::default_traits<W>::adjacent_vertices(std::move(w), v); };
 static_assert(!rvalue_query_compiles<hmira::with_indexed_adjacency<fvm>>);
 static_assert(!rvalue_query_compiles<hmira::with_brute_force_adjacency<fvm>>);
 

@@ -18,7 +18,9 @@ namespace {
 
 using hmira_test::scratch_dir;
 
-hmira_test::run_result hmira(const scratch_dir& dir, const std::string& args) { return hmira_test::run_cli(HMIRA_CLI, dir, args); }
+hmira_test::run_result hmira(const scratch_dir& dir, const std::string& args) {
+    return hmira_test::run_cli(HMIRA_CLI, dir, args);
+}
 
 hmira::face_vertex_mesh read_back(const std::filesystem::path& p) {
     hmira::face_vertex_mesh m;
@@ -32,7 +34,8 @@ TEST(cli_bevel, an_edge_named_by_the_files_vertices_selects_every_copy_the_repai
     // Three triangles on the edge 0-1: repair cuts the third face free with copies 5, 6 of
     // vertices 0, 1. The file's edge 0,1 is then two edges: 0-1 between the first two faces
     // (interior) and 5-6, the boundary of the lone triangle.
-    hmira_test::write_bytes(dir / "fin.off", "OFF\n5 3 0\n0 0 0\n1 0 0\n0 1 0\n0 -1 0\n0 0 1\n3 0 1 2\n3 1 0 3\n3 0 1 4\n");
+    hmira_test::write_bytes(dir / "fin.off",
+                            "OFF\n5 3 0\n0 0 0\n1 0 0\n0 1 0\n0 -1 0\n0 0 1\n3 0 1 2\n3 1 0 3\n3 0 1 4\n");
     for (const std::string edge : {"0,1", "1,0"}) {
         SCOPED_TRACE(edge);
         const auto r = hmira(dir, "bevel fin.off b.off --edge " + edge + " --width 0.1");
@@ -68,7 +71,8 @@ TEST(cli_bevel, an_edge_at_a_split_vertex_is_found_on_whichever_copy_holds_it) {
     EXPECT_NE(both.out.find("V 6 -> 10, E 6 -> 12, F 2 -> 4"), std::string::npos) << both.out;
     const auto none = hmira(dir, "bevel bowtie.off n.off --edge 1,3 --width 0.1");
     EXPECT_EQ(none.code, 2) << none.err;
-    EXPECT_NE(none.err.find("--edge 1,3: vertices 1 and 3 of bowtie.off are not joined by an edge"), std::string::npos) << none.err;
+    EXPECT_NE(none.err.find("--edge 1,3: vertices 1 and 3 of bowtie.off are not joined by an edge"), std::string::npos)
+        << none.err;
     EXPECT_FALSE(std::filesystem::exists(dir / "n.off"));
     // A copy's index is not a file vertex.
     const auto copy = hmira(dir, "bevel bowtie.off n.off --edge 5,1 --width 0.1");
@@ -93,7 +97,8 @@ TEST(cli_bevel, sharp_edges_of_real_meshes_bevel_to_a_mesh_that_validates) {
     // from both ends of an edge meet, which left faces of zero area. Edges that would leave one
     // are skipped and counted; every output validates, as its input does.
     const char* data = std::getenv("HMIRA_TEST_DATA");
-    if (!data || !std::filesystem::exists(std::filesystem::path(data) / "meshes" / "man.off")) GTEST_SKIP() << "run scripts/test-data.sh first";
+    if (!data || !std::filesystem::exists(std::filesystem::path(data) / "meshes" / "man.off"))
+        GTEST_SKIP() << "run scripts/test-data.sh first";
     scratch_dir dir;
     for (const std::string name : {"man", "bull", "cheese"}) {
         SCOPED_TRACE(name);

@@ -45,7 +45,8 @@ run_result hmira(const scratch_dir& dir, const std::string& args) {
 
 /// A tetrahedron near the largest double: any sum, difference or midpoint of two corners overflows.
 const char* overflow_off =
-    "OFF\n4 4 0\n1.7e308 1.7e308 0\n1.7e308 -1.7e308 0\n-1.7e308 0 0\n0 0 1.7e308\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 2 0 3\n";
+    "OFF\n4 4 0\n1.7e308 1.7e308 0\n1.7e308 -1.7e308 0\n-1.7e308 0 0\n0 0 1.7e308\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 2 0 "
+    "3\n";
 /// A cube 1e-300 across: products of coordinates underflow to zero (lengths, areas, normals).
 const char* tiny_off =
     "OFF\n8 6 0\n-1e-300 -1e-300 -1e-300\n1e-300 -1e-300 -1e-300\n1e-300 -1e-300 1e-300\n-1e-300 -1e-300 1e-300\n"
@@ -80,8 +81,8 @@ const input inputs[] = {{"overflow", overflow_off}, {"tiny", tiny_off}, {"cube",
 struct writer {
     const char* name;  ///< test name part
     const char* args;
-    const char* input_ext;   ///< ".off" (a mesh) or ".xyz" (points)
-    const char* output;      ///< output name (its extension picks the format)
+    const char* input_ext;  ///< ".off" (a mesh) or ".xyz" (points)
+    const char* output;     ///< output name (its extension picks the format)
 };
 
 // Every writing subcommand of `hmira --help` but view (an HTML page: tests/cli/cli_view_test.cpp
@@ -101,7 +102,8 @@ const writer writers[] = {
     {"subdivide_sqrt3", "subdivide IN OUT --scheme sqrt3", ".off", "out.off"},
     {"subdivide_catmull_clark", "subdivide IN OUT --scheme catmull-clark", ".off", "out.off"},
     {"smooth_taubin", "smooth IN OUT", ".off", "out.off"},
-    {"smooth_laplacian_cotangent", "smooth IN OUT --method laplacian --weights cotangent --move-boundary", ".off", "out.off"},
+    {"smooth_laplacian_cotangent", "smooth IN OUT --method laplacian --weights cotangent --move-boundary", ".off",
+     "out.off"},
     {"decimate", "decimate IN OUT --ratio 0.5", ".off", "out.off"},
     {"remesh", "remesh IN OUT", ".off", "out.off"},
     {"truncate", "truncate IN OUT --all", ".off", "out.off"},
@@ -124,9 +126,11 @@ std::string with(std::string args, const std::string& in, const std::string& out
 /// Rule 1 on one finished run: either it succeeded and `output` reads back with every coordinate
 /// finite, or it failed with a documented error (not a crash, not an internal error) and wrote
 /// nothing, not even a temporary.
-void expect_finite_or_nothing(const scratch_dir& dir, const run_result& r, const std::string& output, std::vector<std::string> inputs_there) {
+void expect_finite_or_nothing(const scratch_dir& dir, const run_result& r, const std::string& output,
+                              std::vector<std::string> inputs_there) {
     if (r.code != 0) {
-        EXPECT_TRUE(r.code == 1 || r.code == 2) << "exit " << r.code << " (128 + N: signal N; 137: still running after 120 s): " << r.err;
+        EXPECT_TRUE(r.code == 1 || r.code == 2)
+            << "exit " << r.code << " (128 + N: signal N; 137: still running after 120 s): " << r.err;
         std::sort(inputs_there.begin(), inputs_there.end());
         EXPECT_EQ(dir.files(), inputs_there) << "a failed run left a file";
         return;
@@ -147,9 +151,11 @@ TEST_P(cli_contract_finite, every_written_coordinate_is_finite) {
     const auto& [w, in] = GetParam();
     scratch_dir dir;
     const std::string input_name = std::string("in") + w.input_ext;
-    hmira_test::write_bytes(dir / input_name, std::string(w.input_ext) == ".xyz" ? points_of(in.off) : std::string(in.off));
+    hmira_test::write_bytes(dir / input_name,
+                            std::string(w.input_ext) == ".xyz" ? points_of(in.off) : std::string(in.off));
     const auto r = hmira(dir, with(w.args, input_name, w.output));
-    SCOPED_TRACE(with(w.args, input_name, w.output) + " on " + in.name + ": exit " + std::to_string(r.code) + ", " + r.err);
+    SCOPED_TRACE(with(w.args, input_name, w.output) + " on " + in.name + ": exit " + std::to_string(r.code) + ", " +
+                 r.err);
     expect_finite_or_nothing(dir, r, w.output, {input_name});
 }
 
@@ -157,7 +163,8 @@ std::string case_name(const ::testing::TestParamInfo<std::tuple<writer, input>>&
     return std::string(std::get<0>(info.param).name) + "_" + std::get<1>(info.param).name;
 }
 
-INSTANTIATE_TEST_SUITE_P(all_writers, cli_contract_finite, ::testing::Combine(::testing::ValuesIn(writers), ::testing::ValuesIn(inputs)), case_name);
+INSTANTIATE_TEST_SUITE_P(all_writers, cli_contract_finite,
+                         ::testing::Combine(::testing::ValuesIn(writers), ::testing::ValuesIn(inputs)), case_name);
 
 TEST(cli_contract, generate_writes_finite_coordinates_at_any_scale) {
     scratch_dir dir;
@@ -165,7 +172,8 @@ TEST(cli_contract, generate_writes_finite_coordinates_at_any_scale) {
         for (const std::string scale : {"1.7e308", "1e-300", "1"}) {
             SCOPED_TRACE(solid + " --scale " + scale);
             const auto r = hmira(dir, "generate " + solid + " out.off --scale " + scale);
-            expect_finite_or_nothing(dir, r, "out.off", r.code == 0 ? std::vector<std::string>{"out.off"} : std::vector<std::string>{});
+            expect_finite_or_nothing(dir, r, "out.off",
+                                     r.code == 0 ? std::vector<std::string>{"out.off"} : std::vector<std::string>{});
             fs::remove(dir / "out.off");
         }
 }
@@ -181,22 +189,22 @@ std::string centre_voxel_raw() {
 void mc_extreme_grids(bool slab) {
     scratch_dir dir;
     hmira_test::write_bytes(dir / "v.raw", centre_voxel_raw());
-    for (const std::string options : {"--spacing 1e308", "--spacing 1e308 --origin -1.7e308,-1.7e308,-1.7e308", "--spacing 1e-300",
-                                      "--origin 1.7e308,1.7e308,1.7e308", "--spacing 1e308 --origin 1e308,1e308,1e308", "--spacing 1"}) {
+    for (const std::string options :
+         {"--spacing 1e308", "--spacing 1e308 --origin -1.7e308,-1.7e308,-1.7e308", "--spacing 1e-300",
+          "--origin 1.7e308,1.7e308,1.7e308", "--spacing 1e308 --origin 1e308,1e308,1e308", "--spacing 1"}) {
         SCOPED_TRACE(options);
-        const auto r = hmira(dir, "mc v.raw out.off --dims 3,3,3 --type uint8 --iso 0.5 --inside above " + options + (slab ? " --slab-slices 1" : ""));
-        expect_finite_or_nothing(dir, r, "out.off", r.code == 0 ? std::vector<std::string>{"out.off", "v.raw"} : std::vector<std::string>{"v.raw"});
+        const auto r = hmira(dir, "mc v.raw out.off --dims 3,3,3 --type uint8 --iso 0.5 --inside above " + options +
+                                      (slab ? " --slab-slices 1" : ""));
+        expect_finite_or_nothing(
+            dir, r, "out.off",
+            r.code == 0 ? std::vector<std::string>{"out.off", "v.raw"} : std::vector<std::string>{"v.raw"});
         fs::remove(dir / "out.off");
     }
 }
 
-TEST(cli_contract, mc_writes_finite_coordinates_for_extreme_spacing_and_origin) {
-    mc_extreme_grids(false);
-}
+TEST(cli_contract, mc_writes_finite_coordinates_for_extreme_spacing_and_origin) { mc_extreme_grids(false); }
 
-TEST(cli_contract, mc_by_slabs_writes_finite_coordinates_for_extreme_spacing_and_origin) {
-    mc_extreme_grids(true);
-}
+TEST(cli_contract, mc_by_slabs_writes_finite_coordinates_for_extreme_spacing_and_origin) { mc_extreme_grids(true); }
 
 /// The numbers after `key` on the line of `text` that starts with it.
 std::vector<double> numbers_after(const std::string& text, const std::string& key) {
@@ -245,9 +253,19 @@ TEST(cli_contract, voxelize_headers_and_sidecars_hold_finite_numbers) {
 
 /// Every writing subcommand with an input, in the form IN OUT.
 const char* with_input[] = {
-    "convert IN OUT", "flip IN OUT", "triangulate IN OUT", "fill-holes IN OUT", "subdivide IN OUT --scheme catmull-clark", "smooth IN OUT",
-    "decimate IN OUT --ratio 0.5", "remesh IN OUT", "truncate IN OUT --all", "bevel IN OUT --all", "extrude IN OUT --all --mode individual",
-    "voxelize IN OUT -n 4", "view IN OUT",
+    "convert IN OUT",
+    "flip IN OUT",
+    "triangulate IN OUT",
+    "fill-holes IN OUT",
+    "subdivide IN OUT --scheme catmull-clark",
+    "smooth IN OUT",
+    "decimate IN OUT --ratio 0.5",
+    "remesh IN OUT",
+    "truncate IN OUT --all",
+    "bevel IN OUT --all",
+    "extrude IN OUT --all --mode individual",
+    "voxelize IN OUT -n 4",
+    "view IN OUT",
 };
 
 /// An octahedron: triangles, closed, so that every subcommand above gets as far as writing.
@@ -263,8 +281,8 @@ TEST(cli_contract, no_subcommand_writes_over_its_input_under_any_name) {
     fs::create_directory(dir / "sub");
     const auto files = dir.files();
     for (const std::string args : with_input)
-        for (const std::string& out :
-             std::vector<std::string>{"in.off", "./in.off", "sub/../in.off", "alias.off", "hard.off", fs::absolute(dir / "in.off").string()}) {
+        for (const std::string& out : std::vector<std::string>{"in.off", "./in.off", "sub/../in.off", "alias.off",
+                                                               "hard.off", fs::absolute(dir / "in.off").string()}) {
             const std::string run = with(args, "in.off", out);
             SCOPED_TRACE(run);
             const auto r = hmira(dir, run);
@@ -274,8 +292,10 @@ TEST(cli_contract, no_subcommand_writes_over_its_input_under_any_name) {
             EXPECT_EQ(dir.files(), files);
         }
     // delaunay reads points; a .ply of points is a mesh file it could write.
-    hmira_test::write_bytes(dir / "p.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty double x\nproperty double y\nproperty double z\n"
-                                          "end_header\n0 0 0\n1 0 0\n0 1 0\n");
+    hmira_test::write_bytes(
+        dir / "p.ply",
+        "ply\nformat ascii 1.0\nelement vertex 3\nproperty double x\nproperty double y\nproperty double z\n"
+        "end_header\n0 0 0\n1 0 0\n0 1 0\n");
     const std::string points = hmira_test::read_bytes(dir / "p.ply");
     for (const std::string out : {"p.ply", "./p.ply"}) {
         const auto r = hmira(dir, "delaunay p.ply " + out);
@@ -338,7 +358,8 @@ TEST(cli_contract, sigint_stops_a_long_smooth_promptly_and_leaves_no_output) {
     ASSERT_EQ(::kill(pid, SIGINT), 0);
     // Generous: the bound is on the work between two cancellation checks, not on speed.
     pid_t done = 0;
-    while ((done = ::waitpid(pid, &status, WNOHANG)) == 0 && std::chrono::steady_clock::now() - sent < std::chrono::seconds(20))
+    while ((done = ::waitpid(pid, &status, WNOHANG)) == 0 &&
+           std::chrono::steady_clock::now() - sent < std::chrono::seconds(20))
         std::this_thread::sleep_for(std::chrono::milliseconds(20));
     if (done == 0) {
         ::kill(pid, SIGKILL);

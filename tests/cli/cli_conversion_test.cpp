@@ -114,7 +114,7 @@ TEST(CliMarchingCubes, an_iso_outside_the_volumes_range_is_an_error_naming_the_r
     }
     // Both volumes at the gallery's commands (the liver, 0 and 1, has 0 in its range).
     for (const std::string& cmd : {"mc '" + skull.string() + "' s.ply --iso 2.9 --inside above",
-                                  "mc '" + liver.string() + "' l.ply --iso 0.5 --inside above"}) {
+                                   "mc '" + liver.string() + "' l.ply --iso 0.5 --inside above"}) {
         const auto r = hmira(dir, cmd);
         EXPECT_EQ(r.code, 0) << cmd << ": " << r.err;
         EXPECT_EQ(r.out.find(" 0 triangles"), std::string::npos) << r.out;
@@ -146,8 +146,7 @@ TEST(CliVoxelize, a_grid_larger_than_the_free_memory_is_refused_at_once_naming_t
                             "4 0 1 2 3\n4 7 6 5 4\n4 0 4 5 1\n4 1 5 6 2\n4 2 6 7 3\n4 3 7 4 0\n");
     const auto r = hmira(dir, "voxelize box.off out.raw -n 2048 --padding 1024", "HMIRA_TEST_MEMAVAILABLE=3000000000");
     EXPECT_EQ(r.code, 1) << r.err;
-    EXPECT_TRUE(
-        one_line_error(r, "4096 x 3072 x 3072 voxels (--resolution 2048, --padding 1024) needs about 4.8 GB"));
+    EXPECT_TRUE(one_line_error(r, "4096 x 3072 x 3072 voxels (--resolution 2048, --padding 1024) needs about 4.8 GB"));
     EXPECT_NE(r.err.find("of memory is free"), std::string::npos) << r.err;
     EXPECT_LT(r.seconds, 10.0);
     EXPECT_FALSE(std::filesystem::exists(dir.path() / "out.raw"));

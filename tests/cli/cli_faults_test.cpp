@@ -46,7 +46,10 @@ std::string cube_with_vertex_6(const std::string& coordinates) {
 /// An INRIMAGE-4 volume of 2x2x2 unsigned bytes with `extra` header lines overriding the
 /// defaults (later keys win in hmira's reader, as they are read in order).
 std::string inr(const std::string& extra, std::size_t samples = 8) {
-    std::string h = "#INRIMAGE-4#{\nXDIM=2\nYDIM=2\nZDIM=2\nVDIM=1\nTYPE=unsigned fixed\nPIXSIZE=8 bits\nCPU=decm\nVX=1\nVY=1\nVZ=1\n" + extra;
+    std::string h =
+        "#INRIMAGE-4#{\nXDIM=2\nYDIM=2\nZDIM=2\nVDIM=1\nTYPE=unsigned fixed\nPIXSIZE=8 "
+        "bits\nCPU=decm\nVX=1\nVY=1\nVZ=1\n" +
+        extra;
     h += std::string(252 - h.size(), '\n') + "##}\n";
     return h + std::string(samples, '\1');
 }
@@ -66,7 +69,8 @@ TEST(cli_faults, validate_and_info_refuse_a_nan_or_infinite_vertex_naming_file_l
     for (const std::string bad : {"nan 1 1", "1 inf 1", "1 1 -inf"}) {
         SCOPED_TRACE(bad);
         hmira_test::write_bytes(dir / "bad.off", cube_with_vertex_6(bad));
-        for (const std::string cmd : {"validate bad.off", "validate bad.off --relaxed --no-geometry", "info bad.off", "info --json bad.off"}) {
+        for (const std::string cmd :
+             {"validate bad.off", "validate bad.off --relaxed --no-geometry", "info bad.off", "info --json bad.off"}) {
             SCOPED_TRACE(cmd);
             const auto r = hmira(dir, cmd);
             EXPECT_EQ(r.code, 1);
@@ -84,9 +88,10 @@ TEST(cli_faults, edits_and_voxelize_refuse_a_non_finite_vertex_and_write_nothing
     hmira_test::write_bytes(dir / "bad.off", cube_with_vertex_6("nan 1 1"));
     hmira_test::write_bytes(dir / "inf.off", cube_with_vertex_6("1 inf 1"));
     for (const std::string input : {"bad.off", "inf.off"})
-        for (const std::string cmd : {"truncate IN out.off --all", "truncate IN out.off --vertex 0", "bevel IN out.off --angle 30", "bevel IN out.off --all",
-                                      "bevel IN out.off --vertices-all", "bevel IN out.off --edge 0,1", "extrude IN out.off --face 0",
-                                      "voxelize IN out.raw -n 8", "voxelize IN out.binvox -n 8"}) {
+        for (const std::string cmd :
+             {"truncate IN out.off --all", "truncate IN out.off --vertex 0", "bevel IN out.off --angle 30",
+              "bevel IN out.off --all", "bevel IN out.off --vertices-all", "bevel IN out.off --edge 0,1",
+              "extrude IN out.off --face 0", "voxelize IN out.raw -n 8", "voxelize IN out.binvox -n 8"}) {
             std::string line = cmd;
             line.replace(line.find("IN"), 2, input);
             SCOPED_TRACE(line);
@@ -150,8 +155,9 @@ TEST(cli_faults, bevel_angle_nan_names_the_option_not_the_selection) {
 TEST(cli_faults, range_errors_print_their_bounds_compactly) {
     scratch_dir dir;
     hmira_test::write_bytes(dir / "c.off", cube_off);
-    for (const std::string line : {"generate cube x.obj --scale -1", "bevel c.off x.off --all --width -2", "truncate c.off x.off --all --distance 0",
-                                   "truncate c.off x.off --vertex -1", "info c.off --threads -3", "bevel c.off x.off --angle 1e308"}) {
+    for (const std::string line : {"generate cube x.obj --scale -1", "bevel c.off x.off --all --width -2",
+                                   "truncate c.off x.off --all --distance 0", "truncate c.off x.off --vertex -1",
+                                   "info c.off --threads -3", "bevel c.off x.off --angle 1e308"}) {
         SCOPED_TRACE(line);
         const auto r = hmira(dir, line);
         EXPECT_EQ(r.code, 2);
@@ -159,7 +165,8 @@ TEST(cli_faults, range_errors_print_their_bounds_compactly) {
         EXPECT_LT(r.err.size(), 160u) << r.err;
         EXPECT_EQ(r.err.find("1797693134862315"), std::string::npos) << r.err;
     }
-    EXPECT_TRUE(one_line_error(hmira(dir, "generate cube x.obj --scale -1"), "--scale: expected a finite number > 0, got -1"));
+    EXPECT_TRUE(
+        one_line_error(hmira(dir, "generate cube x.obj --scale -1"), "--scale: expected a finite number > 0, got -1"));
 }
 
 TEST(cli_faults, bevel_vertices_all_blames_bevel_and_says_why_not_truncate) {
@@ -172,7 +179,8 @@ TEST(cli_faults, bevel_vertices_all_blames_bevel_and_says_why_not_truncate) {
         SCOPED_TRACE(sel);
         const auto r = hmira(dir, "bevel iso.off x.off " + sel);
         EXPECT_EQ(r.code, 1);
-        EXPECT_TRUE(one_line_error(r, "bevel " + sel.substr(0, sel.find(' ')) + ": vertex 8 is used by no face, so it has no corner to cut"));
+        EXPECT_TRUE(one_line_error(
+            r, "bevel " + sel.substr(0, sel.find(' ')) + ": vertex 8 is used by no face, so it has no corner to cut"));
         EXPECT_EQ(r.err.find("truncate"), std::string::npos) << r.err;
         EXPECT_FALSE(std::filesystem::exists(dir / "x.off"));
     }
@@ -202,7 +210,8 @@ TEST(cli_faults, every_documented_failure_exits_with_its_documented_code) {
     hmira_test::write_bytes(dir / "empty.off", "OFF\n0 0 0\n");
     hmira_test::write_bytes(dir / "bad.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n");
     hmira_test::write_bytes(dir / "open.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
-    hmira_test::write_bytes(dir / "nonmanifold.off", "OFF\n5 3 0\n0 0 0\n1 0 0\n0 1 0\n0 -1 0\n0 0 1\n3 0 1 2\n3 1 0 3\n3 0 1 4\n");
+    hmira_test::write_bytes(dir / "nonmanifold.off",
+                            "OFF\n5 3 0\n0 0 0\n1 0 0\n0 1 0\n0 -1 0\n0 0 1\n3 0 1 2\n3 1 0 3\n3 0 1 4\n");
     hmira_test::write_bytes(dir / "pts.xyz", "0 0\n1 0\n");
     hmira_test::write_bytes(dir / "v.raw", std::string(7, '\0'));
     hmira_test::write_bytes(dir / "nan.raw", std::string("\0\0\xc0\x7f", 4) + std::string(28, '\0'));
@@ -286,10 +295,12 @@ TEST(cli_faults, every_documented_failure_exits_with_its_documented_code) {
         SCOPED_TRACE(f.command);
         const auto r = hmira(dir, f.command);
         EXPECT_EQ(r.code, f.code) << r.err;
-        if (f.command.rfind("validate nonmanifold", 0) == 0) EXPECT_NE(r.out.find("problem(s)"), std::string::npos) << r.out;  // problems go to stdout
-        else EXPECT_TRUE(one_line_error(r, ""));
-        EXPECT_FALSE(std::filesystem::exists(dir / "x.off") || std::filesystem::exists(dir / "x.obj") || std::filesystem::exists(dir / "x.binvox") ||
-                     std::filesystem::exists(dir / "x.raw"));
+        if (f.command.rfind("validate nonmanifold", 0) == 0)
+            EXPECT_NE(r.out.find("problem(s)"), std::string::npos) << r.out;  // problems go to stdout
+        else
+            EXPECT_TRUE(one_line_error(r, ""));
+        EXPECT_FALSE(std::filesystem::exists(dir / "x.off") || std::filesystem::exists(dir / "x.obj") ||
+                     std::filesystem::exists(dir / "x.binvox") || std::filesystem::exists(dir / "x.raw"));
     }
 }
 
@@ -317,11 +328,13 @@ TEST(cli_faults, a_signal_during_a_write_leaves_the_old_file_and_no_temporary) {
         const char* name;
         int sig;
     };
-    for (const auto& [name, sig] : {signal_case{"INT", SIGINT}, signal_case{"TERM", SIGTERM}, signal_case{"HUP", SIGHUP}})
+    for (const auto& [name, sig] :
+         {signal_case{"INT", SIGINT}, signal_case{"TERM", SIGTERM}, signal_case{"HUP", SIGHUP}})
         for (const std::string named : {"1", "0"}) {
             SCOPED_TRACE(std::string(name) + (named == "1" ? " (named temporary)" : " (O_TMPFILE where available)"));
-            const auto r = hmira(dir, "mc sphere out.ply -n 80",
-                                 std::string("HMIRA_TEST_SIGNAL_DURING_WRITE=") + name + " HMIRA_TEST_NAMED_TEMPORARY=" + named);
+            const auto r =
+                hmira(dir, "mc sphere out.ply -n 80",
+                      std::string("HMIRA_TEST_SIGNAL_DURING_WRITE=") + name + " HMIRA_TEST_NAMED_TEMPORARY=" + named);
             EXPECT_EQ(r.signal, sig) << "exit " << r.code << ": " << r.err;
             EXPECT_EQ(dir.files(), std::vector<std::string>{"out.ply"});
             EXPECT_EQ(hmira_test::read_bytes(dir / "out.ply"), before);
@@ -387,7 +400,8 @@ TEST(cli_faults, an_output_name_of_any_legal_length_is_written) {
         EXPECT_EQ(m.vertex_count(), 8u);
         std::filesystem::remove(dir / name);
     }
-    const auto r = hmira(dir, "generate cube " + std::string(256 - 4, 'n') + ".obj");  // one byte too long for any file system
+    const auto r =
+        hmira(dir, "generate cube " + std::string(256 - 4, 'n') + ".obj");  // one byte too long for any file system
     EXPECT_EQ(r.code, 3);
     EXPECT_TRUE(dir.files().empty());
 }
@@ -407,16 +421,20 @@ TEST(cli_faults, a_temporary_that_cannot_be_created_is_reported_with_the_reason)
 
 TEST(cli_faults, every_reading_subcommand_takes_max_input_bytes_with_binary_suffixes) {
     scratch_dir dir;
-    for (const std::string sub : {"info", "validate", "convert", "flip", "delaunay", "mc", "truncate", "bevel", "extrude", "voxelize"}) {
+    for (const std::string sub :
+         {"info", "validate", "convert", "flip", "delaunay", "mc", "truncate", "bevel", "extrude", "voxelize"}) {
         const auto r = hmira(dir, sub + " --help");
         EXPECT_NE(r.out.find("--max-input-bytes"), std::string::npos) << sub;
         EXPECT_NE(r.out.find("=4G"), std::string::npos) << sub;
     }
-    EXPECT_EQ(hmira(dir, "generate --help").out.find("--max-input-bytes"), std::string::npos) << "generate reads nothing";
+    EXPECT_EQ(hmira(dir, "generate --help").out.find("--max-input-bytes"), std::string::npos)
+        << "generate reads nothing";
     hmira_test::write_bytes(dir / "c.off", cube_off);
-    for (const std::string ok : {"1", "512", "1K", "64M", "4G", "1T", "2KiB", "3MiB", "4GiB", "1TiB", "18446744073709551615"})
+    for (const std::string ok :
+         {"1", "512", "1K", "64M", "4G", "1T", "2KiB", "3MiB", "4GiB", "1TiB", "18446744073709551615"})
         EXPECT_EQ(hmira(dir, "info c.off --max-input-bytes " + ok).code, 0) << ok;
-    for (const std::string bad : {"0", "-1", "nan", "inf", "1.5G", "4X", "G", "1Gi", "16777216T", "18446744073709551616", "''"}) {
+    for (const std::string bad :
+         {"0", "-1", "nan", "inf", "1.5G", "4X", "G", "1Gi", "16777216T", "18446744073709551616", "''"}) {
         SCOPED_TRACE(bad);
         const auto r = hmira(dir, "info c.off --max-input-bytes " + bad);
         EXPECT_EQ(r.code, 2);
@@ -425,12 +443,14 @@ TEST(cli_faults, every_reading_subcommand_takes_max_input_bytes_with_binary_suff
 }
 
 /// Runs `hmira <args>` with `input` (a FIFO in `dir`) fed `bytes` by a background writer.
-run_result hmira_from_fifo(const scratch_dir& dir, const std::string& fifo, const std::string& bytes, const std::string& args) {
+run_result hmira_from_fifo(const scratch_dir& dir, const std::string& fifo, const std::string& bytes,
+                           const std::string& args) {
     hmira_test::write_bytes(dir / "feed", bytes);
     std::filesystem::remove(dir / fifo);
     EXPECT_EQ(::mkfifo((dir / fifo).c_str(), 0600), 0);
     // The writer may meet a reader that stopped early: its own failure does not matter.
-    const std::string feed = "(cat '" + (dir / "feed").string() + "' > '" + (dir / fifo).string() + "' 2>/dev/null &) ; ";
+    const std::string feed =
+        "(cat '" + (dir / "feed").string() + "' > '" + (dir / fifo).string() + "' 2>/dev/null &) ; ";
     auto r = hmira(dir, args, feed);
     std::filesystem::remove(dir / fifo);
     std::filesystem::remove(dir / "feed");

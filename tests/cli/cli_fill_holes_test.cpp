@@ -16,7 +16,9 @@ namespace {
 using hmira_test::one_line_error;
 using hmira_test::scratch_dir;
 
-hmira_test::run_result hmira(const scratch_dir& dir, const std::string& args) { return hmira_test::run_cli(HMIRA_CLI, dir, args); }
+hmira_test::run_result hmira(const scratch_dir& dir, const std::string& args) {
+    return hmira_test::run_cli(HMIRA_CLI, dir, args);
+}
 
 std::string data(const std::string& name) {
     const char* dir = std::getenv("HMIRA_TEST_DATA");

@@ -35,7 +35,9 @@ void expect_one_line_error(const run_result& r, const std::string& part) {
     EXPECT_TRUE(hmira_test::one_line_error(r, part));
 }
 
-const std::vector<std::string> subcommands = {"info", "validate", "convert", "generate", "flip", "delaunay", "mc", "truncate", "bevel", "extrude", "voxelize", "view", "triangulate", "fill-holes", "subdivide", "smooth"};
+const std::vector<std::string> subcommands = {
+    "info",  "validate", "convert",  "generate", "flip",        "delaunay",   "mc",        "truncate",
+    "bevel", "extrude",  "voxelize", "view",     "triangulate", "fill-holes", "subdivide", "smooth"};
 
 TEST(cli, every_subcommand_has_help_with_an_example_and_the_common_options) {
     scratch_dir dir;
@@ -54,8 +56,15 @@ TEST(cli, every_subcommand_has_help_with_an_example_and_the_common_options) {
 }
 
 TEST(cli, generated_solids_have_the_textbook_counts_in_every_format) {
-    struct solid { const char* name; std::size_t v, e, f; };
-    const solid solids[] = {{"tetrahedron", 4, 6, 4}, {"cube", 8, 12, 6}, {"octahedron", 6, 12, 8}, {"dodecahedron", 20, 30, 12}, {"icosahedron", 12, 30, 20}};
+    struct solid {
+        const char* name;
+        std::size_t v, e, f;
+    };
+    const solid solids[] = {{"tetrahedron", 4, 6, 4},
+                            {"cube", 8, 12, 6},
+                            {"octahedron", 6, 12, 8},
+                            {"dodecahedron", 20, 30, 12},
+                            {"icosahedron", 12, 30, 20}};
     scratch_dir dir;
     for (const auto& s : solids)
         for (const char* ext : {"obj", "off", "ply"}) {
@@ -83,7 +92,8 @@ TEST(cli, info_text_names_every_quantity) {
     ASSERT_EQ(hmira(dir, "generate cube c.off").code, 0);
     const auto r = hmira(dir, "info c.off");
     ASSERT_EQ(r.code, 0);
-    for (const char* key : {"vertices:", "edges:", "faces:", "components:", "boundary loops:", "genus:", "closed:", "manifold:", "bounding box:", "validate:"})
+    for (const char* key : {"vertices:", "edges:", "faces:", "components:", "boundary loops:", "genus:", "closed:",
+                            "manifold:", "bounding box:", "validate:"})
         EXPECT_NE(r.out.find(key), std::string::npos) << key;
     EXPECT_NE(r.out.find("[-1, -1, -1] .. [1, 1, 1]"), std::string::npos) << r.out;
 }
@@ -93,7 +103,8 @@ TEST(cli, convert_keeps_the_mesh_through_every_format) {
     ASSERT_EQ(hmira(dir, "generate dodecahedron d.off").code, 0);
     hmira::face_vertex_mesh original;
     ASSERT_TRUE(hmira::io::read_mesh(original, dir / "d.off"));
-    for (const std::string target : {"d.obj", "d.ply", "d_ascii.ply --ascii", "d_be.ply --big-endian", "d.stl", "d_ascii.stl --ascii"}) {
+    for (const std::string target :
+         {"d.obj", "d.ply", "d_ascii.ply --ascii", "d_be.ply --big-endian", "d.stl", "d_ascii.stl --ascii"}) {
         SCOPED_TRACE(target);
         const auto r = hmira(dir, "convert d.off " + target);
         ASSERT_EQ(r.code, 0) << r.err;
@@ -124,7 +135,8 @@ TEST(cli, validate_exits_zero_on_a_good_mesh_and_one_listing_problems_on_a_bad_o
     scratch_dir dir;
     ASSERT_EQ(hmira(dir, "generate cube c.obj").code, 0);
     EXPECT_EQ(hmira(dir, "validate c.obj").code, 0);
-    hmira_test::write_bytes(dir / "fin.off", "OFF\n5 3 0\n0 0 0\n1 0 0\n0 1 0\n0 -1 0\n0 0 1\n3 0 1 2\n3 1 0 3\n3 0 1 4\n");
+    hmira_test::write_bytes(dir / "fin.off",
+                            "OFF\n5 3 0\n0 0 0\n1 0 0\n0 1 0\n0 -1 0\n0 0 1\n3 0 1 2\n3 1 0 3\n3 0 1 4\n");
     const auto r = hmira(dir, "validate fin.off");
     EXPECT_EQ(r.code, 1);
     EXPECT_NE(r.out.find("non-manifold edge"), std::string::npos) << r.out;
@@ -145,8 +157,8 @@ TEST(cli, quiet_prints_nothing_on_success) {
 // ---- exit codes --------------------------------------------------------------------------------
 TEST(cli, usage_errors_exit_2) {
     scratch_dir dir;
-    for (const std::string args : {"", "bogus", "info", "info --frobnicate x.off", "generate sphere s.off", "generate cube c.off --scale -1",
-                                   "convert a.off", "info --threads -3 x.off"}) {
+    for (const std::string args : {"", "bogus", "info", "info --frobnicate x.off", "generate sphere s.off",
+                                   "generate cube c.off --scale -1", "convert a.off", "info --threads -3 x.off"}) {
         SCOPED_TRACE(args);
         const auto r = hmira(dir, args);
         EXPECT_EQ(r.code, 2) << r.err;
@@ -169,7 +181,8 @@ TEST(cli, malformed_input_exits_1_with_file_and_line_and_writes_nothing) {
     EXPECT_EQ(hmira(dir, "info bad.obj").code, 1);
     EXPECT_EQ(hmira(dir, "validate bad.obj").code, 1);
     EXPECT_EQ(hmira(dir, "flip bad.obj bad.obj").code, 1);
-    EXPECT_EQ(hmira_test::read_bytes(dir / "bad.obj"), "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n") << "the input was touched";
+    EXPECT_EQ(hmira_test::read_bytes(dir / "bad.obj"), "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n")
+        << "the input was touched";
 }
 
 TEST(cli, io_failures_exit_3) {
@@ -242,7 +255,8 @@ TEST(cli, marching_cubes_of_named_shapes_has_their_topology) {
 
 TEST(cli, real_cgal_demo_meshes_are_described) {
     const char* data = std::getenv("HMIRA_TEST_DATA");
-    const auto elephant = data ? std::filesystem::absolute(std::filesystem::path(data) / "meshes" / "elephant.off") : std::filesystem::path();
+    const auto elephant = data ? std::filesystem::absolute(std::filesystem::path(data) / "meshes" / "elephant.off")
+                               : std::filesystem::path();
     if (!data || !std::filesystem::exists(elephant)) GTEST_SKIP() << "run scripts/test-data.sh first";
     scratch_dir dir;
     const auto r = hmira(dir, "info --json '" + elephant.string() + "'");
@@ -290,7 +304,8 @@ vef counts(const hmira::face_vertex_mesh& m) {
     std::set<std::pair<std::size_t, std::size_t>> edges;
     for (auto f : m.faces()) {
         const auto fv = m.face_vertices(f);
-        for (std::size_t i = 0; i < fv.size(); ++i) edges.insert(std::minmax<std::size_t>(fv[i].index, fv[(i + 1) % fv.size()].index));
+        for (std::size_t i = 0; i < fv.size(); ++i)
+            edges.insert(std::minmax<std::size_t>(fv[i].index, fv[(i + 1) % fv.size()].index));
     }
     return {m.vertex_count(), edges.size(), m.face_count()};
 }
@@ -303,8 +318,11 @@ vef counts(const hmira::face_vertex_mesh& m) {
         for (std::size_t i = 0; i < fv.size(); ++i) ++directed[{fv[i].index, fv[(i + 1) % fv.size()].index}];
     }
     for (const auto& [ab, n] : directed) {
-        if (n != 1) return ::testing::AssertionFailure() << "edge " << ab.first << "->" << ab.second << " is run by " << n << " faces";
-        if (!directed.contains({ab.second, ab.first})) return ::testing::AssertionFailure() << "edge " << ab.first << "->" << ab.second << " has no twin";
+        if (n != 1)
+            return ::testing::AssertionFailure()
+                   << "edge " << ab.first << "->" << ab.second << " is run by " << n << " faces";
+        if (!directed.contains({ab.second, ab.first}))
+            return ::testing::AssertionFailure() << "edge " << ab.first << "->" << ab.second << " has no twin";
     }
     return ::testing::AssertionSuccess();
 }
@@ -315,13 +333,15 @@ void expect_sound(const hmira::face_vertex_mesh& m, long long genus = 0) {
     EXPECT_TRUE(hmira_test::is_valid(m));
     EXPECT_TRUE(closed_and_oriented(m));
     const auto c = counts(m);
-    EXPECT_EQ(static_cast<long long>(c.v) - static_cast<long long>(c.e) + static_cast<long long>(c.f), 2 - 2 * genus) << "Euler-Poincare";
+    EXPECT_EQ(static_cast<long long>(c.v) - static_cast<long long>(c.e) + static_cast<long long>(c.f), 2 - 2 * genus)
+        << "Euler-Poincare";
     EXPECT_GT(hmira_test::signed_volume(m), 0.0) << "wound outward";
 }
 
 /// `args` must fail with `code` and a one-line error containing `part`, leave an existing
 /// `output` as it was, and create neither it nor a temporary when it does not exist.
-void expect_refused(const scratch_dir& dir, const std::string& args, int code, const std::string& part, const std::string& output) {
+void expect_refused(const scratch_dir& dir, const std::string& args, int code, const std::string& part,
+                    const std::string& output) {
     SCOPED_TRACE(args);
     hmira_test::write_bytes(dir / output, "keep");
     const auto files = dir.files();
@@ -381,7 +401,8 @@ TEST(cli, truncate_keeps_the_file_vertices_first_and_in_their_order) {
     scratch_dir dir;
     ASSERT_EQ(hmira(dir, "generate cube c.off").code, 0);
     const auto c = read_back(dir / "c.off");
-    for (const auto& cut : {std::vector<std::size_t>{5}, std::vector<std::size_t>{0, 6}, std::vector<std::size_t>{7, 2, 3}}) {
+    for (const auto& cut :
+         {std::vector<std::size_t>{5}, std::vector<std::size_t>{0, 6}, std::vector<std::size_t>{7, 2, 3}}) {
         std::string args = "truncate c.off t.off";
         for (auto i : cut) args += " --vertex " + std::to_string(i);
         SCOPED_TRACE(args);
@@ -402,12 +423,16 @@ TEST(cli, truncate_keeps_the_file_vertices_first_and_in_their_order) {
         for (auto i : cut)
             for (std::size_t j = 0; j < 8; ++j) {
                 const auto a = at(c, i), b = at(c, j);
-                const double d2 = (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]);
-                if (std::abs(d2 - 4) < 1e-12) expected.push_back({a[0] + (b[0] - a[0]) / 3, a[1] + (b[1] - a[1]) / 3, a[2] + (b[2] - a[2]) / 3});
+                const double d2 =
+                    (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]);
+                if (std::abs(d2 - 4) < 1e-12)
+                    expected.push_back({a[0] + (b[0] - a[0]) / 3, a[1] + (b[1] - a[1]) / 3, a[2] + (b[2] - a[2]) / 3});
             }
         ASSERT_EQ(t.vertex_count() - next, expected.size());
         for (std::size_t k = next; k < t.vertex_count(); ++k)
-            EXPECT_TRUE(std::any_of(expected.begin(), expected.end(), [&](const point& e) { return near(e, at(t, k), 1e-12); })) << "new vertex " << k;
+            EXPECT_TRUE(
+                std::any_of(expected.begin(), expected.end(), [&](const point& e) { return near(e, at(t, k), 1e-12); }))
+                << "new vertex " << k;
         EXPECT_NEAR(hmira_test::signed_volume(t), 8 - double(cut.size()) * std::pow(2.0 / 3, 3) / 6, 1e-12);
     }
 }
@@ -432,13 +457,18 @@ TEST(cli, bevel_one_cube_edge_is_a_chamfer_named_by_its_end_vertices) {
         // The new edges run at width w from the old one inside the faces y = -1 and z = -1.
         const std::vector<point> expected{{-1, -1 + w, -1}, {1, -1 + w, -1}, {-1, -1, -1 + w}, {1, -1, -1 + w}};
         for (std::size_t k = 6; k < 10; ++k)
-            EXPECT_TRUE(std::any_of(expected.begin(), expected.end(), [&](const point& e) { return near(e, at(b, k)); })) << "new vertex " << k;
+            EXPECT_TRUE(
+                std::any_of(expected.begin(), expected.end(), [&](const point& e) { return near(e, at(b, k)); }))
+                << "new vertex " << k;
         // A prism of cross-section w^2 / 2 and length 2 is cut away.
         EXPECT_NEAR(hmira_test::signed_volume(b), 8 - w * w, 1e-12);
     }
     const auto twice = hmira(dir, "bevel c.obj b.obj --edge 0,1 --edge 1,0 --width 0.25");
     ASSERT_EQ(twice.code, 0) << twice.err;
-    EXPECT_NE(twice.out.find("bevelled 1 edge: width 0.25 requested, smallest used 0.25, 0 edges limited by the clamp: V 8 -> 10"), std::string::npos) << "one edge named twice: " << twice.out;
+    EXPECT_NE(twice.out.find(
+                  "bevelled 1 edge: width 0.25 requested, smallest used 0.25, 0 edges limited by the clamp: V 8 -> 10"),
+              std::string::npos)
+        << "one edge named twice: " << twice.out;
     // Rounded: an arc of 3 segments removes less than the chamfer, more than the true quarter circle.
     ASSERT_EQ(hmira(dir, "bevel c.obj r.obj --edge 0,1 --width 0.25 --segments 3 -q").code, 0);
     const auto round = read_back(dir / "r.obj");
@@ -463,7 +493,8 @@ TEST(cli, bevel_selects_sharp_edges_by_angle_and_bevels_vertices_like_truncate) 
         EXPECT_EQ(faces_with(b, 3), 8u);
         expect_sound(b);
     }
-    expect_refused(dir, "bevel c.obj b.obj --angle 91", 1, "no edge has a dihedral angle of at least 91 degrees", "b.obj");
+    expect_refused(dir, "bevel c.obj b.obj --angle 91", 1, "no edge has a dihedral angle of at least 91 degrees",
+                   "b.obj");
     // The icosahedron's dihedral angle between face normals is 180 - 138.19 = 41.81 degrees.
     ASSERT_EQ(hmira(dir, "generate icosahedron i.off").code, 0);
     EXPECT_EQ(hmira(dir, "bevel i.off x.off --angle 42 -q").code, 1);
@@ -539,17 +570,20 @@ TEST(cli, extrude_one_face_of_the_unit_cube_doubles_its_volume) {
     // moved by the unit mean normal of the two faces, follow.
     for (std::size_t i = 0; i < 8; ++i) EXPECT_TRUE(near(at(reg, i), at(u, i))) << "file vertex " << i;
     const auto n0 = face_normal(u, 0), n1 = face_normal(u, 1);
-    const double len = std::sqrt((n0[0] + n1[0]) * (n0[0] + n1[0]) + (n0[1] + n1[1]) * (n0[1] + n1[1]) + (n0[2] + n1[2]) * (n0[2] + n1[2]));
+    const double len = std::sqrt((n0[0] + n1[0]) * (n0[0] + n1[0]) + (n0[1] + n1[1]) * (n0[1] + n1[1]) +
+                                 (n0[2] + n1[2]) * (n0[2] + n1[2]));
     const point mean{(n0[0] + n1[0]) / len, (n0[1] + n1[1]) / len, (n0[2] + n1[2]) / len};
     std::set<std::size_t> outline;
     for (std::size_t f : {0, 1})
         for (auto v : u.face_vertices(hmira::face_handle(f))) outline.insert(v.index);
     ASSERT_EQ(outline.size(), 6u);
     for (std::size_t k = 8; k < 14; ++k)
-        EXPECT_TRUE(std::any_of(outline.begin(), outline.end(), [&](std::size_t i) {
-            const auto p = at(u, i);
-            return near(at(reg, k), {p[0] + mean[0], p[1] + mean[1], p[2] + mean[2]}, 1e-12);
-        })) << "new vertex " << k;
+        EXPECT_TRUE(std::any_of(outline.begin(), outline.end(),
+                                [&](std::size_t i) {
+                                    const auto p = at(u, i);
+                                    return near(at(reg, k), {p[0] + mean[0], p[1] + mean[1], p[2] + mean[2]}, 1e-12);
+                                }))
+            << "new vertex " << k;
     // Every face on its own: six prisms of volume 1 each on the unit cube.
     ASSERT_EQ(hmira(dir, "extrude u.obj all.obj --all --mode individual -q").code, 0);
     const auto all = read_back(dir / "all.obj");
@@ -567,7 +601,8 @@ std::pair<std::size_t, std::vector<std::uint8_t>> read_binvox(const std::filesys
     const auto dim = bytes.find("dim ");
     const std::size_t d = std::stoul(bytes.substr(dim + 4));
     std::vector<std::uint8_t> voxels;
-    for (std::size_t i = data + 6; i + 1 < bytes.size(); i += 2) voxels.insert(voxels.end(), static_cast<unsigned char>(bytes[i + 1]), static_cast<std::uint8_t>(bytes[i]));
+    for (std::size_t i = data + 6; i + 1 < bytes.size(); i += 2)
+        voxels.insert(voxels.end(), static_cast<unsigned char>(bytes[i + 1]), static_cast<std::uint8_t>(bytes[i]));
     EXPECT_EQ(voxels.size(), d * d * d);
     return {d, voxels};
 }
@@ -604,7 +639,8 @@ TEST(cli, voxelize_a_cube_sets_the_voxels_its_geometry_predicts) {
     expect_refused(dir, "voxelize c.obj x.raw --mode centre", 2, "--mode", "x.raw");
     expect_refused(dir, "voxelize c.obj x.raw --mode surface --surface", 2, "--surface", "x.raw");
     const auto sidecar = hmira_test::read_bytes(dir / "s.raw.txt");
-    for (const char* line : {"dims: 16,16,16\n", "type: uint8\n", "spacing: 0.125,0.125,0.125\n", "origin: -0.9375,-0.9375,-0.9375"})
+    for (const char* line :
+         {"dims: 16,16,16\n", "type: uint8\n", "spacing: 0.125,0.125,0.125\n", "origin: -0.9375,-0.9375,-0.9375"})
         EXPECT_NE(sidecar.find(line), std::string::npos) << line << " not in:\n" << sidecar;
 
     // Solid, default padding 2: the cube's 16^3 voxels plus the first padding layer, whose
@@ -615,7 +651,8 @@ TEST(cli, voxelize_a_cube_sets_the_voxels_its_geometry_predicts) {
     const auto [d, voxels] = read_binvox(dir / "c.binvox");
     EXPECT_EQ(d, n + 4);
     EXPECT_EQ(static_cast<std::size_t>(std::count(voxels.begin(), voxels.end(), 1)), (n + 2) * (n + 2) * (n + 2));
-    EXPECT_NE(hmira_test::read_bytes(dir / "c.binvox").find("translate -1.25 -1.25 -1.25\nscale 2.5\n"), std::string::npos);
+    EXPECT_NE(hmira_test::read_bytes(dir / "c.binvox").find("translate -1.25 -1.25 -1.25\nscale 2.5\n"),
+              std::string::npos);
 
     ASSERT_EQ(hmira(dir, "voxelize c.obj p0.binvox -n 16 --padding 0 --threads 1 -q").code, 0);
     const auto [d0, v0] = read_binvox(dir / "p0.binvox");
@@ -660,15 +697,21 @@ TEST(cli, mc_reads_raw_volumes_of_every_sample_type_into_a_closed_sphere) {
     // A sphere of radius 0.8 sampled on 24^3 points, spacing 0.1, from -1.15.
     const double r0 = 0.8;
     auto dist = [&](double x, double y, double z) { return std::sqrt(x * x + y * y + z * z) - r0; };
-    write_raw_volume<float>(dir / "f.raw", 24, -1.15, 0.1, false, [&](double x, double y, double z) { return float(dist(x, y, z)); });
-    write_raw_volume<std::int16_t>(dir / "s.raw", 24, -1.15, 0.1, true,
-                                   [&](double x, double y, double z) { return std::int16_t(std::lround(1000 * dist(x, y, z))); });
-    write_raw_volume<std::uint8_t>(dir / "u.raw", 24, -1.15, 0.1, false, [&](double x, double y, double z) { return std::uint8_t(dist(x, y, z) < 0 ? 200 : 0); });
-    write_raw_volume<double>(dir / "d.raw", 24, -1.15, 0.1, true, [&](double x, double y, double z) { return dist(x, y, z); });
+    write_raw_volume<float>(dir / "f.raw", 24, -1.15, 0.1, false,
+                            [&](double x, double y, double z) { return float(dist(x, y, z)); });
+    write_raw_volume<std::int16_t>(dir / "s.raw", 24, -1.15, 0.1, true, [&](double x, double y, double z) {
+        return std::int16_t(std::lround(1000 * dist(x, y, z)));
+    });
+    write_raw_volume<std::uint8_t>(dir / "u.raw", 24, -1.15, 0.1, false, [&](double x, double y, double z) {
+        return std::uint8_t(dist(x, y, z) < 0 ? 200 : 0);
+    });
+    write_raw_volume<double>(dir / "d.raw", 24, -1.15, 0.1, true,
+                             [&](double x, double y, double z) { return dist(x, y, z); });
     const std::string grid = " --dims 24,24,24 --origin -1.15,-1.15,-1.15";
-    for (const std::string& run : {"mc f.raw out.off" + grid + " --spacing 0.1", "mc f.raw out.off" + grid + " --type float32 --spacing 0.1,0.1,0.1",
-                                  "mc s.raw out.off" + grid + " --type int16 --endian big --spacing 0.1",
-                                  "mc d.raw out.off" + grid + " --type float64 --endian big --spacing 0.1"}) {
+    for (const std::string& run : {"mc f.raw out.off" + grid + " --spacing 0.1",
+                                   "mc f.raw out.off" + grid + " --type float32 --spacing 0.1,0.1,0.1",
+                                   "mc s.raw out.off" + grid + " --type int16 --endian big --spacing 0.1",
+                                   "mc d.raw out.off" + grid + " --type float64 --endian big --spacing 0.1"}) {
         SCOPED_TRACE(run);
         const auto r = hmira(dir, run);
         ASSERT_EQ(r.code, 0) << r.err;
@@ -699,7 +742,9 @@ TEST(cli, mc_reads_inr_and_inr_gz_volumes_by_name) {
     const double r0 = 0.8;
     write_raw_volume<float>(dir / "samples", 24, -1.15, 0.1, false,
                             [&](double x, double y, double z) { return float(std::sqrt(x * x + y * y + z * z) - r0); });
-    std::string header = "#INRIMAGE-4#{\nXDIM=24\nYDIM=24\nZDIM=24\nVDIM=1\nTYPE=float\nPIXSIZE=32 bits\nCPU=decm\nVX=0.1\nVY=0.1\nVZ=0.1\n";
+    std::string header =
+        "#INRIMAGE-4#{\nXDIM=24\nYDIM=24\nZDIM=24\nVDIM=1\nTYPE=float\nPIXSIZE=32 "
+        "bits\nCPU=decm\nVX=0.1\nVY=0.1\nVZ=0.1\n";
     header += std::string(252 - header.size(), '\n') + "##}\n";
     ASSERT_EQ(header.size(), 256u);
     hmira_test::write_bytes(dir / "s.inr", header + hmira_test::read_bytes(dir / "samples"));
@@ -711,7 +756,8 @@ TEST(cli, mc_reads_inr_and_inr_gz_volumes_by_name) {
     // Gzipped, named .inr.gz (or upper case): the same surface.
     ASSERT_EQ(std::system(("cd '" + dir.path().string() + "' && gzip -c s.inr > S.INR.GZ").c_str()), 0);
     const auto gz = hmira(dir, "mc S.INR.GZ b.off");
-    if (gz.code != 0 && gz.err.find("zlib") != std::string::npos) GTEST_SKIP() << "hmira built without zlib: " << gz.err;
+    if (gz.code != 0 && gz.err.find("zlib") != std::string::npos)
+        GTEST_SKIP() << "hmira built without zlib: " << gz.err;
     ASSERT_EQ(gz.code, 0) << gz.err;
     EXPECT_EQ(hmira_test::read_bytes(dir / "b.off"), hmira_test::read_bytes(dir / "a.off"));
 }
@@ -720,13 +766,16 @@ TEST(cli, editing_refuses_bad_selections_unknown_options_and_non_manifold_input)
     scratch_dir dir;
     ASSERT_EQ(hmira(dir, "generate cube c.obj").code, 0);
     // Out-of-range indices and edges that do not exist: usage errors naming the index.
-    expect_refused(dir, "truncate c.obj t.obj --vertex 8", 2, "--vertex: vertex 8 does not exist: c.obj has 8 vertices (0..7", "t.obj");
+    expect_refused(dir, "truncate c.obj t.obj --vertex 8", 2,
+                   "--vertex: vertex 8 does not exist: c.obj has 8 vertices (0..7", "t.obj");
     expect_refused(dir, "truncate c.obj t.obj --vertex -1", 2, "--vertex", "t.obj");
     expect_refused(dir, "bevel c.obj t.obj --edge 0,8", 2, "--edge 0,8: vertex 8 does not exist", "t.obj");
-    expect_refused(dir, "bevel c.obj t.obj --edge 0,6", 2, "--edge 0,6: vertices 0 and 6 of c.obj are not joined by an edge", "t.obj");
+    expect_refused(dir, "bevel c.obj t.obj --edge 0,6", 2,
+                   "--edge 0,6: vertices 0 and 6 of c.obj are not joined by an edge", "t.obj");
     expect_refused(dir, "bevel c.obj t.obj --edge 0-1", 2, "--edge 0-1: expected two vertex indices", "t.obj");
     expect_refused(dir, "bevel c.obj t.obj --vertex 9", 2, "vertex 9 does not exist", "t.obj");
-    expect_refused(dir, "extrude c.obj t.obj --face 6", 2, "--face: face 6 does not exist: c.obj has 6 faces (0..5", "t.obj");
+    expect_refused(dir, "extrude c.obj t.obj --face 6", 2, "--face: face 6 does not exist: c.obj has 6 faces (0..5",
+                   "t.obj");
     // Unknown options, missing or conflicting selections, values out of range.
     expect_refused(dir, "truncate c.obj t.obj --all --bogus", 2, "--bogus", "t.obj");
     expect_refused(dir, "bevel c.obj t.obj --edge 0,1 --frobnicate 3", 2, "--frobnicate", "t.obj");
@@ -736,22 +785,29 @@ TEST(cli, editing_refuses_bad_selections_unknown_options_and_non_manifold_input)
     expect_refused(dir, "bevel c.obj t.obj --edge 0,1 --all", 2, "excludes", "t.obj");
     expect_refused(dir, "bevel c.obj t.obj --vertex 0 --segments 2", 2, "flat cuts only", "t.obj");
     expect_refused(dir, "bevel c.obj t.obj --vertex 0 --no-clamp", 2, "drop --no-clamp", "t.obj");
-    expect_refused(dir, "truncate c.obj t.obj --all --fraction 1", 2, "--fraction: expected a finite number in (0, 1), got 1", "t.obj");
+    expect_refused(dir, "truncate c.obj t.obj --all --fraction 1", 2,
+                   "--fraction: expected a finite number in (0, 1), got 1", "t.obj");
     expect_refused(dir, "bevel c.obj t.obj --all --width 0", 2, "--width", "t.obj");
     expect_refused(dir, "extrude c.obj t.obj --face 0 --direction 1,2", 2, "--direction 1,2", "t.obj");
-    expect_refused(dir, "extrude c.obj t.obj --face 0 --distance 0", 2, "--distance: expected a finite number other than 0, got 0", "t.obj");
+    expect_refused(dir, "extrude c.obj t.obj --face 0 --distance 0", 2,
+                   "--distance: expected a finite number other than 0, got 0", "t.obj");
     expect_refused(dir, "extrude c.obj t.obj --face 0 --mode sideways", 2, "--mode", "t.obj");
     // Operations the mesh does not allow: invalid input, the library's reason.
     hmira_test::write_bytes(dir / "square.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 3\n");
     hmira_test::write_bytes(dir / "straight.off", "OFF\n5 1 0\n0 0 0\n1 0 0\n2 0 0\n2 1 0\n0 1 0\n5 0 1 2 3 4\n");
-    expect_refused(dir, "bevel straight.off t.off --edge 0,1", 1, "straight.off: bevel: the edges of a face corner at vertex 1 are collinear", "t.off");
+    expect_refused(dir, "bevel straight.off t.off --edge 0,1", 1,
+                   "straight.off: bevel: the edges of a face corner at vertex 1 are collinear", "t.off");
     // Three triangles on one edge: repaired for editing (the third face cut free), with a note.
-    hmira_test::write_bytes(dir / "fin.off", "OFF\n5 3 0\n0 0 0\n1 0 0\n0 1 0\n0 -1 0\n0 0 1\n3 0 1 2\n3 1 0 3\n3 0 1 4\n");
-    for (const std::string cmd : {"truncate fin.off t.off --all", "truncate fin.off t.off --vertex 2", "extrude fin.off t.off --face 0"}) {
+    hmira_test::write_bytes(dir / "fin.off",
+                            "OFF\n5 3 0\n0 0 0\n1 0 0\n0 1 0\n0 -1 0\n0 0 1\n3 0 1 2\n3 1 0 3\n3 0 1 4\n");
+    for (const std::string cmd :
+         {"truncate fin.off t.off --all", "truncate fin.off t.off --vertex 2", "extrude fin.off t.off --face 0"}) {
         SCOPED_TRACE(cmd);
         const auto r = hmira(dir, cmd);
         EXPECT_EQ(r.code, 0) << r.err;
-        EXPECT_NE(r.out.find("fin.off: repaired for editing: 1 non-manifold edge: cut free 1 extra face (2)"), std::string::npos) << r.out;
+        EXPECT_NE(r.out.find("fin.off: repaired for editing: 1 non-manifold edge: cut free 1 extra face (2)"),
+                  std::string::npos)
+            << r.out;
     }
     // Missing input.
     expect_refused(dir, "truncate nothere.obj t.obj --all", 3, "nothere.obj", "t.obj");
@@ -761,16 +817,22 @@ TEST(cli, edits_drop_degenerate_faces_with_a_note_while_validate_and_info_descri
     scratch_dir dir;
     // Face 2 repeats vertex 1: no polygon mesh holds it. Faces 0, 1 and 3 form an open square
     // and a triangle on it.
-    hmira_test::write_bytes(dir / "deg.off", "OFF\n5 4 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0.5 0.5 1\n3 0 1 2\n3 0 2 3\n3 1 1 2\n3 2 1 4\n");
-    for (const std::string cmd : {"truncate deg.off t.off --vertex 2", "truncate deg.off t.off --all", "extrude deg.off t.off --face 1",
-                                  "extrude deg.off t.off --face 3", "bevel deg.off t.off --edge 0,2", "smooth deg.off t.off",
-                                  "subdivide deg.off t.off", "fill-holes deg.off t.off"}) {
+    hmira_test::write_bytes(dir / "deg.off",
+                            "OFF\n5 4 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0.5 0.5 1\n3 0 1 2\n3 0 2 3\n3 1 1 2\n3 2 1 4\n");
+    for (const std::string cmd :
+         {"truncate deg.off t.off --vertex 2", "truncate deg.off t.off --all", "extrude deg.off t.off --face 1",
+          "extrude deg.off t.off --face 3", "bevel deg.off t.off --edge 0,2", "smooth deg.off t.off",
+          "subdivide deg.off t.off", "fill-holes deg.off t.off"}) {
         SCOPED_TRACE(cmd);
         std::filesystem::remove(dir / "t.off");
         const auto r = hmira(dir, cmd);
         EXPECT_EQ(r.code, 0) << r.err;
-        EXPECT_NE(r.out.find("deg.off: repaired for editing: 1 degenerate face dropped (file face 2)"), std::string::npos) << r.out;
-        EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n') - std::count(r.out.begin(), r.out.end(), '\r'), 2) << "one note line and one result line:\n" << r.out;
+        EXPECT_NE(r.out.find("deg.off: repaired for editing: 1 degenerate face dropped (file face 2)"),
+                  std::string::npos)
+            << r.out;
+        EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n') - std::count(r.out.begin(), r.out.end(), '\r'), 2)
+            << "one note line and one result line:\n"
+            << r.out;
         ASSERT_TRUE(std::filesystem::exists(dir / "t.off"));
         const auto out = read_back(dir / "t.off");
         EXPECT_TRUE(hmira_test::is_valid(out, {.check_geometry = false}));
@@ -780,8 +842,10 @@ TEST(cli, edits_drop_degenerate_faces_with_a_note_while_validate_and_info_descri
     ASSERT_EQ(hmira(dir, "extrude deg.off t.off --face 3 --distance 1").code, 0);
     const auto x = read_back(dir / "t.off");
     EXPECT_EQ(x.face_count(), 3u + 3u);  // 3 kept faces, the triangle moved, 3 side walls
-    expect_refused(dir, "extrude deg.off t2.off --face 2", 2, "--face: face 2 of deg.off is degenerate (fewer than 3 distinct corners) and was dropped", "t2.off");
-    expect_refused(dir, "extrude deg.off t2.off --face 4", 2, "--face: face 4 does not exist: deg.off has 4 faces (0..3", "t2.off");
+    expect_refused(dir, "extrude deg.off t2.off --face 2", 2,
+                   "--face: face 2 of deg.off is degenerate (fewer than 3 distinct corners) and was dropped", "t2.off");
+    expect_refused(dir, "extrude deg.off t2.off --face 4", 2,
+                   "--face: face 4 does not exist: deg.off has 4 faces (0..3", "t2.off");
     // validate and info describe the file as it is: the degenerate face is named, nothing repaired.
     const auto v = hmira(dir, "validate deg.off");
     EXPECT_NE(v.code, 0);
@@ -794,21 +858,25 @@ TEST(cli, edits_drop_degenerate_faces_with_a_note_while_validate_and_info_descri
 
 TEST(cli, editing_and_voxelizing_real_cgal_demo_meshes) {
     const char* data = std::getenv("HMIRA_TEST_DATA");
-    const auto folder = data ? std::filesystem::absolute(std::filesystem::path(data) / "meshes") : std::filesystem::path();
+    const auto folder =
+        data ? std::filesystem::absolute(std::filesystem::path(data) / "meshes") : std::filesystem::path();
     if (!data || !std::filesystem::exists(folder / "elephant.off") || !std::filesystem::exists(folder / "fandisk.off"))
         GTEST_SKIP() << "run scripts/test-data.sh first";
     const std::string elephant = "'" + (folder / "elephant.off").string() + "'";
     scratch_dir dir;
     const auto in = read_back(folder / "elephant.off");
     const auto before = counts(in);
-    const long long genus = (2 - (static_cast<long long>(before.v) - static_cast<long long>(before.e) + static_cast<long long>(before.f))) / 2;
+    const long long genus =
+        (2 - (static_cast<long long>(before.v) - static_cast<long long>(before.e) + static_cast<long long>(before.f))) /
+        2;
     ASSERT_EQ(genus, 3);
     // Truncate vertex 0, of degree d (counted here): V + d - 1, E + d, F + 1.
     std::set<std::size_t> neighbours;
     for (auto f : in.faces()) {
         const auto fv = in.face_vertices(f);
         for (std::size_t i = 0; i < fv.size(); ++i)
-            if (fv[i].index == 0) neighbours.insert({fv[(i + 1) % fv.size()].index, fv[(i + fv.size() - 1) % fv.size()].index});
+            if (fv[i].index == 0)
+                neighbours.insert({fv[(i + 1) % fv.size()].index, fv[(i + fv.size() - 1) % fv.size()].index});
     }
     const std::size_t d = neighbours.size();
     ASSERT_GE(d, 3u);
@@ -832,7 +900,9 @@ TEST(cli, editing_and_voxelizing_real_cgal_demo_meshes) {
     ASSERT_EQ(fv.size(), 3u);
     const auto a = at(in, fv[0].index), b = at(in, fv[1].index), c = at(in, fv[2].index);
     const point ab{b[0] - a[0], b[1] - a[1], b[2] - a[2]}, ac{c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-    const double area = 0.5 * std::sqrt(std::pow(ab[1] * ac[2] - ab[2] * ac[1], 2) + std::pow(ab[2] * ac[0] - ab[0] * ac[2], 2) + std::pow(ab[0] * ac[1] - ab[1] * ac[0], 2));
+    const double area =
+        0.5 * std::sqrt(std::pow(ab[1] * ac[2] - ab[2] * ac[1], 2) + std::pow(ab[2] * ac[0] - ab[0] * ac[2], 2) +
+                        std::pow(ab[0] * ac[1] - ab[1] * ac[0], 2));
     EXPECT_NEAR(hmira_test::signed_volume(em) - hmira_test::signed_volume(in), area * 0.01, 1e-12);
     // Bevel fandisk's sharp edges: still one closed, valid sphere.
     const auto bv = hmira(dir, "bevel '" + (folder / "fandisk.off").string() + "' f.obj --angle 60 --width 0.002");

@@ -44,8 +44,8 @@ struct two_meshes {
 
 TEST(cli_view, an_output_that_is_not_an_html_page_is_refused_and_not_written) {
     two_meshes m;
-    for (const std::string args : {"view a.off b.off", "view a.off a.off", "view a.off --compare b.off b.off", "view a.off --compare b.off a.off",
-                                   "view a.off page.txt", "view a.off page"}) {
+    for (const std::string args : {"view a.off b.off", "view a.off a.off", "view a.off --compare b.off b.off",
+                                   "view a.off --compare b.off a.off", "view a.off page.txt", "view a.off page"}) {
         SCOPED_TRACE(args);
         const auto r = hmira(m.dir, args);
         EXPECT_EQ(r.code, 2);
@@ -62,8 +62,9 @@ TEST(cli_view, an_output_that_is_an_input_under_another_name_is_refused) {
     fs::create_symlink("a.off", m.dir / "link.html");
     fs::create_hard_link(m.dir / "b.off", m.dir / "hard.htm");
     fs::create_directory(m.dir / "sub");
-    for (const std::string args : {"view a.off link.html", "view b.off --compare a.off link.html", "view a.off --compare b.off hard.htm",
-                                   "view a.off sub/../link.html", "view sub/../a.off ./link.html"}) {
+    for (const std::string args :
+         {"view a.off link.html", "view b.off --compare a.off link.html", "view a.off --compare b.off hard.htm",
+          "view a.off sub/../link.html", "view sub/../a.off ./link.html"}) {
         SCOPED_TRACE(args);
         const auto r = hmira(m.dir, args);
         EXPECT_EQ(r.code, 2);
@@ -92,8 +93,9 @@ TEST(cli_view, pages_are_written_by_every_build) {
 TEST(cli_view, a_mesh_beyond_the_float_range_of_a_page_is_refused) {
     // Coordinates near the double maximum: the page's float positions would be infinite.
     scratch_dir dir;
-    hmira_test::write_bytes(dir / "big.off", "OFF\n4 4 0\n1.7e308 1.7e308 0\n1.7e308 -1.7e308 0\n-1.7e308 0 0\n0 0 1.7e308\n"
-                                             "3 0 2 1\n3 0 1 3\n3 1 2 3\n3 2 0 3\n");
+    hmira_test::write_bytes(dir / "big.off",
+                            "OFF\n4 4 0\n1.7e308 1.7e308 0\n1.7e308 -1.7e308 0\n-1.7e308 0 0\n0 0 1.7e308\n"
+                            "3 0 2 1\n3 0 1 3\n3 1 2 3\n3 2 0 3\n");
     const auto r = hmira(dir, "view big.off big.html");
     EXPECT_EQ(r.code, 1);
     EXPECT_TRUE(one_line_error(r, "big.off: vertex 0"));

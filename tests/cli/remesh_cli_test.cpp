@@ -41,7 +41,8 @@ std::string square_off() {
     const auto g = grid(6, 6, true);
     std::string s = "OFF\n" + std::to_string(g.points.size()) + " " + std::to_string(g.faces.size()) + " 0\n";
     for (const auto& p : g.points) s += std::to_string(p.x) + " " + std::to_string(p.y) + " 0\n";
-    for (const auto& f : g.faces) s += "3 " + std::to_string(f[0]) + " " + std::to_string(f[1]) + " " + std::to_string(f[2]) + "\n";
+    for (const auto& f : g.faces)
+        s += "3 " + std::to_string(f[0]) + " " + std::to_string(f[1]) + " " + std::to_string(f[2]) + "\n";
     return s;
 }
 
@@ -64,8 +65,8 @@ TEST(cli_remesh, remeshes_to_the_length_and_keeps_the_square) {
 TEST(cli_remesh, bad_options_and_polygons_are_refused_and_nothing_is_written) {
     hmira_test::scratch_dir dir;
     hmira_test::write_bytes(dir / "square.off", square_off());
-    for (const char* args : {"--length nan", "--length -1", "--length 0", "--length inf", "--features 200", "-k 0",
-                             "--length 1e-9"}) {
+    for (const char* args :
+         {"--length nan", "--length -1", "--length 0", "--length inf", "--features 200", "-k 0", "--length 1e-9"}) {
         const auto r = hmira_cli(dir, std::string("remesh square.off out.off ") + args);
         EXPECT_EQ(r.code, 2) << args << ": " << r.err;
         EXPECT_FALSE(std::filesystem::exists(dir / "out.off")) << args;
@@ -96,7 +97,8 @@ TEST(cli_remesh, failures_say_what_in_one_line_and_keep_an_existing_output) {
         EXPECT_LE(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
         EXPECT_EQ(hmira_test::read_bytes(dir / "out.off"), "an earlier output\n");
         std::size_t entries = 0;
-        for (const auto& e : std::filesystem::directory_iterator(dir.path())) entries += e.path().filename().string()[0] != '.';
+        for (const auto& e : std::filesystem::directory_iterator(dir.path()))
+            entries += e.path().filename().string()[0] != '.';
         EXPECT_EQ(entries, 2u) << "a temporary left behind";
     }
 }

@@ -44,12 +44,13 @@ TEST(RepairCli, a_split_vertex_is_truncated_in_every_copy) {
     hmira_test::write_bytes(dir / "bow.off", bow_tie);
     const auto r = hmira(dir, "truncate bow.off t.off --vertex 0");
     ASSERT_EQ(r.code, 0) << r.err;
-    EXPECT_NE(r.out.find("bow.off: repaired for editing: flipped 1 face (0); split 1 vertex (0) into 1 extra copy"), std::string::npos)
+    EXPECT_NE(r.out.find("bow.off: repaired for editing: flipped 1 face (0); split 1 vertex (0) into 1 extra copy"),
+              std::string::npos)
         << r.out;
     EXPECT_EQ(lines(r.out), 2u) << r.out;  // the note and the result
     const auto m = read(dir / "t.off");
     EXPECT_TRUE(hmira_test::is_valid(m));
-    EXPECT_EQ(m.face_count(), 8u + 2u);  // both corners at vertex 0 cut off
+    EXPECT_EQ(m.face_count(), 8u + 2u);              // both corners at vertex 0 cut off
     EXPECT_EQ(m.vertex_count(), 7u + 1u - 2u + 6u);  // a copy added, both copies replaced by 3 new vertices each
 }
 
@@ -69,7 +70,10 @@ TEST(RepairCli, pig_stl_can_be_truncated_with_a_repair_note) {
     scratch_dir dir;
     const auto r = hmira(dir, "truncate '" + pig.string() + "' pig.off --all");
     ASSERT_EQ(r.code, 0) << r.err;
-    EXPECT_NE(r.out.find("pig.stl: repaired for editing: split 421 vertices (90, 211, 213, 215, 217, 229, 241, 253, ...) into 443 extra copies"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("pig.stl: repaired for editing: split 421 vertices (90, 211, 213, 215, 217, 229, 241, 253, "
+                         "...) into 443 extra copies"),
+              std::string::npos)
+        << r.out;
     EXPECT_EQ(lines(r.out), 2u) << r.out;
     const auto v = hmira(dir, "validate pig.off");
     EXPECT_EQ(v.code, 0) << v.out << v.err;

@@ -25,7 +25,8 @@ run_result hmira(const scratch_dir& dir, const std::string& args) { return hmira
 
 TEST(cli_subdivide, two_loop_levels_of_a_tetrahedron) {
     scratch_dir dir;
-    hmira_test::write_bytes(dir / "tet.off", "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n");
+    hmira_test::write_bytes(dir / "tet.off",
+                            "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n");
     const auto r = hmira(dir, "subdivide tet.off out.off --scheme loop -k 2");
     ASSERT_EQ(r.code, 0) << r.err;
     hmira::face_vertex_mesh m;
@@ -54,7 +55,8 @@ TEST(cli_subdivide, catmull_clark_of_a_cube_and_of_a_tetrahedron) {
     EXPECT_LT(p.x, 5.0 / 9.0);
     EXPECT_GT(p.x, 0.3);
 
-    hmira_test::write_bytes(dir / "tet.off", "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n");
+    hmira_test::write_bytes(dir / "tet.off",
+                            "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n");
     r = hmira(dir, "subdivide tet.off tet-cc.off --scheme catmull-clark");
     ASSERT_EQ(r.code, 0) << r.err;
     hmira::face_vertex_mesh t;
@@ -65,7 +67,8 @@ TEST(cli_subdivide, catmull_clark_of_a_cube_and_of_a_tetrahedron) {
 
 TEST(cli_subdivide, two_sqrt3_levels_of_a_tetrahedron) {
     scratch_dir dir;
-    hmira_test::write_bytes(dir / "tet.off", "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n");
+    hmira_test::write_bytes(dir / "tet.off",
+                            "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n");
     const auto r = hmira(dir, "subdivide tet.off out.off --scheme sqrt3 -k 2");
     ASSERT_EQ(r.code, 0) << r.err;
     hmira::face_vertex_mesh m;

@@ -78,7 +78,8 @@ TEST(cli_triangulate, delaunay_picks_the_diagonal_between_the_obtuse_corners) {
 
 TEST(cli_triangulate, a_self_crossing_face_is_refused_by_index_and_nothing_is_written) {
     scratch_dir dir;
-    hmira_test::write_bytes(dir / "in.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 5 0 0\nv 7 1 0\nv 7 0 0\nv 5 1.5 0\nf 1 2 3\nf 4 5 6 7\n");
+    hmira_test::write_bytes(dir / "in.obj",
+                            "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 5 0 0\nv 7 1 0\nv 7 0 0\nv 5 1.5 0\nf 1 2 3\nf 4 5 6 7\n");
     const auto r = hmira(dir, "triangulate in.obj out.obj");
     EXPECT_EQ(r.code, 1);
     EXPECT_EQ(r.err.rfind("hmira: error: ", 0), 0u) << r.err;

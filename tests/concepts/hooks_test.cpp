@@ -28,7 +28,8 @@ static_assert(!hmira::vertex_halfedge_restorable_mesh<halfedge_mesh>);
 static_assert(hmira::reservable_mesh<winged_edge_mesh> && hmira::edge_index_mesh<winged_edge_mesh>);
 static_assert(!hmira::bulk_growable_mesh<winged_edge_mesh>);
 static_assert(hmira::bulk_vertex_removal_mesh<face_vertex_mesh>);
-static_assert(hmira::removal_queryable_mesh<face_vertex_mesh, hmira::mesh_traits<face_vertex_mesh>, hmira::vertex_handle>);
+static_assert(
+    hmira::removal_queryable_mesh<face_vertex_mesh, hmira::mesh_traits<face_vertex_mesh>, hmira::vertex_handle>);
 static_assert(!hmira::reservable_mesh<face_vertex_mesh>);
 static_assert(!hmira::triangle_only_mesh<halfedge_mesh>);
 static_assert(!hmira::fault_injecting_traits<hmira::mesh_traits<halfedge_mesh>>);

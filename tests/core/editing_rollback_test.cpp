@@ -81,7 +81,8 @@ TYPED_TEST(editing_rollback, a_refused_call_leaves_the_mesh_bit_identical) {
         hmira_test::expect_failure_leaves_mesh(
             make, [](M& m) { return hmira::bevel<M>(m, all_edges(m), {.width = -1}); }, hmira::errc::invalid_argument);
         hmira_test::expect_failure_leaves_mesh(
-            make, [](M& m) { return hmira::bevel<M>(m, all_edges(m), {.segments = 100}); }, hmira::errc::invalid_argument);
+            make, [](M& m) { return hmira::bevel<M>(m, all_edges(m), {.segments = 100}); },
+            hmira::errc::invalid_argument);
         hmira_test::expect_failure_leaves_mesh(
             make,
             [](M& m) {

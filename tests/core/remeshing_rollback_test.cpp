@@ -35,11 +35,12 @@ TYPED_TEST(remesh_rollback, a_late_cancellation_of_a_rescaled_mesh_leaves_it_bit
         // restore the unscaled positions too.
         auto g = hmira_test::triangulated(hmira_test::torus(24, 16));
         for (auto& p : g.points) p = p * 0x1p300;
-        hmira_test::expect_cancel_restores([&] { return hmira_test::build<M>(g); },
-                                           [](M& m, const hmira::progress_function& p) {
-                                               return hmira::isotropic_remeshing(
-                                                   m, {.target_edge_length = 0.3 * 0x1p300, .iterations = 2, .progress = p});
-                                           });
+        hmira_test::expect_cancel_restores(
+            [&] { return hmira_test::build<M>(g); },
+            [](M& m, const hmira::progress_function& p) {
+                return hmira::isotropic_remeshing(
+                    m, {.target_edge_length = 0.3 * 0x1p300, .iterations = 2, .progress = p});
+            });
     }
 }
 
@@ -54,7 +55,10 @@ TYPED_TEST(remesh_rollback, a_refused_call_leaves_the_mesh_bit_identical) {
             make, [](M& m) { return hmira::isotropic_remeshing(m, {.target_edge_length = -1}); },
             hmira::errc::invalid_argument);
         hmira_test::expect_failure_leaves_mesh(
-            make, [](M& m) { return hmira::isotropic_remeshing(m, {.target_edge_length = 0.3, .feature_edges = {1u << 30}}); },
+            make,
+            [](M& m) {
+                return hmira::isotropic_remeshing(m, {.target_edge_length = 0.3, .feature_edges = {1u << 30}});
+            },
             hmira::errc::invalid_argument);
     }
 }

@@ -64,11 +64,11 @@ TYPED_TEST(subdivide_rollback, a_late_cancellation_through_subdivide_leaves_the_
     if constexpr (!hmira::subdividable_mesh<M>) {
         GTEST_SKIP() << "not a model every scheme runs on";
     } else {
-        hmira_test::expect_cancel_restores([] { return hmira_test::build<M>(triangles()); },
-                                           [](M& m, const hmira::progress_function& p) {
-                                               return hmira::subdivide(
-                                                   m, {.scheme = hmira::subdivision_scheme::sqrt3, .levels = 2, .progress = p});
-                                           });
+        hmira_test::expect_cancel_restores(
+            [] { return hmira_test::build<M>(triangles()); },
+            [](M& m, const hmira::progress_function& p) {
+                return hmira::subdivide(m, {.scheme = hmira::subdivision_scheme::sqrt3, .levels = 2, .progress = p});
+            });
     }
 }
 
@@ -97,8 +97,10 @@ TYPED_TEST(subdivide_rollback, a_polygon_mesh_refused_by_loop_and_sqrt3_is_left_
         GTEST_SKIP() << "not a polygon model";
     } else {
         const auto make = [] { return hmira_test::build<M>(hmira_test::torus(8, 6)); };
-        hmira_test::expect_failure_leaves_mesh(make, [](M& m) { return hmira::loop_subdivide(m); }, hmira::errc::topology);
-        hmira_test::expect_failure_leaves_mesh(make, [](M& m) { return hmira::sqrt3_subdivide(m); }, hmira::errc::topology);
+        hmira_test::expect_failure_leaves_mesh(
+            make, [](M& m) { return hmira::loop_subdivide(m); }, hmira::errc::topology);
+        hmira_test::expect_failure_leaves_mesh(
+            make, [](M& m) { return hmira::sqrt3_subdivide(m); }, hmira::errc::topology);
     }
 }
 

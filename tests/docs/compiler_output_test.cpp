@@ -32,7 +32,8 @@ run_result compile(const std::filesystem::path& file, const std::string& extra) 
 
 TEST(compiler_output, the_quoted_compile_error_is_what_gxx_prints_for_the_missing_operation) {
     // The guide quotes g++ 12, the project's compiler; another compiler words it differently.
-    if (std::string(HMIRA_CXX_ID).rfind("GNU-12.", 0) != 0) GTEST_SKIP() << "the quote is g++ 12's; this is " << HMIRA_CXX_ID;
+    if (std::string(HMIRA_CXX_ID).rfind("GNU-12.", 0) != 0)
+        GTEST_SKIP() << "the quote is g++ 12's; this is " << HMIRA_CXX_ID;
     int checked = 0;
     for (const auto& b : marked_blocks(source_dir / "docs" / "own-mesh.md")) {
         if (b.kind != "compiler-output") continue;
@@ -43,7 +44,8 @@ TEST(compiler_output, the_quoted_compile_error_is_what_gxx_prints_for_the_missin
             const auto line = trim(quoted);
             if (line.empty() || line.rfind("...", 0) == 0) continue;
             EXPECT_NE(bad.output.find(line), std::string::npos)
-                << "own-mesh.md:" << b.line << " quotes a line g++ no longer prints:\n  " << line << "\ng++ said:\n" << bad.output;
+                << "own-mesh.md:" << b.line << " quotes a line g++ no longer prints:\n  " << line << "\ng++ said:\n"
+                << bad.output;
         }
         const auto good = compile(file, "-DHMIRA_SNIPPET_OK");
         EXPECT_EQ(good.status, 0) << b.argument << " with the operation supplied still fails:\n" << good.output;

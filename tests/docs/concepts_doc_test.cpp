@@ -25,9 +25,9 @@ std::string read_file(const std::filesystem::path& p) {
 }
 
 struct concept_decl {
-    std::string body;                  // from `concept NAME` to the next declaration
-    std::set<std::string> asks;        // T::op(...), typename T::type;, requires T::constant;
-    std::set<std::string> refines;     // other concepts of the same file used in the body
+    std::string body;               // from `concept NAME` to the next declaration
+    std::set<std::string> asks;     // T::op(...), typename T::type;, requires T::constant;
+    std::set<std::string> refines;  // other concepts of the same file used in the body
 };
 
 // The concepts of concepts.hpp with what each asks for, read from the source text.
@@ -42,16 +42,20 @@ std::map<std::string, concept_decl> parse_concepts(const std::string& text) {
         std::size_t to = from;
         for (int depth = 0; to < text.size(); ++to) {
             const char ch = text[to];
-            if (ch == '(' || ch == '{') ++depth;
-            else if (ch == ')' || ch == '}') --depth;
-            else if (ch == ';' && depth == 0) break;
+            if (ch == '(' || ch == '{')
+                ++depth;
+            else if (ch == ')' || ch == '}')
+                --depth;
+            else if (ch == ';' && depth == 0)
+                break;
         }
         out[name].body = text.substr(from, to - from);
     }
     const std::regex op(R"(T::(\w+)\s*\()"), type(R"(typename\s+T::(\w+)\s*;)"), constant(R"(requires\s+T::(\w+)\s*;)");
     for (auto& [name, c] : out) {
         for (const auto* re : {&op, &type, &constant})
-            for (std::sregex_iterator it(c.body.begin(), c.body.end(), *re), end; it != end; ++it) c.asks.insert("T::" + (*it)[1].str());
+            for (std::sregex_iterator it(c.body.begin(), c.body.end(), *re), end; it != end; ++it)
+                c.asks.insert("T::" + (*it)[1].str());
         for (const auto& [other, unused] : out) {
             if (other == name || other == "range_of_handles") continue;  // a helper, not a capability
             if (std::regex_search(c.body, std::regex("\\b" + other + "\\s*<"))) c.refines.insert(other);
@@ -105,7 +109,8 @@ TEST(concepts_doc, every_concept_of_concepts_hpp_has_a_section_naming_what_it_as
 TEST(concepts_doc, the_page_lists_no_concept_that_concepts_hpp_lacks) {
     const auto declared = parse_concepts(concepts_hpp);
     for (const auto& [name, text] : doc_sections(concepts_md))
-        EXPECT_TRUE(declared.count(name)) << "docs/concepts.md describes `" << name << "`, which concepts.hpp no longer declares";
+        EXPECT_TRUE(declared.count(name))
+            << "docs/concepts.md describes `" << name << "`, which concepts.hpp no longer declares";
 }
 
 TEST(concepts_doc, each_algorithm_concept_listed_is_declared_in_the_header_named) {

@@ -41,8 +41,8 @@ TEST(doc_snippets, every_quoted_snippet_equals_its_source_region) {
             const auto file = b.argument.substr(0, hash);
             const auto name = hash == std::string::npos ? std::string() : b.argument.substr(hash + 1);
             ASSERT_TRUE(std::filesystem::exists(source_dir / file)) << guide << ':' << b.line << ": " << file;
-            EXPECT_EQ(b.code, region(source_dir / file, name)) << guide << ':' << b.line << " quotes " << b.argument
-                                                                << " differently from the source; copy it again";
+            EXPECT_EQ(b.code, region(source_dir / file, name))
+                << guide << ':' << b.line << " quotes " << b.argument << " differently from the source; copy it again";
             ++checked;
         }
     EXPECT_GE(checked, 4) << "the guides quote their examples through snippet markers";
@@ -53,14 +53,16 @@ TEST(doc_snippets, every_excerpt_is_made_of_source_lines_in_order) {
     for (const auto& guide : guides)
         for (const auto& b : marked_blocks(source_dir / guide)) {
             if (b.kind != "excerpt") continue;
-            ASSERT_TRUE(std::filesystem::exists(source_dir / b.argument)) << guide << ':' << b.line << ": " << b.argument;
+            ASSERT_TRUE(std::filesystem::exists(source_dir / b.argument))
+                << guide << ':' << b.line << ": " << b.argument;
             const auto source = lines_of(read_file(source_dir / b.argument));
             std::size_t at = 0;
             for (const auto& l : b.code) {
                 if (trim(l) == "// ...") continue;
                 const auto it = std::find(source.begin() + static_cast<std::ptrdiff_t>(at), source.end(), l);
                 ASSERT_NE(it, source.end()) << guide << ':' << b.line << ": this line is not in " << b.argument
-                                            << " (after the previous one):\n" << l;
+                                            << " (after the previous one):\n"
+                                            << l;
                 at = static_cast<std::size_t>(it - source.begin()) + 1;
             }
             ++checked;

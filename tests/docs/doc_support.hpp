@@ -35,8 +35,8 @@ inline std::string trim(const std::string& s) {
 /// A marked code block of a guide: `<!-- KIND: ARGUMENT -->` followed by a fenced block.
 struct marked_block {
     std::string doc, kind, argument;
-    std::size_t line = 0;            // 1-based line of the marker
-    std::vector<std::string> code;   // the block's lines, fences excluded
+    std::size_t line = 0;           // 1-based line of the marker
+    std::vector<std::string> code;  // the block's lines, fences excluded
 };
 
 inline std::vector<marked_block> marked_blocks(const std::filesystem::path& doc) {
@@ -47,7 +47,11 @@ inline std::vector<marked_block> marked_blocks(const std::filesystem::path& doc)
         if (l.rfind("<!-- ", 0) != 0 || l.size() < 9 || l.substr(l.size() - 4) != " -->") continue;
         const auto colon = l.find(": ");
         if (colon == std::string::npos) continue;
-        marked_block b{doc.filename().string(), l.substr(5, colon - 5), trim(l.substr(colon + 2, l.size() - 4 - colon - 2)), i + 1, {}};
+        marked_block b{doc.filename().string(),
+                       l.substr(5, colon - 5),
+                       trim(l.substr(colon + 2, l.size() - 4 - colon - 2)),
+                       i + 1,
+                       {}};
         std::size_t j = i + 1;
         while (j < lines.size() && trim(lines[j]).rfind("```", 0) != 0) ++j;
         for (++j; j < lines.size() && trim(lines[j]).rfind("```", 0) != 0; ++j) b.code.push_back(lines[j]);

@@ -72,9 +72,9 @@ namespace {
 
 template <class M>
 struct column;
-#define HMIRA_COLUMN(TYPE, TITLE) \
-    template <>                   \
-    struct column<TYPE> {         \
+#define HMIRA_COLUMN(TYPE, TITLE)                   \
+    template <>                                     \
+    struct column<TYPE> {                           \
         static constexpr const char* title = TITLE; \
     }
 HMIRA_COLUMN(hmira::face_vertex_mesh, "face_vertex_mesh");
@@ -96,10 +96,12 @@ struct model_list {};
 using models = model_list<hmira::face_vertex_mesh, hmira::halfedge_mesh, hmira::winged_edge_mesh,
                           hmira::with_adjacency<hmira::face_vertex_mesh>, studio::plain_mesh, lab::trimesh
 #ifdef HMIRA_TABLE_OPENMESH
-                          , OpenMesh::PolyMesh_ArrayKernelT<>, OpenMesh::TriMesh_ArrayKernelT<>
+                          ,
+                          OpenMesh::PolyMesh_ArrayKernelT<>, OpenMesh::TriMesh_ArrayKernelT<>
 #endif
 #ifdef HMIRA_TABLE_CGAL
-                          , CGAL::Surface_mesh<CGAL::Simple_cartesian<double>::Point_3>
+                          ,
+                          CGAL::Surface_mesh<CGAL::Simple_cartesian<double>::Point_3>
 #endif
                           >;
 
@@ -107,119 +109,138 @@ using models = model_list<hmira::face_vertex_mesh, hmira::halfedge_mesh, hmira::
 // `supported` is the claim; `compile` odr-uses the call in a lambda, so when the claim is "yes"
 // the algorithm's body is instantiated for the model here and must compile.
 
-#define HMIRA_ROW(ID, NAME, HEADER, NEEDS, PARAMS, ...)                                                    \
-    struct ID {                                                                                         \
-        static constexpr const char* name = NAME;                                                       \
-        static constexpr const char* header = HEADER;                                                   \
-        static constexpr const char* needs_name = #NEEDS;                                               \
-        template <class M>                                                                              \
-        static constexpr bool needs = NEEDS<M>;                                                         \
-        template <class M, class T = hmira::default_traits<M>>                                          \
-        static constexpr bool supported = requires PARAMS { __VA_ARGS__; };                                 \
-        template <class M, class T = hmira::default_traits<M>>                                          \
-        static void compile() {                                                                         \
-            if constexpr (supported<M, T>) {                                                            \
-                [[maybe_unused]] auto use = [] PARAMS { return __VA_ARGS__; };                                 \
-            }                                                                                           \
-        }                                                                                               \
+#define HMIRA_ROW(ID, NAME, HEADER, NEEDS, PARAMS, ...)                        \
+    struct ID {                                                                \
+        static constexpr const char* name = NAME;                              \
+        static constexpr const char* header = HEADER;                          \
+        static constexpr const char* needs_name = #NEEDS;                      \
+        template <class M>                                                     \
+        static constexpr bool needs = NEEDS<M>;                                \
+        template <class M, class T = hmira::default_traits<M>>                 \
+        static constexpr bool supported =                                      \
+            requires PARAMS                                                    \
+        {                                                                      \
+            __VA_ARGS__;                                                       \
+        };                                                                     \
+        template <class M, class T = hmira::default_traits<M>>                 \
+        static void compile() {                                                \
+            if constexpr (supported<M, T>) {                                   \
+                [[maybe_unused]] auto use = [] PARAMS { return __VA_ARGS__; }; \
+            }                                                                  \
+        }                                                                      \
     }
 
 using points2 = std::vector<std::array<double, 2>>;
-HMIRA_ROW(row_triangle_solids, "generate_tetrahedron, _octahedron, _icosahedron", "algorithms/generators/platonic_solids.hpp", hmira::mesh_builder,
-          (M & m), hmira::generate_icosahedron<M, T>(m));
-HMIRA_ROW(row_polygon_solids, "generate_cube, _dodecahedron", "algorithms/generators/platonic_solids.hpp", hmira::polygon_mesh_builder, (M & m),
-          hmira::generate_cube<M, T>(m));
-HMIRA_ROW(row_torus, "generate_torus", "algorithms/generators/torus.hpp", hmira::polygon_mesh_builder, (M & m), hmira::generate_torus<M, T>(m));
-HMIRA_ROW(row_grid, "generate_grid", "algorithms/generators/grid.hpp", hmira::mesh_builder, (M & m), hmira::generate_grid<M, T>(m));
-HMIRA_ROW(row_validate, "validate", "algorithms/validation/validate.hpp", hmira::validate_mesh, (const M& m), hmira::validate<M, T>(m));
-HMIRA_ROW(row_topology, "mesh_topology, connected_components, edge_census", "algorithms/topology/mesh_topology.hpp", hmira::mesh_topology_mesh,
-          (const M& m), hmira::mesh_topology<M, T>(m));
-HMIRA_ROW(row_flip, "flip_normals", "algorithms/orientation/flip_normals.hpp", hmira::flip_normals_mesh, (M & m), hmira::flip_normals<M, T>(m));
-HMIRA_ROW(row_vertex_normals, "vertex_normals", "algorithms/geometry/vertex_normals.hpp", hmira::vertex_normals_mesh, (const M& m),
-          hmira::vertex_normals<M, T>(m));
-HMIRA_ROW(row_euler, "Euler operators (make/kill vertex, edge-vertex, edge-face)", "algorithms/euler/euler.hpp", hmira::euler_mutable_mesh,
-          (M & m, typename T::halfedge_handle h), hmira::make_edge_face<M, T>(m, h, h));
-HMIRA_ROW(row_euler_ring, "Euler ring operators (make/kill face-ring, edge-ring)", "algorithms/euler/euler.hpp", hmira::euler_ring_mutable_mesh,
-          (M & m, typename T::halfedge_handle h), hmira::make_face_kill_ring<M, T>(m, h));
-HMIRA_ROW(row_split_vertex, "split_vertex, join_vertices (general vertex split and its inverse)", "algorithms/euler/split_vertex.hpp",
-          hmira::euler_mutable_mesh, (M & m, typename T::halfedge_handle h, const hmira::vec3<typename T::scalar>& p),
+HMIRA_ROW(row_triangle_solids, "generate_tetrahedron, _octahedron, _icosahedron",
+          "algorithms/generators/platonic_solids.hpp", hmira::mesh_builder, (M & m),
+          hmira::generate_icosahedron<M, T>(m));
+HMIRA_ROW(row_polygon_solids, "generate_cube, _dodecahedron", "algorithms/generators/platonic_solids.hpp",
+          hmira::polygon_mesh_builder, (M & m), hmira::generate_cube<M, T>(m));
+HMIRA_ROW(row_torus, "generate_torus", "algorithms/generators/torus.hpp", hmira::polygon_mesh_builder, (M & m),
+          hmira::generate_torus<M, T>(m));
+HMIRA_ROW(row_grid, "generate_grid", "algorithms/generators/grid.hpp", hmira::mesh_builder, (M & m),
+          hmira::generate_grid<M, T>(m));
+HMIRA_ROW(row_validate, "validate", "algorithms/validation/validate.hpp", hmira::validate_mesh, (const M& m),
+          hmira::validate<M, T>(m));
+HMIRA_ROW(row_topology, "mesh_topology, connected_components, edge_census", "algorithms/topology/mesh_topology.hpp",
+          hmira::mesh_topology_mesh, (const M& m), hmira::mesh_topology<M, T>(m));
+HMIRA_ROW(row_flip, "flip_normals", "algorithms/orientation/flip_normals.hpp", hmira::flip_normals_mesh, (M & m),
+          hmira::flip_normals<M, T>(m));
+HMIRA_ROW(row_vertex_normals, "vertex_normals", "algorithms/geometry/vertex_normals.hpp", hmira::vertex_normals_mesh,
+          (const M& m), hmira::vertex_normals<M, T>(m));
+HMIRA_ROW(row_euler, "Euler operators (make/kill vertex, edge-vertex, edge-face)", "algorithms/euler/euler.hpp",
+          hmira::euler_mutable_mesh, (M & m, typename T::halfedge_handle h), hmira::make_edge_face<M, T>(m, h, h));
+HMIRA_ROW(row_euler_ring, "Euler ring operators (make/kill face-ring, edge-ring)", "algorithms/euler/euler.hpp",
+          hmira::euler_ring_mutable_mesh, (M & m, typename T::halfedge_handle h),
+          hmira::make_face_kill_ring<M, T>(m, h));
+HMIRA_ROW(row_split_vertex, "split_vertex, join_vertices (general vertex split and its inverse)",
+          "algorithms/euler/split_vertex.hpp", hmira::euler_mutable_mesh,
+          (M & m, typename T::halfedge_handle h, const hmira::vec3<typename T::scalar>& p),
           hmira::split_vertex<M, T>(m, h, h, p));
-HMIRA_ROW(row_add_vertex_face, "add_vertex, add_face (primitives)", "algorithms/primitives/primitives.hpp", hmira::mesh_builder,
-          (M & m, const hmira::vec3<typename T::scalar>& p), hmira::add_vertex<M, T>(m, p));
-HMIRA_ROW(row_edge_primitives, "add_edge, remove_edge (primitives)", "algorithms/primitives/primitives.hpp", hmira::halfedge_mutable_mesh,
-          (M & m, typename T::halfedge_handle h), hmira::remove_edge<M, T>(m, h));
+HMIRA_ROW(row_add_vertex_face, "add_vertex, add_face (primitives)", "algorithms/primitives/primitives.hpp",
+          hmira::mesh_builder, (M & m, const hmira::vec3<typename T::scalar>& p), hmira::add_vertex<M, T>(m, p));
+HMIRA_ROW(row_edge_primitives, "add_edge, remove_edge (primitives)", "algorithms/primitives/primitives.hpp",
+          hmira::halfedge_mutable_mesh, (M & m, typename T::halfedge_handle h), hmira::remove_edge<M, T>(m, h));
 HMIRA_ROW(row_remove_face, "remove_face (primitive)", "algorithms/primitives/primitives.hpp", hmira::face_erasable_mesh,
           (M & m, typename T::face_handle f), hmira::remove_face<M, T>(m, f));
-HMIRA_ROW(row_remove_vertex, "remove_vertex (primitive)", "algorithms/primitives/primitives.hpp", hmira::vertex_erasable_mesh,
-          (M & m, typename T::vertex_handle v), hmira::remove_vertex<M, T>(m, v));
-HMIRA_ROW(row_truncate, "truncate, truncate_all", "algorithms/editing/truncate.hpp", hmira::truncatable_mesh, (M & m, typename T::vertex_handle v),
-          hmira::truncate<M, T>(m, v));
-HMIRA_ROW(row_bevel, "bevel, bevel_vertices", "algorithms/editing/bevel.hpp", hmira::bevelable_mesh, (M & m, typename T::edge_handle e),
-          hmira::bevel<M, T>(m, e));
-HMIRA_ROW(row_extrude, "extrude", "algorithms/editing/extrude.hpp", hmira::extrudable_mesh, (M & m, typename T::face_handle f),
-          hmira::extrude<M, T>(m, f));
+HMIRA_ROW(row_remove_vertex, "remove_vertex (primitive)", "algorithms/primitives/primitives.hpp",
+          hmira::vertex_erasable_mesh, (M & m, typename T::vertex_handle v), hmira::remove_vertex<M, T>(m, v));
+HMIRA_ROW(row_truncate, "truncate, truncate_all", "algorithms/editing/truncate.hpp", hmira::truncatable_mesh,
+          (M & m, typename T::vertex_handle v), hmira::truncate<M, T>(m, v));
+HMIRA_ROW(row_bevel, "bevel, bevel_vertices", "algorithms/editing/bevel.hpp", hmira::bevelable_mesh,
+          (M & m, typename T::edge_handle e), hmira::bevel<M, T>(m, e));
+HMIRA_ROW(row_extrude, "extrude", "algorithms/editing/extrude.hpp", hmira::extrudable_mesh,
+          (M & m, typename T::face_handle f), hmira::extrude<M, T>(m, f));
 HMIRA_ROW(row_flip_edge, "flip_edge, is_flip_ok", "algorithms/triangle/flip_edge.hpp", hmira::triangle_operable_mesh,
           (M & m, typename T::halfedge_handle h), hmira::flip_edge<M, T>(m, h));
-HMIRA_ROW(row_split_edge, "split_edge", "algorithms/triangle/split_edge.hpp", hmira::triangle_operable_mesh, (M & m, typename T::halfedge_handle h),
-          hmira::split_edge<M, T>(m, h));
-HMIRA_ROW(row_split_face, "split_face", "algorithms/triangle/split_face.hpp", hmira::triangle_operable_mesh, (M & m, typename T::face_handle f),
-          hmira::split_face<M, T>(m, f));
-HMIRA_ROW(row_collapse_edge, "collapse_edge, is_collapse_ok", "algorithms/triangle/collapse_edge.hpp", hmira::triangle_operable_mesh,
-          (M & m, typename T::halfedge_handle h), hmira::collapse_edge<M, T>(m, h));
-HMIRA_ROW(row_face_triangles, "face_triangles (one face's triangles, rings included)", "algorithms/triangulation/triangulate_faces.hpp",
-          hmira::face_triangulable_mesh, (const M& m, typename T::face_handle f), hmira::face_triangles<M, T>(m, f));
-HMIRA_ROW(row_triangulate_faces, "triangulate_faces", "algorithms/triangulation/triangulate_faces.hpp", hmira::triangulable_mesh, (M & m),
-          hmira::triangulate_faces<M, T>(m));
-HMIRA_ROW(row_fill_hole, "fill_hole", "algorithms/holes/fill_hole.hpp", hmira::triangle_operable_mesh, (M & m, typename T::halfedge_handle h),
-          hmira::fill_hole<M, T>(m, h));
-HMIRA_ROW(row_fill_holes, "fill_holes", "algorithms/holes/fill_hole.hpp", hmira::hole_fillable_mesh, (M & m), hmira::fill_holes<M, T>(m, 3));
-HMIRA_ROW(row_loop, "loop_subdivide", "algorithms/subdivision/loop.hpp", hmira::loop_subdividable_mesh, (M & m), hmira::loop_subdivide<M, T>(m));
-HMIRA_ROW(row_sqrt3, "sqrt3_subdivide", "algorithms/subdivision/sqrt3.hpp", hmira::sqrt3_subdividable_mesh, (M & m), hmira::sqrt3_subdivide<M, T>(m));
-HMIRA_ROW(row_catmull_clark, "catmull_clark_subdivide", "algorithms/subdivision/catmull_clark.hpp", hmira::catmull_clark_subdividable_mesh,
-          (M & m), hmira::catmull_clark_subdivide<M, T>(m));
-HMIRA_ROW(row_decimate, "decimate (quadric error)", "algorithms/decimation/decimate.hpp", hmira::decimatable_mesh, (M & m),
-          hmira::decimate<M, T>(m, {.target_faces = 10}));
-HMIRA_ROW(row_smooth, "laplacian_smooth, taubin_smooth", "algorithms/smoothing/laplacian_smooth.hpp", hmira::smoothable_mesh, (M & m),
-          hmira::taubin_smooth<M, T>(m));
-HMIRA_ROW(row_remesh, "isotropic_remeshing", "algorithms/remeshing/isotropic_remeshing.hpp", hmira::remeshable_mesh, (M & m),
-          hmira::isotropic_remeshing<M, T>(m, {.target_edge_length = 1}));
-HMIRA_ROW(row_copy_from, "copy_mesh (from this model, e.g. into halfedge_mesh)", "algorithms/copy/copy_mesh.hpp", hmira::copy_source_mesh,
-          (const M& m, hmira::halfedge_mesh& h), hmira::copy_mesh<M, hmira::halfedge_mesh, T>(m, h));
-HMIRA_ROW(row_copy_into, "copy_mesh (into this model, e.g. from halfedge_mesh)", "algorithms/copy/copy_mesh.hpp", hmira::copy_target_mesh,
-          (M & m, const hmira::halfedge_mesh& h), hmira::copy_mesh<hmira::halfedge_mesh, M, hmira::default_traits<hmira::halfedge_mesh>, T>(h, m));
+HMIRA_ROW(row_split_edge, "split_edge", "algorithms/triangle/split_edge.hpp", hmira::triangle_operable_mesh,
+          (M & m, typename T::halfedge_handle h), hmira::split_edge<M, T>(m, h));
+HMIRA_ROW(row_split_face, "split_face", "algorithms/triangle/split_face.hpp", hmira::triangle_operable_mesh,
+          (M & m, typename T::face_handle f), hmira::split_face<M, T>(m, f));
+HMIRA_ROW(row_collapse_edge, "collapse_edge, is_collapse_ok", "algorithms/triangle/collapse_edge.hpp",
+          hmira::triangle_operable_mesh, (M & m, typename T::halfedge_handle h), hmira::collapse_edge<M, T>(m, h));
+HMIRA_ROW(row_face_triangles, "face_triangles (one face's triangles, rings included)",
+          "algorithms/triangulation/triangulate_faces.hpp", hmira::face_triangulable_mesh,
+          (const M& m, typename T::face_handle f), hmira::face_triangles<M, T>(m, f));
+HMIRA_ROW(row_triangulate_faces, "triangulate_faces", "algorithms/triangulation/triangulate_faces.hpp",
+          hmira::triangulable_mesh, (M & m), hmira::triangulate_faces<M, T>(m));
+HMIRA_ROW(row_fill_hole, "fill_hole", "algorithms/holes/fill_hole.hpp", hmira::triangle_operable_mesh,
+          (M & m, typename T::halfedge_handle h), hmira::fill_hole<M, T>(m, h));
+HMIRA_ROW(row_fill_holes, "fill_holes", "algorithms/holes/fill_hole.hpp", hmira::hole_fillable_mesh, (M & m),
+          hmira::fill_holes<M, T>(m, 3));
+HMIRA_ROW(row_loop, "loop_subdivide", "algorithms/subdivision/loop.hpp", hmira::loop_subdividable_mesh, (M & m),
+          hmira::loop_subdivide<M, T>(m));
+HMIRA_ROW(row_sqrt3, "sqrt3_subdivide", "algorithms/subdivision/sqrt3.hpp", hmira::sqrt3_subdividable_mesh, (M & m),
+          hmira::sqrt3_subdivide<M, T>(m));
+HMIRA_ROW(row_catmull_clark, "catmull_clark_subdivide", "algorithms/subdivision/catmull_clark.hpp",
+          hmira::catmull_clark_subdividable_mesh, (M & m), hmira::catmull_clark_subdivide<M, T>(m));
+HMIRA_ROW(row_decimate, "decimate (quadric error)", "algorithms/decimation/decimate.hpp", hmira::decimatable_mesh,
+          (M & m), hmira::decimate<M, T>(m, {.target_faces = 10}));
+HMIRA_ROW(row_smooth, "laplacian_smooth, taubin_smooth", "algorithms/smoothing/laplacian_smooth.hpp",
+          hmira::smoothable_mesh, (M & m), hmira::taubin_smooth<M, T>(m));
+HMIRA_ROW(row_remesh, "isotropic_remeshing", "algorithms/remeshing/isotropic_remeshing.hpp", hmira::remeshable_mesh,
+          (M & m), hmira::isotropic_remeshing<M, T>(m, {.target_edge_length = 1}));
+HMIRA_ROW(row_copy_from, "copy_mesh (from this model, e.g. into halfedge_mesh)", "algorithms/copy/copy_mesh.hpp",
+          hmira::copy_source_mesh, (const M& m, hmira::halfedge_mesh& h),
+          hmira::copy_mesh<M, hmira::halfedge_mesh, T>(m, h));
+HMIRA_ROW(row_copy_into, "copy_mesh (into this model, e.g. from halfedge_mesh)", "algorithms/copy/copy_mesh.hpp",
+          hmira::copy_target_mesh, (M & m, const hmira::halfedge_mesh& h),
+          hmira::copy_mesh<hmira::halfedge_mesh, M, hmira::default_traits<hmira::halfedge_mesh>, T>(h, m));
 HMIRA_ROW(row_aabb_tree, "aabb_tree_from_mesh (closest_point, ray_intersect)", "algorithms/spatial/aabb_tree.hpp",
           hmira::aabb_tree_source_mesh, (const M& m), hmira::aabb_tree_from_mesh<M, T>(m));
-HMIRA_ROW(row_marching_cubes, "marching_cubes (into the mesh)", "algorithms/conversion/marching_cubes.hpp", hmira::mesh_builder,
-          (M & m, const hmira::dense_grid<float>& g), hmira::marching_cubes<M, T>(m, g));
-HMIRA_ROW(row_voxelize, "voxelize", "algorithms/conversion/voxelize.hpp", hmira::voxelize_mesh, (const M& m, const hmira::grid_geometry& g),
-          hmira::voxelize<M, T>(m, g));
-HMIRA_ROW(row_delaunay, "delaunay_triangulation (into the mesh)", "algorithms/delaunay/delaunay_triangulation.hpp", hmira::mesh_builder,
-          (M & m, const points2& p), hmira::delaunay_triangulation<M, T>(m, p));
-HMIRA_ROW(row_read, "read_obj, read_off", "io/obj.hpp, io/off.hpp", hmira::io::readable_mesh, (M & m, const std::filesystem::path& p),
-          hmira::io::read_obj<M, T>(m, p));
-HMIRA_ROW(row_write, "write_obj, write_off", "io/obj.hpp, io/off.hpp", hmira::io::writable_mesh, (const M& m, const std::filesystem::path& p),
-          hmira::io::write_obj<M, T>(m, p));
-HMIRA_ROW(row_adapt_brute, "adapt_brute_force (adjacency by scanning faces)", "adapters/adapted_mesh.hpp", hmira::adapter_source_mesh, (M & m),
-          hmira::adapt_brute_force<M, T>(m));
-HMIRA_ROW(row_adapt_indexed, "adapt, adapt_indexed (adjacency from an index)", "adapters/adapted_mesh.hpp", hmira::indexed_adapter_source_mesh, (M & m),
-          hmira::adapt_indexed<M, T>(m));
+HMIRA_ROW(row_marching_cubes, "marching_cubes (into the mesh)", "algorithms/conversion/marching_cubes.hpp",
+          hmira::mesh_builder, (M & m, const hmira::dense_grid<float>& g), hmira::marching_cubes<M, T>(m, g));
+HMIRA_ROW(row_voxelize, "voxelize", "algorithms/conversion/voxelize.hpp", hmira::voxelize_mesh,
+          (const M& m, const hmira::grid_geometry& g), hmira::voxelize<M, T>(m, g));
+HMIRA_ROW(row_delaunay, "delaunay_triangulation (into the mesh)", "algorithms/delaunay/delaunay_triangulation.hpp",
+          hmira::mesh_builder, (M & m, const points2& p), hmira::delaunay_triangulation<M, T>(m, p));
+HMIRA_ROW(row_read, "read_obj, read_off", "io/obj.hpp, io/off.hpp", hmira::io::readable_mesh,
+          (M & m, const std::filesystem::path& p), hmira::io::read_obj<M, T>(m, p));
+HMIRA_ROW(row_write, "write_obj, write_off", "io/obj.hpp, io/off.hpp", hmira::io::writable_mesh,
+          (const M& m, const std::filesystem::path& p), hmira::io::write_obj<M, T>(m, p));
+HMIRA_ROW(row_adapt_brute, "adapt_brute_force (adjacency by scanning faces)", "adapters/adapted_mesh.hpp",
+          hmira::adapter_source_mesh, (M & m), hmira::adapt_brute_force<M, T>(m));
+HMIRA_ROW(row_adapt_indexed, "adapt, adapt_indexed (adjacency from an index)", "adapters/adapted_mesh.hpp",
+          hmira::indexed_adapter_source_mesh, (M & m), hmira::adapt_indexed<M, T>(m));
 
 template <class... Rs>
 struct row_list {};
-using rows = row_list<row_triangle_solids, row_polygon_solids, row_torus, row_grid, row_validate, row_topology, row_flip,
-                      row_vertex_normals, row_euler, row_euler_ring, row_split_vertex, row_add_vertex_face, row_edge_primitives,
-                      row_remove_face, row_remove_vertex, row_truncate, row_bevel, row_extrude, row_flip_edge, row_split_edge,
-                      row_split_face, row_collapse_edge, row_face_triangles, row_triangulate_faces, row_fill_hole, row_fill_holes,
-                      row_loop, row_sqrt3, row_catmull_clark, row_decimate, row_smooth, row_remesh, row_copy_from, row_copy_into, row_aabb_tree, row_marching_cubes, row_voxelize, row_delaunay, row_read,
-                      row_write, row_adapt_brute, row_adapt_indexed>;
+using rows =
+    row_list<row_triangle_solids, row_polygon_solids, row_torus, row_grid, row_validate, row_topology, row_flip,
+             row_vertex_normals, row_euler, row_euler_ring, row_split_vertex, row_add_vertex_face, row_edge_primitives,
+             row_remove_face, row_remove_vertex, row_truncate, row_bevel, row_extrude, row_flip_edge, row_split_edge,
+             row_split_face, row_collapse_edge, row_face_triangles, row_triangulate_faces, row_fill_hole,
+             row_fill_holes, row_loop, row_sqrt3, row_catmull_clark, row_decimate, row_smooth, row_remesh,
+             row_copy_from, row_copy_into, row_aabb_tree, row_marching_cubes, row_voxelize, row_delaunay, row_read,
+             row_write, row_adapt_brute, row_adapt_indexed>;
 
 // ---- the capabilities of concepts.hpp: one row each -------------------------------------------
 
-#define HMIRA_CAPABILITY(NAME)                                         \
-    struct cap_##NAME {                                                \
-        static constexpr const char* name = #NAME;                     \
-        template <class M>                                             \
-        static constexpr bool supported = hmira::NAME<M>;              \
+#define HMIRA_CAPABILITY(NAME)                            \
+    struct cap_##NAME {                                   \
+        static constexpr const char* name = #NAME;        \
+        template <class M>                                \
+        static constexpr bool supported = hmira::NAME<M>; \
     }
 HMIRA_CAPABILITY(mesh_element_types);
 HMIRA_CAPABILITY(vertex_list_mesh);
@@ -266,15 +287,16 @@ struct cap_fault_injecting_traits {
     static constexpr bool supported = hmira::fault_injecting_traits<hmira::default_traits<M>>;
 };
 using capabilities =
-    row_list<cap_mesh_element_types, cap_vertex_list_mesh, cap_face_list_mesh, cap_edge_list_mesh, cap_vertex_index_mesh,
-             cap_face_index_mesh, cap_edge_index_mesh, cap_face_vertex_range_mesh, cap_positioned_mesh,
-             cap_position_mutable_mesh, cap_vertex_adjacency_mesh, cap_vertex_face_adjacency_mesh,
-             cap_vertex_edge_adjacency_mesh, cap_face_adjacency_mesh, cap_halfedge_navigable_mesh, cap_halfedge_index_mesh,
-             cap_inner_ring_mesh, cap_mesh_builder, cap_polygon_mesh_builder, cap_face_reversible_mesh,
-             cap_halfedge_mutable_mesh, cap_inner_ring_mutable_mesh, cap_face_removal_mesh, cap_vertex_removal_mesh,
-             cap_change_counted_mesh, cap_reservable_mesh, cap_bulk_growable_mesh, cap_orientation_reversible_mesh,
-             cap_erase_preparing_mesh, cap_bulk_vertex_removal_mesh, cap_vertex_halfedge_restorable_mesh,
-             cap_removal_queryable_mesh, cap_triangle_only_mesh, cap_fault_injecting_traits>;
+    row_list<cap_mesh_element_types, cap_vertex_list_mesh, cap_face_list_mesh, cap_edge_list_mesh,
+             cap_vertex_index_mesh, cap_face_index_mesh, cap_edge_index_mesh, cap_face_vertex_range_mesh,
+             cap_positioned_mesh, cap_position_mutable_mesh, cap_vertex_adjacency_mesh, cap_vertex_face_adjacency_mesh,
+             cap_vertex_edge_adjacency_mesh, cap_face_adjacency_mesh, cap_halfedge_navigable_mesh,
+             cap_halfedge_index_mesh, cap_inner_ring_mesh, cap_mesh_builder, cap_polygon_mesh_builder,
+             cap_face_reversible_mesh, cap_halfedge_mutable_mesh, cap_inner_ring_mutable_mesh, cap_face_removal_mesh,
+             cap_vertex_removal_mesh, cap_change_counted_mesh, cap_reservable_mesh, cap_bulk_growable_mesh,
+             cap_orientation_reversible_mesh, cap_erase_preparing_mesh, cap_bulk_vertex_removal_mesh,
+             cap_vertex_halfedge_restorable_mesh, cap_removal_queryable_mesh, cap_triangle_only_mesh,
+             cap_fault_injecting_traits>;
 
 // A few claims spelled out, so that the compiler states them even before the table is read.
 static_assert(!hmira::vertex_adjacency_mesh<hmira::face_vertex_mesh>);
@@ -329,7 +351,7 @@ std::string needs_of(const std::string& row) {
 
 template <class R, class... Ms>
 constexpr bool needs_agree(model_list<Ms...>) {
-    return ((R::template supported<Ms> == R::template needs<Ms>) && ...);
+    return ((R::template supported<Ms> == R::template needs<Ms>)&&...);
 }
 // Each row's concept is the whole truth about it: the call compiles exactly where it holds.
 static_assert([]<class... Rs>(row_list<Rs...>) { return (needs_agree<Rs>(models{}) && ...); }(rows{}),
@@ -399,7 +421,8 @@ std::map<std::string, table> parse(const std::string& text) {
             header.clear();
         } else if (line.rfind("|", 0) == 0) {
             auto c = cells(line);
-            if (header.empty()) header = c;
+            if (header.empty())
+                header = c;
             else if (!c.empty() && c[0].rfind("---", 0) != 0)
                 for (std::size_t i = 1; i < c.size() && i < header.size(); ++i) out[section][c[0]][header[i]] = c[i];
         }
@@ -445,7 +468,8 @@ void run_claims() {
     if constexpr (row_adapt_brute::supported<M>) {
         const auto a = hmira::adapt_brute_force(mesh);
         for (auto v : T::vertices(mesh)) {
-            EXPECT_EQ(std::ranges::distance(hmira::default_traits<decltype(a)>::adjacent_vertices(a, v)), 5) << column<M>::title;
+            EXPECT_EQ(std::ranges::distance(hmira::default_traits<decltype(a)>::adjacent_vertices(a, v)), 5)
+                << column<M>::title;
             break;
         }
     }
@@ -472,7 +496,8 @@ template <class M, class T = hmira::default_traits<M>>
     const auto problems = hmira::validate(m);
     if (!problems.empty()) return ::testing::AssertionFailure() << column<M>::title << ": " << problems.front().message;
     const auto chi = hmira::mesh_topology(m).euler_characteristic;
-    if (chi != 2) return ::testing::AssertionFailure() << column<M>::title << ": Euler characteristic " << chi << ", expected 2";
+    if (chi != 2)
+        return ::testing::AssertionFailure() << column<M>::title << ": Euler characteristic " << chi << ", expected 2";
     return ::testing::AssertionSuccess();
 }
 
@@ -491,7 +516,8 @@ void run_editing_claims() {
     };
     if constexpr (row_split_vertex::supported<M>) {
         auto m = icosahedron<M>();
-        auto split = hmira::split_vertex(m, T::face_halfedge(m, first_face(m)), T::face_halfedge(m, first_face(m)), {0.1, 0.1, 0.1});
+        auto split = hmira::split_vertex(m, T::face_halfedge(m, first_face(m)), T::face_halfedge(m, first_face(m)),
+                                         {0.1, 0.1, 0.1});
         ASSERT_TRUE(split) << column<M>::title << ": " << split.error().message;
         EXPECT_EQ(T::vertex_count(m), 13u) << column<M>::title;
         auto join = hmira::join_vertices(m, split->halfedge);
@@ -536,7 +562,8 @@ void run_editing_claims() {
         // Every vertex of a closed mesh is interior: a wire edge there is refused.
         auto closed = icosahedron<M>();
         const auto h = T::face_halfedge(closed, first_face(closed));
-        EXPECT_FALSE(hmira::add_edge(closed, T::target(closed, h), T::target(closed, T::next(closed, T::next(closed, h)))));
+        EXPECT_FALSE(
+            hmira::add_edge(closed, T::target(closed, h), T::target(closed, T::next(closed, T::next(closed, h)))));
     }
     if constexpr (row_truncate::supported<M>) {
         auto m = icosahedron<M>();
@@ -762,7 +789,8 @@ void run_conversion_claims(std::size_t column_number) {
         const auto mesh = icosahedron<M>();
         const auto dir = std::filesystem::temp_directory_path();
         for (const char* ext : {".obj", ".off"}) {
-            const auto path = dir / ("hmira_feature_table_" + std::to_string(::getpid()) + "_" + std::to_string(column_number) + ext);
+            const auto path =
+                dir / ("hmira_feature_table_" + std::to_string(::getpid()) + "_" + std::to_string(column_number) + ext);
             const bool obj = std::string(ext) == ".obj";
             auto w = obj ? hmira::io::write_obj(mesh, path) : hmira::io::write_off(mesh, path);
             ASSERT_TRUE(w) << title << ": " << w.error().message;
@@ -777,7 +805,8 @@ void run_conversion_claims(std::size_t column_number) {
     }
     if constexpr (row_marching_cubes::supported<M>) {
         // A sphere of radius 1.8 sampled on 7^3 points: one closed surface.
-        hmira::dense_grid<float> field(hmira::grid_geometry{.dims = {7, 7, 7}, .origin = {-3, -3, -3}, .spacing = {1, 1, 1}});
+        hmira::dense_grid<float> field(
+            hmira::grid_geometry{.dims = {7, 7, 7}, .origin = {-3, -3, -3}, .spacing = {1, 1, 1}});
         for (std::size_t k = 0; k < 7; ++k)
             for (std::size_t j = 0; j < 7; ++j)
                 for (std::size_t i = 0; i < 7; ++i) {
@@ -860,8 +889,8 @@ TEST(feature_table, the_committed_table_is_the_one_the_compiler_computed) {
             for (const auto& [col, cell] : cells) {
                 const auto& old = committed.at(section).at(row);
                 ASSERT_TRUE(old.count(col)) << "column '" << col << "' missing: regenerate the table";
-                EXPECT_EQ(old.at(col), cell) << section << " / " << row << " / " << col
-                                             << ": the table says " << old.at(col) << ", the compiler says " << cell;
+                EXPECT_EQ(old.at(col), cell) << section << " / " << row << " / " << col << ": the table says "
+                                             << old.at(col) << ", the compiler says " << cell;
             }
         }
     }
@@ -870,21 +899,26 @@ TEST(feature_table, the_committed_table_is_the_one_the_compiler_computed) {
     // (OpenMesh or CGAL absent) is not checked here; the full CI configuration checks it.
     const std::set<std::string> optional_columns{"OpenMesh PolyMesh", "OpenMesh TriMesh", "CGAL Surface_mesh"};
     for (const auto& [section, t] : committed) {
-        EXPECT_TRUE(now.count(section)) << "the committed table has a section '" << section << "' that the test does not compute";
+        EXPECT_TRUE(now.count(section)) << "the committed table has a section '" << section
+                                        << "' that the test does not compute";
         if (!now.count(section)) continue;
         for (const auto& [row, cells] : t) {
-            EXPECT_TRUE(now.at(section).count(row)) << section << ": the committed table has a row '" << row << "' that the test does not know";
+            EXPECT_TRUE(now.at(section).count(row))
+                << section << ": the committed table has a row '" << row << "' that the test does not know";
             if (!now.at(section).count(row)) continue;
             for (const auto& [col, cell] : cells) {
                 EXPECT_TRUE(cell == "yes" || cell == "no" || col == "needs" || col == "header")
                     << section << " / " << row << " / " << col << ": '" << cell << "' is neither yes nor no";
                 if (now.at(section).at(row).count(col)) continue;
-                EXPECT_TRUE(optional_columns.count(col)) << "the committed table has a column '" << col << "' that the test does not know";
+                EXPECT_TRUE(optional_columns.count(col))
+                    << "the committed table has a column '" << col << "' that the test does not know";
                 not_built.push_back(col);
             }
         }
     }
-    if (!not_built.empty()) std::printf("note: %zu committed cells not computable in this build (optional models absent)\n", not_built.size());
+    if (!not_built.empty())
+        std::printf("note: %zu committed cells not computable in this build (optional models absent)\n",
+                    not_built.size());
 }
 
 }  // namespace

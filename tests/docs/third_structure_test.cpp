@@ -39,8 +39,12 @@ struct hmira::mesh_traits<render::gpu_mesh> {
     static constexpr bool triangles_only = true;
 
     // The bound is cast to the handle type: iota(0u, size_t) would not compile.
-    static auto vertices(const mesh& m) { return std::views::iota(std::uint32_t{0}, static_cast<std::uint32_t>(m.vertex_total())); }
-    static auto faces(const mesh& m) { return std::views::iota(std::uint32_t{0}, static_cast<std::uint32_t>(m.triangle_total())); }
+    static auto vertices(const mesh& m) {
+        return std::views::iota(std::uint32_t{0}, static_cast<std::uint32_t>(m.vertex_total()));
+    }
+    static auto faces(const mesh& m) {
+        return std::views::iota(std::uint32_t{0}, static_cast<std::uint32_t>(m.triangle_total()));
+    }
     static std::size_t vertex_count(const mesh& m) { return m.vertex_total(); }
     static std::size_t face_count(const mesh& m) { return m.triangle_total(); }
     static std::size_t vertex_index(const mesh&, std::uint32_t v) { return v; }

@@ -79,7 +79,8 @@ TYPED_TEST(cgal_interop, flip_normals_runs_in_place_and_cgal_sees_a_valid_revers
         std::rotate(loop.begin(), it, loop.end());
         EXPECT_EQ(loop, expected);
     }
-    for (auto v : m.vertices()) EXPECT_EQ(m.is_border(v, false), m.is_border(v, true)) << "border vertices keep a border halfedge";
+    for (auto v : m.vertices())
+        EXPECT_EQ(m.is_border(v, false), m.is_border(v, true)) << "border vertices keep a border halfedge";
 }
 
 TYPED_TEST(cgal_interop, hmira_adjacency_equals_cgal_circulators_as_multisets) {
@@ -112,7 +113,8 @@ TYPED_TEST(cgal_interop, validate_reports_a_face_loop_that_never_closes_instead_
     m.set_next(h1, h1);  // the loop from f's halfedge now cycles at h1 for ever
     const auto problems = hmira::validate(m);
     const bool named = std::any_of(problems.begin(), problems.end(), [&](const hmira::mesh_problem& p) {
-        return p.kind == hmira::problem_kind::broken_link && p.message.find("face " + std::to_string(f.idx()) + ": its loop does not return") == 0;
+        return p.kind == hmira::problem_kind::broken_link &&
+               p.message.find("face " + std::to_string(f.idx()) + ": its loop does not return") == 0;
     });
     EXPECT_TRUE(named) << "problems found: " << problems.size();
 }

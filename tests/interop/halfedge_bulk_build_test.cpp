@@ -32,7 +32,9 @@ flat flatten(const hmira_test::face_list& g) {
     return out;
 }
 
-hmira::result<halfedge_mesh> build(const flat& f) { return halfedge_mesh::from_polygons(f.points, f.offsets, f.corners); }
+hmira::result<halfedge_mesh> build(const flat& f) {
+    return halfedge_mesh::from_polygons(f.points, f.offsets, f.corners);
+}
 
 // Record by record: the same halfedge numbering, links, faces, outgoing halfedges and positions.
 void expect_identical(const halfedge_mesh& a, const halfedge_mesh& b) {
@@ -51,7 +53,8 @@ void expect_identical(const halfedge_mesh& a, const halfedge_mesh& b) {
         ASSERT_EQ(a.vertex_halfedge(v), b.vertex_halfedge(v)) << "vertex " << i;
         ASSERT_EQ(a.position(v), b.position(v)) << "vertex " << i;
     }
-    for (std::uint32_t i = 0; i < a.face_count(); ++i) ASSERT_EQ(a.face_halfedge(hmira::face_handle(i)), b.face_halfedge(hmira::face_handle(i))) << "face " << i;
+    for (std::uint32_t i = 0; i < a.face_count(); ++i)
+        ASSERT_EQ(a.face_halfedge(hmira::face_handle(i)), b.face_halfedge(hmira::face_handle(i))) << "face " << i;
 }
 
 // Face by face with add_face, what from_polygons promises to equal.
@@ -78,7 +81,8 @@ TEST(HalfedgeBulkBuild, builds_the_same_mesh_as_face_by_face_add_face_on_random_
         EXPECT_EQ(tb.genus, to.genus);
         // face_vertices starts at the face's first corner, as add_face does.
         for (std::size_t f = 0; f < g.faces.size(); ++f)
-            EXPECT_EQ(bulk->face_vertices(hmira::face_handle(f)).begin().cursor(), bulk->face_halfedge(hmira::face_handle(f)));
+            EXPECT_EQ(bulk->face_vertices(hmira::face_handle(f)).begin().cursor(),
+                      bulk->face_halfedge(hmira::face_handle(f)));
         EXPECT_EQ((*bulk->face_vertices(hmira::face_handle(0u)).begin()).index, g.faces[0][0]);
     }
 }
@@ -112,22 +116,26 @@ TEST(HalfedgeBulkBuild, disjoint_triangles_are_all_boundary_and_numbered_as_add_
 TEST(HalfedgeBulkBuild, names_the_fault_by_the_lowest_source_vertex_whatever_the_face_order) {
     // Two edges run twice the same way: 2->3 (faces 0 and 1) and 0->1 (faces 2 and 3). Met
     // first in face order is 2->3, but the message names 0->1, the edge of the lower vertex.
-    const std::vector<hmira::vec3<double>> p{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}, {2, 0, 0}, {2, 1, 0}, {-1, -1, 0}};
+    const std::vector<hmira::vec3<double>> p{{0, 0, 0}, {1, 0, 0}, {0, 1, 0},  {1, 1, 0},
+                                             {2, 0, 0}, {2, 1, 0}, {-1, -1, 0}};
     const std::vector<std::uint32_t> offsets{0, 3, 6, 9, 12};
     const std::vector<std::uint32_t> corners{2, 3, 4, 2, 3, 5, 0, 1, 5, 0, 1, 6};
     auto r = halfedge_mesh::from_polygons(p, offsets, corners);
     ASSERT_FALSE(r);
     EXPECT_EQ(r.error().code, hmira::errc::orientation_conflict);
-    EXPECT_EQ(r.error().message, "from_polygons: edge 0->1 is run in the same direction by two faces (they are wound against each other)");
+    EXPECT_EQ(r.error().message,
+              "from_polygons: edge 0->1 is run in the same direction by two faces (they are wound against each other)");
     EXPECT_EQ(r.error().element, 0);
     // A third face on edge 1->2 (faces 1 and 2 run it the same way, face 0 backwards).
-    auto third = halfedge_mesh::from_polygons(p, std::vector<std::uint32_t>{0, 3, 6, 9}, std::vector<std::uint32_t>{2, 1, 0, 1, 2, 3, 1, 2, 4});
+    auto third = halfedge_mesh::from_polygons(p, std::vector<std::uint32_t>{0, 3, 6, 9},
+                                              std::vector<std::uint32_t>{2, 1, 0, 1, 2, 3, 1, 2, 4});
     ASSERT_FALSE(third);
     EXPECT_EQ(third.error().code, hmira::errc::non_manifold);
     EXPECT_EQ(third.error().message, "from_polygons: edge 1->2 has more than two faces");
     EXPECT_EQ(third.error().element, 1);
     // The third face on 0-1 arrives after the edge is paired, from either side.
-    for (const auto& corners : {std::vector<std::uint32_t>{1, 0, 2, 0, 1, 3, 0, 1, 4}, std::vector<std::uint32_t>{0, 1, 2, 1, 0, 3, 0, 1, 4}}) {
+    for (const auto& corners : {std::vector<std::uint32_t>{1, 0, 2, 0, 1, 3, 0, 1, 4},
+                                std::vector<std::uint32_t>{0, 1, 2, 1, 0, 3, 0, 1, 4}}) {
         auto paired = halfedge_mesh::from_polygons(p, std::vector<std::uint32_t>{0, 3, 6, 9}, corners);
         ASSERT_FALSE(paired);
         EXPECT_EQ(paired.error().message, "from_polygons: edge 0->1 has more than two faces");
@@ -154,7 +162,8 @@ TEST(HalfedgeBulkBuild, the_built_mesh_can_keep_growing_with_add_face) {
 }
 
 TEST(HalfedgeBulkBuild, refuses_bad_input_and_names_the_element) {
-    const std::vector<hmira::vec3<double>> p{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}, {2, 0, 0}, {2, 1, 0}, {-1, -1, 0}};
+    const std::vector<hmira::vec3<double>> p{{0, 0, 0}, {1, 0, 0}, {0, 1, 0},  {1, 1, 0},
+                                             {2, 0, 0}, {2, 1, 0}, {-1, -1, 0}};
     auto code = [&](std::vector<std::uint32_t> offsets, std::vector<std::uint32_t> corners) {
         auto r = halfedge_mesh::from_polygons(p, offsets, corners);
         EXPECT_FALSE(r);
@@ -170,14 +179,16 @@ TEST(HalfedgeBulkBuild, refuses_bad_input_and_names_the_element) {
     EXPECT_EQ(code({0, 3, 6, 9}, {0, 1, 2, 1, 0, 3, 0, 1, 6}), hmira::errc::non_manifold);
     // Two triangles touching only at vertex 1: a pinch.
     EXPECT_EQ(code({0, 3, 6}, {0, 1, 2, 1, 4, 5}), hmira::errc::non_manifold);
-    auto r = halfedge_mesh::from_polygons(p, std::vector<std::uint32_t>{0, 3, 6}, std::vector<std::uint32_t>{0, 1, 2, 1, 4, 5});
+    auto r = halfedge_mesh::from_polygons(p, std::vector<std::uint32_t>{0, 3, 6},
+                                          std::vector<std::uint32_t>{0, 1, 2, 1, 4, 5});
     ASSERT_FALSE(r);
     EXPECT_EQ(r.error().element, 1);
 }
 
 TEST(HalfedgeBulkBuild, two_closed_surfaces_sharing_one_vertex_are_refused) {
     // Two tetrahedra glued at vertex 0: no boundary anywhere, but vertex 0 has two fans.
-    const std::vector<hmira::vec3<double>> p{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {-1, 0, 0}, {0, -1, 0}, {0, 0, -1}};
+    const std::vector<hmira::vec3<double>> p{{0, 0, 0},  {1, 0, 0},  {0, 1, 0}, {0, 0, 1},
+                                             {-1, 0, 0}, {0, -1, 0}, {0, 0, -1}};
     const std::vector<std::uint32_t> offsets{0, 3, 6, 9, 12, 15, 18, 21, 24};
     const std::vector<std::uint32_t> corners{0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3, 0, 5, 4, 0, 4, 6, 0, 6, 5, 4, 5, 6};
     auto r = halfedge_mesh::from_polygons(p, offsets, corners);

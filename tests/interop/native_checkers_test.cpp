@@ -101,7 +101,9 @@ struct edit_session {
 
     void polygon_step() {
         switch (std::uniform_int_distribution<int>(0, 5)(rng)) {
-            case 0: run("truncate", [&] { return bool(hmira::truncate(mesh, any_vertex(), {.fraction = 0.25})); }); break;
+            case 0:
+                run("truncate", [&] { return bool(hmira::truncate(mesh, any_vertex(), {.fraction = 0.25})); });
+                break;
             case 1: run("bevel", [&] { return bool(hmira::bevel(mesh, any_edge(), {.width = 0.05})); }); break;
             case 2: run("extrude", [&] { return bool(hmira::extrude(mesh, any_face(), {.distance = 0.3})); }); break;
             case 3:
@@ -222,12 +224,15 @@ TYPED_TEST(native_checkers, agree_with_validate_after_random_edit_sequences) {
                                   std::mt19937_64(seed)};
         ASSERT_TRUE(both_agree_valid(s.mesh));
         for (int step = 0; step < 60 && !::testing::Test::HasFatalFailure(); ++step) {
-            if constexpr (polygons) s.polygon_step();
-            else s.triangle_step();
+            if constexpr (polygons)
+                s.polygon_step();
+            else
+                s.triangle_step();
         }
         EXPECT_GT(s.applied, 20u) << "seed " << seed << ": too few steps applied to mean anything";
-        std::printf("seed %llu: %zu steps applied, %zu refused; V %zu, F %zu\n", static_cast<unsigned long long>(seed), s.applied,
-                    s.refused, static_cast<std::size_t>(T::vertex_count(s.mesh)), static_cast<std::size_t>(T::face_count(s.mesh)));
+        std::printf("seed %llu: %zu steps applied, %zu refused; V %zu, F %zu\n", static_cast<unsigned long long>(seed),
+                    s.applied, s.refused, static_cast<std::size_t>(T::vertex_count(s.mesh)),
+                    static_cast<std::size_t>(T::face_count(s.mesh)));
         // And once more with the deleted elements gone.
         compact(s.mesh);
         EXPECT_TRUE(both_agree_valid(s.mesh)) << "after garbage collection, seed " << seed;

@@ -53,7 +53,8 @@ struct traits_without_reverse_orientation : hmira::mesh_traits<poly> {
 std::vector<int> links(const poly& m) {
     std::vector<int> out;
     for (auto h : m.halfedges())
-        for (int x : {m.next_halfedge_handle(h).idx(), m.prev_halfedge_handle(h).idx(), m.to_vertex_handle(h).idx(), m.face_handle(h).idx()})
+        for (int x : {m.next_halfedge_handle(h).idx(), m.prev_halfedge_handle(h).idx(), m.to_vertex_handle(h).idx(),
+                      m.face_handle(h).idx()})
             out.push_back(x);
     for (auto v : m.vertices()) out.push_back(m.halfedge_handle(v).idx());
     for (auto f : m.faces()) out.push_back(m.halfedge_handle(f).idx());
@@ -169,7 +170,8 @@ TEST(OpenMeshInterop, validate_reports_a_face_loop_that_never_closes_instead_of_
     m.set_next_halfedge_handle(h1, h1);  // the loop from f's halfedge now cycles at h1 for ever
     const auto problems = hmira::validate(m);
     const bool named = std::any_of(problems.begin(), problems.end(), [&](const hmira::mesh_problem& p) {
-        return p.kind == hmira::problem_kind::broken_link && p.message.find("face " + std::to_string(f.idx()) + ": its loop does not return") == 0;
+        return p.kind == hmira::problem_kind::broken_link &&
+               p.message.find("face " + std::to_string(f.idx()) + ": its loop does not return") == 0;
     });
     EXPECT_TRUE(named) << "problems found: " << problems.size();
 }

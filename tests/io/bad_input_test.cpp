@@ -21,7 +21,7 @@ using hmira_test::scratch_dir;
 
 struct bad_case {
     const char* what;
-    const char* file;      // name inside the scratch folder
+    const char* file;  // name inside the scratch folder
     std::string content;
     std::vector<std::string> message_parts;  // each must appear in the message
 };
@@ -45,7 +45,8 @@ void expect_rejected(const bad_case& c) {
             const auto& msg = r.error().message;
             EXPECT_EQ(msg.find('\n'), std::string::npos) << "one line: " << msg;
             EXPECT_NE(msg.find(in.string()), std::string::npos) << msg;
-            for (const auto& part : c.message_parts) EXPECT_NE(msg.find(part), std::string::npos) << "'" << part << "' not in: " << msg;
+            for (const auto& part : c.message_parts)
+                EXPECT_NE(msg.find(part), std::string::npos) << "'" << part << "' not in: " << msg;
             EXPECT_EQ(hmira_test::canonical_faces(mesh), before);
             EXPECT_EQ(hmira_test::positions(mesh), before_points);
             if (r) (void)io::write_mesh(mesh, out);  // what convert does only on success
@@ -82,9 +83,12 @@ std::string binary_stl_tetra() {
     return io::format_stl(m).value();
 }
 
-const std::string ply_ascii_head = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n";
+const std::string ply_ascii_head =
+    "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face "
+    "1\nproperty list uchar int vertex_indices\nend_header\n";
 const std::string tri_obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
-const std::string stl_facet = "facet normal 0 0 1\n outer loop\n  vertex 0 0 0\n  vertex 1 0 0\n  vertex 0 1 0\n endloop\nendfacet\n";
+const std::string stl_facet =
+    "facet normal 0 0 1\n outer loop\n  vertex 0 0 0\n  vertex 1 0 0\n  vertex 0 1 0\n endloop\nendfacet\n";
 
 // ---- truncated files --------------------------------------------------------------------------
 TEST(io_bad_input, truncated_off_names_the_line_and_the_missing_vertices) {
@@ -105,8 +109,14 @@ TEST(io_bad_input, truncated_binary_ply_names_the_byte_offset_and_element) {
 }
 
 TEST(io_bad_input, truncated_ascii_stl_and_ply_name_the_line) {
-    expect_rejected({"truncated stl", "t.stl", "solid x\n" + stl_facet + "facet normal 0 0 1\n outer loop\n  vertex 0 0 0\n", {"t.stl:", "truncated"}});
-    expect_rejected({"truncated ascii ply", "t.ply", ply_ascii_head + "0 0 0\n1 0 0\n", {"t.ply:12", "file ends after 2 of 3 vertex"}});
+    expect_rejected({"truncated stl",
+                     "t.stl",
+                     "solid x\n" + stl_facet + "facet normal 0 0 1\n outer loop\n  vertex 0 0 0\n",
+                     {"t.stl:", "truncated"}});
+    expect_rejected({"truncated ascii ply",
+                     "t.ply",
+                     ply_ascii_head + "0 0 0\n1 0 0\n",
+                     {"t.ply:12", "file ends after 2 of 3 vertex"}});
 }
 
 TEST(io_bad_input, truncated_binary_stl_reports_the_size_mismatch) {
@@ -120,7 +130,8 @@ TEST(io_bad_input, off_counts_that_do_not_match_the_content_are_reported) {
     auto text = off_cube();
     auto too_small = text;
     too_small.replace(too_small.find("8 6"), 3, "8 5");
-    expect_rejected({"off count too small", "s.off", too_small, {"s.off:16", "unexpected content after the last face"}});
+    expect_rejected(
+        {"off count too small", "s.off", too_small, {"s.off:16", "unexpected content after the last face"}});
     auto too_large = text;
     too_large.replace(too_large.find("8 6"), 3, "8 7");
     expect_rejected({"off count too large", "l.off", too_large, {"file ends after 6 of 7 faces"}});
@@ -137,39 +148,62 @@ TEST(io_bad_input, ply_counts_that_do_not_match_the_content_are_reported) {
 
 // ---- out-of-range and zero indices -------------------------------------------------------------
 TEST(io_bad_input, out_of_range_and_zero_indices_are_rejected_with_their_line) {
-    expect_rejected({"obj index too large", "a.obj", tri_obj + "f 1 2 4\n", {"a.obj:4", "vertex index 4 is out of range"}});
-    expect_rejected({"obj negative too far", "b.obj", tri_obj + "f -1 -2 -4\n", {"b.obj:4", "vertex index -4 is out of range"}});
+    expect_rejected(
+        {"obj index too large", "a.obj", tri_obj + "f 1 2 4\n", {"a.obj:4", "vertex index 4 is out of range"}});
+    expect_rejected(
+        {"obj negative too far", "b.obj", tri_obj + "f -1 -2 -4\n", {"b.obj:4", "vertex index -4 is out of range"}});
     expect_rejected({"obj zero index", "c.obj", tri_obj + "f 0 1 2\n", {"c.obj:4", "vertex index 0"}});
-    expect_rejected({"off index", "d.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n", {"d.off:6", "uses vertex 3, out of range [0, 3)"}});
-    expect_rejected({"off negative index", "e.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 -1 2\n", {"e.off:6", "uses vertex -1"}});
-    expect_rejected({"ascii ply index", "f.ply", ply_ascii_head + "0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n", {"f.ply:13", "uses vertex 7"}});
+    expect_rejected({"off index",
+                     "d.off",
+                     "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n",
+                     {"d.off:6", "uses vertex 3, out of range [0, 3)"}});
+    expect_rejected(
+        {"off negative index", "e.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 -1 2\n", {"e.off:6", "uses vertex -1"}});
+    expect_rejected(
+        {"ascii ply index", "f.ply", ply_ascii_head + "0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n", {"f.ply:13", "uses vertex 7"}});
     auto bytes = binary_ply_cube();
     const auto at = bytes.size() - 4;  // last index of the last face
     const std::int32_t bad = 99;
     std::memcpy(bytes.data() + at, &bad, 4);
-    expect_rejected({"binary ply index", "g.ply", bytes, {"byte offset " + std::to_string(at), "face 5 uses vertex 99"}});
+    expect_rejected(
+        {"binary ply index", "g.ply", bytes, {"byte offset " + std::to_string(at), "face 5 uses vertex 99"}});
 }
 
 // ---- non-numbers -------------------------------------------------------------------------------
 TEST(io_bad_input, non_numbers_are_quoted_with_their_line) {
     expect_rejected({"obj coordinate", "a.obj", "v 0 0 0\nv 1 x 0\n", {"a.obj:2", "'x' is not a number"}});
     expect_rejected({"obj index", "b.obj", tri_obj + "f 1 2 three\n", {"b.obj:4", "'three' is not a vertex index"}});
-    expect_rejected({"off coordinate", "c.off", "OFF\n3 1 0\n0 0 0\n1 0 0,5 0\n0 1 0\n3 0 1 2\n", {"c.off:4", "'0,5' is not a number"}});
+    expect_rejected({"off coordinate",
+                     "c.off",
+                     "OFF\n3 1 0\n0 0 0\n1 0 0,5 0\n0 1 0\n3 0 1 2\n",
+                     {"c.off:4", "'0,5' is not a number"}});
     expect_rejected({"off counts", "d.off", "OFF\nthree 1 0\n", {"d.off:2", "'three' is not a number"}});
-    expect_rejected({"ply value", "e.ply", ply_ascii_head + "0 0 0\n1 nan? 0\n0 1 0\n3 0 1 2\n", {"e.ply:11", "'nan?' is not a number"}});
-    expect_rejected({"stl vertex", "f.stl", "solid x\nfacet normal 0 0 1\n outer loop\n  vertex 0 0 0\n  vertex 1 0 zero\n", {"f.stl:5", "'zero' is not a number"}});
+    expect_rejected({"ply value",
+                     "e.ply",
+                     ply_ascii_head + "0 0 0\n1 nan? 0\n0 1 0\n3 0 1 2\n",
+                     {"e.ply:11", "'nan?' is not a number"}});
+    expect_rejected({"stl vertex",
+                     "f.stl",
+                     "solid x\nfacet normal 0 0 1\n outer loop\n  vertex 0 0 0\n  vertex 1 0 zero\n",
+                     {"f.stl:5", "'zero' is not a number"}});
 }
 
 // ---- faces with fewer than 3 vertices ------------------------------------------------------------
 TEST(io_bad_input, faces_with_fewer_than_three_vertices_are_rejected) {
     expect_rejected({"obj", "a.obj", tri_obj + "f 1 2\n", {"a.obj:4", "at least 3 vertices, got 2"}});
     expect_rejected({"off", "b.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n2 0 1\n", {"b.off:6", "face 0 has 2 vertices"}});
-    expect_rejected({"ascii ply", "c.ply", ply_ascii_head + "0 0 0\n1 0 0\n0 1 0\n2 0 1\n", {"c.ply:13", "face 0 has 2 vertices"}});
+    expect_rejected(
+        {"ascii ply", "c.ply", ply_ascii_head + "0 0 0\n1 0 0\n0 1 0\n2 0 1\n", {"c.ply:13", "face 0 has 2 vertices"}});
     auto bytes = binary_ply_cube();
     const auto faces_at = bytes.size() - 6 * 17;
     bytes[faces_at + 17] = 2;  // face 1 claims 2 corners
-    expect_rejected({"binary ply", "d.ply", bytes, {"byte offset " + std::to_string(faces_at + 17), "face 1 has 2 vertices"}});
-    expect_rejected({"stl", "e.stl", "solid x\nfacet normal 0 0 1\n outer loop\n  vertex 0 0 0\n  vertex 1 0 0\n endloop\nendfacet\nendsolid\n", {"e.stl:6", "has 2 vertices"}});
+    expect_rejected(
+        {"binary ply", "d.ply", bytes, {"byte offset " + std::to_string(faces_at + 17), "face 1 has 2 vertices"}});
+    expect_rejected(
+        {"stl",
+         "e.stl",
+         "solid x\nfacet normal 0 0 1\n outer loop\n  vertex 0 0 0\n  vertex 1 0 0\n endloop\nendfacet\nendsolid\n",
+         {"e.stl:6", "has 2 vertices"}});
 }
 
 // ---- not a file --------------------------------------------------------------------------------

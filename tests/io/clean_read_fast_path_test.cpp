@@ -43,8 +43,10 @@ polygon_soup random_surface(std::mt19937& rng, bool torus) {
     for (int r = 0; r < rows; ++r)
         for (int c = 0; c < cols; ++c) {
             const auto a = id(r, c), b = id(r, c + 1), d = id(r + 1, c + 1), e = id(r + 1, c);
-            if (rng() % 2) faces.push_back({a, b, d, e});
-            else faces.push_back({a, b, d}), faces.push_back({a, d, e});
+            if (rng() % 2)
+                faces.push_back({a, b, d, e});
+            else
+                faces.push_back({a, b, d}), faces.push_back({a, d, e});
         }
     std::shuffle(faces.begin(), faces.end(), rng);
     for (auto& f : faces) std::rotate(f.begin(), f.begin() + static_cast<std::ptrdiff_t>(rng() % f.size()), f.end());
@@ -61,7 +63,8 @@ polygon_soup random_surface(std::mt19937& rng, bool torus) {
 std::vector<std::vector<std::uint32_t>> faces_of(const polygon_soup& s) {
     std::vector<std::vector<std::uint32_t>> out;
     for (std::size_t f = 0; f < s.face_count(); ++f)
-        out.emplace_back(s.indices.begin() + static_cast<std::ptrdiff_t>(s.face_offsets[f]), s.indices.begin() + static_cast<std::ptrdiff_t>(s.face_offsets[f + 1]));
+        out.emplace_back(s.indices.begin() + static_cast<std::ptrdiff_t>(s.face_offsets[f]),
+                         s.indices.begin() + static_cast<std::ptrdiff_t>(s.face_offsets[f + 1]));
     return out;
 }
 
@@ -74,7 +77,18 @@ void set_faces(polygon_soup& s, const std::vector<std::vector<std::uint32_t>>& f
     }
 }
 
-enum class defect { none, holes, duplicate_face, flipped_face, degenerate_face, repeated_corner, third_face, pinched_vertex, duplicated_position, count };
+enum class defect {
+    none,
+    holes,
+    duplicate_face,
+    flipped_face,
+    degenerate_face,
+    repeated_corner,
+    third_face,
+    pinched_vertex,
+    duplicated_position,
+    count
+};
 
 /// Damages the soup in one of the ways repair_polygon_soup handles (or leaves it alone).
 void damage(polygon_soup& s, defect d, std::mt19937& rng) {
@@ -84,9 +98,12 @@ void damage(polygon_soup& s, defect d, std::mt19937& rng) {
     switch (d) {
         case defect::none: break;
         case defect::holes:  // boundaries, and sometimes a vertex with two fans
-            for (int i = 0; i < 3 && faces.size() > 1; ++i) faces.erase(faces.begin() + static_cast<std::ptrdiff_t>(pick()));
+            for (int i = 0; i < 3 && faces.size() > 1; ++i)
+                faces.erase(faces.begin() + static_cast<std::ptrdiff_t>(pick()));
             break;
-        case defect::duplicate_face: faces.insert(faces.begin() + static_cast<std::ptrdiff_t>(pick()), faces[pick()]); break;
+        case defect::duplicate_face:
+            faces.insert(faces.begin() + static_cast<std::ptrdiff_t>(pick()), faces[pick()]);
+            break;
         case defect::flipped_face: {
             auto& f = faces[pick()];
             std::reverse(f.begin(), f.end());
@@ -139,15 +156,15 @@ mesh_state state_of(const halfedge_mesh& m) {
         s.positions.push_back({p[0], p[1], p[2]});
         s.vertex_halfedge.push_back(m.vertex_halfedge(vh).index);
     }
-    for (std::size_t f = 0; f < m.face_index_bound(); ++f) s.face_halfedge.push_back(m.face_halfedge(hmira::face_handle(static_cast<std::uint32_t>(f))).index);
+    for (std::size_t f = 0; f < m.face_index_bound(); ++f)
+        s.face_halfedge.push_back(m.face_halfedge(hmira::face_handle(static_cast<std::uint32_t>(f))).index);
     for (std::size_t h = 0; h < m.halfedge_index_bound(); ++h) {
         const hmira::halfedge_handle hh(static_cast<std::uint32_t>(h));
         s.halfedges.push_back({m.target(hh).index, m.face(hh).index, m.next(hh).index, m.prev(hh).index});
     }
     if (auto p = m.get_vertex_property<hmira::vec3<float>>("v:normal"))
         for (const auto& n : p->values()) s.normals.push_back({n[0], n[1], n[2]});
-    if (auto p = m.get_vertex_property<int>("tag"))
-        s.vertex_tags.assign(p->values().begin(), p->values().end());
+    if (auto p = m.get_vertex_property<int>("tag")) s.vertex_tags.assign(p->values().begin(), p->values().end());
     if (auto p = m.get_edge_property<int>("tag")) s.edge_tags.assign(p->values().begin(), p->values().end());
     if (auto p = m.get_halfedge_property<int>("tag")) s.halfedge_tags.assign(p->values().begin(), p->values().end());
     if (auto p = m.get_face_property<int>("tag")) s.face_tags.assign(p->values().begin(), p->values().end());
@@ -171,8 +188,8 @@ const hmira::validate_options unused_vertices_allowed{.relaxed = true, .check_ge
 
 std::string report_text(const hmira::io::read_report& r) {
     std::ostringstream s;
-    s << r.repair.summary() << " | nm edges " << r.repair.nonmanifold_edges << " | dropped " << r.repair.dropped_faces << " | file vertices "
-      << r.file_vertices << " | normals " << r.attributes.normals.size() << " | copied";
+    s << r.repair.summary() << " | nm edges " << r.repair.nonmanifold_edges << " | dropped " << r.repair.dropped_faces
+      << " | file vertices " << r.file_vertices << " | normals " << r.attributes.normals.size() << " | copied";
     for (auto v : r.copied_from) s << ' ' << v;
     s << " | sources";
     for (auto f : r.face_source) s << ' ' << f;
@@ -192,20 +209,23 @@ TEST(clean_read_fast_path, gives_the_repair_paths_mesh_report_and_errors_on_rand
             for (std::size_t v = 0; v < soup.points.size(); ++v)
                 soup.attributes.normals.push_back({static_cast<float>(v), 0.5f, -1.0f});
         const hmira::io::read_options options{.repair = rng() % 4 != 0};
-        SCOPED_TRACE(::testing::Message() << "round " << round << ", defect " << static_cast<int>(d) << ", repair " << options.repair);
+        SCOPED_TRACE(::testing::Message()
+                     << "round " << round << ", defect " << static_cast<int>(d) << ", repair " << options.repair);
 
         // Whether the one-pass build takes this soup (the fast path), to check that both paths
         // are exercised.
         halfedge_mesh probe;
         const bool bulk = static_cast<bool>(probe.assign_polygons(std::span<const std::array<double, 3>>(soup.points),
-                                                                  std::span<const std::uint64_t>(soup.face_offsets), std::span<const std::uint32_t>(soup.indices)));
+                                                                  std::span<const std::uint64_t>(soup.face_offsets),
+                                                                  std::span<const std::uint32_t>(soup.indices)));
         (bulk ? fast : repaired) += 1;
 
         auto new_mesh = used_mesh(), old_mesh = used_mesh();
         const auto before = state_of(new_mesh);
         auto soup_copy = soup;
         const auto got = hmira::io::build_from_soup<halfedge_mesh>(new_mesh, std::move(soup), "f.ply", options);
-        const auto want = hmira::io::detail::build_with_repair<halfedge_mesh>(old_mesh, std::move(soup_copy), "f.ply", options);
+        const auto want =
+            hmira::io::detail::build_with_repair<halfedge_mesh>(old_mesh, std::move(soup_copy), "f.ply", options);
         ASSERT_EQ(got.has_value(), want.has_value());
         if (!want) {
             EXPECT_EQ(got.error().code, want.error().code);
@@ -215,7 +235,8 @@ TEST(clean_read_fast_path, gives_the_repair_paths_mesh_report_and_errors_on_rand
             continue;
         }
         if (bulk) {
-            EXPECT_TRUE(want->repair.clean()) << "the fast path took a soup that repair changes: " << want->repair.summary();
+            EXPECT_TRUE(want->repair.clean())
+                << "the fast path took a soup that repair changes: " << want->repair.summary();
         }
         EXPECT_EQ(report_text(*got), report_text(*want));
         EXPECT_TRUE(state_of(new_mesh) == state_of(old_mesh)) << "the fast path built a different mesh";
@@ -265,12 +286,15 @@ std::string ascii_ply(const polygon_soup& s) {
     std::ostringstream o;
     o.precision(17);
     const bool normals = !s.attributes.normals.empty();
-    o << "ply\nformat ascii 1.0\nelement vertex " << s.points.size() << "\nproperty double x\nproperty double y\nproperty double z\n";
+    o << "ply\nformat ascii 1.0\nelement vertex " << s.points.size()
+      << "\nproperty double x\nproperty double y\nproperty double z\n";
     if (normals) o << "property float nx\nproperty float ny\nproperty float nz\n";
     o << "element face " << s.face_count() << "\nproperty list uchar int vertex_indices\nend_header\n";
     for (std::size_t v = 0; v < s.points.size(); ++v) {
         o << s.points[v][0] << ' ' << s.points[v][1] << ' ' << s.points[v][2];
-        if (normals) o << ' ' << s.attributes.normals[v][0] << ' ' << s.attributes.normals[v][1] << ' ' << s.attributes.normals[v][2];
+        if (normals)
+            o << ' ' << s.attributes.normals[v][0] << ' ' << s.attributes.normals[v][1] << ' '
+              << s.attributes.normals[v][2];
         o << '\n';
     }
     for (std::size_t f = 0; f < s.face_count(); ++f) {
@@ -292,9 +316,11 @@ TEST(clean_read_fast_path, ply_files_read_as_through_the_repair_path_clean_or_no
         auto soup = random_surface(rng, rng() % 2 == 0);
         damage(soup, d, rng);
         if (rng() % 2)
-            for (std::size_t v = 0; v < soup.points.size(); ++v) soup.attributes.normals.push_back({0.25f, static_cast<float>(v), 1.0f});
+            for (std::size_t v = 0; v < soup.points.size(); ++v)
+                soup.attributes.normals.push_back({0.25f, static_cast<float>(v), 1.0f});
         const hmira::io::read_options options{.repair = rng() % 4 != 0};
-        SCOPED_TRACE(::testing::Message() << "round " << round << ", defect " << static_cast<int>(d) << ", repair " << options.repair);
+        SCOPED_TRACE(::testing::Message()
+                     << "round " << round << ", defect " << static_cast<int>(d) << ", repair " << options.repair);
         const auto file = dir / "r.ply";
         hmira_test::write_bytes(file, ascii_ply(soup));
         auto read = used_mesh(), built = used_mesh();
@@ -307,7 +333,8 @@ TEST(clean_read_fast_path, ply_files_read_as_through_the_repair_path_clean_or_no
             EXPECT_TRUE(state_of(read) == before) << "a refused read changed the mesh";
             continue;
         }
-        const auto want = hmira::io::detail::build_with_repair<halfedge_mesh>(built, std::move(*parsed), file.string(), options);
+        const auto want =
+            hmira::io::detail::build_with_repair<halfedge_mesh>(built, std::move(*parsed), file.string(), options);
         ASSERT_EQ(got.has_value(), want.has_value());
         if (!want) {
             EXPECT_EQ(got.error().code, want.error().code);

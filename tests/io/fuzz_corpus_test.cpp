@@ -37,7 +37,8 @@ void replay(const char* folder, hmira::io::file_format format) {
         if (!e.is_regular_file()) continue;
         std::ifstream in(e.path(), std::ios::binary);
         const std::string bytes((std::istreambuf_iterator<char>(in)), {});
-        EXPECT_EQ(hmira_fuzz::one_input(format, reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size()), "") << e.path();
+        EXPECT_EQ(hmira_fuzz::one_input(format, reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size()), "")
+            << e.path();
         ++files;
     }
     EXPECT_GE(files, 5u) << "the corpus for " << folder << " is nearly empty";

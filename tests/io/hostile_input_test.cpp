@@ -53,8 +53,9 @@ TEST(io_hostile, binary_ply_vertex_element_without_properties_is_rejected) {
     const std::string body = std::string("\003\000\000\000\000\001\000\000\000\002\000\000\000", 13);
     for (const char* format : {"binary_little_endian", "binary_big_endian"}) {
         SCOPED_TRACE(format);
-        const std::string ply = std::string("ply\nformat ") + format +
-                                " 1.0\nelement vertex 3\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n" + body;
+        const std::string ply =
+            std::string("ply\nformat ") + format +
+            " 1.0\nelement vertex 3\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n" + body;
         const auto msg = rejection("noprops.ply", ply);
         EXPECT_TRUE(contains(msg, "noprops.ply:3")) << msg;
         EXPECT_TRUE(contains(msg, "no x, y and z")) << msg;
@@ -64,11 +65,14 @@ TEST(io_hostile, binary_ply_vertex_element_without_properties_is_rejected) {
 // ---- colours that are no colours ----------------------------------------------------------------
 const std::string ply_ascii_colour_head =
     "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
-    "property uchar red\nproperty uchar green\nproperty uchar blue\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n";
+    "property uchar red\nproperty uchar green\nproperty uchar blue\nelement face 1\nproperty list uchar int "
+    "vertex_indices\nend_header\n";
 
 TEST(io_hostile, nan_and_out_of_range_colours_are_rejected_with_their_line) {
     const std::string tri_faces = "3 0 1 2\n";
-    auto coff = [&](const std::string& second) { return "COFF\n3 1 0\n0 0 0 255 0 0 255\n" + second + "\n0 1 0 0 0 255 255\n" + tri_faces; };
+    auto coff = [&](const std::string& second) {
+        return "COFF\n3 1 0\n0 0 0 255 0 0 255\n" + second + "\n0 1 0 0 0 255 255\n" + tri_faces;
+    };
     auto msg = rejection("nan.off", coff("1 0 0 nan 0 0 255"));
     EXPECT_TRUE(contains(msg, "nan.off:4: colour of vertex 1")) << msg;
     EXPECT_TRUE(contains(msg, "is nan")) << msg;
@@ -84,8 +88,10 @@ TEST(io_hostile, nan_and_out_of_range_colours_are_rejected_with_their_line) {
     msg = rejection("big.ply", ply_ascii_colour_head + "0 0 0 255 0 0\n1 0 0 0 256 0\n0 1 0 0 0 255\n" + tri_faces);
     EXPECT_TRUE(contains(msg, "big.ply:14: vertex 1: colour channel green is 256, outside 0..255")) << msg;
     // A binary short channel can hold 300 as well.
-    std::string bin = "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
-                      "property short red\nproperty short green\nproperty short blue\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n";
+    std::string bin =
+        "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+        "property short red\nproperty short green\nproperty short blue\nelement face 1\nproperty list uchar int "
+        "vertex_indices\nend_header\n";
     const auto header_size = bin.size();
     for (int v = 0; v < 3; ++v) {
         const float p[3] = {float(v == 1), float(v == 2), 0};
@@ -96,13 +102,16 @@ TEST(io_hostile, nan_and_out_of_range_colours_are_rejected_with_their_line) {
     const std::int32_t idx[3] = {0, 1, 2};
     bin.append(reinterpret_cast<const char*>(&k), 1).append(reinterpret_cast<const char*>(idx), 12);
     msg = rejection("short.ply", bin);
-    EXPECT_TRUE(contains(msg, "short.ply: byte offset " + std::to_string(header_size + 2 * 18 + 12) + ": vertex 2: colour channel red is 300")) << msg;
+    EXPECT_TRUE(contains(msg, "short.ply: byte offset " + std::to_string(header_size + 2 * 18 + 12) +
+                                  ": vertex 2: colour channel red is 300"))
+        << msg;
 }
 
 // ---- list properties where single values belong -------------------------------------------------
 TEST(io_hostile, ascii_ply_with_a_list_coordinate_is_rejected_like_binary) {
-    const std::string head = "element vertex 3\nproperty list uchar float x\nproperty float y\nproperty float z\n"
-                             "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
+    const std::string head =
+        "element vertex 3\nproperty list uchar float x\nproperty float y\nproperty float z\n"
+        "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
     auto msg = rejection("list.ply", "ply\nformat ascii 1.0\n" + head + "1 5 0 0\n1 6 0 0\n1 7 1 0\n3 0 1 2\n");
     EXPECT_TRUE(contains(msg, "list.ply:3: vertex property x is a list")) << msg;
     msg = rejection("listb.ply", "ply\nformat binary_little_endian 1.0\n" + head);
@@ -119,14 +128,26 @@ TEST(io_hostile, non_finite_coordinates_and_normals_are_rejected_in_every_format
         {"a.obj", "v 0 0 0\nv 1 nan 0\nv 0 1 0\nf 1 2 3\n", "a.obj:2: vertex 2 has a coordinate that is not finite"},
         {"b.obj", "v 0 0 0\nv 1 0 0\nv 0 1 inf\nf 1 2 3\n", "b.obj:3: vertex 3"},
         {"c.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 -inf\nf 1//1 2//1 3//1\n", "c.obj:4: normal 1 is not finite"},
-        {"d.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 -inf\n" + tri, "d.off:5: vertex 2 has a coordinate that is not finite"},
-        {"e.off", "NOFF\n3 1 0\n0 0 0 0 0 1\n1 0 0 0 nan 1\n0 1 0 0 0 1\n" + tri, "e.off:4: normal of vertex 1 is not finite"},
-        {"f.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face 1\n"
-                  "property list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 nan 0\n" + tri, "f.ply:12: vertex 2 has a coordinate"},
-        {"g.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nproperty float nx\n"
-                  "property float ny\nproperty float nz\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
-                  "0 0 0 0 0 1\n1 0 0 inf 0 1\n0 1 0 0 0 1\n" + tri, "g.ply:14: normal of vertex 1"},
-        {"h.stl", "solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 nan\nvertex 0 1 0\nendloop\nendfacet\nendsolid x\n",
+        {"d.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 -inf\n" + tri,
+         "d.off:5: vertex 2 has a coordinate that is not finite"},
+        {"e.off", "NOFF\n3 1 0\n0 0 0 0 0 1\n1 0 0 0 nan 1\n0 1 0 0 0 1\n" + tri,
+         "e.off:4: normal of vertex 1 is not finite"},
+        {"f.ply",
+         "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face "
+         "1\n"
+         "property list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 nan 0\n" +
+             tri,
+         "f.ply:12: vertex 2 has a coordinate"},
+        {"g.ply",
+         "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nproperty "
+         "float nx\n"
+         "property float ny\nproperty float nz\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+         "0 0 0 0 0 1\n1 0 0 inf 0 1\n0 1 0 0 0 1\n" +
+             tri,
+         "g.ply:14: normal of vertex 1"},
+        {"h.stl",
+         "solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 nan\nvertex 0 1 "
+         "0\nendloop\nendfacet\nendsolid x\n",
          "h.stl:5: facet 0 has a vertex coordinate that is not finite"},
     };
     for (const auto& k : cases) {
@@ -149,7 +170,9 @@ TEST(io_hostile, non_finite_coordinates_and_normals_are_rejected_in_every_format
                                                                   : std::string("\x7f\xf8\x00\x00\x00\x00\x00\x00", 8);
         bytes.replace(y, nan.size(), nan);
         const auto msg = rejection("i.ply", bytes);
-        EXPECT_TRUE(contains(msg, "i.ply: byte offset " + std::to_string(bytes.find("end_header\n") + 11 + 5 * stride) + ": vertex 5 is not finite")) << msg;
+        EXPECT_TRUE(contains(msg, "i.ply: byte offset " + std::to_string(bytes.find("end_header\n") + 11 + 5 * stride) +
+                                      ": vertex 5 is not finite"))
+            << msg;
     }
     {
         face_vertex_mesh tetra;

@@ -25,7 +25,8 @@ class scratch_dir {
 public:
     scratch_dir() {
         const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        std::string name = std::string("hmira-io-") + std::to_string(::getpid()) + "-" + (info ? info->test_suite_name() : "x") + "-" + (info ? info->name() : "y");
+        std::string name = std::string("hmira-io-") + std::to_string(::getpid()) + "-" +
+                           (info ? info->test_suite_name() : "x") + "-" + (info ? info->name() : "y");
         std::replace(name.begin(), name.end(), '/', '_');
         path_ = std::filesystem::temp_directory_path() / name;
         std::filesystem::remove_all(path_);

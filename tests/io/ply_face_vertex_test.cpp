@@ -34,7 +34,8 @@ const std::vector<std::vector<std::uint32_t>> expected_faces{{0, 1, 2, 3}, {1, 4
 void expect_small_mesh(const face_vertex_mesh& m) {
     ASSERT_EQ(m.vertex_count(), expected_points.size());
     ASSERT_EQ(m.face_count(), expected_faces.size());
-    for (std::uint32_t i = 0; i < expected_points.size(); ++i) EXPECT_EQ(m.position(hmira::vertex_handle(i)), expected_points[i]) << "vertex " << i;
+    for (std::uint32_t i = 0; i < expected_points.size(); ++i)
+        EXPECT_EQ(m.position(hmira::vertex_handle(i)), expected_points[i]) << "vertex " << i;
     for (std::uint32_t f = 0; f < expected_faces.size(); ++f) {
         std::vector<std::uint32_t> got;
         for (auto v : m.face_vertices(hmira::face_handle(f))) got.push_back(v.index);
@@ -58,7 +59,8 @@ TEST(ply_into_face_vertex_mesh, every_encoding_reads_back_the_file_exactly) {
     EXPECT_EQ(r->file_vertices, 5u);
     EXPECT_EQ(r->attributes.colors.size(), 5u);
     expect_small_mesh(m);
-    for (auto encoding : {io::ply_encoding::binary_little_endian, io::ply_encoding::binary_big_endian, io::ply_encoding::ascii}) {
+    for (auto encoding :
+         {io::ply_encoding::binary_little_endian, io::ply_encoding::binary_big_endian, io::ply_encoding::ascii}) {
         const auto path = dir / "again.ply";
         ASSERT_TRUE(io::write_mesh(m, path, {.ply = encoding, .ply_coordinates = io::ply_scalar::float64}));
         face_vertex_mesh again;
@@ -102,7 +104,8 @@ TEST(ply_into_face_vertex_mesh, a_face_the_mesh_refuses_leaves_the_mesh_unchange
             // patch the binary file of the good mesh instead (last index of the last face).
             face_vertex_mesh good;
             ASSERT_TRUE(io::read_mesh(good, dir / "small.ply"));
-            ASSERT_TRUE(io::write_mesh(good, dir / "good_bin.ply", {.ply = encoding, .ply_coordinates = io::ply_scalar::float64}));
+            ASSERT_TRUE(io::write_mesh(good, dir / "good_bin.ply",
+                                       {.ply = encoding, .ply_coordinates = io::ply_scalar::float64}));
             std::string bytes = hmira_test::read_bytes(dir / "good_bin.ply");
             ASSERT_EQ(bytes.substr(bytes.size() - 4), std::string("\x02\x00\x00\x00", 4));
             bytes.replace(bytes.size() - 4, 4, std::string("\x04\x00\x00\x00", 4));

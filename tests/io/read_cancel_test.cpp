@@ -71,9 +71,9 @@ TEST(read_cancel, an_uncancelled_read_reports_rising_fractions_ending_at_one_and
         std::vector<double> seen;
         halfedge_mesh with, without;
         ASSERT_TRUE(io::read_mesh(with, dir / c.file, {.progress = [&](double f) {
-                                                           seen.push_back(f);
-                                                           return true;
-                                                       }}));
+                                      seen.push_back(f);
+                                      return true;
+                                  }}));
         ASSERT_TRUE(io::read_mesh(without, dir / c.file));
         ASSERT_FALSE(seen.empty());
         EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));

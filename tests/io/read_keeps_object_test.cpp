@@ -21,7 +21,8 @@
 namespace {
 
 std::filesystem::path write_file(const std::string& name, const std::string& text) {
-    const auto path = std::filesystem::temp_directory_path() / ("hmira_keeps_object_" + std::to_string(::getpid()) + "_" + name);
+    const auto path =
+        std::filesystem::temp_directory_path() / ("hmira_keeps_object_" + std::to_string(::getpid()) + "_" + name);
     std::ofstream(path) << text;
     return path;
 }

@@ -24,7 +24,8 @@ std::filesystem::path data_dir() {
 TEST(io_real_meshes, cgal_demo_meshes_read_with_the_counts_their_headers_give) {
     const auto dir = data_dir();
     if (dir.empty() || !std::filesystem::exists(dir / "elephant.off")) GTEST_SKIP() << "run scripts/test-data.sh first";
-    for (const char* name : {"elephant.off", "fandisk.off", "cube_quad.off", "colored_tetra.ply", "sphere.ply", "sphere.stl", "pig.stl"}) {
+    for (const char* name :
+         {"elephant.off", "fandisk.off", "cube_quad.off", "colored_tetra.ply", "sphere.ply", "sphere.stl", "pig.stl"}) {
         SCOPED_TRACE(name);
         if (!std::filesystem::exists(dir / name)) continue;
         face_vertex_mesh m;

@@ -25,9 +25,9 @@ struct format_case {
     const char* name;
     const char* extension;
     io::write_options options;
-    bool exact;        // coordinates come back bit for bit
-    bool polygons;     // polygons stay polygons (STL triangulates)
-    bool attributes;   // normals and colours survive
+    bool exact;       // coordinates come back bit for bit
+    bool polygons;    // polygons stay polygons (STL triangulates)
+    bool attributes;  // normals and colours survive
 };
 
 std::vector<format_case> all_formats() {
@@ -80,15 +80,18 @@ void check_round_trip(const M& original, const format_case& fc, const std::strin
         EXPECT_EQ(hmira_test::positions(back), hmira_test::positions(original));
         EXPECT_EQ(hmira_test::canonical_faces(back), hmira_test::canonical_faces(original));
     } else {
-        EXPECT_EQ(default_traits<M>::vertex_count(back), default_traits<M>::vertex_count(original));  // welded back to shared vertices
+        EXPECT_EQ(default_traits<M>::vertex_count(back),
+                  default_traits<M>::vertex_count(original));  // welded back to shared vertices
     }
     auto round = fc.exact ? hmira_test::exact : hmira_test::to_float;
-    EXPECT_EQ(hmira_test::geometric_faces(back, round, !fc.polygons), hmira_test::geometric_faces(original, round, !fc.polygons));
+    EXPECT_EQ(hmira_test::geometric_faces(back, round, !fc.polygons),
+              hmira_test::geometric_faces(original, round, !fc.polygons));
     EXPECT_EQ(dir.files(), std::vector<std::string>{path.filename().string()}) << "a temporary file was left behind";
 }
 
 TYPED_TEST(io_round_trip, write_then_read_gives_the_same_mesh_in_every_format) {
-    const auto shapes = std::vector<std::pair<std::string, hmira_test::face_list>>{{"torus", jittered_torus()}, {"open mixed", open_mixed()}};
+    const auto shapes = std::vector<std::pair<std::string, hmira_test::face_list>>{{"torus", jittered_torus()},
+                                                                                   {"open mixed", open_mixed()}};
     for (const auto& fc : all_formats()) {
         for (const auto& [label, shape] : shapes) {
             TypeParam m;
@@ -109,7 +112,8 @@ TYPED_TEST(io_round_trip, polygons_stay_polygons_and_stl_welds_to_a_closed_mesh)
         ASSERT_TRUE(io::write_mesh(cube, dir / (std::string("c") + ext)));
         TypeParam back;
         ASSERT_TRUE(io::read_mesh(back, dir / (std::string("c") + ext)));
-        for (auto f : default_traits<TypeParam>::faces(back)) EXPECT_EQ(std::ranges::distance(default_traits<TypeParam>::face_vertices(back, f)), 4) << ext;
+        for (auto f : default_traits<TypeParam>::faces(back))
+            EXPECT_EQ(std::ranges::distance(default_traits<TypeParam>::face_vertices(back, f)), 4) << ext;
     }
     ASSERT_TRUE(io::write_mesh(cube, dir / "c.stl"));
     TypeParam back;
@@ -184,7 +188,10 @@ TEST(io_obj, negative_indices_mean_the_same_faces_as_positive_ones) {
 }
 
 TEST(io_obj, texture_and_normal_references_and_other_records_are_accepted) {
-    auto s = io::parse_obj("# c\r\nmtllib x.mtl\r\no thing\r\nv 0 0 0\r\nv 1 0 0\r\nv 0 1 0\r\nvt 0 0\r\nvn 0 0 1\r\ng g\r\ns off\r\nusemtl m\r\nf 1/1/1 2/1/1 3/1/1 # tri\r\nl 1 2\r\n", "x.obj");
+    auto s = io::parse_obj(
+        "# c\r\nmtllib x.mtl\r\no thing\r\nv 0 0 0\r\nv 1 0 0\r\nv 0 1 0\r\nvt 0 0\r\nvn 0 0 1\r\ng g\r\ns "
+        "off\r\nusemtl m\r\nf 1/1/1 2/1/1 3/1/1 # tri\r\nl 1 2\r\n",
+        "x.obj");
     ASSERT_TRUE(s) << s.error().message;
     EXPECT_EQ(s->face_count(), 1u);
     ASSERT_EQ(s->attributes.normals.size(), 3u);
@@ -193,10 +200,15 @@ TEST(io_obj, texture_and_normal_references_and_other_records_are_accepted) {
 
 TEST(io_ply, big_endian_bytes_built_by_hand_read_as_the_same_numbers) {
     // Independent of the writer: the bytes of a big-endian file assembled here.
-    std::string f = "ply\nformat binary_big_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty double z\n"
-                    "element face 1\nproperty list uchar uint vertex_indices\nend_header\n";
-    auto be32 = [&](std::uint32_t u) { for (int s = 24; s >= 0; s -= 8) f += char((u >> s) & 0xff); };
-    auto be64 = [&](std::uint64_t u) { for (int s = 56; s >= 0; s -= 8) f += char((u >> s) & 0xff); };
+    std::string f =
+        "ply\nformat binary_big_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty double z\n"
+        "element face 1\nproperty list uchar uint vertex_indices\nend_header\n";
+    auto be32 = [&](std::uint32_t u) {
+        for (int s = 24; s >= 0; s -= 8) f += char((u >> s) & 0xff);
+    };
+    auto be64 = [&](std::uint64_t u) {
+        for (int s = 56; s >= 0; s -= 8) f += char((u >> s) & 0xff);
+    };
     const double zs[3] = {0.1, -2.5, 1e300};
     for (int i = 0; i < 3; ++i) {
         be32(std::bit_cast<std::uint32_t>(float(i) + 0.5f));
@@ -208,23 +220,29 @@ TEST(io_ply, big_endian_bytes_built_by_hand_read_as_the_same_numbers) {
     auto s = io::parse_ply(f, "be.ply");
     ASSERT_TRUE(s) << s.error().message;
     ASSERT_EQ(s->points.size(), 3u);
-    for (int i = 0; i < 3; ++i) EXPECT_EQ(s->points[std::size_t(i)], (std::array<double, 3>{i + 0.5, -double(i), zs[i]}));
+    for (int i = 0; i < 3; ++i)
+        EXPECT_EQ(s->points[std::size_t(i)], (std::array<double, 3>{i + 0.5, -double(i), zs[i]}));
     EXPECT_EQ(s->indices, (std::vector<std::uint32_t>{2, 0, 1}));
 }
 
 TEST(io_ply, unknown_elements_and_properties_are_skipped) {
-    const std::string f = "ply\nformat ascii 1.0\ncomment hi\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nproperty float quality\n"
-                          "element face 1\nproperty uchar flags\nproperty list uchar int vertex_indices\nproperty list uchar float texcoord\n"
-                          "element edge 1\nproperty int vertex1\nproperty int vertex2\nend_header\n"
-                          "0 0 0 9\n1 0 0 9\n0 1 0 9\n7 3 0 1 2 2 0.5 0.5\n0 1\n";
+    const std::string f =
+        "ply\nformat ascii 1.0\ncomment hi\nelement vertex 3\nproperty float x\nproperty float y\nproperty float "
+        "z\nproperty float quality\n"
+        "element face 1\nproperty uchar flags\nproperty list uchar int vertex_indices\nproperty list uchar float "
+        "texcoord\n"
+        "element edge 1\nproperty int vertex1\nproperty int vertex2\nend_header\n"
+        "0 0 0 9\n1 0 0 9\n0 1 0 9\n7 3 0 1 2 2 0.5 0.5\n0 1\n";
     auto s = io::parse_ply(f, "x.ply");
     ASSERT_TRUE(s) << s.error().message;
     EXPECT_EQ(s->indices, (std::vector<std::uint32_t>{0, 1, 2}));
 }
 
 TEST(io_stl, welding_uses_exact_equality_and_treats_minus_zero_as_zero) {
-    const std::string f = "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\n"
-                          "facet normal 0 0 1\nouter loop\nvertex -0 1 0\nvertex 1 0 0\nvertex 1 1.0000001 0\nendloop\nendfacet\nendsolid t\n";
+    const std::string f =
+        "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\n"
+        "facet normal 0 0 1\nouter loop\nvertex -0 1 0\nvertex 1 0 0\nvertex 1 1.0000001 "
+        "0\nendloop\nendfacet\nendsolid t\n";
     auto s = io::parse_stl(f, "t.stl");
     ASSERT_TRUE(s) << s.error().message;
     EXPECT_EQ(s->soup.points.size(), 4u);  // (-0,1,0) welds with (0,1,0); 1.0000001 does not weld with 1
@@ -233,8 +251,9 @@ TEST(io_stl, welding_uses_exact_equality_and_treats_minus_zero_as_zero) {
 }
 
 TEST(io_stl, triangles_that_weld_to_a_line_are_dropped_and_counted) {
-    const std::string f = "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\n"
-                          "facet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 0 0 0\nvertex 0 1 0\nendloop\nendfacet\nendsolid t\n";
+    const std::string f =
+        "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\n"
+        "facet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 0 0 0\nvertex 0 1 0\nendloop\nendfacet\nendsolid t\n";
     auto s = io::parse_stl(f, "t.stl");
     ASSERT_TRUE(s);
     EXPECT_EQ(s->soup.face_count(), 1u);

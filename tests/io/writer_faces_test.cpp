@@ -57,7 +57,8 @@ read_back read_stl_area(const std::filesystem::path& p) {
 /// itself (a fan from (0,0) covers 3.5).
 face_list l_shape() {
     face_list g;
-    for (auto [x, y] : {std::pair{0.0, 0.0}, {2.0, 0.0}, {2.0, 1.0}, {1.0, 1.0}, {1.0, 2.0}, {0.0, 2.0}}) g.points.push_back({x, y, 0});
+    for (auto [x, y] : {std::pair{0.0, 0.0}, {2.0, 0.0}, {2.0, 1.0}, {1.0, 1.0}, {1.0, 2.0}, {0.0, 2.0}})
+        g.points.push_back({x, y, 0});
     g.faces.push_back({0, 1, 2, 3, 4, 5});
     return g;
 }

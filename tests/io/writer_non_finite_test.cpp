@@ -48,7 +48,8 @@ TYPED_TEST(writer_non_finite, every_writer_refuses_a_non_finite_coordinate_namin
             EXPECT_NE(r.error().message.find("vertex 5 has a coordinate that is not finite"), std::string::npos)
                 << r.error().message;
             EXPECT_EQ(read_bytes(dir / file), "previous content");
-            EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir.path()), {}), files) << "a temporary was left";
+            EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir.path()), {}), files)
+                << "a temporary was left";
         }
         std::ostringstream stream;
         for (const auto& to : {io::write_obj_to(m, stream), io::write_off_to(m, stream), io::write_ply_to(m, stream),

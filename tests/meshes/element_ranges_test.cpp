@@ -30,8 +30,12 @@ concept mesh_view = std::ranges::forward_range<R> && std::ranges::view<R> && std
                     std::ranges::common_range<R> && std::ranges::forward_range<const R>;
 template <class R>
 concept composes = requires(R r) {
-    { r | std::views::transform([](auto x) { return x; }) } -> std::ranges::forward_range;
-    { r | std::views::filter([](auto) { return true; }) } -> std::ranges::forward_range;
+    {
+        r | std::views::transform([](auto x) { return x; })
+    } -> std::ranges::forward_range;
+    {
+        r | std::views::filter([](auto) { return true; })
+    } -> std::ranges::forward_range;
 };
 template <class R>
 concept good_range = mesh_view<R> && composes<R>;
@@ -54,7 +58,8 @@ constexpr bool circulators_are_views() {
            good_range<decltype(std::declval<cm>().adjacent_vertices(vertex_handle{}))> &&
            good_range<decltype(std::declval<cm>().vertex_edges(vertex_handle{}))> &&
            good_range<decltype(std::declval<cm>().vertex_faces(vertex_handle{}))> &&
-           std::same_as<std::ranges::range_value_t<decltype(std::declval<cm>().vertex_faces(vertex_handle{}))>, face_handle> &&
+           std::same_as<std::ranges::range_value_t<decltype(std::declval<cm>().vertex_faces(vertex_handle{}))>,
+                        face_handle> &&
            std::same_as<std::ranges::range_value_t<decltype(std::declval<cm>().halfedges())>, halfedge_handle>;
 }
 static_assert(circulators_are_views<halfedge_mesh>());
@@ -80,7 +85,9 @@ std::vector<std::uint32_t> indices(const auto& handles) {
 // anything else validate() finds is a defect.
 ::testing::AssertionResult valid_after_removal(const face_vertex_mesh& m) {
     auto ps = validate(m, {.relaxed = true});
-    std::erase_if(ps, [](const mesh_problem& p) { return p.kind == problem_kind::non_manifold_vertex && p.message.find("separate fans") != std::string::npos; });
+    std::erase_if(ps, [](const mesh_problem& p) {
+        return p.kind == problem_kind::non_manifold_vertex && p.message.find("separate fans") != std::string::npos;
+    });
     if (ps.empty()) return ::testing::AssertionSuccess();
     return ::testing::AssertionFailure() << hmira_test::describe(ps);
 }
@@ -193,7 +200,8 @@ TYPED_TEST(circulators, halfedges_are_both_sides_of_the_live_edges) {
 // stored halfedge is a boundary one, so the filter must skip the circulation's start).
 TYPED_TEST(circulators, vertex_faces_are_the_faces_that_use_the_vertex) {
     using M = TypeParam;
-    const auto g = hmira_test::without_faces(hmira_test::grid(6, 6), [](std::size_t f) { return f == 8 || f == 22 || f == 23; });
+    const auto g =
+        hmira_test::without_faces(hmira_test::grid(6, 6), [](std::size_t f) { return f == 8 || f == 22 || f == 23; });
     M m;
     ASSERT_TRUE(hmira_test::add_face_list(m, g));
     ASSERT_TRUE(hmira_test::is_valid(m));
@@ -226,7 +234,8 @@ TYPED_TEST(circulators, vertex_faces_are_the_faces_that_use_the_vertex) {
 
 TEST(circulators_winged_edge, adjacent_faces_are_the_faces_across_each_edge) {
     // Two square holes (both triangles of quads 6 and 13) that share no vertex.
-    const auto g = hmira_test::without_faces(hmira_test::grid(5, 4, true), [](std::size_t f) { return f / 2 == 6 || f / 2 == 13; });
+    const auto g = hmira_test::without_faces(hmira_test::grid(5, 4, true),
+                                             [](std::size_t f) { return f / 2 == 6 || f / 2 == 13; });
     winged_edge_mesh m;
     ASSERT_TRUE(hmira_test::add_face_list(m, g));
     ASSERT_TRUE(hmira_test::is_valid(m));

@@ -82,7 +82,8 @@ TEST(face_vertex_mesh, collect_garbage_compacts_faces_vertices_and_properties) {
 
 TEST(face_vertex_mesh, reverse_face_reverses_the_vertex_order) {
     face_vertex_mesh m;
-    const auto a = m.add_vertex({0, 0, 0}), b = m.add_vertex({1, 0, 0}), c = m.add_vertex({0, 1, 0}), d = m.add_vertex({1, 1, 0});
+    const auto a = m.add_vertex({0, 0, 0}), b = m.add_vertex({1, 0, 0}), c = m.add_vertex({0, 1, 0}),
+               d = m.add_vertex({1, 1, 0});
     auto f = m.add_face({a, b, d, c});
     ASSERT_TRUE(f);
     m.reverse_face(*f);
@@ -130,7 +131,8 @@ TEST(face_vertex_mesh_assign, indexed_polygons_become_the_faces_in_order) {
     // The same as building face by face.
     face_vertex_mesh built;
     for (const auto& q : points) built.add_vertex({q[0], q[1], q[2]});
-    ASSERT_TRUE(built.add_face({hmira::vertex_handle(0u), hmira::vertex_handle(1u), hmira::vertex_handle(2u), hmira::vertex_handle(3u)}));
+    ASSERT_TRUE(built.add_face(
+        {hmira::vertex_handle(0u), hmira::vertex_handle(1u), hmira::vertex_handle(2u), hmira::vertex_handle(3u)}));
     ASSERT_TRUE(built.add_face({hmira::vertex_handle(1u), hmira::vertex_handle(4u), hmira::vertex_handle(2u)}));
     for (auto f : built.faces()) {
         auto a = built.face_vertices(f), b = m.face_vertices(f);

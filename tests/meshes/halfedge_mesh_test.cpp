@@ -38,7 +38,9 @@ snapshot snap(const halfedge_mesh& m) {
 // arrive (a pinch, reported as non_manifold_vertex); everything else must be valid at every step.
 ::testing::AssertionResult valid_but_maybe_pinched(const halfedge_mesh& m) {
     auto ps = validate(m, {.relaxed = true, .check_geometry = false});
-    std::erase_if(ps, [](const mesh_problem& p) { return p.kind == problem_kind::non_manifold_vertex && p.message.find("separate fans") != std::string::npos; });
+    std::erase_if(ps, [](const mesh_problem& p) {
+        return p.kind == problem_kind::non_manifold_vertex && p.message.find("separate fans") != std::string::npos;
+    });
     if (ps.empty()) return ::testing::AssertionSuccess();
     return ::testing::AssertionFailure() << hmira_test::describe(ps);
 }
@@ -56,8 +58,10 @@ void add_in_order(halfedge_mesh& m, const hmira_test::face_list& g, const std::v
 }
 
 TEST(halfedge_mesh, faces_added_in_any_order_build_the_same_valid_surface) {
-    const std::vector<hmira_test::face_list> shapes{hmira_test::grid(7, 5, true), hmira_test::grid(6, 6), hmira_test::torus(8, 6),
-                                                    hmira_test::without_faces(hmira_test::grid(9, 9, true), [](std::size_t f) { return (f / 2) % 9 % 3 == 1 && (f / 2) / 9 % 3 == 1; })};
+    const std::vector<hmira_test::face_list> shapes{
+        hmira_test::grid(7, 5, true), hmira_test::grid(6, 6), hmira_test::torus(8, 6),
+        hmira_test::without_faces(hmira_test::grid(9, 9, true),
+                                  [](std::size_t f) { return (f / 2) % 9 % 3 == 1 && (f / 2) / 9 % 3 == 1; })};
     std::mt19937 rng(12345);
     for (const auto& g : shapes) {
         for (int trial = 0; trial < 12; ++trial) {
@@ -95,14 +99,17 @@ TEST(halfedge_mesh, refused_faces_leave_the_mesh_unchanged) {
     ASSERT_TRUE(hmira_test::add_face_list(m, g, &v));
     const auto extra = m.add_vertex({5, 5, 5});
     const auto before = snap(m);
-    struct bad_case { std::vector<vertex_handle> face; errc code; };
+    struct bad_case {
+        std::vector<vertex_handle> face;
+        errc code;
+    };
     const std::vector<bad_case> cases{
-        {{v[0], v[1]}, errc::degenerate_face},                             // too few
-        {{v[0], v[1], v[0]}, errc::degenerate_face},                       // repeated
-        {{v[0], v[1], vertex_handle(999u)}, errc::invalid_handle},         // missing vertex
-        {{v[0], v[1], v[5], v[4]}, errc::orientation_conflict},            // same direction as an existing face
-        {{v[5], extra, v[6]}, errc::non_manifold},                         // v[5] is interior
-        {{v[1], v[0], extra}, errc::non_manifold},                         // edge 0-1 side taken? no: 1->0 is boundary
+        {{v[0], v[1]}, errc::degenerate_face},                      // too few
+        {{v[0], v[1], v[0]}, errc::degenerate_face},                // repeated
+        {{v[0], v[1], vertex_handle(999u)}, errc::invalid_handle},  // missing vertex
+        {{v[0], v[1], v[5], v[4]}, errc::orientation_conflict},     // same direction as an existing face
+        {{v[5], extra, v[6]}, errc::non_manifold},                  // v[5] is interior
+        {{v[1], v[0], extra}, errc::non_manifold},                  // edge 0-1 side taken? no: 1->0 is boundary
     };
     for (std::size_t i = 0; i + 1 < cases.size(); ++i) {
         auto r = m.add_face(cases[i].face);
@@ -135,7 +142,8 @@ TEST(halfedge_mesh, random_face_soups_never_break_the_mesh) {
     for (int trial = 0; trial < 300; ++trial) {
         halfedge_mesh m;
         std::vector<vertex_handle> v;
-        for (int i = 0; i < 12; ++i) v.push_back(m.add_vertex({double(rng() % 100), double(rng() % 100), double(rng() % 100)}));
+        for (int i = 0; i < 12; ++i)
+            v.push_back(m.add_vertex({double(rng() % 100), double(rng() % 100), double(rng() % 100)}));
         for (int k = 0; k < 60; ++k) {
             const auto a = v[rng() % 12], b = v[rng() % 12], c = v[rng() % 12];
             const auto before = snap(m);

@@ -61,8 +61,8 @@ void soups_agree_with_their_rotations(unsigned seed, int vertices, std::size_t m
             const auto before_a = hmira_test::snapshot(a), before_b = hmira_test::snapshot(b);
             const auto ra = a.add_face(fa);
             const auto rb = b.add_face(fb);
-            ASSERT_EQ(bool(ra), bool(rb)) << "trial " << trial << " step " << step << " n " << n << " rotation " << k << ": "
-                                          << (ra ? rb.error().message : ra.error().message);
+            ASSERT_EQ(bool(ra), bool(rb)) << "trial " << trial << " step " << step << " n " << n << " rotation " << k
+                                          << ": " << (ra ? rb.error().message : ra.error().message);
             if (!ra) {
                 ++refused;
                 EXPECT_FALSE(ra.error().message.empty());

@@ -52,7 +52,8 @@ struct bounds {
     bool operator==(const bounds&) const = default;
 };
 bounds bounds_of(const halfedge_mesh& m) {
-    return {m.vertex_index_bound(), m.edge_index_bound(), m.face_index_bound(), m.free_vertex_slots(), m.free_edge_slots(), m.free_face_slots()};
+    return {m.vertex_index_bound(), m.edge_index_bound(), m.face_index_bound(),
+            m.free_vertex_slots(),  m.free_edge_slots(),  m.free_face_slots()};
 }
 
 halfedge_mesh quad_grid(std::size_t n) {
@@ -253,8 +254,10 @@ TEST(slot_reuse, collect_garbage_after_reuse_keeps_the_surface_and_empties_the_f
         const auto [h0, h1] = diagonal(m, f);
         const auto r = make_edge_face(m, h0, h1);
         ASSERT_TRUE(r);
-        if (rng() % 2) ASSERT_TRUE(kill_edge_face(m, r->halfedge));
-        else kept.push_back(r->halfedge);
+        if (rng() % 2)
+            ASSERT_TRUE(kill_edge_face(m, r->halfedge));
+        else
+            kept.push_back(r->halfedge);
         const auto v = m.add_vertex({9, 9, 9});
         if (rng() % 2) m.erase_vertex(v);
         ASSERT_TRUE(hmira_test::is_valid(m, {.relaxed = true}));
@@ -328,7 +331,8 @@ TEST(slot_reuse, freed_slots_survive_reversal_and_moves_and_are_taken_last_freed
         const auto [h0, h1] = diagonal(moved, faces[2 * i]);
         const auto r = make_edge_face(moved, h0, h1);
         ASSERT_TRUE(r) << "reuse " << i;
-        EXPECT_EQ(halfedge_mesh::edge(r->halfedge).index, freed[freed.size() - 1 - i]) << "reuse " << i << ": last freed first";
+        EXPECT_EQ(halfedge_mesh::edge(r->halfedge).index, freed[freed.size() - 1 - i])
+            << "reuse " << i << ": last freed first";
         ASSERT_TRUE(hmira_test::is_valid(moved, {.relaxed = true})) << "reuse " << i;
     }
     const auto end = bounds_of(moved);

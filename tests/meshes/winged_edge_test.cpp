@@ -110,7 +110,8 @@ TEST(WingedEdge, a_rejected_face_leaves_the_mesh_unchanged) {
 
 TEST(WingedEdge, opposite_orientation_is_reported_as_a_conflict) {
     winged_edge_mesh m;
-    auto a = m.add_vertex({0, 0, 0}), b = m.add_vertex({1, 0, 0}), c = m.add_vertex({0, 1, 0}), d = m.add_vertex({1, 1, 0});
+    auto a = m.add_vertex({0, 0, 0}), b = m.add_vertex({1, 0, 0}), c = m.add_vertex({0, 1, 0}),
+         d = m.add_vertex({1, 1, 0});
     ASSERT_TRUE(m.add_face({a, b, c}));
     auto bad = m.add_face({b, c, d});  // runs b->c like the first face
     ASSERT_FALSE(bad);

@@ -61,7 +61,9 @@ double signed_volume(const M& mesh) {
             const auto& a = p[0];
             const auto& b = p[i];
             const auto& c = p[i + 1];
-            vol += (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) + a[2] * (b[0] * c[1] - b[1] * c[0])) / 6.0;
+            vol += (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
+                    a[2] * (b[0] * c[1] - b[1] * c[0])) /
+                   6.0;
         }
     }
     return vol;

@@ -40,8 +40,8 @@ inline run_result run_cli(const std::string& cli, const scratch_dir& dir, const 
                           const std::string& prefix = "", const std::string& wrapper = "") {
     const auto out = dir.path().parent_path() / (dir.path().filename().string() + ".stdout");
     const auto err = dir.path().parent_path() / (dir.path().filename().string() + ".stderr");
-    const std::string cmd = "cd '" + dir.path().string() + "' && " + prefix + " exec " + wrapper + " '" + cli + "' " + args +
-                            " >'" + out.string() + "' 2>'" + err.string() + "' </dev/null";
+    const std::string cmd = "cd '" + dir.path().string() + "' && " + prefix + " exec " + wrapper + " '" + cli + "' " +
+                            args + " >'" + out.string() + "' 2>'" + err.string() + "' </dev/null";
     const auto start = std::chrono::steady_clock::now();
     const int status = std::system(cmd.c_str());
     run_result r;
@@ -76,7 +76,8 @@ inline pid_t start_cli(const std::string& cli, const scratch_dir& dir, const std
 inline ::testing::AssertionResult one_line_error(const run_result& r, const std::string& part) {
     if (r.err.rfind("hmira: error: ", 0) != 0)
         return ::testing::AssertionFailure() << "no 'hmira: error: ' prefix: " << r.err;
-    if (std::count(r.err.begin(), r.err.end(), '\n') != 1) return ::testing::AssertionFailure() << "not one line: " << r.err;
+    if (std::count(r.err.begin(), r.err.end(), '\n') != 1)
+        return ::testing::AssertionFailure() << "not one line: " << r.err;
     if (r.err.find(part) == std::string::npos)
         return ::testing::AssertionFailure() << "'" << part << "' not in: " << r.err;
     return ::testing::AssertionSuccess();

@@ -34,13 +34,16 @@ using cgal_surface_mesh = CGAL::Surface_mesh<CGAL::Simple_cartesian<double>::Poi
 /// Every model hmira ships, plus the interop models when a test binary defines them.
 using all_models = ::testing::Types<hmira::face_vertex_mesh, hmira::halfedge_mesh
 #ifdef HMIRA_TEST_HAS_WINGED_EDGE
-                                    , hmira::winged_edge_mesh
+                                    ,
+                                    hmira::winged_edge_mesh
 #endif
 #ifdef HMIRA_TEST_WITH_OPENMESH
-                                    , openmesh_poly, openmesh_tri
+                                    ,
+                                    openmesh_poly, openmesh_tri
 #endif
 #ifdef HMIRA_TEST_WITH_CGAL
-                                    , cgal_surface_mesh
+                                    ,
+                                    cgal_surface_mesh
 #endif
                                     >;
 

@@ -43,8 +43,10 @@ inline face_list torus(std::size_t n, std::size_t m, double R = 2.0, double r = 
     face_list t;
     for (std::size_t i = 0; i < n; ++i)
         for (std::size_t j = 0; j < m; ++j) {
-            const double u = 2 * std::numbers::pi * double(i) / double(n), v = 2 * std::numbers::pi * double(j) / double(m);
-            t.points.push_back({(R + r * std::cos(v)) * std::cos(u), (R + r * std::cos(v)) * std::sin(u), r * std::sin(v)});
+            const double u = 2 * std::numbers::pi * double(i) / double(n),
+                         v = 2 * std::numbers::pi * double(j) / double(m);
+            t.points.push_back(
+                {(R + r * std::cos(v)) * std::cos(u), (R + r * std::cos(v)) * std::sin(u), r * std::sin(v)});
         }
     auto id = [&](std::size_t i, std::size_t j) { return (i % n) * m + (j % m); };
     for (std::size_t i = 0; i < n; ++i)

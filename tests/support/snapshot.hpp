@@ -38,8 +38,12 @@ mesh_snapshot snapshot(const M& m, bool face_corners = true) {
         s.data.push_back(-3);
     }
     if constexpr (hmira::halfedge_index_mesh<M, T> && hmira::edge_list_mesh<M, T>) {
-        auto hi = [&](typename T::halfedge_handle h) { return h == T::null_halfedge() ? -1LL : (long long)T::halfedge_index(m, h); };
-        auto fi = [&](typename T::face_handle f) { return f == T::null_face() ? -1LL : (long long)T::face_index(m, f); };
+        auto hi = [&](typename T::halfedge_handle h) {
+            return h == T::null_halfedge() ? -1LL : (long long)T::halfedge_index(m, h);
+        };
+        auto fi = [&](typename T::face_handle f) {
+            return f == T::null_face() ? -1LL : (long long)T::face_index(m, f);
+        };
         s.data.push_back((long long)T::edge_count(m));
         for (auto v : T::vertices(m)) s.data.push_back(hi(T::vertex_halfedge(m, v)));
         for (auto h : T::halfedges(m)) {

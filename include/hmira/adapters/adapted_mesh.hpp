@@ -25,23 +25,30 @@ namespace detail {
 // One tag per operation an adapter may provide; `test` says whether adapter A provides it.
 struct op_adjacent_vertices {
     template <class A, class M, class T>
-    static constexpr bool test = requires(const A& a, const M& m, typename T::vertex_handle v) { a.adjacent_vertices(m, v); };
+    static constexpr bool test =
+        requires(const A& a, const M& m, typename T::vertex_handle v) { a.adjacent_vertices(m, v); };
 };
 struct op_vertex_faces {
     template <class A, class M, class T>
-    static constexpr bool test = requires(const A& a, const M& m, typename T::vertex_handle v) { a.vertex_faces(m, v); };
+    static constexpr bool test =
+        requires(const A& a, const M& m, typename T::vertex_handle v) { a.vertex_faces(m, v); };
 };
 struct op_vertex_edges {
     template <class A, class M, class T>
-    static constexpr bool test = requires(const A& a, const M& m, typename T::vertex_handle v) { a.vertex_edges(m, v); };
+    static constexpr bool test =
+        requires(const A& a, const M& m, typename T::vertex_handle v) { a.vertex_edges(m, v); };
 };
 struct op_adjacent_faces {
     template <class A, class M, class T>
-    static constexpr bool test = requires(const A& a, const M& m, typename T::face_handle f) { a.adjacent_faces(m, f); };
+    static constexpr bool test =
+        requires(const A& a, const M& m, typename T::face_handle f) { a.adjacent_faces(m, f); };
 };
 struct op_edges {
     template <class A, class M, class T>
-    static constexpr bool test = requires(const A& a, const M& m) { a.edges(m); a.edge_count(m); };
+    static constexpr bool test = requires(const A& a, const M& m) {
+        a.edges(m);
+        a.edge_count(m);
+    };
 };
 struct op_reverse_face {
     template <class A, class M, class T>
@@ -78,7 +85,8 @@ struct adapted_edge_types<B, As...> {
     using edge_handle = typename first_edge_handle<As...>::type;
 };
 template <class B, class... As>
-    requires(!requires { typename first_edge_handle<As...>::type; } && requires { typename B::edge_handle; })
+    requires(
+        !requires { typename first_edge_handle<As...>::type; } && requires { typename B::edge_handle; })
 struct adapted_edge_types<B, As...> {
     using edge_handle = typename B::edge_handle;
 };
@@ -121,9 +129,13 @@ public:
     /// The held adapter of type A (ill-formed unless A occurs exactly once in Adapters). O(1).
     ///@{
     template <class A>
-    const A& adapter() const { return std::get<A>(adapters_); }
+    const A& adapter() const {
+        return std::get<A>(adapters_);
+    }
     template <class A>
-    A& adapter() { return std::get<A>(adapters_); }
+    A& adapter() {
+        return std::get<A>(adapters_);
+    }
     ///@}
 
     /// Position in Adapters of the first adapter that provides operation Op (a detail::op_*
@@ -136,9 +148,13 @@ public:
     /// The adapter that provides operation Op. Precondition: `provides<Op>`. O(1).
     ///@{
     template <class Op>
-    const auto& provider_of() const { return std::get<provider<Op>>(adapters_); }
+    const auto& provider_of() const {
+        return std::get<provider<Op>>(adapters_);
+    }
     template <class Op>
-    auto& provider_of() { return std::get<provider<Op>>(adapters_); }
+    auto& provider_of() {
+        return std::get<provider<Op>>(adapters_);
+    }
     ///@}
 
 private:
@@ -162,23 +178,65 @@ struct mesh_traits<adapted_mesh<Mesh, B, As...>> : detail::adapted_edge_types<B,
     static auto faces(const W& w) { return B::faces(w.base()); }
     static std::size_t vertex_count(const W& w) { return B::vertex_count(w.base()); }
     static std::size_t face_count(const W& w) { return B::face_count(w.base()); }
-    static std::size_t vertex_index(const W& w, vertex_handle v) requires vertex_index_mesh<M, B> { return B::vertex_index(w.base(), v); }
-    static std::size_t vertex_index_bound(const W& w) requires vertex_index_mesh<M, B> { return B::vertex_index_bound(w.base()); }
-    static std::size_t face_index(const W& w, face_handle f) requires face_index_mesh<M, B> { return B::face_index(w.base(), f); }
-    static std::size_t face_index_bound(const W& w) requires face_index_mesh<M, B> { return B::face_index_bound(w.base()); }
-    static auto face_vertices(const W& w, face_handle f) requires face_vertex_range_mesh<M, B> { return B::face_vertices(w.base(), f); }
+    static std::size_t vertex_index(const W& w, vertex_handle v)
+        requires vertex_index_mesh<M, B>
+    {
+        return B::vertex_index(w.base(), v);
+    }
+    static std::size_t vertex_index_bound(const W& w)
+        requires vertex_index_mesh<M, B>
+    {
+        return B::vertex_index_bound(w.base());
+    }
+    static std::size_t face_index(const W& w, face_handle f)
+        requires face_index_mesh<M, B>
+    {
+        return B::face_index(w.base(), f);
+    }
+    static std::size_t face_index_bound(const W& w)
+        requires face_index_mesh<M, B>
+    {
+        return B::face_index_bound(w.base());
+    }
+    static auto face_vertices(const W& w, face_handle f)
+        requires face_vertex_range_mesh<M, B>
+    {
+        return B::face_vertices(w.base(), f);
+    }
     static void face_vertices(const W&&, face_handle) = delete;
-    static decltype(auto) position(const W& w, vertex_handle v) requires positioned_mesh<M, B> { return B::position(w.base(), v); }
-    static void set_position(W& w, vertex_handle v, const vec3<scalar>& p) requires position_mutable_mesh<M, B> { B::set_position(w.base(), v, p); }
-    static vertex_handle add_vertex(W& w, const vec3<scalar>& p) requires mesh_builder<M, B> { return B::add_vertex(w.base(), p); }
-    static result<face_handle> add_face(W& w, std::span<const vertex_handle> vs) requires mesh_builder<M, B> { return B::add_face(w.base(), vs); }
-    static auto change_count(const W& w) requires change_counted_mesh<M, B> { return B::change_count(w.base()); }
+    static decltype(auto) position(const W& w, vertex_handle v)
+        requires positioned_mesh<M, B>
+    {
+        return B::position(w.base(), v);
+    }
+    static void set_position(W& w, vertex_handle v, const vec3<scalar>& p)
+        requires position_mutable_mesh<M, B>
+    {
+        B::set_position(w.base(), v, p);
+    }
+    static vertex_handle add_vertex(W& w, const vec3<scalar>& p)
+        requires mesh_builder<M, B>
+    {
+        return B::add_vertex(w.base(), p);
+    }
+    static result<face_handle> add_face(W& w, std::span<const vertex_handle> vs)
+        requires mesh_builder<M, B>
+    {
+        return B::add_face(w.base(), vs);
+    }
+    static auto change_count(const W& w)
+        requires change_counted_mesh<M, B>
+    {
+        return B::change_count(w.base());
+    }
 
     static void reverse_face(W& w, face_handle f)
         requires(W::template provides<detail::op_reverse_face> || face_reversible_mesh<M, B>)
     {
-        if constexpr (W::template provides<detail::op_reverse_face>) w.template provider_of<detail::op_reverse_face>().reverse_face(w.base(), f);
-        else B::reverse_face(w.base(), f);
+        if constexpr (W::template provides<detail::op_reverse_face>)
+            w.template provider_of<detail::op_reverse_face>().reverse_face(w.base(), f);
+        else
+            B::reverse_face(w.base(), f);
     }
 
     // ----- adapted, or forwarded when no adapter provides them ------------------------------------
@@ -187,7 +245,8 @@ struct mesh_traits<adapted_mesh<Mesh, B, As...>> : detail::adapted_edge_types<B,
     {
         if constexpr (W::template provides<detail::op_adjacent_vertices>)
             return w.template provider_of<detail::op_adjacent_vertices>().adjacent_vertices(w.base(), v);
-        else return B::adjacent_vertices(w.base(), v);
+        else
+            return B::adjacent_vertices(w.base(), v);
     }
     static void adjacent_vertices(const W&&, vertex_handle) = delete;
 
@@ -196,7 +255,8 @@ struct mesh_traits<adapted_mesh<Mesh, B, As...>> : detail::adapted_edge_types<B,
     {
         if constexpr (W::template provides<detail::op_vertex_faces>)
             return w.template provider_of<detail::op_vertex_faces>().vertex_faces(w.base(), v);
-        else return B::vertex_faces(w.base(), v);
+        else
+            return B::vertex_faces(w.base(), v);
     }
     static void vertex_faces(const W&&, vertex_handle) = delete;
 
@@ -205,7 +265,8 @@ struct mesh_traits<adapted_mesh<Mesh, B, As...>> : detail::adapted_edge_types<B,
     {
         if constexpr (W::template provides<detail::op_adjacent_faces>)
             return w.template provider_of<detail::op_adjacent_faces>().adjacent_faces(w.base(), f);
-        else return B::adjacent_faces(w.base(), f);
+        else
+            return B::adjacent_faces(w.base(), f);
     }
     static void adjacent_faces(const W&&, face_handle) = delete;
 
@@ -215,39 +276,46 @@ struct mesh_traits<adapted_mesh<Mesh, B, As...>> : detail::adapted_edge_types<B,
     {
         if constexpr (W::template provides<detail::op_vertex_edges>)
             return w.template provider_of<detail::op_vertex_edges>().vertex_edges(w.base(), v);
-        else return B::vertex_edges(w.base(), v);
+        else
+            return B::vertex_edges(w.base(), v);
     }
     static void vertex_edges(const W&&, vertex_handle) = delete;
 
     static decltype(auto) edges(const W& w)
         requires(W::template provides<detail::op_edges> || (!adapter_edges && edge_list_mesh<M, B>))
     {
-        if constexpr (W::template provides<detail::op_edges>) return w.template provider_of<detail::op_edges>().edges(w.base());
-        else return B::edges(w.base());
+        if constexpr (W::template provides<detail::op_edges>)
+            return w.template provider_of<detail::op_edges>().edges(w.base());
+        else
+            return B::edges(w.base());
     }
     static void edges(const W&&) = delete;
     static std::size_t edge_count(const W& w)
         requires(W::template provides<detail::op_edges> || (!adapter_edges && edge_list_mesh<M, B>))
     {
-        if constexpr (W::template provides<detail::op_edges>) return w.template provider_of<detail::op_edges>().edge_count(w.base());
-        else return B::edge_count(w.base());
+        if constexpr (W::template provides<detail::op_edges>)
+            return w.template provider_of<detail::op_edges>().edge_count(w.base());
+        else
+            return B::edge_count(w.base());
     }
     template <class E>
     static auto edge_vertices(const W& w, E e)
         requires(W::template provides<detail::op_edges> || (!adapter_edges && edge_list_mesh<M, B>))
     {
-        if constexpr (W::template provides<detail::op_edges>) return w.template provider_of<detail::op_edges>().edge_vertices(w.base(), e);
-        else return B::edge_vertices(w.base(), e);
+        if constexpr (W::template provides<detail::op_edges>)
+            return w.template provider_of<detail::op_edges>().edge_vertices(w.base(), e);
+        else
+            return B::edge_vertices(w.base(), e);
     }
 };
 
 /// Every adjacency of thesis table 4.3 by brute force: no memory, O(F_all) per query.
 template <class Mesh, class T = default_traits<Mesh>>
-using with_brute_force_adjacency =
-    adapted_mesh<Mesh, T, brute_force_vertex_adjacency<std::remove_const_t<Mesh>, T>,
-                 brute_force_vertex_face_adjacency<std::remove_const_t<Mesh>, T>,
-                 brute_force_vertex_edge_adjacency<std::remove_const_t<Mesh>, T>,
-                 brute_force_face_adjacency<std::remove_const_t<Mesh>, T>, brute_force_edge_list<std::remove_const_t<Mesh>, T>>;
+using with_brute_force_adjacency = adapted_mesh<Mesh, T, brute_force_vertex_adjacency<std::remove_const_t<Mesh>, T>,
+                                                brute_force_vertex_face_adjacency<std::remove_const_t<Mesh>, T>,
+                                                brute_force_vertex_edge_adjacency<std::remove_const_t<Mesh>, T>,
+                                                brute_force_face_adjacency<std::remove_const_t<Mesh>, T>,
+                                                brute_force_edge_list<std::remove_const_t<Mesh>, T>>;
 
 /// Every adjacency of thesis table 4.3 from indexes built once in O(C log C), then at the
 /// thesis's efficient cost per query; stale use throws hmira_error.
@@ -267,16 +335,22 @@ using with_adjacency = with_indexed_adjacency<Mesh, T>;
 /// `auto a = hmira::adapt_brute_force(mesh); algorithm(a);` (the mesh must outlive `a`).
 template <class Mesh, class T = default_traits<Mesh>>
     requires adapter_source_mesh<std::remove_const_t<Mesh>, T>
-with_brute_force_adjacency<Mesh, T> adapt_brute_force(Mesh& mesh) { return with_brute_force_adjacency<Mesh, T>(mesh); }
+with_brute_force_adjacency<Mesh, T> adapt_brute_force(Mesh& mesh) {
+    return with_brute_force_adjacency<Mesh, T>(mesh);
+}
 
 /// `auto a = hmira::adapt_indexed(mesh); algorithm(a);` Builds the indexes now, O(C log C).
 template <class Mesh, class T = default_traits<Mesh>>
     requires indexed_adapter_source_mesh<std::remove_const_t<Mesh>, T>
-with_indexed_adjacency<Mesh, T> adapt_indexed(Mesh& mesh) { return with_indexed_adjacency<Mesh, T>(mesh); }
+with_indexed_adjacency<Mesh, T> adapt_indexed(Mesh& mesh) {
+    return with_indexed_adjacency<Mesh, T>(mesh);
+}
 
 /// The default flavour (indexed).
 template <class Mesh, class T = default_traits<Mesh>>
     requires indexed_adapter_source_mesh<std::remove_const_t<Mesh>, T>
-with_adjacency<Mesh, T> adapt(Mesh& mesh) { return adapt_indexed<Mesh, T>(mesh); }
+with_adjacency<Mesh, T> adapt(Mesh& mesh) {
+    return adapt_indexed<Mesh, T>(mesh);
+}
 
 }  // namespace hmira

@@ -48,7 +48,8 @@ std::vector<vertex_pair_edge<typename T::vertex_handle>> derive_edges(const M& m
     for (auto f : T::faces(m))
         detail::for_each_side<M, T>(m, f, [&](V x, V y) {
             const auto e = make_vertex_pair_edge<M, T>(m, x, y);
-            sides.push_back({(std::uint64_t(T::vertex_index(m, e.a)) << 32) | std::uint64_t(T::vertex_index(m, e.b)), e});
+            sides.push_back(
+                {(std::uint64_t(T::vertex_index(m, e.a)) << 32) | std::uint64_t(T::vertex_index(m, e.b)), e});
         });
     std::sort(sides.begin(), sides.end(), [](const keyed& p, const keyed& q) { return p.key < q.key; });
     std::vector<vertex_pair_edge<V>> out;

@@ -44,7 +44,8 @@ private:
 template <class Mesh, class T = default_traits<Mesh>, class Normals>
     requires face_reversible_mesh<Mesh, T>
 adapted_mesh<Mesh, T, face_normal_flip<Mesh, T, Normals>> with_face_normal_flip(Mesh& mesh, Normals normals) {
-    return adapted_mesh<Mesh, T, face_normal_flip<Mesh, T, Normals>>(mesh, face_normal_flip<Mesh, T, Normals>(mesh, std::move(normals)));
+    return adapted_mesh<Mesh, T, face_normal_flip<Mesh, T, Normals>>(
+        mesh, face_normal_flip<Mesh, T, Normals>(mesh, std::move(normals)));
 }
 
 }  // namespace hmira

@@ -33,8 +33,10 @@ public:
         std::vector<vertex_handle> out;
         for (auto f : T::faces(m))
             detail::for_each_side<M, T>(m, f, [&](vertex_handle a, vertex_handle b) {
-                if (a == v) out.push_back(b);
-                else if (b == v) out.push_back(a);
+                if (a == v)
+                    out.push_back(b);
+                else if (b == v)
+                    out.push_back(a);
             });
         // An interior edge is seen from both its faces.
         auto less = [&](vertex_handle a, vertex_handle b) { return T::vertex_index(m, a) < T::vertex_index(m, b); };

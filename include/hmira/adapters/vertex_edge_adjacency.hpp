@@ -30,7 +30,8 @@ public:
     /// face: O(F_all x V_face) per query.
     std::vector<edge_handle> vertex_edges(const M& m, vertex_handle v) const {
         std::vector<edge_handle> out;
-        for (auto w : brute_force_vertex_adjacency<M, T>{}.adjacent_vertices(m, v)) out.push_back(make_vertex_pair_edge<M, T>(m, v, w));
+        for (auto w : brute_force_vertex_adjacency<M, T>{}.adjacent_vertices(m, v))
+            out.push_back(make_vertex_pair_edge<M, T>(m, v, w));
         return out;
     }
     /// Does nothing: there is no index to rebuild.

@@ -31,8 +31,8 @@ enum class errc {
 /// element index (or -1).
 struct error {
     errc code = errc::invalid_argument;  ///< what kind of failure
-    std::string message;                ///< one line naming what failed and where
-    long long element = -1;             ///< index of the offending element, or -1
+    std::string message;                 ///< one line naming what failed and where
+    long long element = -1;              ///< index of the offending element, or -1
 };
 
 /// Thrown by result<T>::value() on an error, and by the few functions documented to throw.
@@ -42,6 +42,7 @@ public:
     explicit hmira_error(hmira::error e) : std::runtime_error(e.message), error_(std::move(e)) {}
     /// The error value that was thrown.
     const hmira::error& error() const noexcept { return error_; }
+
 private:
     hmira::error error_;
 };
@@ -53,7 +54,7 @@ public:
     /// A success holding v, or a failure holding e (both implicit, so functions can `return`
     /// either).
     ///@{
-    result(T v) : data_(std::in_place_index<0>, std::move(v)) {}            // NOLINT: implicit by design
+    result(T v) : data_(std::in_place_index<0>, std::move(v)) {}             // NOLINT: implicit by design
     result(hmira::error e) : data_(std::in_place_index<1>, std::move(e)) {}  // NOLINT
 
     ///@}
@@ -66,9 +67,18 @@ public:
 
     /// The value; throws hmira_error if this holds an error.
     ///@{
-    T& value() & { check(); return std::get<0>(data_); }
-    const T& value() const& { check(); return std::get<0>(data_); }
-    T&& value() && { check(); return std::get<0>(std::move(data_)); }
+    T& value() & {
+        check();
+        return std::get<0>(data_);
+    }
+    const T& value() const& {
+        check();
+        return std::get<0>(data_);
+    }
+    T&& value() && {
+        check();
+        return std::get<0>(std::move(data_));
+    }
     T& operator*() & { return value(); }
     const T& operator*() const& { return value(); }
     T* operator->() { return &value(); }
@@ -100,9 +110,12 @@ public:
     explicit operator bool() const noexcept { return ok_; }
     ///@}
     /// Throws hmira_error if the operation failed.
-    void value() const { if (!ok_) throw hmira_error(error_); }
+    void value() const {
+        if (!ok_) throw hmira_error(error_);
+    }
     /// The error. Precondition: !has_value().
     const hmira::error& error() const& { return error_; }
+
 private:
     hmira::error error_;
     bool ok_ = true;

@@ -26,10 +26,30 @@ struct vec3 {
 
     /// Component-wise arithmetic, and scaling by a scalar.
     ///@{
-    constexpr vec3& operator+=(const vec3& o) noexcept { x += o.x; y += o.y; z += o.z; return *this; }
-    constexpr vec3& operator-=(const vec3& o) noexcept { x -= o.x; y -= o.y; z -= o.z; return *this; }
-    constexpr vec3& operator*=(S s) noexcept { x *= s; y *= s; z *= s; return *this; }
-    constexpr vec3& operator/=(S s) noexcept { x /= s; y /= s; z /= s; return *this; }
+    constexpr vec3& operator+=(const vec3& o) noexcept {
+        x += o.x;
+        y += o.y;
+        z += o.z;
+        return *this;
+    }
+    constexpr vec3& operator-=(const vec3& o) noexcept {
+        x -= o.x;
+        y -= o.y;
+        z -= o.z;
+        return *this;
+    }
+    constexpr vec3& operator*=(S s) noexcept {
+        x *= s;
+        y *= s;
+        z *= s;
+        return *this;
+    }
+    constexpr vec3& operator/=(S s) noexcept {
+        x /= s;
+        y /= s;
+        z /= s;
+        return *this;
+    }
 
     friend constexpr vec3 operator+(vec3 a, const vec3& b) noexcept { return a += b; }
     friend constexpr vec3 operator-(vec3 a, const vec3& b) noexcept { return a -= b; }
@@ -43,7 +63,9 @@ struct vec3 {
 
 /// Dot product.
 template <class S>
-constexpr S dot(const vec3<S>& a, const vec3<S>& b) noexcept { return a.x * b.x + a.y * b.y + a.z * b.z; }
+constexpr S dot(const vec3<S>& a, const vec3<S>& b) noexcept {
+    return a.x * b.x + a.y * b.y + a.z * b.z;
+}
 
 /// Cross product (right-handed).
 template <class S>
@@ -53,11 +75,16 @@ constexpr vec3<S> cross(const vec3<S>& a, const vec3<S>& b) noexcept {
 
 /// Euclidean length.
 template <class S>
-S norm(const vec3<S>& a) noexcept { using std::sqrt; return sqrt(dot(a, a)); }
+S norm(const vec3<S>& a) noexcept {
+    using std::sqrt;
+    return sqrt(dot(a, a));
+}
 
 /// Squared Euclidean length, without the square root.
 template <class S>
-constexpr S squared_norm(const vec3<S>& a) noexcept { return dot(a, a); }
+constexpr S squared_norm(const vec3<S>& a) noexcept {
+    return dot(a, a);
+}
 
 /// Unit vector along a; the zero vector stays zero rather than becoming NaN.
 template <class S>
@@ -68,6 +95,8 @@ vec3<S> normalized(const vec3<S>& a) noexcept {
 
 /// Linear interpolation a + (b - a) t.
 template <class S>
-constexpr vec3<S> lerp(const vec3<S>& a, const vec3<S>& b, S t) noexcept { return a + (b - a) * t; }
+constexpr vec3<S> lerp(const vec3<S>& a, const vec3<S>& b, S t) noexcept {
+    return a + (b - a) * t;
+}
 
 }  // namespace hmira

@@ -87,7 +87,9 @@ public:
     /// 64-bit words per row of voxels along x.
     std::size_t words_per_row() const noexcept { return words_; }
     /// The words of row (j, k): voxel i is bit i % 64 of word i / 64.
-    std::uint64_t* row(std::size_t j, std::size_t k) noexcept { return bits_.data() + (k * geometry_.dims[1] + j) * words_; }
+    std::uint64_t* row(std::size_t j, std::size_t k) noexcept {
+        return bits_.data() + (k * geometry_.dims[1] + j) * words_;
+    }
     /// The words of row (j, k), read-only.
     const std::uint64_t* row(std::size_t j, std::size_t k) const noexcept {
         return bits_.data() + (k * geometry_.dims[1] + j) * words_;
@@ -96,7 +98,8 @@ public:
     std::span<std::uint64_t> words() noexcept { return bits_; }              ///< all rows, (z, y) order
 
 private:
-    bit_grid(const grid_geometry& g, std::nullptr_t) : geometry_(g), words_((g.dims[0] + 63) / 64), bits_(words_ * g.dims[1] * g.dims[2]) {}
+    bit_grid(const grid_geometry& g, std::nullptr_t)
+        : geometry_(g), words_((g.dims[0] + 63) / 64), bits_(words_ * g.dims[1] * g.dims[2]) {}
 
     grid_geometry geometry_;
     std::size_t words_ = 0;

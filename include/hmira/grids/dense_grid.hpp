@@ -27,14 +27,13 @@ public:
     /// An empty grid (all dimensions 0).
     dense_grid() = default;
     /// A grid of the given geometry with every sample set to `fill`.
-    explicit dense_grid(const grid_geometry& g, T fill = T{})
-        : geometry_(g), values_(g.size(), fill) {}
+    explicit dense_grid(const grid_geometry& g, T fill = T{}) : geometry_(g), values_(g.size(), fill) {}
 
-    grid_dims dims() const noexcept { return geometry_.dims; }                      ///< samples per axis
-    vec3<double> origin() const noexcept { return geometry_.origin; }               ///< position of sample (0, 0, 0)
-    vec3<double> spacing() const noexcept { return geometry_.spacing; }             ///< distance between samples
-    const grid_geometry& geometry() const noexcept { return geometry_; }            ///< dims, origin and spacing
-    std::size_t size() const noexcept { return values_.size(); }                    ///< number of samples
+    grid_dims dims() const noexcept { return geometry_.dims; }            ///< samples per axis
+    vec3<double> origin() const noexcept { return geometry_.origin; }     ///< position of sample (0, 0, 0)
+    vec3<double> spacing() const noexcept { return geometry_.spacing; }   ///< distance between samples
+    const grid_geometry& geometry() const noexcept { return geometry_; }  ///< dims, origin and spacing
+    std::size_t size() const noexcept { return values_.size(); }          ///< number of samples
 
     /// Offset of sample (i, j, k) in data().
     std::size_t index(std::size_t i, std::size_t j, std::size_t k) const noexcept {
@@ -45,10 +44,10 @@ public:
     /// Overwrites sample (i, j, k); no bounds check.
     void set(std::size_t i, std::size_t j, std::size_t k, T v) noexcept { values_[index(i, j, k)] = v; }
 
-    const T* data() const noexcept { return values_.data(); }      ///< sample (0, 0, 0); x fastest
-    T* data() noexcept { return values_.data(); }                  ///< sample (0, 0, 0); x fastest
-    std::span<const T> values() const noexcept { return values_; } ///< all samples, x fastest
-    std::span<T> values() noexcept { return values_; }             ///< all samples, x fastest
+    const T* data() const noexcept { return values_.data(); }       ///< sample (0, 0, 0); x fastest
+    T* data() noexcept { return values_.data(); }                   ///< sample (0, 0, 0); x fastest
+    std::span<const T> values() const noexcept { return values_; }  ///< all samples, x fastest
+    std::span<T> values() noexcept { return values_; }              ///< all samples, x fastest
 
 private:
     grid_geometry geometry_;
@@ -99,9 +98,10 @@ template <class T>
 result<grid_view<T>> make_grid_view(std::span<T> samples, const grid_geometry& g) {
     if (auto ok = check_grid_geometry(g, "make_grid_view"); !ok) return ok.error();
     if (samples.size() != g.size())
-        return fail(errc::invalid_argument, "make_grid_view: " + std::to_string(samples.size()) + " samples given, dimensions " +
-                                                std::to_string(g.dims[0]) + " x " + std::to_string(g.dims[1]) + " x " +
-                                                std::to_string(g.dims[2]) + " need " + std::to_string(g.size()));
+        return fail(errc::invalid_argument, "make_grid_view: " + std::to_string(samples.size()) +
+                                                " samples given, dimensions " + std::to_string(g.dims[0]) + " x " +
+                                                std::to_string(g.dims[1]) + " x " + std::to_string(g.dims[2]) +
+                                                " need " + std::to_string(g.size()));
     return grid_view<T>(samples, g);
 }
 

@@ -32,9 +32,8 @@ concept voxel_grid = requires(const G& g, std::size_t i) {
 
 /// A voxel map that can also be written: `g.set(i, j, k, v)` with v a `G::value_type`.
 template <class G>
-concept writable_voxel_grid = voxel_grid<G> && requires(G& g, std::size_t i, typename G::value_type v) {
-    g.set(i, i, i, v);
-};
+concept writable_voxel_grid =
+    voxel_grid<G> && requires(G& g, std::size_t i, typename G::value_type v) { g.set(i, i, i, v); };
 
 /// A voxel map whose samples lie in one array, x fastest then y then z: `g.data()` points at
 /// sample (0, 0, 0). Algorithms read such grids row by row instead of sample by sample.
@@ -46,9 +45,9 @@ concept contiguous_voxel_grid = voxel_grid<G> && requires(const G& g) {
 /// The shape of a grid without its values: what voxelize() is asked to fill, and what a
 /// reader reports.
 struct grid_geometry {
-    grid_dims dims{0, 0, 0};         ///< samples along x, y and z
-    vec3<double> origin{0, 0, 0};    ///< position of sample (0, 0, 0)
-    vec3<double> spacing{1, 1, 1};   ///< distance between neighbouring samples along each axis
+    grid_dims dims{0, 0, 0};        ///< samples along x, y and z
+    vec3<double> origin{0, 0, 0};   ///< position of sample (0, 0, 0)
+    vec3<double> spacing{1, 1, 1};  ///< distance between neighbouring samples along each axis
 
     /// Number of samples, dims[0] * dims[1] * dims[2].
     std::size_t size() const noexcept { return dims[0] * dims[1] * dims[2]; }
@@ -72,16 +71,18 @@ inline result<void> check_grid_geometry(const grid_geometry& g, const std::strin
     for (int a = 0; a < 3; ++a) {
         if (g.dims[a] < min_dim)
             return fail(errc::invalid_argument, who + ": grid dimension " + std::string(1, axis[a]) + " is " +
-                                                    std::to_string(g.dims[a]) + ", needs at least " + std::to_string(min_dim));
+                                                    std::to_string(g.dims[a]) + ", needs at least " +
+                                                    std::to_string(min_dim));
         if (!(g.spacing[a] > 0) || !std::isfinite(g.spacing[a]))
             return fail(errc::invalid_argument, who + ": grid spacing along " + std::string(1, axis[a]) +
-                                                    " must be finite and positive, got " + std::to_string(g.spacing[a]));
-        if (!std::isfinite(g.origin[a]))
-            return fail(errc::invalid_argument, who + ": grid origin is not finite");
+                                                    " must be finite and positive, got " +
+                                                    std::to_string(g.spacing[a]));
+        if (!std::isfinite(g.origin[a])) return fail(errc::invalid_argument, who + ": grid origin is not finite");
     }
     // Indices are 32-bit inside the algorithms; a larger grid would not fit in memory anyway.
     if (g.dims[0] >= (1u << 30) || g.dims[1] >= (1u << 30) || g.dims[2] >= (1u << 30) ||
-        double(g.dims[0]) * double(g.dims[1]) * double(g.dims[2]) > double(std::numeric_limits<std::uint32_t>::max()) * 16.0)
+        double(g.dims[0]) * double(g.dims[1]) * double(g.dims[2]) >
+            double(std::numeric_limits<std::uint32_t>::max()) * 16.0)
         return fail(errc::invalid_argument, who + ": grid too large");
     return {};
 }

@@ -36,11 +36,23 @@ public:
         using difference_type = std::ptrdiff_t;
         using iterator_concept = std::forward_iterator_tag;
         iterator() = default;
-        iterator(const Mesh* m, std::size_t i, std::size_t bound, bool skip) : m_(m), i_(i), bound_(bound), skip_(skip) { advance(); }
+        iterator(const Mesh* m, std::size_t i, std::size_t bound, bool skip)
+            : m_(m), i_(i), bound_(bound), skip_(skip) {
+            advance();
+        }
         Index operator*() const noexcept { return Index(static_cast<typename Mesh::size_type>(i_)); }
-        iterator& operator++() noexcept { ++i_; advance(); return *this; }
-        iterator operator++(int) noexcept { auto t = *this; ++*this; return t; }
+        iterator& operator++() noexcept {
+            ++i_;
+            advance();
+            return *this;
+        }
+        iterator operator++(int) noexcept {
+            auto t = *this;
+            ++*this;
+            return t;
+        }
         friend bool operator==(const iterator& a, const iterator& b) noexcept { return a.i_ == b.i_; }
+
     private:
         void advance() noexcept {
             if (skip_)
@@ -54,6 +66,7 @@ public:
     element_range(const Mesh& m, std::size_t bound) : m_(&m), bound_(bound), skip_(m.has_garbage()) {}
     iterator begin() const { return iterator(m_, 0, bound_, skip_); }
     iterator end() const { return iterator(m_, bound_, bound_, false); }
+
 private:
     const Mesh* m_ = nullptr;
     std::size_t bound_ = 0;
@@ -172,7 +185,9 @@ struct mesh_traits<CGAL::Surface_mesh<P>> {
                std::views::filter([&m](HH h) { return m.face(m.opposite(h)) != mesh::null_face(); }) |
                std::views::transform([&m](HH h) { return m.face(m.opposite(h)); });
     }
-    static std::array<VH, 2> edge_vertices(const mesh& m, EH e) { return {m.source(m.halfedge(e)), m.target(m.halfedge(e))}; }
+    static std::array<VH, 2> edge_vertices(const mesh& m, EH e) {
+        return {m.source(m.halfedge(e)), m.target(m.halfedge(e))};
+    }
 
     // ----- geometry ---------------------------------------------------------------------------------
     static vec3<scalar> position(const mesh& m, VH v) {
@@ -215,7 +230,8 @@ struct mesh_traits<CGAL::Surface_mesh<P>> {
     /// error; handles are checked first so CGAL never sees a bad one.
     static result<FH> add_face(mesh& m, std::span<const VH> vs) {
         if (vs.size() < 3)
-            return fail(errc::degenerate_face, "add_face: a face needs at least 3 vertices, got " + std::to_string(vs.size()));
+            return fail(errc::degenerate_face,
+                        "add_face: a face needs at least 3 vertices, got " + std::to_string(vs.size()));
         // Removed flags are read only when something was removed: reading them for every
         // corner made building through the traits 1.08x CGAL's own add_face.
         const bool garbage = m.has_garbage();
@@ -226,22 +242,28 @@ struct mesh_traits<CGAL::Surface_mesh<P>> {
             if (a < nv && b < nv && c < nv && a != b && b != c && a != c) {
                 const FH f = m.add_face(vs);
                 if (f == mesh::null_face())
-                    return fail(errc::non_manifold, "add_face: CGAL refused the face (it would make an edge or vertex non-manifold, or is wound against a neighbour)");
+                    return fail(errc::non_manifold,
+                                "add_face: CGAL refused the face (it would make an edge or vertex non-manifold, or is "
+                                "wound against a neighbour)");
                 return f;
             }
         }
         for (std::size_t i = 0; i < vs.size(); ++i) {
             if (vs[i] == VH() || vs[i].idx() >= nv || (garbage && m.is_removed(vs[i])))
-                return fail(errc::invalid_handle, "add_face: corner " + std::to_string(i) + " names a vertex that does not exist",
+                return fail(errc::invalid_handle,
+                            "add_face: corner " + std::to_string(i) + " names a vertex that does not exist",
                             static_cast<long long>(vs[i].idx()));
             for (std::size_t j = 0; j < i; ++j)
                 if (vs[j] == vs[i])
-                    return fail(errc::degenerate_face, "add_face: vertex " + std::to_string(vs[i].idx()) + " appears twice in the face",
+                    return fail(errc::degenerate_face,
+                                "add_face: vertex " + std::to_string(vs[i].idx()) + " appears twice in the face",
                                 static_cast<long long>(vs[i].idx()));
         }
         const FH f = m.add_face(vs);
         if (f == mesh::null_face())
-            return fail(errc::non_manifold, "add_face: CGAL refused the face (it would make an edge or vertex non-manifold, or is wound against a neighbour)");
+            return fail(errc::non_manifold,
+                        "add_face: CGAL refused the face (it would make an edge or vertex non-manifold, or is wound "
+                        "against a neighbour)");
         return f;
     }
 
@@ -296,7 +318,8 @@ struct mesh_traits<CGAL::Surface_mesh<P>> {
         // already name one; otherwise the incoming opposite, which reads back as `out`.
         if (m.face(out) == mesh::null_face()) {
             const HH p = m.prev(out);
-            if (p != mesh::null_halfedge() && p.idx() < m.num_halfedges() && m.next(p) == out && m.face(p) == mesh::null_face()) {
+            if (p != mesh::null_halfedge() && p.idx() < m.num_halfedges() && m.next(p) == out &&
+                m.face(p) == mesh::null_face()) {
                 m.set_halfedge(v, p);
                 return;
             }
@@ -316,9 +339,15 @@ struct mesh_traits<CGAL::Surface_mesh<P>> {
         return h;
     }
     static FH new_face(mesh& m) { return m.add_face(); }
-    static void erase_edge(mesh& m, EH e) { if (!m.is_removed(e)) m.remove_edge(e); }
-    static void erase_face(mesh& m, FH f) { if (!m.is_removed(f)) m.remove_face(f); }
-    static void erase_vertex(mesh& m, VH v) { if (!m.is_removed(v)) m.remove_vertex(v); }
+    static void erase_edge(mesh& m, EH e) {
+        if (!m.is_removed(e)) m.remove_edge(e);
+    }
+    static void erase_face(mesh& m, FH f) {
+        if (!m.is_removed(f)) m.remove_face(f);
+    }
+    static void erase_vertex(mesh& m, VH v) {
+        if (!m.is_removed(v)) m.remove_vertex(v);
+    }
     /// Whether the element was removed (Surface_mesh's is_removed), for an index below the
     /// bound. O(1). Surface_mesh reuses a removed slot for the next element of that kind it
     /// adds; a stale handle to a reused slot then names the new element and cannot be told

@@ -40,9 +40,18 @@ public:
         iterator() = default;
         iterator(const Mesh* m, int i, int bound, bool skip) : m_(m), i_(i), bound_(bound), skip_(skip) { advance(); }
         Handle operator*() const noexcept { return Handle(i_); }
-        iterator& operator++() noexcept { ++i_; advance(); return *this; }
-        iterator operator++(int) noexcept { auto t = *this; ++*this; return t; }
+        iterator& operator++() noexcept {
+            ++i_;
+            advance();
+            return *this;
+        }
+        iterator operator++(int) noexcept {
+            auto t = *this;
+            ++*this;
+            return t;
+        }
         friend bool operator==(const iterator& a, const iterator& b) noexcept { return a.i_ == b.i_; }
+
     private:
         void advance() noexcept {
             if (skip_)
@@ -56,6 +65,7 @@ public:
     element_range(const Mesh& m, int bound, bool skip) : m_(&m), bound_(bound), skip_(skip) {}
     iterator begin() const { return iterator(m_, 0, bound_, skip_); }
     iterator end() const { return iterator(m_, bound_, bound_, false); }
+
 private:
     const Mesh* m_ = nullptr;
     int bound_ = 0;
@@ -112,13 +122,23 @@ struct traits_base {
     using ring = detail::lap_range<Mesh, HH, Policy>;
 
     // ----- whole structure: O(V_all), O(F_all), O(E_all) ---------------------------------
-    static element_range<Mesh, VH> vertices(const Mesh& m) { return {m, static_cast<int>(m.n_vertices()), m.has_vertex_status()}; }
-    static element_range<Mesh, FH> faces(const Mesh& m) { return {m, static_cast<int>(m.n_faces()), m.has_face_status()}; }
-    static element_range<Mesh, EH> edges(const Mesh& m) { return {m, static_cast<int>(m.n_edges()), m.has_edge_status()}; }
-    static element_range<Mesh, HH> halfedges(const Mesh& m) { return {m, static_cast<int>(m.n_halfedges()), m.has_halfedge_status()}; }
+    static element_range<Mesh, VH> vertices(const Mesh& m) {
+        return {m, static_cast<int>(m.n_vertices()), m.has_vertex_status()};
+    }
+    static element_range<Mesh, FH> faces(const Mesh& m) {
+        return {m, static_cast<int>(m.n_faces()), m.has_face_status()};
+    }
+    static element_range<Mesh, EH> edges(const Mesh& m) {
+        return {m, static_cast<int>(m.n_edges()), m.has_edge_status()};
+    }
+    static element_range<Mesh, HH> halfedges(const Mesh& m) {
+        return {m, static_cast<int>(m.n_halfedges()), m.has_halfedge_status()};
+    }
     /// O(1) while nothing is deleted; with deleted elements (status requested) O(V_all):
     /// OpenMesh counts deleted elements until its garbage_collection().
-    static std::size_t vertex_count(const Mesh& m) { return m.has_vertex_status() ? count(vertices(m)) : m.n_vertices(); }
+    static std::size_t vertex_count(const Mesh& m) {
+        return m.has_vertex_status() ? count(vertices(m)) : m.n_vertices();
+    }
     static std::size_t face_count(const Mesh& m) { return m.has_face_status() ? count(faces(m)) : m.n_faces(); }
     static std::size_t edge_count(const Mesh& m) { return m.has_edge_status() ? count(edges(m)) : m.n_edges(); }
 
@@ -168,19 +188,25 @@ struct traits_base {
         const auto& p = m.point(v);
         return {p[0], p[1], p[2]};
     }
-    static void set_position(Mesh& m, VH v, const vec3<scalar>& p) { m.set_point(v, typename Mesh::Point(p.x, p.y, p.z)); }
+    static void set_position(Mesh& m, VH v, const vec3<scalar>& p) {
+        m.set_point(v, typename Mesh::Point(p.x, p.y, p.z));
+    }
 
     // ----- building ----------------------------------------------------------------------------
     static VH add_vertex(Mesh& m, const vec3<scalar>& p) { return m.add_vertex(typename Mesh::Point(p.x, p.y, p.z)); }
     /// Optional (not a concept requirement): room for this many elements, as OpenMesh's reserve.
-    static void reserve(Mesh& m, std::size_t vertices, std::size_t edges, std::size_t faces) { m.reserve(vertices, edges, faces); }
+    static void reserve(Mesh& m, std::size_t vertices, std::size_t edges, std::size_t faces) {
+        m.reserve(vertices, edges, faces);
+    }
     /// Optional (not a concept requirement): sets the index bounds to these, as OpenMesh's
     /// resize. Growing appends live, unlinked elements (invalid links and faces, default
     /// points, status clear), every property at its default, without resizing every property
     /// array once per element (what new_vertex, new_edge and new_face do); the caller links
     /// every one before anything else reads the mesh. Shrinking drops elements from the end,
     /// which must be unreferenced. Within reserved capacity it never reallocates. O(change).
-    static void resize(Mesh& m, std::size_t vertices, std::size_t edges, std::size_t faces) { m.resize(vertices, edges, faces); }
+    static void resize(Mesh& m, std::size_t vertices, std::size_t edges, std::size_t faces) {
+        m.resize(vertices, edges, faces);
+    }
     /// Optional (not a concept requirement): the handle of the element at an index below its
     /// bound, for callers that made elements with resize. O(1).
     static VH vertex_at(const Mesh&, std::size_t i) { return VH(static_cast<int>(i)); }
@@ -193,32 +219,42 @@ struct traits_base {
     /// into an error; the handles are checked first so OpenMesh never sees a bad one.
     static result<FH> add_face(Mesh& m, std::span<const VH> vs) {
         if (vs.size() < 3)
-            return fail(errc::degenerate_face, "add_face: a face needs at least 3 vertices, got " + std::to_string(vs.size()));
+            return fail(errc::degenerate_face,
+                        "add_face: a face needs at least 3 vertices, got " + std::to_string(vs.size()));
         if (vs.size() == 3 && !m.has_vertex_status()) {
             // A triangle, the common case, checked without the general loop (which names the
             // problem of a refused one). Unsigned, a null handle (-1) is out of range.
             const auto nv = m.n_vertices();
-            const auto a = static_cast<std::size_t>(static_cast<unsigned>(vs[0].idx())), b = static_cast<std::size_t>(static_cast<unsigned>(vs[1].idx())),
+            const auto a = static_cast<std::size_t>(static_cast<unsigned>(vs[0].idx())),
+                       b = static_cast<std::size_t>(static_cast<unsigned>(vs[1].idx())),
                        c = static_cast<std::size_t>(static_cast<unsigned>(vs[2].idx()));
             if (a < nv && b < nv && c < nv && a != b && b != c && a != c) {
                 const FH f = m.add_face(vs.data(), vs.size());
                 if (!f.is_valid())
-                    return fail(errc::non_manifold, "add_face: OpenMesh refused the face (it would make an edge or vertex non-manifold, or is wound against a neighbour)");
+                    return fail(errc::non_manifold,
+                                "add_face: OpenMesh refused the face (it would make an edge or vertex non-manifold, or "
+                                "is wound against a neighbour)");
                 return f;
             }
         }
         for (std::size_t i = 0; i < vs.size(); ++i) {
             if (!vs[i].is_valid() || static_cast<std::size_t>(vs[i].idx()) >= m.n_vertices() ||
                 (m.has_vertex_status() && m.status(vs[i]).deleted()))
-                return fail(errc::invalid_handle, "add_face: corner " + std::to_string(i) + " names vertex " +
-                                                      std::to_string(vs[i].idx()) + ", which does not exist", vs[i].idx());
+                return fail(errc::invalid_handle,
+                            "add_face: corner " + std::to_string(i) + " names vertex " + std::to_string(vs[i].idx()) +
+                                ", which does not exist",
+                            vs[i].idx());
             for (std::size_t j = 0; j < i; ++j)
                 if (vs[j] == vs[i])
-                    return fail(errc::degenerate_face, "add_face: vertex " + std::to_string(vs[i].idx()) + " appears twice in the face", vs[i].idx());
+                    return fail(errc::degenerate_face,
+                                "add_face: vertex " + std::to_string(vs[i].idx()) + " appears twice in the face",
+                                vs[i].idx());
         }
         const FH f = m.add_face(vs.data(), vs.size());
         if (!f.is_valid())
-            return fail(errc::non_manifold, "add_face: OpenMesh refused the face (it would make an edge or vertex non-manifold, or is wound against a neighbour)");
+            return fail(errc::non_manifold,
+                        "add_face: OpenMesh refused the face (it would make an edge or vertex non-manifold, or is "
+                        "wound against a neighbour)");
         return f;
     }
 
@@ -249,7 +285,8 @@ struct traits_base {
             const HH h = m.halfedge_handle(v);
             if (!h.is_valid()) continue;
             // On the border the halfedge that entered v (old prev, now next) leaves it.
-            m.set_halfedge_handle(v, m.face_handle(h).is_valid() ? m.opposite_halfedge_handle(h) : m.next_halfedge_handle(h));
+            m.set_halfedge_handle(
+                v, m.face_handle(h).is_valid() ? m.opposite_halfedge_handle(h) : m.next_halfedge_handle(h));
         }
     }
 
@@ -309,18 +346,22 @@ private:
 /// mutation, all on the user's object. Not change-counted: OpenMesh keeps no counter, and
 /// keeping one in a mesh property would cost a name lookup on every raw mutation.
 template <class Traits>
-struct mesh_traits<OpenMesh::PolyMesh_ArrayKernelT<Traits>> : openmesh_detail::traits_base<OpenMesh::PolyMesh_ArrayKernelT<Traits>> {};
+struct mesh_traits<OpenMesh::PolyMesh_ArrayKernelT<Traits>>
+    : openmesh_detail::traits_base<OpenMesh::PolyMesh_ArrayKernelT<Traits>> {};
 
 /// OpenMesh triangle mesh: as the polygon mesh, but triangles only. add_face refuses other
 /// degrees (OpenMesh would silently fan-triangulate them), and `triangles_only` makes the
 /// algorithms that create polygons (polygon_mesh_builder) reject it at compile time.
 template <class Traits>
-struct mesh_traits<OpenMesh::TriMesh_ArrayKernelT<Traits>> : openmesh_detail::traits_base<OpenMesh::TriMesh_ArrayKernelT<Traits>> {
+struct mesh_traits<OpenMesh::TriMesh_ArrayKernelT<Traits>>
+    : openmesh_detail::traits_base<OpenMesh::TriMesh_ArrayKernelT<Traits>> {
     using base = openmesh_detail::traits_base<OpenMesh::TriMesh_ArrayKernelT<Traits>>;
     static constexpr bool triangles_only = true;
-    static result<OpenMesh::FaceHandle> add_face(OpenMesh::TriMesh_ArrayKernelT<Traits>& m, std::span<const OpenMesh::VertexHandle> vs) {
+    static result<OpenMesh::FaceHandle> add_face(OpenMesh::TriMesh_ArrayKernelT<Traits>& m,
+                                                 std::span<const OpenMesh::VertexHandle> vs) {
         if (vs.size() != 3)
-            return fail(errc::unsupported, "add_face: a TriMesh holds triangles only, got a face of " + std::to_string(vs.size()) + " vertices");
+            return fail(errc::unsupported, "add_face: a TriMesh holds triangles only, got a face of " +
+                                               std::to_string(vs.size()) + " vertices");
         return base::add_face(m, vs);
     }
 };

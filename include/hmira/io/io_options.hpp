@@ -26,7 +26,7 @@ namespace hmira::io {
 /// properties "v:normal" (vec3<float>) and "v:color" (std::array<std::uint8_t, 4>, RGBA) on
 /// reading, and writers use those properties when no explicit attributes are given.
 struct mesh_attributes {
-    std::vector<vec3<float>> normals;                ///< unit normals, or empty
+    std::vector<vec3<float>> normals;                 ///< unit normals, or empty
     std::vector<std::array<std::uint8_t, 4>> colors;  ///< RGBA, 0..255, or empty
     /// True when the file had neither normals nor colours.
     bool empty() const noexcept { return normals.empty() && colors.empty(); }

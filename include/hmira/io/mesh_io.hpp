@@ -44,7 +44,8 @@ inline const char* to_string(file_format f) {
 /// The format named by the path's extension, or nothing for an unknown extension.
 inline std::optional<file_format> format_from_extension(const std::filesystem::path& path) {
     std::string ext = path.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
     if (ext == ".obj") return file_format::obj;
     if (ext == ".off") return file_format::off;
     if (ext == ".ply") return file_format::ply;
@@ -56,13 +57,16 @@ namespace detail {
 inline hmira::error unknown_extension(const std::filesystem::path& path) {
     std::error_code ec;
     // A folder is an I/O problem whatever its name says.
-    if (std::filesystem::is_directory(path, ec)) return fail(errc::io_error, path.string() + ": is a directory, not a mesh file");
-    return fail(errc::unknown_format, path.string() + ": unknown mesh format '" + path.extension().string() + "' (use .obj, .off, .ply or .stl)");
+    if (std::filesystem::is_directory(path, ec))
+        return fail(errc::io_error, path.string() + ": is a directory, not a mesh file");
+    return fail(errc::unknown_format, path.string() + ": unknown mesh format '" + path.extension().string() +
+                                          "' (use .obj, .off, .ply or .stl)");
 }
 }  // namespace detail
 
 namespace detail {
-inline result<polygon_soup> parse_any(std::string_view data, file_format format, const std::string& name, const read_options& options) {
+inline result<polygon_soup> parse_any(std::string_view data, file_format format, const std::string& name,
+                                      const read_options& options) {
     switch (format) {
         case file_format::obj: return parse_obj(data, name, options);
         case file_format::off: return parse_off(data, name, options);
@@ -80,11 +84,13 @@ inline result<polygon_soup> parse_any(std::string_view data, file_format format,
 /// Parses text/bytes of the given format into a soup (what the fuzz targets call).
 /// Complexity O(bytes). Errors: as the format's parse_* function, and errc::unsupported for
 /// 2^32 points or more.
-inline result<polygon_soup> parse_soup(std::string_view data, file_format format, const std::string& name, const read_options& options = {}) {
+inline result<polygon_soup> parse_soup(std::string_view data, file_format format, const std::string& name,
+                                       const read_options& options = {}) {
     auto soup = detail::parse_any(data, format, name, options);
     // Corner indices are 32-bit: a soup with more points could not name them all.
     if (soup && soup->points.size() > std::size_t{0xffffffffu})
-        return fail(errc::unsupported, name + ": " + std::to_string(soup->points.size()) + " vertices; at most 2^32 - 1 are supported");
+        return fail(errc::unsupported,
+                    name + ": " + std::to_string(soup->points.size()) + " vertices; at most 2^32 - 1 are supported");
     return soup;
 }
 

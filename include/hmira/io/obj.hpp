@@ -34,7 +34,8 @@ namespace hmira::io {
 /// Complexity: O(bytes), one pass. Faces may use vertices defined later in the file.
 /// Errors (errc::parse_error / degenerate_face): non-numbers, vertices with fewer than 3
 /// coordinates, index 0, indices out of range, faces with fewer than 3 vertices.
-inline result<polygon_soup> parse_obj(std::string_view text, const std::string& name, const read_options& options = {}) {
+inline result<polygon_soup> parse_obj(std::string_view text, const std::string& name,
+                                      const read_options& options = {}) {
     polygon_soup soup;
     detail::text_cursor c(text);
     detail::progress_ticker ticker(options.progress, text.size());
@@ -108,7 +109,8 @@ template <class M, class T = default_traits<M>>
     requires writable_mesh<M, T>
 result<void> write_obj(const M& mesh, const std::filesystem::path& path, const write_options& options = {}) {
     if (auto ok = detail::refuse_unwritable<M, T>(mesh, "OBJ"); !ok) return detail::at_path(path, ok.error());
-    return detail::write_file_atomically(path, [&](std::ostream& o) { return detail::put_obj<M, T>(mesh, o, options); });
+    return detail::write_file_atomically(path,
+                                         [&](std::ostream& o) { return detail::put_obj<M, T>(mesh, o, options); });
 }
 
 }  // namespace hmira::io

@@ -28,7 +28,8 @@ namespace hmira::io {
 /// or unknown header, counts that do not match the content (too large: "file ends after";
 /// too small: "unexpected content"), non-numbers, indices out of [0, V), faces of fewer than
 /// 3 vertices, binary OFF and 4D/nD variants (unsupported).
-inline result<polygon_soup> parse_off(std::string_view text, const std::string& name, const read_options& options = {}) {
+inline result<polygon_soup> parse_off(std::string_view text, const std::string& name,
+                                      const read_options& options = {}) {
     polygon_soup soup;
     detail::text_cursor c(text);
     detail::progress_ticker ticker(options.progress, text.size());
@@ -37,14 +38,19 @@ inline result<polygon_soup> parse_off(std::string_view text, const std::string& 
     if (c.at_end()) return fail(errc::parse_error, name + ": empty file, expected an OFF header");
     const auto header = c.token();
     if (header.size() < 3 || header.substr(header.size() - 3) != "OFF")
-        return fail(errc::parse_error, where() + ": expected an 'OFF' header, found '" + std::string(header.substr(0, 40)) + "'");
+        return fail(errc::parse_error,
+                    where() + ": expected an 'OFF' header, found '" + std::string(header.substr(0, 40)) + "'");
     bool has_normals = false, has_colors = false, has_texture = false;
     for (char ch : header.substr(0, header.size() - 3)) {
-        if (ch == 'N') has_normals = true;
-        else if (ch == 'C') has_colors = true;
-        else if (ch == 'S' || ch == 'T') has_texture = true;
+        if (ch == 'N')
+            has_normals = true;
+        else if (ch == 'C')
+            has_colors = true;
+        else if (ch == 'S' || ch == 'T')
+            has_texture = true;
         else
-            return fail(errc::unsupported, where() + ": OFF variant '" + std::string(header) + "' is not supported (only [ST][C][N]OFF)");
+            return fail(errc::unsupported,
+                        where() + ": OFF variant '" + std::string(header) + "' is not supported (only [ST][C][N]OFF)");
     }
     {
         const auto probe = c.peek_token();
@@ -52,33 +58,51 @@ inline result<polygon_soup> parse_off(std::string_view text, const std::string& 
     }
     c.skip_space_and_newlines('#');
     long long nv = 0, nf = 0, ne = 0;
-    if (!c.number(nv)) return fail(errc::parse_error, where() + ": expected vertex and face counts, " + detail::describe_bad_number(c));
+    if (!c.number(nv))
+        return fail(errc::parse_error,
+                    where() + ": expected vertex and face counts, " + detail::describe_bad_number(c));
     if (nv < 0) return fail(errc::parse_error, where() + ": the vertex count " + std::to_string(nv) + " is negative");
-    if (!c.number(nf)) return fail(errc::parse_error, where() + ": expected a face count after the vertex count, " + detail::describe_bad_number(c));
+    if (!c.number(nf))
+        return fail(errc::parse_error,
+                    where() + ": expected a face count after the vertex count, " + detail::describe_bad_number(c));
     if (nf < 0) return fail(errc::parse_error, where() + ": the face count " + std::to_string(nf) + " is negative");
-    if (!c.at_line_end('#') && !c.number(ne)) return fail(errc::parse_error, where() + ": edge count: " + detail::describe_bad_number(c));
-    if (nv > static_cast<long long>(UINT32_MAX) - 1) return fail(errc::parse_error, where() + ": vertex count " + std::to_string(nv) + " is too large");
+    if (!c.at_line_end('#') && !c.number(ne))
+        return fail(errc::parse_error, where() + ": edge count: " + detail::describe_bad_number(c));
+    if (nv > static_cast<long long>(UINT32_MAX) - 1)
+        return fail(errc::parse_error, where() + ": vertex count " + std::to_string(nv) + " is too large");
     // Counts may be absurd in a broken file: reserve no more than the text could hold.
-    hmira::detail::reserve_huge(soup.points, static_cast<std::size_t>(std::min<long long>(nv, static_cast<long long>(text.size() / 6 + 1))));
-    hmira::detail::reserve_huge(soup.face_offsets, static_cast<std::size_t>(std::min<long long>(nf, static_cast<long long>(text.size() / 8 + 1))) + 1);
+    hmira::detail::reserve_huge(
+        soup.points, static_cast<std::size_t>(std::min<long long>(nv, static_cast<long long>(text.size() / 6 + 1))));
+    hmira::detail::reserve_huge(
+        soup.face_offsets,
+        static_cast<std::size_t>(std::min<long long>(nf, static_cast<long long>(text.size() / 8 + 1))) + 1);
     if (has_normals) soup.attributes.normals.reserve(soup.points.capacity());
     if (has_colors) soup.attributes.colors.reserve(soup.points.capacity());
     c.next_line();
     for (long long i = 0; i < nv; ++i) {
         c.skip_space_and_newlines('#');
         if (c.at_end())
-            return fail(errc::parse_error, name + ":" + std::to_string(c.line()) + ": file ends after " + std::to_string(i) + " of " + std::to_string(nv) +
+            return fail(errc::parse_error, name + ":" + std::to_string(c.line()) + ": file ends after " +
+                                               std::to_string(i) + " of " + std::to_string(nv) +
                                                " vertices (header count too large, or truncated file)");
         std::array<double, 3> p{};
         for (auto& x : p)
-            if (!c.number(x)) return fail(errc::parse_error, where() + ": vertex " + std::to_string(i) + ": " + detail::describe_bad_number(c));
-        if (!detail::all_finite(p)) return fail(errc::parse_error, where() + ": vertex " + std::to_string(i) + " has a coordinate that is not finite (NaN or infinity)");
+            if (!c.number(x))
+                return fail(errc::parse_error,
+                            where() + ": vertex " + std::to_string(i) + ": " + detail::describe_bad_number(c));
+        if (!detail::all_finite(p))
+            return fail(errc::parse_error, where() + ": vertex " + std::to_string(i) +
+                                               " has a coordinate that is not finite (NaN or infinity)");
         soup.points.push_back(p);
         if (has_normals) {
             std::array<float, 3> n{};
             for (auto& x : n)
-                if (!c.number(x)) return fail(errc::parse_error, where() + ": normal of vertex " + std::to_string(i) + ": " + detail::describe_bad_number(c));
-            if (!detail::all_finite(n)) return fail(errc::parse_error, where() + ": normal of vertex " + std::to_string(i) + " is not finite (NaN or infinity)");
+                if (!c.number(x))
+                    return fail(errc::parse_error, where() + ": normal of vertex " + std::to_string(i) + ": " +
+                                                       detail::describe_bad_number(c));
+            if (!detail::all_finite(n))
+                return fail(errc::parse_error,
+                            where() + ": normal of vertex " + std::to_string(i) + " is not finite (NaN or infinity)");
             soup.attributes.normals.push_back({n[0], n[1], n[2]});
         }
         if (has_colors) {
@@ -87,8 +111,11 @@ inline result<polygon_soup> parse_off(std::string_view text, const std::string& 
             const int wanted = has_texture ? 3 : 4;  // with texture coordinates after, read RGB only
             for (; k < wanted && !c.at_line_end('#'); ++k)
                 if (!c.number(col[static_cast<std::size_t>(k)]))
-                    return fail(errc::parse_error, where() + ": colour of vertex " + std::to_string(i) + ": " + detail::describe_bad_number(c));
-            if (k < 3) return fail(errc::parse_error, where() + ": vertex " + std::to_string(i) + " has no colour (COFF needs r g b)");
+                    return fail(errc::parse_error, where() + ": colour of vertex " + std::to_string(i) + ": " +
+                                                       detail::describe_bad_number(c));
+            if (k < 3)
+                return fail(errc::parse_error,
+                            where() + ": vertex " + std::to_string(i) + " has no colour (COFF needs r g b)");
             // Integer colours run 0..255, float colours 0..1; anything else is refused.
             const bool bytes = std::max({col[0], col[1], col[2], col[3]}) > 1.0;
             std::array<std::uint8_t, 4> rgba{};
@@ -96,8 +123,9 @@ inline result<polygon_soup> parse_off(std::string_view text, const std::string& 
                 const double x = j == 3 && k < 4 ? (bytes ? 255.0 : 1.0) : col[j];
                 const auto byte = detail::color_channel(x, bytes);
                 if (!byte)
-                    return fail(errc::parse_error, where() + ": colour of vertex " + std::to_string(i) + ": channel " + std::to_string(j) + " is " +
-                                                       detail::number_text(x) + ", outside " + (bytes ? "0..255" : "0..1"));
+                    return fail(errc::parse_error, where() + ": colour of vertex " + std::to_string(i) + ": channel " +
+                                                       std::to_string(j) + " is " + detail::number_text(x) +
+                                                       ", outside " + (bytes ? "0..255" : "0..1"));
                 rgba[j] = *byte;
             }
             soup.attributes.colors.push_back(rgba);
@@ -108,19 +136,28 @@ inline result<polygon_soup> parse_off(std::string_view text, const std::string& 
     for (long long f = 0; f < nf; ++f) {
         c.skip_space_and_newlines('#');
         if (c.at_end())
-            return fail(errc::parse_error, name + ":" + std::to_string(c.line()) + ": file ends after " + std::to_string(f) + " of " + std::to_string(nf) +
+            return fail(errc::parse_error, name + ":" + std::to_string(c.line()) + ": file ends after " +
+                                               std::to_string(f) + " of " + std::to_string(nf) +
                                                " faces (header count too large, or truncated file)");
         long long k = 0;
-        if (!c.number(k)) return fail(errc::parse_error, where() + ": face " + std::to_string(f) + ": " + detail::describe_bad_number(c) + " (expected a vertex count)");
-        if (k < 3) return fail(errc::degenerate_face, where() + ": face " + std::to_string(f) + " has " + std::to_string(k) + " vertices; at least 3 needed");
+        if (!c.number(k))
+            return fail(errc::parse_error, where() + ": face " + std::to_string(f) + ": " +
+                                               detail::describe_bad_number(c) + " (expected a vertex count)");
+        if (k < 3)
+            return fail(errc::degenerate_face, where() + ": face " + std::to_string(f) + " has " + std::to_string(k) +
+                                                   " vertices; at least 3 needed");
         for (long long j = 0; j < k; ++j) {
             long long idx = 0;
             if (c.at_line_end('#'))
-                return fail(errc::parse_error, where() + ": face " + std::to_string(f) + " lists fewer than its " + std::to_string(k) + " vertices");
-            if (!c.number(idx)) return fail(errc::parse_error, where() + ": face " + std::to_string(f) + ": " + detail::describe_bad_number(c) + " (expected a vertex index)");
+                return fail(errc::parse_error, where() + ": face " + std::to_string(f) + " lists fewer than its " +
+                                                   std::to_string(k) + " vertices");
+            if (!c.number(idx))
+                return fail(errc::parse_error, where() + ": face " + std::to_string(f) + ": " +
+                                                   detail::describe_bad_number(c) + " (expected a vertex index)");
             if (idx < 0 || idx >= nv)
-                return fail(errc::parse_error, where() + ": face " + std::to_string(f) + " uses vertex " + std::to_string(idx) + ", out of range [0, " +
-                                                   std::to_string(nv) + ")");
+                return fail(errc::parse_error, where() + ": face " + std::to_string(f) + " uses vertex " +
+                                                   std::to_string(idx) + ", out of range [0, " + std::to_string(nv) +
+                                                   ")");
             soup.indices.push_back(static_cast<std::uint32_t>(idx));
         }
         soup.face_offsets.push_back(soup.indices.size());
@@ -128,7 +165,8 @@ inline result<polygon_soup> parse_off(std::string_view text, const std::string& 
         if (!ticker.tick(c.offset())) return detail::progress_ticker::cancelled(where());
     }
     c.skip_space_and_newlines('#');
-    if (!c.at_end()) return fail(errc::parse_error, where() + ": unexpected content after the last face (header counts too small?)");
+    if (!c.at_end())
+        return fail(errc::parse_error, where() + ": unexpected content after the last face (header counts too small?)");
     ticker.finish();
     return soup;
 }
@@ -230,7 +268,8 @@ template <class M, class T = default_traits<M>>
     requires writable_mesh<M, T>
 result<void> write_off(const M& mesh, const std::filesystem::path& path, const write_options& options = {}) {
     if (auto ok = detail::refuse_unwritable<M, T>(mesh, "OFF"); !ok) return detail::at_path(path, ok.error());
-    return detail::write_file_atomically(path, [&](std::ostream& o) { return detail::put_off<M, T>(mesh, o, options); });
+    return detail::write_file_atomically(path,
+                                         [&](std::ostream& o) { return detail::put_off<M, T>(mesh, o, options); });
 }
 
 }  // namespace hmira::io

@@ -30,7 +30,8 @@ namespace hmira::io {
 /// Complexity: O(bytes). Errors (errc::parse_error / degenerate_face / unsupported): a bad
 /// header, truncated data, counts too large or too small, non-numbers, indices out of range,
 /// faces of fewer than 3 vertices.
-inline result<polygon_soup> parse_ply(std::string_view text, const std::string& name, const read_options& options = {}) {
+inline result<polygon_soup> parse_ply(std::string_view text, const std::string& name,
+                                      const read_options& options = {}) {
     auto h = detail::parse_ply_header(text, name);
     if (!h) return h.error();
     polygon_soup soup;
@@ -50,7 +51,8 @@ inline const char* to_string(ply_encoding e) {
 
 /// Reads a PLY file into `mesh`, replacing its content; on error the mesh is unchanged. A model
 /// that takes its arrays whole (face_vertex_mesh) gets the file parsed straight into them: one
-/// validation pass, no copy; halfedge_mesh gets its positions so, when the file needs no repair. Complexity: O(bytes + mesh insertions).
+/// validation pass, no copy; halfedge_mesh gets its positions so, when the file needs no repair. Complexity: O(bytes +
+/// mesh insertions).
 template <class M, class T = default_traits<M>>
     requires readable_mesh<M, T>
 result<read_report> read_ply(M& mesh, const std::filesystem::path& path, const read_options& options = {}) {

@@ -33,7 +33,8 @@ template <class M, class T = default_traits<M>>
     requires writable_mesh<M, T>
 result<void> write_ply_to(const M& mesh, std::ostream& stream, const write_options& options = {}) {
     // Before any byte is written.
-    if (auto ok = detail::refuse_unwritable<M, T>(mesh, "PLY", options.ply_coordinates == ply_scalar::float32); !ok) return ok;
+    if (auto ok = detail::refuse_unwritable<M, T>(mesh, "PLY", options.ply_coordinates == ply_scalar::float32); !ok)
+        return ok;
     if (!detail::put_ply<M, T>(mesh, stream, options)) return detail::stream_failed("PLY");
     return {};
 }
@@ -54,8 +55,10 @@ result<std::string> format_ply(const M& mesh, const write_options& options = {})
 template <class M, class T = default_traits<M>>
     requires writable_mesh<M, T>
 result<void> write_ply(const M& mesh, const std::filesystem::path& path, const write_options& options = {}) {
-    if (auto ok = detail::refuse_unwritable<M, T>(mesh, "PLY", options.ply_coordinates == ply_scalar::float32); !ok) return detail::at_path(path, ok.error());
-    return detail::write_file_atomically(path, [&](std::ostream& o) { return detail::put_ply<M, T>(mesh, o, options); });
+    if (auto ok = detail::refuse_unwritable<M, T>(mesh, "PLY", options.ply_coordinates == ply_scalar::float32); !ok)
+        return detail::at_path(path, ok.error());
+    return detail::write_file_atomically(path,
+                                         [&](std::ostream& o) { return detail::put_ply<M, T>(mesh, o, options); });
 }
 
 }  // namespace hmira::io

@@ -31,7 +31,8 @@ struct points_text_options {
 /// absent. With `csv`, a first line that is not numbers is a header.
 /// Errors: parse_error naming `name:line` for a line with one number or a non-number, and for
 /// a coordinate that is NaN or infinite. Complexity: O(bytes).
-inline result<std::vector<vec3<double>>> parse_points_text(std::string_view text, const std::string& name, bool csv = false) {
+inline result<std::vector<vec3<double>>> parse_points_text(std::string_view text, const std::string& name,
+                                                           bool csv = false) {
     std::vector<vec3<double>> pts;
     detail::line_reader lines(text);
     std::string_view line;
@@ -58,10 +59,13 @@ inline result<std::vector<vec3<double>>> parse_points_text(std::string_view text
         if (bad && csv && lines.line_number() == 1 && pts.empty()) continue;  // a header
         const auto where = [&] { return name + ":" + std::to_string(lines.line_number()); };
         if (bad || (n > 0 && n < 2))
-            return fail(errc::parse_error, where() + ": expected 'x y [z]', found '" + std::string(line.substr(0, 60)) + "'");
+            return fail(errc::parse_error,
+                        where() + ": expected 'x y [z]', found '" + std::string(line.substr(0, 60)) + "'");
         if (n < 2) continue;
         if (!std::isfinite(v[0]) || !std::isfinite(v[1]) || !std::isfinite(v[2]))
-            return fail(errc::parse_error, where() + ": point " + std::to_string(pts.size()) + " has a coordinate that is not finite (NaN or infinity)",
+            return fail(errc::parse_error,
+                        where() + ": point " + std::to_string(pts.size()) +
+                            " has a coordinate that is not finite (NaN or infinity)",
                         static_cast<long long>(pts.size()));
         pts.push_back({v[0], v[1], v[2]});
     }
@@ -70,7 +74,8 @@ inline result<std::vector<vec3<double>>> parse_points_text(std::string_view text
 
 /// Reads a .xyz or .csv point file (see parse_points_text). Errors: io_error when the file
 /// cannot be read (or a non-regular file passes options.max_input_bytes); the parse errors.
-inline result<std::vector<vec3<double>>> read_points_text(const std::filesystem::path& path, const points_text_options& options = {}) {
+inline result<std::vector<vec3<double>>> read_points_text(const std::filesystem::path& path,
+                                                          const points_text_options& options = {}) {
     auto file = detail::input_file::open(path, options.max_input_bytes);
     if (!file) return file.error();
     return parse_points_text(file->text(), path.string(), options.csv);

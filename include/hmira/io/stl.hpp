@@ -32,8 +32,8 @@ namespace hmira::io {
 
 /// What parse_stl found besides the soup.
 struct stl_soup {
-    polygon_soup soup;   ///< the triangles, welded unless asked otherwise
-    bool binary = false;  ///< the file was binary STL
+    polygon_soup soup;                  ///< the triangles, welded unless asked otherwise
+    bool binary = false;                ///< the file was binary STL
     std::size_t dropped_triangles = 0;  ///< triangles whose corners welded together
 };
 
@@ -55,11 +55,14 @@ inline result<stl_soup> parse_stl(std::string_view text, const std::string& name
     const bool size_matches = text.size() >= 84 && text.size() == 84 + 50 * count;
     if (!size_matches && (!solid || detail::looks_binary(text.substr(std::min<std::size_t>(84, text.size()))))) {
         if (text.size() < 84)
-            return fail(errc::parse_error, name + ": byte offset " + std::to_string(text.size()) + ": file too short for a binary STL (" + std::to_string(text.size()) +
+            return fail(errc::parse_error, name + ": byte offset " + std::to_string(text.size()) +
+                                               ": file too short for a binary STL (" + std::to_string(text.size()) +
                                                " bytes; the header alone has 84) and not ASCII STL either");
-        return fail(errc::parse_error, name + ": byte offset 80: binary STL says " + std::to_string(count) + " triangles, which need " +
-                                           std::to_string(84 + 50 * count) + " bytes, but the file has " + std::to_string(text.size()) +
-                                           " (truncated or corrupt file)", static_cast<long long>(count));
+        return fail(errc::parse_error,
+                    name + ": byte offset 80: binary STL says " + std::to_string(count) + " triangles, which need " +
+                        std::to_string(84 + 50 * count) + " bytes, but the file has " + std::to_string(text.size()) +
+                        " (truncated or corrupt file)",
+                    static_cast<long long>(count));
     }
     if (!size_matches) {
         detail::stl_builder b(options.weld_stl, text.size() / 200);
@@ -80,8 +83,10 @@ inline result<stl_soup> parse_stl(std::string_view text, const std::string& name
             if constexpr (std::endian::native == std::endian::big)
                 for (auto& x : tri[v]) x = std::bit_cast<float>(__builtin_bswap32(std::bit_cast<std::uint32_t>(x)));
             if (!detail::all_finite(tri[v]))
-                return fail(errc::parse_error, name + ": byte offset " + std::to_string(p + 12 + 12 * v - text.data()) + ": triangle " + std::to_string(t) +
-                                                   " has a vertex coordinate that is not finite (NaN or infinity)", static_cast<long long>(t));
+                return fail(errc::parse_error,
+                            name + ": byte offset " + std::to_string(p + 12 + 12 * v - text.data()) + ": triangle " +
+                                std::to_string(t) + " has a vertex coordinate that is not finite (NaN or infinity)",
+                            static_cast<long long>(t));
         }
         b.add(tri);
         if ((t & 0xffff) == 0 && !ticker.tick(static_cast<std::uint64_t>(p - text.data())))
@@ -103,7 +108,8 @@ result<read_report> read_stl(M& mesh, const std::filesystem::path& path, const r
     if (!file) return file.error();
     auto s = parse_stl(file->text(), path.string(), options);
     if (!s) return s.error();
-    return finish_read<M, T>(mesh, std::move(s->soup), path.string(), s->binary ? "stl (binary)" : "stl (ascii)", s->dropped_triangles, options);
+    return finish_read<M, T>(mesh, std::move(s->soup), path.string(), s->binary ? "stl (binary)" : "stl (ascii)",
+                             s->dropped_triangles, options);
 }
 
 /// Writes STL through `out`. Triangles are written as they are; every other face (concave, or
@@ -143,7 +149,8 @@ result<void> write_stl(const M& mesh, const std::filesystem::path& path, const w
     if (auto ok = detail::refuse_non_finite<M, T>(mesh, "STL", true); !ok) return detail::at_path(path, ok.error());
     auto plan = detail::plan_stl_triangles<M, T>(mesh);
     if (!plan) return plan.error();
-    return detail::write_file_atomically(path, [&](std::ostream& o) { return detail::write_stl_planned<M, T>(mesh, o, *plan, options); });
+    return detail::write_file_atomically(
+        path, [&](std::ostream& o) { return detail::write_stl_planned<M, T>(mesh, o, *plan, options); });
 }
 
 }  // namespace hmira::io

@@ -49,8 +49,8 @@ struct index_remap {
 template <class Scalar = double>
 class basic_face_vertex_mesh : public with_vertex_properties, public with_face_properties {
 public:
-    using scalar = Scalar;        ///< coordinate type
-    using point = vec3<Scalar>;   ///< position type
+    using scalar = Scalar;       ///< coordinate type
+    using point = vec3<Scalar>;  ///< position type
 
     /// Live element counts, and index bounds (deleted elements included until collected).
     ///@{
@@ -114,7 +114,8 @@ public:
             return *problem;
         }
         if (face_index_bound() >= UINT32_MAX - 1)
-            return fail(errc::invalid_argument, "add_face: the mesh already holds the most faces a 32-bit face handle can name");
+            return fail(errc::invalid_argument,
+                        "add_face: the mesh already holds the most faces a 32-bit face handle can name");
         corners_.insert(corners_.end(), vs.begin(), vs.end());
         face_begin_.push_back(corners_.size());
         face_deleted_.push_back(0);
@@ -157,7 +158,8 @@ public:
     /// and effects as the indexed overload; on an error the mesh and the three arrays are
     /// unchanged.
     /// Complexity: O(V + C) for C corners (O(k log k) for a face of k > 16 corners).
-    result<void> assign(std::vector<point>&& positions, std::vector<std::size_t>&& face_offsets, std::vector<vertex_handle>&& corners) {
+    result<void> assign(std::vector<point>&& positions, std::vector<std::size_t>&& face_offsets,
+                        std::vector<vertex_handle>&& corners) {
         if (auto problem = polygons_problem(positions.size(), face_offsets, corners)) return *problem;
         // Nothing below can fail (short of memory): the mesh changes only now.
         const auto vertex_count = positions.size(), faces = face_offsets.size() - 1;
@@ -184,7 +186,8 @@ public:
     /// Removes a face; its vertices stay. O(1).
     result<void> remove_face(face_handle f) {
         if (!is_valid(f))
-            return fail(errc::invalid_handle, "remove_face: face " + std::to_string(f.index) + " does not exist", f.index);
+            return fail(errc::invalid_handle, "remove_face: face " + std::to_string(f.index) + " does not exist",
+                        f.index);
         face_deleted_[f.index] = 1;
         ++deleted_faces_;
         ++changes_;
@@ -195,7 +198,8 @@ public:
     /// vertex -> face links.
     result<void> remove_vertex(vertex_handle v) {
         if (!is_valid(v))
-            return fail(errc::invalid_handle, "remove_vertex: vertex " + std::to_string(v.index) + " does not exist", v.index);
+            return fail(errc::invalid_handle, "remove_vertex: vertex " + std::to_string(v.index) + " does not exist",
+                        v.index);
         for (auto f : faces()) {
             auto fv = face_vertices(f);
             if (std::find(fv.begin(), fv.end(), v) != fv.end()) {
@@ -216,8 +220,10 @@ public:
         for (std::size_t i = 0; i < vs.size(); ++i) {
             if (!is_valid(vs[i])) {  // marking as we go makes a repeat look deleted too
                 for (std::size_t k = 0; k < i; ++k) vertex_deleted_[vs[k].index] = 0;
-                return fail(errc::invalid_handle,
-                            "remove_vertices: vertex " + std::to_string(vs[i].index) + " does not exist or is named twice", vs[i].index);
+                return fail(
+                    errc::invalid_handle,
+                    "remove_vertices: vertex " + std::to_string(vs[i].index) + " does not exist or is named twice",
+                    vs[i].index);
             }
             vertex_deleted_[vs[i].index] = 1;
         }
@@ -308,17 +314,22 @@ private:
     static std::optional<error> polygons_problem(std::size_t vertex_count, std::span<const std::size_t> face_offsets,
                                                  std::span<const vertex_handle> corners) {
         if (face_offsets.empty() || face_offsets.front() != 0 || face_offsets.back() != corners.size())
-            return error{errc::invalid_argument, "assign: the face offsets must start at 0 and end at the corner count " + std::to_string(corners.size())};
+            return error{errc::invalid_argument,
+                         "assign: the face offsets must start at 0 and end at the corner count " +
+                             std::to_string(corners.size())};
         const std::size_t faces = face_offsets.size() - 1;
         if (faces >= UINT32_MAX - 1 || vertex_count >= UINT32_MAX)
-            return error{errc::invalid_argument, "assign: " + std::to_string(vertex_count) + " vertices and " + std::to_string(faces) +
+            return error{errc::invalid_argument, "assign: " + std::to_string(vertex_count) + " vertices and " +
+                                                     std::to_string(faces) +
                                                      " faces; 32-bit handles name fewer than 2^32 - 1 of each"};
         auto exists = [&](vertex_handle v) { return v.index < vertex_count; };
         for (std::size_t f = 0; f < faces; ++f) {
             const auto begin = face_offsets[f], end = face_offsets[f + 1];
             if (end < begin || end > corners.size())
-                return error{errc::invalid_argument, "assign: face " + std::to_string(f) + ": its offsets " + std::to_string(begin) + ".." +
-                                                         std::to_string(end) + " are out of order", static_cast<long long>(f)};
+                return error{errc::invalid_argument,
+                             "assign: face " + std::to_string(f) + ": its offsets " + std::to_string(begin) + ".." +
+                                 std::to_string(end) + " are out of order",
+                             static_cast<long long>(f)};
             if (end - begin == 3) {
                 // Triangles, the common case, checked inline; a refused one takes the general
                 // path below for its message.
@@ -341,11 +352,13 @@ private:
             return error{errc::degenerate_face, "a face needs at least 3 vertices, got " + std::to_string(vs.size())};
         for (std::size_t i = 0; i < vs.size(); ++i)
             if (!exists(vs[i]))
-                return error{errc::invalid_handle, "corner " + std::to_string(i) + " names vertex " +
-                                                       std::to_string(static_cast<long long>(vs[i].index)) + ", which does not exist",
+                return error{errc::invalid_handle,
+                             "corner " + std::to_string(i) + " names vertex " +
+                                 std::to_string(static_cast<long long>(vs[i].index)) + ", which does not exist",
                              static_cast<long long>(vs[i].index)};
         if (auto repeated = find_repeated(vs))
-            return error{errc::degenerate_face, "vertex " + std::to_string(*repeated) + " appears twice in the face", *repeated};
+            return error{errc::degenerate_face, "vertex " + std::to_string(*repeated) + " appears twice in the face",
+                         *repeated};
         return std::nullopt;
     }
 

@@ -55,16 +55,20 @@ namespace hmira {
 /// versioned handle is false once its element is gone, whether or not the slot was reused.
 /// set_slot_reuse(false) makes every new element append (index order = creation order).
 /// collect_garbage() compacts and reports the old -> new maps; it invalidates every handle,
-/// versioned ones included. Const queries may run concurrently; mutations need exclusive access. Mutation at the raw level (set_next, new_edge, erase_*) keeps nothing
+/// versioned ones included. Const queries may run concurrently; mutations need exclusive access. Mutation at the raw
+/// level (set_next, new_edge, erase_*) keeps nothing
 /// consistent by itself: it is the layer the Euler operators are written on.
 ///
 /// Per-vertex, -edge, -halfedge and -face user data by name: add/get/remove_*_property, from
 /// the with_*_properties bases (properties.hpp); properties follow garbage collection.
 template <class Scalar = double>
-class basic_halfedge_mesh : public with_vertex_properties, public with_edge_properties, public with_halfedge_properties, public with_face_properties {
+class basic_halfedge_mesh : public with_vertex_properties,
+                            public with_edge_properties,
+                            public with_halfedge_properties,
+                            public with_face_properties {
 public:
-    using scalar = Scalar;        ///< coordinate type
-    using point = vec3<Scalar>;   ///< position type
+    using scalar = Scalar;       ///< coordinate type
+    using point = vec3<Scalar>;  ///< position type
 
     // ----- counts and ranges -----------------------------------------------------------------
     /// Live element counts, and index bounds (deleted elements included until collected).
@@ -163,11 +167,15 @@ public:
     vertex_handle source(halfedge_handle h) const { return halfedges_[h.index ^ 1u].target; }
     face_handle face(halfedge_handle h) const { return halfedges_[h.index].face; }
     static constexpr edge_handle edge(halfedge_handle h) noexcept { return edge_handle(h.index >> 1); }
-    static constexpr halfedge_handle edge_halfedge(edge_handle e, unsigned i = 0) noexcept { return halfedge_handle(2 * e.index + i); }
+    static constexpr halfedge_handle edge_halfedge(edge_handle e, unsigned i = 0) noexcept {
+        return halfedge_handle(2 * e.index + i);
+    }
     halfedge_handle vertex_halfedge(vertex_handle v) const { return vertex_out_[v.index]; }
     halfedge_handle face_halfedge(face_handle f) const { return faces_[f.index]; }
     bool is_boundary(halfedge_handle h) const { return face(h).is_null(); }
-    bool is_boundary(edge_handle e) const { return is_boundary(edge_halfedge(e, 0)) || is_boundary(edge_halfedge(e, 1)); }
+    bool is_boundary(edge_handle e) const {
+        return is_boundary(edge_halfedge(e, 0)) || is_boundary(edge_halfedge(e, 1));
+    }
     /// A vertex is on the boundary when its stored outgoing halfedge is (kept so by add_face),
     /// or when it is isolated.
     bool is_boundary(vertex_handle v) const {
@@ -237,7 +245,9 @@ public:
         return out;
     }
     /// Number of edges at v. O(V_adjacentV).
-    std::size_t valence(vertex_handle v) const { return static_cast<std::size_t>(std::ranges::distance(outgoing_halfedges(v))); }
+    std::size_t valence(vertex_handle v) const {
+        return static_cast<std::size_t>(std::ranges::distance(outgoing_halfedges(v)));
+    }
 
     /// Finds the halfedge from a to b, or null. O(V_adjacentV).
     halfedge_handle find_halfedge(vertex_handle a, vertex_handle b) const {
@@ -335,8 +345,8 @@ public:
     /// from the vertex's other fans by boundary gaps (a pinch that validate() reports as a
     /// non-manifold vertex until the faces between the fans are added).
     result<face_handle> add_face(std::span<const vertex_handle> vs) {
-        return detail::link_face<basic_halfedge_mesh, mesh_traits<basic_halfedge_mesh>>(*this, vs, link_scratch_,
-                                                                                        [this](vertex_handle v) { return is_valid(v); });
+        return detail::link_face<basic_halfedge_mesh, mesh_traits<basic_halfedge_mesh>>(
+            *this, vs, link_scratch_, [this](vertex_handle v) { return is_valid(v); });
     }
 
     /// Makes the stored outgoing halfedge of v a boundary one if v has any. O(V_adjacentV).
@@ -360,9 +370,12 @@ public:
     /// Scratch memory: 4 bytes per corner and 8 per vertex besides the mesh (an input it
     /// refuses after the per-face checks is gone over a second time, with 12 bytes per corner
     /// more, to name the same element whatever the face order).
-    static result<basic_halfedge_mesh> from_polygons(std::span<const point> points, std::span<const std::uint32_t> face_offsets,
+    static result<basic_halfedge_mesh> from_polygons(std::span<const point> points,
+                                                     std::span<const std::uint32_t> face_offsets,
                                                      std::span<const std::uint32_t> corners) {
-        return detail::halfedge_from_polygons<basic_halfedge_mesh>::build(points.size(), [&](std::vector<point>& out) { out.assign(points.begin(), points.end()); }, face_offsets, corners);
+        return detail::halfedge_from_polygons<basic_halfedge_mesh>::build(
+            points.size(), [&](std::vector<point>& out) { out.assign(points.begin(), points.end()); }, face_offsets,
+            corners);
     }
 
     /// Replaces this mesh's elements with the indexed polygons, as from_polygons builds them
@@ -381,7 +394,9 @@ public:
             points.size(),
             [&](std::vector<point>& out) {
                 out.reserve(points.size());
-                for (const auto& p : points) out.push_back(point{static_cast<Scalar>(p[0]), static_cast<Scalar>(p[1]), static_cast<Scalar>(p[2])});
+                for (const auto& p : points)
+                    out.push_back(
+                        point{static_cast<Scalar>(p[0]), static_cast<Scalar>(p[1]), static_cast<Scalar>(p[2])});
             },
             face_offsets, corners);
         if (!built) return built.error();
@@ -393,8 +408,10 @@ public:
     /// (no copy; `positions` is left empty), on error the mesh and `positions` are unchanged.
     template <class Offset>
         requires(std::same_as<Offset, std::uint32_t> || std::same_as<Offset, std::uint64_t>)
-    result<void> assign_polygons(std::vector<point>& positions, std::span<const Offset> face_offsets, std::span<const std::uint32_t> corners) {
-        auto built = detail::halfedge_from_polygons<basic_halfedge_mesh>::build(positions.size(), [&](std::vector<point>& out) { out = std::move(positions); }, face_offsets, corners);
+    result<void> assign_polygons(std::vector<point>& positions, std::span<const Offset> face_offsets,
+                                 std::span<const std::uint32_t> corners) {
+        auto built = detail::halfedge_from_polygons<basic_halfedge_mesh>::build(
+            positions.size(), [&](std::vector<point>& out) { out = std::move(positions); }, face_offsets, corners);
         if (!built) return built.error();
         adopt_elements(std::move(*built));
         return {};
@@ -440,16 +457,30 @@ private:
     }
 
 public:
-
     // ----- raw mutation (the layer Euler operators use; keeps nothing consistent) ------------------
     /// Raw setters, O(1): next (and the next's prev), target, face, a vertex's outgoing and a
     /// face's outer halfedge.
     ///@{
-    void set_next(halfedge_handle h, halfedge_handle n) { link(h, n); ++changes_; }
-    void set_target(halfedge_handle h, vertex_handle v) { halfedges_[h.index].target = v; ++changes_; }
-    void set_face(halfedge_handle h, face_handle f) { halfedges_[h.index].face = f; ++changes_; }
-    void set_vertex_halfedge(vertex_handle v, halfedge_handle h) { vertex_out_[v.index] = h; ++changes_; }
-    void set_face_halfedge(face_handle f, halfedge_handle h) { faces_[f.index] = h; ++changes_; }
+    void set_next(halfedge_handle h, halfedge_handle n) {
+        link(h, n);
+        ++changes_;
+    }
+    void set_target(halfedge_handle h, vertex_handle v) {
+        halfedges_[h.index].target = v;
+        ++changes_;
+    }
+    void set_face(halfedge_handle h, face_handle f) {
+        halfedges_[h.index].face = f;
+        ++changes_;
+    }
+    void set_vertex_halfedge(vertex_handle v, halfedge_handle h) {
+        vertex_out_[v.index] = h;
+        ++changes_;
+    }
+    void set_face_halfedge(face_handle f, halfedge_handle h) {
+        faces_[f.index] = h;
+        ++changes_;
+    }
     ///@}
 
     /// A new edge from a to b, in a freed slot if there is one; returns the halfedge a->b.
@@ -527,7 +558,9 @@ public:
     /// its outgoing halfedge, or on the boundary the boundary halfedge that entered it (now
     /// leaving it). Faces keep their outer halfedge and inner rings; handles stay valid.
     /// O(H_all + V_all), no scratch memory.
-    void reverse_orientation() noexcept { detail::halfedge_maintenance<basic_halfedge_mesh>::reverse_orientation(*this); }
+    void reverse_orientation() noexcept {
+        detail::halfedge_maintenance<basic_halfedge_mesh>::reverse_orientation(*this);
+    }
 
     /// Whether deleted elements wait for collect_garbage().
     bool has_garbage() const noexcept { return deleted_vertices_ + deleted_edges_ + deleted_faces_ > 0; }
@@ -641,7 +674,9 @@ struct mesh_traits<basic_halfedge_mesh<Scalar>> : detail::native_halfedge_traits
     static void reverse_orientation(mesh& m) noexcept { m.reverse_orientation(); }
     /// Optional (not a concept requirement): room for this many elements (index bounds), which
     /// the edits and subdivision use before they grow the mesh.
-    static void reserve(mesh& m, std::size_t vertices, std::size_t edges, std::size_t faces) { m.reserve(vertices, edges, faces); }
+    static void reserve(mesh& m, std::size_t vertices, std::size_t edges, std::size_t faces) {
+        m.reserve(vertices, edges, faces);
+    }
     /// Optional (not a concept requirement): unlinked elements appended or dropped in bulk,
     /// and the element of an index, so that subdivision takes its new elements in blocks
     /// (bulk_growable_mesh) instead of one add_vertex, new_edge or new_face each.

@@ -49,8 +49,8 @@ using halfedge_handle = index_handle<halfedge_tag>;
 /// newer element. Valid until collect_garbage, which renumbers everything.
 template <class Tag>
 struct versioned_handle {
-    index_handle<Tag> handle;     ///< the element's handle
-    std::uint32_t generation = 0; ///< its slot's generation when the handle was taken
+    index_handle<Tag> handle;      ///< the element's handle
+    std::uint32_t generation = 0;  ///< its slot's generation when the handle was taken
     /// Equal when both the slot and the generation are.
     friend constexpr bool operator==(versioned_handle, versioned_handle) = default;
 };

@@ -195,9 +195,13 @@ public:
     /// Adds (or gets) a vertex property, find one, remove one by name.
     ///@{
     template <class T>
-    property<vertex_handle, T> add_vertex_property(std::string_view name, T init = T{}) { return vertex_props_.template add<T>(name, std::move(init)); }
+    property<vertex_handle, T> add_vertex_property(std::string_view name, T init = T{}) {
+        return vertex_props_.template add<T>(name, std::move(init));
+    }
     template <class T>
-    std::optional<property<vertex_handle, T>> get_vertex_property(std::string_view name) const { return vertex_props_.template find<T>(name); }
+    std::optional<property<vertex_handle, T>> get_vertex_property(std::string_view name) const {
+        return vertex_props_.template find<T>(name);
+    }
     bool remove_vertex_property(std::string_view name) { return vertex_props_.remove(name); }
     ///@}
 
@@ -211,9 +215,13 @@ public:
     /// Adds (or gets) a face property, find one, remove one by name.
     ///@{
     template <class T>
-    property<face_handle, T> add_face_property(std::string_view name, T init = T{}) { return face_props_.template add<T>(name, std::move(init)); }
+    property<face_handle, T> add_face_property(std::string_view name, T init = T{}) {
+        return face_props_.template add<T>(name, std::move(init));
+    }
     template <class T>
-    std::optional<property<face_handle, T>> get_face_property(std::string_view name) const { return face_props_.template find<T>(name); }
+    std::optional<property<face_handle, T>> get_face_property(std::string_view name) const {
+        return face_props_.template find<T>(name);
+    }
     bool remove_face_property(std::string_view name) { return face_props_.remove(name); }
     ///@}
 
@@ -227,9 +235,13 @@ public:
     /// Adds (or gets) an edge property, find one, remove one by name.
     ///@{
     template <class T>
-    property<edge_handle, T> add_edge_property(std::string_view name, T init = T{}) { return edge_props_.template add<T>(name, std::move(init)); }
+    property<edge_handle, T> add_edge_property(std::string_view name, T init = T{}) {
+        return edge_props_.template add<T>(name, std::move(init));
+    }
     template <class T>
-    std::optional<property<edge_handle, T>> get_edge_property(std::string_view name) const { return edge_props_.template find<T>(name); }
+    std::optional<property<edge_handle, T>> get_edge_property(std::string_view name) const {
+        return edge_props_.template find<T>(name);
+    }
     bool remove_edge_property(std::string_view name) { return edge_props_.remove(name); }
     ///@}
 
@@ -243,9 +255,13 @@ public:
     /// Adds (or gets) a halfedge property, find one, remove one by name.
     ///@{
     template <class T>
-    property<halfedge_handle, T> add_halfedge_property(std::string_view name, T init = T{}) { return halfedge_props_.template add<T>(name, std::move(init)); }
+    property<halfedge_handle, T> add_halfedge_property(std::string_view name, T init = T{}) {
+        return halfedge_props_.template add<T>(name, std::move(init));
+    }
     template <class T>
-    std::optional<property<halfedge_handle, T>> get_halfedge_property(std::string_view name) const { return halfedge_props_.template find<T>(name); }
+    std::optional<property<halfedge_handle, T>> get_halfedge_property(std::string_view name) const {
+        return halfedge_props_.template find<T>(name);
+    }
     bool remove_halfedge_property(std::string_view name) { return halfedge_props_.remove(name); }
     ///@}
 

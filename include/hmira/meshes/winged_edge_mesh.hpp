@@ -65,10 +65,10 @@ public:
 
     /// One winged edge. Wing references are halfedge indices 2e' + s' (edge e', side s').
     struct edge_record {
-        std::array<vertex_handle, 2> vertex;        ///< from, to
-        std::array<face_handle, 2> face;            ///< forward side, backward side (null: boundary)
-        std::array<halfedge_handle, 2> next_wing;   ///< the wing after e in face[s]'s loop
-        std::array<halfedge_handle, 2> prev_wing;   ///< the wing before e in face[s]'s loop
+        std::array<vertex_handle, 2> vertex;       ///< from, to
+        std::array<face_handle, 2> face;           ///< forward side, backward side (null: boundary)
+        std::array<halfedge_handle, 2> next_wing;  ///< the wing after e in face[s]'s loop
+        std::array<halfedge_handle, 2> prev_wing;  ///< the wing before e in face[s]'s loop
     };
 
     // ----- counts and ranges -----------------------------------------------------------------
@@ -111,7 +111,9 @@ public:
     bool is_valid(vertex_handle v) const noexcept { return v.index < positions_.size() && !vertex_deleted_[v.index]; }
     bool is_valid(face_handle f) const noexcept { return f.index < face_edge_.size() && !face_deleted_[f.index]; }
     bool is_valid(edge_handle e) const noexcept { return e.index < edges_.size() && !edge_deleted_[e.index]; }
-    bool is_valid(halfedge_handle h) const noexcept { return (h.index >> 1) < edges_.size() && !edge_deleted_[h.index >> 1]; }
+    bool is_valid(halfedge_handle h) const noexcept {
+        return (h.index >> 1) < edges_.size() && !edge_deleted_[h.index >> 1];
+    }
     ///@}
 
     // ----- the winged-edge records, O(1) -----------------------------------------------------
@@ -123,7 +125,9 @@ public:
     std::array<vertex_handle, 2> edge_vertices(edge_handle e) const { return edges_[e.index].vertex; }
     /// The edge this vertex keeps (null if isolated), and the one this face keeps. O(1).
     ///@{
-    edge_handle vertex_edge(vertex_handle v) const { return vertex_out_[v.index].is_null() ? edge_handle{} : edge(vertex_out_[v.index]); }
+    edge_handle vertex_edge(vertex_handle v) const {
+        return vertex_out_[v.index].is_null() ? edge_handle{} : edge(vertex_out_[v.index]);
+    }
     edge_handle face_edge(face_handle f) const { return edge(face_edge_[f.index]); }
     ///@}
 
@@ -136,7 +140,9 @@ public:
     /// The other side of the same edge: (e, 1 - s).
     static constexpr halfedge_handle opposite(halfedge_handle h) noexcept { return halfedge_handle(h.index ^ 1u); }
     /// The halfedge (e, s); side 0 (the default) runs vertex[0] -> vertex[1].
-    static constexpr halfedge_handle edge_halfedge(edge_handle e, unsigned s = 0) noexcept { return halfedge_handle(2 * e.index + s); }
+    static constexpr halfedge_handle edge_halfedge(edge_handle e, unsigned s = 0) noexcept {
+        return halfedge_handle(2 * e.index + s);
+    }
     /// The next halfedge in h's loop (the next wing of its side). O(1).
     halfedge_handle next(halfedge_handle h) const { return edges_[h.index >> 1].next_wing[h.index & 1u]; }
     /// The previous halfedge in h's loop (the previous wing of its side). O(1).
@@ -156,7 +162,9 @@ public:
     /// side; a vertex whose kept edge is a boundary one, or that is isolated.
     ///@{
     bool is_boundary(halfedge_handle h) const { return face(h).is_null(); }
-    bool is_boundary(edge_handle e) const { return edges_[e.index].face[0].is_null() || edges_[e.index].face[1].is_null(); }
+    bool is_boundary(edge_handle e) const {
+        return edges_[e.index].face[0].is_null() || edges_[e.index].face[1].is_null();
+    }
     bool is_boundary(vertex_handle v) const {
         const auto h = vertex_out_[v.index];
         return h.is_null() || is_boundary(h);
@@ -221,7 +229,9 @@ public:
     /// Faces across f's edges (the other wing of each edge), O(F_adjacentF).
     loop<loop_across_step> adjacent_faces(face_handle f) const { return {*this, face_halfedge(f)}; }
     /// Number of edges at v (0 if isolated). O(V_adjacentV).
-    std::size_t valence(vertex_handle v) const { return static_cast<std::size_t>(std::ranges::distance(outgoing_halfedges(v))); }
+    std::size_t valence(vertex_handle v) const {
+        return static_cast<std::size_t>(std::ranges::distance(outgoing_halfedges(v)));
+    }
 
     /// The side of an edge running from a to b, or null. O(V_adjacentV).
     halfedge_handle find_halfedge(vertex_handle a, vertex_handle b) const {
@@ -261,8 +271,8 @@ public:
     /// Faces may arrive in any order: a face may touch a vertex in a fan of its own (a pinch
     /// that validate() reports until the faces between the fans are added).
     result<face_handle> add_face(std::span<const vertex_handle> vs) {
-        return detail::link_face<basic_winged_edge_mesh, mesh_traits<basic_winged_edge_mesh>>(*this, vs, link_scratch_,
-                                                                                              [this](vertex_handle v) { return is_valid(v); });
+        return detail::link_face<basic_winged_edge_mesh, mesh_traits<basic_winged_edge_mesh>>(
+            *this, vs, link_scratch_, [this](vertex_handle v) { return is_valid(v); });
     }
 
     /// Makes the edge a vertex keeps a boundary one if the vertex has any. O(V_adjacentV).
@@ -272,15 +282,30 @@ public:
 
     // ----- raw mutation on the records (the halfedge layer; keeps nothing consistent) ---------
     /// Makes n follow h in its loop: sets h's next wing and n's previous wing. O(1).
-    void set_next(halfedge_handle h, halfedge_handle n) { link(h, n); ++changes_; }
+    void set_next(halfedge_handle h, halfedge_handle n) {
+        link(h, n);
+        ++changes_;
+    }
     /// Sets the vertex h points to (vertex[1 - s] of its edge). O(1).
-    void set_target(halfedge_handle h, vertex_handle v) { edges_[h.index >> 1].vertex[1u - (h.index & 1u)] = v; ++changes_; }
+    void set_target(halfedge_handle h, vertex_handle v) {
+        edges_[h.index >> 1].vertex[1u - (h.index & 1u)] = v;
+        ++changes_;
+    }
     /// Sets the face on h's side (null: boundary). O(1).
-    void set_face(halfedge_handle h, face_handle f) { edges_[h.index >> 1].face[h.index & 1u] = f; ++changes_; }
+    void set_face(halfedge_handle h, face_handle f) {
+        edges_[h.index >> 1].face[h.index & 1u] = f;
+        ++changes_;
+    }
     /// Sets the outgoing halfedge v keeps. O(1).
-    void set_vertex_halfedge(vertex_handle v, halfedge_handle h) { vertex_out_[v.index] = h; ++changes_; }
+    void set_vertex_halfedge(vertex_handle v, halfedge_handle h) {
+        vertex_out_[v.index] = h;
+        ++changes_;
+    }
     /// Sets the halfedge f keeps (one of its loop). O(1).
-    void set_face_halfedge(face_handle f, halfedge_handle h) { face_edge_[f.index] = h; ++changes_; }
+    void set_face_halfedge(face_handle f, halfedge_handle h) {
+        face_edge_[f.index] = h;
+        ++changes_;
+    }
 
     /// A new edge from a to b; returns its forward side (a -> b). Wings unset, faces null.
     halfedge_handle new_edge(vertex_handle a, vertex_handle b) {
@@ -302,13 +327,25 @@ public:
     /// touch the references to it. O(1).
     ///@{
     void erase_edge(edge_handle e) {
-        if (!edge_deleted_[e.index]) { edge_deleted_[e.index] = 1; ++deleted_edges_; ++changes_; }
+        if (!edge_deleted_[e.index]) {
+            edge_deleted_[e.index] = 1;
+            ++deleted_edges_;
+            ++changes_;
+        }
     }
     void erase_face(face_handle f) {
-        if (!face_deleted_[f.index]) { face_deleted_[f.index] = 1; ++deleted_faces_; ++changes_; }
+        if (!face_deleted_[f.index]) {
+            face_deleted_[f.index] = 1;
+            ++deleted_faces_;
+            ++changes_;
+        }
     }
     void erase_vertex(vertex_handle v) {
-        if (!vertex_deleted_[v.index]) { vertex_deleted_[v.index] = 1; ++deleted_vertices_; ++changes_; }
+        if (!vertex_deleted_[v.index]) {
+            vertex_deleted_[v.index] = 1;
+            ++deleted_vertices_;
+            ++changes_;
+        }
     }
     ///@}
 
@@ -333,9 +370,17 @@ public:
         map.halfedges.assign(2 * edges_.size(), UINT32_MAX);
         for (std::size_t h = 0; h < map.halfedges.size(); ++h)
             if (map.edges[h >> 1] != UINT32_MAX) map.halfedges[h] = 2 * map.edges[h >> 1] + (h & 1u);
-        auto mv = [&](vertex_handle v) { return v.is_null() || v.index >= map.vertices.size() ? vertex_handle{} : vertex_handle(map.vertices[v.index]); };
-        auto mh = [&](halfedge_handle h) { return h.is_null() || h.index >= map.halfedges.size() ? halfedge_handle{} : halfedge_handle(map.halfedges[h.index]); };
-        auto mf = [&](face_handle f) { return f.is_null() || f.index >= map.faces.size() ? face_handle{} : face_handle(map.faces[f.index]); };
+        auto mv = [&](vertex_handle v) {
+            return v.is_null() || v.index >= map.vertices.size() ? vertex_handle{}
+                                                                 : vertex_handle(map.vertices[v.index]);
+        };
+        auto mh = [&](halfedge_handle h) {
+            return h.is_null() || h.index >= map.halfedges.size() ? halfedge_handle{}
+                                                                  : halfedge_handle(map.halfedges[h.index]);
+        };
+        auto mf = [&](face_handle f) {
+            return f.is_null() || f.index >= map.faces.size() ? face_handle{} : face_handle(map.faces[f.index]);
+        };
         for (std::size_t v = 0; v < positions_.size(); ++v)
             if (map.vertices[v] != UINT32_MAX) {
                 positions_[map.vertices[v]] = positions_[v];
@@ -430,7 +475,9 @@ struct mesh_traits<basic_winged_edge_mesh<Scalar>> : detail::native_halfedge_tra
 
     static auto edge_faces(const mesh& m, edge_handle e) { return m.edge_faces(e); }
     /// Optional (not a concept requirement): room for this many elements.
-    static void reserve(mesh& m, std::size_t vertices, std::size_t edges, std::size_t faces) { m.reserve(vertices, edges, faces); }
+    static void reserve(mesh& m, std::size_t vertices, std::size_t edges, std::size_t faces) {
+        m.reserve(vertices, edges, faces);
+    }
 };
 
 }  // namespace hmira

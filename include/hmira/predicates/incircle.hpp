@@ -24,8 +24,7 @@ inline int incircle_exact(double ax, double ay, double bx, double by, double cx,
     const expansion<2> adx = exact_diff(ax, dx), ady = exact_diff(ay, dy);
     const expansion<2> bdx = exact_diff(bx, dx), bdy = exact_diff(by, dy);
     const expansion<2> cdx = exact_diff(cx, dx), cdy = exact_diff(cy, dy);
-    auto cross = [](const expansion<2>& ux, const expansion<2>& uy, const expansion<2>& vx,
-                    const expansion<2>& vy) {
+    auto cross = [](const expansion<2>& ux, const expansion<2>& uy, const expansion<2>& vx, const expansion<2>& vy) {
         expansion<8> l, r;
         expansion_product(ux, vy, l);
         expansion_product(uy, vx, r);

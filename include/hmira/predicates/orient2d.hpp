@@ -13,7 +13,7 @@ namespace hmira::predicates {
 /// Coordinates the predicates accept: 0, or a magnitude in [min_magnitude, max_magnitude].
 /// Within that range no intermediate of orient2d or incircle overflows, and none underflows
 /// into subnormals, so the error bounds and the exact stages hold. Callers reject the rest.
-inline constexpr double max_magnitude = 0x1p180;  // ~1.5e54
+inline constexpr double max_magnitude = 0x1p180;   // ~1.5e54
 inline constexpr double min_magnitude = 0x1p-180;  // ~6.5e-55
 
 /// True if v is finite and 0 or in [min_magnitude, max_magnitude].

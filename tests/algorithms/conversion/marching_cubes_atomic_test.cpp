@@ -28,8 +28,11 @@ struct faulty_builder_traits : hmira::default_traits<M> {
     using V = typename base::vertex_handle;
     using F = typename base::face_handle;
     static inline long long refuse_at = -1, throw_at = -1;  // countdowns; -1: off
-    static inline long long face_calls = 0, calls = 0;  // not `faces`: that would hide T::faces
-    static void reset() { refuse_at = throw_at = -1; face_calls = calls = 0; }
+    static inline long long face_calls = 0, calls = 0;      // not `faces`: that would hide T::faces
+    static void reset() {
+        refuse_at = throw_at = -1;
+        face_calls = calls = 0;
+    }
     static void tick() {
         ++calls;
         if (throw_at >= 0 && throw_at-- == 0) throw std::bad_alloc();
@@ -47,7 +50,8 @@ struct faulty_builder_traits : hmira::default_traits<M> {
 };
 
 static_assert(hmira::detail::mc::can_undo_insertion<hmira::halfedge_mesh, faulty_builder_traits<hmira::halfedge_mesh>>);
-static_assert(hmira::detail::mc::can_undo_insertion<hmira::face_vertex_mesh, faulty_builder_traits<hmira::face_vertex_mesh>>);
+static_assert(
+    hmira::detail::mc::can_undo_insertion<hmira::face_vertex_mesh, faulty_builder_traits<hmira::face_vertex_mesh>>);
 
 template <class M>
 struct mc_atomic : ::testing::Test {};
@@ -63,14 +67,16 @@ M with_content() {
 
 /// A small sphere: a few hundred triangles, so every k can be tried.
 hmira::dense_grid<double> small_sphere() {
-    auto g = hmira::sample_function<double>(hmira::cube_geometry(7, -1, 1), hmira::sphere_field{{0.05, -0.03, 0.02}, 0.6});
+    auto g =
+        hmira::sample_function<double>(hmira::cube_geometry(7, -1, 1), hmira::sphere_field{{0.05, -0.03, 0.02}, 0.6});
     EXPECT_TRUE(g);
     return std::move(*g);
 }
 
 /// What a clean run on `base` gives: its counts after the call.
 template <class M, class T = hmira::default_traits<M>>
-void expect_clean_run_adds_the_sphere(M& m, std::size_t base_v, std::size_t base_f, std::size_t sphere_v, std::size_t sphere_f) {
+void expect_clean_run_adds_the_sphere(M& m, std::size_t base_v, std::size_t base_f, std::size_t sphere_v,
+                                      std::size_t sphere_f) {
     auto r = hmira::marching_cubes<M, T>(m, small_sphere());
     ASSERT_TRUE(r) << r.error().message;
     EXPECT_EQ(r.value().vertices.size(), sphere_v);
@@ -113,7 +119,8 @@ TYPED_TEST(mc_atomic, a_cancel_at_every_progress_call_leaves_the_mesh_unchanged)
         ASSERT_FALSE(r) << "cancelled at call " << k << " but succeeded";
         EXPECT_EQ(r.error().code, hmira::errc::cancelled);
         EXPECT_NE(r.error().message.find("cancelled"), std::string::npos) << r.error().message;
-        ASSERT_TRUE((hmira_test::snapshot<M, T>(m) == before)) << "cancelled at progress call " << k << " of " << calls << ": mesh changed";
+        ASSERT_TRUE((hmira_test::snapshot<M, T>(m) == before))
+            << "cancelled at progress call " << k << " of " << calls << ": mesh changed";
         expect_clean_run_adds_the_sphere<M, T>(m, T::vertex_count(base), T::face_count(base), sphere_v, sphere_f);
     }
 }
@@ -140,15 +147,18 @@ TYPED_TEST(mc_atomic, a_refused_triangle_or_bad_alloc_at_every_step_leaves_the_m
         auto r = hmira::marching_cubes<M, FT>(m, grid);
         ASSERT_FALSE(r) << "triangle " << k << " was refused but the call succeeded";
         EXPECT_EQ(r.error().code, hmira::errc::non_manifold);
-        EXPECT_NE(r.error().message.find("triangle " + std::to_string(k) + " "), std::string::npos) << r.error().message;
-        ASSERT_TRUE((hmira_test::snapshot<M, T>(m) == before)) << "triangle " << k << " of " << faces << " refused: mesh changed";
+        EXPECT_NE(r.error().message.find("triangle " + std::to_string(k) + " "), std::string::npos)
+            << r.error().message;
+        ASSERT_TRUE((hmira_test::snapshot<M, T>(m) == before))
+            << "triangle " << k << " of " << faces << " refused: mesh changed";
     }
     for (long long k = 0; k < calls; ++k) {
         M m = base;
         FT::reset();
         FT::throw_at = k;
         EXPECT_THROW(((void)hmira::marching_cubes<M, FT>(m, grid)), std::bad_alloc) << "call " << k;
-        ASSERT_TRUE((hmira_test::snapshot<M, T>(m) == before)) << "bad_alloc from builder call " << k << " of " << calls << ": mesh changed";
+        ASSERT_TRUE((hmira_test::snapshot<M, T>(m) == before))
+            << "bad_alloc from builder call " << k << " of " << calls << ": mesh changed";
         if (k % 97 == 0) {  // and the mesh still takes the whole surface afterwards
             FT::reset();
             ASSERT_TRUE((hmira::marching_cubes<M, FT>(m, grid)));
@@ -176,14 +186,16 @@ TYPED_TEST(mc_atomic, bad_volumes_are_refused_before_the_mesh_is_touched) {
         auto q = hmira::marching_cubes<M, T>(m, inf_grid);
         ASSERT_FALSE(q);
         EXPECT_EQ(q.error().code, hmira::errc::invalid_argument);
-        EXPECT_NE(q.error().message.find(bad > 0 ? "sample (2, 4, 1) is inf" : "sample (2, 4, 1) is -inf"), std::string::npos)
+        EXPECT_NE(q.error().message.find(bad > 0 ? "sample (2, 4, 1) is inf" : "sample (2, 4, 1) is -inf"),
+                  std::string::npos)
             << q.error().message;
         EXPECT_TRUE((hmira_test::snapshot<M, T>(m) == before));
     }
     // An iso outside the samples' range gives no surface: refused, the mesh untouched.
     auto far = hmira::marching_cubes<M, T>(m, small_sphere(), {.iso = 1000.0});
     ASSERT_FALSE(far);
-    EXPECT_NE(far.error().message.find("iso 1000 is outside the samples' range"), std::string::npos) << far.error().message;
+    EXPECT_NE(far.error().message.find("iso 1000 is outside the samples' range"), std::string::npos)
+        << far.error().message;
     EXPECT_TRUE((hmira_test::snapshot<M, T>(m) == before));
     EXPECT_FALSE((hmira::marching_cubes<M, T>(m, small_sphere(), {.iso = std::numeric_limits<double>::quiet_NaN()})));
     EXPECT_TRUE((hmira_test::snapshot<M, T>(m) == before));
@@ -196,7 +208,8 @@ TEST(mc_atomic_properties, a_cancelled_insertion_keeps_the_users_properties_and_
     for (auto v : m.vertices()) weight[v] = 10.0 + v.index;
     const std::size_t n = m.vertex_count();
     long long seen = 0;
-    auto r = hmira::marching_cubes(m, small_sphere(), {.progress = [&](double done) { return done < 0.75 || seen++ < 0; }});
+    auto r =
+        hmira::marching_cubes(m, small_sphere(), {.progress = [&](double done) { return done < 0.75 || seen++ < 0; }});
     ASSERT_FALSE(r);
     auto again = m.get_vertex_property<double>("weight");
     ASSERT_TRUE(again);

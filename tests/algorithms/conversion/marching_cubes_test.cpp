@@ -53,8 +53,12 @@ void expect_closed_manifold(const hmira::face_vertex_mesh& m, long long genus, s
     const auto t = hmira::mesh_topology(m);
     EXPECT_TRUE(t.closed()) << t.boundary_edges << " boundary edges, " << t.non_manifold_edges << " non-manifold edges";
     EXPECT_EQ(t.isolated_vertices, 0u);
-    if (genus >= 0) { EXPECT_EQ(t.genus, genus); }
-    if (components) { EXPECT_EQ(t.components, components); }
+    if (genus >= 0) {
+        EXPECT_EQ(t.genus, genus);
+    }
+    if (components) {
+        EXPECT_EQ(t.components, components);
+    }
 }
 
 TEST(MarchingCubesTable, every_case_closes_and_triangulates) {
@@ -88,7 +92,8 @@ TEST(MarchingCubes, sphere_is_closed_genus0_with_analytic_volume_and_area) {
 }
 
 TEST(MarchingCubes, torus_is_closed_genus1) {
-    auto grid = hmira::sample_function(hmira::cube_geometry(big_n, -1.5, 1.5), hmira::torus_field{{0, 0, 0.05}, 1.0, 0.35});
+    auto grid =
+        hmira::sample_function(hmira::cube_geometry(big_n, -1.5, 1.5), hmira::torus_field{{0, 0, 0.05}, 1.0, 0.35});
     ASSERT_TRUE(grid);
     hmira::face_vertex_mesh m;
     ASSERT_TRUE(hmira::marching_cubes(m, *grid));
@@ -101,7 +106,8 @@ TEST(MarchingCubes, torus_is_closed_genus1) {
 }
 
 TEST(MarchingCubes, inside_above_flips_orientation_not_shape) {
-    auto grid = hmira::sample_function(hmira::cube_geometry(24, -1, 1), [](vec3<double> p) { return -(hmira::norm(p) - 0.7); });
+    auto grid =
+        hmira::sample_function(hmira::cube_geometry(24, -1, 1), [](vec3<double> p) { return -(hmira::norm(p) - 0.7); });
     ASSERT_TRUE(grid);
     hmira::face_vertex_mesh m;
     ASSERT_TRUE(hmira::marching_cubes(m, *grid, {.inside = hmira::iso_inside::above}));
@@ -155,7 +161,8 @@ TEST(MarchingCubes, samples_equal_to_iso_give_no_duplicate_vertices_or_zero_area
             auto tri = hmira::marching_cubes_indexed<double>(g, {.iso = 1.0, .inside = inside});
             ASSERT_TRUE(tri);
             std::set<std::array<double, 3>> seen;
-            for (const auto& p : tri->positions) EXPECT_TRUE(seen.insert({p.x, p.y, p.z}).second) << "duplicate position";
+            for (const auto& p : tri->positions)
+                EXPECT_TRUE(seen.insert({p.x, p.y, p.z}).second) << "duplicate position";
             for (const auto& t : tri->triangles) {
                 const auto a = tri->positions[t[0]], b = tri->positions[t[1]], c = tri->positions[t[2]];
                 EXPECT_GT(hmira::norm(hmira::cross(b - a, c - a)), 0);
@@ -166,8 +173,11 @@ TEST(MarchingCubes, samples_equal_to_iso_give_no_duplicate_vertices_or_zero_area
             // Above: the solid {v >= 1} floats inside the layer of 0s, positive volume. Below:
             // the solid {v <= 1} fills the box around pockets of 2s, so the surface bounds
             // cavities, whose outward normals point into them: negative volume.
-            if (inside == hmira::iso_inside::above) { EXPECT_GT(hmira_test::signed_volume(m), 0); }
-            else { EXPECT_LT(hmira_test::signed_volume(m), 0); }
+            if (inside == hmira::iso_inside::above) {
+                EXPECT_GT(hmira_test::signed_volume(m), 0);
+            } else {
+                EXPECT_LT(hmira_test::signed_volume(m), 0);
+            }
         }
     }
 }
@@ -305,7 +315,9 @@ struct function_grid {
     hmira::grid_dims dims() const { return g.dims; }
     vec3<double> origin() const { return g.origin; }
     vec3<double> spacing() const { return g.spacing; }
-    double value(std::size_t i, std::size_t j, std::size_t k) const { return hmira::sphere_field{{0, 0, 0}, 0.5}(g.position(i, j, k)); }
+    double value(std::size_t i, std::size_t j, std::size_t k) const {
+        return hmira::sphere_field{{0, 0, 0}, 0.5}(g.position(i, j, k));
+    }
 };
 
 TEST(MarchingCubes, generic_grid_without_storage_matches_dense_grid) {
@@ -350,8 +362,11 @@ TYPED_TEST(MarchingCubesNonFinite, infinite_and_nan_samples_are_refused_naming_t
         for (const V bad : {inf, -inf, std::numeric_limits<V>::quiet_NaN()}) {
             auto g = sphere_70<V>();
             g.set(w.i, w.j, w.k, bad);
-            const std::string name = "sample (" + std::to_string(w.i) + ", " + std::to_string(w.j) + ", " + std::to_string(w.k) + ") is " +
-                                     (bad != bad ? "NaN" : bad > 0 ? "inf" : "-inf");
+            const std::string name = "sample (" + std::to_string(w.i) + ", " + std::to_string(w.j) + ", " +
+                                     std::to_string(w.k) + ") is " +
+                                     (bad != bad ? "NaN"
+                                      : bad > 0  ? "inf"
+                                                 : "-inf");
             for (unsigned threads : {1u, 2u}) {
                 auto r = hmira::marching_cubes_indexed<double>(g, {.threads = threads});
                 ASSERT_FALSE(r) << name << ": " << r->positions.size() << " vertices";
@@ -410,7 +425,8 @@ TYPED_TEST(MarchingCubesIsoRange, an_iso_outside_the_samples_range_is_refused_na
             auto r = hmira::marching_cubes_indexed<double>(g, {.iso = iso, .inside = inside});
             ASSERT_FALSE(r) << "iso " << iso;
             EXPECT_EQ(r.error().code, hmira::errc::invalid_argument);
-            EXPECT_NE(r.error().message.find("outside the samples' range [12, 40]"), std::string::npos) << r.error().message;
+            EXPECT_NE(r.error().message.find("outside the samples' range [12, 40]"), std::string::npos)
+                << r.error().message;
             hmira::face_vertex_mesh m;
             EXPECT_FALSE(hmira::marching_cubes(m, g, {.iso = iso, .inside = inside}));
             EXPECT_EQ(m.vertex_count(), 0u);
@@ -421,7 +437,9 @@ TYPED_TEST(MarchingCubesIsoRange, an_iso_outside_the_samples_range_is_refused_na
     EXPECT_GT(ball->triangles.size(), 0u);
     // At either end of the range: accepted. The ends that put every sample on one side give
     // no triangles; the others still give the ball (samples equal to iso count as inside).
-    auto at = [&](double iso, hmira::iso_inside inside) { return hmira::marching_cubes_indexed<double>(g, {.iso = iso, .inside = inside}); };
+    auto at = [&](double iso, hmira::iso_inside inside) {
+        return hmira::marching_cubes_indexed<double>(g, {.iso = iso, .inside = inside});
+    };
     auto below_max = at(40, hmira::iso_inside::below), above_min = at(12, hmira::iso_inside::above);
     ASSERT_TRUE(below_max && above_min);
     EXPECT_EQ(below_max->triangles.size(), 0u);
@@ -435,7 +453,8 @@ TYPED_TEST(MarchingCubesIsoRange, an_iso_outside_the_samples_range_is_refused_na
     EXPECT_TRUE(hmira::marching_cubes_indexed<double>(flat, {.iso = 7}));
     auto off = hmira::marching_cubes_indexed<double>(flat, {.iso = 8});
     ASSERT_FALSE(off);
-    EXPECT_NE(off.error().message.find("iso 8 is outside the samples' range [7, 7]"), std::string::npos) << off.error().message;
+    EXPECT_NE(off.error().message.find("iso 8 is outside the samples' range [7, 7]"), std::string::npos)
+        << off.error().message;
 }
 
 TEST(MarchingCubesBadInput, nan_zero_spacing_and_empty_grids_are_refused_without_touching_the_mesh) {
@@ -471,7 +490,8 @@ TEST(MarchingCubes, surface_with_no_crossing_is_empty_when_the_iso_is_in_the_ran
     auto outside = hmira::marching_cubes_indexed(g);  // the default iso 0 lies below every sample
     ASSERT_FALSE(outside);
     EXPECT_EQ(outside.error().message,
-              "marching_cubes: iso 0 is outside the samples' range [2, 2], so there is no surface; choose an iso between them");
+              "marching_cubes: iso 0 is outside the samples' range [2, 2], so there is no surface; choose an iso "
+              "between them");
 }
 
 }  // namespace

@@ -100,7 +100,10 @@ TEST(InrVolume, reads_types_spacing_and_byte_order_of_a_written_file) {
         data.push_back(char(v >> 8));
         data.push_back(char(v & 255));
     }
-    write_bytes(p, inr_header("XDIM=3\nYDIM=2\nZDIM=1\nVDIM=1\nTYPE=unsigned fixed\nPIXSIZE=16 bits\nCPU=sun\nVX=0.5\nVY=2\nVZ=1\n") + data);
+    write_bytes(
+        p, inr_header(
+               "XDIM=3\nYDIM=2\nZDIM=1\nVDIM=1\nTYPE=unsigned fixed\nPIXSIZE=16 bits\nCPU=sun\nVX=0.5\nVY=2\nVZ=1\n") +
+               data);
     auto g = hmira::io::read_inr(p);
     ASSERT_TRUE(g) << g.error().message;
     EXPECT_EQ(g->dims(), (hmira::grid_dims{3, 2, 1}));
@@ -113,7 +116,8 @@ TEST(InrVolume, reads_types_spacing_and_byte_order_of_a_written_file) {
 TEST(InrVolume, truncated_files_bad_headers_nan_and_zero_spacing_are_clear_errors) {
     temp_dir tmp;
     const auto p = tmp.path / "bad.inr";
-    const std::string good = "XDIM=4\nYDIM=4\nZDIM=4\nVDIM=1\nTYPE=float\nPIXSIZE=32 bits\nCPU=decm\nVX=1\nVY=1\nVZ=1\n";
+    const std::string good =
+        "XDIM=4\nYDIM=4\nZDIM=4\nVDIM=1\nTYPE=float\nPIXSIZE=32 bits\nCPU=decm\nVX=1\nVY=1\nVZ=1\n";
     auto expect_error = [&](const std::string& bytes, const char* words) {
         write_bytes(p, bytes);
         auto g = hmira::io::read_inr(p);
@@ -124,9 +128,12 @@ TEST(InrVolume, truncated_files_bad_headers_nan_and_zero_spacing_are_clear_error
     expect_error(inr_header(good).substr(0, 100), "terminator");
     expect_error("not an image at all", "INRIMAGE");
     expect_error(inr_header("YDIM=4\nZDIM=4\nTYPE=float\nPIXSIZE=32 bits\n") + std::string(256, '\0'), "XDIM");
-    expect_error(inr_header("XDIM=4\nYDIM=4\nZDIM=4\nTYPE=complex\nPIXSIZE=32 bits\n") + std::string(256, '\0'), "TYPE");
-    expect_error(inr_header("XDIM=4\nYDIM=4\nZDIM=4\nVDIM=3\nTYPE=float\nPIXSIZE=32 bits\n") + std::string(768, '\0'), "VDIM");
-    expect_error(inr_header("XDIM=4\nYDIM=4\nZDIM=4\nTYPE=float\nPIXSIZE=32 bits\nVX=0\n") + std::string(256, '\0'), "spacing");
+    expect_error(inr_header("XDIM=4\nYDIM=4\nZDIM=4\nTYPE=complex\nPIXSIZE=32 bits\n") + std::string(256, '\0'),
+                 "TYPE");
+    expect_error(inr_header("XDIM=4\nYDIM=4\nZDIM=4\nVDIM=3\nTYPE=float\nPIXSIZE=32 bits\n") + std::string(768, '\0'),
+                 "VDIM");
+    expect_error(inr_header("XDIM=4\nYDIM=4\nZDIM=4\nTYPE=float\nPIXSIZE=32 bits\nVX=0\n") + std::string(256, '\0'),
+                 "spacing");
     expect_error(inr_header("XDIM=0\nYDIM=4\nZDIM=4\nTYPE=float\nPIXSIZE=32 bits\n"), "dimension");
     std::string samples(256, '\0');
     const float nan = std::nanf("");
@@ -212,14 +219,17 @@ TEST(Binvox, bad_binvox_files_are_named_errors_and_allocate_nothing_large) {
     };
     EXPECT_TRUE(hmira::io::parse_binvox(head + std::string("\x01\x08", 2), "v.binvox"));
     expect_error(head + std::string("\x01\x07", 2), "the runs cover 7 of the 8 voxels");
-    expect_error(head + std::string("\x01\x08\x00\x01", 4), "v.binvox: byte offset " + std::to_string(head.size() + 2) + ": the runs cover more than");
+    expect_error(head + std::string("\x01\x08\x00\x01", 4),
+                 "v.binvox: byte offset " + std::to_string(head.size() + 2) + ": the runs cover more than");
     expect_error(head + std::string("\x02\x08", 2), "voxel value 2");
     expect_error(head + std::string("\x01\x00\x01\x08", 4), "a run of length 0");
-    expect_error("#binvox 1\ndim 1025 1025 1025\ndata\n", "v.binvox:2: a binvox dimension must be a whole number from 1 to 1024");
+    expect_error("#binvox 1\ndim 1025 1025 1025\ndata\n",
+                 "v.binvox:2: a binvox dimension must be a whole number from 1 to 1024");
     expect_error("#binvox 1\ndim 2 2 2\nscale nan\ndata\n", "v.binvox:3: expected 'scale <s>'");
     expect_error("#binvox 1\ndim 2 2 2\ntranslate 0 inf 0\ndata\n", "v.binvox:3: expected 'translate");
     // 1024^3 voxels declared, 2 bytes of runs: refused before any grid is made.
-    expect_error("#binvox 1\ndim 1024 1024 1024\ndata\n" + std::string("\x01\xff", 2), "the runs cover 255 of the 1073741824 voxels");
+    expect_error("#binvox 1\ndim 1024 1024 1024\ndata\n" + std::string("\x01\xff", 2),
+                 "the runs cover 255 of the 1073741824 voxels");
 }
 
 TEST(PointsText, xyz_and_csv_read_with_lines_named_and_non_finite_refused) {
@@ -236,7 +246,8 @@ TEST(PointsText, xyz_and_csv_read_with_lines_named_and_non_finite_refused) {
     EXPECT_NE(bad.error().message.find("p.xyz:2: expected 'x y [z]'"), std::string::npos) << bad.error().message;
     auto nan = hmira::io::parse_points_text("1 2 3\n4 nan 6\n", "p.xyz");
     ASSERT_FALSE(nan);
-    EXPECT_NE(nan.error().message.find("p.xyz:2: point 1 has a coordinate that is not finite"), std::string::npos) << nan.error().message;
+    EXPECT_NE(nan.error().message.find("p.xyz:2: point 1 has a coordinate that is not finite"), std::string::npos)
+        << nan.error().message;
     temp_dir tmp;
     const auto zero = tmp.path / "zero.xyz";
     fs::create_symlink("/dev/zero", zero);
@@ -247,7 +258,8 @@ TEST(PointsText, xyz_and_csv_read_with_lines_named_and_non_finite_refused) {
     fs::create_symlink("/dev/zero", zb);
     auto capped_binvox = hmira::io::read_binvox(zb, {.max_input_bytes = 1 << 20});
     ASSERT_FALSE(capped_binvox);
-    EXPECT_NE(capped_binvox.error().message.find("input limit of 1048576 bytes"), std::string::npos) << capped_binvox.error().message;
+    EXPECT_NE(capped_binvox.error().message.find("input limit of 1048576 bytes"), std::string::npos)
+        << capped_binvox.error().message;
 }
 
 // ---- hostile volumes ---------------------------------------------------------------------------
@@ -287,7 +299,8 @@ TEST(InrVolume, a_gzip_bomb_is_refused_after_inflating_no_more_than_the_header_d
     ASSERT_FALSE(g);
     EXPECT_EQ(g.error().code, hmira::errc::parse_error);
     EXPECT_NE(g.error().message.find(p.string() + ": "), std::string::npos) << g.error().message;
-    EXPECT_NE(g.error().message.find("goes on past the 16384 bytes of samples the header declares"), std::string::npos) << g.error().message;
+    EXPECT_NE(g.error().message.find("goes on past the 16384 bytes of samples the header declares"), std::string::npos)
+        << g.error().message;
 }
 
 TEST(InrVolume, gzip_data_shorter_or_longer_than_the_header_declares_is_an_error) {
@@ -301,12 +314,14 @@ TEST(InrVolume, gzip_data_shorter_or_longer_than_the_header_declares_is_an_error
     write_bytes(p, gzip(head + std::string(63, '\x07')));
     auto short_one = hmira::io::read_inr(p);
     ASSERT_FALSE(short_one);
-    EXPECT_NE(short_one.error().message.find("truncated: the header promises 64 bytes of samples, the file holds 63"), std::string::npos)
+    EXPECT_NE(short_one.error().message.find("truncated: the header promises 64 bytes of samples, the file holds 63"),
+              std::string::npos)
         << short_one.error().message;
     write_bytes(p, gzip(head + std::string(65, '\x07')));
     auto long_one = hmira::io::read_inr(p);
     ASSERT_FALSE(long_one);
-    EXPECT_NE(long_one.error().message.find("goes on past the 64 bytes of samples"), std::string::npos) << long_one.error().message;
+    EXPECT_NE(long_one.error().message.find("goes on past the 64 bytes of samples"), std::string::npos)
+        << long_one.error().message;
     // A header split over two gzip members still reads.
     write_bytes(p, gzip(head.substr(0, 100)) + gzip(head.substr(100) + std::string(64, '\x07')));
     EXPECT_TRUE(hmira::io::read_inr(p));
@@ -316,11 +331,13 @@ TEST(InrVolume, gzip_data_shorter_or_longer_than_the_header_declares_is_an_error
 TEST(InrVolume, plain_data_past_the_declared_samples_is_an_error) {
     temp_dir tmp;
     const auto p = tmp.path / "long.inr";
-    write_bytes(p, inr_header("XDIM=2\nYDIM=2\nZDIM=2\nTYPE=unsigned fixed\nPIXSIZE=8 bits\n") + std::string(8 + 5, '\0'));
+    write_bytes(p,
+                inr_header("XDIM=2\nYDIM=2\nZDIM=2\nTYPE=unsigned fixed\nPIXSIZE=8 bits\n") + std::string(8 + 5, '\0'));
     auto g = hmira::io::read_inr(p);
     ASSERT_FALSE(g);
     EXPECT_EQ(g.error().code, hmira::errc::parse_error);
-    EXPECT_NE(g.error().message.find("5 bytes after the 8 bytes of samples the header declares"), std::string::npos) << g.error().message;
+    EXPECT_NE(g.error().message.find("5 bytes after the 8 bytes of samples the header declares"), std::string::npos)
+        << g.error().message;
 }
 
 TEST(InrVolume, header_values_out_of_range_are_parse_errors_naming_the_key) {
@@ -330,21 +347,23 @@ TEST(InrVolume, header_values_out_of_range_are_parse_errors_naming_the_key) {
     struct bad_header {
         std::string fields, key;
     };
-    for (const auto& c : std::vector<bad_header>{{"XDIM=0\nYDIM=2\nZDIM=2\n" + rest, "XDIM=0"},
-                                                 {"XDIM=2.5\nYDIM=2\nZDIM=2\n" + rest, "XDIM=2.5"},
-                                                 {"XDIM=1e300\nYDIM=2\nZDIM=2\n" + rest, "XDIM=1e300"},
-                                                 {"XDIM=2\nYDIM=2\nZDIM=2\nVX=nan\n" + rest, "VX=nan"},
-                                                 {"XDIM=2\nYDIM=2\nZDIM=2\nVX=0\n" + rest, "VX=0"},
-                                                 {"XDIM=2\nYDIM=2\nZDIM=2\nVY=-1\n" + rest, "VY=-1"},
-                                                 {"XDIM=2\nYDIM=2\nZDIM=2\nTX=inf\n" + rest, "TX=inf"},
-                                                 {"XDIM=2\nYDIM=2\nZDIM=2\nTYPE=float\nPIXSIZE=1e20 bits\n", "PIXSIZE=1e20"},
-                                                 {"XDIM=2\nYDIM=2\nZDIM=2\nTYPE=float\nPIXSIZE=-8 bits\n", "PIXSIZE=-8"},
-                                                 {"XDIM=1000000\nYDIM=1000000\nZDIM=1000000\n" + rest, "too large"}}) {
+    for (const auto& c :
+         std::vector<bad_header>{{"XDIM=0\nYDIM=2\nZDIM=2\n" + rest, "XDIM=0"},
+                                 {"XDIM=2.5\nYDIM=2\nZDIM=2\n" + rest, "XDIM=2.5"},
+                                 {"XDIM=1e300\nYDIM=2\nZDIM=2\n" + rest, "XDIM=1e300"},
+                                 {"XDIM=2\nYDIM=2\nZDIM=2\nVX=nan\n" + rest, "VX=nan"},
+                                 {"XDIM=2\nYDIM=2\nZDIM=2\nVX=0\n" + rest, "VX=0"},
+                                 {"XDIM=2\nYDIM=2\nZDIM=2\nVY=-1\n" + rest, "VY=-1"},
+                                 {"XDIM=2\nYDIM=2\nZDIM=2\nTX=inf\n" + rest, "TX=inf"},
+                                 {"XDIM=2\nYDIM=2\nZDIM=2\nTYPE=float\nPIXSIZE=1e20 bits\n", "PIXSIZE=1e20"},
+                                 {"XDIM=2\nYDIM=2\nZDIM=2\nTYPE=float\nPIXSIZE=-8 bits\n", "PIXSIZE=-8"},
+                                 {"XDIM=1000000\nYDIM=1000000\nZDIM=1000000\n" + rest, "too large"}}) {
         SCOPED_TRACE(c.fields);
         write_bytes(p, inr_header(c.fields) + std::string(32, '\0'));
         auto g = hmira::io::read_inr(p);
         ASSERT_FALSE(g);
-        EXPECT_EQ(g.error().code, hmira::errc::parse_error) << g.error().message;  // a problem of the file, not of the call
+        EXPECT_EQ(g.error().code, hmira::errc::parse_error)
+            << g.error().message;  // a problem of the file, not of the call
         EXPECT_NE(g.error().message.find(p.string()), std::string::npos) << g.error().message;
         EXPECT_NE(g.error().message.find(c.key), std::string::npos) << g.error().message;
         EXPECT_EQ(g.error().message.find('\n'), std::string::npos) << g.error().message;
@@ -359,7 +378,9 @@ TEST(VolumeInput, endless_devices_stop_at_the_input_limit) {
     auto g = hmira::io::read_inr(inr, {.max_input_bytes = 1 << 20});
     ASSERT_FALSE(g);
     EXPECT_EQ(g.error().code, hmira::errc::unsupported);
-    EXPECT_NE(g.error().message.find(inr.string() + ": not a regular file, and longer than the input limit of 1048576 bytes"), std::string::npos)
+    EXPECT_NE(
+        g.error().message.find(inr.string() + ": not a regular file, and longer than the input limit of 1048576 bytes"),
+        std::string::npos)
         << g.error().message;
     auto r = hmira::io::read_raw<float>(raw, {{4, 4, 4}, {0, 0, 0}, {1, 1, 1}}, {.max_input_bytes = 1 << 20});
     ASSERT_FALSE(r);
@@ -373,7 +394,8 @@ std::vector<std::uint8_t> decode_binvox(const std::string& bytes, std::size_t& d
     std::string word;
     head >> word >> word >> word >> d;
     std::vector<std::uint8_t> out;
-    for (std::size_t q = data + 5; q + 1 < bytes.size(); q += 2) out.insert(out.end(), std::uint8_t(bytes[q + 1]), std::uint8_t(bytes[q]));
+    for (std::size_t q = data + 5; q + 1 < bytes.size(); q += 2)
+        out.insert(out.end(), std::uint8_t(bytes[q + 1]), std::uint8_t(bytes[q]));
     return out;
 }
 

@@ -43,7 +43,8 @@ hmira::face_vertex_mesh read(const char* name) {
 // The octahedron |x - c| + |y - c| + |z - c| <= r, outward faces, 8 triangles.
 hmira::face_vertex_mesh octahedron(double c, double r) {
     hmira::face_vertex_mesh m;
-    const vec3<double> p[6] = {{c + r, c, c}, {c - r, c, c}, {c, c + r, c}, {c, c - r, c}, {c, c, c + r}, {c, c, c - r}};
+    const vec3<double> p[6] = {{c + r, c, c}, {c - r, c, c}, {c, c + r, c},
+                               {c, c - r, c}, {c, c, c + r}, {c, c, c - r}};
     std::vector<hmira::vertex_handle> v;
     for (const auto& q : p) v.push_back(m.add_vertex(q));
     for (int sx = 0; sx < 2; ++sx)
@@ -52,8 +53,10 @@ hmira::face_vertex_mesh octahedron(double c, double r) {
                 auto a = v[std::size_t(sx)], b = v[std::size_t(2 + sy)], d = v[std::size_t(4 + sz)];
                 // Outward when the three signs' product is positive (+x, +y, +z is counter-clockwise).
                 const bool ccw = ((sx + sy + sz) % 2) == 0;
-                if (ccw) (void)m.add_face({a, b, d}).value();
-                else (void)m.add_face({a, d, b}).value();
+                if (ccw)
+                    (void)m.add_face({a, b, d}).value();
+                else
+                    (void)m.add_face({a, d, b}).value();
             }
     return m;
 }
@@ -124,11 +127,15 @@ TEST(VoxelizeCentres, rotated_octahedra_agree_with_an_independent_winding_number
                     double w = 0, closest = 1e9;
                     for (auto f : mesh.faces()) {
                         auto fv = mesh.face_vertices(f);
-                        const auto x = mesh.position(fv[0]) - p, y = mesh.position(fv[1]) - p, z = mesh.position(fv[2]) - p;
+                        const auto x = mesh.position(fv[0]) - p, y = mesh.position(fv[1]) - p,
+                                   z = mesh.position(fv[2]) - p;
                         const double lx = hmira::norm(x), ly = hmira::norm(y), lz = hmira::norm(z);
-                        w += 2 * std::atan2(hmira::dot(x, hmira::cross(y, z)), lx * ly * lz + hmira::dot(x, y) * lz + hmira::dot(y, z) * lx + hmira::dot(z, x) * ly);
+                        w += 2 * std::atan2(hmira::dot(x, hmira::cross(y, z)), lx * ly * lz + hmira::dot(x, y) * lz +
+                                                                                   hmira::dot(y, z) * lx +
+                                                                                   hmira::dot(z, x) * ly);
                         const auto n = hmira::cross(y - x, z - x);
-                        closest = std::min(closest, std::abs(hmira::dot(n, x)) / hmira::norm(n));  // distance to the plane
+                        closest =
+                            std::min(closest, std::abs(hmira::dot(n, x)) / hmira::norm(n));  // distance to the plane
                     }
                     if (closest < 1e-6) continue;
                     ++checked;
@@ -163,18 +170,21 @@ TEST_P(CentresOnRealMesh, count_is_within_half_a_percent_of_the_volume_and_solid
     const auto ws = solid->voxels.words(), wf = surface->voxels.words(), wc = centres->voxels.words();
     for (std::size_t w = 0; w < ws.size(); ++w) ASSERT_EQ(ws[w], wf[w] | wc[w]) << "word " << w;
     // The same bits for one thread and for all.
-    auto one = hmira::voxelize(mesh, *g, {.mode = hmira::voxelize_mode::centres, .allow_degenerate = true, .threads = 1});
+    auto one =
+        hmira::voxelize(mesh, *g, {.mode = hmira::voxelize_mode::centres, .allow_degenerate = true, .threads = 1});
     ASSERT_TRUE(one);
     EXPECT_TRUE(same_bits(one->voxels, centres->voxels));
 }
 
-INSTANTIATE_TEST_SUITE_P(Closed, CentresOnRealMesh, ::testing::Values("elephant.off", "armadillo.off", "bunny00.off", "fandisk.off"));
+INSTANTIATE_TEST_SUITE_P(Closed, CentresOnRealMesh,
+                         ::testing::Values("elephant.off", "armadillo.off", "bunny00.off", "fandisk.off"));
 
 TEST(VoxelizeCentres, an_open_mesh_is_refused_or_reported_as_the_options_say) {
     auto mesh = octahedron(10, 5);
     (void)mesh.remove_face(*mesh.faces().begin());
     const hmira::grid_geometry g{{21, 21, 21}, {0, 0, 0}, {1, 1, 1}};
-    auto refused = hmira::voxelize(mesh, g, {.mode = hmira::voxelize_mode::centres, .open_mesh = hmira::open_mesh_fill::fail});
+    auto refused =
+        hmira::voxelize(mesh, g, {.mode = hmira::voxelize_mode::centres, .open_mesh = hmira::open_mesh_fill::fail});
     ASSERT_FALSE(refused);
     EXPECT_EQ(refused.error().code, hmira::errc::topology);
     EXPECT_NE(refused.error().message.find("centres"), std::string::npos);
@@ -185,14 +195,16 @@ TEST(VoxelizeCentres, an_open_mesh_is_refused_or_reported_as_the_options_say) {
 }
 
 // Every voxel of `block` equals the whole grid's.
-::testing::AssertionResult block_matches(const hmira::bit_grid& whole, const hmira::voxel_block& block, const hmira::bit_grid& got) {
+::testing::AssertionResult block_matches(const hmira::bit_grid& whole, const hmira::voxel_block& block,
+                                         const hmira::bit_grid& got) {
     if (got.dims() != block.dims) return ::testing::AssertionFailure() << "block dims differ";
     for (std::size_t k = 0; k < block.dims[2]; ++k)
         for (std::size_t j = 0; j < block.dims[1]; ++j)
             for (std::size_t i = 0; i < block.dims[0]; ++i)
                 if (got.value(i, j, k) != whole.value(block.lo[0] + i, block.lo[1] + j, block.lo[2] + k))
-                    return ::testing::AssertionFailure() << "voxel " << block.lo[0] + i << ' ' << block.lo[1] + j << ' ' << block.lo[2] + k
-                                                         << " of block at " << block.lo[0] << ' ' << block.lo[1] << ' ' << block.lo[2];
+                    return ::testing::AssertionFailure()
+                           << "voxel " << block.lo[0] + i << ' ' << block.lo[1] + j << ' ' << block.lo[2] + k
+                           << " of block at " << block.lo[0] << ' ' << block.lo[1] << ' ' << block.lo[2];
     return ::testing::AssertionSuccess();
 }
 
@@ -223,14 +235,16 @@ TEST_P(BlocksOnRealMesh, blocks_of_random_sizes_equal_the_whole_grid_in_every_mo
             if (trial == 0) bs = {g->dims[0], g->dims[1], 1};
             if (trial == 1) bs = g->dims;
             std::size_t blocks = 0, set = 0;
-            auto r = hmira::voxelize_blocks(mesh, *g, bs, options, [&](const hmira::voxel_block& b, hmira::voxelization&& v) {
-                ++blocks;
-                set += v.voxels.count();
-                EXPECT_EQ(v.filled, whole->filled);
-                EXPECT_TRUE(block_matches(whole->voxels, b, v.voxels)) << GetParam() << " mode " << int(mode) << " block size " << bs[0]
-                                                                       << ' ' << bs[1] << ' ' << bs[2];
-                return !HasFailure();
-            });
+            auto r = hmira::voxelize_blocks(mesh, *g, bs, options,
+                                            [&](const hmira::voxel_block& b, hmira::voxelization&& v) {
+                                                ++blocks;
+                                                set += v.voxels.count();
+                                                EXPECT_EQ(v.filled, whole->filled);
+                                                EXPECT_TRUE(block_matches(whole->voxels, b, v.voxels))
+                                                    << GetParam() << " mode " << int(mode) << " block size " << bs[0]
+                                                    << ' ' << bs[1] << ' ' << bs[2];
+                                                return !HasFailure();
+                                            });
             ASSERT_TRUE(r) << r.error().message;
             EXPECT_EQ(set, whole->voxels.count());
             std::size_t expected = 1;
@@ -279,9 +293,9 @@ TEST(VoxelizeCrossings, the_rays_visited_are_exactly_those_the_exact_test_counts
             for (long long j = -5; j <= 20; ++j) {
                 const int expected = ct.crossed_by(double(j), double(k)) ? 1 : 0;
                 const int got = seen[std::size_t((k + 5) * 26 + (j + 5))];
-                ASSERT_EQ(got, expected) << "triangle " << t << " ray (" << j << ", " << k << "): (" << p[0].x << ", " << p[0].y << ", "
-                                         << p[0].z << ") (" << p[1].x << ", " << p[1].y << ", " << p[1].z << ") (" << p[2].x << ", "
-                                         << p[2].y << ", " << p[2].z << ")";
+                ASSERT_EQ(got, expected) << "triangle " << t << " ray (" << j << ", " << k << "): (" << p[0].x << ", "
+                                         << p[0].y << ", " << p[0].z << ") (" << p[1].x << ", " << p[1].y << ", "
+                                         << p[1].z << ") (" << p[2].x << ", " << p[2].y << ", " << p[2].z << ")";
                 visited_total += std::size_t(got);
             }
         // How often a run end lies within 1e-12 of an integer without being one (the cases
@@ -324,14 +338,16 @@ TEST(VoxelizeSlabs, octahedra_across_a_slab_boundary_match_independent_tests_vox
             tris.push_back({mesh.position(fv[0]), mesh.position(fv[1]), mesh.position(fv[2])});
         }
         hmira::voxelization v[3][2];
-        const hmira::voxelize_mode modes[3] = {hmira::voxelize_mode::surface, hmira::voxelize_mode::centres, hmira::voxelize_mode::solid};
+        const hmira::voxelize_mode modes[3] = {hmira::voxelize_mode::surface, hmira::voxelize_mode::centres,
+                                               hmira::voxelize_mode::solid};
         for (int m = 0; m < 3; ++m)
             for (unsigned t : {1u, 2u}) {
                 auto r = hmira::voxelize(mesh, g, {.mode = modes[m], .threads = t});
                 ASSERT_TRUE(r);
                 v[m][t - 1] = std::move(*r);
             }
-        for (int m = 0; m < 3; ++m) EXPECT_TRUE(std::ranges::equal(v[m][0].voxels.words(), v[m][1].voxels.words())) << "mode " << m;
+        for (int m = 0; m < 3; ++m)
+            EXPECT_TRUE(std::ranges::equal(v[m][0].voxels.words(), v[m][1].voxels.words())) << "mode " << m;
         // Every set voxel lies within [12, 52] x [530, 570] x [39, 79]: count there and compare.
         std::size_t surface = 0, centres = 0, solid = 0, checked = 0;
         for (std::size_t k = 36; k <= 82; ++k)
@@ -343,18 +359,22 @@ TEST(VoxelizeSlabs, octahedra_across_a_slab_boundary_match_independent_tests_vox
                     for (const auto& t : tris) {
                         bool boxes = true;  // the box normals, which triangle_box_overlap leaves to its caller
                         for (std::size_t c = 0; c < 3; ++c)
-                            boxes &= std::min({t[0][c], t[1][c], t[2][c]}) <= p[c] + 0.5 && std::max({t[0][c], t[1][c], t[2][c]}) >= p[c] - 0.5;
+                            boxes &= std::min({t[0][c], t[1][c], t[2][c]}) <= p[c] + 0.5 &&
+                                     std::max({t[0][c], t[1][c], t[2][c]}) >= p[c] - 0.5;
                         touches |= boxes && hmira::detail::triangle_box_overlap(p, 0.5, t[0], t[1], t[2]);
                         const auto x = t[0] - p, y = t[1] - p, z = t[2] - p;
                         const double lx = hmira::norm(x), ly = hmira::norm(y), lz = hmira::norm(z);
-                        w += 2 * std::atan2(hmira::dot(x, hmira::cross(y, z)),
-                                            lx * ly * lz + hmira::dot(x, y) * lz + hmira::dot(y, z) * lx + hmira::dot(z, x) * ly);
+                        w += 2 * std::atan2(hmira::dot(x, hmira::cross(y, z)), lx * ly * lz + hmira::dot(x, y) * lz +
+                                                                                   hmira::dot(y, z) * lx +
+                                                                                   hmira::dot(z, x) * ly);
                         const auto n = hmira::cross(y - x, z - x);
                         closest = std::min(closest, std::abs(hmira::dot(n, x)) / hmira::norm(n));
                     }
                     const bool inside = w / (4 * std::numbers::pi) > 0.5;
-                    const auto s = v[0][0].voxels.value(i, j, k), c = v[1][0].voxels.value(i, j, k), d = v[2][0].voxels.value(i, j, k);
-                    ASSERT_EQ(s, touches ? 1 : 0) << "trial " << trial << " surface voxel " << i << ' ' << j << ' ' << k;
+                    const auto s = v[0][0].voxels.value(i, j, k), c = v[1][0].voxels.value(i, j, k),
+                               d = v[2][0].voxels.value(i, j, k);
+                    ASSERT_EQ(s, touches ? 1 : 0)
+                        << "trial " << trial << " surface voxel " << i << ' ' << j << ' ' << k;
                     if (closest > 1e-6) {
                         ++checked;
                         ASSERT_EQ(c, inside ? 1 : 0) << "trial " << trial << " centre " << i << ' ' << j << ' ' << k;
@@ -371,7 +391,8 @@ TEST(VoxelizeSlabs, octahedra_across_a_slab_boundary_match_independent_tests_vox
         // Both slabs hold part of the shape.
         std::size_t low = 0;
         for (std::size_t k = 0; k < 59; ++k)
-            for (std::size_t j = 527; j <= 573; ++j) low += static_cast<std::size_t>(std::popcount(v[2][0].voxels.row(j, k)[0]));
+            for (std::size_t j = 527; j <= 573; ++j)
+                low += static_cast<std::size_t>(std::popcount(v[2][0].voxels.row(j, k)[0]));
         EXPECT_GT(low, solid / 4);
         EXPECT_LT(low, solid - solid / 4);
     }
@@ -384,11 +405,13 @@ TEST(VoxelizeBlocks, octahedron_on_voxel_centres_in_one_voxel_blocks_and_bad_blo
         auto whole = hmira::voxelize(mesh, g, {.mode = mode});
         ASSERT_TRUE(whole);
         std::size_t set = 0;
-        auto r = hmira::voxelize_blocks(mesh, g, {1, 1, 1}, {.mode = mode}, [&](const hmira::voxel_block& b, hmira::voxelization&& v) {
-            set += v.voxels.count();
-            EXPECT_EQ(v.voxels.value(0, 0, 0), whole->voxels.value(b.lo[0], b.lo[1], b.lo[2])) << int(mode) << " at " << b.lo[0] << ' ' << b.lo[1] << ' ' << b.lo[2];
-            return true;
-        });
+        auto r = hmira::voxelize_blocks(
+            mesh, g, {1, 1, 1}, {.mode = mode}, [&](const hmira::voxel_block& b, hmira::voxelization&& v) {
+                set += v.voxels.count();
+                EXPECT_EQ(v.voxels.value(0, 0, 0), whole->voxels.value(b.lo[0], b.lo[1], b.lo[2]))
+                    << int(mode) << " at " << b.lo[0] << ' ' << b.lo[1] << ' ' << b.lo[2];
+                return true;
+            });
         ASSERT_TRUE(r);
         EXPECT_EQ(set, whole->voxels.count());
     }
@@ -399,11 +422,13 @@ TEST(VoxelizeBlocks, octahedron_on_voxel_centres_in_one_voxel_blocks_and_bad_blo
     auto empty = hmira::voxelize_block(mesh, g, {{0, 0, 0}, {1, 0, 1}});
     ASSERT_FALSE(empty);
     EXPECT_NE(empty.error().message.find("along y"), std::string::npos);
-    auto zero = hmira::voxelize_blocks(mesh, g, {0, 4, 4}, {}, [](const hmira::voxel_block&, hmira::voxelization&&) { return true; });
+    auto zero = hmira::voxelize_blocks(mesh, g, {0, 4, 4}, {},
+                                       [](const hmira::voxel_block&, hmira::voxelization&&) { return true; });
     ASSERT_FALSE(zero);
     // Stopping early hands over no more blocks.
     std::size_t seen = 0;
-    ASSERT_TRUE(hmira::voxelize_blocks(mesh, g, {7, 7, 7}, {}, [&](const hmira::voxel_block&, hmira::voxelization&&) { return ++seen < 3; }));
+    ASSERT_TRUE(hmira::voxelize_blocks(mesh, g, {7, 7, 7}, {},
+                                       [&](const hmira::voxel_block&, hmira::voxelization&&) { return ++seen < 3; }));
     EXPECT_EQ(seen, 3u);
 }
 

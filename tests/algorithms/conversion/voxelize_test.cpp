@@ -58,7 +58,8 @@ double area(const hmira::face_vertex_mesh& m) {
     for (auto f : m.faces()) {
         auto fv = m.face_vertices(f);
         for (std::size_t i = 1; i + 1 < fv.size(); ++i)
-            a += 0.5 * hmira::norm(hmira::cross(m.position(fv[i]) - m.position(fv[0]), m.position(fv[i + 1]) - m.position(fv[0])));
+            a += 0.5 * hmira::norm(hmira::cross(m.position(fv[i]) - m.position(fv[0]),
+                                                m.position(fv[i + 1]) - m.position(fv[0])));
     }
     return a;
 }
@@ -106,12 +107,15 @@ TEST(Voxelize, surface_mode_marks_a_thin_conservative_shell) {
         for (std::size_t j = 0; j < 32; ++j)
             for (std::size_t i = 0; i < 32; ++i) {
                 const double d = std::abs(hmira::norm(geo.position(i, j, k)) - r);
-                if (d > std::sqrt(3.0) / 2 * h + 0.01) { EXPECT_EQ(v->voxels.value(i, j, k), 0); }
+                if (d > std::sqrt(3.0) / 2 * h + 0.01) {
+                    EXPECT_EQ(v->voxels.value(i, j, k), 0);
+                }
             }
     // Conservative: every vertex of the mesh lies in a set voxel.
     for (auto vh : mesh.vertices()) {
         const auto p = mesh.position(vh);
-        const auto i = std::size_t(std::lround((p.x - geo.origin.x) / h)), j = std::size_t(std::lround((p.y - geo.origin.y) / h)),
+        const auto i = std::size_t(std::lround((p.x - geo.origin.x) / h)),
+                   j = std::size_t(std::lround((p.y - geo.origin.y) / h)),
                    k = std::size_t(std::lround((p.z - geo.origin.z) / h));
         EXPECT_EQ(v->voxels.value(i, j, k), 1);
     }
@@ -124,7 +128,8 @@ TEST(Voxelize, single_triangle_marks_exactly_the_boxes_it_crosses) {
     std::uniform_real_distribution<double> u(0.5, 7.5);
     for (int trial = 0; trial < 20; ++trial) {
         hmira::face_vertex_mesh m;
-        auto a = m.add_vertex({u(rng), u(rng), u(rng)}), b = m.add_vertex({u(rng), u(rng), u(rng)}), c = m.add_vertex({u(rng), u(rng), u(rng)});
+        auto a = m.add_vertex({u(rng), u(rng), u(rng)}), b = m.add_vertex({u(rng), u(rng), u(rng)}),
+             c = m.add_vertex({u(rng), u(rng), u(rng)});
         ASSERT_TRUE(m.add_face({a, b, c}));
         const hmira::grid_geometry geo{{9, 9, 9}, {0, 0, 0}, {1, 1, 1}};
         auto v = hmira::voxelize(m, geo, {.mode = hmira::voxelize_mode::surface});
@@ -133,14 +138,19 @@ TEST(Voxelize, single_triangle_marks_exactly_the_boxes_it_crosses) {
         for (int s = 0; s <= 200; ++s)
             for (int t = 0; s + t <= 200; ++t) {
                 const auto p = pa + (pb - pa) * (s / 200.0) + (pc - pa) * (t / 200.0);
-                EXPECT_EQ(v->voxels.value(std::size_t(std::lround(p.x)), std::size_t(std::lround(p.y)), std::size_t(std::lround(p.z))), 1);
+                EXPECT_EQ(v->voxels.value(std::size_t(std::lround(p.x)), std::size_t(std::lround(p.y)),
+                                          std::size_t(std::lround(p.z))),
+                          1);
             }
         // No voxel farther than half a diagonal from the triangle's plane is set.
         const auto n = hmira::normalized(hmira::cross(pb - pa, pc - pa));
         for (std::size_t k = 0; k < 9; ++k)
             for (std::size_t j = 0; j < 9; ++j)
                 for (std::size_t i = 0; i < 9; ++i)
-                    if (v->voxels.value(i, j, k)) { EXPECT_LE(std::abs(hmira::dot(n, vec3<double>{double(i), double(j), double(k)} - pa)), std::sqrt(3.0) / 2 + 1e-9); }
+                    if (v->voxels.value(i, j, k)) {
+                        EXPECT_LE(std::abs(hmira::dot(n, vec3<double>{double(i), double(j), double(k)} - pa)),
+                                  std::sqrt(3.0) / 2 + 1e-9);
+                    }
     }
 }
 
@@ -290,7 +300,8 @@ TEST_P(RealMesh, voxelize_then_marching_cubes_is_closed_with_volume_within_one_v
     // Every voxel of a conservative voxelization that holds a vertex is set.
     for (auto v : mesh.vertices()) {
         const auto p = mesh.position(v);
-        const auto i = std::size_t(std::lround((p.x - geo->origin.x) / h)), j = std::size_t(std::lround((p.y - geo->origin.y) / h)),
+        const auto i = std::size_t(std::lround((p.x - geo->origin.x) / h)),
+                   j = std::size_t(std::lround((p.y - geo->origin.y) / h)),
                    k = std::size_t(std::lround((p.z - geo->origin.z) / h));
         ASSERT_EQ(vox->voxels.value(i, j, k), 1);
     }
@@ -315,7 +326,8 @@ TEST(TriangleBox, prepared_test_agrees_with_direct_separating_axis_test) {
             // Only boxes the bounding boxes allow: the caller checks the box normals.
             bool bbox = true;
             for (std::size_t k = 0; k < 3; ++k)
-                bbox &= std::min({a[k], b[k], c[k]}) <= center[k] + 0.5 && std::max({a[k], b[k], c[k]}) >= center[k] - 0.5;
+                bbox &=
+                    std::min({a[k], b[k], c[k]}) <= center[k] + 0.5 && std::max({a[k], b[k], c[k]}) >= center[k] - 0.5;
             if (!bbox) continue;
             const bool direct = hmira::detail::triangle_box_overlap(center, 0.5, a, b, c);
             ++total;
@@ -348,7 +360,8 @@ std::array<vec3<double>, 3> random_triangle(std::mt19937& rng, int kind) {
         case 2: {
             std::array<vec3<double>, 3> t{point(), point(), point()};
             const std::size_t axis = std::size_t(half(rng) % 3);
-            const double level = half(rng) % 2 ? half(rng) * 0.5 : u(rng);  // on a voxel face or centre plane, or anywhere
+            const double level =
+                half(rng) % 2 ? half(rng) * 0.5 : u(rng);  // on a voxel face or centre plane, or anywhere
             for (auto& p : t) p[axis] = level;
             return t;
         }
@@ -356,9 +369,10 @@ std::array<vec3<double>, 3> random_triangle(std::mt19937& rng, int kind) {
             const vec3<double> a = point(), b = point();
             return {a, b, a + (b - a) * 0.5 + vec3<double>{0.05, -0.03, 0.02}};
         }
-        case 4: return {vec3<double>{quarter(rng) * 0.25, quarter(rng) * 0.25, quarter(rng) * 0.25},
-                        vec3<double>{quarter(rng) * 0.25, quarter(rng) * 0.25, quarter(rng) * 0.25},
-                        vec3<double>{quarter(rng) * 0.25, quarter(rng) * 0.25, quarter(rng) * 0.25}};
+        case 4:
+            return {vec3<double>{quarter(rng) * 0.25, quarter(rng) * 0.25, quarter(rng) * 0.25},
+                    vec3<double>{quarter(rng) * 0.25, quarter(rng) * 0.25, quarter(rng) * 0.25},
+                    vec3<double>{quarter(rng) * 0.25, quarter(rng) * 0.25, quarter(rng) * 0.25}};
         case 5: {
             const vec3<double> a = lattice();
             vec3<double> b = a;
@@ -383,7 +397,8 @@ std::array<vec3<double>, 3> random_triangle(std::mt19937& rng, int kind) {
 // triangle once its box is widened by `slack` on every side (the walk's rounding margin).
 // Reports the first disagreements of each kind; returns the voxels compared and how many the
 // triangle touches.
-std::pair<long long, long long> compare_with_exact_test(std::initializer_list<int> kinds, int trials, unsigned seed, double slack) {
+std::pair<long long, long long> compare_with_exact_test(std::initializer_list<int> kinds, int trials, unsigned seed,
+                                                        double slack) {
     std::mt19937 rng(seed);
     const hmira::grid_geometry geo{{15, 15, 15}, {0, 0, 0}, {1, 1, 1}};
     long long touched = 0, tested = 0;
@@ -394,7 +409,8 @@ std::pair<long long, long long> compare_with_exact_test(std::initializer_list<in
             hmira::face_vertex_mesh m;
             auto a = m.add_vertex(t[0]), b = m.add_vertex(t[1]), c = m.add_vertex(t[2]);
             EXPECT_TRUE(m.add_face({a, b, c}));
-            auto v = hmira::voxelize(m, geo, {.mode = hmira::voxelize_mode::surface, .allow_degenerate = true, .threads = 1});
+            auto v = hmira::voxelize(m, geo,
+                                     {.mode = hmira::voxelize_mode::surface, .allow_degenerate = true, .threads = 1});
             if (!v) {
                 ADD_FAILURE() << v.error().message;
                 continue;
@@ -412,20 +428,27 @@ std::pair<long long, long long> compare_with_exact_test(std::initializer_list<in
                         const vec3<double> centre{double(i), double(j), double(k)};
                         const bool set = v->voxels.value(i, j, k) != 0;
                         ++tested;
-                        if (well_shaped && std::abs(hmira::dot(normal, centre - t[0])) > (0.8661 + 1e-3) * normal_length) {
-                            if (set && ++wrong[0] <= 2) ADD_FAILURE() << "kind " << kind << " trial " << trial << ": voxel " << i << ' ' << j << ' ' << k << " set, far from the plane";
+                        if (well_shaped &&
+                            std::abs(hmira::dot(normal, centre - t[0])) > (0.8661 + 1e-3) * normal_length) {
+                            if (set && ++wrong[0] <= 2)
+                                ADD_FAILURE() << "kind " << kind << " trial " << trial << ": voxel " << i << ' ' << j
+                                              << ' ' << k << " set, far from the plane";
                             continue;
                         }
-                        const bool touches = !degenerate && hmira_test::exact_box_meets_triangle(centre, 0.5, t[0], t[1], t[2]);
+                        const bool touches =
+                            !degenerate && hmira_test::exact_box_meets_triangle(centre, 0.5, t[0], t[1], t[2]);
                         touched += touches;
                         const bool wrongly_empty = touches && !set;
-                        const bool wrongly_set = set && !touches && !hmira_test::exact_box_meets_triangle(centre, 0.5 + slack, t[0], t[1], t[2]);
+                        const bool wrongly_set =
+                            set && !touches &&
+                            !hmira_test::exact_box_meets_triangle(centre, 0.5 + slack, t[0], t[1], t[2]);
                         if (!wrongly_empty && !wrongly_set) continue;
                         if (++wrong[wrongly_empty] <= 2)
-                            ADD_FAILURE() << "kind " << kind << " trial " << trial << ": voxel " << i << ' ' << j << ' ' << k
-                                          << (wrongly_empty ? " touched but left empty" : " set but not touched") << "; triangle "
-                                          << std::setprecision(17) << t[0].x << ' ' << t[0].y << ' ' << t[0].z << ", " << t[1].x << ' '
-                                          << t[1].y << ' ' << t[1].z << ", " << t[2].x << ' ' << t[2].y << ' ' << t[2].z;
+                            ADD_FAILURE()
+                                << "kind " << kind << " trial " << trial << ": voxel " << i << ' ' << j << ' ' << k
+                                << (wrongly_empty ? " touched but left empty" : " set but not touched") << "; triangle "
+                                << std::setprecision(17) << t[0].x << ' ' << t[0].y << ' ' << t[0].z << ", " << t[1].x
+                                << ' ' << t[1].y << ' ' << t[1].z << ", " << t[2].x << ' ' << t[2].y << ' ' << t[2].z;
                     }
         }
         EXPECT_EQ(wrong[0], 0) << "kind " << kind << ": voxels set that the triangle does not touch";
@@ -502,7 +525,8 @@ TEST(VoxelizeSurface, the_exact_oracle_counts_touching_and_only_touching) {
     EXPECT_FALSE(exact_box_meets_triangle(o, 0.5, {0.5 + 1e-15, 0.5, 0.5}, {3, 0.7, 0.9}, {0.6, 2, 4}));
     // The triangle lies in the box's face plane z = 0.5: touching along a region.
     EXPECT_TRUE(exact_box_meets_triangle(o, 0.5, {-3, -3, 0.5}, {3, -3, 0.5}, {0, 3, 0.5}));
-    EXPECT_FALSE(exact_box_meets_triangle(o, 0.5, {-3, -3, 0.5000000000000001}, {3, -3, 0.5000000000000001}, {0, 3, 0.5000000000000001}));
+    EXPECT_FALSE(exact_box_meets_triangle(o, 0.5, {-3, -3, 0.5000000000000001}, {3, -3, 0.5000000000000001},
+                                          {0, 3, 0.5000000000000001}));
     // An edge passes exactly through the box's edge x = 0.5, y = 0.5 (the plane x + y = 1 holds
     // the triangle), the rest of the triangle outside: touching along a line.
     EXPECT_TRUE(exact_box_meets_triangle(o, 0.5, {0.5, 0.5, -2}, {0.5, 0.5, 2}, {3, -2, 0}));
@@ -511,8 +535,10 @@ TEST(VoxelizeSurface, the_exact_oracle_counts_touching_and_only_touching) {
     const double d = 0x1p-50;
     EXPECT_FALSE(exact_box_meets_triangle(o, 0.5, {0.5, 0.5 + d, -2}, {0.5, 0.5 + d, 2}, {3, -2 + d, 0}));
     // Bounding boxes overlap, the plane passes beside the box's corner or through it.
-    EXPECT_FALSE(exact_box_meets_triangle(o, 0.5, {2, 0, 0}, {0, 2, 0}, {0, 0, 2}));  // x + y + z = 2 misses the box (max 1.5)
-    EXPECT_TRUE(exact_box_meets_triangle(o, 0.5, {1.5, 0, 0}, {0, 1.5, 0}, {0, 0, 1.5}));  // x + y + z = 1.5 touches its corner
+    EXPECT_FALSE(
+        exact_box_meets_triangle(o, 0.5, {2, 0, 0}, {0, 2, 0}, {0, 0, 2}));  // x + y + z = 2 misses the box (max 1.5)
+    EXPECT_TRUE(
+        exact_box_meets_triangle(o, 0.5, {1.5, 0, 0}, {0, 1.5, 0}, {0, 0, 1.5}));  // x + y + z = 1.5 touches its corner
 }
 
 // Exactly collinear corners: refused by default, accepted with no voxels of their own.

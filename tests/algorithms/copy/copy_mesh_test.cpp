@@ -175,8 +175,7 @@ TYPED_TEST(copy_mesh_test, halfedge_mesh_copies_into_every_model) {
     for (const auto& src : srcs) {
         if (!hmira::polygon_mesh_builder<M>) {
             bool triangles = true;
-            for (auto f : HT::faces(src))
-                triangles &= std::ranges::distance(HT::face_vertices(src, f)) == 3;
+            for (auto f : HT::faces(src)) triangles &= std::ranges::distance(HT::face_vertices(src, f)) == 3;
             if (!triangles) continue;
         }
         M dst;

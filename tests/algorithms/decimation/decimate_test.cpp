@@ -22,7 +22,6 @@
 #include "algorithms/decimation/decimation_support.hpp"
 #include "algorithms/triangle/triangle_support.hpp"
 
-
 namespace {
 
 using namespace hmira_test;
@@ -163,7 +162,8 @@ TYPED_TEST(decimate_test, seeded_random_runs_stay_valid_and_keep_genus_boundary_
             const long long chi0 = chi(m);
             const std::size_t loops0 = boundary_loops(m), f0 = T::face_count(m);
             const auto boundary0 = positions_of(m, [&](auto v) { return on_boundary(m, v); });
-            hmira::decimate_options options{.target_faces = std::uniform_int_distribution<std::size_t>(f0 / 20, f0 - 1)(rng)};
+            hmira::decimate_options options{.target_faces =
+                                                std::uniform_int_distribution<std::size_t>(f0 / 20, f0 - 1)(rng)};
             options.max_normal_angle = std::uniform_real_distribution<double>(30, 180)(rng);
             if (run % 3 == 0) options.max_aspect_ratio = 8;
             auto r = hmira::decimate(m, options);
@@ -262,7 +262,8 @@ double worst_aspect_ratio(const M& m) {
             p.push_back({double(q[0]), double(q[1]), double(q[2])});
         }
         const double area2 = hmira::norm(hmira::cross(p[1] - p[0], p[2] - p[0]));
-        const double longest = std::max({hmira::squared_norm(p[1] - p[0]), hmira::squared_norm(p[2] - p[1]), hmira::squared_norm(p[0] - p[2])});
+        const double longest = std::max(
+            {hmira::squared_norm(p[1] - p[0]), hmira::squared_norm(p[2] - p[1]), hmira::squared_norm(p[0] - p[2])});
         worst = std::max(worst, longest / area2 * std::sqrt(3.0) / 2);
     }
     return worst;
@@ -304,7 +305,8 @@ TYPED_TEST(decimate_test, polygon_input_is_triangulated_first_with_a_note) {
     HMIRA_REQUIRE_TRIANGLE_OPS(M)
     else if constexpr (!hmira::triangulable_mesh<M>) {
         GTEST_SKIP() << "triangles only";
-    } else {
+    }
+    else {
         using T = hmira::default_traits<M>;
         M m = mesh_from<M>(torus(12, 8));
         auto r = hmira::decimate(m, {.target_faces = 60});
@@ -313,7 +315,8 @@ TYPED_TEST(decimate_test, polygon_input_is_triangulated_first_with_a_note) {
         EXPECT_NE(r.value().note.find("triangulated"), std::string::npos);
         EXPECT_LE(r.value().faces, 60u);
         EXPECT_GE(r.value().faces, 59u);
-        for (auto f : T::faces(m)) EXPECT_TRUE((hmira::detail::triangle_ops::in_triangle<M, T>(m, T::face_halfedge(m, f))));
+        for (auto f : T::faces(m))
+            EXPECT_TRUE((hmira::detail::triangle_ops::in_triangle<M, T>(m, T::face_halfedge(m, f))));
         EXPECT_EQ(chi(m), 0);
         EXPECT_TRUE(valid_topology(m));
     }
@@ -387,6 +390,5 @@ TYPED_TEST(decimate_test, a_cancelled_run_restores_the_mesh_and_progress_rises) 
         EXPECT_TRUE(valid_topology(m));
     }
 }
-
 
 }  // namespace

@@ -33,8 +33,9 @@ inline int orient(const point3& a, const point3& b, const point3& c) {
 inline std::vector<point3> monotone_chain_hull(std::vector<point3> pts) {
     auto lex = [](const point3& a, const point3& b) { return a.x != b.x ? a.x < b.x : a.y < b.y; };
     std::sort(pts.begin(), pts.end(), lex);
-    pts.erase(std::unique(pts.begin(), pts.end(), [](const point3& a, const point3& b) { return a.x == b.x && a.y == b.y; }),
-              pts.end());
+    pts.erase(
+        std::unique(pts.begin(), pts.end(), [](const point3& a, const point3& b) { return a.x == b.x && a.y == b.y; }),
+        pts.end());
     if (pts.size() < 3) return pts;
     std::vector<point3> h(2 * pts.size());
     std::size_t k = 0;
@@ -74,7 +75,8 @@ inline ::testing::AssertionResult is_delaunay_triangulation(const std::vector<po
     {
         std::vector<std::uint32_t> idx(n);
         for (std::size_t i = 0; i < n; ++i) idx[i] = static_cast<std::uint32_t>(i);
-        std::sort(idx.begin(), idx.end(), [&](auto a, auto b) { return P[a].x != P[b].x ? P[a].x < P[b].x : P[a].y < P[b].y; });
+        std::sort(idx.begin(), idx.end(),
+                  [&](auto a, auto b) { return P[a].x != P[b].x ? P[a].x < P[b].x : P[a].y < P[b].y; });
         for (std::size_t i = 1; i < n; ++i)
             if (P[idx[i]].x == P[idx[i - 1]].x && P[idx[i]].y == P[idx[i - 1]].y)
                 return AssertionFailure() << "output points " << idx[i - 1] << " and " << idx[i] << " coincide";
@@ -120,7 +122,8 @@ inline ::testing::AssertionResult is_delaunay_triangulation(const std::vector<po
     }
     // The boundary is one loop and it is the reported hull.
     const std::size_t h = d.hull.size();
-    if (boundary_next.size() != h) return AssertionFailure() << "boundary has " << boundary_next.size() << " edges, hull " << h;
+    if (boundary_next.size() != h)
+        return AssertionFailure() << "boundary has " << boundary_next.size() << " edges, hull " << h;
     for (std::size_t i = 0; i < h; ++i) {
         const auto it = boundary_next.find(d.hull[i]);
         if (it == boundary_next.end() || it->second != d.hull[(i + 1) % h])
@@ -142,11 +145,13 @@ inline ::testing::AssertionResult is_delaunay_triangulation(const std::vector<po
     const auto ref = monotone_chain_hull(input);
     if (corners.size() != ref.size())
         return AssertionFailure() << "hull has " << corners.size() << " corners, monotone chain " << ref.size();
-    const auto start = std::find_if(corners.begin(), corners.end(), [&](const point3& q) { return q.x == ref[0].x && q.y == ref[0].y; });
+    const auto start = std::find_if(corners.begin(), corners.end(),
+                                    [&](const point3& q) { return q.x == ref[0].x && q.y == ref[0].y; });
     if (start == corners.end()) return AssertionFailure() << "hull misses the leftmost point";
     std::rotate(corners.begin(), start, corners.end());
     for (std::size_t i = 0; i < ref.size(); ++i)
-        if (corners[i].x != ref[i].x || corners[i].y != ref[i].y) return AssertionFailure() << "hull corner " << i << " differs";
+        if (corners[i].x != ref[i].x || corners[i].y != ref[i].y)
+            return AssertionFailure() << "hull corner " << i << " differs";
     return ::testing::AssertionSuccess() << interior_checked << " interior edges checked";
 }
 

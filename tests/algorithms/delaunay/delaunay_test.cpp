@@ -89,7 +89,8 @@ TEST(delaunay, points_on_a_circle_are_triangulated) {
 TEST(delaunay, exactly_cocircular_points_are_triangulated) {
     // The 12 integer points on the circle of radius 5, plus the centre, repeated on a grid of
     // centres 10 apart: many exactly cocircular quadruples.
-    const int r5[][2] = {{5, 0}, {4, 3}, {3, 4}, {0, 5}, {-3, 4}, {-4, 3}, {-5, 0}, {-4, -3}, {-3, -4}, {0, -5}, {3, -4}, {4, -3}};
+    const int r5[][2] = {{5, 0},  {4, 3},   {3, 4},   {0, 5},  {-3, 4}, {-4, 3},
+                         {-5, 0}, {-4, -3}, {-3, -4}, {0, -5}, {3, -4}, {4, -3}};
     std::vector<point3> pts;
     for (int cx = 0; cx < 10; ++cx)
         for (int cy = 0; cy < 10; ++cy) {
@@ -190,8 +191,11 @@ TEST(delaunay, all_collinear_input_gives_no_triangles_and_says_so) {
 }
 
 TEST(delaunay, fewer_than_three_distinct_points_is_an_error) {
-    const std::vector<std::vector<point3>> cases = {
-        {}, {{1, 2, 3}}, {{1, 2, 3}, {4, 5, 6}}, {{1, 2, 3}, {1, 2, 4}, {1, 2, 5}}, {{0, 0, 0}, {1, 1, 0}, {0, 0, 0}, {1, 1, 1}}};
+    const std::vector<std::vector<point3>> cases = {{},
+                                                    {{1, 2, 3}},
+                                                    {{1, 2, 3}, {4, 5, 6}},
+                                                    {{1, 2, 3}, {1, 2, 4}, {1, 2, 5}},
+                                                    {{0, 0, 0}, {1, 1, 0}, {0, 0, 0}, {1, 1, 1}}};
     for (const auto& pts : cases) {
         const auto d = delaunay_triangulation(pts);
         ASSERT_FALSE(d) << pts.size();
@@ -202,7 +206,8 @@ TEST(delaunay, fewer_than_three_distinct_points_is_an_error) {
 
 TEST(delaunay, non_finite_and_out_of_range_coordinates_are_errors_naming_the_point) {
     const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
-    const point3 bad[] = {{nan, 0, 0}, {0, inf, 0}, {0, 0, nan}, {-inf, 1, 1}, {1e60, 0, 0}, {0, -1e300, 0}, {1e-60, 0, 0}, {0, 4.9e-324, 0}};
+    const point3 bad[] = {{nan, 0, 0},  {0, inf, 0},    {0, 0, nan},   {-inf, 1, 1},
+                          {1e60, 0, 0}, {0, -1e300, 0}, {1e-60, 0, 0}, {0, 4.9e-324, 0}};
     for (const auto& b : bad) {
         auto pts = hmira_test::uniform_points(50, 31);
         pts[17] = b;
@@ -251,7 +256,8 @@ TEST(delaunay, result_does_not_depend_on_input_order_in_general_position) {
 TEST(delaunay, heights_are_kept_for_a_two_and_a_half_d_terrain) {
     std::vector<std::array<double, 3>> pts;
     for (int i = 0; i < 30; ++i)
-        for (int j = 0; j < 30; ++j) pts.push_back({i * 0.1, j * 0.1 + 0.01 * ((i * j) % 3), std::sin(i * 0.3) * std::cos(j * 0.2)});
+        for (int j = 0; j < 30; ++j)
+            pts.push_back({i * 0.1, j * 0.1 + 0.01 * ((i * j) % 3), std::sin(i * 0.3) * std::cos(j * 0.2)});
     const auto d = delaunay_triangulation(pts);
     ASSERT_TRUE(d);
     for (std::size_t v = 0; v < d->points.size(); ++v) EXPECT_EQ(d->points[v].z, pts[d->vertex_to_input[v]][2]);
@@ -329,8 +335,9 @@ TYPED_TEST_SUITE(delaunay_into_mesh, mesh_models);
 
 TYPED_TEST(delaunay_into_mesh, output_mesh_validates_and_matches_the_triangle_list) {
     using T = hmira::default_traits<TypeParam>;
-    const std::vector<std::vector<point3>> inputs = {hmira_test::uniform_points(20000, 71), hmira_test::lattice_points(60),
-                                                     hmira_test::circle_points(2000), hmira_test::clustered_points(10000, 72)};
+    const std::vector<std::vector<point3>> inputs = {hmira_test::uniform_points(20000, 71),
+                                                     hmira_test::lattice_points(60), hmira_test::circle_points(2000),
+                                                     hmira_test::clustered_points(10000, 72)};
     for (const auto& pts : inputs) {
         TypeParam mesh;
         const auto r = delaunay_triangulation(mesh, pts);

@@ -104,7 +104,8 @@ private:
             if (a[i] != b[i]) return a[i] < b[i] ? -1 : 1;
         return 0;
     }
-    static std::vector<std::uint32_t> add_mag(const std::vector<std::uint32_t>& a, const std::vector<std::uint32_t>& b) {
+    static std::vector<std::uint32_t> add_mag(const std::vector<std::uint32_t>& a,
+                                              const std::vector<std::uint32_t>& b) {
         std::vector<std::uint32_t> r(std::max(a.size(), b.size()) + 1, 0);
         std::uint64_t carry = 0;
         for (std::size_t i = 0; i < r.size(); ++i) {
@@ -114,7 +115,8 @@ private:
         }
         return r;
     }
-    static std::vector<std::uint32_t> sub_mag(const std::vector<std::uint32_t>& a, const std::vector<std::uint32_t>& b) {
+    static std::vector<std::uint32_t> sub_mag(const std::vector<std::uint32_t>& a,
+                                              const std::vector<std::uint32_t>& b) {
         std::vector<std::uint32_t> r(a.size(), 0);
         std::int64_t borrow = 0;
         for (std::size_t i = 0; i < a.size(); ++i) {

@@ -110,7 +110,8 @@ TEST(predicates, incircle_matches_exact_sign_near_the_unit_circle_translated_far
 
 TEST(predicates, incircle_is_zero_on_exactly_cocircular_lattice_points) {
     // Pythagorean points on circles of radius 5 and 25 around integer centres.
-    const int pts5[][2] = {{5, 0}, {4, 3}, {3, 4}, {0, 5}, {-3, 4}, {-4, 3}, {-5, 0}, {-4, -3}, {-3, -4}, {0, -5}, {3, -4}, {4, -3}};
+    const int pts5[][2] = {{5, 0},  {4, 3},   {3, 4},   {0, 5},  {-3, 4}, {-4, 3},
+                           {-5, 0}, {-4, -3}, {-3, -4}, {0, -5}, {3, -4}, {4, -3}};
     for (double cx0 : {0.0, 1e7, -3.5e8}) {
         for (double cy0 : {0.0, 2.0e6 + 0.5, -77.25}) {
             for (int i = 0; i < 12; ++i)
@@ -139,7 +140,8 @@ TEST(predicates, incircle_matches_exact_sign_for_random_nearly_cocircular_points
             pt[0] = ox + r * std::cos(t);
             pt[1] = oy + r * std::sin(t);
         }
-        for (int m = ulps(rng); m != 0; m += (m > 0 ? -1 : 1)) q[3][1] = std::nextafter(q[3][1], m > 0 ? 1e300 : -1e300);
+        for (int m = ulps(rng); m != 0; m += (m > 0 ? -1 : 1))
+            q[3][1] = std::nextafter(q[3][1], m > 0 ? 1e300 : -1e300);
         const int expect = exact_incircle(q[0][0], q[0][1], q[1][0], q[1][1], q[2][0], q[2][1], q[3][0], q[3][1]);
         ASSERT_EQ(incircle(q[0][0], q[0][1], q[1][0], q[1][1], q[2][0], q[2][1], q[3][0], q[3][1]), expect) << k;
     }

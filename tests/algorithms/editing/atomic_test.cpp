@@ -35,7 +35,10 @@ struct faulty_traits : hmira::default_traits<M> {
     using P = hmira::vec3<typename base::scalar>;
     static inline long long fail_inner_at = -1, throw_at = -1;  // countdowns; -1: off
     static inline long long inner_calls = 0, mutations = 0;
-    static void reset() { fail_inner_at = throw_at = -1; inner_calls = mutations = 0; }
+    static void reset() {
+        fail_inner_at = throw_at = -1;
+        inner_calls = mutations = 0;
+    }
     static bool fail_inner_call() {
         ++inner_calls;
         return fail_inner_at >= 0 && fail_inner_at-- == 0;
@@ -44,30 +47,66 @@ struct faulty_traits : hmira::default_traits<M> {
         ++mutations;
         if (throw_at >= 0 && throw_at-- == 0) throw std::bad_alloc();
     }
-    static void set_next(M& m, H h, H n) { tick(); base::set_next(m, h, n); }
-    static void set_target(M& m, H h, V v) { tick(); base::set_target(m, h, v); }
-    static void set_face(M& m, H h, F f) { tick(); base::set_face(m, h, f); }
-    static void set_vertex_halfedge(M& m, V v, H h) { tick(); base::set_vertex_halfedge(m, v, h); }
-    static void set_face_halfedge(M& m, F f, H h) { tick(); base::set_face_halfedge(m, f, h); }
-    static void set_position(M& m, V v, const P& p) { tick(); base::set_position(m, v, p); }
-    static H new_edge(M& m, V a, V b) { tick(); return base::new_edge(m, a, b); }
-    static F new_face(M& m) { tick(); return base::new_face(m); }
-    static V add_vertex(M& m, const P& p) { tick(); return base::add_vertex(m, p); }
+    static void set_next(M& m, H h, H n) {
+        tick();
+        base::set_next(m, h, n);
+    }
+    static void set_target(M& m, H h, V v) {
+        tick();
+        base::set_target(m, h, v);
+    }
+    static void set_face(M& m, H h, F f) {
+        tick();
+        base::set_face(m, h, f);
+    }
+    static void set_vertex_halfedge(M& m, V v, H h) {
+        tick();
+        base::set_vertex_halfedge(m, v, h);
+    }
+    static void set_face_halfedge(M& m, F f, H h) {
+        tick();
+        base::set_face_halfedge(m, f, h);
+    }
+    static void set_position(M& m, V v, const P& p) {
+        tick();
+        base::set_position(m, v, p);
+    }
+    static H new_edge(M& m, V a, V b) {
+        tick();
+        return base::new_edge(m, a, b);
+    }
+    static F new_face(M& m) {
+        tick();
+        return base::new_face(m);
+    }
+    static V add_vertex(M& m, const P& p) {
+        tick();
+        return base::add_vertex(m, p);
+    }
     // Erasing only marks an element on every model and never allocates; the journal relies
     // on that (its commit erases last), so erasures are counted but never throw.
-    static void erase_edge(M& m, E e) { ++mutations; base::erase_edge(m, e); }
-    static void erase_face(M& m, F f) { ++mutations; base::erase_face(m, f); }
-    static void erase_vertex(M& m, V v) { ++mutations; base::erase_vertex(m, v); }
+    static void erase_edge(M& m, E e) {
+        ++mutations;
+        base::erase_edge(m, e);
+    }
+    static void erase_face(M& m, F f) {
+        ++mutations;
+        base::erase_face(m, f);
+    }
+    static void erase_vertex(M& m, V v) {
+        ++mutations;
+        base::erase_vertex(m, v);
+    }
 };
 
 template <class M>
 struct atomic_test : ::testing::Test {};
 TYPED_TEST_SUITE(atomic_test, hmira_test::all_models);
 
-#define HMIRA_REQUIRE_EDITING(M)                                                   \
-    if constexpr (!hmira::extrudable_mesh<M>) {                                    \
+#define HMIRA_REQUIRE_EDITING(M)                                                        \
+    if constexpr (!hmira::extrudable_mesh<M>) {                                         \
         GTEST_SKIP() << "not an editable model (no Euler operators or triangles only)"; \
-        return;                                                                    \
+        return;                                                                         \
     }
 
 template <class M, class T = hmira::default_traits<M>>
@@ -91,16 +130,16 @@ std::vector<typename T::face_handle> all_face_handles(const M& m) {
 
 /// One edit, named for messages, applied through traits T to a selection chosen by `rng`.
 enum class edit_kind { truncate, bevel1, bevel2, bevel3, extrude_region, extrude_individual };
-constexpr edit_kind all_edits[] = {edit_kind::truncate, edit_kind::bevel1, edit_kind::bevel2,
-                                   edit_kind::bevel3, edit_kind::extrude_region, edit_kind::extrude_individual};
+constexpr edit_kind all_edits[] = {edit_kind::truncate, edit_kind::bevel1,         edit_kind::bevel2,
+                                   edit_kind::bevel3,   edit_kind::extrude_region, edit_kind::extrude_individual};
 const char* name_of(edit_kind k) {
     switch (k) {
-    case edit_kind::truncate: return "truncate";
-    case edit_kind::bevel1: return "bevel segments=1";
-    case edit_kind::bevel2: return "bevel segments=2";
-    case edit_kind::bevel3: return "bevel segments=3";
-    case edit_kind::extrude_region: return "extrude region";
-    case edit_kind::extrude_individual: return "extrude individual";
+        case edit_kind::truncate: return "truncate";
+        case edit_kind::bevel1: return "bevel segments=1";
+        case edit_kind::bevel2: return "bevel segments=2";
+        case edit_kind::bevel3: return "bevel segments=3";
+        case edit_kind::extrude_region: return "extrude region";
+        case edit_kind::extrude_individual: return "extrude individual";
     }
     return "?";
 }
@@ -128,22 +167,22 @@ planned_edit<M> plan_edit(const M& m, edit_kind kind, std::mt19937& rng, bool ev
         return all;
     };
     switch (kind) {
-    case edit_kind::truncate:
-        p.vertices = pick(all_vertices(m));
-        p.amount = u(rng) < 0.2 ? 0.5 : 0.05 + 0.9 * u(rng);
-        break;
-    case edit_kind::bevel1:
-    case edit_kind::bevel2:
-    case edit_kind::bevel3:
-        p.edges = pick(all_edge_handles(m));
-        p.amount = 0.02 + 0.6 * u(rng);
-        p.clamp = u(rng) < 0.8;
-        break;
-    case edit_kind::extrude_region:
-    case edit_kind::extrude_individual:
-        p.faces = pick(all_face_handles(m));
-        p.amount = (u(rng) < 0.5 ? -1 : 1) * (0.05 + u(rng));
-        break;
+        case edit_kind::truncate:
+            p.vertices = pick(all_vertices(m));
+            p.amount = u(rng) < 0.2 ? 0.5 : 0.05 + 0.9 * u(rng);
+            break;
+        case edit_kind::bevel1:
+        case edit_kind::bevel2:
+        case edit_kind::bevel3:
+            p.edges = pick(all_edge_handles(m));
+            p.amount = 0.02 + 0.6 * u(rng);
+            p.clamp = u(rng) < 0.8;
+            break;
+        case edit_kind::extrude_region:
+        case edit_kind::extrude_individual:
+            p.faces = pick(all_face_handles(m));
+            p.amount = (u(rng) < 0.5 ? -1 : 1) * (0.05 + u(rng));
+            break;
     }
     return p;
 }
@@ -156,14 +195,18 @@ std::optional<hmira::error> run(M& m, const planned_edit<M>& p) {
         return r.error();
     };
     switch (p.kind) {
-    case edit_kind::truncate: return err(hmira::truncate<M, T>(m, p.vertices, {.fraction = p.amount}));
-    case edit_kind::bevel1: return err(hmira::bevel<M, T>(m, p.edges, {.width = p.amount, .segments = 1, .clamp_overlap = p.clamp}));
-    case edit_kind::bevel2: return err(hmira::bevel<M, T>(m, p.edges, {.width = p.amount, .segments = 2, .clamp_overlap = p.clamp}));
-    case edit_kind::bevel3: return err(hmira::bevel<M, T>(m, p.edges, {.width = p.amount, .segments = 3, .clamp_overlap = p.clamp}));
-    case edit_kind::extrude_region:
-        return err(hmira::extrude<M, T>(m, p.faces, {.distance = p.amount, .mode = hmira::extrude_mode::region}));
-    case edit_kind::extrude_individual:
-        return err(hmira::extrude<M, T>(m, p.faces, {.distance = p.amount, .mode = hmira::extrude_mode::individual}));
+        case edit_kind::truncate: return err(hmira::truncate<M, T>(m, p.vertices, {.fraction = p.amount}));
+        case edit_kind::bevel1:
+            return err(hmira::bevel<M, T>(m, p.edges, {.width = p.amount, .segments = 1, .clamp_overlap = p.clamp}));
+        case edit_kind::bevel2:
+            return err(hmira::bevel<M, T>(m, p.edges, {.width = p.amount, .segments = 2, .clamp_overlap = p.clamp}));
+        case edit_kind::bevel3:
+            return err(hmira::bevel<M, T>(m, p.edges, {.width = p.amount, .segments = 3, .clamp_overlap = p.clamp}));
+        case edit_kind::extrude_region:
+            return err(hmira::extrude<M, T>(m, p.faces, {.distance = p.amount, .mode = hmira::extrude_mode::region}));
+        case edit_kind::extrude_individual:
+            return err(
+                hmira::extrude<M, T>(m, p.faces, {.distance = p.amount, .mode = hmira::extrude_mode::individual}));
     }
     return std::nullopt;
 }
@@ -191,9 +234,9 @@ std::vector<named_shape> shapes() {
     out.push_back({"jittered open grid with a tiny edge", g});
     // Faces 6 and 12 of a 5x5 grid touch at one corner only: removing the faces around that
     // corner pinches it.
-    out.push_back({"grid with diagonal holes (pinched)", hmira_test::without_faces(hmira_test::grid(5, 5), [](std::size_t f) {
-                       return f == 7 || f == 11 || f == 18 || f == 22;
-                   })});
+    out.push_back({"grid with diagonal holes (pinched)",
+                   hmira_test::without_faces(hmira_test::grid(5, 5),
+                                             [](std::size_t f) { return f == 7 || f == 11 || f == 18 || f == 22; })});
     return out;
 }
 
@@ -258,7 +301,8 @@ std::vector<std::pair<std::string, M>> bases() {
         for (bool plugged : {true, false}) {
             M m;
             ringed_cube(m, 0.5, plugged);
-            out.emplace_back(plugged ? "cube with a plugged ring in its top" : "cube with an open ring in its top", std::move(m));
+            out.emplace_back(plugged ? "cube with a plugged ring in its top" : "cube with an open ring in its top",
+                             std::move(m));
         }
     }
     return out;
@@ -273,7 +317,9 @@ TYPED_TEST(atomic_test, random_edits_either_succeed_validly_or_change_nothing) {
         std::size_t succeeded = 0, refused = 0;
         std::size_t ringed = 0;
         for (const auto& [name, base] : bases<M>()) {
-            const struct { const std::string& name; } s{name};
+            const struct {
+                const std::string& name;
+            } s{name};
             if constexpr (hmira::inner_ring_mesh<M, T>)
                 for (auto f : T::faces(base)) ringed += std::ranges::empty(T::inner_rings(base, f)) ? 0 : 1;
             const long long chi = hmira_test::count_euler(base).lhs();
@@ -288,16 +334,19 @@ TYPED_TEST(atomic_test, random_edits_either_succeed_validly_or_change_nothing) {
                     if (e) {
                         ++refused;
                         EXPECT_FALSE(e->message.empty());
-                        ASSERT_TRUE(hmira_test::snapshot(m) == before) << "refused (" << e->message << ") but changed the mesh";
+                        ASSERT_TRUE(hmira_test::snapshot(m) == before)
+                            << "refused (" << e->message << ") but changed the mesh";
                         continue;
                     }
                     ++succeeded;
                     // A pinched input stays pinched where it was not edited: the same problems.
                     const auto problems = hmira::validate<M, T>(m, {.check_geometry = false});
                     ASSERT_EQ(problems.size(), base_problems) << describe(base, p) << hmira_test::describe(problems);
-                    for (const auto& q : problems) ASSERT_NE(q.message.find("separate fans"), std::string::npos) << q.message;
+                    for (const auto& q : problems)
+                        ASSERT_NE(q.message.find("separate fans"), std::string::npos) << q.message;
                     ASSERT_EQ(hmira_test::count_euler(m).lhs(), chi) << "Euler-Poincare changed";
-                    if (s.name == "box 2x2x1" && (kind == edit_kind::truncate || (kind == edit_kind::bevel1 && p.clamp))) {
+                    if (s.name == "box 2x2x1" &&
+                        (kind == edit_kind::truncate || (kind == edit_kind::bevel1 && p.clamp))) {
                         EXPECT_TRUE((hmira_test::faces_point_outward<M, T>(m, {1, 1, 0.5})));
                     }
                 }
@@ -334,7 +383,8 @@ void check_every_fault(const M& base, const planned_edit<M>& p, const std::strin
         FT::fail_inner_at = k;
         const auto e = run<M, FT>(m, p);
         ASSERT_TRUE(e) << "inner call " << k << " was made to fail but the edit succeeded";
-        ASSERT_TRUE(hmira_test::snapshot(m) == before) << "inner call " << k << " of " << inner << " failed: mesh changed";
+        ASSERT_TRUE(hmira_test::snapshot(m) == before)
+            << "inner call " << k << " of " << inner << " failed: mesh changed";
         FT::reset();
         ASSERT_FALSE((run<M, FT>(m, p))) << "the edit no longer applies after the rollback of inner call " << k;
         ASSERT_TRUE(hmira_test::is_valid(m, {.check_geometry = false}));
@@ -352,7 +402,8 @@ void check_every_fault(const M& base, const planned_edit<M>& p, const std::strin
         }
         if (!threw) continue;  // the k-th mutation is an erasure, which never throws
         ++throwing;
-        ASSERT_TRUE(hmira_test::snapshot(m) == before) << "bad_alloc from mutation " << k << " of " << raw << ": mesh changed";
+        ASSERT_TRUE(hmira_test::snapshot(m) == before)
+            << "bad_alloc from mutation " << k << " of " << raw << ": mesh changed";
         FT::reset();
         ASSERT_FALSE((run<M, FT>(m, p))) << "the edit no longer applies after the rollback of mutation " << k;
         ASSERT_TRUE(hmira_test::is_valid(m, {.check_geometry = false}));
@@ -389,9 +440,19 @@ TYPED_TEST(atomic_test, a_failure_or_bad_alloc_at_every_step_of_an_edit_leaves_t
             check_every_fault(box, p, std::string("box, ") + name_of(kind));
         }
         // Boundary vertices and an open region.
-        planned_edit<M> t{.kind = edit_kind::truncate, .vertices = all_vertices<M, T>(open), .edges = {}, .faces = {}, .amount = 0.25, .clamp = true};
+        planned_edit<M> t{.kind = edit_kind::truncate,
+                          .vertices = all_vertices<M, T>(open),
+                          .edges = {},
+                          .faces = {},
+                          .amount = 0.25,
+                          .clamp = true};
         check_every_fault(open, t, "open grid, truncate all");
-        planned_edit<M> x{.kind = edit_kind::extrude_region, .vertices = {}, .edges = {}, .faces = all_face_handles<M, T>(open), .amount = 0.5, .clamp = true};
+        planned_edit<M> x{.kind = edit_kind::extrude_region,
+                          .vertices = {},
+                          .edges = {},
+                          .faces = all_face_handles<M, T>(open),
+                          .amount = 0.5,
+                          .clamp = true};
         check_every_fault(open, x, "open grid, extrude all as a region");
         if constexpr (hmira::euler_ring_mutable_mesh<M, T>) {
             // Faces with holes: the ringed face extruded both ways, the ring's vertices cut
@@ -399,7 +460,8 @@ TYPED_TEST(atomic_test, a_failure_or_bad_alloc_at_every_step_of_an_edit_leaves_t
             M plugged;
             const auto top = ringed_cube<M, T>(plugged, 0.5, true);
             for (auto mode : {edit_kind::extrude_region, edit_kind::extrude_individual}) {
-                planned_edit<M> e{.kind = mode, .vertices = {}, .edges = {}, .faces = {top}, .amount = 0.5, .clamp = true};
+                planned_edit<M> e{
+                    .kind = mode, .vertices = {}, .edges = {}, .faces = {top}, .amount = 0.5, .clamp = true};
                 check_every_fault(plugged, e, std::string("ringed top, ") + name_of(mode));
             }
             std::vector<typename T::edge_handle> ring_edges;
@@ -411,7 +473,12 @@ TYPED_TEST(atomic_test, a_failure_or_bad_alloc_at_every_step_of_an_edit_leaves_t
                 ring_vertices.push_back(T::target(plugged, h));
                 h = T::next(plugged, h);
             } while (h != r);
-            planned_edit<M> b{.kind = edit_kind::bevel1, .vertices = {}, .edges = ring_edges, .faces = {}, .amount = 0.1, .clamp = true};
+            planned_edit<M> b{.kind = edit_kind::bevel1,
+                              .vertices = {},
+                              .edges = ring_edges,
+                              .faces = {},
+                              .amount = 0.1,
+                              .clamp = true};
             {
                 // The ring lies flat in the top face, so its bevelled corners would be faces of
                 // zero area: bevel refuses the selection and leaves the mesh as it was.
@@ -423,7 +490,12 @@ TYPED_TEST(atomic_test, a_failure_or_bad_alloc_at_every_step_of_an_edit_leaves_t
                 ASSERT_TRUE(e) << "a flat ring's edges were bevelled";
                 EXPECT_TRUE(hmira_test::snapshot(m) == before) << e->message;
             }
-            planned_edit<M> t2{.kind = edit_kind::truncate, .vertices = ring_vertices, .edges = {}, .faces = {}, .amount = 0.25, .clamp = true};
+            planned_edit<M> t2{.kind = edit_kind::truncate,
+                               .vertices = ring_vertices,
+                               .edges = {},
+                               .faces = {},
+                               .amount = 0.25,
+                               .clamp = true};
             check_every_fault(plugged, t2, "plugged ring, truncate its vertices");
         }
     }

@@ -28,13 +28,16 @@ using namespace hmira_test;
 /// The models bevel() accepts (face-vertex and triangle-only models cannot be bevelled).
 using bevel_models = ::testing::Types<hmira::halfedge_mesh
 #ifdef HMIRA_TEST_HAS_WINGED_EDGE
-                                      , hmira::winged_edge_mesh
+                                      ,
+                                      hmira::winged_edge_mesh
 #endif
 #ifdef HMIRA_TEST_WITH_OPENMESH
-                                      , openmesh_poly
+                                      ,
+                                      openmesh_poly
 #endif
 #ifdef HMIRA_TEST_WITH_CGAL
-                                      , cgal_surface_mesh
+                                      ,
+                                      cgal_surface_mesh
 #endif
                                       >;
 
@@ -116,9 +119,11 @@ double total_area(const M& m) {
 template <class M, class T = hmira::default_traits<M>>
 ::testing::AssertionResult flat_and_facing_up(const M& m) {
     for (auto v : T::vertices(m))
-        if (p3<M, T>(m, v)[2] != 0) return ::testing::AssertionFailure() << "vertex " << T::vertex_index(m, v) << " left the plane";
+        if (p3<M, T>(m, v)[2] != 0)
+            return ::testing::AssertionFailure() << "vertex " << T::vertex_index(m, v) << " left the plane";
     for (auto f : T::faces(m))
-        if (!(newell<M, T>(m, f)[2] > 0)) return ::testing::AssertionFailure() << "face " << T::face_index(m, f) << " does not face +z";
+        if (!(newell<M, T>(m, f)[2] > 0))
+            return ::testing::AssertionFailure() << "face " << T::face_index(m, f) << " does not face +z";
     return ::testing::AssertionSuccess();
 }
 

@@ -25,8 +25,8 @@ template <class M>
 class bevel_test : public ::testing::Test {};
 TYPED_TEST_SUITE(bevel_test, hmira_test::all_models);
 
-#define SKIP_UNLESS_BEVELABLE()                                                     \
-    if constexpr (!hmira::bevelable_mesh<TypeParam>) {                              \
+#define SKIP_UNLESS_BEVELABLE()                                                          \
+    if constexpr (!hmira::bevelable_mesh<TypeParam>) {                                   \
         GTEST_SKIP() << "model cannot be edited (no Euler operators or triangles only)"; \
     } else
 
@@ -106,8 +106,9 @@ TYPED_TEST(bevel_test, three_edges_meeting_at_a_cube_corner_close_it_with_a_tria
     SKIP_UNLESS_BEVELABLE() {
         TypeParam m;
         (void)hmira::generate_cube(m).value();
-        std::vector<typename hmira::default_traits<TypeParam>::edge_handle> es{
-            edge_between(m, {1, 1, 1}, {-1, 1, 1}), edge_between(m, {1, 1, 1}, {1, -1, 1}), edge_between(m, {1, 1, 1}, {1, 1, -1})};
+        std::vector<typename hmira::default_traits<TypeParam>::edge_handle> es{edge_between(m, {1, 1, 1}, {-1, 1, 1}),
+                                                                               edge_between(m, {1, 1, 1}, {1, -1, 1}),
+                                                                               edge_between(m, {1, 1, 1}, {1, 1, -1})};
         auto r = hmira::bevel(m, es, {.width = 0.25});
         ASSERT_TRUE(r) << r.error().message;
         EXPECT_EQ(count(m), (counts{13, 21, 10}));
@@ -241,7 +242,8 @@ TYPED_TEST(bevel_test, bad_input_is_rejected_and_leaves_the_mesh_unchanged) {
         // Boundary edges bevel (bevel_boundary_test.cpp), but not with bad options.
         const auto boundary = edge_between(m, {0, 0, 0}, {1, 0, 0});
         check(hmira::bevel(m, boundary, {.width = -1}), hmira::errc::invalid_argument);
-        check(hmira::bevel(m, std::vector<typename T::edge_handle>{inner, boundary}, {.segments = 0}), hmira::errc::invalid_argument);
+        check(hmira::bevel(m, std::vector<typename T::edge_handle>{inner, boundary}, {.segments = 0}),
+              hmira::errc::invalid_argument);
     }
 }
 
@@ -258,7 +260,8 @@ struct patch_counts {
 inline patch_counts grid_patch(long long k, long long n) {
     const long long m = n / 2;
     if (n % 2 == 0) return {1 + k * (m - 1) + k * (m - 1) * (m - 1), k * m + k * 2 * m * (m - 1), k * m * m};
-    return {k + 2 * k * (m - 1) + k * (m - 1) * (m - 1), 2 * k * m + k + k * (m - 1) + k * 2 * m * (m - 1), k * m * m + k * m + 1};
+    return {k + 2 * k * (m - 1) + k * (m - 1) * (m - 1), 2 * k * m + k + k * (m - 1) + k * 2 * m * (m - 1),
+            k * m * m + k * m + 1};
 }
 
 template <class M, class T = hmira::default_traits<M>>
@@ -358,7 +361,8 @@ TYPED_TEST(bevel_test, rounded_cube_volume_converges_to_the_exact_rounded_cube) 
             // which span up to twice an arc segment's angle.
             const double corners_lost_flat = 8 * (pi - 1) * w * w * w / 6;
             const double edges_lost_flat = 12 * l * w * w / 2 * (pi / 2 - 1);
-            EXPECT_LT(error, edges_lost + 2 * corners_lost_flat * edges_lost / edges_lost_flat + 100 * tol<TypeParam>());
+            EXPECT_LT(error,
+                      edges_lost + 2 * corners_lost_flat * edges_lost / edges_lost_flat + 100 * tol<TypeParam>());
             previous_error = error;
         }
         EXPECT_LT(previous_error, 0.01 * exact);
@@ -372,8 +376,9 @@ TYPED_TEST(bevel_test, a_loop_around_a_cube_face_meets_in_mitres_on_both_cylinde
         const int n = 3;
         TypeParam m;
         (void)hmira::generate_cube(m).value();
-        std::vector<typename T::edge_handle> loop{edge_between(m, {1, 1, 1}, {-1, 1, 1}), edge_between(m, {-1, 1, 1}, {-1, -1, 1}),
-                                                  edge_between(m, {-1, -1, 1}, {1, -1, 1}), edge_between(m, {1, -1, 1}, {1, 1, 1})};
+        std::vector<typename T::edge_handle> loop{
+            edge_between(m, {1, 1, 1}, {-1, 1, 1}), edge_between(m, {-1, 1, 1}, {-1, -1, 1}),
+            edge_between(m, {-1, -1, 1}, {1, -1, 1}), edge_between(m, {1, -1, 1}, {1, 1, 1})};
         auto r = hmira::bevel(m, loop, {.width = w, .segments = n});
         ASSERT_TRUE(r) << r.error().message;
         // Each top corner (degree 3, two bevelled edges) becomes a point inside the top face
@@ -412,7 +417,8 @@ TYPED_TEST(bevel_test, a_pass_through_vertex_shares_one_circular_end_edge_betwee
         // nowhere: each of its corners slides, the two slides on one edge meet, and it becomes
         // one end edge shared by both strips. The box corners at the ends, degree 3, become one
         // end edge each. segments = 1: 12 - 3 + 6 vertices, 10 + 2 faces.
-        std::vector<typename T::edge_handle> es{edge_between(m, {0, 0, 1}, {1, 0, 1}), edge_between(m, {1, 0, 1}, {2, 0, 1})};
+        std::vector<typename T::edge_handle> es{edge_between(m, {0, 0, 1}, {1, 0, 1}),
+                                                edge_between(m, {1, 0, 1}, {2, 0, 1})};
         auto r = hmira::bevel(m, es, {.width = w, .segments = n});
         ASSERT_TRUE(r) << r.error().message;
         EXPECT_EQ(count(m), (counts{15 + 3 * (n - 1), 25 + 3 * (n - 1) + 2 * (n - 1), 12 + 2 * (n - 1)}));
@@ -436,7 +442,8 @@ TYPED_TEST(bevel_test, two_edges_meeting_on_a_grid_fan_out_from_the_vertices_tha
         const int n = 3;
         TypeParam m;
         (void)hmira::generate_grid(m, {.columns = 4, .rows = 4}).value();  // 25/40/16
-        std::vector<typename T::edge_handle> es{edge_between(m, {2, 2, 0}, {3, 2, 0}), edge_between(m, {2, 2, 0}, {2, 1, 0})};
+        std::vector<typename T::edge_handle> es{edge_between(m, {2, 2, 0}, {3, 2, 0}),
+                                                edge_between(m, {2, 2, 0}, {2, 1, 0})};
         auto r = hmira::bevel(m, es, {.width = 0.25, .segments = n});
         ASSERT_TRUE(r) << r.error().message;
         // (2, 2) has degree 4 and every edge next to a bevelled one: it goes, replaced by a
@@ -458,7 +465,8 @@ TYPED_TEST(bevel_test, two_edges_meeting_on_a_grid_fan_out_from_the_vertices_tha
         ASSERT_EQ(r->strip_faces.size(), std::size_t(2 * n));
         for (std::size_t s = 0; s < 2; ++s)
             for (std::size_t j = 0; j < std::size_t(n); ++j) {
-                const std::array<double, 3> tip = s == 0 ? std::array<double, 3>{3, 2, 0} : std::array<double, 3>{2, 1, 0};
+                const std::array<double, 3> tip =
+                    s == 0 ? std::array<double, 3>{3, 2, 0} : std::array<double, 3>{2, 1, 0};
                 bool has_tip = false;
                 for (auto v : T::face_vertices(m, r->strip_faces[s * n + j])) has_tip |= dist(p3(m, v), tip) < 1e-9;
                 EXPECT_TRUE(has_tip) << "strip " << s << " face " << j;
@@ -497,7 +505,8 @@ TYPED_TEST(bevel_test, a_degree_five_apex_is_filled_with_a_pentagonal_grid) {
             // (degree 3) one end edge between two slides: 15/25/12. Then 10 end edges split,
             // 5 strips cut, and the pentagon grid-filled.
             const auto p = grid_patch(5, n);
-            EXPECT_EQ(count(m), (counts{15 + 10 * (n - 1) + p.v, 25 + 10 * (n - 1) + 5 * (n - 1) + p.e, 12 + 5 * (n - 1) + p.f - 1}));
+            EXPECT_EQ(count(m), (counts{15 + 10 * (n - 1) + p.v, 25 + 10 * (n - 1) + 5 * (n - 1) + p.e,
+                                        12 + 5 * (n - 1) + p.f - 1}));
             EXPECT_TRUE(valid_with_chi(m, 2));
             EXPECT_TRUE(faces_point_outward(m, {0, 0, 0.25}));
             for (auto f : T::faces(m)) {
@@ -555,8 +564,10 @@ TYPED_TEST(bevel_test, edges_whose_clamped_strips_would_leave_zero_area_faces_ar
         for (int shape = 0; shape < 2; ++shape) {
             SCOPED_TRACE(shape == 0 ? "cube" : "octahedron");
             TypeParam m;
-            if (shape == 0) (void)hmira::generate_cube(m).value();
-            else (void)hmira::generate_octahedron(m).value();
+            if (shape == 0)
+                (void)hmira::generate_cube(m).value();
+            else
+                (void)hmira::generate_octahedron(m).value();
             const auto edges = all_edges(m);
             const auto before = count(m);
             auto r = hmira::bevel(m, edges, {.width = 5.0});
@@ -592,13 +603,22 @@ TYPED_TEST(bevel_test, random_selections_with_random_segments_keep_closed_meshes
         for (unsigned trial = 0; trial < trials; ++trial) {
             TypeParam m;
             const unsigned shape = trial % 7;
-            if (shape == 0) (void)hmira::generate_torus(m, {.major_radius = 3, .minor_radius = 1, .rings = 6 + rng() % 4, .sides = 5}).value();
-            else if (shape == 1) (void)hmira::generate_cube(m).value();
-            else if (shape == 2) (void)hmira::generate_octahedron(m).value();
-            else if (shape == 3) (void)hmira::generate_dodecahedron(m).value();
-            else if (shape == 4) (void)hmira::generate_icosahedron(m).value();
-            else if (shape == 5) ASSERT_TRUE(add_face_list(m, lattice_box(1 + int(rng() % 3), 2, 1)));
-            else (void)hmira::generate_grid(m, {.columns = 3 + rng() % 3, .rows = 3 + rng() % 3}).value();
+            if (shape == 0)
+                (void)hmira::generate_torus(m,
+                                            {.major_radius = 3, .minor_radius = 1, .rings = 6 + rng() % 4, .sides = 5})
+                    .value();
+            else if (shape == 1)
+                (void)hmira::generate_cube(m).value();
+            else if (shape == 2)
+                (void)hmira::generate_octahedron(m).value();
+            else if (shape == 3)
+                (void)hmira::generate_dodecahedron(m).value();
+            else if (shape == 4)
+                (void)hmira::generate_icosahedron(m).value();
+            else if (shape == 5)
+                ASSERT_TRUE(add_face_list(m, lattice_box(1 + int(rng() % 3), 2, 1)));
+            else
+                (void)hmira::generate_grid(m, {.columns = 3 + rng() % 3, .rows = 3 + rng() % 3}).value();
             const long long chi = shape == 0 ? 0 : (shape == 6 ? 1 : 2);
             const int n = 1 + int(rng() % 6);
             const double width = 0.02 + 0.5 * double(rng() % 1000) / 1000.0;
@@ -611,8 +631,8 @@ TYPED_TEST(bevel_test, random_selections_with_random_segments_keep_closed_meshes
                 if (double(rng() % 1000) / 1000.0 < keep && (inner || shape != 6)) es.push_back(e);
             }
             if (es.empty()) continue;
-            SCOPED_TRACE(::testing::Message() << "trial " << trial << " shape " << shape << " segments " << n << " width " << width
-                                              << " edges " << es.size());
+            SCOPED_TRACE(::testing::Message() << "trial " << trial << " shape " << shape << " segments " << n
+                                              << " width " << width << " edges " << es.size());
             const auto before = count(m);
             const auto faces_before = canonical_faces(m);
             auto r = hmira::bevel(m, es, {.width = width, .segments = n});

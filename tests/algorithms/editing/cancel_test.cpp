@@ -93,16 +93,18 @@ std::vector<edit_case> cases() {
                        auto& m = *static_cast<M*>(p);
                        std::vector<typename T::vertex_handle> vs;
                        for (auto v : T::vertices(m)) vs.push_back(v);
-                       return message_of(hmira::truncate<M>(m, vs, {.fraction = 0.25, .distance = 0.0, .progress = cb}));
+                       return message_of(
+                           hmira::truncate<M>(m, vs, {.fraction = 0.25, .distance = 0.0, .progress = cb}));
                    }});
     // Every corner of every quad lies between two bevelled edges: 4F inner points, no slides.
-    out.push_back({"bevel all edges", box, 3 * E + 2 * V + 4 * F, false, [](void* p, const hmira::progress_function& cb) {
-                       auto& m = *static_cast<M*>(p);
-                       std::vector<typename T::edge_handle> es;
-                       for (auto e : T::edges(m)) es.push_back(e);
-                       return message_of(hmira::bevel<M>(m, es, {.width = 0.1, .segments = 1, .clamp_overlap = true,
-                                                                    .clamp_globally = false, .progress = cb}));
-                   }});
+    out.push_back(
+        {"bevel all edges", box, 3 * E + 2 * V + 4 * F, false, [](void* p, const hmira::progress_function& cb) {
+             auto& m = *static_cast<M*>(p);
+             std::vector<typename T::edge_handle> es;
+             for (auto e : T::edges(m)) es.push_back(e);
+             return message_of(hmira::bevel<M>(
+                 m, es, {.width = 0.1, .segments = 1, .clamp_overlap = true, .clamp_globally = false, .progress = cb}));
+         }});
     out.push_back({"bevel_vertices all", box, E + V, true, [](void* p, const hmira::progress_function& cb) {
                        auto& m = *static_cast<M*>(p);
                        std::vector<typename T::vertex_handle> vs;
@@ -113,8 +115,11 @@ std::vector<edit_case> cases() {
                        auto& m = *static_cast<M*>(p);
                        std::vector<typename T::face_handle> fs;
                        for (auto f : T::faces(m)) fs.push_back(f);
-                       return message_of(hmira::extrude<M>(m, fs, {.distance = 0.5, .direction = std::nullopt,
-                                                                     .mode = hmira::extrude_mode::individual, .progress = cb}));
+                       return message_of(hmira::extrude<M>(m, fs,
+                                                           {.distance = 0.5,
+                                                            .direction = std::nullopt,
+                                                            .mode = hmira::extrude_mode::individual,
+                                                            .progress = cb}));
                    }});
     // A comb on a 64 x 64 grid of unit cells: every even row of cells and the first column,
     // connected and with a long outline.
@@ -127,20 +132,22 @@ std::vector<edit_case> cases() {
         for (long j = 0; j < 64; ++j)
             for (long i = 0; i < 64; ++i)
                 if (selected(i, j))
-                    outline += std::size_t(!selected(i - 1, j)) + std::size_t(!selected(i + 1, j)) + std::size_t(!selected(i, j - 1)) +
-                               std::size_t(!selected(i, j + 1));
+                    outline += std::size_t(!selected(i - 1, j)) + std::size_t(!selected(i + 1, j)) +
+                               std::size_t(!selected(i, j - 1)) + std::size_t(!selected(i, j + 1));
     }
-    out.push_back({"extrude region (comb)", grid, 2 * outline, true, [](void* p, const hmira::progress_function& cb) {
-                       auto& m = *static_cast<M*>(p);
-                       std::vector<typename T::face_handle> fs;
-                       for (auto f : T::faces(m)) {
-                           const auto c = hmira_test::centroid<M, T>(m, f);
-                           const long i = std::lround(c[0] - 0.5), j = std::lround(c[1] - 0.5);
-                           if (j % 2 == 0 || i == 0) fs.push_back(f);
-                       }
-                       return message_of(hmira::extrude<M>(m, fs, {.distance = 1.0, .direction = std::nullopt,
-                                                                     .mode = hmira::extrude_mode::region, .progress = cb}));
-                   }});
+    out.push_back(
+        {"extrude region (comb)", grid, 2 * outline, true, [](void* p, const hmira::progress_function& cb) {
+             auto& m = *static_cast<M*>(p);
+             std::vector<typename T::face_handle> fs;
+             for (auto f : T::faces(m)) {
+                 const auto c = hmira_test::centroid<M, T>(m, f);
+                 const long i = std::lround(c[0] - 0.5), j = std::lround(c[1] - 0.5);
+                 if (j % 2 == 0 || i == 0) fs.push_back(f);
+             }
+             return message_of(hmira::extrude<M>(
+                 m, fs,
+                 {.distance = 1.0, .direction = std::nullopt, .mode = hmira::extrude_mode::region, .progress = cb}));
+         }});
     return out;
 }
 

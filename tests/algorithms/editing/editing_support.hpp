@@ -35,7 +35,9 @@ struct counts {
     long long chi() const { return v - e + f; }
     friend bool operator==(const counts&, const counts&) = default;
 };
-inline std::ostream& operator<<(std::ostream& o, const counts& c) { return o << "{V " << c.v << ", E " << c.e << ", F " << c.f << "}"; }
+inline std::ostream& operator<<(std::ostream& o, const counts& c) {
+    return o << "{V " << c.v << ", E " << c.e << ", F " << c.f << "}";
+}
 
 template <class M, class T = hmira::default_traits<M>>
 counts count(const M& m) {
@@ -86,7 +88,8 @@ template <class M, class T = hmira::default_traits<M>>
         const auto c = centroid<M, T>(m, f);
         const double d = n[0] * (c[0] - center[0]) + n[1] * (c[1] - center[1]) + n[2] * (c[2] - center[2]);
         if (!(d > 0))
-            return ::testing::AssertionFailure() << "face " << T::face_index(m, f) << " points inward (n . (c - o) = " << d << ")";
+            return ::testing::AssertionFailure()
+                   << "face " << T::face_index(m, f) << " points inward (n . (c - o) = " << d << ")";
     }
     return ::testing::AssertionSuccess();
 }
@@ -105,7 +108,10 @@ std::size_t degree(const M& m, typename T::vertex_handle v) {
     const auto s = T::vertex_halfedge(m, v);
     if (s == T::null_halfedge()) return 0;
     auto h = s;
-    do { ++d; h = T::next(m, T::opposite(m, h)); } while (h != s);
+    do {
+        ++d;
+        h = T::next(m, T::opposite(m, h));
+    } while (h != s);
     return d;
 }
 
@@ -127,7 +133,8 @@ template <class M, class T = hmira::default_traits<M>>
     auto v = is_valid<M, T>(m, options);
     if (!v) return v;
     const auto c = count<M, T>(m);
-    if (c.chi() != chi) return ::testing::AssertionFailure() << "Euler characteristic " << c.chi() << ", expected " << chi << " " << c;
+    if (c.chi() != chi)
+        return ::testing::AssertionFailure() << "Euler characteristic " << c.chi() << ", expected " << chi << " " << c;
     return ::testing::AssertionSuccess();
 }
 
@@ -150,12 +157,18 @@ inline face_list lattice_box(int nx, int ny, int nz) {
                 for (int j = 0; j < n[v]; ++j) {
                     std::array<int, 3> c00{}, c10{}, c11{}, c01{};
                     for (auto* c : {&c00, &c10, &c11, &c01}) (*c)[axis] = side ? n[axis] : 0;
-                    c00[u] = i; c00[v] = j;
-                    c10[u] = i + 1; c10[v] = j;
-                    c11[u] = i + 1; c11[v] = j + 1;
-                    c01[u] = i; c01[v] = j + 1;
-                    if (side) b.faces.push_back({vid(c00), vid(c10), vid(c11), vid(c01)});
-                    else b.faces.push_back({vid(c00), vid(c01), vid(c11), vid(c10)});
+                    c00[u] = i;
+                    c00[v] = j;
+                    c10[u] = i + 1;
+                    c10[v] = j;
+                    c11[u] = i + 1;
+                    c11[v] = j + 1;
+                    c01[u] = i;
+                    c01[v] = j + 1;
+                    if (side)
+                        b.faces.push_back({vid(c00), vid(c10), vid(c11), vid(c01)});
+                    else
+                        b.faces.push_back({vid(c00), vid(c01), vid(c11), vid(c10)});
                 }
         }
     return b;

@@ -22,8 +22,8 @@ template <class M>
 class extrude_test : public ::testing::Test {};
 TYPED_TEST_SUITE(extrude_test, hmira_test::all_models);
 
-#define SKIP_UNLESS_EXTRUDABLE()                                                    \
-    if constexpr (!hmira::extrudable_mesh<TypeParam>) {                             \
+#define SKIP_UNLESS_EXTRUDABLE()                                                         \
+    if constexpr (!hmira::extrudable_mesh<TypeParam>) {                                  \
         GTEST_SKIP() << "model cannot be edited (no Euler operators or triangles only)"; \
     } else
 
@@ -125,7 +125,8 @@ TYPED_TEST(extrude_test, a_region_reaching_the_boundary_keeps_the_boundary_valid
         TypeParam m;
         auto g = hmira::generate_grid(m, {.columns = 4, .rows = 3}).value();
         // The first row of cells: its outline runs along the grid's boundary on three sides.
-        std::vector<typename hmira::default_traits<TypeParam>::face_handle> region(g.faces.begin(), g.faces.begin() + 4);
+        std::vector<typename hmira::default_traits<TypeParam>::face_handle> region(g.faces.begin(),
+                                                                                   g.faces.begin() + 4);
         const auto before = count(m);
         auto r = hmira::extrude(m, region, {.distance = 1.0});
         ASSERT_TRUE(r) << r.error().message;
@@ -193,7 +194,8 @@ TYPED_TEST(extrude_test, bad_input_is_rejected_and_leaves_the_mesh_unchanged) {
         std::vector<F> pinched;
         for (auto f : top) {
             const auto c = centroid(m, f);
-            if ((std::abs(c[0] - 0.5) < 1e-9 && std::abs(c[1] - 0.5) < 1e-9) || (std::abs(c[0] - 1.5) < 1e-9 && std::abs(c[1] - 1.5) < 1e-9))
+            if ((std::abs(c[0] - 0.5) < 1e-9 && std::abs(c[1] - 0.5) < 1e-9) ||
+                (std::abs(c[0] - 1.5) < 1e-9 && std::abs(c[1] - 1.5) < 1e-9))
                 pinched.push_back(f);
         }
         ASSERT_EQ(pinched.size(), 2u);
@@ -203,9 +205,9 @@ TYPED_TEST(extrude_test, bad_input_is_rejected_and_leaves_the_mesh_unchanged) {
 
 // ----- faces with inner rings ---------------------------------------------------------------
 
-#define SKIP_UNLESS_RINGS()                                                                  \
+#define SKIP_UNLESS_RINGS()                                                                           \
     if constexpr (!hmira::extrudable_mesh<TypeParam> || !hmira::euler_ring_mutable_mesh<TypeParam>) { \
-        GTEST_SKIP() << "model has no inner rings";                                          \
+        GTEST_SKIP() << "model has no inner rings";                                                   \
     } else
 
 /// The cube [-1,1]^3 whose top face (y = 1) has a square hole of half-size a, closed by a
@@ -245,7 +247,9 @@ double volume_with_rings(const M& m) {
             } while (h != s);
             for (std::size_t i = 1; i + 1 < p.size(); ++i) {
                 const auto &a = p[0], &b = p[i], &c = p[i + 1];
-                vol += (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) + a[2] * (b[0] * c[1] - b[1] * c[0])) / 6;
+                vol += (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
+                        a[2] * (b[0] * c[1] - b[1] * c[0])) /
+                       6;
             }
         }
     }
@@ -347,7 +351,9 @@ TYPED_TEST(extrude_test, a_region_holding_a_ringed_face_gets_walls_along_its_who
             const auto p = p3(m, v);
             EXPECT_TRUE(std::abs(p[1] - 1) < 1e-12 || std::abs(p[0] - 1) < 1e-12) << "copy off the old outline";
         }
-        auto moved = [&](std::array<double, 3> p) { return std::array<double, 3>{p[0] + t[0], p[1] + t[1], p[2] + t[2]}; };
+        auto moved = [&](std::array<double, 3> p) {
+            return std::array<double, 3>{p[0] + t[0], p[1] + t[1], p[2] + t[2]};
+        };
         EXPECT_TRUE(has_vertex_at(m, moved({1, 1, 1})));
         EXPECT_TRUE(has_vertex_at(m, {1, 1, 1}));  // on the outline (the front is outside): copied
         EXPECT_TRUE(has_vertex_at(m, {1, -1, 1}));
@@ -441,7 +447,8 @@ std::vector<typename T::face_handle> random_region(const M& m, std::mt19937_64& 
             h = T::next(m, h);
             if (h == T::face_halfedge(m, f)) break;
         }
-        if (!around.empty()) region.push_back(around[std::uniform_int_distribution<std::size_t>(0, around.size() - 1)(rng)]);
+        if (!around.empty())
+            region.push_back(around[std::uniform_int_distribution<std::size_t>(0, around.size() - 1)(rng)]);
     }
     return region;
 }
@@ -484,7 +491,8 @@ TYPED_TEST(extrude_test, random_region_extrusions_on_closed_meshes_stay_valid_ma
                     const double vol = signed_volume(m);
                     const auto before = count(m);
                     const auto faces_before = canonical_faces(m);
-                    const double dist = std::uniform_real_distribution<double>(0.05, 0.6)(rng) * (step % 3 == 0 ? -1 : 1);
+                    const double dist =
+                        std::uniform_real_distribution<double>(0.05, 0.6)(rng) * (step % 3 == 0 ? -1 : 1);
                     auto r = hmira::extrude(m, region, {.distance = dist});
                     if (pinch && region.size() > 1) {
                         ASSERT_FALSE(r);
@@ -503,13 +511,15 @@ TYPED_TEST(extrude_test, random_region_extrusions_on_closed_meshes_stay_valid_ma
                     }
                     ++done;
                     // Moved by dist along the mean normal: the volume grows by dist x |area|.
-                    EXPECT_NEAR(signed_volume(m), vol + dist * std::sqrt(area[0] * area[0] + area[1] * area[1] + area[2] * area[2]) / 2,
+                    EXPECT_NEAR(signed_volume(m),
+                                vol + dist * std::sqrt(area[0] * area[0] + area[1] * area[1] + area[2] * area[2]) / 2,
                                 1000 * tol<TypeParam>());
                     EXPECT_EQ(count(m), (counts{before.v + b, before.e + 2 * b, before.f + b}));
                     EXPECT_EQ((long long)r->side_faces.size(), b);
                     EXPECT_TRUE(valid_with_chi(m, chi, {.check_geometry = false}));
                     for (auto f : r->side_faces) EXPECT_EQ(std::ranges::distance(T::face_vertices(m, f)), 4);
-                    for (auto v : T::vertices(m)) EXPECT_GE(degree(m, v), 3u) << "a vertex of degree < 3 on a closed mesh";
+                    for (auto v : T::vertices(m))
+                        EXPECT_GE(degree(m, v), 3u) << "a vertex of degree < 3 on a closed mesh";
                 }
                 EXPECT_GT(done, pinched);
             }

@@ -30,31 +30,106 @@ struct counting_traits : hmira::mesh_traits<hmira::halfedge_mesh> {
     using V = base::vertex_handle;
     using F = base::face_handle;
     using E = base::edge_handle;
-    static H next(const mesh& m, H h) { ++calls; return base::next(m, h); }
-    static H prev(const mesh& m, H h) { ++calls; return base::prev(m, h); }
-    static H opposite(const mesh& m, H h) { ++calls; return base::opposite(m, h); }
-    static V target(const mesh& m, H h) { ++calls; return base::target(m, h); }
-    static F face(const mesh& m, H h) { ++calls; return base::face(m, h); }
-    static E edge(const mesh& m, H h) { ++calls; return base::edge(m, h); }
-    static H vertex_halfedge(const mesh& m, V v) { ++calls; return base::vertex_halfedge(m, v); }
-    static H face_halfedge(const mesh& m, F f) { ++calls; return base::face_halfedge(m, f); }
-    static auto position(const mesh& m, V v) { ++calls; return base::position(m, v); }
-    static void set_position(mesh& m, V v, const hmira::vec3<double>& p) { ++calls; base::set_position(m, v, p); }
-    static void set_next(mesh& m, H h, H n) { ++calls; base::set_next(m, h, n); }
-    static void set_target(mesh& m, H h, V v) { ++calls; base::set_target(m, h, v); }
-    static void set_face(mesh& m, H h, F f) { ++calls; base::set_face(m, h, f); }
-    static void set_vertex_halfedge(mesh& m, V v, H h) { ++calls; base::set_vertex_halfedge(m, v, h); }
-    static void set_face_halfedge(mesh& m, F f, H h) { ++calls; base::set_face_halfedge(m, f, h); }
-    static H new_edge(mesh& m, V a, V b) { ++calls; return base::new_edge(m, a, b); }
-    static F new_face(mesh& m) { ++calls; return base::new_face(m); }
-    static V add_vertex(mesh& m, const hmira::vec3<double>& p) { ++calls; return base::add_vertex(m, p); }
-    static void erase_edge(mesh& m, E e) { ++calls; base::erase_edge(m, e); }
-    static void erase_face(mesh& m, F f) { ++calls; base::erase_face(m, f); }
-    static void erase_vertex(mesh& m, V v) { ++calls; base::erase_vertex(m, v); }
-    static auto vertices(const mesh& m) { ++whole_mesh_ranges; return base::vertices(m); }
-    static auto faces(const mesh& m) { ++whole_mesh_ranges; return base::faces(m); }
-    static auto edges(const mesh& m) { ++whole_mesh_ranges; return base::edges(m); }
-    static auto halfedges(const mesh& m) { ++whole_mesh_ranges; return base::halfedges(m); }
+    static H next(const mesh& m, H h) {
+        ++calls;
+        return base::next(m, h);
+    }
+    static H prev(const mesh& m, H h) {
+        ++calls;
+        return base::prev(m, h);
+    }
+    static H opposite(const mesh& m, H h) {
+        ++calls;
+        return base::opposite(m, h);
+    }
+    static V target(const mesh& m, H h) {
+        ++calls;
+        return base::target(m, h);
+    }
+    static F face(const mesh& m, H h) {
+        ++calls;
+        return base::face(m, h);
+    }
+    static E edge(const mesh& m, H h) {
+        ++calls;
+        return base::edge(m, h);
+    }
+    static H vertex_halfedge(const mesh& m, V v) {
+        ++calls;
+        return base::vertex_halfedge(m, v);
+    }
+    static H face_halfedge(const mesh& m, F f) {
+        ++calls;
+        return base::face_halfedge(m, f);
+    }
+    static auto position(const mesh& m, V v) {
+        ++calls;
+        return base::position(m, v);
+    }
+    static void set_position(mesh& m, V v, const hmira::vec3<double>& p) {
+        ++calls;
+        base::set_position(m, v, p);
+    }
+    static void set_next(mesh& m, H h, H n) {
+        ++calls;
+        base::set_next(m, h, n);
+    }
+    static void set_target(mesh& m, H h, V v) {
+        ++calls;
+        base::set_target(m, h, v);
+    }
+    static void set_face(mesh& m, H h, F f) {
+        ++calls;
+        base::set_face(m, h, f);
+    }
+    static void set_vertex_halfedge(mesh& m, V v, H h) {
+        ++calls;
+        base::set_vertex_halfedge(m, v, h);
+    }
+    static void set_face_halfedge(mesh& m, F f, H h) {
+        ++calls;
+        base::set_face_halfedge(m, f, h);
+    }
+    static H new_edge(mesh& m, V a, V b) {
+        ++calls;
+        return base::new_edge(m, a, b);
+    }
+    static F new_face(mesh& m) {
+        ++calls;
+        return base::new_face(m);
+    }
+    static V add_vertex(mesh& m, const hmira::vec3<double>& p) {
+        ++calls;
+        return base::add_vertex(m, p);
+    }
+    static void erase_edge(mesh& m, E e) {
+        ++calls;
+        base::erase_edge(m, e);
+    }
+    static void erase_face(mesh& m, F f) {
+        ++calls;
+        base::erase_face(m, f);
+    }
+    static void erase_vertex(mesh& m, V v) {
+        ++calls;
+        base::erase_vertex(m, v);
+    }
+    static auto vertices(const mesh& m) {
+        ++whole_mesh_ranges;
+        return base::vertices(m);
+    }
+    static auto faces(const mesh& m) {
+        ++whole_mesh_ranges;
+        return base::faces(m);
+    }
+    static auto edges(const mesh& m) {
+        ++whole_mesh_ranges;
+        return base::edges(m);
+    }
+    static auto halfedges(const mesh& m) {
+        ++whole_mesh_ranges;
+        return base::halfedges(m);
+    }
 };
 using CT = counting_traits;
 static_assert(hmira::extrudable_mesh<hmira::halfedge_mesh, CT>);
@@ -87,13 +162,16 @@ TEST(editing_locality, the_range_counter_sees_a_whole_mesh_scan) {
 
 TEST(editing_locality, truncate_bevel_and_extrude_cost_does_not_grow_with_mesh_size) {
     auto truncate_first = [](hmira::halfedge_mesh& m) {
-        ASSERT_TRUE((hmira::truncate<hmira::halfedge_mesh, CT>(m, *hmira::default_traits<hmira::halfedge_mesh>::vertices(m).begin())));
+        ASSERT_TRUE((hmira::truncate<hmira::halfedge_mesh, CT>(
+            m, *hmira::default_traits<hmira::halfedge_mesh>::vertices(m).begin())));
     };
     auto extrude_first = [](hmira::halfedge_mesh& m) {
-        ASSERT_TRUE((hmira::extrude<hmira::halfedge_mesh, CT>(m, *hmira::default_traits<hmira::halfedge_mesh>::faces(m).begin(), {.distance = 0.1})));
+        ASSERT_TRUE((hmira::extrude<hmira::halfedge_mesh, CT>(
+            m, *hmira::default_traits<hmira::halfedge_mesh>::faces(m).begin(), {.distance = 0.1})));
     };
     auto bevel_first = [](hmira::halfedge_mesh& m) {
-        ASSERT_TRUE((hmira::bevel<hmira::halfedge_mesh, CT>(m, *hmira::default_traits<hmira::halfedge_mesh>::edges(m).begin(), {.width = 0.05})));
+        ASSERT_TRUE((hmira::bevel<hmira::halfedge_mesh, CT>(
+            m, *hmira::default_traits<hmira::halfedge_mesh>::edges(m).begin(), {.width = 0.05})));
     };
     auto region_of_two = [](hmira::halfedge_mesh& m) {
         auto it = hmira::default_traits<hmira::halfedge_mesh>::faces(m).begin();
@@ -124,7 +202,7 @@ TEST(editing_index_set, dense_sparse_and_mixed_sets_answer_like_std_set) {
         const int n = 200 + static_cast<int>(rng() % 3000);
         for (int i = 0; i < n; ++i) {
             std::size_t x = trial % 5 == 0 ? static_cast<std::size_t>(i) : rng() % range;  // in order, as a whole mesh
-            if (i % 97 == 96) x = rng() % (range * 1000);                                    // now and then a far one
+            if (i % 97 == 96) x = rng() % (range * 1000);                                  // now and then a far one
             ASSERT_EQ(s.insert(x), ref.insert(x).second) << "trial " << trial << " index " << x;
             ASSERT_EQ(s.size(), ref.size());
         }

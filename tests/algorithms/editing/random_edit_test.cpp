@@ -40,7 +40,8 @@ TYPED_TEST(random_edit_test, random_edit_sequences_keep_closed_meshes_valid_and_
             TypeParam m;
             long long chi = 0;
             if (seed % 2) {
-                (void)hmira::generate_torus(m, {.major_radius = 3, .minor_radius = 1, .rings = 8 + seed, .sides = 6}).value();
+                (void)hmira::generate_torus(m, {.major_radius = 3, .minor_radius = 1, .rings = 8 + seed, .sides = 6})
+                    .value();
                 chi = 0;
             } else {
                 ASSERT_TRUE(add_face_list(m, lattice_box(2 + (int)seed, 2, 2)));

@@ -19,8 +19,8 @@ template <class M>
 class truncate_test : public ::testing::Test {};
 TYPED_TEST_SUITE(truncate_test, hmira_test::all_models);
 
-#define SKIP_UNLESS_TRUNCATABLE()                                                   \
-    if constexpr (!hmira::truncatable_mesh<TypeParam>) {                            \
+#define SKIP_UNLESS_TRUNCATABLE()                                                        \
+    if constexpr (!hmira::truncatable_mesh<TypeParam>) {                                 \
         GTEST_SKIP() << "model cannot be edited (no Euler operators or triangles only)"; \
     } else
 
@@ -40,7 +40,8 @@ TYPED_TEST(truncate_test, one_cube_corner_gives_a_triangle_at_a_third_of_each_ed
         ASSERT_NE(r->face, T::null_face());
         ASSERT_EQ(r->vertices.size(), 3u);
         // The cut points lie at 1/3 of the way from (1,1,1) towards each neighbour.
-        for (auto p : {std::array<double, 3>{1.0 / 3, 1, 1}, {1, 1.0 / 3, 1}, {1, 1, 1.0 / 3}}) EXPECT_TRUE(has_vertex_at(m, p));
+        for (auto p : {std::array<double, 3>{1.0 / 3, 1, 1}, {1, 1.0 / 3, 1}, {1, 1, 1.0 / 3}})
+            EXPECT_TRUE(has_vertex_at(m, p));
         EXPECT_FALSE(has_vertex_at(m, {1, 1, 1}));
         // A corner tetrahedron with three legs of 2/3 is gone.
         EXPECT_NEAR(signed_volume(m), vol_before - std::pow(2.0 / 3, 3) / 6, tol<TypeParam>());
@@ -99,7 +100,8 @@ TYPED_TEST(truncate_test, distance_places_cuts_at_that_distance_from_the_vertex)
         auto r = hmira::truncate(m, cube.vertices[0], {.distance = 0.25});  // (-1,-1,-1)
         ASSERT_TRUE(r) << r.error().message;
         EXPECT_TRUE(valid_with_chi(m, 2));
-        for (auto p : {std::array<double, 3>{-0.75, -1, -1}, {-1, -0.75, -1}, {-1, -1, -0.75}}) EXPECT_TRUE(has_vertex_at(m, p));
+        for (auto p : {std::array<double, 3>{-0.75, -1, -1}, {-1, -0.75, -1}, {-1, -1, -0.75}})
+            EXPECT_TRUE(has_vertex_at(m, p));
         EXPECT_TRUE(faces_point_outward(m));
     }
 }

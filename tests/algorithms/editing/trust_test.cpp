@@ -208,7 +208,8 @@ TYPED_TEST(trust_test, a_rotation_that_never_returns_to_its_start_is_an_error_no
         auto t = hmira::truncate<M, T>(m, v);
         ASSERT_FALSE(t);
         EXPECT_EQ(t.error().code, hmira::errc::topology);
-        EXPECT_NE(t.error().message.find("truncate: the edges around vertex " + std::to_string(T::vertex_index(m, v)) + " are corrupt"),
+        EXPECT_NE(t.error().message.find("truncate: the edges around vertex " + std::to_string(T::vertex_index(m, v)) +
+                                         " are corrupt"),
                   std::string::npos)
             << t.error().message;
         auto b = hmira::bevel<M, T>(m, T::edge(m, hs[0]));
@@ -250,7 +251,8 @@ TYPED_TEST(trust_test, a_valid_rotation_of_any_degree_is_walked_whole) {
         hmira_test::face_list fan;
         fan.points.push_back({0, 0, 0});
         const int n = 300;
-        for (int i = 0; i < n; ++i) fan.points.push_back({std::cos(2 * 3.14159265358979 * i / n), std::sin(2 * 3.14159265358979 * i / n), 0});
+        for (int i = 0; i < n; ++i)
+            fan.points.push_back({std::cos(2 * 3.14159265358979 * i / n), std::sin(2 * 3.14159265358979 * i / n), 0});
         for (int i = 0; i < n; ++i) fan.faces.push_back({0, std::size_t(1 + i), std::size_t(1 + (i + 1) % n)});
         ASSERT_TRUE(hmira_test::add_face_list(m, fan));
         const auto centre = *T::vertices(m).begin();

@@ -111,7 +111,9 @@ struct builder {
 struct cube_vertices {
     // The thesis's [-1, 1]^3 cube: a b c d at the bottom (z = -1), e f g h above them.
     template <class V>
-    struct named { V a, b, c, d, e, f, g, h; };
+    struct named {
+        V a, b, c, d, e, f, g, h;
+    };
 };
 
 /// Mantyla's cube: makeV, 3 makeEV and a makeEF for the bottom face, 4 makeEV up the sides,
@@ -166,9 +168,11 @@ TYPED_TEST(euler_construction, cube_from_nothing_matches_the_generated_cube_and_
 
         // The cube written out by hand, each face counter-clockwise seen from outside.
         using P = hmira_test::point_key;
-        const P A{-1, -1, -1}, B{1, -1, -1}, C{1, 1, -1}, D{-1, 1, -1}, E{-1, -1, 1}, F{1, -1, 1}, G{1, 1, 1}, H{-1, 1, 1};
+        const P A{-1, -1, -1}, B{1, -1, -1}, C{1, 1, -1}, D{-1, 1, -1}, E{-1, -1, 1}, F{1, -1, 1}, G{1, 1, 1},
+            H{-1, 1, 1};
         hmira_test::canonical_form expected;
-        for (auto l : {std::vector<P>{A, D, C, B}, {A, B, F, E}, {B, C, G, F}, {C, D, H, G}, {D, A, E, H}, {E, F, G, H}}) {
+        for (auto l :
+             {std::vector<P>{A, D, C, B}, {A, B, F, E}, {B, C, G, F}, {C, D, H, G}, {D, A, E, H}, {E, F, G, H}}) {
             std::rotate(l.begin(), std::min_element(l.begin(), l.end()), l.end());
             expected.faces.insert({l, {}});
         }
@@ -238,7 +242,8 @@ TYPED_TEST(euler_construction, genus_one_solid_from_nothing_has_the_expected_fac
             std::rotate(l.begin(), std::min_element(l.begin(), l.end()), l.end());
             return l;
         };
-        const P A{-1, -1, -1}, B{1, -1, -1}, C{1, 1, -1}, D{-1, 1, -1}, E{-1, -1, 1}, F{1, -1, 1}, G{1, 1, 1}, Hh{-1, 1, 1};
+        const P A{-1, -1, -1}, B{1, -1, -1}, C{1, 1, -1}, D{-1, 1, -1}, E{-1, -1, 1}, F{1, -1, 1}, G{1, 1, 1},
+            Hh{-1, 1, 1};
         const P P0{-0.5, -0.5, 1}, P1{0.5, -0.5, 1}, P2{0.5, 0.5, 1}, P3{-0.5, 0.5, 1};
         const P Q0{-0.5, -0.5, -1}, Q1{0.5, -0.5, -1}, Q2{0.5, 0.5, -1}, Q3{-0.5, 0.5, -1};
         hmira_test::canonical_form expected;

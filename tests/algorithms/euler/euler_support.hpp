@@ -25,15 +25,16 @@
 namespace hmira_test {
 
 template <class M, class T = hmira::default_traits<M>>
-concept indexed_halfedge_model = hmira::halfedge_index_mesh<M, T> && hmira::vertex_index_mesh<M, T> &&
-                                 hmira::face_index_mesh<M, T> && hmira::edge_index_mesh<M, T> && hmira::positioned_mesh<M, T>;
+concept indexed_halfedge_model =
+    hmira::halfedge_index_mesh<M, T> && hmira::vertex_index_mesh<M, T> && hmira::face_index_mesh<M, T> &&
+    hmira::edge_index_mesh<M, T> && hmira::positioned_mesh<M, T>;
 
 /// Skips the current typed test (and returns) on a model without the Euler operators: no raw
 /// halfedge layer, or triangles only.
-#define HMIRA_REQUIRE_EULER(M)                                                                    \
-    if constexpr (!hmira::euler_mutable_mesh<M> || !::hmira_test::indexed_halfedge_model<M>) {   \
+#define HMIRA_REQUIRE_EULER(M)                                                                  \
+    if constexpr (!hmira::euler_mutable_mesh<M> || !::hmira_test::indexed_halfedge_model<M>) {  \
         GTEST_SKIP() << "not an euler_mutable_mesh (no raw halfedge layer, or triangles only)"; \
-        return;                                                                                   \
+        return;                                                                                 \
     }
 
 /// Every reference the mesh holds, as indices, plus positions: equal snapshots mean the mesh
@@ -48,7 +49,9 @@ template <class M, class T = hmira::default_traits<M>>
     requires indexed_halfedge_model<M, T>
 snapshot take_snapshot(const M& m) {
     snapshot s;
-    auto hi = [&](typename T::halfedge_handle h) { return h == T::null_halfedge() ? -1LL : (long long)T::halfedge_index(m, h); };
+    auto hi = [&](typename T::halfedge_handle h) {
+        return h == T::null_halfedge() ? -1LL : (long long)T::halfedge_index(m, h);
+    };
     auto fi = [&](typename T::face_handle f) { return f == T::null_face() ? -1LL : (long long)T::face_index(m, f); };
     s.data.push_back((long long)T::vertex_count(m));
     s.data.push_back((long long)T::edge_count(m));
@@ -176,9 +179,10 @@ template <class M, class T = hmira::default_traits<M>>
 ::testing::AssertionResult euler_poincare_holds(const M& m, long long shells_minus_holes) {
     const auto k = count_euler<M, T>(m);
     if (k.lhs() == 2 * shells_minus_holes) return ::testing::AssertionSuccess();
-    return ::testing::AssertionFailure() << "V - E + F - R = " << k.v << " - " << k.e << " + (" << k.faces << " faces + "
-                                         << k.boundary_loops << " boundary loops + " << k.isolated << " isolated) - " << k.rings
-                                         << " = " << k.lhs() << ", expected 2 (S - H) = " << 2 * shells_minus_holes;
+    return ::testing::AssertionFailure() << "V - E + F - R = " << k.v << " - " << k.e << " + (" << k.faces
+                                         << " faces + " << k.boundary_loops << " boundary loops + " << k.isolated
+                                         << " isolated) - " << k.rings << " = " << k.lhs()
+                                         << ", expected 2 (S - H) = " << 2 * shells_minus_holes;
 }
 
 /// validate() in relaxed mode: Euler construction passes through wire edges and faces of
@@ -208,8 +212,10 @@ namespace hmira_test {
 /// Drops deleted elements with the model's own garbage collection, where it has one.
 template <class M>
 void compact(M& m) {
-    if constexpr (requires { m.collect_garbage(); }) (void)m.collect_garbage();
-    else if constexpr (requires { m.garbage_collection(); }) m.garbage_collection();
+    if constexpr (requires { m.collect_garbage(); })
+        (void)m.collect_garbage();
+    else if constexpr (requires { m.garbage_collection(); })
+        m.garbage_collection();
 }
 
 /// A mesh in the suites' shapes, built through the traits.

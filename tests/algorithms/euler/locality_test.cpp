@@ -25,30 +25,99 @@ struct counting_traits : base {
     using F = base::face_handle;
     using E = base::edge_handle;
 
-    static H next(const halfedge_mesh& m, H h) { ++calls; return base::next(m, h); }
-    static H prev(const halfedge_mesh& m, H h) { ++calls; return base::prev(m, h); }
-    static H opposite(const halfedge_mesh& m, H h) { ++calls; return base::opposite(m, h); }
-    static V target(const halfedge_mesh& m, H h) { ++calls; return base::target(m, h); }
-    static F face(const halfedge_mesh& m, H h) { ++calls; return base::face(m, h); }
-    static E edge(const halfedge_mesh& m, H h) { ++calls; return base::edge(m, h); }
-    static H vertex_halfedge(const halfedge_mesh& m, V v) { ++calls; return base::vertex_halfedge(m, v); }
-    static H face_halfedge(const halfedge_mesh& m, F f) { ++calls; return base::face_halfedge(m, f); }
-    static auto inner_rings(const halfedge_mesh& m, F f) { ++calls; return base::inner_rings(m, f); }
-    static auto position(const halfedge_mesh& m, V v) { ++calls; return base::position(m, v); }
+    static H next(const halfedge_mesh& m, H h) {
+        ++calls;
+        return base::next(m, h);
+    }
+    static H prev(const halfedge_mesh& m, H h) {
+        ++calls;
+        return base::prev(m, h);
+    }
+    static H opposite(const halfedge_mesh& m, H h) {
+        ++calls;
+        return base::opposite(m, h);
+    }
+    static V target(const halfedge_mesh& m, H h) {
+        ++calls;
+        return base::target(m, h);
+    }
+    static F face(const halfedge_mesh& m, H h) {
+        ++calls;
+        return base::face(m, h);
+    }
+    static E edge(const halfedge_mesh& m, H h) {
+        ++calls;
+        return base::edge(m, h);
+    }
+    static H vertex_halfedge(const halfedge_mesh& m, V v) {
+        ++calls;
+        return base::vertex_halfedge(m, v);
+    }
+    static H face_halfedge(const halfedge_mesh& m, F f) {
+        ++calls;
+        return base::face_halfedge(m, f);
+    }
+    static auto inner_rings(const halfedge_mesh& m, F f) {
+        ++calls;
+        return base::inner_rings(m, f);
+    }
+    static auto position(const halfedge_mesh& m, V v) {
+        ++calls;
+        return base::position(m, v);
+    }
 
-    static void set_next(halfedge_mesh& m, H h, H n) { ++calls; base::set_next(m, h, n); }
-    static void set_target(halfedge_mesh& m, H h, V v) { ++calls; base::set_target(m, h, v); }
-    static void set_face(halfedge_mesh& m, H h, F f) { ++calls; base::set_face(m, h, f); }
-    static void set_vertex_halfedge(halfedge_mesh& m, V v, H h) { ++calls; base::set_vertex_halfedge(m, v, h); }
-    static void set_face_halfedge(halfedge_mesh& m, F f, H h) { ++calls; base::set_face_halfedge(m, f, h); }
-    static H new_edge(halfedge_mesh& m, V a, V b) { ++calls; return base::new_edge(m, a, b); }
-    static F new_face(halfedge_mesh& m) { ++calls; return base::new_face(m); }
-    static V add_vertex(halfedge_mesh& m, const hmira::vec3<double>& p) { ++calls; return base::add_vertex(m, p); }
-    static void erase_edge(halfedge_mesh& m, E e) { ++calls; base::erase_edge(m, e); }
-    static void erase_face(halfedge_mesh& m, F f) { ++calls; base::erase_face(m, f); }
-    static void erase_vertex(halfedge_mesh& m, V v) { ++calls; base::erase_vertex(m, v); }
-    static void add_inner_ring(halfedge_mesh& m, F f, H h) { ++calls; base::add_inner_ring(m, f, h); }
-    static void remove_inner_ring(halfedge_mesh& m, F f, H h) { ++calls; base::remove_inner_ring(m, f, h); }
+    static void set_next(halfedge_mesh& m, H h, H n) {
+        ++calls;
+        base::set_next(m, h, n);
+    }
+    static void set_target(halfedge_mesh& m, H h, V v) {
+        ++calls;
+        base::set_target(m, h, v);
+    }
+    static void set_face(halfedge_mesh& m, H h, F f) {
+        ++calls;
+        base::set_face(m, h, f);
+    }
+    static void set_vertex_halfedge(halfedge_mesh& m, V v, H h) {
+        ++calls;
+        base::set_vertex_halfedge(m, v, h);
+    }
+    static void set_face_halfedge(halfedge_mesh& m, F f, H h) {
+        ++calls;
+        base::set_face_halfedge(m, f, h);
+    }
+    static H new_edge(halfedge_mesh& m, V a, V b) {
+        ++calls;
+        return base::new_edge(m, a, b);
+    }
+    static F new_face(halfedge_mesh& m) {
+        ++calls;
+        return base::new_face(m);
+    }
+    static V add_vertex(halfedge_mesh& m, const hmira::vec3<double>& p) {
+        ++calls;
+        return base::add_vertex(m, p);
+    }
+    static void erase_edge(halfedge_mesh& m, E e) {
+        ++calls;
+        base::erase_edge(m, e);
+    }
+    static void erase_face(halfedge_mesh& m, F f) {
+        ++calls;
+        base::erase_face(m, f);
+    }
+    static void erase_vertex(halfedge_mesh& m, V v) {
+        ++calls;
+        base::erase_vertex(m, v);
+    }
+    static void add_inner_ring(halfedge_mesh& m, F f, H h) {
+        ++calls;
+        base::add_inner_ring(m, f, h);
+    }
+    static void remove_inner_ring(halfedge_mesh& m, F f, H h) {
+        ++calls;
+        base::remove_inner_ring(m, f, h);
+    }
 };
 using CT = counting_traits;
 static_assert(hmira::euler_ring_mutable_mesh<halfedge_mesh, CT>);
@@ -152,7 +221,8 @@ TEST(euler_locality, make_edge_face_grows_with_the_face_degree_only) {
         auto v = hmira::make_vertex(m, {-5, -5, 0}).vertex;
         auto first = hmira::make_edge_vertex(m, v, {-5, -4, 0});
         auto last = first->halfedge;
-        for (std::size_t i = 2; i < n; ++i) last = hmira::make_edge_vertex(m, last, {-5.0 + 0.01 * double(i), -3.0 - double(i), 0})->halfedge;
+        for (std::size_t i = 2; i < n; ++i)
+            last = hmira::make_edge_vertex(m, last, {-5.0 + 0.01 * double(i), -3.0 - double(i), 0})->halfedge;
         auto poly = hmira::make_edge_face(m, last, m.opposite(first->halfedge));  // closes an n-gon
         EXPECT_TRUE(poly) << poly.error().message;
         // Split it between its first and middle corners.
@@ -160,7 +230,8 @@ TEST(euler_locality, make_edge_face_grows_with_the_face_degree_only) {
         for (std::size_t i = 0; i < n / 2; ++i) h1 = m.next(h1);
         return count([&] { EXPECT_TRUE((hmira::make_edge_face<halfedge_mesh, CT>(m, h0, h1))); });
     };
-    const auto c10 = polygon_split_count(10, 2), c40 = polygon_split_count(40, 2), c40_big = polygon_split_count(40, 500);
+    const auto c10 = polygon_split_count(10, 2), c40 = polygon_split_count(40, 2),
+               c40_big = polygon_split_count(40, 500);
     EXPECT_EQ(c40, c40_big) << "the count depends on the rest of the mesh";
     EXPECT_GT(c40, c10) << "a bigger face should cost more";
     EXPECT_LE(c40, 4 * 40 + 30u) << "more than a few calls per side";

@@ -22,7 +22,9 @@ TYPED_TEST_SUITE(euler_operators, all_models);
 
 /// A 3 x 3 grid of quads (S = 1, H = 0, one boundary loop).
 template <class M>
-M grid_mesh() { return mesh_from<M>(grid(3, 3)); }
+M grid_mesh() {
+    return mesh_from<M>(grid(3, 3));
+}
 
 template <class M, class T = hmira::default_traits<M>>
 typename T::vertex_handle vertex_at(const M& m, double x, double y, double z = 0) {
@@ -52,7 +54,8 @@ template <class R>
     if (r) return ::testing::AssertionFailure() << "the operator succeeded";
     if (r.error().code != code) return ::testing::AssertionFailure() << "wrong code; message: " << r.error().message;
     if (r.error().message.find(words) == std::string::npos)
-        return ::testing::AssertionFailure() << "message \"" << r.error().message << "\" does not say \"" << words << "\"";
+        return ::testing::AssertionFailure()
+               << "message \"" << r.error().message << "\" does not say \"" << words << "\"";
     return ::testing::AssertionSuccess();
 }
 
@@ -132,9 +135,11 @@ TYPED_TEST(euler_operators, kill_edge_vertex_on_a_vertex_of_degree_two_fails_and
         auto m = grid_mesh<TypeParam>();
         const auto before = take_snapshot(m);
         // (0,0) is a corner of the grid: degree 2.
-        EXPECT_TRUE(failed_with(hmira::kill_edge_vertex(m, halfedge_at(m, {1, 0}, {0, 0})), hmira::errc::topology, "degree 2 or more"));
-        EXPECT_TRUE(failed_with(hmira::kill_edge_vertex(m, typename hmira::default_traits<TypeParam>::halfedge_handle{}),
-                                hmira::errc::invalid_handle, "does not exist"));
+        EXPECT_TRUE(failed_with(hmira::kill_edge_vertex(m, halfedge_at(m, {1, 0}, {0, 0})), hmira::errc::topology,
+                                "degree 2 or more"));
+        EXPECT_TRUE(
+            failed_with(hmira::kill_edge_vertex(m, typename hmira::default_traits<TypeParam>::halfedge_handle{}),
+                        hmira::errc::invalid_handle, "does not exist"));
         EXPECT_TRUE(take_snapshot(m) == before);
     }
 }
@@ -166,7 +171,11 @@ TYPED_TEST(euler_operators, make_edge_face_then_kill_restores_mesh) {
         // And the corners it returns make the same split again.
         auto again = hmira::make_edge_face(m, k->h0, k->h1);
         ASSERT_TRUE(again) << again.error().message;
-        EXPECT_TRUE(same_mesh(m, [&] { auto s = start; (void)hmira::make_edge_face(s, halfedge_at(s, {1, 2}, {1, 1}), halfedge_at(s, {2, 1}, {2, 2})); return s; }()));
+        EXPECT_TRUE(same_mesh(m, [&] {
+            auto s = start;
+            (void)hmira::make_edge_face(s, halfedge_at(s, {1, 2}, {1, 1}), halfedge_at(s, {2, 1}, {2, 2}));
+            return s;
+        }()));
     }
 }
 
@@ -220,8 +229,9 @@ TYPED_TEST(euler_operators, make_edge_face_with_bad_corners_fails_and_changes_no
         auto m = grid_mesh<TypeParam>();
         const auto before = take_snapshot(m);
         // Corners of two different faces.
-        EXPECT_TRUE(failed_with(hmira::make_edge_face(m, halfedge_at(m, {1, 2}, {1, 1}), halfedge_at(m, {3, 2}, {3, 3})),
-                                hmira::errc::topology, "different faces"));
+        EXPECT_TRUE(
+            failed_with(hmira::make_edge_face(m, halfedge_at(m, {1, 2}, {1, 1}), halfedge_at(m, {3, 2}, {3, 3})),
+                        hmira::errc::topology, "different faces"));
         // Both corners at one vertex: a loop edge.
         const auto h = halfedge_at(m, {1, 2}, {1, 1});
         EXPECT_TRUE(failed_with(hmira::make_edge_face(m, h, h), hmira::errc::topology, "would be a loop"));
@@ -276,10 +286,10 @@ template <class M>
 class euler_ring_operators : public ::testing::Test {};
 TYPED_TEST_SUITE(euler_ring_operators, all_models);
 
-#define HMIRA_REQUIRE_RINGS(M)                                              \
+#define HMIRA_REQUIRE_RINGS(M)                                                        \
     if constexpr (!hmira::euler_ring_mutable_mesh<M> || !indexed_halfedge_model<M>) { \
-        GTEST_SKIP() << "not an euler_ring_mutable_mesh (no inner rings)";  \
-        return;                                                             \
+        GTEST_SKIP() << "not an euler_ring_mutable_mesh (no inner rings)";            \
+        return;                                                                       \
     }
 
 TYPED_TEST(euler_ring_operators, kill_face_make_ring_then_make_face_restores_mesh) {
@@ -297,7 +307,8 @@ TYPED_TEST(euler_ring_operators, kill_face_make_ring_then_make_face_restores_mes
         EXPECT_EQ(std::ranges::distance(T::inner_rings(m, host)), 1);
         const auto before = take_snapshot(m);
         EXPECT_TRUE(failed_with(hmira::kill_face_make_ring(m, host, host), hmira::errc::topology, "ring of itself"));
-        EXPECT_TRUE(failed_with(hmira::make_face_kill_ring(m, T::face_halfedge(m, host)), hmira::errc::topology, "outer loop"));
+        EXPECT_TRUE(
+            failed_with(hmira::make_face_kill_ring(m, T::face_halfedge(m, host)), hmira::errc::topology, "outer loop"));
         EXPECT_TRUE(take_snapshot(m) == before);
         auto back = hmira::make_face_kill_ring(m, r->ring);
         ASSERT_TRUE(back) << back.error().message;
@@ -335,7 +346,8 @@ TYPED_TEST(euler_ring_operators, make_edge_kill_ring_then_kill_restores_mesh) {
         EXPECT_TRUE(euler_poincare_holds(m, 0));
         EXPECT_EQ(std::ranges::distance(T::inner_rings(m, host)), 0);
         const auto merged = take_snapshot(m);
-        EXPECT_TRUE(failed_with(hmira::kill_edge_make_ring(m, halfedge_at(m, {1, 3}, {2, 3})), hmira::errc::topology, "use kill_edge_face"));
+        EXPECT_TRUE(failed_with(hmira::kill_edge_make_ring(m, halfedge_at(m, {1, 3}, {2, 3})), hmira::errc::topology,
+                                "use kill_edge_face"));
         EXPECT_TRUE(take_snapshot(m) == merged);
         auto k = hmira::kill_edge_make_ring(m, r->halfedge);
         ASSERT_TRUE(k) << k.error().message;

@@ -53,7 +53,9 @@ struct random_session {
         ADD_FAILURE() << "no vertex at the recorded position";
         return V();
     }
-    hkey key(H h) { return {key_of<M, T>(mesh, T::target(mesh, T::opposite(mesh, h))), key_of<M, T>(mesh, T::target(mesh, h))}; }
+    hkey key(H h) {
+        return {key_of<M, T>(mesh, T::target(mesh, T::opposite(mesh, h))), key_of<M, T>(mesh, T::target(mesh, h))};
+    }
     H he(const hkey& k) {
         const auto h = find_halfedge<M, T>(mesh, vertex(k.first), vertex(k.second));
         EXPECT_NE(h, T::null_halfedge()) << "a recorded halfedge is gone";
@@ -188,7 +190,8 @@ struct random_session {
             return false;
         }
         const bool isolated = r->corner == T::null_halfedge();
-        undo.push_back([this, isolated, c = isolated ? hkey{} : key(r->corner), v = key_of<M, T>(mesh, r->vertex), p = r->position] {
+        undo.push_back([this, isolated, c = isolated ? hkey{} : key(r->corner), v = key_of<M, T>(mesh, r->vertex),
+                        p = r->position] {
             auto m = isolated ? hmira::make_edge_vertex(mesh, vertex(v), p) : hmira::make_edge_vertex(mesh, he(c), p);
             ASSERT_TRUE(m);
         });
@@ -301,7 +304,8 @@ struct random_session {
                 auto fs = all_faces();
                 if (fs.empty()) return false;
                 const auto before = take_snapshot<M, T>(mesh);
-                expect_rejected_cleanly(before, hmira::make_face_kill_ring(mesh, T::face_halfedge(mesh, fs[pick(fs.size())])));
+                expect_rejected_cleanly(before,
+                                        hmira::make_face_kill_ring(mesh, T::face_halfedge(mesh, fs[pick(fs.size())])));
                 return false;
             }
             const auto ring = ring_halfedges[pick(ring_halfedges.size())];
@@ -358,12 +362,15 @@ struct random_session {
             // must stay judgeable (see the note at the top).
             if (!on_ring(h)) {
                 std::vector<V> part;
-                for (auto x = T::next(mesh, h); x != T::opposite(mesh, h) && part.size() < 100000; x = T::next(mesh, x)) part.push_back(T::target(mesh, x));
+                for (auto x = T::next(mesh, h); x != T::opposite(mesh, h) && part.size() < 100000; x = T::next(mesh, x))
+                    part.push_back(T::target(mesh, x));
                 std::vector<V> rest;
-                for (auto x = T::next(mesh, T::opposite(mesh, h)); x != h && rest.size() < 100000; x = T::next(mesh, x)) rest.push_back(T::target(mesh, x));
+                for (auto x = T::next(mesh, T::opposite(mesh, h)); x != h && rest.size() < 100000; x = T::next(mesh, x))
+                    rest.push_back(T::target(mesh, x));
                 for (auto v : part) {
                     if (!clean(v) && v != T::target(mesh, h)) return false;
-                    if (std::count(part.begin(), part.end(), v) > 1 || std::count(rest.begin(), rest.end(), v) > 0) return false;
+                    if (std::count(part.begin(), part.end(), v) > 1 || std::count(rest.begin(), rest.end(), v) > 0)
+                        return false;
                 }
             }
             auto r = hmira::kill_edge_make_ring(mesh, h);
@@ -390,10 +397,10 @@ struct random_session {
         using step_fn = bool (random_session::*)();
         // Weights keep the mesh from growing without bound: each maker has its killer.
         const std::vector<std::pair<step_fn, int>> table = {
-            {&random_session::step_make_vertex, 1},        {&random_session::step_kill_vertex, 2},
-            {&random_session::step_make_edge_vertex, 4},   {&random_session::step_kill_edge_vertex, 6},
-            {&random_session::step_make_edge_face, 4},     {&random_session::step_kill_edge_face, 5},
-            {&random_session::step_fill_boundary_loop, 1}, {&random_session::step_open_face, 1},
+            {&random_session::step_make_vertex, 1},         {&random_session::step_kill_vertex, 2},
+            {&random_session::step_make_edge_vertex, 4},    {&random_session::step_kill_edge_vertex, 6},
+            {&random_session::step_make_edge_face, 4},      {&random_session::step_kill_edge_face, 5},
+            {&random_session::step_fill_boundary_loop, 1},  {&random_session::step_open_face, 1},
             {&random_session::step_kill_face_make_ring, 1}, {&random_session::step_make_face_kill_ring, 1},
             {&random_session::step_make_edge_kill_ring, 2}, {&random_session::step_kill_edge_make_ring, 3},
         };

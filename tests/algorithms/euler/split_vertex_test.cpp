@@ -105,7 +105,8 @@ void split_then_join_round_trip(const shape& s, std::uint64_t seed, int n) {
         const std::size_t i0 = pick(in.size()), i1 = (i0 + 1 + pick(in.size() - 1)) % in.size();
         const std::size_t moved = (i1 + in.size() - i0) % in.size();  // edges strictly between the corners
         const auto before = count_euler(m);
-        const hmira::vec3<typename T::scalar> p{typename T::scalar(10 + step), typename T::scalar(seed % 7), typename T::scalar(-3)};
+        const hmira::vec3<typename T::scalar> p{typename T::scalar(10 + step), typename T::scalar(seed % 7),
+                                                typename T::scalar(-3)};
         auto r = hmira::split_vertex(m, in[i0], in[i1], p);
         ASSERT_TRUE(r) << r.error().message;
         const auto after = count_euler(m);
@@ -263,27 +264,32 @@ TYPED_TEST(split_vertex_test, refused_operations_name_the_reason_and_change_noth
         {  // A triangle on the edge.
             auto m = mesh_from<TypeParam>(grid(2, 2, true));
             const auto h = find_halfedge(m, vertex_at(m, 1, 1), vertex_at(m, 2, 2));
-            expect_refused(m, [&](TypeParam& x) { return hmira::join_vertices(x, h); }, hmira::errc::topology, "triangle");
+            expect_refused(
+                m, [&](TypeParam& x) { return hmira::join_vertices(x, h); }, hmira::errc::topology, "triangle");
         }
         {  // An interior edge between two boundary vertices: joining pinches the strip.
             auto m = mesh_from<TypeParam>(grid(3, 1));
             const auto h = find_halfedge(m, vertex_at(m, 1, 0), vertex_at(m, 1, 1));
-            expect_refused(m, [&](TypeParam& x) { return hmira::join_vertices(x, h); }, hmira::errc::non_manifold, "pinches");
+            expect_refused(
+                m, [&](TypeParam& x) { return hmira::join_vertices(x, h); }, hmira::errc::non_manifold, "pinches");
         }
         {  // A common neighbour without a triangle: around a torus of 3 x 4 quads, each ring
-           // of 3 vertices is a cycle of edges that bounds no face.
+            // of 3 vertices is a cycle of edges that bounds no face.
             const auto t = torus(3, 4);
             auto m = mesh_from<TypeParam>(t);
             auto at = [&](std::size_t i) {
                 for (auto v : T::vertices(m)) {
                     const auto [x, y, z] = key_of(m, v);
-                    if (std::abs(x - t.points[i].x) + std::abs(y - t.points[i].y) + std::abs(z - t.points[i].z) < 1e-5) return v;
+                    if (std::abs(x - t.points[i].x) + std::abs(y - t.points[i].y) + std::abs(z - t.points[i].z) < 1e-5)
+                        return v;
                 }
                 return typename T::vertex_handle();
             };
             const auto h = find_halfedge(m, at(0), at(4));  // (i, j) = (0, 0) -> (1, 0)
             ASSERT_NE(h, T::null_halfedge());
-            expect_refused(m, [&](TypeParam& x) { return hmira::join_vertices(x, h); }, hmira::errc::non_manifold, "common neighbour");
+            expect_refused(
+                m, [&](TypeParam& x) { return hmira::join_vertices(x, h); }, hmira::errc::non_manifold,
+                "common neighbour");
         }
         {  // A survivor of degree 1.
             auto m = mesh_from<TypeParam>(grid(1, 1));
@@ -291,17 +297,28 @@ TYPED_TEST(split_vertex_test, refused_operations_name_the_reason_and_change_noth
             auto r = hmira::split_vertex(m, corner, corner, {0.5, 0.5, 0});
             ASSERT_TRUE(r);
             const auto back = T::opposite(m, r->halfedge);
-            expect_refused(m, [&](TypeParam& x) { return hmira::join_vertices(x, back); }, hmira::errc::topology, "degree 1");
+            expect_refused(
+                m, [&](TypeParam& x) { return hmira::join_vertices(x, back); }, hmira::errc::topology, "degree 1");
         }
         {  // Corners at two different vertices, and a missing corner.
             auto m = mesh_from<TypeParam>(grid(2, 2));
             const auto a = find_halfedge(m, vertex_at(m, 0, 1), vertex_at(m, 1, 1));
             const auto b = find_halfedge(m, vertex_at(m, 1, 1), vertex_at(m, 2, 1));
-            expect_refused(m, [&](TypeParam& x) { return hmira::split_vertex(x, a, b, {9, 9, 9}); }, hmira::errc::topology, "different vertices");
-            expect_refused(m, [&](TypeParam& x) { return hmira::split_vertex(x, a, T::null_halfedge(), {9, 9, 9}); }, hmira::errc::invalid_handle,
-                           "does not exist");
-            expect_refused(m, [&](TypeParam& x) { return hmira::join_vertices(x, T::null_halfedge()); }, hmira::errc::invalid_handle,
-                           "does not exist");
+            expect_refused(
+                m,
+                [&](TypeParam& x) {
+                    return hmira::split_vertex(x, a, b, {9, 9, 9});
+                },
+                hmira::errc::topology, "different vertices");
+            expect_refused(
+                m,
+                [&](TypeParam& x) {
+                    return hmira::split_vertex(x, a, T::null_halfedge(), {9, 9, 9});
+                },
+                hmira::errc::invalid_handle, "does not exist");
+            expect_refused(
+                m, [&](TypeParam& x) { return hmira::join_vertices(x, T::null_halfedge()); },
+                hmira::errc::invalid_handle, "does not exist");
         }
     }
 }
@@ -336,7 +353,8 @@ TEST(split_vertex_rings, splits_and_joins_on_an_inner_ring_keep_the_ring) {
         const auto in = incoming(m, v);
         std::uniform_int_distribution<std::size_t> d2(0, in.size() - 1);
         const auto i0 = d2(rng);
-        auto r = hmira::split_vertex(m, in[i0], in[(i0 + 1 + d2(rng) % (in.size() - 1)) % in.size()], {double(step), 7.0, 1.0});
+        auto r = hmira::split_vertex(m, in[i0], in[(i0 + 1 + d2(rng) % (in.size() - 1)) % in.size()],
+                                     {double(step), 7.0, 1.0});
         ASSERT_TRUE(r) << r.error().message;
         EXPECT_TRUE(is_valid_relaxed(m));
         EXPECT_TRUE(euler_poincare_holds(m, 1));

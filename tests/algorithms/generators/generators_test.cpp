@@ -164,8 +164,10 @@ TYPED_TEST(generators, grid_is_a_disk_with_one_boundary_loop) {
 // must notice: face-vertex validation reports the orientation conflict, and the halfedge
 // mesh refuses the face.
 TEST(generators, thesis_cube_with_inward_face_is_caught) {
-    const std::vector<std::array<int, 4>> thesis_faces{{0, 1, 2, 3}, {1, 2, 6, 5}, {2, 6, 7, 3}, {0, 3, 7, 4}, {4, 5, 1, 0}, {7, 6, 5, 4}};
-    const std::vector<vec3<double>> p{{-1, -1, -1}, {1, -1, -1}, {1, -1, 1}, {-1, -1, 1}, {-1, 1, -1}, {1, 1, -1}, {1, 1, 1}, {-1, 1, 1}};
+    const std::vector<std::array<int, 4>> thesis_faces{{0, 1, 2, 3}, {1, 2, 6, 5}, {2, 6, 7, 3},
+                                                       {0, 3, 7, 4}, {4, 5, 1, 0}, {7, 6, 5, 4}};
+    const std::vector<vec3<double>> p{{-1, -1, -1}, {1, -1, -1}, {1, -1, 1}, {-1, -1, 1},
+                                      {-1, 1, -1},  {1, 1, -1},  {1, 1, 1},  {-1, 1, 1}};
     face_vertex_mesh fv;
     halfedge_mesh he;
     std::vector<vertex_handle> a, b;

@@ -60,7 +60,8 @@ TYPED_TEST(vertex_normals_suite, every_vertex_of_a_flat_patch_wound_up_gets_plus
             for (auto w : both_weightings) {
                 const auto n = vertex_normals(mesh, {.weighting = w});
                 ASSERT_EQ(n.size(), T::vertex_index_bound(mesh));
-                for (auto v : T::vertices(mesh)) EXPECT_TRUE(near(to_double(n[T::vertex_index(mesh, v)]), {0, 0, 1}, tol<M>()));
+                for (auto v : T::vertices(mesh))
+                    EXPECT_TRUE(near(to_double(n[T::vertex_index(mesh, v)]), {0, 0, 1}, tol<M>()));
             }
         }
     }
@@ -82,7 +83,8 @@ TYPED_TEST(vertex_normals_suite, normals_of_a_centred_regular_solid_point_away_f
                 // Every vertex of a regular solid sees the same ring of faces, so by symmetry its
                 // normal is its own direction from the centre.
                 for (auto v : T::vertices(*mesh))
-                    EXPECT_TRUE(near(to_double(n[T::vertex_index(*mesh, v)]), normalized(to_double(T::position(*mesh, v))), tol<M>()));
+                    EXPECT_TRUE(near(to_double(n[T::vertex_index(*mesh, v)]),
+                                     normalized(to_double(T::position(*mesh, v))), tol<M>()));
             }
         }
     }
@@ -120,7 +122,8 @@ TYPED_TEST(vertex_normals_suite, weighted_sums_match_a_hand_computed_hinge) {
 
         const auto unit = vertex_normals(mesh, {.weighting = normal_weighting::area});
         EXPECT_TRUE(near(at(unit, 0), vec3<double>{-1, 0, 0.5} / std::sqrt(1.25), tol<M>()));
-        EXPECT_TRUE(near(to_double(vertex_normals(mesh)[T::vertex_index(mesh, v[0])]), vec3<double>{-1, 0, 1} / std::sqrt(2.0), tol<M>()));
+        EXPECT_TRUE(near(to_double(vertex_normals(mesh)[T::vertex_index(mesh, v[0])]),
+                         vec3<double>{-1, 0, 1} / std::sqrt(2.0), tol<M>()));
     }
 }
 
@@ -132,7 +135,8 @@ TYPED_TEST(vertex_normals_suite, a_concave_polygon_gives_its_reflex_corner_an_an
     if constexpr (!vertex_normals_mesh<M> || !polygon_mesh_builder<M>) {
         GTEST_SKIP() << "model cannot hold a hexagon or lacks what vertex_normals needs";
     } else {
-        hmira_test::face_list ell{{{0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {1, 1, 0}, {1, 2, 0}, {0, 2, 0}}, {{0, 1, 2, 3, 4, 5}}};
+        hmira_test::face_list ell{{{0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {1, 1, 0}, {1, 2, 0}, {0, 2, 0}},
+                                  {{0, 1, 2, 3, 4, 5}}};
         M mesh;
         std::vector<typename T::vertex_handle> v;
         ASSERT_TRUE(hmira_test::add_face_list(mesh, ell, &v));

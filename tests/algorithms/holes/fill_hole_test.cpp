@@ -127,7 +127,11 @@ TYPED_TEST(fill_hole_test, a_flat_hole_gets_a_flat_patch_of_the_holes_area_by_ei
             // The inner loop is the one of 8 edges.
             auto hole = loops[0];
             std::size_t len = 0;
-            for (auto x = hole;; ) { ++len; x = T::next(m, x); if (x == hole) break; }
+            for (auto x = hole;;) {
+                ++len;
+                x = T::next(m, x);
+                if (x == hole) break;
+            }
             if (len != 8) hole = loops[1];
             auto r = hmira::fill_hole(m, hole, {.max_dynamic_programming_edges = dp_limit});
             ASSERT_TRUE(r) << r.error().message;
@@ -170,9 +174,10 @@ TYPED_TEST(fill_hole_test, a_halfedge_with_a_face_is_refused_and_nothing_changes
         auto s = hmira::fill_holes(m, 2);
         ASSERT_FALSE(s);
         EXPECT_EQ(s.error().code, hmira::errc::invalid_argument);
-        for (const auto& o : {hmira::fill_hole_options{.refine = true, .refine_density = 0.0},
-                              hmira::fill_hole_options{.refine = true, .refine_density = std::nan("")},
-                              hmira::fill_hole_options{.fair = hmira::fairing::thin_plate, .fairing_tolerance = -1.0}}) {
+        for (const auto& o :
+             {hmira::fill_hole_options{.refine = true, .refine_density = 0.0},
+              hmira::fill_hole_options{.refine = true, .refine_density = std::nan("")},
+              hmira::fill_hole_options{.fair = hmira::fairing::thin_plate, .fairing_tolerance = -1.0}}) {
             auto t = hmira::fill_holes(m, 10, o);
             ASSERT_FALSE(t);
             EXPECT_EQ(t.error().code, hmira::errc::invalid_argument);
@@ -189,7 +194,8 @@ face_list uv_sphere(std::size_t bands, std::size_t segments) {
     g.points.push_back({0, 0, 1});
     for (std::size_t j = 1; j < bands; ++j)
         for (std::size_t i = 0; i < segments; ++i) {
-            const double t = std::numbers::pi * double(j) / double(bands), u = 2 * std::numbers::pi * double(i) / double(segments);
+            const double t = std::numbers::pi * double(j) / double(bands),
+                         u = 2 * std::numbers::pi * double(i) / double(segments);
             g.points.push_back({std::sin(t) * std::cos(u), std::sin(t) * std::sin(u), std::cos(t)});
         }
     g.points.push_back({0, 0, -1});
@@ -317,7 +323,8 @@ TYPED_TEST(fill_hole_test, fairing_a_cap_cut_from_a_sphere_gives_a_flat_disc_or_
             if (out.added) out.mean_distance /= double(out.added);
             return out;
         };
-        const run flat = fill(hmira::fairing::none), membrane = fill(hmira::fairing::membrane), plate = fill(hmira::fairing::thin_plate);
+        const run flat = fill(hmira::fairing::none), membrane = fill(hmira::fairing::membrane),
+                  plate = fill(hmira::fairing::thin_plate);
         // The removed cap of area 2 pi (1 - z0) ~ 1.84, in triangles of edge ~ 0.14 (the loop's):
         // many vertices, not a handful.
         EXPECT_GT(flat.added, 20u);
@@ -333,7 +340,8 @@ TYPED_TEST(fill_hole_test, fairing_a_cap_cut_from_a_sphere_gives_a_flat_disc_or_
         EXPECT_GT(flat.mean_distance, 0.1);
         EXPECT_LT(flat.mean_distance, 1 - z0);
         // The thin plate continues the sphere's slope across the loop: a cap, far closer.
-        EXPECT_LT(plate.mean_distance, flat.mean_distance / 5) << plate.mean_distance << " vs flat " << flat.mean_distance;
+        EXPECT_LT(plate.mean_distance, flat.mean_distance / 5)
+            << plate.mean_distance << " vs flat " << flat.mean_distance;
         EXPECT_GT(plate.max_off_plane, 0.15);  // it rises towards the pole (at 1 - z0 = 0.29 above)
     }
 }
@@ -391,7 +399,8 @@ void fill_real_mesh(const std::string& name) {
     const auto loops_full = boundary_loops(whole).size();
     std::mt19937_64 rng(42);
     std::vector<std::size_t> seeds;
-    for (int i = 0; i < 6; ++i) seeds.push_back(std::uniform_int_distribution<std::size_t>(0, full.points.size() - 1)(rng));
+    for (int i = 0; i < 6; ++i)
+        seeds.push_back(std::uniform_int_distribution<std::size_t>(0, full.points.size() - 1)(rng));
     M m = mesh_from<M>(cut_holes(full, seeds, 3));
     ASSERT_TRUE(valid_topology(m)) << name;
     const auto loops_cut = boundary_loops(m).size();
@@ -424,7 +433,8 @@ void fill_real_mesh(const std::string& name) {
     EXPECT_GT(added, 0u) << name;
     EXPECT_TRUE(valid_topology(fine)) << name;
     EXPECT_EQ(boundary_loops(fine).size(), loops_cut - filled) << name;
-    EXPECT_EQ(chi(fine), chi_full + (long long)(loops_full - boundary_loops(fine).size())) << name << ": the genus changed";
+    EXPECT_EQ(chi(fine), chi_full + (long long)(loops_full - boundary_loops(fine).size()))
+        << name << ": the genus changed";
     EXPECT_TRUE(old_vertices_kept(fine, before)) << name << ": a vertex outside the patches moved";
     (void)T::face_count(m);
 }

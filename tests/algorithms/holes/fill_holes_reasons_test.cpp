@@ -72,7 +72,9 @@ void fills_every_hole(const std::string& name) {
     EXPECT_EQ(boundary_loops(m), 0u) << name;
     EXPECT_EQ(problems(m), "") << name;
     // Each closed loop adds one to V - E + F.
-    EXPECT_EQ((long long)m.vertex_count() - (long long)m.edge_count() + (long long)m.face_count(), chi + (long long)r->filled) << name;
+    EXPECT_EQ((long long)m.vertex_count() - (long long)m.edge_count() + (long long)m.face_count(),
+              chi + (long long)r->filled)
+        << name;
 }
 
 TEST(fill_holes_reasons, a_rectangle_whose_corners_are_joined_across_is_closed) { fills_every_hole("patch-23.off"); }
@@ -192,7 +194,8 @@ TEST(fill_holes_reasons, cancelling_at_any_progress_call_leaves_the_mesh_as_it_w
             ASSERT_FALSE(r) << "cancel at call " << k << " of " << count.calls << " (refine " << refine << ")";
             EXPECT_EQ(r.error().code, hmira::errc::cancelled);
             EXPECT_EQ(s.calls, k);
-            EXPECT_TRUE(hmira_test::snapshot(m) == before) << "cancel at call " << k << " changed the mesh (refine " << refine << ")";
+            EXPECT_TRUE(hmira_test::snapshot(m) == before)
+                << "cancel at call " << k << " changed the mesh (refine " << refine << ")";
             EXPECT_EQ(problems(m), "");
         }
     }
@@ -235,8 +238,10 @@ mesh ring_around_hole(std::size_t n) {
         }
     for (std::size_t i = 0; i < n; ++i) {
         const std::size_t j = (i + 1) % n;
-        (void)m.add_face(std::vector<hmira::vertex_handle>{hmira::vertex_handle(i), hmira::vertex_handle(j), hmira::vertex_handle(n + j)});
-        (void)m.add_face(std::vector<hmira::vertex_handle>{hmira::vertex_handle(i), hmira::vertex_handle(n + j), hmira::vertex_handle(n + i)});
+        (void)m.add_face(std::vector<hmira::vertex_handle>{hmira::vertex_handle(i), hmira::vertex_handle(j),
+                                                           hmira::vertex_handle(n + j)});
+        (void)m.add_face(std::vector<hmira::vertex_handle>{hmira::vertex_handle(i), hmira::vertex_handle(n + j),
+                                                           hmira::vertex_handle(n + i)});
     }
     return m;
 }

@@ -29,7 +29,8 @@ std::vector<M> sample_meshes() {
     }
     {
         M m;  // open patch with two holes and a second component
-        auto g = hmira_test::without_faces(hmira_test::grid(8, 6, true), [](std::size_t f) { return f == 20 || f == 61; });
+        auto g =
+            hmira_test::without_faces(hmira_test::grid(8, 6, true), [](std::size_t f) { return f == 20 || f == 61; });
         EXPECT_TRUE(hmira_test::add_face_list(m, g));
         EXPECT_TRUE(generate_octahedron(m, {.center = {20, 0, 0}}));
         out.push_back(std::move(m));
@@ -39,7 +40,8 @@ std::vector<M> sample_meshes() {
         EXPECT_TRUE(hmira_test::add_face_list(m, hmira_test::torus(9, 7)));
         out.push_back(std::move(m));
         M q;
-        EXPECT_TRUE(hmira_test::add_face_list(q, hmira_test::without_faces(hmira_test::grid(5, 5), [](std::size_t f) { return f == 12; })));
+        EXPECT_TRUE(hmira_test::add_face_list(
+            q, hmira_test::without_faces(hmira_test::grid(5, 5), [](std::size_t f) { return f == 12; })));
         out.push_back(std::move(q));
     }
     return out;

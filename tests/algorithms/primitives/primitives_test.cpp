@@ -187,7 +187,8 @@ TYPED_TEST(primitives, add_edge_with_bad_ends_fails_and_changes_nothing) {
 // (i, j) split into (i,j)-(i+1,j)-(i+1,j+1) and (i,j)-(i+1,j+1)-(i,j+1)), so that OpenMesh's
 // TriMesh and face_vertex_mesh take part.
 
-static_assert(hmira::face_erasable_mesh<hmira::face_vertex_mesh> && hmira::vertex_erasable_mesh<hmira::face_vertex_mesh>);
+static_assert(hmira::face_erasable_mesh<hmira::face_vertex_mesh> &&
+              hmira::vertex_erasable_mesh<hmira::face_vertex_mesh>);
 static_assert(!hmira::halfedge_mutable_mesh<hmira::face_vertex_mesh>, "face_vertex_mesh has no edges to add or remove");
 #ifdef HMIRA_TEST_WITH_OPENMESH
 static_assert(hmira::face_erasable_mesh<openmesh_tri> && hmira::vertex_erasable_mesh<openmesh_tri> &&
@@ -223,8 +224,10 @@ face_snapshot take_face_snapshot(const M& m) {
 /// A handle with index i (out of range when i >= the bound), for each model's handle type.
 template <class H>
 H handle_at(std::size_t i) {
-    if constexpr (std::is_constructible_v<H, std::uint32_t>) return H(static_cast<std::uint32_t>(i));
-    else return H(static_cast<int>(i));
+    if constexpr (std::is_constructible_v<H, std::uint32_t>)
+        return H(static_cast<std::uint32_t>(i));
+    else
+        return H(static_cast<int>(i));
 }
 
 /// Edges removed, as the model counts them: a model without edges removes none.
@@ -237,10 +240,10 @@ template <class M>
 class erasable_primitives : public ::testing::Test {};
 TYPED_TEST_SUITE(erasable_primitives, all_models);
 
-#define HMIRA_REQUIRE_FACE_ERASABLE(M)                                          \
-    if constexpr (!hmira::face_erasable_mesh<M> || !hmira::vertex_erasable_mesh<M>) { \
+#define HMIRA_REQUIRE_FACE_ERASABLE(M)                                                  \
+    if constexpr (!hmira::face_erasable_mesh<M> || !hmira::vertex_erasable_mesh<M>) {   \
         GTEST_SKIP() << "neither halfedge_mutable_mesh nor removal through the traits"; \
-        return;                                                                   \
+        return;                                                                         \
     }
 
 template <class M, class T = hmira::default_traits<M>>
@@ -364,7 +367,8 @@ TYPED_TEST(erasable_primitives, removing_a_removed_element_again_fails_and_chang
     HMIRA_REQUIRE_FACE_ERASABLE(TypeParam)
     else if constexpr (!hmira::face_removal_mesh<TypeParam>) {
         GTEST_SKIP() << "a deleted handle cannot be told apart through these traits";
-    } else {
+    }
+    else {
         auto m = mesh_from<TypeParam>(grid(3, 3, true));
         const auto f = face_with(m, {xy(1, 1), xy(2, 1), xy(2, 2)});
         const auto v = at(m, 1, 1);

@@ -30,16 +30,15 @@
 #include "algorithms/remeshing/remeshing_support.hpp"
 #include "algorithms/triangle/triangle_support.hpp"
 
-
 namespace {
 
 using namespace hmira_test;
 using v3 = hmira::vec3<double>;
 
-#define HMIRA_REQUIRE_REMESHABLE(M)                                                                  \
-    if constexpr (!hmira::remeshable_mesh<M> || !::hmira_test::indexed_halfedge_model<M>) {        \
-        GTEST_SKIP() << "not a remeshable_mesh";                                                     \
-        return;                                                                                      \
+#define HMIRA_REQUIRE_REMESHABLE(M)                                                         \
+    if constexpr (!hmira::remeshable_mesh<M> || !::hmira_test::indexed_halfedge_model<M>) { \
+        GTEST_SKIP() << "not a remeshable_mesh";                                            \
+        return;                                                                             \
     }
 
 template <class M>
@@ -82,7 +81,8 @@ M unit_sphere() {
 face_list cube() {
     face_list c;
     for (int i = 0; i < 8; ++i) c.points.push_back({double(i & 1), double((i >> 1) & 1), double((i >> 2) & 1)});
-    const std::size_t quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+    const std::size_t quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
+                                     {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
     for (const auto& q : quads) {
         c.faces.push_back({q[0], q[1], q[2]});
         c.faces.push_back({q[0], q[2], q[3]});
@@ -108,7 +108,8 @@ template <class M, class T = hmira::default_traits<M>>
         return ::testing::AssertionFailure() << "an end of the polyline is gone (" << on.size() << " vertices on it)";
     for (std::size_t i = 0; i + 1 < on.size(); ++i)
         if (hmira_test::find_halfedge<M, T>(m, on[i].second, on[i + 1].second) == T::null_halfedge())
-            return ::testing::AssertionFailure() << "vertices " << i << " and " << i + 1 << " on the polyline are not joined";
+            return ::testing::AssertionFailure()
+                   << "vertices " << i << " and " << i + 1 << " on the polyline are not joined";
     return ::testing::AssertionSuccess();
 }
 
@@ -163,7 +164,9 @@ TYPED_TEST(remeshing_test, an_open_grid_keeps_its_boundary_polyline_and_its_plan
             EXPECT_TRUE(p[0] == 0 || p[0] == 6 || p[1] == 0 || p[1] == 6) << p[0] << " " << p[1];
             EXPECT_EQ(p[2], 0.0);
         }
-        for (const auto& [a, b] : {std::pair<v3, v3>{{0, 0, 0}, {6, 0, 0}}, {{6, 0, 0}, {6, 6, 0}}, {{6, 6, 0}, {0, 6, 0}},
+        for (const auto& [a, b] : {std::pair<v3, v3>{{0, 0, 0}, {6, 0, 0}},
+                                   {{6, 0, 0}, {6, 6, 0}},
+                                   {{6, 6, 0}, {0, 6, 0}},
                                    {{0, 6, 0}, {0, 0, 0}}})
             EXPECT_TRUE(polyline_intact(m, a, b, 1e-9));
         for (auto v : T::vertices(m)) EXPECT_LT(std::abs(at(m, v).z), 1e-9);
@@ -206,7 +209,8 @@ TYPED_TEST(remeshing_test, a_cube_keeps_its_corners_and_edges_as_features_by_ang
         EXPECT_TRUE(natively_valid(m));
         EXPECT_EQ(chi(m), 2);
         const auto positions = all_positions(m);
-        for (int i = 0; i < 8; ++i) EXPECT_TRUE(positions.count({double(i & 1), double((i >> 1) & 1), double((i >> 2) & 1)}));
+        for (int i = 0; i < 8; ++i)
+            EXPECT_TRUE(positions.count({double(i & 1), double((i >> 1) & 1), double((i >> 2) & 1)}));
         for (int i = 0; i < 8; ++i)
             for (int k : {1, 2, 4})
                 if (!(i & k)) {
@@ -305,7 +309,8 @@ TYPED_TEST(remeshing_test, cancelling_changes_nothing_and_progress_reaches_one) 
         M m = unit_sphere<M>();
         const auto before = take_snapshot(m);
         int calls = 0;
-        auto r = hmira::isotropic_remeshing(m, {.target_edge_length = 0.1, .progress = [&](double) { return ++calls < 3; }});
+        auto r =
+            hmira::isotropic_remeshing(m, {.target_edge_length = 0.1, .progress = [&](double) { return ++calls < 3; }});
         ASSERT_FALSE(r);
         EXPECT_NE(r.error().message.find("cancelled"), std::string::npos) << r.error().message;
         EXPECT_EQ(r.error().code, hmira::errc::cancelled);
@@ -589,7 +594,8 @@ std::set<std::array<double, 3>> feature_positions(const hmira::halfedge_mesh& m,
         std::vector<v3> p;
         for (auto v : T::face_vertices(m, f)) p.push_back(at(m, v));
         const v3 n = hmira::normalized(hmira::cross(p[1] - p[0], p[2] - p[0]));
-        for (int k = 0; k < 3; ++k) normals[{std::min(c[k], c[(k + 1) % 3]), std::max(c[k], c[(k + 1) % 3])}].push_back(n);
+        for (int k = 0; k < 3; ++k)
+            normals[{std::min(c[k], c[(k + 1) % 3]), std::max(c[k], c[(k + 1) % 3])}].push_back(n);
     }
     std::vector<v3> pos(T::vertex_index_bound(m));
     for (auto v : T::vertices(m)) pos[T::vertex_index(m, v)] = at(m, v);
@@ -636,8 +642,9 @@ TEST(remeshing_real_meshes, edges_reach_the_band_and_features_stay_on_real_meshe
 #ifdef HMIRA_SANITIZER_BUILD
     const run runs[] = {{"elephant.off", std::nullopt, 40.4, 30}, {"fandisk.off", 45.0, 34.4, 18}};
 #else
-    const run runs[] = {
-        {"elephant.off", std::nullopt, 40.4, 30}, {"fandisk.off", 45.0, 34.4, 18}, {"bunny00.off", std::nullopt, 40.9, 26}};
+    const run runs[] = {{"elephant.off", std::nullopt, 40.4, 30},
+                        {"fandisk.off", 45.0, 34.4, 18},
+                        {"bunny00.off", std::nullopt, 40.9, 26}};
 #endif
     using T = hmira::default_traits<hmira::halfedge_mesh>;
     for (const auto& [name, features, p1_angle, min_angle] : runs) {
@@ -663,13 +670,13 @@ TEST(remeshing_real_meshes, edges_reach_the_band_and_features_stay_on_real_meshe
         const double band = fraction_in_band(m, L);
         EXPECT_GE(band, 0.95) << "edges within [4/5, 4/3] L";
         const auto positions = all_positions(m);
-        for (const auto& p : kept) ASSERT_TRUE(positions.count(p)) << "feature vertex " << p[0] << " " << p[1] << " " << p[2];
+        for (const auto& p : kept)
+            ASSERT_TRUE(positions.count(p)) << "feature vertex " << p[0] << " " << p[1] << " " << p[2];
         // Every vertex on the input surface (projected, or a kept or split feature vertex).
         double worst = 0;
         for (auto v : T::vertices(m)) worst = std::max(worst, tree->closest_point(at(m, v)).distance);
         EXPECT_LT(worst, 1e-9 * (1 + L));
     }
 }
-
 
 }  // namespace

@@ -33,7 +33,8 @@ polygon_soup torus(std::uint32_t n = 8, std::uint32_t m = 6, double shift = 0) {
     auto id = [&](std::uint32_t i, std::uint32_t j) { return (i % n) * m + (j % m); };
     for (std::uint32_t i = 0; i < n; ++i)
         for (std::uint32_t j = 0; j < m; ++j) {
-            for (auto t : {std::array{id(i, j), id(i + 1, j), id(i + 1, j + 1)}, std::array{id(i, j), id(i + 1, j + 1), id(i, j + 1)}}) {
+            for (auto t : {std::array{id(i, j), id(i + 1, j), id(i + 1, j + 1)},
+                           std::array{id(i, j), id(i + 1, j + 1), id(i, j + 1)}}) {
                 s.indices.insert(s.indices.end(), t.begin(), t.end());
                 s.face_offsets.push_back(s.indices.size());
             }
@@ -43,7 +44,9 @@ polygon_soup torus(std::uint32_t n = 8, std::uint32_t m = 6, double shift = 0) {
 
 std::vector<std::vector<std::uint32_t>> faces_of(const polygon_soup& s) {
     std::vector<std::vector<std::uint32_t>> f;
-    for (std::size_t i = 0; i < s.face_count(); ++i) f.emplace_back(s.indices.begin() + static_cast<long>(s.face_offsets[i]), s.indices.begin() + static_cast<long>(s.face_offsets[i + 1]));
+    for (std::size_t i = 0; i < s.face_count(); ++i)
+        f.emplace_back(s.indices.begin() + static_cast<long>(s.face_offsets[i]),
+                       s.indices.begin() + static_cast<long>(s.face_offsets[i + 1]));
     return f;
 }
 
@@ -69,16 +72,20 @@ hmira::repaired_polygon_soup repair(const polygon_soup& s, hmira::soup_repair_op
 ::testing::AssertionResult is_oriented_manifold(const hmira::repaired_polygon_soup& r) {
     std::map<std::pair<std::uint32_t, std::uint32_t>, int> directed;
     std::map<std::pair<std::uint32_t, std::uint32_t>, int> undirected;
-    std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> around(r.vertex_count);  // (prev, next) per corner
+    std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> around(
+        r.vertex_count);  // (prev, next) per corner
     for (std::size_t f = 0; f < r.face_count(); ++f) {
         const auto b = r.face_offsets[f], e = r.face_offsets[f + 1];
-        std::set<std::uint32_t> distinct(r.corners.begin() + static_cast<long>(b), r.corners.begin() + static_cast<long>(e));
-        if (distinct.size() != e - b || e - b < 3) return ::testing::AssertionFailure() << "face " << f << " repeats a vertex";
+        std::set<std::uint32_t> distinct(r.corners.begin() + static_cast<long>(b),
+                                         r.corners.begin() + static_cast<long>(e));
+        if (distinct.size() != e - b || e - b < 3)
+            return ::testing::AssertionFailure() << "face " << f << " repeats a vertex";
         for (auto k = b; k < e; ++k) {
             const auto a = r.corners[k], z = r.corners[k + 1 == e ? b : k + 1], p = r.corners[k == b ? e - 1 : k - 1];
             if (a >= r.vertex_count) return ::testing::AssertionFailure() << "face " << f << " names vertex " << a;
             if (++directed[{a, z}] > 1) return ::testing::AssertionFailure() << "two faces run edge " << a << "->" << z;
-            if (++undirected[{std::min(a, z), std::max(a, z)}] > 2) return ::testing::AssertionFailure() << "edge " << a << "-" << z << " has 3 faces";
+            if (++undirected[{std::min(a, z), std::max(a, z)}] > 2)
+                return ::testing::AssertionFailure() << "edge " << a << "-" << z << " has 3 faces";
             around[a].push_back({p, z});
         }
     }
@@ -101,7 +108,9 @@ hmira::repaired_polygon_soup repair(const polygon_soup& s, hmira::soup_repair_op
             i = it->second;
             ++walked;
         }
-        if (walked != cs.size()) return ::testing::AssertionFailure() << "vertex " << v << ": its " << cs.size() << " faces form several fans";
+        if (walked != cs.size())
+            return ::testing::AssertionFailure()
+                   << "vertex " << v << ": its " << cs.size() << " faces form several fans";
     }
     return ::testing::AssertionSuccess();
 }
@@ -170,11 +179,14 @@ TEST(RepairPolygonSoup, a_third_face_on_an_edge_is_cut_free_or_dropped) {
     EXPECT_EQ(dup.report.nonmanifold_edge_faces.first, (std::vector<std::size_t>{faces.size() - 1}));
     EXPECT_EQ(dup.face_count(), faces.size());
     EXPECT_EQ(dup.report.added_vertices, 2u);  // the extra face's ends of the edge
-    EXPECT_EQ(dup.report.split_vertices.first, (std::vector<std::size_t>{std::min(faces[0][0], faces[0][1]), std::max(faces[0][0], faces[0][1])}));
+    EXPECT_EQ(dup.report.split_vertices.first,
+              (std::vector<std::size_t>{std::min(faces[0][0], faces[0][1]), std::max(faces[0][0], faces[0][1])}));
     EXPECT_TRUE(is_oriented_manifold(dup));
-    for (std::size_t v = 0; v < dup.vertex_count; ++v) EXPECT_EQ(v < s.points.size() ? v : dup.copied_from[v - s.points.size()], dup.source_vertex(v));
+    for (std::size_t v = 0; v < dup.vertex_count; ++v)
+        EXPECT_EQ(v < s.points.size() ? v : dup.copied_from[v - s.points.size()], dup.source_vertex(v));
 
-    const auto drop = repair(soup_of(s.points, faces), {.nonmanifold_edges = hmira::nonmanifold_edge_policy::drop_faces});
+    const auto drop =
+        repair(soup_of(s.points, faces), {.nonmanifold_edges = hmira::nonmanifold_edge_policy::drop_faces});
     EXPECT_EQ(drop.face_count(), faces.size() - 1);
     EXPECT_EQ(drop.report.dropped_faces, 1u);
     EXPECT_EQ(drop.corners, s.indices);
@@ -290,8 +302,10 @@ damaged random_damage(std::mt19937& rng) {
     // Degenerate faces anywhere.
     const std::size_t nd = rng() % 5;
     for (std::size_t i = 0; i < nd; ++i) {
-        const auto v = static_cast<std::uint32_t>(rng() % d.soup.points.size()), w = static_cast<std::uint32_t>((v + 1) % d.soup.points.size());
-        std::vector<std::uint32_t> bad = rng() % 2 ? std::vector<std::uint32_t>{v, w, v} : std::vector<std::uint32_t>{v, v, w, w};
+        const auto v = static_cast<std::uint32_t>(rng() % d.soup.points.size()),
+                   w = static_cast<std::uint32_t>((v + 1) % d.soup.points.size());
+        std::vector<std::uint32_t> bad =
+            rng() % 2 ? std::vector<std::uint32_t>{v, w, v} : std::vector<std::uint32_t>{v, v, w, w};
         faces.insert(faces.begin() + static_cast<long>(rng() % (faces.size() + 1)), bad);
     }
     d.degenerate = nd;
@@ -342,7 +356,8 @@ polygon_soup random_tangle(std::mt19937& rng, std::size_t& degenerate) {
         for (auto v : loop)
             if (merged.empty() || merged.back() != v) merged.push_back(v);
         while (merged.size() > 1 && merged.back() == merged.front()) merged.pop_back();
-        degenerate += merged.size() < 3 || std::set<std::uint32_t>(merged.begin(), merged.end()).size() != merged.size();
+        degenerate +=
+            merged.size() < 3 || std::set<std::uint32_t>(merged.begin(), merged.end()).size() != merged.size();
         s.face_offsets.push_back(s.indices.size());
     }
     return s;
@@ -357,18 +372,22 @@ TEST(RepairPolygonSoup, random_tangles_come_out_manifold_without_losing_faces) {
         std::size_t degenerate = 0;
         const auto s = random_tangle(rng, degenerate);
         const std::size_t nf = s.face_count();
-        for (auto policy : {hmira::nonmanifold_edge_policy::duplicate_vertices, hmira::nonmanifold_edge_policy::drop_faces}) {
+        for (auto policy :
+             {hmira::nonmanifold_edge_policy::duplicate_vertices, hmira::nonmanifold_edge_policy::drop_faces}) {
             const auto r = repair(s, {.nonmanifold_edges = policy});
             EXPECT_TRUE(is_oriented_manifold(r));
             EXPECT_EQ(r.report.degenerate_faces.count, degenerate);
-            if (policy == hmira::nonmanifold_edge_policy::duplicate_vertices) EXPECT_EQ(r.face_count(), nf - degenerate);
-            else EXPECT_EQ(r.face_count(), nf - degenerate - r.report.nonmanifold_edge_faces.count);
+            if (policy == hmira::nonmanifold_edge_policy::duplicate_vertices)
+                EXPECT_EQ(r.face_count(), nf - degenerate);
+            else
+                EXPECT_EQ(r.face_count(), nf - degenerate - r.report.nonmanifold_edge_faces.count);
             EXPECT_EQ(r.report.dropped_faces, nf - r.face_count());
             for (std::size_t f = 0; f < r.face_count(); ++f)  // each face keeps its file vertices
                 for (auto k = r.face_offsets[f]; k < r.face_offsets[f + 1]; ++k) {
                     const auto src = r.face_source[f];
                     const auto b = s.face_offsets[src], e = s.face_offsets[src + 1];
-                    EXPECT_NE(std::find(s.indices.begin() + static_cast<long>(b), s.indices.begin() + static_cast<long>(e), r.source_vertex(r.corners[k])),
+                    EXPECT_NE(std::find(s.indices.begin() + static_cast<long>(b),
+                                        s.indices.begin() + static_cast<long>(e), r.source_vertex(r.corners[k])),
                               s.indices.begin() + static_cast<long>(e));
                 }
         }
@@ -382,13 +401,16 @@ class RepairRead : public ::testing::Test {};
 
 using halfedge_models = ::testing::Types<hmira::halfedge_mesh
 #ifdef HMIRA_TEST_HAS_WINGED_EDGE
-                                         , hmira::winged_edge_mesh
+                                         ,
+                                         hmira::winged_edge_mesh
 #endif
 #ifdef HMIRA_TEST_WITH_OPENMESH
-                                         , hmira_test::openmesh_poly, hmira_test::openmesh_tri
+                                         ,
+                                         hmira_test::openmesh_poly, hmira_test::openmesh_tri
 #endif
 #ifdef HMIRA_TEST_WITH_CGAL
-                                         , hmira_test::cgal_surface_mesh
+                                         ,
+                                         hmira_test::cgal_surface_mesh
 #endif
                                          >;
 TYPED_TEST_SUITE(RepairRead, halfedge_models);
@@ -438,7 +460,8 @@ TYPED_TEST(RepairRead, tangles_build_whole_in_any_model) {
         // Unused file vertices stay (isolated) and random points may be collinear: those two
         // findings are the file's, not the repair's.
         for (const auto& p : hmira::validate<M>(mesh))
-            EXPECT_TRUE(p.kind == hmira::problem_kind::isolated_vertex || p.kind == hmira::problem_kind::zero_area_face) << p.message;
+            EXPECT_TRUE(p.kind == hmira::problem_kind::isolated_vertex || p.kind == hmira::problem_kind::zero_area_face)
+                << p.message;
     }
 }
 
@@ -469,7 +492,8 @@ TYPED_TEST(RepairRead, read_mesh_repairs_a_file_and_says_so) {
     const auto n = static_cast<std::uint32_t>(s.points.size());
     s.points.push_back({5, 5, 5});
     faces.push_back({faces[10][1], faces[10][0], n});
-    const auto path = std::filesystem::temp_directory_path() / ("hmira_repair_read_" + std::to_string(::getpid()) + ".off");
+    const auto path =
+        std::filesystem::temp_directory_path() / ("hmira_repair_read_" + std::to_string(::getpid()) + ".off");
     {
         std::ofstream out(path);
         out << "OFF\n" << s.points.size() << ' ' << faces.size() << " 0\n";

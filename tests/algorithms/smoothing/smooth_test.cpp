@@ -132,10 +132,12 @@ TYPED_TEST(smoothing_test, iterations_in_one_call_equal_one_call_per_iteration) 
             }
             M b = a, c = a, d = a;
             ASSERT_TRUE(hmira::laplacian_smooth(a, {.iterations = 4, .weights = w, .fixed_vertices = {24}}));
-            for (int k = 0; k < 4; ++k) ASSERT_TRUE(hmira::laplacian_smooth(b, {.iterations = 1, .weights = w, .fixed_vertices = {24}}));
+            for (int k = 0; k < 4; ++k)
+                ASSERT_TRUE(hmira::laplacian_smooth(b, {.iterations = 1, .weights = w, .fixed_vertices = {24}}));
             EXPECT_EQ(positions(a), positions(b));
             ASSERT_TRUE(hmira::taubin_smooth(c, {.iterations = 3, .weights = w, .fixed_vertices = {24}}));
-            for (int k = 0; k < 3; ++k) ASSERT_TRUE(hmira::taubin_smooth(d, {.iterations = 1, .weights = w, .fixed_vertices = {24}}));
+            for (int k = 0; k < 3; ++k)
+                ASSERT_TRUE(hmira::taubin_smooth(d, {.iterations = 1, .weights = w, .fixed_vertices = {24}}));
             EXPECT_EQ(positions(c), positions(d));
             EXPECT_NE(positions(a), positions(c));  // the two smoothers did move the vertices
             for (const M* m : {&a, &b, &c, &d}) EXPECT_TRUE(valid_topology(*m));
@@ -259,8 +261,8 @@ TYPED_TEST(smoothing_test, a_taubin_step_beyond_the_range_of_double_is_refused_b
             M m = mesh_from<M>(huge_tetrahedron());
             const auto before = take_snapshot(m);
             for (std::size_t iterations : {1u, 3u}) {
-                const hmira::taubin_smooth_options o{.iterations = iterations, .lambda = 0.01, .mu = -1,
-                                                     .fix_boundary = false};
+                const hmira::taubin_smooth_options o{
+                    .iterations = iterations, .lambda = 0.01, .mu = -1, .fix_boundary = false};
                 auto r = hmira::taubin_smooth(m, o);
                 ASSERT_FALSE(r);
                 EXPECT_EQ(r.error().code, hmira::errc::unsupported) << r.error().message;

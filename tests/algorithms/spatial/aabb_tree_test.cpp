@@ -41,7 +41,8 @@ double brute_distance_to_triangle(const v3& p, const v3& a, const v3& b, const v
     const double n2 = hmira::dot(n, n);
     if (n2 > 0) {
         const v3 q = p - n * (hmira::dot(p - a, n) / n2);
-        const bool inside = hmira::dot(hmira::cross(b - a, q - a), n) >= 0 && hmira::dot(hmira::cross(c - b, q - b), n) >= 0 &&
+        const bool inside = hmira::dot(hmira::cross(b - a, q - a), n) >= 0 &&
+                            hmira::dot(hmira::cross(c - b, q - b), n) >= 0 &&
                             hmira::dot(hmira::cross(a - c, q - c), n) >= 0;
         if (inside) return hmira::norm(q - p);
     }
@@ -112,7 +113,8 @@ void check_against_brute_force(const soup& s, const hmira::aabb_tree& tree, unsi
         // The point lies on the triangle it names.
         ASSERT_LT(r.face, s.triangles.size());
         const auto& t = s.triangles[r.face];
-        EXPECT_LT(brute_distance_to_triangle(r.point, s.points[t[0]], s.points[t[1]], s.points[t[2]]), 1e-9 * (1 + expected));
+        EXPECT_LT(brute_distance_to_triangle(r.point, s.points[t[0]], s.points[t[1]], s.points[t[2]]),
+                  1e-9 * (1 + expected));
 
         const hmira::ray ray{.origin = p, .direction = {dir(rng), dir(rng), dir(rng)}};
         const auto hit = tree.ray_intersect(ray);
@@ -176,7 +178,8 @@ TEST(aabb_tree, closest_point_and_ray_match_brute_force_on_real_meshes) {
         const hmira::aabb_tree centred(s.points, s.triangles);
         check_against_brute_force(s, centred, 11, spread);
         // Vertices are on the surface: distance 0.
-        for (std::size_t i = 0; i < s.points.size(); i += 97) EXPECT_EQ(centred.closest_point(s.points[i]).distance, 0.0);
+        for (std::size_t i = 0; i < s.points.size(); i += 97)
+            EXPECT_EQ(centred.closest_point(s.points[i]).distance, 0.0);
     }
 }
 
@@ -304,4 +307,3 @@ TEST(mesh_quality, triangle_and_edge_statistics_have_the_known_values) {
 }
 
 }  // namespace
-

@@ -24,10 +24,10 @@ namespace {
 using namespace hmira_test;
 
 /// Skips the current typed test on a model catmull_clark_subdivide does not accept.
-#define HMIRA_REQUIRE_CATMULL_CLARK(M)                                                                          \
+#define HMIRA_REQUIRE_CATMULL_CLARK(M)                                                                      \
     if constexpr (!hmira::catmull_clark_subdividable_mesh<M> || !::hmira_test::indexed_halfedge_model<M>) { \
-        GTEST_SKIP() << "not a catmull_clark_subdividable_mesh";                                                \
-        return;                                                                                                 \
+        GTEST_SKIP() << "not a catmull_clark_subdividable_mesh";                                            \
+        return;                                                                                             \
     }
 
 template <class M>
@@ -98,7 +98,9 @@ TYPED_TEST(catmull_clark_test, each_level_gives_the_exact_counts_on_closed_and_o
     HMIRA_REQUIRE_CATMULL_CLARK(M)
     else {
         using T = hmira::default_traits<M>;
-        const face_list shapes[] = {torus(6, 5), mixed_patch(), without_faces(torus(8, 6), [](std::size_t f) { return f == 3 || f == 20 || f == 37; })};
+        const face_list shapes[] = {torus(6, 5), mixed_patch(), without_faces(torus(8, 6), [](std::size_t f) {
+                                        return f == 3 || f == 20 || f == 37;
+                                    })};
         for (const auto& shape : shapes) {
             M m = mesh_from<M>(shape);
             vefc k = counts_of(shape);
@@ -174,7 +176,8 @@ TYPED_TEST(catmull_clark_test, a_cube_after_one_level_has_the_positions_of_the_m
             for (std::size_t i = 0; i < expected.size() && !matched; ++i) {
                 if (used[i]) continue;
                 const auto& q = expected[i];
-                if (std::abs(double(p[0]) - q[0]) < 1e-6 && std::abs(double(p[1]) - q[1]) < 1e-6 && std::abs(double(p[2]) - q[2]) < 1e-6)
+                if (std::abs(double(p[0]) - q[0]) < 1e-6 && std::abs(double(p[1]) - q[1]) < 1e-6 &&
+                    std::abs(double(p[2]) - q[2]) < 1e-6)
                     used[i] = matched = true;
             }
             EXPECT_TRUE(matched) << double(p[0]) << ", " << double(p[1]) << ", " << double(p[2]);
@@ -276,12 +279,12 @@ TYPED_TEST(catmull_clark_test, a_cancellation_at_any_point_leaves_the_mesh_uncha
             M m = original;
             double last = -1;
             auto r = hmira::catmull_clark_subdivide(m, {.levels = 3, .progress = [&](double f) {
-                                                           EXPECT_GE(f, last);
-                                                           EXPECT_LE(f, 1.0);
-                                                           last = f;
-                                                           ++calls_to_finish;
-                                                           return true;
-                                                       }});
+                                                            EXPECT_GE(f, last);
+                                                            EXPECT_LE(f, 1.0);
+                                                            last = f;
+                                                            ++calls_to_finish;
+                                                            return true;
+                                                        }});
             ASSERT_TRUE(r) << r.error().message;
             EXPECT_EQ(r->faces, 4096u * 64u);
         }
@@ -289,7 +292,8 @@ TYPED_TEST(catmull_clark_test, a_cancellation_at_any_point_leaves_the_mesh_uncha
         for (int stop_at = 1; stop_at <= calls_to_finish; stop_at += std::max(1, calls_to_finish / 9)) {
             M m = original;
             int calls = 0;
-            auto r = hmira::catmull_clark_subdivide(m, {.levels = 3, .progress = [&](double) { return ++calls < stop_at; }});
+            auto r =
+                hmira::catmull_clark_subdivide(m, {.levels = 3, .progress = [&](double) { return ++calls < stop_at; }});
             ASSERT_FALSE(r) << "stop at call " << stop_at;
             EXPECT_EQ(r.error().code, hmira::errc::cancelled);
             EXPECT_NE(r.error().message.find("cancelled"), std::string::npos);
@@ -301,7 +305,8 @@ TYPED_TEST(catmull_clark_test, a_cancellation_at_any_point_leaves_the_mesh_uncha
 
 TEST(catmull_clark, a_face_with_an_inner_ring_is_refused_by_name_and_the_mesh_is_unchanged) {
     using M = hmira::halfedge_mesh;
-    face_list g{{{0, 0, 0}, {4, 0, 0}, {4, 4, 0}, {0, 4, 0}, {1, 1, 0}, {1, 3, 0}, {3, 3, 0}, {3, 1, 0}}, {{0, 1, 2, 3}, {4, 5, 6, 7}}};
+    face_list g{{{0, 0, 0}, {4, 0, 0}, {4, 4, 0}, {0, 4, 0}, {1, 1, 0}, {1, 3, 0}, {3, 3, 0}, {3, 1, 0}},
+                {{0, 1, 2, 3}, {4, 5, 6, 7}}};
     M m = mesh_from<M>(g);
     ASSERT_TRUE(hmira::kill_face_make_ring(m, hmira::face_handle(1), hmira::face_handle(0)));
     const auto before = take_snapshot(m);
@@ -322,7 +327,6 @@ TEST(catmull_clark, an_isolated_vertex_stays_put) {
     EXPECT_EQ(m.vertex_count(), 1u + 4 + 4 + 1);
     EXPECT_EQ(m.face_count(), 4u);
 }
-
 
 TYPED_TEST(catmull_clark_test, coordinates_near_the_largest_double_subdivide_to_finite_positions) {
     using M = TypeParam;

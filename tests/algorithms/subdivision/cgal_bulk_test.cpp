@@ -57,14 +57,14 @@ struct user_maps {
                           const char* kind) -> ::testing::AssertionResult {
         const auto size = std::size_t(map.end() - map.begin());
         if (size != bound)
-            return ::testing::AssertionFailure() << kind << " map has " << size << " entries for " << bound
-                                                 << " elements";
+            return ::testing::AssertionFailure()
+                   << kind << " map has " << size << " entries for " << bound << " elements";
         for (std::size_t i = 0; i < bound; ++i) {
             const int expected = i < old_bound ? int(i) + 1 : 0;
             const int held = map.begin()[std::ptrdiff_t(i)];
             if (held != expected)
-                return ::testing::AssertionFailure() << kind << " " << i << " holds " << held << ", expected "
-                                                     << expected;
+                return ::testing::AssertionFailure()
+                       << kind << " " << i << " holds " << held << ", expected " << expected;
         }
         return ::testing::AssertionSuccess();
     };
@@ -160,8 +160,8 @@ TEST(subdivision_cgal_bulk, several_blocks_over_two_levels_leave_exact_counts) {
     for (const mesh* m : {&tri, &quad}) {
         EXPECT_TRUE(valid_topology(*m));
         // A closed torus: V - E + F = 0; no removed element, so the bounds are the counts.
-        const long long chi = (long long)m->number_of_vertices() - (long long)m->number_of_edges() +
-                              (long long)m->number_of_faces();
+        const long long chi =
+            (long long)m->number_of_vertices() - (long long)m->number_of_edges() + (long long)m->number_of_faces();
         EXPECT_EQ(chi, 0);
         EXPECT_EQ(m->num_vertices(), m->number_of_vertices());
         EXPECT_EQ(m->num_edges(), m->number_of_edges());

@@ -79,21 +79,18 @@ void expect_same_result_with_and_without_garbage(const face_list& shape, auto&& 
 }
 
 TEST(subdivision_garbage, loop_on_a_surface_mesh_with_free_slots_equals_loop_without) {
-    expect_same_result_with_and_without_garbage(triangulated(torus(8, 6)), [](mesh& m) {
-        return bool(hmira::loop_subdivide(m, {.levels = 2}));
-    });
+    expect_same_result_with_and_without_garbage(triangulated(torus(8, 6)),
+                                                [](mesh& m) { return bool(hmira::loop_subdivide(m, {.levels = 2})); });
 }
 
 TEST(subdivision_garbage, catmull_clark_on_a_surface_mesh_with_free_slots_equals_catmull_clark_without) {
-    expect_same_result_with_and_without_garbage(torus(8, 6), [](mesh& m) {
-        return bool(hmira::catmull_clark_subdivide(m, {.levels = 2}));
-    });
+    expect_same_result_with_and_without_garbage(
+        torus(8, 6), [](mesh& m) { return bool(hmira::catmull_clark_subdivide(m, {.levels = 2})); });
 }
 
 TEST(subdivision_garbage, sqrt3_on_a_surface_mesh_with_free_slots_equals_sqrt3_without) {
-    expect_same_result_with_and_without_garbage(triangulated(torus(8, 6)), [](mesh& m) {
-        return bool(hmira::sqrt3_subdivide(m, {.levels = 2}));
-    });
+    expect_same_result_with_and_without_garbage(triangulated(torus(8, 6)),
+                                                [](mesh& m) { return bool(hmira::sqrt3_subdivide(m, {.levels = 2})); });
 }
 
 TEST(subdivision_garbage, remeshing_a_surface_mesh_with_free_slots_equals_remeshing_without) {

@@ -123,7 +123,8 @@ TYPED_TEST(loop_test, icosahedron_vertices_converge_to_the_limit_positions) {
                     worst = std::max(worst, std::sqrt(hmira::dot(d, d)));
                 }
                 if (level > 0) {
-                    EXPECT_LT(worst, 0.5 * prev) << "level " << level;  // the subdominant eigenvalue at valence 5 is < 1/2
+                    EXPECT_LT(worst, 0.5 * prev)
+                        << "level " << level;  // the subdominant eigenvalue at valence 5 is < 1/2
                 }
                 prev = worst;
                 ASSERT_TRUE(hmira::loop_subdivide(m));
@@ -167,7 +168,6 @@ TYPED_TEST(loop_test, a_mesh_with_a_quad_is_refused_and_unchanged) {
         }
     }
 }
-
 
 TYPED_TEST(loop_test, coordinates_near_the_largest_double_subdivide_to_finite_positions) {
     using M = TypeParam;

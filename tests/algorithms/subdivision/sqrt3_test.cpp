@@ -103,7 +103,8 @@ TYPED_TEST(sqrt3_test, levels_triple_the_faces_on_a_torus_and_keep_the_genus) {
         using T = hmira::default_traits<M>;
         M m = mesh_from<M>(triangulated(torus(8, 6)));
         for (int level = 0; level < 3; ++level) {
-            const long long v = (long long)T::vertex_count(m), e = (long long)T::edge_count(m), f = (long long)T::face_count(m);
+            const long long v = (long long)T::vertex_count(m), e = (long long)T::edge_count(m),
+                            f = (long long)T::face_count(m);
             auto r = hmira::sqrt3_subdivide(m);
             ASSERT_TRUE(r) << r.error().message;
             EXPECT_EQ((long long)T::vertex_count(m), v + f);
@@ -141,13 +142,22 @@ TYPED_TEST(sqrt3_test, two_levels_turn_one_triangle_into_nine_on_the_ternary_b_s
         EXPECT_EQ(boundary_edges(twice), 9);
         // Corners: (4 u + 19 p + 4 z) / 27. Edge points: (u + 16 a + 10 b) / 27 and
         // (10 a + 16 b + z) / 27. The centroid, of valence 3, is the average of its ring.
-        const std::array<hmira::vec3<double>, 10> expected{{{4, 4, 0}, {19, 4, 0}, {4, 19, 0}, {9, 9, 0}, {10, 1, 0},
-                                                            {16, 1, 0}, {16, 10, 0}, {10, 16, 0}, {1, 16, 0}, {1, 10, 0}}};
+        const std::array<hmira::vec3<double>, 10> expected{{{4, 4, 0},
+                                                            {19, 4, 0},
+                                                            {4, 19, 0},
+                                                            {9, 9, 0},
+                                                            {10, 1, 0},
+                                                            {16, 1, 0},
+                                                            {16, 10, 0},
+                                                            {10, 16, 0},
+                                                            {1, 16, 0},
+                                                            {1, 10, 0}}};
         for (const auto& p : expected) EXPECT_TRUE(has_vertex_at(twice, p, 1e-4)) << p.x << ", " << p.y;
         // Each corner keeps one triangle (valence 2), as in a 1-to-9 split; none is folded.
         for (auto v : T::vertices(twice)) {
             const auto p = T::position(twice, v);
-            if ((std::abs(p[0] - 4) < 1e-4 && std::abs(p[1] - 4) < 1e-4) || std::abs(p[0] - 19) < 1e-4 || std::abs(p[1] - 19) < 1e-4) {
+            if ((std::abs(p[0] - 4) < 1e-4 && std::abs(p[1] - 4) < 1e-4) || std::abs(p[0] - 19) < 1e-4 ||
+                std::abs(p[1] - 19) < 1e-4) {
                 EXPECT_EQ(valence(twice, v), 2u) << double(p[0]) << ", " << double(p[1]);
             }
         }
@@ -213,7 +223,8 @@ TYPED_TEST(sqrt3_test, every_model_gives_the_positions_of_halfedge_mesh) {
         for (const auto& p : got) {
             double nearest = 1e300;
             for (const auto& q : want)
-                nearest = std::min(nearest, std::max({std::abs(p[0] - q[0]), std::abs(p[1] - q[1]), std::abs(p[2] - q[2])}));
+                nearest =
+                    std::min(nearest, std::max({std::abs(p[0] - q[0]), std::abs(p[1] - q[1]), std::abs(p[2] - q[2])}));
             EXPECT_LE(nearest, tol) << p[0] << ", " << p[1] << ", " << p[2];
         }
     }
@@ -247,7 +258,6 @@ TYPED_TEST(sqrt3_test, too_many_levels_and_quads_are_refused_and_the_mesh_is_unc
         }
     }
 }
-
 
 TYPED_TEST(sqrt3_test, coordinates_near_the_largest_double_subdivide_to_finite_positions) {
     using M = TypeParam;

@@ -43,9 +43,12 @@ TEST(subdivide, each_scheme_gives_what_its_own_function_gives) {
         const auto r = hmira::subdivide(a, {.scheme = scheme, .levels = 2});
         ASSERT_TRUE(r) << r.error().message;
         std::size_t faces = 0;
-        if (scheme == subdivision_scheme::loop) faces = hmira::loop_subdivide(b, {.levels = 2}).value().faces;
-        else if (scheme == subdivision_scheme::sqrt3) faces = hmira::sqrt3_subdivide(b, {.levels = 2}).value().faces;
-        else faces = hmira::catmull_clark_subdivide(b, {.levels = 2}).value().faces;
+        if (scheme == subdivision_scheme::loop)
+            faces = hmira::loop_subdivide(b, {.levels = 2}).value().faces;
+        else if (scheme == subdivision_scheme::sqrt3)
+            faces = hmira::sqrt3_subdivide(b, {.levels = 2}).value().faces;
+        else
+            faces = hmira::catmull_clark_subdivide(b, {.levels = 2}).value().faces;
         EXPECT_EQ(r->faces, faces);
         EXPECT_EQ(r->faces, a.face_count());
         EXPECT_EQ(r->vertices, a.vertex_count());

@@ -47,7 +47,8 @@ TYPED_TEST(topology, components_of_a_disjoint_union_match_its_parts) {
         for (auto f : T::faces(mesh)) {
             auto loop = T::face_vertices(mesh, f);
             const auto first = *loop.begin();
-            EXPECT_EQ(labels.face_component[T::face_index(mesh, f)], labels.vertex_component[T::vertex_index(mesh, first)]);
+            EXPECT_EQ(labels.face_component[T::face_index(mesh, f)],
+                      labels.vertex_component[T::vertex_index(mesh, first)]);
         }
         const auto topo = mesh_topology(mesh);
         EXPECT_EQ(topo.isolated_vertices, 1u);
@@ -81,7 +82,8 @@ TYPED_TEST(topology, grid_with_holes_has_one_boundary_loop_per_hole_plus_the_rim
         drop.insert(2 * (j * 12 + i) + 1);
     }
     M mesh;
-    ASSERT_TRUE(hmira_test::add_face_list(mesh, hmira_test::without_faces(g, [&](std::size_t f) { return drop.count(f) > 0; })));
+    ASSERT_TRUE(hmira_test::add_face_list(
+        mesh, hmira_test::without_faces(g, [&](std::size_t f) { return drop.count(f) > 0; })));
     ASSERT_TRUE(hmira_test::is_valid(mesh));
     const auto topo = mesh_topology(mesh);
     EXPECT_EQ(topo.boundary_loops, holes.size() + 1);

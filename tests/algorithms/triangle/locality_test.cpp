@@ -24,29 +24,95 @@ struct counting_traits : base {
     using F = base::face_handle;
     using E = base::edge_handle;
 
-    static H next(const halfedge_mesh& m, H h) { ++calls; return base::next(m, h); }
-    static H prev(const halfedge_mesh& m, H h) { ++calls; return base::prev(m, h); }
-    static H opposite(const halfedge_mesh& m, H h) { ++calls; return base::opposite(m, h); }
-    static V target(const halfedge_mesh& m, H h) { ++calls; return base::target(m, h); }
-    static F face(const halfedge_mesh& m, H h) { ++calls; return base::face(m, h); }
-    static E edge(const halfedge_mesh& m, H h) { ++calls; return base::edge(m, h); }
-    static H vertex_halfedge(const halfedge_mesh& m, V v) { ++calls; return base::vertex_halfedge(m, v); }
-    static H face_halfedge(const halfedge_mesh& m, F f) { ++calls; return base::face_halfedge(m, f); }
-    static auto inner_rings(const halfedge_mesh& m, F f) { ++calls; return base::inner_rings(m, f); }
-    static auto position(const halfedge_mesh& m, V v) { ++calls; return base::position(m, v); }
-    static void set_position(halfedge_mesh& m, V v, const hmira::vec3<double>& p) { ++calls; base::set_position(m, v, p); }
+    static H next(const halfedge_mesh& m, H h) {
+        ++calls;
+        return base::next(m, h);
+    }
+    static H prev(const halfedge_mesh& m, H h) {
+        ++calls;
+        return base::prev(m, h);
+    }
+    static H opposite(const halfedge_mesh& m, H h) {
+        ++calls;
+        return base::opposite(m, h);
+    }
+    static V target(const halfedge_mesh& m, H h) {
+        ++calls;
+        return base::target(m, h);
+    }
+    static F face(const halfedge_mesh& m, H h) {
+        ++calls;
+        return base::face(m, h);
+    }
+    static E edge(const halfedge_mesh& m, H h) {
+        ++calls;
+        return base::edge(m, h);
+    }
+    static H vertex_halfedge(const halfedge_mesh& m, V v) {
+        ++calls;
+        return base::vertex_halfedge(m, v);
+    }
+    static H face_halfedge(const halfedge_mesh& m, F f) {
+        ++calls;
+        return base::face_halfedge(m, f);
+    }
+    static auto inner_rings(const halfedge_mesh& m, F f) {
+        ++calls;
+        return base::inner_rings(m, f);
+    }
+    static auto position(const halfedge_mesh& m, V v) {
+        ++calls;
+        return base::position(m, v);
+    }
+    static void set_position(halfedge_mesh& m, V v, const hmira::vec3<double>& p) {
+        ++calls;
+        base::set_position(m, v, p);
+    }
 
-    static void set_next(halfedge_mesh& m, H h, H n) { ++calls; base::set_next(m, h, n); }
-    static void set_target(halfedge_mesh& m, H h, V v) { ++calls; base::set_target(m, h, v); }
-    static void set_face(halfedge_mesh& m, H h, F f) { ++calls; base::set_face(m, h, f); }
-    static void set_vertex_halfedge(halfedge_mesh& m, V v, H h) { ++calls; base::set_vertex_halfedge(m, v, h); }
-    static void set_face_halfedge(halfedge_mesh& m, F f, H h) { ++calls; base::set_face_halfedge(m, f, h); }
-    static H new_edge(halfedge_mesh& m, V a, V b) { ++calls; return base::new_edge(m, a, b); }
-    static F new_face(halfedge_mesh& m) { ++calls; return base::new_face(m); }
-    static V add_vertex(halfedge_mesh& m, const hmira::vec3<double>& p) { ++calls; return base::add_vertex(m, p); }
-    static void erase_edge(halfedge_mesh& m, E e) { ++calls; base::erase_edge(m, e); }
-    static void erase_face(halfedge_mesh& m, F f) { ++calls; base::erase_face(m, f); }
-    static void erase_vertex(halfedge_mesh& m, V v) { ++calls; base::erase_vertex(m, v); }
+    static void set_next(halfedge_mesh& m, H h, H n) {
+        ++calls;
+        base::set_next(m, h, n);
+    }
+    static void set_target(halfedge_mesh& m, H h, V v) {
+        ++calls;
+        base::set_target(m, h, v);
+    }
+    static void set_face(halfedge_mesh& m, H h, F f) {
+        ++calls;
+        base::set_face(m, h, f);
+    }
+    static void set_vertex_halfedge(halfedge_mesh& m, V v, H h) {
+        ++calls;
+        base::set_vertex_halfedge(m, v, h);
+    }
+    static void set_face_halfedge(halfedge_mesh& m, F f, H h) {
+        ++calls;
+        base::set_face_halfedge(m, f, h);
+    }
+    static H new_edge(halfedge_mesh& m, V a, V b) {
+        ++calls;
+        return base::new_edge(m, a, b);
+    }
+    static F new_face(halfedge_mesh& m) {
+        ++calls;
+        return base::new_face(m);
+    }
+    static V add_vertex(halfedge_mesh& m, const hmira::vec3<double>& p) {
+        ++calls;
+        return base::add_vertex(m, p);
+    }
+    static void erase_edge(halfedge_mesh& m, E e) {
+        ++calls;
+        base::erase_edge(m, e);
+    }
+    static void erase_face(halfedge_mesh& m, F f) {
+        ++calls;
+        base::erase_face(m, f);
+    }
+    static void erase_vertex(halfedge_mesh& m, V v) {
+        ++calls;
+        base::erase_vertex(m, v);
+    }
 };
 using CT = counting_traits;
 static_assert(hmira::triangle_operable_mesh<halfedge_mesh, CT>);
@@ -83,11 +149,11 @@ op_counts measure(std::size_t n) {
     k.split = count([&] { s = hmira::split_edge<halfedge_mesh, CT>(m, h); });
     EXPECT_TRUE(s);
     k.collapse_check = count([&] { EXPECT_TRUE((hmira::is_collapse_ok<halfedge_mesh, CT>(m, s->halfedge))); });
-    k.collapse_geometric = count([&] {
-        EXPECT_TRUE((hmira::is_collapse_ok<halfedge_mesh, CT>(m, s->halfedge, {.check_geometry = true})));
-    });
+    k.collapse_geometric = count(
+        [&] { EXPECT_TRUE((hmira::is_collapse_ok<halfedge_mesh, CT>(m, s->halfedge, {.check_geometry = true}))); });
     k.collapse = count([&] {
-        EXPECT_TRUE((hmira::collapse_edge<halfedge_mesh, CT>(m, s->halfedge, {.placement = hmira::collapse_placement::target})));
+        EXPECT_TRUE((
+            hmira::collapse_edge<halfedge_mesh, CT>(m, s->halfedge, {.placement = hmira::collapse_placement::target})));
     });
     hmira::result<hmira::split_face_result<halfedge_mesh, CT>> sf = hmira::error{};
     k.split_face = count([&] { sf = hmira::split_face<halfedge_mesh, CT>(m, m.face(h)); });

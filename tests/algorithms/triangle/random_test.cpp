@@ -103,7 +103,7 @@ struct session {
         compare_link_condition();
         const std::size_t v = T::vertex_count(mesh);
         std::size_t kind = pick(4);
-        if (v > 2 * v0 && kind != 0) kind = 3;   // keep the mesh from growing without bound
+        if (v > 2 * v0 && kind != 0) kind = 3;  // keep the mesh from growing without bound
         if (v < v0 / 2 && kind == 3) kind = 1;  // ... or from shrinking to nothing
         const auto before = take_snapshot(mesh);
         if (kind == 0) {
@@ -135,7 +135,8 @@ struct session {
             } else {
                 const auto f = random_face();
                 const auto h = T::face_halfedge(mesh, f);
-                auto r = hmira::split_face(mesh, f, {.position = (along(h) + position(T::target(mesh, T::next(mesh, h)))) * 0.5});
+                auto r = hmira::split_face(
+                    mesh, f, {.position = (along(h) + position(T::target(mesh, T::next(mesh, h)))) * 0.5});
                 ASSERT_TRUE(r) << r.error().message;
                 back = r->halfedge;
             }
@@ -157,7 +158,8 @@ struct session {
             }
             // Default placement (the midpoint) half of the time, elsewhere on the edge otherwise.
             auto r = pick(2) ? hmira::collapse_edge(mesh, h)
-                             : hmira::collapse_edge(mesh, h, {.placement = hmira::collapse_placement::given, .position = along(h)});
+                             : hmira::collapse_edge(
+                                   mesh, h, {.placement = hmira::collapse_placement::given, .position = along(h)});
             ASSERT_TRUE(r) << r.error().message;
             check("collapse");
             ++done[3];
@@ -169,30 +171,30 @@ TYPED_TEST(triangle_random, random_flips_splits_and_collapses_keep_the_mesh_vali
     using M = TypeParam;
     HMIRA_REQUIRE_TRIANGLE_OPS(M)
     else {
-    for (bool holes : {false, true}) {
-        for (std::uint64_t seed : {1u, 2u}) {
-            session<M> s(mesh_from<M>(test_surface(holes)), seed * 7919 + holes);
-            ASSERT_TRUE(valid_topology(s.mesh));
-            for (int i = 0; i < 600; ++i) {
-                s.step();
-                if (::testing::Test::HasFatalFailure()) {
-                    ADD_FAILURE() << "step " << i << ", seed " << seed << (holes ? ", holed" : ", closed");
-                    return;
+        for (bool holes : {false, true}) {
+            for (std::uint64_t seed : {1u, 2u}) {
+                session<M> s(mesh_from<M>(test_surface(holes)), seed * 7919 + holes);
+                ASSERT_TRUE(valid_topology(s.mesh));
+                for (int i = 0; i < 600; ++i) {
+                    s.step();
+                    if (::testing::Test::HasFatalFailure()) {
+                        ADD_FAILURE() << "step " << i << ", seed " << seed << (holes ? ", holed" : ", closed");
+                        return;
+                    }
+                }
+                // Each kind of step ran and was refused some of the time.
+                EXPECT_GT(s.done[0], 20u);
+                EXPECT_GT(s.done[1], 20u);
+                EXPECT_GT(s.done[2], 20u);
+                EXPECT_GT(s.done[3], 20u);
+                EXPECT_GT(s.refused[0] + s.refused[3], 0u);
+                EXPECT_GT(s.undone, 20u);
+                if (s.link_compared > 0) {
+                    EXPECT_GT(s.link_true, 100u);
+                    EXPECT_GT(s.link_false, 10u);
                 }
             }
-            // Each kind of step ran and was refused some of the time.
-            EXPECT_GT(s.done[0], 20u);
-            EXPECT_GT(s.done[1], 20u);
-            EXPECT_GT(s.done[2], 20u);
-            EXPECT_GT(s.done[3], 20u);
-            EXPECT_GT(s.refused[0] + s.refused[3], 0u);
-            EXPECT_GT(s.undone, 20u);
-            if (s.link_compared > 0) {
-                EXPECT_GT(s.link_true, 100u);
-                EXPECT_GT(s.link_false, 10u);
-            }
         }
-    }
     }
 }
 

@@ -185,14 +185,10 @@ TEST(triangulate_polygon_monotone, a_comb_of_ten_thousand_trapezoid_teeth_is_tri
 point2 transform(const point2& q, int s) {
     const double x = q[0], y = q[1];
     switch (s & 3) {
-        case 0:
-            return s & 4 ? point2{-x, y} : point2{x, y};
-        case 1:
-            return s & 4 ? point2{y, x} : point2{-y, x};
-        case 2:
-            return s & 4 ? point2{x, -y} : point2{-x, -y};
-        default:
-            return s & 4 ? point2{-y, -x} : point2{y, -x};
+        case 0: return s & 4 ? point2{-x, y} : point2{x, y};
+        case 1: return s & 4 ? point2{y, x} : point2{-y, x};
+        case 2: return s & 4 ? point2{x, -y} : point2{-x, -y};
+        default: return s & 4 ? point2{-y, -x} : point2{y, -x};
     }
 }
 

@@ -20,8 +20,8 @@ using hmira::point2;
 using loops_t = std::vector<std::vector<std::size_t>>;
 
 long long cross(const point2& a, const point2& b, const point2& c) {
-    const long long ax = (long long)a[0], ay = (long long)a[1], bx = (long long)b[0], by = (long long)b[1], cx = (long long)c[0],
-                    cy = (long long)c[1];
+    const long long ax = (long long)a[0], ay = (long long)a[1], bx = (long long)b[0], by = (long long)b[1],
+                    cx = (long long)c[0], cy = (long long)c[1];
     return (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
 }
 int sgn(long long x) { return (x > 0) - (x < 0); }
@@ -41,7 +41,8 @@ long long twice_area(const std::vector<point2>& p, const std::vector<std::size_t
 bool meet(const point2& a, const point2& b, const point2& c, const point2& d) {
     const int o1 = sgn(cross(a, b, c)), o2 = sgn(cross(a, b, d)), o3 = sgn(cross(c, d, a)), o4 = sgn(cross(c, d, b));
     auto on = [](const point2& p, const point2& q, const point2& r) {
-        return std::min(p[0], q[0]) <= r[0] && r[0] <= std::max(p[0], q[0]) && std::min(p[1], q[1]) <= r[1] && r[1] <= std::max(p[1], q[1]);
+        return std::min(p[0], q[0]) <= r[0] && r[0] <= std::max(p[0], q[0]) && std::min(p[1], q[1]) <= r[1] &&
+               r[1] <= std::max(p[1], q[1]);
     };
     if (o1 * o2 < 0 && o3 * o4 < 0) return true;
     return (o1 == 0 && on(a, b, c)) || (o2 == 0 && on(a, b, d)) || (o3 == 0 && on(c, d, a)) || (o4 == 0 && on(c, d, b));
@@ -50,7 +51,8 @@ bool meet(const point2& a, const point2& b, const point2& c, const point2& d) {
 bool simple(const std::vector<point2>& p, const loops_t& loops) {
     std::vector<std::array<std::size_t, 4>> segs;  // loop, pos, a, b
     for (std::size_t l = 0; l < loops.size(); ++l)
-        for (std::size_t i = 0; i < loops[l].size(); ++i) segs.push_back({l, i, loops[l][i], loops[l][(i + 1) % loops[l].size()]});
+        for (std::size_t i = 0; i < loops[l].size(); ++i)
+            segs.push_back({l, i, loops[l][i], loops[l][(i + 1) % loops[l].size()]});
     for (std::size_t i = 0; i < segs.size(); ++i)
         for (std::size_t j = i + 1; j < segs.size(); ++j) {
             const auto& s = segs[i];
@@ -61,8 +63,8 @@ bool simple(const std::vector<point2>& p, const loops_t& loops) {
                 const std::size_t far = t[2] == s[3] ? t[3] : t[2];
                 const std::size_t near = t[2] == s[3] ? s[2] : s[3];
                 const std::size_t mid = t[2] == s[3] ? s[3] : s[2];
-                if (cross(p[near], p[mid], p[far]) == 0 &&
-                    ((p[far][0] - p[mid][0]) * (p[near][0] - p[mid][0]) + (p[far][1] - p[mid][1]) * (p[near][1] - p[mid][1])) > 0)
+                if (cross(p[near], p[mid], p[far]) == 0 && ((p[far][0] - p[mid][0]) * (p[near][0] - p[mid][0]) +
+                                                            (p[far][1] - p[mid][1]) * (p[near][1] - p[mid][1])) > 0)
                     return false;
                 continue;
             }
@@ -90,7 +92,9 @@ bool overlap(const std::vector<point2>& p, const std::array<std::size_t, 3>& t, 
 void expect_no_overlap(const std::vector<point2>& p, const std::vector<std::array<std::size_t, 3>>& tris, int round) {
     for (std::size_t i = 0; i < tris.size(); ++i)
         for (std::size_t j = i + 1; j < tris.size(); ++j) {
-            if (cross(p[tris[i][0]], p[tris[i][1]], p[tris[i][2]]) == 0 || cross(p[tris[j][0]], p[tris[j][1]], p[tris[j][2]]) == 0) continue;
+            if (cross(p[tris[i][0]], p[tris[i][1]], p[tris[i][2]]) == 0 ||
+                cross(p[tris[j][0]], p[tris[j][1]], p[tris[j][2]]) == 0)
+                continue;
             ASSERT_FALSE(overlap(p, tris[i], tris[j])) << "round " << round << ": triangles " << i << " and " << j;
         }
 }
@@ -108,7 +112,8 @@ random_polygon make_polygon(std::mt19937_64& rng) {
         random_polygon r;
         const std::size_t k = 6 + std::size_t(unit(rng) * 40);
         std::vector<double> angles;
-        for (std::size_t i = 0; i < k; ++i) angles.push_back(2 * std::numbers::pi * (double(i) + 0.8 * unit(rng)) / double(k));
+        for (std::size_t i = 0; i < k; ++i)
+            angles.push_back(2 * std::numbers::pi * (double(i) + 0.8 * unit(rng)) / double(k));
         r.loops.emplace_back();
         for (std::size_t i = 0; i < k; ++i) {
             const double rad = 600 + 400 * unit(rng);
@@ -149,7 +154,8 @@ random_polygon make_polygon(std::mt19937_64& rng) {
                 const double a = -2 * std::numbers::pi * (double(i) + 0.7 * unit(rng)) / double(m);  // clockwise
                 const double rad = 10 + 35 * unit(rng);
                 ring.push_back(r.points.size());
-                r.points.push_back({std::round(100.0 * cx + rad * std::cos(a)), std::round(100.0 * cy + rad * std::sin(a))});
+                r.points.push_back(
+                    {std::round(100.0 * cx + rad * std::cos(a)), std::round(100.0 * cy + rad * std::sin(a))});
             }
             r.loops.push_back(ring);
         }
@@ -191,7 +197,8 @@ TEST(triangulate_polygon, random_polygons_with_holes_are_covered_exactly_without
 /// loop edge is used once, every other edge twice in opposite directions, every triangle is
 /// counter-clockwise, and the areas add up exactly. A disc whose triangles all wind positively
 /// and whose boundary is the simple loop covers each point once, so nothing overlaps.
-void expect_exact_disc(const std::vector<point2>& p, const std::vector<std::size_t>& loop, const std::vector<std::array<std::size_t, 3>>& tris) {
+void expect_exact_disc(const std::vector<point2>& p, const std::vector<std::size_t>& loop,
+                       const std::vector<std::array<std::size_t, 3>>& tris) {
     ASSERT_EQ(tris.size(), loop.size() - 2);
     std::map<std::pair<std::size_t, std::size_t>, int> uses;
     long long sum = 0;
@@ -219,7 +226,8 @@ int incircle_sign(const point2& a, const point2& b, const point2& c, const point
     using i128 = __int128;
     const i128 adx = i128(a[0] - d[0]), ady = i128(a[1] - d[1]), bdx = i128(b[0] - d[0]), bdy = i128(b[1] - d[1]),
                cdx = i128(c[0] - d[0]), cdy = i128(c[1] - d[1]);
-    const i128 det = (adx * adx + ady * ady) * (bdx * cdy - cdx * bdy) + (bdx * bdx + bdy * bdy) * (cdx * ady - adx * cdy) +
+    const i128 det = (adx * adx + ady * ady) * (bdx * cdy - cdx * bdy) +
+                     (bdx * bdx + bdy * bdy) * (cdx * ady - adx * cdy) +
                      (cdx * cdx + cdy * cdy) * (adx * bdy - bdx * ady);
     return (det > 0) - (det < 0);
 }
@@ -252,7 +260,8 @@ TEST(triangulate_polygon, the_delaunay_option_gives_locally_delaunay_triangles_w
         ASSERT_TRUE(plain && r) << "round " << round;
         ASSERT_EQ(r->size(), plain->size()) << "round " << round;
         long long sum = 0;
-        std::map<std::pair<std::size_t, std::size_t>, std::pair<std::size_t, int>> side;  // -> triangle, corner opposite
+        std::map<std::pair<std::size_t, std::size_t>, std::pair<std::size_t, int>>
+            side;  // -> triangle, corner opposite
         for (std::size_t i = 0; i < r->size(); ++i) {
             const auto& t = (*r)[i];
             const long long a = cross(poly.points[t[0]], poly.points[t[1]], poly.points[t[2]]);
@@ -271,7 +280,8 @@ TEST(triangulate_polygon, the_delaunay_option_gives_locally_delaunay_triangles_w
             const auto& u = (*r)[it->second.first];
             const auto& P = poly.points;
             const auto a = e.first, b = e.second, c = t[std::size_t(tk.second)], d = u[std::size_t(it->second.second)];
-            if (cross(P[a], P[b], P[c]) <= 0 || cross(P[b], P[a], P[d]) <= 0 || cross(P[d], P[c], P[a]) <= 0 || cross(P[c], P[d], P[b]) <= 0)
+            if (cross(P[a], P[b], P[c]) <= 0 || cross(P[b], P[a], P[d]) <= 0 || cross(P[d], P[c], P[a]) <= 0 ||
+                cross(P[c], P[d], P[b]) <= 0)
                 continue;
             ASSERT_LE(incircle_sign(P[a], P[b], P[c], P[d]), 0) << "round " << round << ": side " << a << "-" << b;
         }
@@ -302,7 +312,8 @@ TEST(triangulate_polygon, random_loops_on_a_small_lattice_are_refused_exactly_wh
             expect_exact_disc(lattice, loop, *r);
             ++accepted;
         } else {
-            ASSERT_FALSE(r) << "round " << round << ": a loop that is not simple, or is clockwise or flat, was triangulated";
+            ASSERT_FALSE(r) << "round " << round
+                            << ": a loop that is not simple, or is clockwise or flat, was triangulated";
             EXPECT_EQ(r.error().code, hmira::errc::topology) << r.error().message;
             ++refused;
         }
@@ -366,24 +377,26 @@ TEST(triangulate_polygon, a_nearly_degenerate_sliver_is_triangulated_exactly) {
     ASSERT_TRUE(r) << r.error().message;
     EXPECT_EQ(r->size(), 4u);
     for (const auto& t : *r)
-        EXPECT_GE(hmira::predicates::orient2d(p[t[0]][0], p[t[0]][1], p[t[1]][0], p[t[1]][1], p[t[2]][0], p[t[2]][1]), 0);
+        EXPECT_GE(hmira::predicates::orient2d(p[t[0]][0], p[t[0]][1], p[t[1]][0], p[t[1]][1], p[t[2]][0], p[t[2]][1]),
+                  0);
 }
 
 TEST(triangulate_polygon, non_simple_input_is_refused_naming_the_loop) {
-    const std::vector<point2> p{{0, 0}, {4, 0}, {4, 4}, {0, 4}, {1, 1}, {1, 2}, {2, 2}, {10, 10}, {11, 10}, {10, 11}, {2, 1}};
+    const std::vector<point2> p{{0, 0}, {4, 0},   {4, 4},   {0, 4},   {1, 1}, {1, 2},
+                                {2, 2}, {10, 10}, {11, 10}, {10, 11}, {2, 1}};
     auto refused = [&](const loops_t& loops, const char* words) {
         auto r = hmira::triangulate_polygon(p, loops);
         ASSERT_FALSE(r) << words;
         EXPECT_NE(r.error().message.find(words), std::string::npos) << r.error().message;
     };
-    refused({{0, 2, 1, 3}}, "not simple");                     // a bow tie
-    refused({{0, 3, 2, 1}}, "not counter-clockwise");          // wound the wrong way
+    refused({{0, 2, 1, 3}}, "not simple");             // a bow tie
+    refused({{0, 3, 2, 1}}, "not counter-clockwise");  // wound the wrong way
     refused({{0, 1, 2, 3}, {4, 6, 5}}, "loop 1 (a hole) is not clockwise");
     refused({{0, 1, 2, 3}, {7, 9, 8}}, "hole loop 1 is not inside");
     refused({{0, 1, 2, 3}, {4, 5, 6, 10}, {4, 6, 5}}, "not simple");  // two holes sharing corners
     refused({{0, 1}}, "fewer than 3");
     refused({{0, 1, 2, 99}}, "names point 99");
-    refused({{0, 1, 2, 0, 3}}, "not simple");                  // a corner visited twice
+    refused({{0, 1, 2, 0, 3}}, "not simple");  // a corner visited twice
     const std::vector<point2> bad{{0, 0}, {1, 0}, {std::numeric_limits<double>::quiet_NaN(), 1}};
     auto r = hmira::triangulate_polygon(bad, loops_t{{0, 1, 2}});
     ASSERT_FALSE(r);

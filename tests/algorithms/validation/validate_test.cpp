@@ -49,7 +49,8 @@ soup_mesh tetra() {
 }
 
 bool has(const std::vector<mesh_problem>& ps, problem_kind k, std::size_t element) {
-    return std::any_of(ps.begin(), ps.end(), [&](const mesh_problem& p) { return p.kind == k && p.element == element; });
+    return std::any_of(ps.begin(), ps.end(),
+                       [&](const mesh_problem& p) { return p.kind == k && p.element == element; });
 }
 
 TEST(validate, a_closed_tetrahedron_has_no_problems) {
@@ -86,7 +87,8 @@ TEST(validate, reports_inconsistent_orientation) {
     auto m = tetra();
     std::reverse(m.faces[3].begin(), m.faces[3].end());
     const auto ps = validate(m);
-    EXPECT_TRUE(std::any_of(ps.begin(), ps.end(), [](const mesh_problem& p) { return p.kind == problem_kind::inconsistent_orientation; }));
+    EXPECT_TRUE(std::any_of(ps.begin(), ps.end(),
+                            [](const mesh_problem& p) { return p.kind == problem_kind::inconsistent_orientation; }));
 }
 
 TEST(validate, reports_two_solids_touching_at_one_vertex) {
@@ -119,13 +121,16 @@ TEST(validate, reports_zero_area_faces_when_checking_geometry) {
 }
 
 TEST(validate, reports_non_finite_positions_naming_the_vertex_even_without_the_geometry_check) {
-    for (double bad : {std::nan(""), std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()}) {
+    for (double bad :
+         {std::nan(""), std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()}) {
         auto m = tetra();
         m.points[2].y = bad;
         for (bool geometry : {true, false}) {
             const auto ps = validate(m, {.check_geometry = geometry});
             EXPECT_TRUE(has(ps, problem_kind::non_finite_position, 2)) << hmira_test::describe(ps);
-            EXPECT_EQ(std::count_if(ps.begin(), ps.end(), [](const mesh_problem& p) { return p.kind == problem_kind::non_finite_position; }), 1);
+            EXPECT_EQ(std::count_if(ps.begin(), ps.end(),
+                                    [](const mesh_problem& p) { return p.kind == problem_kind::non_finite_position; }),
+                      1);
         }
     }
     EXPECT_STREQ(to_string(problem_kind::non_finite_position), "non-finite position");
@@ -147,13 +152,15 @@ TEST(validate, finds_broken_halfedge_links) {
     m.set_next(h, m.next(m.next(h)));
     const auto ps = validate(m);
     EXPECT_FALSE(ps.empty());
-    EXPECT_TRUE(std::any_of(ps.begin(), ps.end(), [](const mesh_problem& p) { return p.kind == problem_kind::broken_link; }))
-        << hmira_test::describe(ps);
+    EXPECT_TRUE(std::any_of(ps.begin(), ps.end(), [](const mesh_problem& p) {
+        return p.kind == problem_kind::broken_link;
+    })) << hmira_test::describe(ps);
 }
 
 TEST(validate, finds_a_vertex_storing_an_interior_halfedge_on_the_boundary) {
     halfedge_mesh m;
-    const auto a = m.add_vertex({0, 0, 0}), b = m.add_vertex({1, 0, 0}), c = m.add_vertex({0, 1, 0}), d = m.add_vertex({1, 1, 0});
+    const auto a = m.add_vertex({0, 0, 0}), b = m.add_vertex({1, 0, 0}), c = m.add_vertex({0, 1, 0}),
+               d = m.add_vertex({1, 1, 0});
     ASSERT_TRUE(m.add_face({a, b, c}));
     ASSERT_TRUE(m.add_face({b, d, c}));
     ASSERT_TRUE(hmira_test::is_valid(m));
@@ -171,7 +178,8 @@ TEST(validate, finds_a_wire_edge_except_in_relaxed_mode) {
     m.set_vertex_halfedge(a, h);
     m.set_vertex_halfedge(b, halfedge_mesh::opposite(h));
     const auto strict = validate(m);
-    EXPECT_TRUE(std::any_of(strict.begin(), strict.end(), [](const mesh_problem& p) { return p.kind == problem_kind::wire_edge; }));
+    EXPECT_TRUE(std::any_of(strict.begin(), strict.end(),
+                            [](const mesh_problem& p) { return p.kind == problem_kind::wire_edge; }));
     EXPECT_TRUE(validate(m, {.relaxed = true}).empty()) << hmira_test::describe(validate(m, {.relaxed = true}));
 }
 

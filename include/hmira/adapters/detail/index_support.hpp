@@ -18,8 +18,8 @@ namespace hmira {
 /// What every adapter of this folder needs from a mesh: live faces with their ordered
 /// vertices (thesis 7.2.1) and dense vertex and face indices for its scratch arrays.
 template <class M, class T = default_traits<M>>
-concept adapter_source_mesh = face_vertex_range_mesh<M, T> && vertex_list_mesh<M, T> && vertex_index_mesh<M, T> &&
-                              face_index_mesh<M, T>;
+concept adapter_source_mesh =
+    face_vertex_range_mesh<M, T> && vertex_list_mesh<M, T> && vertex_index_mesh<M, T> && face_index_mesh<M, T>;
 
 /// An indexed adapter also needs to know when the mesh changed (change_counted_mesh).
 template <class M, class T = default_traits<M>>
@@ -51,7 +51,8 @@ template <class M, class T>
 class index_stamp {
 public:
     index_stamp() = default;
-    index_stamp(const M& m, const char* who) : mesh_(&m), count_(static_cast<std::uint64_t>(T::change_count(m))), who_(who) {}
+    index_stamp(const M& m, const char* who)
+        : mesh_(&m), count_(static_cast<std::uint64_t>(T::change_count(m))), who_(who) {}
 
     void check(const M& m) const {
         if (&m != mesh_) [[unlikely]]
@@ -64,7 +65,9 @@ public:
                                        std::to_string(now) + ", built at " + std::to_string(count_) +
                                        "); rebuild the adapter (adapted_mesh::refresh())"));
     }
-    bool is_current(const M& m) const { return &m == mesh_ && static_cast<std::uint64_t>(T::change_count(m)) == count_; }
+    bool is_current(const M& m) const {
+        return &m == mesh_ && static_cast<std::uint64_t>(T::change_count(m)) == count_;
+    }
 
 private:
     const M* mesh_ = nullptr;
@@ -82,7 +85,9 @@ struct csr {
         if (r + 1 >= offsets.size()) return {};
         return {values.data() + offsets[r], values.data() + offsets[r + 1]};
     }
-    std::size_t memory_bytes() const { return offsets.capacity() * sizeof(std::uint32_t) + values.capacity() * sizeof(Value); }
+    std::size_t memory_bytes() const {
+        return offsets.capacity() * sizeof(std::uint32_t) + values.capacity() * sizeof(Value);
+    }
 };
 
 /// Builds a CSR with `rows` rows from (row, value) pairs produced by emit(push) twice: once

@@ -98,15 +98,15 @@ concept voxelize_mesh = face_vertex_range_mesh<M, T> && positioned_mesh<M, T> &&
 /// box) for the surface, plus O(N/64 + sum over triangles of the rays their shadow covers and
 /// the rows it spans) for the fill; the winding-number fill costs O(F) per run of empty voxels.
 template <class M, class T = default_traits<M>>
-    requires voxelize_mesh<M, T> result<voxelization> voxelize(const M& mesh, const grid_geometry& grid,
-                                                               const voxelize_options& options = {});
+    requires voxelize_mesh<M, T>
+result<voxelization> voxelize(const M& mesh, const grid_geometry& grid, const voxelize_options& options = {});
 
 /// Same voxels, written into any writable voxel grid of the wanted geometry (1 for a set
 /// voxel, 0 elsewhere). \pre none. \post on error `grid` is untouched. Errors: those of
 /// voxelize(). Complexity: voxelize()'s plus O(N) writes.
 template <class M, class T = default_traits<M>, writable_voxel_grid G>
-    requires voxelize_mesh<M, T> result<voxelization> voxelize_into(const M& mesh, G& grid,
-                                                                    const voxelize_options& options = {});
+    requires voxelize_mesh<M, T>
+result<voxelization> voxelize_into(const M& mesh, G& grid, const voxelize_options& options = {});
 
 /// A grid of cubic voxels around the mesh's bounding box: `resolution` voxels along its longest
 /// side plus `padding` voxels on every side; sample (i, j, k) is voxel (i, j, k)'s centre.
@@ -117,8 +117,8 @@ template <class M, class T = default_traits<M>, writable_voxel_grid G>
 /// Errors: invalid_argument for resolution 0 or a mesh without vertices or with non-finite
 /// positions; unsupported for a mesh spanning more than the largest double. O(V).
 template <class M, class T = default_traits<M>>
-    requires positioned_mesh<M, T> result<grid_geometry> voxel_grid_around(const M& mesh, std::size_t resolution,
-                                                                           std::size_t padding = 2);
+    requires positioned_mesh<M, T>
+result<grid_geometry> voxel_grid_around(const M& mesh, std::size_t resolution, std::size_t padding = 2);
 
 /// About how many bytes voxelize() holds at its peak on `grid` for a mesh of `triangles`
 /// triangles (polygons fanned): the grid's bits (whole 64-bit words per row, every voxel of

@@ -29,8 +29,9 @@ inline result<void> check_block(const grid_geometry& grid, const voxel_block& bl
     for (int a = 0; a < 3; ++a)
         if (block.dims[a] == 0 || block.lo[a] >= grid.dims[a] || block.dims[a] > grid.dims[a] - block.lo[a])
             return fail(errc::invalid_argument, "voxelize_block: block [" + std::to_string(block.lo[a]) + ", " +
-                                                    std::to_string(block.lo[a] + block.dims[a]) + ") along " + std::string(1, axis[a]) +
-                                                    " is empty or outside the grid's " + std::to_string(grid.dims[a]) + " voxels");
+                                                    std::to_string(block.lo[a] + block.dims[a]) + ") along " +
+                                                    std::string(1, axis[a]) + " is empty or outside the grid's " +
+                                                    std::to_string(grid.dims[a]) + " voxels");
     return {};
 }
 
@@ -44,8 +45,8 @@ inline grid_geometry block_geometry(const grid_geometry& grid, const voxel_block
 
 /// Voxelizes one block from gathered triangles and its bins; null bins mean every triangle.
 inline result<voxelization> fill_block(const gathered& g, const grid_geometry& grid, const voxel_block& block,
-                                       const std::vector<std::uint32_t>* surface, const std::vector<std::uint32_t>* crossing,
-                                       const voxelize_options& options) {
+                                       const std::vector<std::uint32_t>* surface,
+                                       const std::vector<std::uint32_t>* crossing, const voxelize_options& options) {
     voxelization out{bit_grid::unwritten(block_geometry(grid, block)), false, {}, g.tris.size(), g.degenerate};
     auto job = plan(options, g.closed, out.note, out.filled);
     if (!job) return job.error();
@@ -74,7 +75,8 @@ inline result<voxelization> fill_block(const gathered& g, const grid_geometry& g
 /// grid.
 template <class M, class T = default_traits<M>>
     requires voxelize_mesh<M, T>
-result<voxelization> voxelize_block(const M& mesh, const grid_geometry& grid, const voxel_block& block, const voxelize_options& options = {}) {
+result<voxelization> voxelize_block(const M& mesh, const grid_geometry& grid, const voxel_block& block,
+                                    const voxelize_options& options = {}) {
     if (auto ok = check_grid_geometry(grid, "voxelize"); !ok) return ok.error();
     if (auto ok = detail::vox::check_block(grid, block); !ok) return ok.error();
     auto g = detail::vox::gather<M, T>(mesh, grid, options.allow_degenerate);
@@ -83,7 +85,8 @@ result<voxelization> voxelize_block(const M& mesh, const grid_geometry& grid, co
     // block, and triangles whose shadow meets its rows and that begin before its end.
     std::vector<std::uint32_t> surface, crossing;
     const double bl[3] = {double(block.lo[0]), double(block.lo[1]), double(block.lo[2])};
-    const double bh[3] = {bl[0] + double(block.dims[0]) - 1, bl[1] + double(block.dims[1]) - 1, bl[2] + double(block.dims[2]) - 1};
+    const double bh[3] = {bl[0] + double(block.dims[0]) - 1, bl[1] + double(block.dims[1]) - 1,
+                          bl[2] + double(block.dims[2]) - 1};
     for (std::size_t t = 0; t < g->tris.size(); ++t) {
         const auto& tr = g->tris[t];
         double lo[3], hi[3];
@@ -113,8 +116,8 @@ result<voxelization> voxelize_block(const M& mesh, const grid_geometry& grid, co
 /// block size. Nothing is handed over after an error.
 template <class M, class T = default_traits<M>, class OnBlock>
     requires voxelize_mesh<M, T>
-result<void> voxelize_blocks(const M& mesh, const grid_geometry& grid, const grid_dims& block_size, const voxelize_options& options,
-                             OnBlock&& on_block) {
+result<void> voxelize_blocks(const M& mesh, const grid_geometry& grid, const grid_dims& block_size,
+                             const voxelize_options& options, OnBlock&& on_block) {
     if (auto ok = check_grid_geometry(grid, "voxelize"); !ok) return ok.error();
     if (block_size[0] == 0 || block_size[1] == 0 || block_size[2] == 0)
         return fail(errc::invalid_argument, "voxelize_blocks: the block size must be at least 1 along every axis");
@@ -146,7 +149,8 @@ result<void> voxelize_blocks(const M& mesh, const grid_geometry& grid, const gri
         for (long long bz = b0[2]; bz <= b1[2]; ++bz)
             for (long long by = b0[1]; by <= b1[1]; ++by)
                 for (long long bx = b0[0]; bx <= b1[0]; ++bx)
-                    surface[(std::size_t(bz) * nb[1] + std::size_t(by)) * nb[0] + std::size_t(bx)].push_back(static_cast<std::uint32_t>(t));
+                    surface[(std::size_t(bz) * nb[1] + std::size_t(by)) * nb[0] + std::size_t(bx)].push_back(
+                        static_cast<std::uint32_t>(t));
     }
     for (std::size_t bz = 0; bz < nb[2]; ++bz)
         for (std::size_t by = 0; by < nb[1]; ++by)
@@ -157,7 +161,8 @@ result<void> voxelize_blocks(const M& mesh, const grid_geometry& grid, const gri
                     block.lo[a] = b[a] * block_size[a];
                     block.dims[a] = std::min(block_size[a], grid.dims[a] - block.lo[a]);
                 }
-                auto v = detail::vox::fill_block(*g, grid, block, &surface[(bz * nb[1] + by) * nb[0] + bx], &crossing[bz * nb[1] + by], options);
+                auto v = detail::vox::fill_block(*g, grid, block, &surface[(bz * nb[1] + by) * nb[0] + bx],
+                                                 &crossing[bz * nb[1] + by], options);
                 if (!v) return v.error();
                 if (!on_block(static_cast<const voxel_block&>(block), std::move(*v))) return {};
             }

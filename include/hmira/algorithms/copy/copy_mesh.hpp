@@ -116,14 +116,18 @@ struct source_soup {
 
 template <class M, class T>
 std::size_t face_number(const M& m, typename T::face_handle f, std::size_t ordinal) {
-    if constexpr (face_index_mesh<M, T>) return static_cast<std::size_t>(T::face_index(m, f));
-    else return (void)m, (void)f, ordinal;
+    if constexpr (face_index_mesh<M, T>)
+        return static_cast<std::size_t>(T::face_index(m, f));
+    else
+        return (void)m, (void)f, ordinal;
 }
 
 template <class M, class T>
 std::string face_name(std::size_t number) {
-    if constexpr (face_index_mesh<M, T>) return "source face " + std::to_string(number);
-    else return "source face #" + std::to_string(number) + " (in faces() order)";
+    if constexpr (face_index_mesh<M, T>)
+        return "source face " + std::to_string(number);
+    else
+        return "source face #" + std::to_string(number) + " (in faces() order)";
 }
 
 /// Reads the source into a soup, refusing what no destination could hold. O(V_bound + F + C).

@@ -54,13 +54,13 @@ enum class decimate_stop {
 
 /// What decimate did.
 struct decimate_result {
-    std::size_t faces = 0;      ///< faces after
-    std::size_t vertices = 0;   ///< vertices after
-    std::size_t collapses = 0;  ///< edges collapsed
-    bool triangulated = false;  ///< polygon input was triangulated first
+    std::size_t faces = 0;                                   ///< faces after
+    std::size_t vertices = 0;                                ///< vertices after
+    std::size_t collapses = 0;                               ///< edges collapsed
+    bool triangulated = false;                               ///< polygon input was triangulated first
     decimate_stop stopped_by = decimate_stop::target_faces;  ///< which condition ended it
-    double error = 0;           ///< the largest error (a distance, see max_error) of a collapse made
-    std::string note;           ///< in words: the triangulation, and why a face target was missed
+    double error = 0;  ///< the largest error (a distance, see max_error) of a collapse made
+    std::string note;  ///< in words: the triangulation, and why a face target was missed
 };
 
 /// A mesh decimate can run on: the triangle operators, dense vertex and edge indices, and
@@ -89,7 +89,8 @@ concept decimatable_mesh = triangle_operable_mesh<M, T> && vertex_index_mesh<M, 
 /// errc::cancelled for a cancellation ("decimate: cancelled"); the errors of triangulate_faces.
 /// Complexity O(V + E + F) to set up plus O(E log E) to queue every edge; each collapse then costs O(d^2)
 /// for the checks and the refused neighbours (d the valence around it) and O(d log E) for the queue
-/// updates. Plus O(V + E + F) for the copy when a progress callback is given (core/rollback.hpp). Memory: 80 bytes of quadric
+/// updates. Plus O(V + E + F) for the copy when a progress callback is given (core/rollback.hpp). Memory: 80 bytes of
+/// quadric
 /// and 1 byte of flags per vertex, about 24 bytes per edge. Cache behaviour: detail/decimate_impl.hpp.
 template <class M, class T = default_traits<M>>
     requires decimatable_mesh<M, T>

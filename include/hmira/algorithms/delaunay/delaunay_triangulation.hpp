@@ -38,11 +38,11 @@ enum class delaunay_status {
 /// is the ray from `from` along `direction` (pointing out of the hull) and to == no_vertex.
 struct voronoi_edge {
     static constexpr std::uint32_t no_vertex = 0xFFFFFFFFu;  ///< `to` of a ray
-    std::uint32_t site0 = 0;        ///< one end vertex of the Delaunay edge
-    std::uint32_t site1 = 0;        ///< the other end vertex of the Delaunay edge
-    std::uint32_t from = 0;         ///< the Voronoi vertex the edge starts at (a triangle index)
-    std::uint32_t to = no_vertex;   ///< the Voronoi vertex it ends at, or no_vertex for a ray
-    vec3<double> direction{};                                ///< a ray's direction (hull edges only)
+    std::uint32_t site0 = 0;                                 ///< one end vertex of the Delaunay edge
+    std::uint32_t site1 = 0;                                 ///< the other end vertex of the Delaunay edge
+    std::uint32_t from = 0;        ///< the Voronoi vertex the edge starts at (a triangle index)
+    std::uint32_t to = no_vertex;  ///< the Voronoi vertex it ends at, or no_vertex for a ray
+    vec3<double> direction{};      ///< a ray's direction (hull edges only)
 };
 
 /// The Voronoi diagram: vertices[i] is the circumcentre of triangle i (z = 0).
@@ -70,16 +70,17 @@ struct delaunay_triangles {
 /// A point delaunay_triangulation accepts: a `vec3`-like type with members x, y, z, or a
 /// `std::array` of 2 or 3 scalars (z = 0 for two components).
 template <class P>
-concept delaunay_point = requires(const P& p) {
-    { p.x } -> std::convertible_to<double>;
-    { p.y } -> std::convertible_to<double>;
-    { p.z } -> std::convertible_to<double>;
-}
-|| (
-       requires { std::tuple_size<P>::value; } && (std::tuple_size<P>::value == 2 || std::tuple_size<P>::value == 3) &&
-       requires(const P& p) {
-           { p[0] } -> std::convertible_to<double>;
-       });
+concept delaunay_point =
+    requires(const P& p) {
+        { p.x } -> std::convertible_to<double>;
+        { p.y } -> std::convertible_to<double>;
+        { p.z } -> std::convertible_to<double>;
+    } ||
+    (
+        requires { std::tuple_size<P>::value; } && (std::tuple_size<P>::value == 2 || std::tuple_size<P>::value == 3) &&
+        requires(const P& p) {
+            { p[0] } -> std::convertible_to<double>;
+        });
 
 /// A sized random-access range of delaunay_point.
 template <class R>
@@ -130,8 +131,9 @@ struct delaunay_mesh_result {
 ///   returned; the vertices and faces added before it stay.
 /// Complexity: O(n log n) expected plus n add_vertex and ~2n add_face calls on the mesh.
 template <class M, class T = default_traits<M>, delaunay_point_range R>
-    requires mesh_builder<M, T> result<delaunay_mesh_result<M, T>> delaunay_triangulation(
-        M& mesh, const R& points, const delaunay_options& options = {});
+    requires mesh_builder<M, T>
+result<delaunay_mesh_result<M, T>> delaunay_triangulation(M& mesh, const R& points,
+                                                          const delaunay_options& options = {});
 
 }  // namespace hmira
 

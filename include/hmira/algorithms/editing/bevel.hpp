@@ -48,9 +48,9 @@ struct bevel_result {
     /// cube corner; with segments > 1 every face of its grid fill), and vertex-only mode's faces.
     std::vector<typename T::face_handle> vertex_faces;
     std::vector<typename T::vertex_handle> vertices;  ///< every new vertex
-    double width = 0;            ///< the smallest width used by any new vertex (after clamping)
-    double requested_width = 0;  ///< bevel_options::width
-    std::size_t limited_edges = 0;  ///< bevelled edges with at least one new vertex limited by the clamp
+    double width = 0;                                 ///< the smallest width used by any new vertex (after clamping)
+    double requested_width = 0;                       ///< bevel_options::width
+    std::size_t limited_edges = 0;   ///< bevelled edges with at least one new vertex limited by the clamp
     std::size_t bevelled_edges = 0;  ///< distinct edges bevelled (one strip each)
     /// Distinct selected edges not bevelled because a face would have had zero area (as
     /// validate() tests it): with them the strip, a shrunk face next to it or a corner patch

@@ -64,8 +64,10 @@ long long index_of(const M& m, typename T::halfedge_handle h) {
 }
 template <class M, class T>
 long long index_of(const M& m, typename T::vertex_handle v) {
-    if constexpr (vertex_index_mesh<M, T>) return static_cast<long long>(T::vertex_index(m, v));
-    else return -1;
+    if constexpr (vertex_index_mesh<M, T>)
+        return static_cast<long long>(T::vertex_index(m, v));
+    else
+        return -1;
 }
 template <class M, class T>
 long long index_of(const M& m, typename T::face_handle f) {
@@ -83,8 +85,10 @@ std::string name(const char* kind, const M& m, Handle h) {
     // (GCC bug 105329) when inlined at -O3.
     std::string out(kind);
     out += ' ';
-    if (i < 0) out += "(null)";
-    else out += std::to_string(i);
+    if (i < 0)
+        out += "(null)";
+    else
+        out += std::to_string(i);
     return out;
 }
 
@@ -93,8 +97,13 @@ std::string name(const char* kind, const M& m, Handle h) {
 /// without the query cannot tell; passing it a deleted element stays undefined there.
 template <class M, class T, class Handle>
 bool known_removed(const M& m, Handle x) {
-    if constexpr (removal_queryable_mesh<M, T, Handle>) return T::is_removed(m, x);
-    else { (void)m; (void)x; return false; }
+    if constexpr (removal_queryable_mesh<M, T, Handle>)
+        return T::is_removed(m, x);
+    else {
+        (void)m;
+        (void)x;
+        return false;
+    }
 }
 
 /// A handle the operator can work with: not null, where the model has indices in range, and
@@ -128,8 +137,13 @@ typename T::vertex_handle source(const M& m, typename T::halfedge_handle h) {
 /// Whether f has any inner ring (always false on a model without rings).
 template <class M, class T>
 bool has_rings(const M& m, typename T::face_handle f) {
-    if constexpr (inner_ring_mesh<M, T>) return !std::ranges::empty(T::inner_rings(m, f));
-    else { (void)m; (void)f; return false; }
+    if constexpr (inner_ring_mesh<M, T>)
+        return !std::ranges::empty(T::inner_rings(m, f));
+    else {
+        (void)m;
+        (void)f;
+        return false;
+    }
 }
 
 /// If `old_h` is the halfedge registered for one of f's inner rings, registers `new_h` (on
@@ -141,12 +155,18 @@ void replace_ring_halfedge(M& m, typename T::face_handle f, typename T::halfedge
         if (f == T::null_face()) return;
         bool hit = false;
         for (auto r : T::inner_rings(m, f))
-            if (typename T::halfedge_handle(r) == old_h) { hit = true; break; }
+            if (typename T::halfedge_handle(r) == old_h) {
+                hit = true;
+                break;
+            }
         if (!hit) return;
         T::remove_inner_ring(m, f, old_h);
         T::add_inner_ring(m, f, new_h);
     } else {
-        (void)m; (void)f; (void)old_h; (void)new_h;
+        (void)m;
+        (void)f;
+        (void)old_h;
+        (void)new_h;
     }
 }
 

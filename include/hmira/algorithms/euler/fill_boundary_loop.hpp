@@ -33,7 +33,8 @@ template <class M, class T = default_traits<M>>
 result<fill_boundary_loop_result<M, T>> fill_boundary_loop(M& mesh, typename T::halfedge_handle halfedge) {
     namespace de = detail::euler;
     if (!de::usable<M, T>(mesh, halfedge))
-        return fail(errc::invalid_handle, "fill_boundary_loop: " + de::name<M, T>("halfedge", mesh, halfedge) + " does not exist",
+        return fail(errc::invalid_handle,
+                    "fill_boundary_loop: " + de::name<M, T>("halfedge", mesh, halfedge) + " does not exist",
                     de::index_of<M, T>(mesh, halfedge));
     if (T::face(mesh, halfedge) != T::null_face())
         return fail(errc::topology,
@@ -68,8 +69,10 @@ result<open_face_result<M, T>> open_face(M& mesh, typename T::face_handle face) 
         return fail(errc::invalid_handle, "open_face: " + de::name<M, T>("face", mesh, face) + " does not exist",
                     de::index_of<M, T>(mesh, face));
     if (de::has_rings<M, T>(mesh, face))
-        return fail(errc::topology, "open_face: " + de::name<M, T>("face", mesh, face) + " has inner rings, which a boundary loop cannot hold",
-                    de::index_of<M, T>(mesh, face));
+        return fail(
+            errc::topology,
+            "open_face: " + de::name<M, T>("face", mesh, face) + " has inner rings, which a boundary loop cannot hold",
+            de::index_of<M, T>(mesh, face));
     const auto start = T::face_halfedge(mesh, face);
     auto x = start;
     do {

@@ -45,26 +45,31 @@ struct kill_edge_face_result {
 /// O(rings of the face) where the model has rings.
 template <class M, class T = default_traits<M>>
     requires euler_mutable_mesh<M, T>
-result<make_edge_face_result<M, T>> make_edge_face(M& mesh, typename T::halfedge_handle h0, typename T::halfedge_handle h1) {
+result<make_edge_face_result<M, T>> make_edge_face(M& mesh, typename T::halfedge_handle h0,
+                                                   typename T::halfedge_handle h1) {
     namespace de = detail::euler;
     if (!de::usable<M, T>(mesh, h0) || !de::usable<M, T>(mesh, h1)) [[unlikely]]
         return de::refuse([&] {
             const auto bad = de::usable<M, T>(mesh, h0) ? h1 : h0;
-            return fail(errc::invalid_handle, "make_edge_face: corner " + de::name<M, T>("halfedge", mesh, bad) + " does not exist",
+            return fail(errc::invalid_handle,
+                        "make_edge_face: corner " + de::name<M, T>("halfedge", mesh, bad) + " does not exist",
                         de::index_of<M, T>(mesh, bad));
         });
     const auto f = T::face(mesh, h0);
     if (T::face(mesh, h1) != f) [[unlikely]]
         return de::refuse([&] {
             return fail(errc::topology,
-                        "make_edge_face: the corners lie on different faces (" + de::name<M, T>("face", mesh, f) + " and " +
-                            de::name<M, T>("face", mesh, T::face(mesh, h1)) + "); a new edge and face need two corners of one face",
+                        "make_edge_face: the corners lie on different faces (" + de::name<M, T>("face", mesh, f) +
+                            " and " + de::name<M, T>("face", mesh, T::face(mesh, h1)) +
+                            "); a new edge and face need two corners of one face",
                         de::index_of<M, T>(mesh, h1));
         });
     const auto s = T::target(mesh, h0), t = T::target(mesh, h1);
     if (s == t) [[unlikely]]
         return de::refuse([&] {
-            return fail(errc::topology, "make_edge_face: both corners are at " + de::name<M, T>("vertex", mesh, s) + "; the new edge would be a loop",
+            return fail(errc::topology,
+                        "make_edge_face: both corners are at " + de::name<M, T>("vertex", mesh, s) +
+                            "; the new edge would be a loop",
                         de::index_of<M, T>(mesh, s));
         });
     const auto n0 = T::next(mesh, h0), n1 = T::next(mesh, h1);
@@ -78,7 +83,8 @@ result<make_edge_face_result<M, T>> make_edge_face(M& mesh, typename T::halfedge
             if (x == h0) [[unlikely]]
                 return de::refuse([&] {
                     return fail(errc::topology,
-                                "make_edge_face: the corners lie on different loops of " + de::name<M, T>("face", mesh, f) +
+                                "make_edge_face: the corners lie on different loops of " +
+                                    de::name<M, T>("face", mesh, f) +
                                     " (an inner ring and another loop); joining two loops is make_edge_kill_ring",
                                 de::index_of<M, T>(mesh, f));
                 });
@@ -110,7 +116,10 @@ result<make_edge_face_result<M, T>> make_edge_face(M& mesh, typename T::halfedge
             if (de::has_rings<M, T>(mesh, f)) {
                 typename T::halfedge_handle ring = T::null_halfedge();
                 for (auto r : T::inner_rings(mesh, f))
-                    if (T::face(mesh, r) == g) { ring = r; break; }
+                    if (T::face(mesh, r) == g) {
+                        ring = r;
+                        break;
+                    }
                 if (ring != T::null_halfedge()) de::replace_ring_halfedge<M, T>(mesh, f, ring, a);
             }
         }
@@ -146,7 +155,8 @@ result<kill_edge_face_result<M, T>> kill_edge_face(M& mesh, typename T::halfedge
     const auto h = halfedge;
     if (!de::usable<M, T>(mesh, h)) [[unlikely]]
         return de::refuse([&] {
-            return fail(errc::invalid_handle, "kill_edge_face: " + de::name<M, T>("halfedge", mesh, h) + " does not exist",
+            return fail(errc::invalid_handle,
+                        "kill_edge_face: " + de::name<M, T>("halfedge", mesh, h) + " does not exist",
                         de::index_of<M, T>(mesh, h));
         });
     const auto o = T::opposite(mesh, h);
@@ -170,10 +180,11 @@ result<kill_edge_face_result<M, T>> kill_edge_face(M& mesh, typename T::halfedge
     // exactly inverted by make_edge_face.
     if (de::has_rings<M, T>(mesh, g)) [[unlikely]]
         return de::refuse([&] {
-            return fail(errc::topology,
-                        "kill_edge_face: " + de::name<M, T>("face", mesh, g) +
-                            " has inner rings; make them faces (make_face_kill_ring) or join them (make_edge_kill_ring) first",
-                        de::index_of<M, T>(mesh, g));
+            return fail(
+                errc::topology,
+                "kill_edge_face: " + de::name<M, T>("face", mesh, g) +
+                    " has inner rings; make them faces (make_face_kill_ring) or join them (make_edge_kill_ring) first",
+                de::index_of<M, T>(mesh, g));
         });
 
     const auto hp = T::prev(mesh, h), hn = T::next(mesh, h);
@@ -186,7 +197,8 @@ result<kill_edge_face_result<M, T>> kill_edge_face(M& mesh, typename T::halfedge
     de::replace_vertex_halfedge<M, T>(mesh, t, o, hn);
     if (f != T::null_face()) {
         if (T::face_halfedge(mesh, f) == h) T::set_face_halfedge(mesh, f, hp);
-        if (de::has_rings<M, T>(mesh, f)) de::replace_ring_halfedge<M, T>(mesh, f, h, hp);  // (tested inline: the call was not inlined)
+        if (de::has_rings<M, T>(mesh, f))
+            de::replace_ring_halfedge<M, T>(mesh, f, h, hp);  // (tested inline: the call was not inlined)
     } else {
         // The killed face's vertices are on the boundary now.
         for (auto x = on; x != hn; x = T::next(mesh, x)) {

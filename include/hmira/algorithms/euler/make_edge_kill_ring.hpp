@@ -36,29 +36,37 @@ struct kill_edge_make_ring_result {
 /// Complexity O(face degree + rings of the face).
 template <class M, class T = default_traits<M>>
     requires euler_ring_mutable_mesh<M, T>
-result<make_edge_kill_ring_result<M, T>> make_edge_kill_ring(M& mesh, typename T::halfedge_handle h0, typename T::halfedge_handle h1) {
+result<make_edge_kill_ring_result<M, T>> make_edge_kill_ring(M& mesh, typename T::halfedge_handle h0,
+                                                             typename T::halfedge_handle h1) {
     namespace de = detail::euler;
     if (!de::usable<M, T>(mesh, h0) || !de::usable<M, T>(mesh, h1))
-        return fail(errc::invalid_handle, "make_edge_kill_ring: corner " + de::name<M, T>("halfedge", mesh, de::usable<M, T>(mesh, h0) ? h1 : h0) + " does not exist",
+        return fail(errc::invalid_handle,
+                    "make_edge_kill_ring: corner " +
+                        de::name<M, T>("halfedge", mesh, de::usable<M, T>(mesh, h0) ? h1 : h0) + " does not exist",
                     de::index_of<M, T>(mesh, de::usable<M, T>(mesh, h0) ? h1 : h0));
     const auto f = T::face(mesh, h0);
     if (T::face(mesh, h1) != f)
-        return fail(errc::topology, "make_edge_kill_ring: the corners lie on different faces (" + de::name<M, T>("face", mesh, f) + " and " +
-                                        de::name<M, T>("face", mesh, T::face(mesh, h1)) + ")",
+        return fail(errc::topology,
+                    "make_edge_kill_ring: the corners lie on different faces (" + de::name<M, T>("face", mesh, f) +
+                        " and " + de::name<M, T>("face", mesh, T::face(mesh, h1)) + ")",
                     de::index_of<M, T>(mesh, h1));
     if (f == T::null_face())
-        return fail(errc::topology, "make_edge_kill_ring: the corners lie on boundary loops, which hold no rings", de::index_of<M, T>(mesh, h0));
+        return fail(errc::topology, "make_edge_kill_ring: the corners lie on boundary loops, which hold no rings",
+                    de::index_of<M, T>(mesh, h0));
     const auto s = T::target(mesh, h0), t = T::target(mesh, h1);
     if (s == t)
-        return fail(errc::topology, "make_edge_kill_ring: both corners are at " + de::name<M, T>("vertex", mesh, s) + "; the new edge would be a loop",
+        return fail(errc::topology,
+                    "make_edge_kill_ring: both corners are at " + de::name<M, T>("vertex", mesh, s) +
+                        "; the new edge would be a loop",
                     de::index_of<M, T>(mesh, s));
     const auto fh = T::face_halfedge(mesh, f);
     bool h0_outer = false, h1_outer = false;
     auto x = h0;
     do {
         if (x == h1)
-            return fail(errc::topology, "make_edge_kill_ring: the corners lie on one loop of " + de::name<M, T>("face", mesh, f) +
-                                            "; an edge there splits the face: use make_edge_face",
+            return fail(errc::topology,
+                        "make_edge_kill_ring: the corners lie on one loop of " + de::name<M, T>("face", mesh, f) +
+                            "; an edge there splits the face: use make_edge_face",
                         de::index_of<M, T>(mesh, f));
         h0_outer |= x == fh;
         x = T::next(mesh, x);
@@ -101,28 +109,34 @@ result<kill_edge_make_ring_result<M, T>> kill_edge_make_ring(M& mesh, typename T
     namespace de = detail::euler;
     const auto h = halfedge;
     if (!de::usable<M, T>(mesh, h))
-        return fail(errc::invalid_handle, "kill_edge_make_ring: " + de::name<M, T>("halfedge", mesh, h) + " does not exist",
+        return fail(errc::invalid_handle,
+                    "kill_edge_make_ring: " + de::name<M, T>("halfedge", mesh, h) + " does not exist",
                     de::index_of<M, T>(mesh, h));
     const auto o = T::opposite(mesh, h);
     const auto f = T::face(mesh, h);
     if (f == T::null_face())
-        return fail(errc::topology, "kill_edge_make_ring: " + de::name<M, T>("halfedge", mesh, h) + " is on a boundary loop, which cannot hold rings",
+        return fail(errc::topology,
+                    "kill_edge_make_ring: " + de::name<M, T>("halfedge", mesh, h) +
+                        " is on a boundary loop, which cannot hold rings",
                     de::index_of<M, T>(mesh, h));
     if (T::face(mesh, o) != f)
-        return fail(errc::topology, "kill_edge_make_ring: the edge separates two faces; removing it joins them: use kill_edge_face",
+        return fail(errc::topology,
+                    "kill_edge_make_ring: the edge separates two faces; removing it joins them: use kill_edge_face",
                     de::index_of<M, T>(mesh, h));
     const auto hn = T::next(mesh, h), on = T::next(mesh, o);
     if (hn == o || on == h)
         return fail(errc::topology,
-                    "kill_edge_make_ring: an end of the edge has degree 1, so one part would have no edge: use kill_edge_vertex",
+                    "kill_edge_make_ring: an end of the edge has degree 1, so one part would have no edge: use "
+                    "kill_edge_vertex",
                     de::index_of<M, T>(mesh, h));
     const auto fh = T::face_halfedge(mesh, f);
     bool fh_in_ring = fh == h || fh == o;
     auto x = hn;
     for (; x != o; x = T::next(mesh, x)) {
         if (x == h)
-            return fail(errc::topology, "kill_edge_make_ring: the two sides of the edge lie on different loops of " +
-                                            de::name<M, T>("face", mesh, f) + "; the edge is no bridge",
+            return fail(errc::topology,
+                        "kill_edge_make_ring: the two sides of the edge lie on different loops of " +
+                            de::name<M, T>("face", mesh, f) + "; the edge is no bridge",
                         de::index_of<M, T>(mesh, h));
         fh_in_ring |= x == fh;
     }

@@ -19,9 +19,10 @@ struct make_edge_vertex_result {
 /// make_edge_vertex(mesh, vertex, position) when `corner` is null) puts it back.
 template <class M, class T = default_traits<M>>
 struct kill_edge_vertex_result {
-    typename T::vertex_handle vertex;      ///< the surviving end of the killed edge
-    typename T::halfedge_handle corner;    ///< the halfedge into `vertex` the edge hung after; null if `vertex` is now isolated
-    vec3<typename T::scalar> position{};   ///< where the killed vertex was
+    typename T::vertex_handle vertex;  ///< the surviving end of the killed edge
+    typename T::halfedge_handle
+        corner;  ///< the halfedge into `vertex` the edge hung after; null if `vertex` is now isolated
+    vec3<typename T::scalar> position{};  ///< where the killed vertex was
 };
 
 /// makeEV (MEV): a new vertex at `position`, joined by a new edge to target(corner).
@@ -37,7 +38,8 @@ result<make_edge_vertex_result<M, T>> make_edge_vertex(M& mesh, typename T::half
                                                        const vec3<typename T::scalar>& position) {
     namespace de = detail::euler;
     if (!de::usable<M, T>(mesh, corner))
-        return fail(errc::invalid_handle, "make_edge_vertex: corner " + de::name<M, T>("halfedge", mesh, corner) + " does not exist",
+        return fail(errc::invalid_handle,
+                    "make_edge_vertex: corner " + de::name<M, T>("halfedge", mesh, corner) + " does not exist",
                     de::index_of<M, T>(mesh, corner));
     const auto v = T::target(mesh, corner);
     const auto f = T::face(mesh, corner);
@@ -64,7 +66,8 @@ result<make_edge_vertex_result<M, T>> make_edge_vertex(M& mesh, typename T::vert
                                                        const vec3<typename T::scalar>& position) {
     namespace de = detail::euler;
     if (!de::usable<M, T>(mesh, vertex))
-        return fail(errc::invalid_handle, "make_edge_vertex: " + de::name<M, T>("vertex", mesh, vertex) + " does not exist",
+        return fail(errc::invalid_handle,
+                    "make_edge_vertex: " + de::name<M, T>("vertex", mesh, vertex) + " does not exist",
                     de::index_of<M, T>(mesh, vertex));
     if (T::vertex_halfedge(mesh, vertex) != T::null_halfedge())
         return fail(errc::topology,
@@ -96,7 +99,8 @@ result<kill_edge_vertex_result<M, T>> kill_edge_vertex(M& mesh, typename T::half
     namespace de = detail::euler;
     const auto h = halfedge;
     if (!de::usable<M, T>(mesh, h))
-        return fail(errc::invalid_handle, "kill_edge_vertex: " + de::name<M, T>("halfedge", mesh, h) + " does not exist",
+        return fail(errc::invalid_handle,
+                    "kill_edge_vertex: " + de::name<M, T>("halfedge", mesh, h) + " does not exist",
                     de::index_of<M, T>(mesh, h));
     const auto o = T::opposite(mesh, h);
     const auto w = T::target(mesh, h);

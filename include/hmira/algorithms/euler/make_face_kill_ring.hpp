@@ -35,11 +35,14 @@ template <class M, class T = default_traits<M>>
 result<make_face_kill_ring_result<M, T>> make_face_kill_ring(M& mesh, typename T::halfedge_handle ring) {
     namespace de = detail::euler;
     if (!de::usable<M, T>(mesh, ring))
-        return fail(errc::invalid_handle, "make_face_kill_ring: " + de::name<M, T>("halfedge", mesh, ring) + " does not exist",
+        return fail(errc::invalid_handle,
+                    "make_face_kill_ring: " + de::name<M, T>("halfedge", mesh, ring) + " does not exist",
                     de::index_of<M, T>(mesh, ring));
     const auto f = T::face(mesh, ring);
     if (f == T::null_face())
-        return fail(errc::topology, "make_face_kill_ring: " + de::name<M, T>("halfedge", mesh, ring) + " is on a boundary loop, not on an inner ring",
+        return fail(errc::topology,
+                    "make_face_kill_ring: " + de::name<M, T>("halfedge", mesh, ring) +
+                        " is on a boundary loop, not on an inner ring",
                     de::index_of<M, T>(mesh, ring));
     const auto fh = T::face_halfedge(mesh, f);
     auto x = ring;
@@ -73,18 +76,22 @@ result<make_face_kill_ring_result<M, T>> make_face_kill_ring(M& mesh, typename T
 /// Complexity O(face degree).
 template <class M, class T = default_traits<M>>
     requires euler_ring_mutable_mesh<M, T>
-result<kill_face_make_ring_result<M, T>> kill_face_make_ring(M& mesh, typename T::face_handle face, typename T::face_handle host) {
+result<kill_face_make_ring_result<M, T>> kill_face_make_ring(M& mesh, typename T::face_handle face,
+                                                             typename T::face_handle host) {
     namespace de = detail::euler;
     if (!de::usable<M, T>(mesh, face) || !de::usable<M, T>(mesh, host))
         return fail(errc::invalid_handle,
-                    "kill_face_make_ring: " + de::name<M, T>("face", mesh, de::usable<M, T>(mesh, face) ? host : face) + " does not exist",
+                    "kill_face_make_ring: " + de::name<M, T>("face", mesh, de::usable<M, T>(mesh, face) ? host : face) +
+                        " does not exist",
                     de::index_of<M, T>(mesh, de::usable<M, T>(mesh, face) ? host : face));
     if (face == host)
-        return fail(errc::topology, "kill_face_make_ring: " + de::name<M, T>("face", mesh, face) + " cannot become a ring of itself",
+        return fail(errc::topology,
+                    "kill_face_make_ring: " + de::name<M, T>("face", mesh, face) + " cannot become a ring of itself",
                     de::index_of<M, T>(mesh, face));
     if (de::has_rings<M, T>(mesh, face))
         return fail(errc::topology,
-                    "kill_face_make_ring: " + de::name<M, T>("face", mesh, face) + " has inner rings of its own; make them faces first",
+                    "kill_face_make_ring: " + de::name<M, T>("face", mesh, face) +
+                        " has inner rings of its own; make them faces first",
                     de::index_of<M, T>(mesh, face));
     const auto ring = T::face_halfedge(mesh, face);
     auto x = ring;

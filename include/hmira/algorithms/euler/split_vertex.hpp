@@ -60,13 +60,16 @@ result<split_vertex_result<M, T>> split_vertex(M& mesh, typename T::halfedge_han
     namespace de = detail::euler;
     using H = typename T::halfedge_handle;
     if (!de::usable<M, T>(mesh, h0) || !de::usable<M, T>(mesh, h1))
-        return fail(errc::invalid_handle, "split_vertex: corner " + de::name<M, T>("halfedge", mesh, de::usable<M, T>(mesh, h0) ? h1 : h0) + " does not exist",
+        return fail(errc::invalid_handle,
+                    "split_vertex: corner " + de::name<M, T>("halfedge", mesh, de::usable<M, T>(mesh, h0) ? h1 : h0) +
+                        " does not exist",
                     de::index_of<M, T>(mesh, de::usable<M, T>(mesh, h0) ? h1 : h0));
     const auto v = T::target(mesh, h0);
     if (T::target(mesh, h1) != v)
         return fail(errc::topology,
-                    "split_vertex: the corners end at different vertices (" + de::name<M, T>("vertex", mesh, v) + " and " +
-                        de::name<M, T>("vertex", mesh, T::target(mesh, h1)) + "); both must be corners of the vertex to split",
+                    "split_vertex: the corners end at different vertices (" + de::name<M, T>("vertex", mesh, v) +
+                        " and " + de::name<M, T>("vertex", mesh, T::target(mesh, h1)) +
+                        "); both must be corners of the vertex to split",
                     de::index_of<M, T>(mesh, h1));
     if (h0 == h1) {
         // No edge moves: the antenna form.
@@ -77,8 +80,9 @@ result<split_vertex_result<M, T>> split_vertex(M& mesh, typename T::halfedge_han
     const auto moved = de::turn_between<M, T>(mesh, h0, h1);  // into v, the last one is h1
     if (moved.empty())
         return fail(errc::topology,
-                    "split_vertex: " + de::name<M, T>("halfedge", mesh, h1) + " is not in the rotation of " + de::name<M, T>("halfedge", mesh, h0) +
-                        " around " + de::name<M, T>("vertex", mesh, v) + " (the vertex's edges form separate fans)",
+                    "split_vertex: " + de::name<M, T>("halfedge", mesh, h1) + " is not in the rotation of " +
+                        de::name<M, T>("halfedge", mesh, h0) + " around " + de::name<M, T>("vertex", mesh, v) +
+                        " (the vertex's edges form separate fans)",
                     de::index_of<M, T>(mesh, v));
 
     const auto f0 = T::face(mesh, h0), f1 = T::face(mesh, h1);
@@ -113,7 +117,8 @@ result<split_vertex_result<M, T>> split_vertex(M& mesh, typename T::halfedge_han
     if (stored_moves) {
         v_out = f0 == T::null_face() ? out : f1 == T::null_face() ? n1 : out;
         T::set_vertex_halfedge(mesh, v, v_out);
-        if (T::face(mesh, stored) == T::null_face() && T::face(mesh, v_out) != T::null_face()) de::prefer_boundary_halfedge<M, T>(mesh, v);
+        if (T::face(mesh, stored) == T::null_face() && T::face(mesh, v_out) != T::null_face())
+            de::prefer_boundary_halfedge<M, T>(mesh, v);
     } else {
         T::set_vertex_halfedge(mesh, v, v_out);
     }
@@ -146,11 +151,14 @@ result<join_vertices_result<M, T>> join_vertices(M& mesh, typename T::halfedge_h
     using H = typename T::halfedge_handle;
     const auto h = halfedge;
     if (!de::usable<M, T>(mesh, h))
-        return fail(errc::invalid_handle, "join_vertices: " + de::name<M, T>("halfedge", mesh, h) + " does not exist", de::index_of<M, T>(mesh, h));
+        return fail(errc::invalid_handle, "join_vertices: " + de::name<M, T>("halfedge", mesh, h) + " does not exist",
+                    de::index_of<M, T>(mesh, h));
     const auto o = T::opposite(mesh, h);
     const auto v = T::target(mesh, o), w = T::target(mesh, h);
     if (v == w)
-        return fail(errc::topology, "join_vertices: the edge of " + de::name<M, T>("halfedge", mesh, h) + " is a loop at " + de::name<M, T>("vertex", mesh, v),
+        return fail(errc::topology,
+                    "join_vertices: the edge of " + de::name<M, T>("halfedge", mesh, h) + " is a loop at " +
+                        de::name<M, T>("vertex", mesh, v),
                     de::index_of<M, T>(mesh, v));
     const auto n = T::next(mesh, h), p = T::prev(mesh, h), q = T::prev(mesh, o), r = T::next(mesh, o);
     if (n == o) {
@@ -168,9 +176,12 @@ result<join_vertices_result<M, T>> join_vertices(M& mesh, typename T::halfedge_h
     const H sv = T::vertex_halfedge(mesh, v), sw = T::vertex_halfedge(mesh, w);
     H v_out = sv != h ? sv : n;
     if (!(sv != h && T::face(mesh, sv) == T::null_face())) {
-        if (sw != o && T::face(mesh, sw) == T::null_face()) v_out = sw;
-        else if (fh == T::null_face()) v_out = n;
-        else if (fo == T::null_face()) v_out = r;
+        if (sw != o && T::face(mesh, sw) == T::null_face())
+            v_out = sw;
+        else if (fh == T::null_face())
+            v_out = n;
+        else if (fo == T::null_face())
+            v_out = r;
     }
     for (auto x : moved) T::set_target(mesh, x, v);
     T::set_next(mesh, p, n);

@@ -27,9 +27,11 @@ template <class M, class T = default_traits<M>>
     requires mesh_builder<M, T>
 result<generated_elements<M, T>> generate_grid(M& mesh, const grid_options& o = {}) {
     using S = typename T::scalar;
-    if (o.columns == 0 || o.rows == 0) return fail(errc::invalid_argument, "generate_grid: columns and rows must be at least 1");
+    if (o.columns == 0 || o.rows == 0)
+        return fail(errc::invalid_argument, "generate_grid: columns and rows must be at least 1");
     if constexpr (!polygon_mesh_builder<M, T>)
-        if (!o.triangles) return fail(errc::unsupported, "generate_grid: this mesh holds triangles only; set .triangles = true");
+        if (!o.triangles)
+            return fail(errc::unsupported, "generate_grid: this mesh holds triangles only; set .triangles = true");
     generated_elements<M, T> out;
     out.vertices.reserve((o.columns + 1) * (o.rows + 1));
     for (std::size_t j = 0; j <= o.rows; ++j)

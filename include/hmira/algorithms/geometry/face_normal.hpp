@@ -49,8 +49,10 @@ vec3<double> face_area_vector(const M& mesh, typename T::face_handle f) {
     for (auto v : T::face_vertices(mesh, f)) {
         const auto q = T::position(mesh, v);
         const vec3<double> p{double(q.x), double(q.y), double(q.z)};
-        if (started) n += newell_term(previous, p);
-        else first = p, started = true;
+        if (started)
+            n += newell_term(previous, p);
+        else
+            first = p, started = true;
         previous = p;
     }
     if (started) n += newell_term(previous, first);

@@ -77,7 +77,7 @@ std::vector<vec3<typename T::scalar>> vertex_normals(const M& mesh, const vertex
     using S = typename T::scalar;
     using P = vec3<S>;
     std::vector<P> normals(T::vertex_index_bound(mesh), P{});
-    std::vector<P> corner;         // positions of the current face, reused across faces
+    std::vector<P> corner;          // positions of the current face, reused across faces
     std::vector<std::size_t> slot;  // their vertex indices
     for (auto f : T::faces(mesh)) {
         corner.clear();
@@ -97,7 +97,8 @@ std::vector<vec3<typename T::scalar>> vertex_normals(const M& mesh, const vertex
             if (!(length > S(0))) continue;  // a zero-area face has no direction to give
             const P unit = face_normal / length;
             for (std::size_t i = 0; i < k; ++i)
-                normals[slot[i]] += unit * detail::corner_angle(corner[(i + k - 1) % k], corner[i], corner[(i + 1) % k], unit);
+                normals[slot[i]] +=
+                    unit * detail::corner_angle(corner[(i + k - 1) % k], corner[i], corner[(i + 1) % k], unit);
         }
     }
     if (options.normalize)

@@ -99,8 +99,8 @@ struct open_hole {
     std::size_t vertex = 0;  ///< index of the loop's first vertex (the target of its first boundary halfedge)
     std::size_t edges = 0;   ///< the loop's length
     open_hole_reason reason = open_hole_reason::too_long;  ///< why it was left open
-    errc code = errc::unsupported;  ///< for `refused`: fill_hole's error code
-    std::string message;            ///< for `refused`: fill_hole's one-line reason
+    errc code = errc::unsupported;                         ///< for `refused`: fill_hole's error code
+    std::string message;                                   ///< for `refused`: fill_hole's one-line reason
 };
 
 /// What fill_holes did.
@@ -133,7 +133,8 @@ concept hole_fillable_mesh = triangle_operable_mesh<M, T> && halfedge_index_mesh
 /// Complexity: O(H) to find the loops, H the halfedges, plus fill_hole's cost per loop.
 template <class M, class T = default_traits<M>>
     requires hole_fillable_mesh<M, T>
-[[nodiscard]] result<fill_holes_result> fill_holes(M& mesh, std::size_t max_size, const fill_hole_options& options = {});
+[[nodiscard]] result<fill_holes_result> fill_holes(M& mesh, std::size_t max_size,
+                                                   const fill_hole_options& options = {});
 
 }  // namespace hmira
 

@@ -25,20 +25,26 @@ result<typename T::halfedge_handle> add_edge(M& mesh, typename T::vertex_handle 
     namespace de = detail::euler;
     for (auto v : {from, to})
         if (!de::usable<M, T>(mesh, v))
-            return fail(errc::invalid_handle, "add_edge: " + de::name<M, T>("vertex", mesh, v) + " does not exist", de::index_of<M, T>(mesh, v));
+            return fail(errc::invalid_handle, "add_edge: " + de::name<M, T>("vertex", mesh, v) + " does not exist",
+                        de::index_of<M, T>(mesh, v));
     if (from == to)
-        return fail(errc::topology, "add_edge: an edge from " + de::name<M, T>("vertex", mesh, from) + " to itself would be a loop",
+        return fail(errc::topology,
+                    "add_edge: an edge from " + de::name<M, T>("vertex", mesh, from) + " to itself would be a loop",
                     de::index_of<M, T>(mesh, from));
     const auto gf = T::vertex_halfedge(mesh, from), gt = T::vertex_halfedge(mesh, to);
     for (auto [v, g] : {std::pair{from, gf}, std::pair{to, gt}})
         if (g != T::null_halfedge() && T::face(mesh, g) != T::null_face())
-            return fail(errc::topology, "add_edge: " + de::name<M, T>("vertex", mesh, v) + " is interior (surrounded by faces); an edge there would be non-manifold",
+            return fail(errc::topology,
+                        "add_edge: " + de::name<M, T>("vertex", mesh, v) +
+                            " is interior (surrounded by faces); an edge there would be non-manifold",
                         de::index_of<M, T>(mesh, v));
     if (gf != T::null_halfedge()) {
         auto h = gf;
         do {
             if (T::target(mesh, h) == to)
-                return fail(errc::topology, "add_edge: " + de::name<M, T>("vertex", mesh, from) + " and " + de::name<M, T>("vertex", mesh, to) + " are joined already",
+                return fail(errc::topology,
+                            "add_edge: " + de::name<M, T>("vertex", mesh, from) + " and " +
+                                de::name<M, T>("vertex", mesh, to) + " are joined already",
                             de::index_of<M, T>(mesh, from));
             h = T::next(mesh, T::opposite(mesh, h));
         } while (h != gf);
@@ -73,13 +79,20 @@ result<removal_report> remove_edge(M& mesh, typename T::halfedge_handle halfedge
     namespace de = detail::euler;
     namespace dp = detail::primitives;
     if (!de::usable<M, T>(mesh, halfedge))
-        return fail(errc::invalid_handle, "remove_edge: " + de::name<M, T>("halfedge", mesh, halfedge) + " does not exist",
+        return fail(errc::invalid_handle,
+                    "remove_edge: " + de::name<M, T>("halfedge", mesh, halfedge) + " does not exist",
                     de::index_of<M, T>(mesh, halfedge));
     removal_report report;
     std::vector<typename T::halfedge_handle> touched{halfedge};
     const auto f = T::face(mesh, halfedge), g = T::face(mesh, T::opposite(mesh, halfedge));
-    if (f != T::null_face()) { dp::strip_face<M, T>(mesh, f, touched); ++report.faces; }
-    if (g != T::null_face() && g != f) { dp::strip_face<M, T>(mesh, g, touched); ++report.faces; }
+    if (f != T::null_face()) {
+        dp::strip_face<M, T>(mesh, f, touched);
+        ++report.faces;
+    }
+    if (g != T::null_face() && g != f) {
+        dp::strip_face<M, T>(mesh, g, touched);
+        ++report.faces;
+    }
     if (!options.remove_wire_edges) touched.resize(1);
     dp::remove_wires<M, T>(mesh, touched, options, report);
     return report;

@@ -39,7 +39,8 @@ result<removal_report> remove_vertex(M& mesh, typename T::vertex_handle vertex, 
     namespace de = detail::euler;
     namespace dp = detail::primitives;
     if (!de::usable<M, T>(mesh, vertex))
-        return fail(errc::invalid_handle, "remove_vertex: " + de::name<M, T>("vertex", mesh, vertex) + " does not exist",
+        return fail(errc::invalid_handle,
+                    "remove_vertex: " + de::name<M, T>("vertex", mesh, vertex) + " does not exist",
                     de::index_of<M, T>(mesh, vertex));
     removal_report report;
     if constexpr (halfedge_mutable_mesh<M, T>) {
@@ -85,7 +86,8 @@ result<removal_report> remove_vertex(M& mesh, typename T::vertex_handle vertex, 
         // The model checks the handle again (a deleted vertex, say) before changing anything.
         if (auto removed = T::remove_vertex(mesh, vertex); !removed) return removed.error();
         if (options.remove_isolated_vertices)
-            if (auto r = dp::remove_unused_vertices<M, T>(mesh, std::move(corners), report, vertex); !r) return r.error();
+            if (auto r = dp::remove_unused_vertices<M, T>(mesh, std::move(corners), report, vertex); !r)
+                return r.error();
     }
     ++report.vertices;
     return report;

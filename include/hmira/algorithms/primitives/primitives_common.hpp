@@ -21,23 +21,23 @@ namespace hmira {
 /// with face -> vertex ranges and vertex and face indices (to check the face exists and find
 /// the vertices a removal leaves unused).
 template <class M, class T = default_traits<M>>
-concept face_erasable_mesh = halfedge_mutable_mesh<M, T> ||
-    (face_removal_mesh<M, T> && vertex_removal_mesh<M, T> && face_vertex_range_mesh<M, T> && vertex_index_mesh<M, T> &&
-     face_index_mesh<M, T>);
+concept face_erasable_mesh =
+    halfedge_mutable_mesh<M, T> || (face_removal_mesh<M, T> && vertex_removal_mesh<M, T> &&
+                                    face_vertex_range_mesh<M, T> && vertex_index_mesh<M, T> && face_index_mesh<M, T>);
 
 /// A mesh remove_vertex can honour: the raw halfedge layer (triangle-only models included), or
 /// traits that remove a vertex with its faces (vertex_removal_mesh, as face_vertex_mesh) plus
 /// face -> vertex ranges and vertex indices.
 template <class M, class T = default_traits<M>>
 concept vertex_erasable_mesh = halfedge_mutable_mesh<M, T> ||
-    (vertex_removal_mesh<M, T> && face_vertex_range_mesh<M, T> && vertex_index_mesh<M, T>);
+                               (vertex_removal_mesh<M, T> && face_vertex_range_mesh<M, T> && vertex_index_mesh<M, T>);
 
 /// What a removal should also clean up. Removing faces can leave edges with no face on either
 /// side (wire edges) and vertices with no edge; by default both go too, as a surface mesh
 /// expects, so that a strict validate() still passes. On a model without edges
 /// (face_vertex_mesh) there are no wire edges, and "no edge" means "used by no face".
 struct remove_options {
-    bool remove_wire_edges = true;        ///< also remove edges left with no face on either side
+    bool remove_wire_edges = true;         ///< also remove edges left with no face on either side
     bool remove_isolated_vertices = true;  ///< also remove vertices left with no edge
 };
 
@@ -133,7 +133,8 @@ result<void> remove_unused_vertices(M& m, std::vector<typename T::vertex_handle>
     std::erase(candidates, keep_vertex_out);
     std::vector<std::uint8_t> used(candidates.size(), 0);
     if constexpr (vertex_face_adjacency_mesh<M, T>) {
-        for (std::size_t i = 0; i < candidates.size(); ++i) used[i] = !std::ranges::empty(T::vertex_faces(m, candidates[i]));
+        for (std::size_t i = 0; i < candidates.size(); ++i)
+            used[i] = !std::ranges::empty(T::vertex_faces(m, candidates[i]));
     } else {
         for (auto f : T::faces(m))
             for (auto v : T::face_vertices(m, f)) {

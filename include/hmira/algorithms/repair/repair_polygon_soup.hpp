@@ -34,7 +34,7 @@ struct soup_repair_options {
 
 /// A count of repaired elements and the first few of them (input indices, ascending).
 struct repair_count {
-    std::size_t count = 0;            ///< how many elements
+    std::size_t count = 0;           ///< how many elements
     std::vector<std::size_t> first;  ///< the first soup_repair_options::listed of them
 };
 
@@ -44,12 +44,12 @@ struct soup_repair_report {
     repair_count degenerate_faces;        ///< faces dropped: < 3 distinct corners, or a vertex repeated apart
     std::size_t nonmanifold_edges = 0;    ///< edges that had more than two faces
     repair_count nonmanifold_edge_faces;  ///< faces past the second on such an edge: cut free or dropped
-    repair_count detached_faces;         ///< faces that stayed unglueable after the cut: all their vertices copied
-    repair_count flipped_faces;          ///< faces whose corner order was reversed to agree with their neighbours
-    std::size_t orientation_cuts = 0;    ///< edges left open where no orientation agrees (Moebius-like)
-    repair_count split_vertices;         ///< input vertices that now have copies (split, or ends of cut edges)
-    std::size_t added_vertices = 0;      ///< vertices added as copies
-    std::size_t dropped_faces = 0;       ///< faces dropped in all (degenerate, and drop_faces ones)
+    repair_count detached_faces;          ///< faces that stayed unglueable after the cut: all their vertices copied
+    repair_count flipped_faces;           ///< faces whose corner order was reversed to agree with their neighbours
+    std::size_t orientation_cuts = 0;     ///< edges left open where no orientation agrees (Moebius-like)
+    repair_count split_vertices;          ///< input vertices that now have copies (split, or ends of cut edges)
+    std::size_t added_vertices = 0;       ///< vertices added as copies
+    std::size_t dropped_faces = 0;        ///< faces dropped in all (degenerate, and drop_faces ones)
 
     /// True when the soup needed no change at all.
     bool clean() const noexcept {

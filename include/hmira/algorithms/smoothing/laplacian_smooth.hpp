@@ -30,11 +30,11 @@ constexpr auto enum_names(laplacian_weights) {
 
 /// Options of laplacian_smooth.
 struct laplacian_smooth_options {
-    std::size_t iterations = 1;                           ///< smoothing steps
-    double lambda = 0.5;                                  ///< step size, in (0, 1]
+    std::size_t iterations = 1;                              ///< smoothing steps
+    double lambda = 0.5;                                     ///< step size, in (0, 1]
     laplacian_weights weights = laplacian_weights::uniform;  ///< neighbour weights
-    bool fix_boundary = true;                             ///< keep boundary vertices where they are
-    std::vector<std::size_t> fixed_vertices{};            ///< vertex indices (feature vertices) that stay exactly
+    bool fix_boundary = true;                                ///< keep boundary vertices where they are
+    std::vector<std::size_t> fixed_vertices{};               ///< vertex indices (feature vertices) that stay exactly
     /// Called between blocks of work (every 65536 vertices visited, counted across steps) with
     /// the fraction done; returning false cancels (errc::cancelled, every position restored).
     progress_function progress = {};
@@ -42,12 +42,12 @@ struct laplacian_smooth_options {
 
 /// Options of taubin_smooth.
 struct taubin_smooth_options {
-    std::size_t iterations = 10;                          ///< lambda/mu pairs
-    double lambda = 0.5;                                  ///< shrinking step, > 0
-    double mu = -0.53;                                    ///< inflating step, < -lambda
+    std::size_t iterations = 10;                             ///< lambda/mu pairs
+    double lambda = 0.5;                                     ///< shrinking step, > 0
+    double mu = -0.53;                                       ///< inflating step, < -lambda
     laplacian_weights weights = laplacian_weights::uniform;  ///< neighbour weights
-    bool fix_boundary = true;                             ///< keep boundary vertices where they are
-    std::vector<std::size_t> fixed_vertices{};            ///< vertex indices that stay exactly
+    bool fix_boundary = true;                                ///< keep boundary vertices where they are
+    std::vector<std::size_t> fixed_vertices{};               ///< vertex indices that stay exactly
     /// Called between blocks of work (every 65536 vertices visited, counted across steps) with
     /// the fraction done; returning false cancels (errc::cancelled, every position restored).
     progress_function progress = {};

@@ -22,8 +22,8 @@ namespace hmira {
 
 /// The closest point on the tree's triangles to a query point.
 struct closest_point_result {
-    vec3<double> point{};  ///< the closest point on the surface
-    std::size_t face = 0;  ///< the id of the triangle it lies on (see aabb_tree)
+    vec3<double> point{};                                       ///< the closest point on the surface
+    std::size_t face = 0;                                       ///< the id of the triangle it lies on (see aabb_tree)
     double distance = std::numeric_limits<double>::infinity();  ///< |point - query|; infinity for an empty tree
 };
 
@@ -36,9 +36,9 @@ struct ray_hit {
 
 /// A ray: origin + t * direction, for t in [t_min, t_max].
 struct ray {
-    vec3<double> origin{};     ///< where the ray starts
-    vec3<double> direction{};  ///< not necessarily unit length; must be non-zero
-    double t_min = 0;          ///< the smallest parameter that counts as a hit
+    vec3<double> origin{};                                   ///< where the ray starts
+    vec3<double> direction{};                                ///< not necessarily unit length; must be non-zero
+    double t_min = 0;                                        ///< the smallest parameter that counts as a hit
     double t_max = std::numeric_limits<double>::infinity();  ///< the largest one
 };
 

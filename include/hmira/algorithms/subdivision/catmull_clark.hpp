@@ -40,9 +40,9 @@ struct catmull_clark_result {
 /// indices for its per-level arrays, and copies (mesh_rollback, to restore the mesh on cancellation).
 /// halfedge_mesh, winged_edge_mesh, OpenMesh PolyMesh and CGAL Surface_mesh qualify.
 template <class M, class T = default_traits<M>>
-concept catmull_clark_subdividable_mesh = euler_mutable_mesh<M, T> && position_mutable_mesh<M, T> && vertex_index_mesh<M, T> &&
-                                          edge_index_mesh<M, T> && face_index_mesh<M, T> && std::copy_constructible<M> &&
-                                          std::is_move_assignable_v<M>;
+concept catmull_clark_subdividable_mesh =
+    euler_mutable_mesh<M, T> && position_mutable_mesh<M, T> && vertex_index_mesh<M, T> && edge_index_mesh<M, T> &&
+    face_index_mesh<M, T> && std::copy_constructible<M> && std::is_move_assignable_v<M>;
 
 /// Catmull-Clark subdivision, `options.levels` times, on any polygon mesh. Each level puts a
 /// face point at each face's centroid; splits each edge at its edge point (the average of its

@@ -33,7 +33,6 @@ struct sqrt3_result {
     std::size_t faces = 0;     ///< faces after the last level
 };
 
-
 /// A mesh sqrt3_subdivide can run on: the triangle operators, dense vertex, edge and face
 /// indices for its per-level arrays, sizing and error messages, and copies (to restore the
 /// mesh on cancellation).

@@ -70,7 +70,8 @@ template <class M, class T = default_traits<M>>
         case subdivision_scheme::sqrt3:
             return counts(sqrt3_subdivide<M, T>(mesh, {.levels = options.levels, .progress = options.progress}));
         case subdivision_scheme::catmull_clark:
-            return counts(catmull_clark_subdivide<M, T>(mesh, {.levels = options.levels, .progress = options.progress}));
+            return counts(
+                catmull_clark_subdivide<M, T>(mesh, {.levels = options.levels, .progress = options.progress}));
     }
     return fail(errc::invalid_argument, "subdivide: option scheme is not a subdivision_scheme");
 }

@@ -19,16 +19,18 @@ concept connected_components_mesh = face_vertex_range_mesh<M, T> && vertex_index
 /// below the index bound) get `no_component`. An isolated vertex is a component of its own.
 struct component_labels {
     static constexpr std::uint32_t no_component = UINT32_MAX;  ///< label of a deleted element
-    std::size_t count = 0;                       ///< number of components
-    std::vector<std::uint32_t> vertex_component;  ///< label per vertex index
-    std::vector<std::uint32_t> face_component;    ///< label per face index
+    std::size_t count = 0;                                     ///< number of components
+    std::vector<std::uint32_t> vertex_component;               ///< label per vertex index
+    std::vector<std::uint32_t> face_component;                 ///< label per face index
 };
 
 /// Disjoint-set forest over [0, n).
 class union_find {
 public:
     /// n singleton sets.
-    explicit union_find(std::size_t n) : parent_(n), size_(n, 1) { std::iota(parent_.begin(), parent_.end(), std::uint32_t{0}); }
+    explicit union_find(std::size_t n) : parent_(n), size_(n, 1) {
+        std::iota(parent_.begin(), parent_.end(), std::uint32_t{0});
+    }
     /// The representative of x's set (compresses the path on the way).
     std::uint32_t find(std::uint32_t x) {
         while (parent_[x] != x) {
@@ -64,8 +66,11 @@ component_labels connected_components(const M& mesh) {
         std::uint32_t root = 0;
         for (auto v : T::face_vertices(mesh, f)) {
             const auto i = static_cast<std::uint32_t>(T::vertex_index(mesh, v));
-            if (first) { root = i; first = false; }
-            else sets.unite(root, i);
+            if (first) {
+                root = i;
+                first = false;
+            } else
+                sets.unite(root, i);
         }
     }
     component_labels out;
@@ -74,7 +79,8 @@ component_labels connected_components(const M& mesh) {
     for (auto v : T::vertices(mesh)) {
         const auto i = static_cast<std::uint32_t>(T::vertex_index(mesh, v));
         const auto r = sets.find(i);
-        if (label_of_root[r] == component_labels::no_component) label_of_root[r] = static_cast<std::uint32_t>(out.count++);
+        if (label_of_root[r] == component_labels::no_component)
+            label_of_root[r] = static_cast<std::uint32_t>(out.count++);
         out.vertex_component[i] = label_of_root[r];
     }
     out.face_component.assign(T::face_index_bound(mesh), component_labels::no_component);

@@ -34,19 +34,27 @@ concept edge_census_mesh = face_vertex_range_mesh<M, T> && vertex_index_mesh<M, 
 template <class M, class T = default_traits<M>>
     requires edge_census_mesh<M, T>
 std::vector<census_edge> edge_census(const M& mesh) {
-    struct side { std::uint64_t key; bool forward; };
+    struct side {
+        std::uint64_t key;
+        bool forward;
+    };
     std::vector<side> sides;
     for (auto f : T::faces(mesh)) {
         std::uint32_t first = 0, prev = 0;
         bool started = false;
         for (auto v : T::face_vertices(mesh, f)) {
             const auto i = static_cast<std::uint32_t>(T::vertex_index(mesh, v));
-            if (!started) { first = i; started = true; }
-            else sides.push_back(prev < i ? side{(std::uint64_t(prev) << 32) | i, true} : side{(std::uint64_t(i) << 32) | prev, false});
+            if (!started) {
+                first = i;
+                started = true;
+            } else
+                sides.push_back(prev < i ? side{(std::uint64_t(prev) << 32) | i, true}
+                                         : side{(std::uint64_t(i) << 32) | prev, false});
             prev = i;
         }
         if (started && prev != first)
-            sides.push_back(prev < first ? side{(std::uint64_t(prev) << 32) | first, true} : side{(std::uint64_t(first) << 32) | prev, false});
+            sides.push_back(prev < first ? side{(std::uint64_t(prev) << 32) | first, true}
+                                         : side{(std::uint64_t(first) << 32) | prev, false});
     }
     std::sort(sides.begin(), sides.end(), [](const side& x, const side& y) { return x.key < y.key; });
     std::vector<census_edge> out;

@@ -24,12 +24,12 @@ struct topology_summary {
     /// Live vertices, face-list edges, and faces.
     std::size_t vertices = 0, edges = 0, faces = 0;
     ///@}
-    std::size_t components = 0;         ///< connected components, isolated vertices included
-    std::size_t isolated_vertices = 0;  ///< vertices used by no face
-    std::size_t boundary_edges = 0;     ///< edges with exactly one face side
-    std::size_t boundary_loops = 0;     ///< closed chains of boundary edges
-    std::size_t non_manifold_edges = 0; ///< edges with more than two face sides
-    long long euler_characteristic = 0; ///< V - E + F
+    std::size_t components = 0;          ///< connected components, isolated vertices included
+    std::size_t isolated_vertices = 0;   ///< vertices used by no face
+    std::size_t boundary_edges = 0;      ///< edges with exactly one face side
+    std::size_t boundary_loops = 0;      ///< closed chains of boundary edges
+    std::size_t non_manifold_edges = 0;  ///< edges with more than two face sides
+    long long euler_characteristic = 0;  ///< V - E + F
     /// Total genus of the surface components, (2C - chi - b) / 2 with isolated vertices left
     /// out; meaningful for orientable manifold meshes (then it is a whole number).
     long long genus = 0;
@@ -43,9 +43,12 @@ template <class M, class T = default_traits<M>>
     requires edge_census_mesh<M, T>
 long long euler_characteristic(const M& mesh) {
     std::size_t e = 0;
-    if constexpr (edge_list_mesh<M, T>) e = T::edge_count(mesh);
-    else e = edge_census<M, T>(mesh).size();
-    return static_cast<long long>(T::vertex_count(mesh)) - static_cast<long long>(e) + static_cast<long long>(T::face_count(mesh));
+    if constexpr (edge_list_mesh<M, T>)
+        e = T::edge_count(mesh);
+    else
+        e = edge_census<M, T>(mesh).size();
+    return static_cast<long long>(T::vertex_count(mesh)) - static_cast<long long>(e) +
+           static_cast<long long>(T::face_count(mesh));
 }
 
 /// Everything in topology_summary. O(C log C) for C face corners.
@@ -71,8 +74,10 @@ topology_summary mesh_topology(const M& mesh) {
         if (!e.is_boundary()) continue;
         ++s.boundary_edges;
         // The boundary runs against the face side.
-        if (e.forward) boundary_next[e.b].push_back(e.a);
-        else boundary_next[e.a].push_back(e.b);
+        if (e.forward)
+            boundary_next[e.b].push_back(e.a);
+        else
+            boundary_next[e.a].push_back(e.b);
     }
     std::size_t remaining = s.boundary_edges;
     for (auto& [start, outs] : boundary_next) {
@@ -91,7 +96,8 @@ topology_summary mesh_topology(const M& mesh) {
         }
     }
     (void)remaining;
-    s.euler_characteristic = static_cast<long long>(s.vertices) - static_cast<long long>(s.edges) + static_cast<long long>(s.faces);
+    s.euler_characteristic =
+        static_cast<long long>(s.vertices) - static_cast<long long>(s.edges) + static_cast<long long>(s.faces);
     const long long surface_components = static_cast<long long>(s.components - s.isolated_vertices);
     const long long chi = s.euler_characteristic - static_cast<long long>(s.isolated_vertices);
     s.genus = (2 * surface_components - chi - static_cast<long long>(s.boundary_loops)) / 2;

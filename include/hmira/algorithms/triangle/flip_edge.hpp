@@ -64,7 +64,8 @@ void flip_links(M& mesh, typename T::halfedge_handle h) {
 /// What flip_edge changed.
 template <class M, class T = default_traits<M>>
 struct flip_edge_result {
-    typename T::halfedge_handle halfedge;  ///< the flipped edge, now running from the vertex opposite h's twin to the one opposite h
+    typename T::halfedge_handle
+        halfedge;  ///< the flipped edge, now running from the vertex opposite h's twin to the one opposite h
 };
 
 /// Flips the edge of h inside the quadrilateral of its two triangles: with h = a->b in

@@ -49,12 +49,13 @@ template <class M, class T = default_traits<M>>
                     de::index_of<M, T>(mesh, h));
     const auto o = T::opposite(mesh, h);
     const auto a = T::target(mesh, o), b = T::target(mesh, h);
-    const vec3<double> p = options.position ? *options.position
-                                            : (dt::position_of<M, T>(mesh, a) + dt::position_of<M, T>(mesh, b)) * 0.5;
+    const vec3<double> p =
+        options.position ? *options.position : (dt::position_of<M, T>(mesh, a) + dt::position_of<M, T>(mesh, b)) * 0.5;
     if (!dt::finite(p))
         return fail(errc::invalid_argument, "split_edge: option position is not finite", de::index_of<M, T>(mesh, h));
     const bool cut_h = options.split_triangles && dt::in_triangle<M, T>(mesh, h);
-    const bool cut_o = options.split_triangles && dt::in_triangle<M, T>(mesh, o) && T::face(mesh, o) != T::face(mesh, h);
+    const bool cut_o =
+        options.split_triangles && dt::in_triangle<M, T>(mesh, o) && T::face(mesh, o) != T::face(mesh, h);
     if constexpr (triangle_only_mesh<M, T>) {
         const bool h_polygon = T::face(mesh, h) != T::null_face() && !cut_h;
         const bool o_polygon = T::face(mesh, o) != T::null_face() && !cut_o;
@@ -65,8 +66,8 @@ template <class M, class T = default_traits<M>>
                         de::index_of<M, T>(mesh, h));
     }
 
-    const auto w = T::add_vertex(mesh, vec3<typename T::scalar>{typename T::scalar(p.x), typename T::scalar(p.y),
-                                                                typename T::scalar(p.z)});
+    const auto w = T::add_vertex(
+        mesh, vec3<typename T::scalar>{typename T::scalar(p.x), typename T::scalar(p.y), typename T::scalar(p.z)});
     return split_edge_result<M, T>{w, dt::split_links<M, T>(mesh, h, w, cut_h, cut_o)};
 }
 

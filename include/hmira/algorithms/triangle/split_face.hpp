@@ -78,9 +78,10 @@ template <class M, class T = default_traits<M>>
                     de::index_of<M, T>(mesh, f));
     const auto h1 = T::next(mesh, h0), h2 = T::next(mesh, h1);
     const auto a = T::target(mesh, h2), b = T::target(mesh, h0), c = T::target(mesh, h1);
-    const vec3<double> p = options.position ? *options.position
-                                            : (dt::position_of<M, T>(mesh, a) + dt::position_of<M, T>(mesh, b) +
-                                               dt::position_of<M, T>(mesh, c)) / 3.0;
+    const vec3<double> p =
+        options.position
+            ? *options.position
+            : (dt::position_of<M, T>(mesh, a) + dt::position_of<M, T>(mesh, b) + dt::position_of<M, T>(mesh, c)) / 3.0;
     if (!dt::finite(p))
         return fail(errc::invalid_argument, "split_face: option position is not finite", de::index_of<M, T>(mesh, f));
 

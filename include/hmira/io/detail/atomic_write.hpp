@@ -135,14 +135,16 @@ public:
         staged_file s;
         s.path_ = path;
         s.dir_ = path.has_parent_path() ? path.parent_path() : fs::path(".");
-        if (!fs::is_directory(s.dir_, ec)) return fail(errc::io_error, path.string() + ": folder " + s.dir_.string() + " does not exist");
+        if (!fs::is_directory(s.dir_, ec))
+            return fail(errc::io_error, path.string() + ": folder " + s.dir_.string() + " does not exist");
         if (auto opened = s.open_temporary(); !opened) return opened.error();
         fd_output_buffer buffer(s.fd_);
         std::ostream out(&buffer);
         const bool ok = fill(out);  // an exception leaves through ~staged_file, which removes the temporary
         out.flush();
         if (!ok || !out || buffer.error() != 0) {
-            const std::string why = buffer.error() != 0 ? std::strerror(buffer.error()) : "the data could not be produced";
+            const std::string why =
+                buffer.error() != 0 ? std::strerror(buffer.error()) : "the data could not be produced";
             return fail(errc::io_error, path.string() + ": write failed: " + why + "; the existing file is unchanged");
         }
         return s;
@@ -162,7 +164,8 @@ public:
             if (::close(fd) != 0) {
                 const int e = errno;
                 discard();
-                return fail(errc::io_error, path_.string() + ": write failed: " + std::strerror(e) + "; the existing file is unchanged");
+                return fail(errc::io_error, path_.string() + ": write failed: " + std::strerror(e) +
+                                                "; the existing file is unchanged");
             }
         }
         if (::rename(temp_.c_str(), path_.c_str()) != 0) {
@@ -176,7 +179,11 @@ public:
     }
 
     staged_file(staged_file&& o) noexcept
-        : path_(std::move(o.path_)), dir_(std::move(o.dir_)), fd_(std::exchange(o.fd_, -1)), temp_(std::move(o.temp_)), slot_(std::exchange(o.slot_, -1)) {
+        : path_(std::move(o.path_)),
+          dir_(std::move(o.dir_)),
+          fd_(std::exchange(o.fd_, -1)),
+          temp_(std::move(o.temp_)),
+          slot_(std::exchange(o.slot_, -1)) {
         o.temp_.clear();
     }
     staged_file& operator=(staged_file&&) = delete;
@@ -217,7 +224,8 @@ private:
             unregister_temporary(std::exchange(slot_, -1));
             if (e != EEXIST) break;
         }
-        return fail(errc::io_error, path_.string() + ": cannot create a temporary file in " + dir_.string() + ": " + std::strerror(e));
+        return fail(errc::io_error,
+                    path_.string() + ": cannot create a temporary file in " + dir_.string() + ": " + std::strerror(e));
     }
 
     result<void> link_unnamed() {
@@ -238,7 +246,8 @@ private:
             if (e != EEXIST) break;
         }
         discard();
-        return fail(errc::io_error, path_.string() + ": cannot name the temporary file in " + dir_.string() + ": " + std::strerror(e));
+        return fail(errc::io_error,
+                    path_.string() + ": cannot name the temporary file in " + dir_.string() + ": " + std::strerror(e));
     }
 
     void discard() noexcept {
@@ -249,9 +258,9 @@ private:
     }
 
     std::filesystem::path path_, dir_;
-    int fd_ = -1;        ///< the open temporary, until committed
-    std::string temp_;   ///< the temporary's name, once it has one
-    int slot_ = -1;      ///< its slot in live_temporaries
+    int fd_ = -1;       ///< the open temporary, until committed
+    std::string temp_;  ///< the temporary's name, once it has one
+    int slot_ = -1;     ///< its slot in live_temporaries
 };
 
 /// Writes through `fill(std::ostream&)` into a temporary file next to `path`, then renames it

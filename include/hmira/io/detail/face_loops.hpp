@@ -23,14 +23,18 @@ namespace hmira::io::detail {
 /// position in T::faces order (`ordinal`).
 template <class M, class T>
 std::string face_name(const M& mesh, typename T::face_handle f, std::size_t ordinal) {
-    if constexpr (face_index_mesh<M, T>) return "face " + std::to_string(T::face_index(mesh, f));
-    else return "face #" + std::to_string(ordinal) + " (in faces() order)";
+    if constexpr (face_index_mesh<M, T>)
+        return "face " + std::to_string(T::face_index(mesh, f));
+    else
+        return "face #" + std::to_string(ordinal) + " (in faces() order)";
 }
 
 template <class M, class T>
 long long face_number(const M& mesh, typename T::face_handle f, std::size_t ordinal) {
-    if constexpr (face_index_mesh<M, T>) return static_cast<long long>(T::face_index(mesh, f));
-    else return static_cast<long long>(ordinal);
+    if constexpr (face_index_mesh<M, T>)
+        return static_cast<long long>(T::face_index(mesh, f));
+    else
+        return static_cast<long long>(ordinal);
 }
 
 /// Whether face f has inner rings (never, for a model without them).
@@ -52,10 +56,11 @@ result<void> refuse_ringed_faces(const M& mesh, const char* format) {
         std::size_t ordinal = 0;
         for (auto f : T::faces(mesh)) {
             if (has_inner_rings<M, T>(mesh, f))
-                return fail(errc::unsupported,
-                            std::string(format) + " writer: " + face_name<M, T>(mesh, f, ordinal) +
-                                " has inner rings, which the format cannot store; cut it first with triangulate_faces(mesh)",
-                            face_number<M, T>(mesh, f, ordinal));
+                return fail(
+                    errc::unsupported,
+                    std::string(format) + " writer: " + face_name<M, T>(mesh, f, ordinal) +
+                        " has inner rings, which the format cannot store; cut it first with triangulate_faces(mesh)",
+                    face_number<M, T>(mesh, f, ordinal));
             ++ordinal;
         }
     } else {
@@ -112,7 +117,8 @@ result<stl_triangles<M, T>> plan_stl_triangles(const M& mesh) {
             for (std::size_t i = 1; i + 1 < loop.size(); ++i) plan.triangles.push_back({loop[0], loop[i], loop[i + 1]});
         const std::size_t added = plan.triangles.size() - before;
         if (added > UINT32_MAX)
-            return fail(errc::unsupported, "STL writer: " + face_name<M, T>(mesh, f, ordinal) + " has too many corners", face_number<M, T>(mesh, f, ordinal));
+            return fail(errc::unsupported, "STL writer: " + face_name<M, T>(mesh, f, ordinal) + " has too many corners",
+                        face_number<M, T>(mesh, f, ordinal));
         plan.counts.push_back(static_cast<std::uint32_t>(added));
         plan.total += added;
         ++ordinal;
@@ -133,8 +139,10 @@ result<void> refuse_non_finite(const M& mesh, const char* format, bool as_float 
             const bool finite = std::isfinite(x);
             if (finite && !(as_float && !std::isfinite(static_cast<float>(x)))) continue;
             const long long index = [&] {
-                if constexpr (vertex_index_mesh<M, T>) return static_cast<long long>(T::vertex_index(mesh, v));
-                else return static_cast<long long>(ordinal);
+                if constexpr (vertex_index_mesh<M, T>)
+                    return static_cast<long long>(T::vertex_index(mesh, v));
+                else
+                    return static_cast<long long>(ordinal);
             }();
             char shown[32];
             std::snprintf(shown, sizeof shown, "%g", x);

@@ -75,7 +75,8 @@ public:
     /// limit already or out of memory.
     bool grow_towards(std::size_t limit) noexcept {
         if (capacity_ >= limit) return false;
-        const std::size_t want = capacity_ < limit / 2 ? std::max<std::size_t>(2 * capacity_, std::size_t{1} << 16) : limit;
+        const std::size_t want =
+            capacity_ < limit / 2 ? std::max<std::size_t>(2 * capacity_, std::size_t{1} << 16) : limit;
         return reserve(std::min(want, limit));
     }
     void swap(byte_buffer& o) noexcept {
@@ -101,7 +102,8 @@ public:
     /// Reads the file at `path`. A non-regular file longer than `max_bytes` is an error.
     /// Errors: io_error for a missing file, a directory, a read error, a regular file that
     /// shrank while being read, or a non-regular file longer than `max_bytes`.
-    static result<input_file> open(const std::filesystem::path& path, std::uint64_t max_bytes = default_max_input_bytes) {
+    static result<input_file> open(const std::filesystem::path& path,
+                                   std::uint64_t max_bytes = default_max_input_bytes) {
         const std::string name = path.string();
         const int fd = ::open(name.c_str(), O_RDONLY | O_CLOEXEC);
         if (fd < 0) return fail(errc::io_error, name + ": cannot open: " + std::strerror(errno));
@@ -109,7 +111,7 @@ public:
             int fd;
             ~closer() { ::close(fd); }
         } close_fd{fd};
-        struct stat st{};
+        struct stat st {};
         if (::fstat(fd, &st) != 0) return fail(errc::io_error, name + ": cannot open: " + std::strerror(errno));
         if (S_ISDIR(st.st_mode)) return fail(errc::io_error, name + ": is a directory, not a mesh file");
         input_file f;
@@ -119,14 +121,15 @@ public:
             const auto size = static_cast<std::uint64_t>(st.st_size);
             if (input_file_size_known_hook) input_file_size_known_hook(name.c_str());
             if (size > SIZE_MAX || !b.reserve(static_cast<std::size_t>(size)))
-                return fail(errc::io_error, name + ": not enough memory to read its " + std::to_string(size) + " bytes");
+                return fail(errc::io_error,
+                            name + ": not enough memory to read its " + std::to_string(size) + " bytes");
             while (b.size() < size) {
                 const auto n = ::read(fd, b.data() + b.size(), static_cast<std::size_t>(size - b.size()));
                 if (n < 0 && errno == EINTR) continue;
                 if (n < 0) return fail(errc::io_error, name + ": read error: " + std::strerror(errno));
                 if (n == 0)
-                    return fail(errc::io_error, name + ": file shrank while reading (" + std::to_string(size) + " bytes when opened, " +
-                                                    std::to_string(b.size()) + " read)");
+                    return fail(errc::io_error, name + ": file shrank while reading (" + std::to_string(size) +
+                                                    " bytes when opened, " + std::to_string(b.size()) + " read)");
                 b.set_size(b.size() + static_cast<std::size_t>(n));
             }
             return f;
@@ -136,10 +139,11 @@ public:
         for (;;) {
             if (b.size() == b.capacity()) {
                 if (b.size() > max_bytes)
-                    return fail(errc::unsupported, name + ": not a regular file, and longer than the input limit of " + std::to_string(max_bytes) +
-                                                    " bytes (max_input_bytes)");
+                    return fail(errc::unsupported, name + ": not a regular file, and longer than the input limit of " +
+                                                       std::to_string(max_bytes) + " bytes (max_input_bytes)");
                 if (!b.grow_towards(limit))
-                    return fail(errc::io_error, name + ": not enough memory to read it (" + std::to_string(b.size()) + " bytes so far)");
+                    return fail(errc::io_error, name + ": not enough memory to read it (" + std::to_string(b.size()) +
+                                                    " bytes so far)");
             }
             const auto n = ::read(fd, b.data() + b.size(), b.capacity() - b.size());
             if (n < 0 && errno == EINTR) continue;
@@ -155,7 +159,8 @@ private:
 };
 
 /// The whole file as a string (small files, tests). Prefer input_file for meshes.
-inline result<std::string> read_file(const std::filesystem::path& path, std::uint64_t max_bytes = default_max_input_bytes) {
+inline result<std::string> read_file(const std::filesystem::path& path,
+                                     std::uint64_t max_bytes = default_max_input_bytes) {
     auto f = input_file::open(path, max_bytes);
     if (!f) return f.error();
     return std::string(f->text());

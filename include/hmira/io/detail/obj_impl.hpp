@@ -24,8 +24,10 @@ namespace hmira::io::detail {
 
 template <class S>
 void append_coordinate(std::string& out, S v) {
-    if constexpr (std::is_same_v<S, float>) append_number(out, v);
-    else append_number(out, static_cast<double>(v));
+    if constexpr (std::is_same_v<S, float>)
+        append_number(out, v);
+    else
+        append_number(out, static_cast<double>(v));
 }
 
 inline bool skip_obj_index(const char*& p, const char* end) {
@@ -53,9 +55,11 @@ inline std::string obj_where(const std::string& name, std::size_t line) { return
 inline result<void> obj_read_vertex(text_cursor& c, polygon_soup& soup, const std::string& name) {
     std::array<double, 3> q{};
     for (auto& x : q)
-        if (!c.number(x)) return fail(errc::parse_error, obj_where(name, c.line()) + ": vertex: " + describe_bad_number(c));
+        if (!c.number(x))
+            return fail(errc::parse_error, obj_where(name, c.line()) + ": vertex: " + describe_bad_number(c));
     if (!all_finite(q))
-        return fail(errc::parse_error, obj_where(name, c.line()) + ": vertex " + std::to_string(soup.points.size() + 1) +
+        return fail(errc::parse_error, obj_where(name, c.line()) + ": vertex " +
+                                           std::to_string(soup.points.size() + 1) +
                                            " has a coordinate that is not finite (NaN or infinity)");
     soup.points.push_back(q);
     std::array<double, 4> extra{};
@@ -80,9 +84,11 @@ inline result<void> obj_read_vertex(text_cursor& c, polygon_soup& soup, const st
 inline result<void> obj_read_normal(text_cursor& c, obj_parse_state& state, const std::string& name) {
     std::array<float, 3> n{};
     for (auto& x : n)
-        if (!c.number(x)) return fail(errc::parse_error, obj_where(name, c.line()) + ": normal: " + describe_bad_number(c));
+        if (!c.number(x))
+            return fail(errc::parse_error, obj_where(name, c.line()) + ": normal: " + describe_bad_number(c));
     if (!all_finite(n))
-        return fail(errc::parse_error, obj_where(name, c.line()) + ": normal " + std::to_string(state.vn.size() + 1) + " is not finite (NaN or infinity)");
+        return fail(errc::parse_error, obj_where(name, c.line()) + ": normal " + std::to_string(state.vn.size() + 1) +
+                                           " is not finite (NaN or infinity)");
     state.vn.push_back({n[0], n[1], n[2]});
     return {};
 }
@@ -100,7 +106,8 @@ inline result<void> obj_read_face(text_cursor& c, polygon_soup& soup, obj_parse_
         const char* num = (s < end && *s == '+') ? s + 1 : s;
         auto r = std::from_chars(num, end, i);
         if (r.ec != std::errc() || r.ptr == num)
-            return fail(errc::parse_error, obj_where(name, c.line()) + ": '" + std::string(c.peek_token()) + "' is not a vertex index");
+            return fail(errc::parse_error,
+                        obj_where(name, c.line()) + ": '" + std::string(c.peek_token()) + "' is not a vertex index");
         const char* q = r.ptr;
         long long normal = 0;
         if (q < end && *q == '/') {
@@ -110,18 +117,21 @@ inline result<void> obj_read_face(text_cursor& c, polygon_soup& soup, obj_parse_
                 ++q;
                 auto rn = std::from_chars(q, end, normal);
                 if (rn.ec != std::errc() || rn.ptr == q)
-                    return fail(errc::parse_error, obj_where(name, c.line()) + ": '" + std::string(c.peek_token()) + "' has a bad normal index");
+                    return fail(errc::parse_error, obj_where(name, c.line()) + ": '" + std::string(c.peek_token()) +
+                                                       "' has a bad normal index");
                 q = rn.ptr;
             }
         }
         if (q < end && *q != ' ' && *q != '\t' && *q != '\r' && *q != '\n')
-            return fail(errc::parse_error, obj_where(name, c.line()) + ": '" + std::string(c.peek_token()) + "' is not a vertex index");
+            return fail(errc::parse_error,
+                        obj_where(name, c.line()) + ": '" + std::string(c.peek_token()) + "' is not a vertex index");
         c.set_pos(q);
-        if (i == 0) return fail(errc::parse_error, obj_where(name, c.line()) + ": vertex index 0 (OBJ indices start at 1)");
+        if (i == 0)
+            return fail(errc::parse_error, obj_where(name, c.line()) + ": vertex index 0 (OBJ indices start at 1)");
         long long resolved = i > 0 ? i - 1 : n + i;
         if (resolved < 0 || resolved > UINT32_MAX - 1)
-            return fail(errc::parse_error, obj_where(name, c.line()) + ": vertex index " + std::to_string(i) + " is out of range (" + std::to_string(n) +
-                                               " vertices so far)");
+            return fail(errc::parse_error, obj_where(name, c.line()) + ": vertex index " + std::to_string(i) +
+                                               " is out of range (" + std::to_string(n) + " vertices so far)");
         if (resolved >= n && resolved > state.max_index) {
             state.max_index = resolved;
             state.max_index_line = c.line();
@@ -132,13 +142,15 @@ inline result<void> obj_read_face(text_cursor& c, polygon_soup& soup, obj_parse_
             const long long nn = static_cast<long long>(state.vn.size());
             const long long rn = normal > 0 ? normal - 1 : nn + normal;
             if (rn < 0 || rn >= nn)
-                return fail(errc::parse_error, obj_where(name, c.line()) + ": normal index " + std::to_string(normal) + " is out of range (" +
-                                                   std::to_string(nn) + " normals so far)");
+                return fail(errc::parse_error, obj_where(name, c.line()) + ": normal index " + std::to_string(normal) +
+                                                   " is out of range (" + std::to_string(nn) + " normals so far)");
             state.normal_refs.push_back({static_cast<std::uint32_t>(resolved), static_cast<std::uint32_t>(rn)});
         }
     }
     const std::size_t k = soup.indices.size() - start;
-    if (k < 3) return fail(errc::degenerate_face, obj_where(name, c.line()) + ": a face needs at least 3 vertices, got " + std::to_string(k));
+    if (k < 3)
+        return fail(errc::degenerate_face,
+                    obj_where(name, c.line()) + ": a face needs at least 3 vertices, got " + std::to_string(k));
     soup.face_offsets.push_back(soup.indices.size());
     return {};
 }
@@ -147,8 +159,9 @@ inline result<void> obj_read_face(text_cursor& c, polygon_soup& soup, obj_parse_
 /// vertex (white where a `v` line had none); a vertex's normal is the first one a face gives it.
 inline result<void> obj_finish(polygon_soup& soup, const obj_parse_state& state, const std::string& name) {
     if (state.max_index >= static_cast<long long>(soup.points.size()))
-        return fail(errc::parse_error, obj_where(name, state.max_index_line) + ": vertex index " + std::to_string(state.max_index_raw) +
-                                           " is out of range (the file has " + std::to_string(soup.points.size()) + " vertices)");
+        return fail(errc::parse_error, obj_where(name, state.max_index_line) + ": vertex index " +
+                                           std::to_string(state.max_index_raw) + " is out of range (the file has " +
+                                           std::to_string(soup.points.size()) + " vertices)");
     if (!soup.attributes.colors.empty()) soup.attributes.colors.resize(soup.points.size(), {255, 255, 255, 255});
     if (!state.normal_refs.empty()) {
         soup.attributes.normals.assign(soup.points.size(), vec3<float>{});

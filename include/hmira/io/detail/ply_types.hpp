@@ -26,9 +26,13 @@ inline ply_type ply_type_from(std::string_view s) {
 
 inline std::size_t ply_size(ply_type t) {
     switch (t) {
-        case ply_type::i8: case ply_type::u8: return 1;
-        case ply_type::i16: case ply_type::u16: return 2;
-        case ply_type::i32: case ply_type::u32: case ply_type::f32: return 4;
+        case ply_type::i8:
+        case ply_type::u8: return 1;
+        case ply_type::i16:
+        case ply_type::u16: return 2;
+        case ply_type::i32:
+        case ply_type::u32:
+        case ply_type::f32: return 4;
         case ply_type::f64: return 8;
         default: return 0;
     }
@@ -38,10 +42,14 @@ inline bool ply_is_integer(ply_type t) { return t != ply_type::f32 && t != ply_t
 
 template <class U>
 U ply_swap(U v) {
-    if constexpr (sizeof(U) == 2) return static_cast<U>(__builtin_bswap16(static_cast<std::uint16_t>(v)));
-    else if constexpr (sizeof(U) == 4) return static_cast<U>(__builtin_bswap32(static_cast<std::uint32_t>(v)));
-    else if constexpr (sizeof(U) == 8) return static_cast<U>(__builtin_bswap64(static_cast<std::uint64_t>(v)));
-    else return v;
+    if constexpr (sizeof(U) == 2)
+        return static_cast<U>(__builtin_bswap16(static_cast<std::uint16_t>(v)));
+    else if constexpr (sizeof(U) == 4)
+        return static_cast<U>(__builtin_bswap32(static_cast<std::uint32_t>(v)));
+    else if constexpr (sizeof(U) == 8)
+        return static_cast<U>(__builtin_bswap64(static_cast<std::uint64_t>(v)));
+    else
+        return v;
 }
 
 template <class V, bool Swap>
@@ -51,7 +59,8 @@ V ply_raw(const char* p) {
         std::memcpy(&v, p, 1);
         return v;
     } else {
-        using U = std::conditional_t<sizeof(V) == 2, std::uint16_t, std::conditional_t<sizeof(V) == 4, std::uint32_t, std::uint64_t>>;
+        using U = std::conditional_t<sizeof(V) == 2, std::uint16_t,
+                                     std::conditional_t<sizeof(V) == 4, std::uint32_t, std::uint64_t>>;
         U u;
         std::memcpy(&u, p, sizeof u);
         if constexpr (Swap) u = ply_swap(u);

@@ -39,7 +39,9 @@ bool put_ply(const M& mesh, std::ostream& stream, const write_options& options) 
     }
     const bool wide_count = max_degree > 255;
     b += "ply\nformat ";
-    b += options.ply == ply_encoding::ascii ? "ascii" : options.ply == ply_encoding::binary_little_endian ? "binary_little_endian" : "binary_big_endian";
+    b += options.ply == ply_encoding::ascii                  ? "ascii"
+         : options.ply == ply_encoding::binary_little_endian ? "binary_little_endian"
+                                                             : "binary_big_endian";
     b += " 1.0\ncomment written by hmira\nelement vertex ";
     detail::append_number(b, std::uint64_t{T::vertex_count(mesh)});
     const char* ct = use_float ? "float" : "double";
@@ -50,14 +52,19 @@ bool put_ply(const M& mesh, std::ostream& stream, const write_options& options) 
         for (const char* ch : {"red", "green", "blue", "alpha"}) b += std::string("\nproperty uchar ") + ch;
     b += "\nelement face ";
     detail::append_number(b, std::uint64_t{T::face_count(mesh)});
-    b += wide_count ? "\nproperty list uint int vertex_indices\nend_header\n" : "\nproperty list uchar int vertex_indices\nend_header\n";
+    b += wide_count ? "\nproperty list uint int vertex_indices\nend_header\n"
+                    : "\nproperty list uchar int vertex_indices\nend_header\n";
 
     const bool ascii = options.ply == ply_encoding::ascii;
-    const bool swap = (options.ply == ply_encoding::binary_little_endian) != (std::endian::native == std::endian::little);
+    const bool swap =
+        (options.ply == ply_encoding::binary_little_endian) != (std::endian::native == std::endian::little);
     auto put = [&](auto value) {
         if (swap) {
             using V = decltype(value);
-            using U = std::conditional_t<sizeof(V) == 1, std::uint8_t, std::conditional_t<sizeof(V) == 2, std::uint16_t, std::conditional_t<sizeof(V) == 4, std::uint32_t, std::uint64_t>>>;
+            using U = std::conditional_t<
+                sizeof(V) == 1, std::uint8_t,
+                std::conditional_t<sizeof(V) == 2, std::uint16_t,
+                                   std::conditional_t<sizeof(V) == 4, std::uint32_t, std::uint64_t>>>;
             U u;
             std::memcpy(&u, &value, sizeof u);
             u = detail::ply_swap(u);
@@ -73,18 +80,23 @@ bool put_ply(const M& mesh, std::ostream& stream, const write_options& options) 
         if (ascii) {
             for (std::size_t k = 0; k < 3; ++k) {
                 if (k) b += ' ';
-                if (use_float) detail::append_number(b, static_cast<float>(p[k]));
-                else detail::append_number(b, static_cast<double>(p[k]));
+                if (use_float)
+                    detail::append_number(b, static_cast<float>(p[k]));
+                else
+                    detail::append_number(b, static_cast<double>(p[k]));
             }
             if (attr.normals)
                 for (std::size_t k = 0; k < 3; ++k) b += ' ', detail::append_number(b, attr.normals[vi][k]);
             if (attr.colors)
-                for (std::size_t k = 0; k < 4; ++k) b += ' ', detail::append_number(b, std::uint64_t{attr.colors[vi][k]});
+                for (std::size_t k = 0; k < 4; ++k)
+                    b += ' ', detail::append_number(b, std::uint64_t{attr.colors[vi][k]});
             b += '\n';
         } else {
             for (std::size_t k = 0; k < 3; ++k) {
-                if (use_float) put(static_cast<float>(p[k]));
-                else put(static_cast<double>(p[k]));
+                if (use_float)
+                    put(static_cast<float>(p[k]));
+                else
+                    put(static_cast<double>(p[k]));
             }
             if (attr.normals)
                 for (std::size_t k = 0; k < 3; ++k) put(attr.normals[vi][k]);
@@ -102,8 +114,10 @@ bool put_ply(const M& mesh, std::ostream& stream, const write_options& options) 
             for (auto i : loop) b += ' ', detail::append_number(b, i);
             b += '\n';
         } else {
-            if (wide_count) put(static_cast<std::uint32_t>(loop.size()));
-            else put(static_cast<std::uint8_t>(loop.size()));
+            if (wide_count)
+                put(static_cast<std::uint32_t>(loop.size()));
+            else
+                put(static_cast<std::uint8_t>(loop.size()));
             for (auto i : loop) put(static_cast<std::int32_t>(i));
         }
         if (!out.maybe_flush()) return false;

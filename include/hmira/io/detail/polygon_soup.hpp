@@ -29,7 +29,7 @@ struct polygon_soup {
     std::vector<std::array<double, 3>> points;   ///< positions, in file order
     std::vector<std::uint64_t> face_offsets{0};  ///< face i is indices[face_offsets[i] .. face_offsets[i+1])
     std::vector<std::uint32_t> indices;          ///< face corners: indices into points
-    mesh_attributes attributes;  ///< empty vectors, or one entry per point
+    mesh_attributes attributes;                  ///< empty vectors, or one entry per point
     /// Number of faces.
     std::size_t face_count() const noexcept { return face_offsets.size() - 1; }
 };
@@ -90,9 +90,11 @@ attribute_source find_attributes(const M& mesh, const write_options& options) {
         return s;
     }
     if constexpr (has_vertex_properties<M>) {
-        if (auto p = mesh.template get_vertex_property<vec3<float>>("v:normal"); p && p->values().size() >= bound && bound > 0)
+        if (auto p = mesh.template get_vertex_property<vec3<float>>("v:normal");
+            p && p->values().size() >= bound && bound > 0)
             s.normals = p->values().data();
-        if (auto p = mesh.template get_vertex_property<color4>("v:color"); p && p->values().size() >= bound && bound > 0)
+        if (auto p = mesh.template get_vertex_property<color4>("v:color");
+            p && p->values().size() >= bound && bound > 0)
             s.colors = p->values().data();
     }
     return s;
@@ -156,26 +158,30 @@ namespace detail {
 /// A model that takes indexed polygons whole, validated in one pass (face_vertex_mesh's
 /// assign), under its own traits.
 template <class M, class T>
-concept takes_indexed_polygons = std::same_as<T, default_traits<M>> && requires(M& mesh, const polygon_soup& soup, std::vector<std::size_t> offsets) {
-    { mesh.assign(std::span<const std::array<double, 3>>(soup.points), std::move(offsets), std::span<const std::uint32_t>(soup.indices)) };
-};
+concept takes_indexed_polygons = std::same_as<T, default_traits<M>> &&
+                                 requires(M& mesh, const polygon_soup& soup, std::vector<std::size_t> offsets) {
+                                     {
+                                         mesh.assign(std::span<const std::array<double, 3>>(soup.points),
+                                                     std::move(offsets), std::span<const std::uint32_t>(soup.indices))
+                                     };
+                                 };
 
 /// A model that takes positions, offsets and corners of its own types whole (face_vertex_mesh's
 /// by-move assign), under its own traits: a reader can parse straight into its arrays.
 template <class M, class T>
-concept takes_own_arrays = std::same_as<T, default_traits<M>> && requires(M& mesh, std::vector<typename M::point> positions,
-                                                                          std::vector<std::size_t> offsets,
-                                                                          std::vector<typename T::vertex_handle> corners) {
-    { mesh.assign(std::move(positions), std::move(offsets), std::move(corners)) };
-};
+concept takes_own_arrays = std::same_as<T, default_traits<M>> &&
+                           requires(M& mesh, std::vector<typename M::point> positions, std::vector<std::size_t> offsets,
+                                    std::vector<typename T::vertex_handle> corners) {
+                               { mesh.assign(std::move(positions), std::move(offsets), std::move(corners)) };
+                           };
 
 /// A polygon soup in such a model's own position and corner types, for a parser to fill.
 template <class M, class T>
 struct mesh_soup {
-    std::vector<typename M::point> points;                 ///< positions, in file order
-    std::vector<std::uint64_t> face_offsets{0};            ///< as polygon_soup::face_offsets
-    std::vector<typename T::vertex_handle> indices;        ///< face corners
-    mesh_attributes attributes;                            ///< empty vectors, or one entry per point
+    std::vector<typename M::point> points;           ///< positions, in file order
+    std::vector<std::uint64_t> face_offsets{0};      ///< as polygon_soup::face_offsets
+    std::vector<typename T::vertex_handle> indices;  ///< face corners
+    mesh_attributes attributes;                      ///< empty vectors, or one entry per point
 };
 
 /// The parsed arrays handed to the mesh whole (see takes_own_arrays); on error the mesh is
@@ -186,7 +192,8 @@ result<read_report> assign_own_arrays(M& mesh, mesh_soup<M, T>&& soup, const std
     report.file_vertices = soup.points.size();
     report.format = std::move(format);
     if (soup.points.size() > std::size_t{0xffffffffu})
-        return fail(errc::unsupported, name + ": " + std::to_string(soup.points.size()) + " vertices; at most 2^32 - 1 are supported");
+        return fail(errc::unsupported,
+                    name + ": " + std::to_string(soup.points.size()) + " vertices; at most 2^32 - 1 are supported");
     std::vector<std::size_t> offsets;
     if constexpr (std::same_as<std::size_t, std::uint64_t>)
         offsets = std::move(soup.face_offsets);
@@ -203,7 +210,8 @@ result<read_report> assign_own_arrays(M& mesh, mesh_soup<M, T>&& soup, const std
     if (!soup.attributes.normals.empty() || !soup.attributes.colors.empty()) {
         std::vector<typename T::vertex_handle> vs;
         vs.reserve(vertex_count);
-        for (std::size_t i = 0; i < vertex_count; ++i) vs.push_back(typename T::vertex_handle(static_cast<std::uint32_t>(i)));
+        for (std::size_t i = 0; i < vertex_count; ++i)
+            vs.push_back(typename T::vertex_handle(static_cast<std::uint32_t>(i)));
         store_attribute_properties<M, T>(mesh, soup.attributes, vs);
     }
     report.attributes = std::move(soup.attributes);
@@ -212,8 +220,10 @@ result<read_report> assign_own_arrays(M& mesh, mesh_soup<M, T>&& soup, const std
 
 /// The soup into such a model: unchanged on error, whose face is named by face_origin.
 template <class M, class T, class Origin>
-result<void> assign_indexed_polygons(M& mesh, const polygon_soup& soup, std::vector<std::size_t>&& offsets, Origin& face_origin) {
-    auto assigned = mesh.assign(std::span<const std::array<double, 3>>(soup.points), std::move(offsets), std::span<const std::uint32_t>(soup.indices));
+result<void> assign_indexed_polygons(M& mesh, const polygon_soup& soup, std::vector<std::size_t>&& offsets,
+                                     Origin& face_origin) {
+    auto assigned = mesh.assign(std::span<const std::array<double, 3>>(soup.points), std::move(offsets),
+                                std::span<const std::uint32_t>(soup.indices));
     if (!assigned) {
         auto e = assigned.error();
         const auto f = static_cast<std::size_t>(e.element < 0 ? 0 : e.element);
@@ -223,7 +233,8 @@ result<void> assign_indexed_polygons(M& mesh, const polygon_soup& soup, std::vec
     if (!soup.attributes.normals.empty() || !soup.attributes.colors.empty()) {
         std::vector<typename T::vertex_handle> vs;
         vs.reserve(soup.points.size());
-        for (std::size_t i = 0; i < soup.points.size(); ++i) vs.push_back(typename T::vertex_handle(static_cast<std::uint32_t>(i)));
+        for (std::size_t i = 0; i < soup.points.size(); ++i)
+            vs.push_back(typename T::vertex_handle(static_cast<std::uint32_t>(i)));
         store_attribute_properties<M, T>(mesh, soup.attributes, vs);
     }
     return {};
@@ -271,14 +282,17 @@ namespace detail {
 /// The first thing a repair changed, as "face 12: <why>", for refusing a file without repair.
 inline std::pair<long long, std::string> first_repair(const soup_repair_report& r) {
     auto face = [](const repair_count& c) { return static_cast<long long>(c.first.empty() ? 0 : c.first.front()); };
-    if (r.degenerate_faces.count) return {face(r.degenerate_faces), "degenerate (fewer than 3 distinct corners, or a repeated vertex)"};
+    if (r.degenerate_faces.count)
+        return {face(r.degenerate_faces), "degenerate (fewer than 3 distinct corners, or a repeated vertex)"};
     if (r.merged_corners.count) return {face(r.merged_corners), "repeats a corner"};
-    if (r.nonmanifold_edge_faces.count) return {face(r.nonmanifold_edge_faces), "is a third face on an edge (non-manifold edge)"};
+    if (r.nonmanifold_edge_faces.count)
+        return {face(r.nonmanifold_edge_faces), "is a third face on an edge (non-manifold edge)"};
     if (r.detached_faces.count) return {face(r.detached_faces), "would make an edge non-manifold"};
     if (r.flipped_faces.count) return {face(r.flipped_faces), "is wound against its neighbours"};
     if (r.orientation_cuts) return {-1, "the surface cannot be oriented (Moebius-like)"};
     if (r.split_vertices.count)
-        return {-1, "vertex " + std::to_string(r.split_vertices.first.front()) + " is non-manifold (its faces form several fans)"};
+        return {-1, "vertex " + std::to_string(r.split_vertices.first.front()) +
+                        " is non-manifold (its faces form several fans)"};
     return {-1, ""};
 }
 
@@ -293,7 +307,8 @@ namespace detail {
 template <class M, class T>
 concept assigns_polygons = std::same_as<T, default_traits<M>> && requires(M& mesh, const polygon_soup& soup) {
     {
-        mesh.assign_polygons(std::span<const std::array<double, 3>>(soup.points), std::span<const std::uint64_t>(soup.face_offsets),
+        mesh.assign_polygons(std::span<const std::array<double, 3>>(soup.points),
+                             std::span<const std::uint64_t>(soup.face_offsets),
                              std::span<const std::uint32_t>(soup.indices))
     } -> std::same_as<result<void>>;
 };
@@ -303,15 +318,18 @@ concept assigns_polygons = std::same_as<T, default_traits<M>> && requires(M& mes
 /// still takes. Kept callable so that tests can compare the two.
 template <class M, class T = default_traits<M>>
     requires readable_mesh<M, T> && halfedge_navigable_mesh<M, T>
-result<read_report> build_with_repair(M& mesh, polygon_soup&& soup, const std::string& name, const read_options& options = {}) {
+result<read_report> build_with_repair(M& mesh, polygon_soup&& soup, const std::string& name,
+                                      const read_options& options = {}) {
     read_report report;
     report.file_vertices = soup.points.size();
     if (soup.points.size() > std::size_t{0xffffffffu})
-        return fail(errc::unsupported, name + ": " + std::to_string(soup.points.size()) + " vertices; at most 2^32 - 1 are supported");
+        return fail(errc::unsupported,
+                    name + ": " + std::to_string(soup.points.size()) + " vertices; at most 2^32 - 1 are supported");
     {
         using VH = typename T::vertex_handle;
         using S = typename T::scalar;
-        auto repaired = repair_polygon_soup(soup.points.size(), soup.face_offsets, soup.indices, {.nonmanifold_edges = options.nonmanifold_edges});
+        auto repaired = repair_polygon_soup(soup.points.size(), soup.face_offsets, soup.indices,
+                                            {.nonmanifold_edges = options.nonmanifold_edges});
         if (!repaired) {
             auto e = repaired.error();
             e.message = name + ": " + e.message;
@@ -319,16 +337,20 @@ result<read_report> build_with_repair(M& mesh, polygon_soup&& soup, const std::s
         }
         if (!options.repair && !repaired->report.clean()) {
             const auto [face, why] = detail::first_repair(repaired->report);
-            return fail(errc::non_manifold, name + (face >= 0 ? ": face " + std::to_string(face) + " " : ": ") + why +
-                                                " (read with repair to fix it)", face);
+            return fail(errc::non_manifold,
+                        name + (face >= 0 ? ": face " + std::to_string(face) + " " : ": ") + why +
+                            " (read with repair to fix it)",
+                        face);
         }
         if constexpr (triangle_only_mesh<M, T>) {
             for (std::size_t f = 0; f < repaired->face_count(); ++f)
                 if (repaired->face_offsets[f + 1] - repaired->face_offsets[f] != 3) {
                     const auto source = repaired->face_source[f];
-                    return fail(errc::unsupported, name + ": face " + std::to_string(source) + " has " +
-                                                       std::to_string(repaired->face_offsets[f + 1] - repaired->face_offsets[f]) +
-                                                       " corners; this mesh holds triangles only", static_cast<long long>(source));
+                    return fail(errc::unsupported,
+                                name + ": face " + std::to_string(source) + " has " +
+                                    std::to_string(repaired->face_offsets[f + 1] - repaired->face_offsets[f]) +
+                                    " corners; this mesh holds triangles only",
+                                static_cast<long long>(source));
                 }
         }
         // Nothing below can fail: the repaired soup is one every half-edge model holds.
@@ -336,23 +358,27 @@ result<read_report> build_with_repair(M& mesh, polygon_soup&& soup, const std::s
         // Room for every element up front (edges: half the corners, plus room for boundaries), so that the build
         // does not reallocate the mesh's arrays as it grows.
         if constexpr (reservable_mesh<M, T>)
-            T::reserve(mesh, repaired->vertex_count, repaired->corners.size() / 2 + repaired->vertex_count, repaired->face_count());
+            T::reserve(mesh, repaired->vertex_count, repaired->corners.size() / 2 + repaired->vertex_count,
+                       repaired->face_count());
         std::vector<VH> vs;
         vs.reserve(repaired->vertex_count);
         for (std::size_t v = 0; v < repaired->vertex_count; ++v) {
             const auto& p = soup.points[repaired->source_vertex(v)];
-            vs.push_back(T::add_vertex(mesh, vec3<S>{static_cast<S>(p[0]), static_cast<S>(p[1]), static_cast<S>(p[2])}));
+            vs.push_back(
+                T::add_vertex(mesh, vec3<S>{static_cast<S>(p[0]), static_cast<S>(p[1]), static_cast<S>(p[2])}));
         }
         std::vector<VH> corners;
         for (std::size_t f = 0; f < repaired->face_count(); ++f) {
             corners.clear();
-            for (auto k = repaired->face_offsets[f]; k < repaired->face_offsets[f + 1]; ++k) corners.push_back(vs[repaired->corners[k]]);
+            for (auto k = repaired->face_offsets[f]; k < repaired->face_offsets[f + 1]; ++k)
+                corners.push_back(vs[repaired->corners[k]]);
             auto added = T::add_face(mesh, std::span<const VH>(corners));
             if (!added) {
                 // A bug in the repair, not in the file: leave an empty mesh rather than half of one.
                 detail::clear_for_reading(mesh);
                 auto e = added.error();
-                e.message = name + ": internal error: repaired face " + std::to_string(repaired->face_source[f]) + " rejected: " + e.message;
+                e.message = name + ": internal error: repaired face " + std::to_string(repaired->face_source[f]) +
+                            " rejected: " + e.message;
                 e.element = static_cast<long long>(repaired->face_source[f]);
                 return e;
             }
@@ -391,8 +417,12 @@ struct point_soup {
 template <class M, class T>
 concept assigns_own_positions =
     assigns_polygons<M, T> && std::same_as<typename T::scalar, double> &&
-    requires(M& mesh, std::vector<typename M::point>& points, const std::vector<std::uint64_t>& offsets, const std::vector<std::uint32_t>& corners) {
-        { mesh.assign_polygons(points, std::span<const std::uint64_t>(offsets), std::span<const std::uint32_t>(corners)) } -> std::same_as<result<void>>;
+    requires(M& mesh, std::vector<typename M::point>& points, const std::vector<std::uint64_t>& offsets,
+             const std::vector<std::uint32_t>& corners) {
+        {
+            mesh.assign_polygons(points, std::span<const std::uint64_t>(offsets),
+                                 std::span<const std::uint32_t>(corners))
+        } -> std::same_as<result<void>>;
     };
 
 /// build_from_soup for such a model and such a soup: a file that needs no repair is built in
@@ -400,19 +430,22 @@ concept assigns_own_positions =
 /// as the same file parsed into a polygon_soup would.
 template <class M, class T>
     requires assigns_own_positions<M, T> && readable_mesh<M, T> && halfedge_navigable_mesh<M, T>
-result<read_report> build_from_point_soup(M& mesh, point_soup<typename M::point>&& soup, const std::string& name, std::string format,
-                                          const read_options& options) {
+result<read_report> build_from_point_soup(M& mesh, point_soup<typename M::point>&& soup, const std::string& name,
+                                          std::string format, const read_options& options) {
     read_report report;
     report.file_vertices = soup.points.size();
     report.format = std::move(format);
     if (soup.points.size() > std::size_t{0xffffffffu})
-        return fail(errc::unsupported, name + ": " + std::to_string(soup.points.size()) + " vertices; at most 2^32 - 1 are supported");
+        return fail(errc::unsupported,
+                    name + ": " + std::to_string(soup.points.size()) + " vertices; at most 2^32 - 1 are supported");
     const std::size_t vertex_count = soup.points.size();
-    if (auto built = mesh.assign_polygons(soup.points, std::span<const std::uint64_t>(soup.face_offsets), std::span<const std::uint32_t>(soup.indices))) {
+    if (auto built = mesh.assign_polygons(soup.points, std::span<const std::uint64_t>(soup.face_offsets),
+                                          std::span<const std::uint32_t>(soup.indices))) {
         std::vector<typename T::vertex_handle> vs;
         if (!soup.attributes.normals.empty() || !soup.attributes.colors.empty()) {
             vs.reserve(vertex_count);
-            for (std::size_t i = 0; i < vertex_count; ++i) vs.push_back(typename T::vertex_handle(static_cast<std::uint32_t>(i)));
+            for (std::size_t i = 0; i < vertex_count; ++i)
+                vs.push_back(typename T::vertex_handle(static_cast<std::uint32_t>(i)));
         }
         store_attribute_properties<M, T>(mesh, soup.attributes, vs);
         report.attributes = std::move(soup.attributes);
@@ -448,11 +481,13 @@ result<read_report> build_from_point_soup(M& mesh, point_soup<typename M::point>
 /// from_polygons), then the repair's cost on top only if that build refuses it.
 template <class M, class T = default_traits<M>>
     requires readable_mesh<M, T>
-result<read_report> build_from_soup(M& mesh, polygon_soup&& soup, const std::string& name, const read_options& options = {}) {
+result<read_report> build_from_soup(M& mesh, polygon_soup&& soup, const std::string& name,
+                                    const read_options& options = {}) {
     read_report report;
     report.file_vertices = soup.points.size();
     if (soup.points.size() > std::size_t{0xffffffffu})
-        return fail(errc::unsupported, name + ": " + std::to_string(soup.points.size()) + " vertices; at most 2^32 - 1 are supported");
+        return fail(errc::unsupported,
+                    name + ": " + std::to_string(soup.points.size()) + " vertices; at most 2^32 - 1 are supported");
     if constexpr (detail::takes_indexed_polygons<M, T>) {
         auto origin = [&](std::size_t) { return name; };
         std::vector<std::size_t> offsets;
@@ -476,12 +511,14 @@ result<read_report> build_from_soup(M& mesh, polygon_soup&& soup, const std::str
         // and for the rest gives the very mesh the repair path's add_face calls give (and a clean
         // report): tests/io/clean_read_fast_path_test.cpp checks both on random soups.
         if constexpr (detail::assigns_polygons<M, T>) {
-            if (auto built = mesh.assign_polygons(std::span<const std::array<double, 3>>(soup.points), std::span<const std::uint64_t>(soup.face_offsets),
+            if (auto built = mesh.assign_polygons(std::span<const std::array<double, 3>>(soup.points),
+                                                  std::span<const std::uint64_t>(soup.face_offsets),
                                                   std::span<const std::uint32_t>(soup.indices))) {
                 std::vector<typename T::vertex_handle> vs;
                 if (!soup.attributes.normals.empty() || !soup.attributes.colors.empty()) {
                     vs.reserve(soup.points.size());
-                    for (std::size_t i = 0; i < soup.points.size(); ++i) vs.push_back(typename T::vertex_handle(static_cast<std::uint32_t>(i)));
+                    for (std::size_t i = 0; i < soup.points.size(); ++i)
+                        vs.push_back(typename T::vertex_handle(static_cast<std::uint32_t>(i)));
                 }
                 detail::store_attribute_properties<M, T>(mesh, soup.attributes, vs);
                 report.attributes = std::move(soup.attributes);
@@ -496,8 +533,8 @@ result<read_report> build_from_soup(M& mesh, polygon_soup&& soup, const std::str
 /// build_from_soup), the attributes and repairs into the report.
 template <class M, class T = default_traits<M>>
     requires readable_mesh<M, T>
-result<read_report> finish_read(M& mesh, polygon_soup&& soup, const std::string& name, std::string format, std::size_t dropped = 0,
-                                const read_options& options = {}) {
+result<read_report> finish_read(M& mesh, polygon_soup&& soup, const std::string& name, std::string format,
+                                std::size_t dropped = 0, const read_options& options = {}) {
     auto report = build_from_soup<M, T>(mesh, std::move(soup), name, options);
     if (!report) return report.error();
     report->format = std::move(format);

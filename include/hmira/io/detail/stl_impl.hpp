@@ -126,18 +126,24 @@ inline bool stl_starts_with_solid(std::string_view text) {
 
 inline bool looks_binary(std::string_view text) {
     const auto probe = text.substr(0, 4096);
-    return std::any_of(probe.begin(), probe.end(), [](char ch) { return ch == '\0' || (static_cast<unsigned char>(ch) < 9); });
+    return std::any_of(probe.begin(), probe.end(),
+                       [](char ch) { return ch == '\0' || (static_cast<unsigned char>(ch) < 9); });
 }
 
-inline result<void> parse_stl_ascii(std::string_view text, const std::string& name, stl_builder& out, const read_options& options) {
+inline result<void> parse_stl_ascii(std::string_view text, const std::string& name, stl_builder& out,
+                                    const read_options& options) {
     text_cursor c(text);
     progress_ticker ticker(options.progress, text.size());
     auto where = [&] { return name + ":" + std::to_string(c.line()); };
     auto expect = [&](std::string_view word, const char* context) -> result<void> {
         c.skip_space_and_newlines();
-        if (c.at_end()) return fail(errc::parse_error, where() + ": file ends " + context + " (expected '" + std::string(word) + "'; truncated file?)");
+        if (c.at_end())
+            return fail(errc::parse_error, where() + ": file ends " + context + " (expected '" + std::string(word) +
+                                               "'; truncated file?)");
         const auto t = c.token();
-        if (t != word) return fail(errc::parse_error, where() + ": expected '" + std::string(word) + "' " + context + ", found '" + std::string(t.substr(0, 40)) + "'");
+        if (t != word)
+            return fail(errc::parse_error, where() + ": expected '" + std::string(word) + "' " + context + ", found '" +
+                                               std::string(t.substr(0, 40)) + "'");
         return {};
     };
     std::size_t facet = 0;
@@ -156,31 +162,42 @@ inline result<void> parse_stl_ascii(std::string_view text, const std::string& na
             c.next_line();
             continue;
         }
-        if (t != "facet") return fail(errc::parse_error, where() + ": expected 'facet' or 'endsolid', found '" + std::string(t.substr(0, 40)) + "'");
+        if (t != "facet")
+            return fail(errc::parse_error,
+                        where() + ": expected 'facet' or 'endsolid', found '" + std::string(t.substr(0, 40)) + "'");
         if (!in_solid) return fail(errc::parse_error, where() + ": 'facet' outside 'solid' ... 'endsolid'");
         const std::string ctx = "in facet " + std::to_string(facet);
         if (auto r = expect("normal", ctx.c_str()); !r) return r;
         for (int k = 0; k < 3; ++k) {
             float x = 0;
-            if (!c.number(x)) return fail(errc::parse_error, where() + ": facet " + std::to_string(facet) + " normal: " + describe_bad_number(c));
+            if (!c.number(x))
+                return fail(errc::parse_error,
+                            where() + ": facet " + std::to_string(facet) + " normal: " + describe_bad_number(c));
         }
         if (auto r = expect("outer", ctx.c_str()); !r) return r;
         if (auto r = expect("loop", ctx.c_str()); !r) return r;
         std::array<std::array<float, 3>, 3> tri{};
         for (std::size_t v = 0; v < 3; ++v) {
             c.skip_space_and_newlines();
-            if (c.at_end()) return fail(errc::parse_error, where() + ": file ends in facet " + std::to_string(facet) + " (truncated file?)");
+            if (c.at_end())
+                return fail(errc::parse_error,
+                            where() + ": file ends in facet " + std::to_string(facet) + " (truncated file?)");
             const auto w = c.token();
             if (w != "vertex")
-                return fail(errc::parse_error, where() + ": facet " + std::to_string(facet) + " has " + std::to_string(v) +
-                                                   " vertices; STL facets need exactly 3 (found '" + std::string(w.substr(0, 40)) + "')");
+                return fail(errc::parse_error, where() + ": facet " + std::to_string(facet) + " has " +
+                                                   std::to_string(v) + " vertices; STL facets need exactly 3 (found '" +
+                                                   std::string(w.substr(0, 40)) + "')");
             for (auto& x : tri[v])
-                if (!c.number(x)) return fail(errc::parse_error, where() + ": facet " + std::to_string(facet) + " vertex: " + describe_bad_number(c));
+                if (!c.number(x))
+                    return fail(errc::parse_error,
+                                where() + ": facet " + std::to_string(facet) + " vertex: " + describe_bad_number(c));
             if (!all_finite(tri[v]))
-                return fail(errc::parse_error, where() + ": facet " + std::to_string(facet) + " has a vertex coordinate that is not finite (NaN or infinity)");
+                return fail(errc::parse_error, where() + ": facet " + std::to_string(facet) +
+                                                   " has a vertex coordinate that is not finite (NaN or infinity)");
         }
         c.skip_space_and_newlines();
-        if (c.peek_token() == "vertex") return fail(errc::parse_error, where() + ": facet " + std::to_string(facet) + " has more than 3 vertices");
+        if (c.peek_token() == "vertex")
+            return fail(errc::parse_error, where() + ": facet " + std::to_string(facet) + " has more than 3 vertices");
         if (auto r = expect("endloop", ctx.c_str()); !r) return r;
         if (auto r = expect("endfacet", ctx.c_str()); !r) return r;
         out.add(tri);
@@ -195,7 +212,8 @@ inline result<void> parse_stl_ascii(std::string_view text, const std::string& na
 /// Writes STL through `out`, with the triangles `plan` gives (detail::plan_stl_triangles);
 /// facet normals are computed from the corners (zero for degenerate triangles).
 template <class M, class T>
-bool write_stl_planned(const M& mesh, std::ostream& stream, const stl_triangles<M, T>& plan, const write_options& options) {
+bool write_stl_planned(const M& mesh, std::ostream& stream, const stl_triangles<M, T>& plan,
+                       const write_options& options) {
     using S = typename T::scalar;
     chunked_output out(stream);
     auto& b = out.buffer();
@@ -212,7 +230,8 @@ bool write_stl_planned(const M& mesh, std::ostream& stream, const stl_triangles<
         b.append(reinterpret_cast<const char*>(&n), 4);
     }
     auto put_float = [&](float x) {
-        if constexpr (std::endian::native == std::endian::big) x = std::bit_cast<float>(__builtin_bswap32(std::bit_cast<std::uint32_t>(x)));
+        if constexpr (std::endian::native == std::endian::big)
+            x = std::bit_cast<float>(__builtin_bswap32(std::bit_cast<std::uint32_t>(x)));
         b.append(reinterpret_cast<const char*>(&x), 4);
     };
     auto put_triangle = [&](const std::array<vec3<S>, 3>& tri) {

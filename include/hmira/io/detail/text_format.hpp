@@ -68,7 +68,8 @@ std::vector<std::uint32_t> dense_vertex_numbers(const M& mesh) {
 /// a line and is only crossed by next_line() (or skip_space_and_newlines()), which count lines.
 class text_cursor {
 public:
-    explicit text_cursor(std::string_view text) : p_(text.data()), begin_(text.data()), end_(text.data() + text.size()) {}
+    explicit text_cursor(std::string_view text)
+        : p_(text.data()), begin_(text.data()), end_(text.data() + text.size()) {}
 
     bool at_end() const noexcept { return p_ >= end_; }
     std::size_t line() const noexcept { return line_; }
@@ -152,7 +153,8 @@ private:
 /// coordinates and normals must be.
 template <class V>
 bool all_finite(const V& v) noexcept {
-    return std::isfinite(static_cast<double>(v[0])) && std::isfinite(static_cast<double>(v[1])) && std::isfinite(static_cast<double>(v[2]));
+    return std::isfinite(static_cast<double>(v[0])) && std::isfinite(static_cast<double>(v[1])) &&
+           std::isfinite(static_cast<double>(v[2]));
 }
 
 /// A colour channel from a file as a byte, or nothing when it is no colour: NaN, infinite,
@@ -207,7 +209,9 @@ public:
         if (active_ && reported_ < total_) (void)gate_.advance(static_cast<std::size_t>(total_ - reported_));
     }
     /// The error a reader returns when tick() said stop, at `where` (file and line or offset).
-    static hmira::error cancelled(const std::string& where) { return fail(errc::cancelled, where + ": reading cancelled"); }
+    static hmira::error cancelled(const std::string& where) {
+        return fail(errc::cancelled, where + ": reading cancelled");
+    }
 
 private:
     static constexpr std::uint64_t step = 4u << 20;

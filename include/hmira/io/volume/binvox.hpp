@@ -97,48 +97,64 @@ inline result<bit_grid> parse_binvox(std::string_view bytes, const std::string& 
             for (int a = 0; a < n; ++a) {
                 const auto tok = detail::next_token(rest);
                 const auto r = std::from_chars(tok.data(), tok.data() + tok.size(), out[a]);
-                if (tok.empty() || r.ec != std::errc() || r.ptr != tok.data() + tok.size() || !std::isfinite(out[a])) return false;
+                if (tok.empty() || r.ec != std::errc() || r.ptr != tok.data() + tok.size() || !std::isfinite(out[a]))
+                    return false;
             }
             return detail::next_token(rest).empty();
         };
         if (key == "data") break;
         if (key == "dim") {
             double v[3];
-            if (!numbers(v, 3)) return fail(errc::parse_error, where + ": expected 'dim <d> <d> <d>', found '" + std::string(line.substr(0, 60)) + "'");
+            if (!numbers(v, 3))
+                return fail(errc::parse_error,
+                            where + ": expected 'dim <d> <d> <d>', found '" + std::string(line.substr(0, 60)) + "'");
             for (int a = 0; a < 3; ++a) {
                 if (!(v[a] >= 1 && v[a] <= 1024) || v[a] != std::floor(v[a]))
-                    return fail(errc::parse_error, where + ": a binvox dimension must be a whole number from 1 to 1024, found '" + std::string(line.substr(0, 60)) + "'");
+                    return fail(errc::parse_error,
+                                where + ": a binvox dimension must be a whole number from 1 to 1024, found '" +
+                                    std::string(line.substr(0, 60)) + "'");
                 d[a] = static_cast<std::size_t>(v[a]);
             }
             have_dim = true;
         } else if (key == "translate") {
-            if (!numbers(translate, 3)) return fail(errc::parse_error, where + ": expected 'translate <x> <y> <z>' with finite numbers");
+            if (!numbers(translate, 3))
+                return fail(errc::parse_error, where + ": expected 'translate <x> <y> <z>' with finite numbers");
         } else if (key == "scale") {
-            if (!numbers(&scale, 1) || !(scale > 0)) return fail(errc::parse_error, where + ": expected 'scale <s>' with s finite and positive");
+            if (!numbers(&scale, 1) || !(scale > 0))
+                return fail(errc::parse_error, where + ": expected 'scale <s>' with s finite and positive");
         } else if (!key.empty()) {
-            return fail(errc::parse_error, where + ": unexpected header line '" + std::string(line.substr(0, 60)) + "'");
+            return fail(errc::parse_error,
+                        where + ": unexpected header line '" + std::string(line.substr(0, 60)) + "'");
         }
     }
     if (!have_dim) return fail(errc::parse_error, name + ": the header has no 'dim' line");
-    if (d[0] != d[1] || d[1] != d[2]) return fail(errc::unsupported, name + ": dims " + std::to_string(d[0]) + " " + std::to_string(d[1]) + " " + std::to_string(d[2]) + " are not a cube");
+    if (d[0] != d[1] || d[1] != d[2])
+        return fail(errc::unsupported, name + ": dims " + std::to_string(d[0]) + " " + std::to_string(d[1]) + " " +
+                                           std::to_string(d[2]) + " are not a cube");
     const std::size_t n = d[0] * d[1] * d[2], start = lines.position();
     const std::string_view runs = bytes.substr(start);
-    if (runs.size() % 2 != 0) return fail(errc::parse_error, name + ": byte offset " + std::to_string(bytes.size() - 1) + ": a run without its length (odd data size)");
+    if (runs.size() % 2 != 0)
+        return fail(errc::parse_error, name + ": byte offset " + std::to_string(bytes.size() - 1) +
+                                           ": a run without its length (odd data size)");
     // First pass: the runs must cover exactly n voxels.
     std::size_t covered = 0;
     for (std::size_t q = 0; q < runs.size(); q += 2) {
         const auto value = static_cast<unsigned char>(runs[q]), count = static_cast<unsigned char>(runs[q + 1]);
         const auto at = name + ": byte offset " + std::to_string(start + q);
-        if (value > 1) return fail(errc::parse_error, at + ": voxel value " + std::to_string(value) + ", expected 0 or 1");
+        if (value > 1)
+            return fail(errc::parse_error, at + ": voxel value " + std::to_string(value) + ", expected 0 or 1");
         if (count == 0) return fail(errc::parse_error, at + ": a run of length 0");
         if (covered + count > n)
-            return fail(errc::parse_error, at + ": the runs cover more than the " + std::to_string(n) + " voxels of the header's dims");
+            return fail(errc::parse_error,
+                        at + ": the runs cover more than the " + std::to_string(n) + " voxels of the header's dims");
         covered += count;
     }
     if (covered != n)
-        return fail(errc::parse_error, name + ": the runs cover " + std::to_string(covered) + " of the " + std::to_string(n) + " voxels (truncated file?)");
+        return fail(errc::parse_error, name + ": the runs cover " + std::to_string(covered) + " of the " +
+                                           std::to_string(n) + " voxels (truncated file?)");
     const double h = scale / static_cast<double>(d[0]);
-    const grid_geometry g{{d[0], d[1], d[2]}, {translate[0] + 0.5 * h, translate[1] + 0.5 * h, translate[2] + 0.5 * h}, {h, h, h}};
+    const grid_geometry g{
+        {d[0], d[1], d[2]}, {translate[0] + 0.5 * h, translate[1] + 0.5 * h, translate[2] + 0.5 * h}, {h, h, h}};
     if (auto ok = check_grid_geometry(g, name); !ok) return fail(errc::parse_error, ok.error().message);
     bit_grid grid(g);
     // x slowest, then z, y fastest.

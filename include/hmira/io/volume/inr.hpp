@@ -39,9 +39,9 @@ struct inr_options {
 
 /// What an INRIMAGE header says, for callers that want more than the samples.
 struct inr_header {
-    grid_geometry geometry;  ///< dimensions, origin (TX/TY/TZ) and spacing (VX/VY/VZ)
-    std::string type;       ///< "float", "unsigned fixed" or "signed fixed"
-    unsigned bits = 0;      ///< bits per sample: 8, 16, 32 or 64
+    grid_geometry geometry;        ///< dimensions, origin (TX/TY/TZ) and spacing (VX/VY/VZ)
+    std::string type;              ///< "float", "unsigned fixed" or "signed fixed"
+    unsigned bits = 0;             ///< bits per sample: 8, 16, 32 or 64
     bool big_endian = false;       ///< CPU=sun or sgi
     std::size_t header_bytes = 0;  ///< offset of the first sample (a multiple of 256)
     /// Bytes of samples the header declares: dims x (bits / 8).
@@ -57,7 +57,8 @@ inline result<inr_header> parse_inr_header(std::string_view bytes, const std::st
     if (bytes.substr(0, magic.size()) != magic)
         return fail(errc::parse_error, name + ": not an INRIMAGE-4 file (no '#INRIMAGE-4#{' header)");
     const auto end = bytes.find("##}");
-    if (end == std::string_view::npos) return fail(errc::parse_error, name + ": header has no '##}' terminator (truncated?)");
+    if (end == std::string_view::npos)
+        return fail(errc::parse_error, name + ": header has no '##}' terminator (truncated?)");
     inr_header h;
     h.header_bytes = (end + 3 + 1 + 255) / 256 * 256;  // the header is padded to 256-byte blocks
     if (h.header_bytes > bytes.size()) return fail(errc::parse_error, name + ": file ends inside the header");
@@ -81,11 +82,13 @@ inline result<inr_header> parse_inr_header(std::string_view bytes, const std::st
             return r.ec == std::errc() && r.ptr != v.data();
         };
         double d = 0;
-        const std::string where = name + ": header line " + std::to_string(lines.line_number() + 1) + ": " + key + "=" + val.substr(0, 40);
+        const std::string where =
+            name + ": header line " + std::to_string(lines.line_number() + 1) + ": " + key + "=" + val.substr(0, 40);
         auto bad = [&](const char* why) { return fail(errc::parse_error, where + ": " + why); };
         if (key == "XDIM" || key == "YDIM" || key == "ZDIM" || key == "VDIM") {
             // 2^40 bounds every real volume and keeps the products below 2^64.
-            if (!number(d) || !(d >= 1 && d <= 0x1p40) || d != std::floor(d)) return bad("a dimension must be a whole number from 1 to 2^40");
+            if (!number(d) || !(d >= 1 && d <= 0x1p40) || d != std::floor(d))
+                return bad("a dimension must be a whole number from 1 to 2^40");
             if (key == "VDIM") {
                 vdim = static_cast<std::uint64_t>(d);
             } else {
@@ -93,7 +96,8 @@ inline result<inr_header> parse_inr_header(std::string_view bytes, const std::st
                 have_dim[key[0] - 'X'] = true;
             }
         } else if (key == "VX" || key == "VY" || key == "VZ") {
-            if (!number(d) || !std::isfinite(d) || !(d > 0)) return bad("a voxel size (spacing) must be a finite positive number");
+            if (!number(d) || !std::isfinite(d) || !(d > 0))
+                return bad("a voxel size (spacing) must be a finite positive number");
             vox[key[1] - 'X'] = d;
         } else if (key == "TX" || key == "TY" || key == "TZ") {
             if (!number(d) || !std::isfinite(d)) return bad("an origin must be a finite number");
@@ -101,21 +105,31 @@ inline result<inr_header> parse_inr_header(std::string_view bytes, const std::st
         } else if (key == "TYPE") {
             h.type = val;
         } else if (key == "PIXSIZE") {
-            if (!number(d) || (d != 8 && d != 16 && d != 32 && d != 64)) return bad("PIXSIZE must be 8, 16, 32 or 64 bits");
+            if (!number(d) || (d != 8 && d != 16 && d != 32 && d != 64))
+                return bad("PIXSIZE must be 8, 16, 32 or 64 bits");
             h.bits = static_cast<unsigned>(d);
         } else if (key == "CPU") {
             cpu = val;
         }
     }
     for (int a = 0; a < 3; ++a)
-        if (!have_dim[a]) return fail(errc::parse_error, name + ": header lacks " + std::string(1, char('X' + a)) + "DIM");
-    if (vdim != 1) return fail(errc::unsupported, name + ": VDIM=" + std::to_string(vdim) + ", only scalar volumes (VDIM=1) are supported");
+        if (!have_dim[a])
+            return fail(errc::parse_error, name + ": header lacks " + std::string(1, char('X' + a)) + "DIM");
+    if (vdim != 1)
+        return fail(errc::unsupported,
+                    name + ": VDIM=" + std::to_string(vdim) + ", only scalar volumes (VDIM=1) are supported");
     if (h.type != "float" && h.type != "unsigned fixed" && h.type != "signed fixed")
-        return fail(errc::unsupported, name + ": sample TYPE '" + h.type.substr(0, 40) + "' is not float, unsigned fixed or signed fixed");
-    const bool ok_bits = h.type == "float" ? (h.bits == 32 || h.bits == 64) : (h.bits == 8 || h.bits == 16 || h.bits == 32);
-    if (!ok_bits) return fail(errc::unsupported, name + ": PIXSIZE=" + std::to_string(h.bits) + " bits is not supported for TYPE " + h.type);
+        return fail(errc::unsupported,
+                    name + ": sample TYPE '" + h.type.substr(0, 40) + "' is not float, unsigned fixed or signed fixed");
+    const bool ok_bits =
+        h.type == "float" ? (h.bits == 32 || h.bits == 64) : (h.bits == 8 || h.bits == 16 || h.bits == 32);
+    if (!ok_bits)
+        return fail(errc::unsupported,
+                    name + ": PIXSIZE=" + std::to_string(h.bits) + " bits is not supported for TYPE " + h.type);
     h.big_endian = cpu == "sun" || cpu == "sgi";
-    h.geometry = {{std::size_t(dims[0]), std::size_t(dims[1]), std::size_t(dims[2])}, {origin[0], origin[1], origin[2]}, {vox[0], vox[1], vox[2]}};
+    h.geometry = {{std::size_t(dims[0]), std::size_t(dims[1]), std::size_t(dims[2])},
+                  {origin[0], origin[1], origin[2]},
+                  {vox[0], vox[1], vox[2]}};
     // What is left for check_grid_geometry is the size: a problem of the file, so parse_error.
     if (auto ok = check_grid_geometry(h.geometry, name); !ok) return fail(errc::parse_error, ok.error().message);
     return h;
@@ -124,7 +138,8 @@ inline result<inr_header> parse_inr_header(std::string_view bytes, const std::st
 namespace detail {
 
 inline bool is_gzip(std::string_view bytes) {
-    return bytes.size() >= 2 && static_cast<unsigned char>(bytes[0]) == 0x1f && static_cast<unsigned char>(bytes[1]) == 0x8b;
+    return bytes.size() >= 2 && static_cast<unsigned char>(bytes[0]) == 0x1f &&
+           static_cast<unsigned char>(bytes[1]) == 0x8b;
 }
 
 #if defined(HMIRA_HAS_ZLIB)
@@ -152,7 +167,8 @@ public:
         if (!ok_) return fail(errc::io_error, name_ + ": cannot start inflating (zlib)");
         while (out.size() < limit && !finished_) {
             if (out.size() == out.capacity() && !out.grow_towards(limit))
-                return fail(errc::io_error, name_ + ": not enough memory to inflate it (" + std::to_string(out.size()) + " bytes so far)");
+                return fail(errc::io_error, name_ + ": not enough memory to inflate it (" + std::to_string(out.size()) +
+                                                " bytes so far)");
             if (z_.avail_in == 0 && rest_ > 0) {
                 const std::size_t take = std::min<std::size_t>(rest_, 1u << 30);  // avail_in is 32-bit
                 z_.avail_in = static_cast<uInt>(take);
@@ -170,13 +186,16 @@ public:
                 } else if (z_.avail_in >= 2 ? (z_.next_in[0] == 0x1f && z_.next_in[1] == 0x8b) : true) {
                     if (inflateReset(&z_) != Z_OK) return fail(errc::parse_error, name_ + ": corrupt gzip data");
                 } else {
-                    return fail(errc::parse_error, name_ + ": data after the end of the gzip stream, at compressed byte offset " +
-                                                       std::to_string(z_.total_in));
+                    return fail(errc::parse_error,
+                                name_ + ": data after the end of the gzip stream, at compressed byte offset " +
+                                    std::to_string(z_.total_in));
                 }
             } else if (rc == Z_BUF_ERROR && z_.avail_in == 0 && rest_ == 0) {
-                return fail(errc::parse_error, name_ + ": truncated gzip data (" + std::to_string(out.size()) + " bytes inflated)");
+                return fail(errc::parse_error,
+                            name_ + ": truncated gzip data (" + std::to_string(out.size()) + " bytes inflated)");
             } else if (rc != Z_OK && rc != Z_BUF_ERROR) {
-                return fail(errc::parse_error, name_ + ": corrupt gzip data: " + (z_.msg ? z_.msg : "zlib error " + std::to_string(rc)));
+                return fail(errc::parse_error,
+                            name_ + ": corrupt gzip data: " + (z_.msg ? z_.msg : "zlib error " + std::to_string(rc)));
             }
         }
         return {};
@@ -195,11 +214,12 @@ inline result<dense_grid<float>> inr_samples(const inr_header& h, std::string_vi
     const std::uint64_t declared = h.sample_bytes();
     const std::uint64_t have = bytes.size() - h.header_bytes;
     if (have < declared)
-        return fail(errc::parse_error, name + ": truncated: the header promises " + std::to_string(declared) + " bytes of samples, the file holds " +
-                                           std::to_string(have));
+        return fail(errc::parse_error, name + ": truncated: the header promises " + std::to_string(declared) +
+                                           " bytes of samples, the file holds " + std::to_string(have));
     if (have > declared)
-        return fail(errc::parse_error, name + ": " + std::to_string(have - declared) + " bytes after the " + std::to_string(declared) +
-                                           " bytes of samples the header declares (wrong dimensions, or a corrupt file)");
+        return fail(errc::parse_error,
+                    name + ": " + std::to_string(have - declared) + " bytes after the " + std::to_string(declared) +
+                        " bytes of samples the header declares (wrong dimensions, or a corrupt file)");
     const std::size_t n = h.geometry.size(), sample_bytes = h.bits / 8;
     const char* data = bytes.data() + h.header_bytes;
     const bool swap = sample_bytes > 1 && (h.big_endian != (std::endian::native == std::endian::big));
@@ -244,11 +264,13 @@ inline result<dense_grid<float>> parse_inr(std::string_view bytes, const std::st
     auto h = parse_inr_header(out.view(), name);
     if (!h) return h.error();
     const std::uint64_t want = h->header_bytes + h->sample_bytes() + 1;
-    if (want > SIZE_MAX) return fail(errc::parse_error, name + ": the header declares more samples than memory can hold");
+    if (want > SIZE_MAX)
+        return fail(errc::parse_error, name + ": the header declares more samples than memory can hold");
     if (auto r = z.inflate_into(out, static_cast<std::size_t>(want)); !r) return r.error();
     if (out.size() >= want)
-        return fail(errc::parse_error, name + ": the inflated data goes on past the " + std::to_string(h->sample_bytes()) +
-                                           " bytes of samples the header declares (wrong dimensions, a corrupt file, or a gzip bomb)");
+        return fail(errc::parse_error,
+                    name + ": the inflated data goes on past the " + std::to_string(h->sample_bytes()) +
+                        " bytes of samples the header declares (wrong dimensions, a corrupt file, or a gzip bomb)");
     return detail::inr_samples(*h, out.view(), name);
 #else
     return fail(errc::unsupported, name + ": gzip-compressed, but hmira was built without zlib");

@@ -53,8 +53,10 @@ result<dense_grid<T>> samples_to_grid(const char* bytes, const grid_geometry& g,
         for (std::size_t n = 0; n < g.size(); ++n)
             if (std::isnan(out[n])) {
                 const std::size_t i = n % g.dims[0], j = (n / g.dims[0]) % g.dims[1], k = n / (g.dims[0] * g.dims[1]);
-                return fail(errc::parse_error, name + ": sample (" + std::to_string(i) + ", " + std::to_string(j) + ", " +
-                                                   std::to_string(k) + ") is NaN", static_cast<long long>(n));
+                return fail(errc::parse_error,
+                            name + ": sample (" + std::to_string(i) + ", " + std::to_string(j) + ", " +
+                                std::to_string(k) + ") is NaN",
+                            static_cast<long long>(n));
             }
     }
     return grid;
@@ -69,7 +71,8 @@ result<dense_grid<T>> samples_to_grid(const char* bytes, const grid_geometry& g,
 /// g.size() * sizeof(T) bytes (truncated, or the wrong dimensions or type), or a
 /// floating-point sample is NaN. O(N).
 template <class T>
-result<dense_grid<T>> read_raw(const std::filesystem::path& path, const grid_geometry& g, const raw_options& options = {}) {
+result<dense_grid<T>> read_raw(const std::filesystem::path& path, const grid_geometry& g,
+                               const raw_options& options = {}) {
     static_assert(std::is_arithmetic_v<T>, "read_raw: samples must be a number type");
     if (auto ok = check_grid_geometry(g, "read_raw " + path.string()); !ok) return ok.error();
     auto file = detail::input_file::open(path, options.max_input_bytes);
@@ -103,7 +106,8 @@ result<void> write_raw(const G& grid, const std::filesystem::path& path, const r
                     const V v = static_cast<V>(grid.value(i, j, k));
                     row[i] = swap ? detail::byteswap_value(v) : v;
                 }
-                out.write(reinterpret_cast<const char*>(row.data()), static_cast<std::streamsize>(row.size() * sizeof(V)));
+                out.write(reinterpret_cast<const char*>(row.data()),
+                          static_cast<std::streamsize>(row.size() * sizeof(V)));
             }
         return bool(out);
     });

@@ -46,10 +46,10 @@ constexpr std::size_t sample_bytes(sample_type t) noexcept {
 
 /// Where and how a volume file stores its samples.
 struct volume_layout {
-    grid_geometry geometry;                      ///< dimensions, origin and spacing
-    sample_type type = sample_type::float32;     ///< stored sample type
-    bool big_endian = false;                     ///< byte order of multi-byte samples
-    std::uint64_t data_offset = 0;               ///< byte offset of sample (0, 0, 0)
+    grid_geometry geometry;                   ///< dimensions, origin and spacing
+    sample_type type = sample_type::float32;  ///< stored sample type
+    bool big_endian = false;                  ///< byte order of multi-byte samples
+    std::uint64_t data_offset = 0;            ///< byte offset of sample (0, 0, 0)
 };
 
 /// The layout an uncompressed INRIMAGE-4 file declares, read from its first 64 KiB with pread.
@@ -74,16 +74,18 @@ inline result<volume_layout> read_inr_layout(const std::filesystem::path& path) 
     }
     ::close(fd);
     head.resize(got);
-    if (detail::is_gzip(head)) return fail(errc::unsupported, name + ": gzip-compressed; it cannot be read slab by slab");
+    if (detail::is_gzip(head))
+        return fail(errc::unsupported, name + ": gzip-compressed; it cannot be read slab by slab");
     auto h = parse_inr_header(head, name);
     if (!h) return h.error();
     volume_layout l{.geometry = h->geometry, .big_endian = h->big_endian, .data_offset = h->header_bytes};
-    if (h->type == "float") l.type = h->bits == 32 ? sample_type::float32 : sample_type::float64;
+    if (h->type == "float")
+        l.type = h->bits == 32 ? sample_type::float32 : sample_type::float64;
     else {
         const bool sign = h->type == "signed fixed";
-        l.type = h->bits == 8 ? (sign ? sample_type::int8 : sample_type::uint8)
-               : h->bits == 16 ? (sign ? sample_type::int16 : sample_type::uint16)
-                               : (sign ? sample_type::int32 : sample_type::uint32);
+        l.type = h->bits == 8    ? (sign ? sample_type::int8 : sample_type::uint8)
+                 : h->bits == 16 ? (sign ? sample_type::int16 : sample_type::uint16)
+                                 : (sign ? sample_type::int32 : sample_type::uint32);
     }
     return l;
 }
@@ -108,18 +110,22 @@ public:
             ::close(*p);
             delete p;
         });
-        struct stat st{};
+        struct stat st {};
         if (::fstat(fd, &st) != 0) return fail(errc::io_error, name + ": cannot open: " + std::strerror(errno));
-        if (!S_ISREG(st.st_mode)) return fail(errc::io_error, name + ": not a regular file; it cannot be read slab by slab");
+        if (!S_ISREG(st.st_mode))
+            return fail(errc::io_error, name + ": not a regular file; it cannot be read slab by slab");
         const std::uint64_t have = static_cast<std::uint64_t>(st.st_size);
-        const std::uint64_t want = layout.data_offset + std::uint64_t(layout.geometry.size()) * sample_bytes(layout.type);
+        const std::uint64_t want =
+            layout.data_offset + std::uint64_t(layout.geometry.size()) * sample_bytes(layout.type);
         if (have != want) {
             const auto& d = layout.geometry.dims;
-            return fail(errc::parse_error, name + ": holds " + std::to_string(have) + " bytes, but " + std::to_string(d[0]) + " x " +
-                                               std::to_string(d[1]) + " x " + std::to_string(d[2]) + " samples of " +
-                                               std::to_string(sample_bytes(layout.type)) + " bytes" +
-                                               (layout.data_offset ? " after a " + std::to_string(layout.data_offset) + "-byte header" : "") +
-                                               " need " + std::to_string(want) + (have < want ? " (truncated file?)" : ""));
+            return fail(
+                errc::parse_error,
+                name + ": holds " + std::to_string(have) + " bytes, but " + std::to_string(d[0]) + " x " +
+                    std::to_string(d[1]) + " x " + std::to_string(d[2]) + " samples of " +
+                    std::to_string(sample_bytes(layout.type)) + " bytes" +
+                    (layout.data_offset ? " after a " + std::to_string(layout.data_offset) + "-byte header" : "") +
+                    " need " + std::to_string(want) + (have < want ? " (truncated file?)" : ""));
         }
         return r;
     }
@@ -136,8 +142,8 @@ public:
     result<void> read_slices(std::size_t k0, std::size_t count, std::vector<T>& out) const {
         const auto& d = layout_.geometry.dims;
         if (k0 > d[2] || count > d[2] - k0)
-            return fail(errc::invalid_argument, name_ + ": slices " + std::to_string(k0) + " + " + std::to_string(count) + " past " +
-                                                    std::to_string(d[2]));
+            return fail(errc::invalid_argument, name_ + ": slices " + std::to_string(k0) + " + " +
+                                                    std::to_string(count) + " past " + std::to_string(d[2]));
         const std::size_t plane = d[0] * d[1], n = count * plane;
         out.resize(n);
         switch (layout_.type) {
@@ -168,8 +174,12 @@ private:
             for (std::size_t got = 0; got < take * sizeof(V);) {
                 const auto r = ::pread(*fd_, bytes + got, take * sizeof(V) - got, static_cast<off_t>(at + got));
                 if (r < 0 && errno == EINTR) continue;
-                if (r < 0) return fail(errc::io_error, name_ + ": read error at byte " + std::to_string(at + got) + ": " + std::strerror(errno));
-                if (r == 0) return fail(errc::io_error, name_ + ": the file shrank while being read (at byte " + std::to_string(at + got) + ")");
+                if (r < 0)
+                    return fail(errc::io_error, name_ + ": read error at byte " + std::to_string(at + got) + ": " +
+                                                    std::strerror(errno));
+                if (r == 0)
+                    return fail(errc::io_error, name_ + ": the file shrank while being read (at byte " +
+                                                    std::to_string(at + got) + ")");
                 got += static_cast<std::size_t>(r);
             }
             for (std::size_t q = 0; q < take; ++q) {
@@ -178,8 +188,10 @@ private:
                 if constexpr (std::is_floating_point_v<V>) {
                     if (std::isnan(v)) {
                         const std::size_t s = first + done + q;
-                        return fail(errc::parse_error, name_ + ": sample (" + std::to_string(s % d[0]) + ", " + std::to_string((s / d[0]) % d[1]) +
-                                                           ", " + std::to_string(s / (d[0] * d[1])) + ") is NaN",
+                        return fail(errc::parse_error,
+                                    name_ + ": sample (" + std::to_string(s % d[0]) + ", " +
+                                        std::to_string((s / d[0]) % d[1]) + ", " + std::to_string(s / (d[0] * d[1])) +
+                                        ") is NaN",
                                     static_cast<long long>(s));
                     }
                 }

@@ -32,11 +32,21 @@ public:
 
         iterator() = default;
         iterator(std::uint32_t i, std::uint32_t bound, const std::uint8_t* deleted)
-            : i_(i), bound_(bound), deleted_(deleted) { skip(); }
+            : i_(i), bound_(bound), deleted_(deleted) {
+            skip();
+        }
 
         Handle operator*() const noexcept { return Handle(i_); }
-        iterator& operator++() noexcept { ++i_; skip(); return *this; }
-        iterator operator++(int) noexcept { auto t = *this; ++*this; return t; }
+        iterator& operator++() noexcept {
+            ++i_;
+            skip();
+            return *this;
+        }
+        iterator operator++(int) noexcept {
+            auto t = *this;
+            ++*this;
+            return t;
+        }
         friend bool operator==(const iterator& a, const iterator& b) noexcept { return a.i_ == b.i_; }
 
     private:
@@ -100,15 +110,23 @@ public:
             } while (!kept());
             return *this;
         }
-        iterator operator++(int) { auto t = *this; ++*this; return t; }
-        friend bool operator==(const iterator& a, const iterator& b) noexcept { return a.done_ == b.done_ && a.cur_ == b.cur_; }
+        iterator operator++(int) {
+            auto t = *this;
+            ++*this;
+            return t;
+        }
+        friend bool operator==(const iterator& a, const iterator& b) noexcept {
+            return a.done_ == b.done_ && a.cur_ == b.cur_;
+        }
         /// The current cursor (the loop's start at the end).
         Cursor cursor() const noexcept { return cur_; }
 
     private:
         bool kept() const {
-            if constexpr (filtering_policy<Policy, Mesh, Cursor>) return Policy::keep(*m_, cur_);
-            else return true;
+            if constexpr (filtering_policy<Policy, Mesh, Cursor>)
+                return Policy::keep(*m_, cur_);
+            else
+                return true;
         }
         const Mesh* m_ = nullptr;
         Cursor start_{}, cur_{};
@@ -169,8 +187,15 @@ public:
             if (cur_ == start_) ++lap_;
             return *this;
         }
-        iterator operator++(int) { auto t = *this; ++*this; return t; }
-        friend bool operator==(const iterator& a, const iterator& b) noexcept { return a.lap_ == b.lap_ && a.cur_ == b.cur_; }
+        iterator operator++(int) {
+            auto t = *this;
+            ++*this;
+            return t;
+        }
+        friend bool operator==(const iterator& a, const iterator& b) noexcept {
+            return a.lap_ == b.lap_ && a.cur_ == b.cur_;
+        }
+
     private:
         const Mesh* m_ = nullptr;
         Cursor start_{}, cur_{};
@@ -183,6 +208,7 @@ public:
     bool empty() const { return start_ == Cursor{}; }
     explicit operator bool() const { return !empty(); }
     auto front() const { return *begin(); }
+
 private:
     const Mesh* m_ = nullptr;
     Cursor start_{};

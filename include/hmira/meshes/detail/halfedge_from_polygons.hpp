@@ -29,13 +29,14 @@ struct halfedge_from_polygons {
     // order that names the same element every time (what the error messages promise).
     template <class Offset, class FillPositions>
     static result<Mesh> build(std::size_t nv, FillPositions&& fill_positions, std::span<const Offset> face_offsets,
-                                                      std::span<const std::uint32_t> corners) {
+                              std::span<const std::uint32_t> corners) {
         using u32 = std::uint32_t;
         constexpr u32 none = UINT32_MAX;
         const std::size_t nf = face_offsets.empty() ? 0 : face_offsets.size() - 1;
         const std::size_t nc = corners.size();
         if ((nf == 0 && nc != 0) || (nf > 0 && (face_offsets[0] != 0 || face_offsets[nf] != nc)))
-            return fail(errc::invalid_argument, "from_polygons: face_offsets must start at 0 and end at corners.size()");
+            return fail(errc::invalid_argument,
+                        "from_polygons: face_offsets must start at 0 and end at corners.size()");
         if (nc >= none / 2 || nv >= none)
             return fail(errc::invalid_argument, "from_polygons: too many elements for 32-bit indices");
         if (nf >= none) return fail(errc::invalid_argument, "from_polygons: too many elements for 32-bit indices");
@@ -51,17 +52,23 @@ struct halfedge_from_polygons {
             // An offset past the end is refused before any corner is read (a decrease is caught
             // one face later, too late for a face that runs past the end).
             if (face_offsets[f + 1] < face_offsets[f] || face_offsets[f + 1] > nc)
-                return fail(errc::invalid_argument, "from_polygons: face_offsets decrease at face " + std::to_string(f), static_cast<long long>(f));
+                return fail(errc::invalid_argument, "from_polygons: face_offsets decrease at face " + std::to_string(f),
+                            static_cast<long long>(f));
             const u32 b = static_cast<u32>(face_offsets[f]), e = static_cast<u32>(face_offsets[f + 1]);
             if (e - b < 3)
-                return fail(errc::degenerate_face, "from_polygons: face " + std::to_string(f) + " has fewer than 3 vertices", static_cast<long long>(f));
+                return fail(errc::degenerate_face,
+                            "from_polygons: face " + std::to_string(f) + " has fewer than 3 vertices",
+                            static_cast<long long>(f));
             for (u32 k = b; k < e; ++k) {
                 const u32 v = corners[k];
                 if (v >= nv)
-                    return fail(errc::invalid_handle, "from_polygons: face " + std::to_string(f) + " names vertex " + std::to_string(v) +
-                                                          ", which does not exist", static_cast<long long>(f));
+                    return fail(errc::invalid_handle,
+                                "from_polygons: face " + std::to_string(f) + " names vertex " + std::to_string(v) +
+                                    ", which does not exist",
+                                static_cast<long long>(f));
                 if (stamp[v] == f)
-                    return fail(errc::degenerate_face, "from_polygons: face " + std::to_string(f) + " repeats vertex " + std::to_string(v),
+                    return fail(errc::degenerate_face,
+                                "from_polygons: face " + std::to_string(f) + " repeats vertex " + std::to_string(v),
                                 static_cast<long long>(f));
                 stamp[v] = static_cast<u32>(f);
                 ++out_begin[v + 1];
@@ -71,7 +78,8 @@ struct halfedge_from_polygons {
         Mesh m;
         if (!link_polygons_fast(m, face_offsets, corners, out_begin, stamp)) {
             m = Mesh();
-            if (auto linked = link_polygons_checked(m, face_offsets, corners, out_begin, stamp); !linked) return linked.error();
+            if (auto linked = link_polygons_checked(m, face_offsets, corners, out_begin, stamp); !linked)
+                return linked.error();
         }
         const std::size_t edges = m.halfedges_.size() / 2;
         fill_positions(m.positions_);
@@ -110,11 +118,13 @@ struct halfedge_from_polygons {
     // anything wrong: an edge run twice the same way, a vertex with two boundary gaps or
     // several fans.
     template <class Offset>
-    static bool link_polygons_fast(Mesh& m, std::span<const Offset> face_offsets, std::span<const std::uint32_t> corners,
-                                   const std::vector<std::uint32_t>& out_begin, std::vector<std::uint32_t>& stamp) {
+    static bool link_polygons_fast(Mesh& m, std::span<const Offset> face_offsets,
+                                   std::span<const std::uint32_t> corners, const std::vector<std::uint32_t>& out_begin,
+                                   std::vector<std::uint32_t>& stamp) {
         using u32 = std::uint32_t;
         constexpr u32 none = UINT32_MAX;
-        const std::size_t nv = out_begin.size() - 1, nf = face_offsets.empty() ? 0 : face_offsets.size() - 1, nc = corners.size();
+        const std::size_t nv = out_begin.size() - 1, nf = face_offsets.empty() ? 0 : face_offsets.size() - 1,
+                          nc = corners.size();
         std::copy(out_begin.begin(), out_begin.end() - 1, stamp.begin());  // stamp[v]: where v's row ends so far
         // Each vertex's row holds the halfedges of the corners seen leaving it; the vertex a
         // corner runs to is its halfedge's target, written as soon as the corner is seen.
@@ -147,7 +157,8 @@ struct halfedge_from_polygons {
                         if (m.halfedges_[rows[r]].target.index == t) return false;
                     h = 2 * edges++;
                     if (h + 2 > m.halfedges_.size())
-                        m.halfedges_.resize_for_overwrite(std::min<std::size_t>(2 * nc, std::size_t{h} + 2 + (std::size_t{h} + 2) / 8 + 64));
+                        m.halfedges_.resize_for_overwrite(
+                            std::min<std::size_t>(2 * nc, std::size_t{h} + 2 + (std::size_t{h} + 2) / 8 + 64));
                     m.halfedges_[h + 1] = {vertex_handle(a), {}, {}, {}};  // boundary until a twin turns up
                 } else {
                     if ((h & 1u) == 0 || !m.halfedges_[h].face.is_null()) return false;
@@ -160,7 +171,8 @@ struct halfedge_from_polygons {
             }
             const u32 n = e - b;
             for (u32 i = 0; i < n; ++i)
-                m.halfedges_[face_h[i]] = {vertex_handle(corners[i + 1 == n ? b : b + i + 1]), fh, halfedge_handle(face_h[i + 1 == n ? 0 : i + 1]),
+                m.halfedges_[face_h[i]] = {vertex_handle(corners[i + 1 == n ? b : b + i + 1]), fh,
+                                           halfedge_handle(face_h[i + 1 == n ? 0 : i + 1]),
                                            halfedge_handle(face_h[i == 0 ? n - 1 : i - 1])};
             m.faces_[f] = halfedge_handle(face_h[n - 1]);
         }
@@ -185,7 +197,8 @@ struct halfedge_from_polygons {
                 }
         }
         for (std::size_t v = 0; v < nv; ++v)
-            if (!single_fan(m, static_cast<u32>(v), out_begin[v + 1] - out_begin[v] + (stamp[v] != none ? 1u : 0u))) return false;
+            if (!single_fan(m, static_cast<u32>(v), out_begin[v + 1] - out_begin[v] + (stamp[v] != none ? 1u : 0u)))
+                return false;
         return true;
     }
 
@@ -193,11 +206,14 @@ struct halfedge_from_polygons {
     // its source vertex, then boundary gaps in corner order, then fans by vertex. Slower (more
     // passes, 24 bytes of scratch per corner); run only when the fast pass found a fault.
     template <class Offset>
-    static result<void> link_polygons_checked(Mesh& m, std::span<const Offset> face_offsets, std::span<const std::uint32_t> corners,
-                                              const std::vector<std::uint32_t>& out_begin, std::vector<std::uint32_t>& stamp) {
+    static result<void> link_polygons_checked(Mesh& m, std::span<const Offset> face_offsets,
+                                              std::span<const std::uint32_t> corners,
+                                              const std::vector<std::uint32_t>& out_begin,
+                                              std::vector<std::uint32_t>& stamp) {
         using u32 = std::uint32_t;
         constexpr u32 none = UINT32_MAX;
-        const std::size_t nv = out_begin.size() - 1, nf = face_offsets.empty() ? 0 : face_offsets.size() - 1, nc = corners.size();
+        const std::size_t nv = out_begin.size() - 1, nf = face_offsets.empty() ? 0 : face_offsets.size() - 1,
+                          nc = corners.size();
         // Corners grouped by source vertex, with their targets beside them so that the twin
         // search below scans contiguous memory.
         std::vector<u32> out(nc), out_target(nc);
@@ -222,7 +238,9 @@ struct halfedge_from_polygons {
                         for (u32 r = out_begin[b]; r < out_begin[b + 1]; ++r) reverse |= out_target[r] == a;
                         return fail(reverse ? errc::non_manifold : errc::orientation_conflict,
                                     "from_polygons: edge " + std::to_string(a) + "->" + std::to_string(b) +
-                                        (reverse ? " has more than two faces" : " is run in the same direction by two faces (they are wound against each other)"),
+                                        (reverse ? " has more than two faces"
+                                                 : " is run in the same direction by two faces (they are wound against "
+                                                   "each other)"),
                                     static_cast<long long>(a));
                     }
                 for (u32 r = out_begin[b]; r < out_begin[b + 1]; ++r)
@@ -261,8 +279,10 @@ struct halfedge_from_polygons {
                 if (twin[k] == none) {
                     const u32 from = to;  // the boundary halfedge runs target -> source
                     if (stamp[from] != none)
-                        return fail(errc::non_manifold, "from_polygons: vertex " + std::to_string(from) +
-                                                            " joins two or more separate fans of faces", static_cast<long long>(from));
+                        return fail(errc::non_manifold,
+                                    "from_polygons: vertex " + std::to_string(from) +
+                                        " joins two or more separate fans of faces",
+                                    static_cast<long long>(from));
                     stamp[from] = h ^ 1u;
                     // next and prev: the boundary loops below
                     m.halfedges_[h ^ 1u] = {vertex_handle(corners[k]), {}, {}, {}};
@@ -277,7 +297,9 @@ struct halfedge_from_polygons {
                 const u32 to = m.halfedges_[hb].target.index;
                 const u32 nb = stamp[to];
                 if (nb == none)  // cannot happen: boundary halfedges enter and leave a vertex equally often
-                    return fail(errc::non_manifold, "from_polygons: boundary breaks off at vertex " + std::to_string(to), static_cast<long long>(to));
+                    return fail(errc::non_manifold,
+                                "from_polygons: boundary breaks off at vertex " + std::to_string(to),
+                                static_cast<long long>(to));
                 m.halfedges_[hb].next = halfedge_handle(nb);
                 m.halfedges_[nb].prev = halfedge_handle(hb);
                 m.vertex_out_[v] = halfedge_handle(hb);
@@ -290,7 +312,8 @@ struct halfedge_from_polygons {
         // Every outgoing halfedge of a vertex must lie in the one fan around it.
         for (std::size_t v = 0; v < nv; ++v)
             if (!single_fan(m, static_cast<u32>(v), out_begin[v + 1] - out_begin[v] + (stamp[v] != none ? 1u : 0u)))
-                return fail(errc::non_manifold, "from_polygons: vertex " + std::to_string(v) + " joins two or more separate fans of faces",
+                return fail(errc::non_manifold,
+                            "from_polygons: vertex " + std::to_string(v) + " joins two or more separate fans of faces",
                             static_cast<long long>(v));
         return {};
     }

@@ -50,7 +50,8 @@ struct halfedge_maintenance {
     /// See basic_halfedge_mesh::collect_garbage.
     static index_remap collect_garbage(Mesh& m) {
         index_remap map;
-        auto make_map = [](const detail::zeroed_array<std::uint8_t>& deleted, std::size_t bound, std::vector<std::uint32_t>& out) {
+        auto make_map = [](const detail::zeroed_array<std::uint8_t>& deleted, std::size_t bound,
+                           std::vector<std::uint32_t>& out) {
             out.assign(bound, UINT32_MAX);
             std::uint32_t k = 0;
             for (std::size_t i = 0; i < bound; ++i)
@@ -63,9 +64,17 @@ struct halfedge_maintenance {
         map.halfedges.assign(m.halfedges_.size(), UINT32_MAX);
         for (std::size_t h = 0; h < m.halfedges_.size(); ++h)
             if (map.edges[h >> 1] != UINT32_MAX) map.halfedges[h] = 2 * map.edges[h >> 1] + (h & 1u);
-        auto mv = [&](vertex_handle v) { return v.is_null() || v.index >= map.vertices.size() ? vertex_handle{} : vertex_handle(map.vertices[v.index]); };
-        auto mh = [&](halfedge_handle h) { return h.is_null() || h.index >= map.halfedges.size() ? halfedge_handle{} : halfedge_handle(map.halfedges[h.index]); };
-        auto mf = [&](face_handle f) { return f.is_null() || f.index >= map.faces.size() ? face_handle{} : face_handle(map.faces[f.index]); };
+        auto mv = [&](vertex_handle v) {
+            return v.is_null() || v.index >= map.vertices.size() ? vertex_handle{}
+                                                                 : vertex_handle(map.vertices[v.index]);
+        };
+        auto mh = [&](halfedge_handle h) {
+            return h.is_null() || h.index >= map.halfedges.size() ? halfedge_handle{}
+                                                                  : halfedge_handle(map.halfedges[h.index]);
+        };
+        auto mf = [&](face_handle f) {
+            return f.is_null() || f.index >= map.faces.size() ? face_handle{} : face_handle(map.faces[f.index]);
+        };
 
         for (std::size_t v = 0; v < m.positions_.size(); ++v)
             if (map.vertices[v] != UINT32_MAX) {

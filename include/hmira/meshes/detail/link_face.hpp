@@ -22,23 +22,33 @@ namespace hmira::detail {
 /// building a mesh face by face does not allocate per face. A mesh keeps one and passes it in.
 template <class Halfedge>
 struct face_link_scratch {
-    std::vector<Halfedge> sides;                        ///< the halfedge of each side, once known
-    std::vector<std::uint8_t> fresh;                    ///< whether that side's edge is new
+    std::vector<Halfedge> sides;                       ///< the halfedge of each side, once known
+    std::vector<std::uint8_t> fresh;                   ///< whether that side's edge is new
     std::vector<std::pair<Halfedge, Halfedge>> links;  ///< next links to set, computed first
-    std::vector<Halfedge> starts;                       ///< each corner's stored outgoing halfedge
+    std::vector<Halfedge> starts;                      ///< each corner's stored outgoing halfedge
 };
 
 namespace linking {
 
 template <class M, class T>
 std::string vertex_name(const M& m, typename T::vertex_handle v) {
-    if constexpr (vertex_index_mesh<M, T>) return std::to_string(T::vertex_index(m, v));
-    else { (void)m; (void)v; return "(unnumbered)"; }
+    if constexpr (vertex_index_mesh<M, T>)
+        return std::to_string(T::vertex_index(m, v));
+    else {
+        (void)m;
+        (void)v;
+        return "(unnumbered)";
+    }
 }
 template <class M, class T>
 long long vertex_number(const M& m, typename T::vertex_handle v) {
-    if constexpr (vertex_index_mesh<M, T>) return static_cast<long long>(T::vertex_index(m, v));
-    else { (void)m; (void)v; return -1; }
+    if constexpr (vertex_index_mesh<M, T>)
+        return static_cast<long long>(T::vertex_index(m, v));
+    else {
+        (void)m;
+        (void)v;
+        return -1;
+    }
 }
 
 /// For re-linking at the vertex between `in` (incoming) and `out` (outgoing): the boundary
@@ -138,24 +148,27 @@ void find_sides(M& m, const typename T::vertex_handle* vs, std::size_t n_run, ty
 /// has two faces or runs the wrong way, a corner with no free boundary gap. On success
 /// fresh[i] is 1 where the side from corner i is a new edge, else 0.
 template <std::size_t N, class M, class T>
-result<void> check_corners(M& m, const typename T::vertex_handle* vs, std::size_t n_run, const typename T::halfedge_handle* sides,
-                           std::uint8_t* fresh) {
+result<void> check_corners(M& m, const typename T::vertex_handle* vs, std::size_t n_run,
+                           const typename T::halfedge_handle* sides, std::uint8_t* fresh) {
     const std::size_t n = N != 0 ? N : n_run;
     const auto null_h = T::null_halfedge();
     for (std::size_t i = 0; i < n; ++i) {
         if (fresh[i] & 4)
             return fail(errc::non_manifold,
-                        "add_face: vertex " + linking::vertex_name<M, T>(m, vs[i]) + " is interior (surrounded by faces); a face there would be non-manifold",
+                        "add_face: vertex " + linking::vertex_name<M, T>(m, vs[i]) +
+                            " is interior (surrounded by faces); a face there would be non-manifold",
                         linking::vertex_number<M, T>(m, vs[i]));
         const auto h = sides[i];
         if (h != null_h && T::face(m, h) != T::null_face()) {
             const bool reversed = T::face(m, T::opposite(m, h)) == T::null_face();
-            std::string edge = linking::vertex_name<M, T>(m, vs[i]) + "->" + linking::vertex_name<M, T>(m, vs[corner_after(i, n)]);
+            std::string edge =
+                linking::vertex_name<M, T>(m, vs[i]) + "->" + linking::vertex_name<M, T>(m, vs[corner_after(i, n)]);
             std::string face = "face";
             if constexpr (face_index_mesh<M, T>) face += " " + std::to_string(T::face_index(m, T::face(m, h)));
             return fail(reversed ? errc::orientation_conflict : errc::non_manifold,
                         "add_face: edge " + edge +
-                            (reversed ? " is already used in this direction by " + face + " (the new face is wound against its neighbour)"
+                            (reversed ? " is already used in this direction by " + face +
+                                            " (the new face is wound against its neighbour)"
                                       : " already has two faces"),
                         linking::vertex_number<M, T>(m, vs[i]));
         }
@@ -168,7 +181,8 @@ result<void> check_corners(M& m, const typename T::vertex_handle* vs, std::size_
         if (fresh[i] || fresh[ii] || T::next(m, sides[i]) == sides[ii]) continue;
         if (linking::free_gap<M, T>(m, sides[i], sides[ii]) == null_h)
             return fail(errc::non_manifold,
-                        "add_face: vertex " + linking::vertex_name<M, T>(m, vs[ii]) + " has no free boundary gap to move its fans to",
+                        "add_face: vertex " + linking::vertex_name<M, T>(m, vs[ii]) +
+                            " has no free boundary gap to move its fans to",
                         linking::vertex_number<M, T>(m, vs[ii]));
     }
     return {};
@@ -196,8 +210,9 @@ void relink_patches(M& m, std::size_t n_run, const typename T::halfedge_handle* 
 /// computed from the state before this face into `links` and applied afterwards; each corner
 /// keeps a boundary outgoing halfedge if it has one.
 template <std::size_t N, class M, class T>
-void link_sides(M& m, const typename T::vertex_handle* vs, std::size_t n_run, const typename T::halfedge_handle* sides, std::uint8_t* fresh,
-                std::pair<typename T::halfedge_handle, typename T::halfedge_handle>* links, typename T::face_handle f) {
+void link_sides(M& m, const typename T::vertex_handle* vs, std::size_t n_run, const typename T::halfedge_handle* sides,
+                std::uint8_t* fresh, std::pair<typename T::halfedge_handle, typename T::halfedge_handle>* links,
+                typename T::face_handle f) {
     using H = typename T::halfedge_handle;
     const std::size_t n = N != 0 ? N : n_run;
     const auto null_h = T::null_halfedge();
@@ -279,7 +294,6 @@ result<typename T::face_handle> link_face_sized(M& m, const typename T::vertex_h
     return f;
 }
 
-
 }  // namespace linking
 
 /// Adds the face with corners `vs` (counter-clockwise seen from outside), reusing the edges
@@ -302,16 +316,18 @@ template <class M, class T, class Exists>
 result<typename T::face_handle> link_face(M& m, std::span<const typename T::vertex_handle> vs,
                                           face_link_scratch<typename T::halfedge_handle>& scratch, Exists&& exists) {
     const std::size_t n = vs.size();
-    if (n < 3) return fail(errc::degenerate_face, "add_face: a face needs at least 3 vertices, got " + std::to_string(n));
+    if (n < 3)
+        return fail(errc::degenerate_face, "add_face: a face needs at least 3 vertices, got " + std::to_string(n));
     for (std::size_t i = 0; i < n; ++i) {
         if (!exists(vs[i]))
             return fail(errc::invalid_handle,
-                        "add_face: corner " + std::to_string(i) + " names vertex " + linking::vertex_name<M, T>(m, vs[i]) +
-                            ", which does not exist",
+                        "add_face: corner " + std::to_string(i) + " names vertex " +
+                            linking::vertex_name<M, T>(m, vs[i]) + ", which does not exist",
                         linking::vertex_number<M, T>(m, vs[i]));
         for (std::size_t j = 0; j < i; ++j)
             if (vs[j] == vs[i])
-                return fail(errc::degenerate_face, "add_face: vertex " + linking::vertex_name<M, T>(m, vs[i]) + " appears twice in the face",
+                return fail(errc::degenerate_face,
+                            "add_face: vertex " + linking::vertex_name<M, T>(m, vs[i]) + " appears twice in the face",
                             linking::vertex_number<M, T>(m, vs[i]));
     }
     // Triangles and quads, nearly every face, take the unrolled code.

@@ -1,6 +1,7 @@
 // hmira/meshes/detail/slots.hpp
 // Slot bookkeeping for hmira's meshes: a free list of deleted slots kept in the slots' own
-// records (so freeing never allocates nor touches new memory), and a lazily zeroed array for per-slot data that is mostly zero (deleted flags,
+// records (so freeing never allocates nor touches new memory), and a lazily zeroed array for per-slot data that is
+// mostly zero (deleted flags,
 // generation counts that let a kept handle tell its element from a later one in the same slot).
 // Both cost nothing on a mesh that never deletes.
 #pragma once
@@ -28,7 +29,8 @@ public:
     free_slots(const free_slots&) = default;
     free_slots& operator=(const free_slots&) = default;
     /// A moved-from list is empty, as the moved-from mesh's records are.
-    free_slots(free_slots&& other) noexcept : head_(std::exchange(other.head_, none)), size_(std::exchange(other.size_, 0)) {}
+    free_slots(free_slots&& other) noexcept
+        : head_(std::exchange(other.head_, none)), size_(std::exchange(other.size_, 0)) {}
     free_slots& operator=(free_slots&& other) noexcept {
         const std::uint32_t head = std::exchange(other.head_, none);
         const std::size_t size = std::exchange(other.size_, 0);

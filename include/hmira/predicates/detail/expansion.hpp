@@ -12,16 +12,20 @@
 // arithmetic evaluated as written. Refuse the flags that break that, instead of returning
 // wrong signs at run time.
 #if defined(__FAST_MATH__)
-#error "hmira predicates: -ffast-math (or -Ofast) breaks the exact orient2d/incircle predicates; compile this translation unit without it"
+#error \
+    "hmira predicates: -ffast-math (or -Ofast) breaks the exact orient2d/incircle predicates; compile this translation unit without it"
 #endif
 #if defined(__ASSOCIATIVE_MATH__)
-#error "hmira predicates: -fassociative-math lets the compiler re-associate the error-free sums of the exact predicates; compile without it"
+#error \
+    "hmira predicates: -fassociative-math lets the compiler re-associate the error-free sums of the exact predicates; compile without it"
 #endif
 #if defined(__FINITE_MATH_ONLY__) && __FINITE_MATH_ONLY__
-#error "hmira predicates: -ffinite-math-only removes the NaN/infinity checks the predicates' callers rely on; compile without it"
+#error \
+    "hmira predicates: -ffinite-math-only removes the NaN/infinity checks the predicates' callers rely on; compile without it"
 #endif
 #if defined(FLT_EVAL_METHOD) && FLT_EVAL_METHOD != 0 && FLT_EVAL_METHOD != -1
-#error "hmira predicates: need double expressions evaluated in double precision (FLT_EVAL_METHOD == 0, e.g. -mfpmath=sse on x86)"
+#error \
+    "hmira predicates: need double expressions evaluated in double precision (FLT_EVAL_METHOD == 0, e.g. -mfpmath=sse on x86)"
 #endif
 
 namespace hmira::predicates::detail {
@@ -118,7 +122,8 @@ inline expansion<4> two_two_diff_products(double a, double b, double c, double d
 /// Merges the components by magnitude, then sweeps them with two_sum (Shewchuk's
 /// Fast-Expansion-Sum with zero elimination; two_sum yields the same values as fast_two_sum
 /// wherever the latter is valid, and needs no magnitude precondition). h may not alias e or f.
-inline std::size_t sum_components(const double* e, std::size_t ne, const double* f, std::size_t nf, double* h) noexcept {
+inline std::size_t sum_components(const double* e, std::size_t ne, const double* f, std::size_t nf,
+                                  double* h) noexcept {
     std::size_t hn = 0;
     if (ne == 0 || nf == 0) {
         const double* s = ne ? e : f;

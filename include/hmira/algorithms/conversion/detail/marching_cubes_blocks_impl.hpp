@@ -46,7 +46,9 @@ struct block_plan {
     // Per owned cube row, at (k - lo[2]) * rows_y + (j - lo[1]): the same for its triangles.
     std::vector<std::uint32_t> cube_begin, cube_count, cube_start;
     std::size_t at(std::size_t j, std::size_t k) const noexcept { return (k - lo[2]) * rows_y + (j - lo[1]); }
-    bool owns_row(std::size_t j, std::size_t k) const noexcept { return j >= lo[1] && j < hi[1] && k >= lo[2] && k < hi[2]; }
+    bool owns_row(std::size_t j, std::size_t k) const noexcept {
+        return j >= lo[1] && j < hi[1] && k >= lo[2] && k < hi[2];
+    }
 };
 
 /// Calls f(j, k, axis, base, begin, end) for each run of `keys` on one sample row (j, k) and
@@ -55,8 +57,8 @@ struct block_plan {
 /// cube too). No division per key or run. Returns the index of the first key outside the
 /// block, or keys.size() when none is.
 template <class F>
-std::size_t for_each_vertex_run(std::span<const std::uint64_t> keys, const grid_dims& whole, const grid_dims& o, const grid_dims& e,
-                                const F& f) {
+std::size_t for_each_vertex_run(std::span<const std::uint64_t> keys, const grid_dims& whole, const grid_dims& o,
+                                const grid_dims& e, const F& f) {
     const std::uint64_t nx = whole[0], ny = whole[1];
     std::size_t v = 0;
     for (std::size_t k = o[2]; k < o[2] + e[2] && v < keys.size(); ++k)
@@ -76,8 +78,8 @@ std::size_t for_each_vertex_run(std::span<const std::uint64_t> keys, const grid_
 
 /// The same for the cube keys of a block's triangles, one run per cube row (j, k).
 template <class F>
-std::size_t for_each_cube_run(std::span<const std::uint64_t> cubes, const grid_dims& whole, const grid_dims& o, const grid_dims& e,
-                              const F& f) {
+std::size_t for_each_cube_run(std::span<const std::uint64_t> cubes, const grid_dims& whole, const grid_dims& o,
+                              const grid_dims& e, const F& f) {
     const std::uint64_t nx = whole[0], ny = whole[1];
     std::size_t t = 0;
     for (std::size_t k = o[2]; k + 1 < o[2] + e[2] && t < cubes.size(); ++k)
@@ -114,10 +116,10 @@ result<void> check_views(std::span<const block_triangles_view<S>> blocks, const 
         const auto& blk = blocks[b];
         const std::string which = "merge_blocks: block " + std::to_string(b);
         if (blk.keys.size() != blk.positions.size() || blk.cubes.size() != blk.triangles.size())
-            return fail(errc::invalid_argument,
-                        which + " has " + std::to_string(blk.positions.size()) + " positions, " +
-                            std::to_string(blk.keys.size()) + " keys, " + std::to_string(blk.triangles.size()) +
-                            " triangles and " + std::to_string(blk.cubes.size()) + " cube keys");
+            return fail(errc::invalid_argument, which + " has " + std::to_string(blk.positions.size()) +
+                                                    " positions, " + std::to_string(blk.keys.size()) + " keys, " +
+                                                    std::to_string(blk.triangles.size()) + " triangles and " +
+                                                    std::to_string(blk.cubes.size()) + " cube keys");
         if (blk.whole != whole)
             return fail(errc::invalid_argument, which + " refers to a whole grid of other dimensions than block 0's");
         if (blk.positions.size() >= std::numeric_limits<std::uint32_t>::max())
@@ -179,9 +181,9 @@ result<block_cells> place_blocks(std::span<const block_triangles_view<S>> blocks
     out.mz = mz;
     // Each block fills one chunk cell, so more cells than blocks leave one empty.
     if (double(mx) * double(my) * double(mz) > double(blocks.size()))
-        return fail(errc::invalid_argument,
-                    "merge_blocks: the blocks do not tile one grid (" + std::to_string(blocks.size()) + " blocks for " +
-                        std::to_string(mx) + " x " + std::to_string(my) + " x " + std::to_string(mz) + " chunks)");
+        return fail(errc::invalid_argument, "merge_blocks: the blocks do not tile one grid (" +
+                                                std::to_string(blocks.size()) + " blocks for " + std::to_string(mx) +
+                                                " x " + std::to_string(my) + " x " + std::to_string(mz) + " chunks)");
     out.cell_block.assign(mx * my * mz, block_cells::no_block);
     out.cell_of.resize(blocks.size());
     for (std::size_t b = 0; b < blocks.size(); ++b) {
@@ -198,11 +200,11 @@ result<block_cells> place_blocks(std::span<const block_triangles_view<S>> blocks
         }
         auto& slot = out.cell_block[(c[2] * my + c[1]) * mx + c[0]];
         if (slot != block_cells::no_block)
-            return fail(errc::invalid_argument,
-                        "merge_blocks: blocks " + std::to_string(slot) + " and " + std::to_string(b) +
-                            " both start at (" + std::to_string(blocks[b].offset[0]) + ", " +
-                            std::to_string(blocks[b].offset[1]) + ", " + std::to_string(blocks[b].offset[2]) +
-                            ") (the blocks overlap)");
+            return fail(errc::invalid_argument, "merge_blocks: blocks " + std::to_string(slot) + " and " +
+                                                    std::to_string(b) + " both start at (" +
+                                                    std::to_string(blocks[b].offset[0]) + ", " +
+                                                    std::to_string(blocks[b].offset[1]) + ", " +
+                                                    std::to_string(blocks[b].offset[2]) + ") (the blocks overlap)");
         slot = std::uint32_t(b);
         out.cell_of[b] = c;
     }
@@ -499,9 +501,8 @@ result<void> merge_blocks_into(std::span<const block_triangles_view<S>> blocks, 
     // Pass 3, per block: copy its owned vertices in place, look up the others in the blocks that own them,
     // then write its triangles in place.
     const mm::merge_context<S> context{blocks, plans, *cells, *tiling, whole};
-    const std::string written = mm::for_each_block(blocks.size(), options.threads, [&](std::size_t b) {
-        return mm::write_merged_block(context, b, out);
-    });
+    const std::string written = mm::for_each_block(
+        blocks.size(), options.threads, [&](std::size_t b) { return mm::write_merged_block(context, b, out); });
     if (!written.empty()) return fail(errc::invalid_argument, written);
     return {};
 }
@@ -558,11 +559,14 @@ result<indexed_triangles<S>> marching_cubes_by_slabs(const grid_geometry& whole,
                     continue;
                 }
                 const std::uint64_t key = pending.keys[t[c]];
-                if (!next) return fail(errc::invalid_argument, "marching_cubes_by_slabs: the last slab left a vertex unemitted");
+                if (!next)
+                    return fail(errc::invalid_argument,
+                                "marching_cubes_by_slabs: the last slab left a vertex unemitted");
                 const auto it = std::lower_bound(next->keys.begin(), next->keys.end(), key);
                 if (it == next->keys.end() || *it != key)
-                    return fail(errc::invalid_argument, "marching_cubes_by_slabs: vertex key " + std::to_string(key) +
-                                                            " missing from the next slab (fetch returned different samples?)");
+                    return fail(errc::invalid_argument,
+                                "marching_cubes_by_slabs: vertex key " + std::to_string(key) +
+                                    " missing from the next slab (fetch returned different samples?)");
                 g[c] = std::uint32_t(next_base + std::size_t(it - next->keys.begin()));
             }
             out.triangles.push_back(g);
@@ -579,8 +583,9 @@ result<indexed_triangles<S>> marching_cubes_by_slabs(const grid_geometry& whole,
         samples.clear();
         if (auto r = fetch(k0, count, samples); !r) return r.error();
         if (samples.size() != count * nx * ny)
-            return fail(errc::invalid_argument, "marching_cubes_by_slabs: fetch gave " + std::to_string(samples.size()) + " samples for " +
-                                                    std::to_string(count) + " slices of " + std::to_string(nx) + " x " + std::to_string(ny));
+            return fail(errc::invalid_argument,
+                        "marching_cubes_by_slabs: fetch gave " + std::to_string(samples.size()) + " samples for " +
+                            std::to_string(count) + " slices of " + std::to_string(nx) + " x " + std::to_string(ny));
         auto view = make_grid_view(std::span<const T>(samples), {{nx, ny, count}, whole.origin, whole.spacing});
         if (!view) return view.error();
         auto blk = marching_cubes_block<S>(*view, {.offset = {0, 0, k0}, .whole = whole.dims}, options);
@@ -594,18 +599,21 @@ result<indexed_triangles<S>> marching_cubes_by_slabs(const grid_geometry& whole,
         const bool last = k0 + count == nz;
         const std::uint64_t top = std::uint64_t(k0 + count - 1) * plane_keys;
         const std::size_t emitted =
-            last ? blk->keys.size() : std::size_t(std::lower_bound(blk->keys.begin(), blk->keys.end(), top) - blk->keys.begin());
+            last ? blk->keys.size()
+                 : std::size_t(std::lower_bound(blk->keys.begin(), blk->keys.end(), top) - blk->keys.begin());
         const std::size_t base = out.positions.size();
         if (base + emitted > std::numeric_limits<std::uint32_t>::max())
             return fail(errc::unsupported, "marching_cubes_by_slabs: more than 2^32 - 1 vertices");
         if (auto r = flush_pending(&*blk, base); !r) return r.error();
-        out.positions.insert(out.positions.end(), blk->positions.begin(), blk->positions.begin() + std::ptrdiff_t(emitted));
+        out.positions.insert(out.positions.end(), blk->positions.begin(),
+                             blk->positions.begin() + std::ptrdiff_t(emitted));
         pending = std::move(*blk);
         pending_base = base;
         pending_emitted = emitted;
     }
     if (auto r = flush_pending(nullptr, 0); !r) return r.error();
-    if (out.positions.empty() && !(lo <= options.iso && options.iso <= hi)) return detail::mc::iso_outside_range(options.iso, lo, hi);
+    if (out.positions.empty() && !(lo <= options.iso && options.iso <= hi))
+        return detail::mc::iso_outside_range(options.iso, lo, hi);
     return out;
 }
 

@@ -58,16 +58,18 @@ std::string check_block(const G& block, const grid_block& where, double iso, con
     if (whole_size >= 0x1p63) return who + ": whole grid too large for 64-bit keys";
     if (d[0] < 2 || d[1] < 2 || d[2] < 2) return {};
     if (!std::isfinite(iso)) return who + ": the iso value must be finite";
-    if (auto ok = check_grid_geometry(geometry_of(block), "marching_cubes", 2); !ok) return who + ": " + ok.error().message;
+    if (auto ok = check_grid_geometry(geometry_of(block), "marching_cubes", 2); !ok)
+        return who + ": " + ok.error().message;
     return {};
 }
 
 /// Counts what a block owns. O(N) for its N samples (the first two passes of marching cubes).
 /// Errors: those of marching_cubes_block().
 template <voxel_grid G>
-result<block_counts> count_block(const G& block, const grid_block& where, const marching_cubes_block_options& options = {}) {
-    const std::string who = "marching_cubes_block at (" + std::to_string(where.offset[0]) + ", " + std::to_string(where.offset[1]) +
-                            ", " + std::to_string(where.offset[2]) + ")";
+result<block_counts> count_block(const G& block, const grid_block& where,
+                                 const marching_cubes_block_options& options = {}) {
+    const std::string who = "marching_cubes_block at (" + std::to_string(where.offset[0]) + ", " +
+                            std::to_string(where.offset[1]) + ", " + std::to_string(where.offset[2]) + ")";
     if (auto bad = check_block(block, where, options.iso, who); !bad.empty()) return fail(errc::invalid_argument, bad);
     block_counts out;
     out.own = owned_samples(block.dims(), where);
@@ -82,11 +84,12 @@ result<block_counts> count_block(const G& block, const grid_block& where, const 
         ex.set_block(&tags);
         tri = ex.template run<double>();
         if (!tri) return;
-        ex.owned_counts(out.own[0], out.own[1], out.own[2], [&](std::size_t j, std::size_t k, const std::uint64_t* v, std::uint64_t t) {
-            const std::size_t r = k * out.own[1] + j;
-            for (int a = 0; a < 4; ++a) out.vertices[4 * r + std::size_t(a)] = std::uint32_t(v[a]);
-            out.triangles[r] = std::uint32_t(t);
-        });
+        ex.owned_counts(out.own[0], out.own[1], out.own[2],
+                        [&](std::size_t j, std::size_t k, const std::uint64_t* v, std::uint64_t t) {
+                            const std::size_t r = k * out.own[1] + j;
+                            for (int a = 0; a < 4; ++a) out.vertices[4 * r + std::size_t(a)] = std::uint32_t(v[a]);
+                            out.triangles[r] = std::uint32_t(t);
+                        });
         ex.keep_counts(out.counted);
     });
     if (!tri) return fail(tri.error().code, who + ": " + tri.error().message, tri.error().element);
@@ -103,8 +106,8 @@ result<block_counts> count_block(const G& block, const grid_block& where, const 
 template <voxel_grid G>
 result<void> write_block_into(const G& block, const grid_block& where, detail::mc::global_layout layout,
                               const marching_cubes_block_options& options = {}, block_counts* counted = nullptr) {
-    const std::string who = "marching_cubes_block at (" + std::to_string(where.offset[0]) + ", " + std::to_string(where.offset[1]) +
-                            ", " + std::to_string(where.offset[2]) + ")";
+    const std::string who = "marching_cubes_block at (" + std::to_string(where.offset[0]) + ", " +
+                            std::to_string(where.offset[1]) + ", " + std::to_string(where.offset[2]) + ")";
     if (auto bad = check_block(block, where, options.iso, who); !bad.empty()) return fail(errc::invalid_argument, bad);
     const grid_dims own = owned_samples(block.dims(), where);
     if (own[0] == 0) return {};
@@ -136,8 +139,9 @@ result<void> write_block_into(const G& block, const grid_block& where, detail::m
 /// Errors: those of write_block_into(); invalid_argument for spans of different lengths.
 /// \pre as write_block_into(), for every block.
 template <voxel_grid G>
-result<void> write_blocks_into(std::span<const G> blocks, std::span<const grid_block> wheres, std::span<const std::size_t> columns,
-                               const detail::mc::global_layout& layout, const marching_cubes_block_options& options = {},
+result<void> write_blocks_into(std::span<const G> blocks, std::span<const grid_block> wheres,
+                               std::span<const std::size_t> columns, const detail::mc::global_layout& layout,
+                               const marching_cubes_block_options& options = {},
                                std::span<block_counts* const> counted = {}) {
     const std::size_t n = blocks.size();
     if (wheres.size() != n || columns.size() != n || (!counted.empty() && counted.size() != n))
@@ -166,7 +170,8 @@ result<void> write_blocks_into(std::span<const G> blocks, std::span<const grid_b
             tags[b] = {where.offset, where.whole, nullptr, nullptr, &layouts[b], false};
             ex[b] = std::make_unique<detail::mc::extractor<G>>(blocks[b], mc);
             ex[b]->set_block(&tags[b]);
-            if (!counted.empty() && counted[b] && !counted[b]->counted.vbase.empty()) ex[b]->reuse_counts(std::move(counted[b]->counted));
+            if (!counted.empty() && counted[b] && !counted[b]->counted.vbase.empty())
+                ex[b]->reuse_counts(std::move(counted[b]->counted));
             if (auto begun = ex[b]->begin_layout_write(); !begun) {
                 ok = fail(begun.error().code, who + ": " + begun.error().message, begun.error().element);
                 return;
@@ -207,7 +212,8 @@ inline result<layout_tables> make_layout(const grid_dims& whole, std::span<const
         const auto& c = counts[b];
         const auto column = std::size_t(std::find(x_starts.begin(), x_starts.end(), offsets[b][0]) - x_starts.begin());
         if (column == mx)
-            return fail(errc::invalid_argument, "marching_cubes blocks: block " + std::to_string(b) + " is off the x chunking");
+            return fail(errc::invalid_argument,
+                        "marching_cubes blocks: block " + std::to_string(b) + " is off the x chunking");
         for (std::size_t k = 0; k < c.own[2]; ++k)
             for (std::size_t j = 0; j < c.own[1]; ++j) {
                 const std::size_t r = k * c.own[1] + j, g = (offsets[b][2] + k) * whole[1] + offsets[b][1] + j;
@@ -228,7 +234,8 @@ inline result<layout_tables> make_layout(const grid_dims& whole, std::span<const
     };
     out.vertices = prefix(out.vertex_start);
     out.triangles = prefix(out.triangle_start);
-    if (out.vertices > std::numeric_limits<std::uint32_t>::max() || out.triangles > std::numeric_limits<std::uint32_t>::max())
+    if (out.vertices > std::numeric_limits<std::uint32_t>::max() ||
+        out.triangles > std::numeric_limits<std::uint32_t>::max())
         return fail(errc::unsupported, "marching_cubes blocks: more than 2^32 - 1 vertices or triangles");
     return out;
 }

@@ -46,7 +46,7 @@ struct global_layout {
 /// What the counting passes of the extractor leave for the writing pass: the bit rows, the
 /// crossings per row and axis, and the rows' first vertices and triangles.
 struct counted_state {
-    uninitialized_vector<std::uint64_t> bits;        ///< one bit per sample, rows of whole words
+    uninitialized_vector<std::uint64_t> bits;                    ///< one bit per sample, rows of whole words
     uninitialized_vector<std::uint32_t> xcount, ycount, zcount;  ///< crossed edges per row and axis
     uninitialized_vector<std::uint64_t> vbase, tbase;            ///< first vertex and triangle per row (prefix sums)
 };
@@ -55,18 +55,21 @@ struct counted_state {
 /// what it writes (marching_cubes_blocks.hpp), or, with `layout`, the global places it writes
 /// to. Positions then use global sample indices, so they are bit for bit those of the whole grid.
 struct block_tags {
-    std::array<std::size_t, 3> offset{0, 0, 0};  ///< global index of the block's sample (0, 0, 0)
-    std::array<std::size_t, 3> whole{0, 0, 0};   ///< dimensions of the whole grid
-    std::vector<std::uint64_t>* vertex_keys = nullptr;    ///< one per output vertex
+    std::array<std::size_t, 3> offset{0, 0, 0};            ///< global index of the block's sample (0, 0, 0)
+    std::array<std::size_t, 3> whole{0, 0, 0};             ///< dimensions of the whole grid
+    std::vector<std::uint64_t>* vertex_keys = nullptr;     ///< one per output vertex
     std::vector<std::uint64_t>* triangle_cubes = nullptr;  ///< one per output triangle
     const global_layout* layout = nullptr;                 ///< write into the whole result instead
     bool count_only = false;                               ///< stop after counting (see owned_counts())
     /// The global row index of local row (j, k).
-    std::size_t global_row(std::size_t j, std::size_t k) const noexcept { return (k + offset[2]) * whole[1] + (j + offset[1]); }
+    std::size_t global_row(std::size_t j, std::size_t k) const noexcept {
+        return (k + offset[2]) * whole[1] + (j + offset[1]);
+    }
     /// Vertices sort by key exactly as the whole grid orders them: rows (z, y), then x-, y-,
     /// z-edges and cube centres (axis 3), each by increasing x.
     std::uint64_t vertex_key(std::size_t i, std::size_t j, std::size_t k, int axis) const noexcept {
-        return ((std::uint64_t(k + offset[2]) * whole[1] + (j + offset[1])) * 4 + std::uint64_t(axis)) * whole[0] + (i + offset[0]);
+        return ((std::uint64_t(k + offset[2]) * whole[1] + (j + offset[1])) * 4 + std::uint64_t(axis)) * whole[0] +
+               (i + offset[0]);
     }
     std::uint64_t cube_key(std::size_t i, std::size_t j, std::size_t k) const noexcept {
         return (std::uint64_t(k + offset[2]) * whole[1] + (j + offset[1])) * whole[0] + (i + offset[0]);
@@ -146,7 +149,8 @@ public:
     /// After run() with count_only: hands the counted rows over, so that an extractor of the
     /// same samples can write without counting again (reuse_counts()).
     void keep_counts(counted_state& state) {
-        state = {std::move(bits_), std::move(xcount_), std::move(ycount_), std::move(zcount_), std::move(vbase_), std::move(tbase_)};
+        state = {std::move(bits_),   std::move(xcount_), std::move(ycount_),
+                 std::move(zcount_), std::move(vbase_),  std::move(tbase_)};
     }
     /// Takes the counts keep_counts() handed over from an extractor of the same samples and
     /// options; run() then only writes.
@@ -238,10 +242,13 @@ private:
                                   gk = tags_ ? k + tags_->offset[2] : k;
                 const std::size_t wx = tags_ ? tags_->whole[0] : nx_, wy = tags_ ? tags_->whole[1] : ny_;
                 std::string name;
-                if constexpr (requires { { grid_.sample_name(gi, gj, gk) } -> std::convertible_to<std::string>; })
+                if constexpr (requires {
+                                  { grid_.sample_name(gi, gj, gk) } -> std::convertible_to<std::string>;
+                              })
                     name = grid_.sample_name(gi, gj, gk);
                 else
-                    name = "sample (" + std::to_string(gi) + ", " + std::to_string(gj) + ", " + std::to_string(gk) + ")";
+                    name =
+                        "sample (" + std::to_string(gi) + ", " + std::to_string(gj) + ", " + std::to_string(gk) + ")";
                 const char* what = v != v ? "NaN" : v > 0 ? "inf" : "-inf";
                 return fail(errc::invalid_argument,
                             "marching_cubes: " + name + " is " + what + "; every sample must be finite",
@@ -333,7 +340,6 @@ private:
         return {};
     }
 
-
     struct scratch {
         explicit scratch(std::size_t words) : active(words), cubes(words), masks(8 * words), ids(8 * 64 * words + 1) {}
         std::vector<std::uint64_t> active, cubes, masks;
@@ -377,8 +383,10 @@ private:
     }
 
     double value(std::size_t i, std::size_t j, std::size_t k) const {
-        if constexpr (contiguous_voxel_grid<G>) return static_cast<double>(data_[i + j * sy_ + k * sz_]);
-        else return static_cast<double>(grid_.value(i, j, k));
+        if constexpr (contiguous_voxel_grid<G>)
+            return static_cast<double>(data_[i + j * sy_ + k * sz_]);
+        else
+            return static_cast<double>(grid_.value(i, j, k));
     }
     // Positive inside, negative outside (0 counts as inside).
     double inside_value(std::size_t i, std::size_t j, std::size_t k) const {
@@ -437,8 +445,10 @@ private:
             for (int m = 0; m < 4; ++m) {
                 const int c = fc[m];
                 const double v = inside_value(i + (c & 1), j + ((c >> 1) & 1), k + ((c >> 2) & 1));
-                if ((config >> c) & 1) in *= v;
-                else out *= v;
+                if ((config >> c) & 1)
+                    in *= v;
+                else
+                    out *= v;
             }
             if (in >= out) bits |= 1u << q;
         }
@@ -458,7 +468,8 @@ private:
 
     // The crossing on the edge from sample (i, j, k) along `axis`, and the outward gradient
     // direction there (unnormalised; only computed when asked for).
-    void edge_point(std::size_t i, std::size_t j, std::size_t k, int axis, vec3<double>& pos, vec3<double>* normal) const {
+    void edge_point(std::size_t i, std::size_t j, std::size_t k, int axis, vec3<double>& pos,
+                    vec3<double>* normal) const {
         std::size_t i1 = i, j1 = j, k1 = k;
         (axis == 0 ? i1 : axis == 1 ? j1 : k1) += 1;
         const double v0 = value(i, j, k), v1 = value(i1, j1, k1);
@@ -494,7 +505,8 @@ private:
     }
 
     template <class S>
-    void write_vertex(std::size_t id, std::size_t i, std::size_t j, std::size_t k, int axis, indexed_triangles<S>& out) const {
+    void write_vertex(std::size_t id, std::size_t i, std::size_t j, std::size_t k, int axis,
+                      indexed_triangles<S>& out) const {
         vec3<double> p, n;
         const bool normals = !out.normals.empty();
         edge_point(i, j, k, axis, p, normals ? &n : nullptr);
@@ -504,7 +516,8 @@ private:
 
     // The extra vertex of a loop that needs one: the mean of the loop's crossings.
     template <class S>
-    void write_center(std::size_t id, std::size_t i, std::size_t j, std::size_t k, unsigned loop, indexed_triangles<S>& out) const {
+    void write_center(std::size_t id, std::size_t i, std::size_t j, std::size_t k, unsigned loop,
+                      indexed_triangles<S>& out) const {
         const bool normals = !out.normals.empty();
         vec3<double> sum_p{}, sum_n{};
         double count = 0;
@@ -549,7 +562,8 @@ private:
     }
 
     template <class S>
-    void write_cube_row(std::size_t j, std::size_t k, scratch& s, const case_table& table, indexed_triangles<S>& out) const {
+    void write_cube_row(std::size_t j, std::size_t k, scratch& s, const case_table& table,
+                        indexed_triangles<S>& out) const {
         // The crossing masks of the rows around this cube row. A vertex's id is its row's base
         // plus its rank in its mask; numbering each mask's bits in one sweep costs a store per
         // vertex, where ranking every cube corner would cost a bit count (no popcnt
@@ -661,8 +675,8 @@ private:
     uninitialized_vector<std::uint64_t> bits_;
     uninitialized_vector<std::uint32_t> xcount_, ycount_, zcount_;
     uninitialized_vector<std::uint64_t> vbase_, tbase_;
-    std::unique_ptr<scratch> row_scratch_;    // write_layout_row()'s
-    indexed_triangles<double> no_output_;     // write_layout_row() writes into the layout only
+    std::unique_ptr<scratch> row_scratch_;  // write_layout_row()'s
+    indexed_triangles<double> no_output_;   // write_layout_row() writes into the layout only
 };
 
 }  // namespace hmira::detail::mc

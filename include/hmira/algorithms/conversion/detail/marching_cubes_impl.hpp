@@ -27,13 +27,15 @@ namespace detail::mc {
 /// strong guarantee. True of every halfedge_mutable_mesh (erase marks, O(1) each), and of a
 /// model that removes faces and vertices itself (face_vertex_mesh).
 template <class M, class T>
-constexpr bool can_undo_insertion = halfedge_mutable_mesh<M, T> || (face_removal_mesh<M, T> && vertex_removal_mesh<M, T>);
+constexpr bool can_undo_insertion =
+    halfedge_mutable_mesh<M, T> || (face_removal_mesh<M, T> && vertex_removal_mesh<M, T>);
 
 /// Takes back `faces` (triangles, in creation order) and then `vertices`, all created by this
 /// insertion. Allocates nothing on the half-edge path. O(added elements), except that a model
 /// without halfedges and without a batch remove_vertices pays its own remove_vertex per vertex.
 template <class M, class T>
-void undo_insertion(M& m, std::span<const typename T::face_handle> faces, std::span<const typename T::vertex_handle> vertices) noexcept {
+void undo_insertion(M& m, std::span<const typename T::face_handle> faces,
+                    std::span<const typename T::vertex_handle> vertices) noexcept {
     if constexpr (halfedge_mutable_mesh<M, T>) {
         // Newest face first. A face's sides are cut loose from it (set to no face) before its
         // edges are looked at, so an edge is erased by the last of its (one or two) new faces
@@ -69,7 +71,8 @@ result<indexed_triangles<S>> marching_cubes_indexed(const G& grid, const marchin
     if (!std::isfinite(options.iso))
         return fail(errc::invalid_argument, "marching_cubes: the iso value must be finite");
     result<indexed_triangles<S>> out = fail(errc::invalid_argument, "");
-    detail::with_thread_count(options.threads, [&] { out = detail::mc::extractor<G>(grid, options).template run<S>(); });
+    detail::with_thread_count(options.threads,
+                              [&] { out = detail::mc::extractor<G>(grid, options).template run<S>(); });
     return out;
 }
 
@@ -117,8 +120,10 @@ result<marching_cubes_output<M, T>> marching_cubes(M& mesh, const G& grid, const
             result<FH> f = T::add_face(mesh, std::span<const VH>(vs));
             if (!f) {
                 undo();
-                return fail(f.error().code, "marching_cubes: triangle " + std::to_string(i) + " refused by the mesh: " + f.error().message,
-                            static_cast<long long>(i));
+                return fail(
+                    f.error().code,
+                    "marching_cubes: triangle " + std::to_string(i) + " refused by the mesh: " + f.error().message,
+                    static_cast<long long>(i));
             }
             out.faces.push_back(f.value());
             if (!keep_going()) {

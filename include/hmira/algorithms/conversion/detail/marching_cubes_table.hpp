@@ -16,14 +16,25 @@ namespace hmira::detail::mc {
 // Corner c sits at offset (c & 1, (c >> 1) & 1, (c >> 2) & 1) from the cube's first sample.
 // Edges 0-3 run along x, 4-7 along y, 8-11 along z.
 inline constexpr std::array<std::array<int, 2>, 12> edge_corners{{
-    {0, 1}, {2, 3}, {4, 5}, {6, 7},  // x
-    {0, 2}, {1, 3}, {4, 6}, {5, 7},  // y
-    {0, 4}, {1, 5}, {2, 6}, {3, 7},  // z
+    {0, 1},
+    {2, 3},
+    {4, 5},
+    {6, 7},  // x
+    {0, 2},
+    {1, 3},
+    {4, 6},
+    {5, 7},  // y
+    {0, 4},
+    {1, 5},
+    {2, 6},
+    {3, 7},  // z
 }};
 
 constexpr int edge_between(int a, int b) {
     for (int e = 0; e < 12; ++e)
-        if ((edge_corners[e][0] == a && edge_corners[e][1] == b) || (edge_corners[e][0] == b && edge_corners[e][1] == a)) return e;
+        if ((edge_corners[e][0] == a && edge_corners[e][1] == b) ||
+            (edge_corners[e][0] == b && edge_corners[e][1] == a))
+            return e;
     return -1;
 }
 
@@ -187,10 +198,12 @@ inline case_table build_table() {
         t.ambiguous_count[config] = static_cast<std::uint8_t>(n);
         std::uint16_t crossed = 0;
         for (int e = 0; e < 12; ++e)
-            if (((config >> edge_corners[e][0]) & 1) != ((config >> edge_corners[e][1]) & 1)) crossed |= std::uint16_t(1u << e);
+            if (((config >> edge_corners[e][0]) & 1) != ((config >> edge_corners[e][1]) & 1))
+                crossed |= std::uint16_t(1u << e);
         t.crossed_edges[config] = crossed;
         t.first[config] = static_cast<std::uint32_t>(t.entries.size());
-        for (unsigned d = 0; d < (1u << n); ++d) t.entries.push_back(build_case(config, d, t.ambiguous_faces[config], n));
+        for (unsigned d = 0; d < (1u << n); ++d)
+            t.entries.push_back(build_case(config, d, t.ambiguous_faces[config], n));
     }
     return t;
 }

@@ -31,7 +31,8 @@ inline int side_perturbed(double uy, double uz, double vy, double vz, double py,
 }
 
 /// Exact sign of (d - a) . ((b - a) x (c - a)).
-inline int orient3d_exact(const vec3<double>& a, const vec3<double>& b, const vec3<double>& c, const vec3<double>& d) noexcept {
+inline int orient3d_exact(const vec3<double>& a, const vec3<double>& b, const vec3<double>& c,
+                          const vec3<double>& d) noexcept {
     using namespace predicates::detail;
     const expansion<2> bx = exact_diff(b.x, a.x), by = exact_diff(b.y, a.y), bz = exact_diff(b.z, a.z);
     const expansion<2> cx = exact_diff(c.x, a.x), cy = exact_diff(c.y, a.y), cz = exact_diff(c.z, a.z);
@@ -89,8 +90,8 @@ struct crossing_triangle {
 
     /// Whether the (perturbed) ray through (j, k) crosses the triangle. Requires orient != 0.
     bool crossed_by(double j, double k) const noexcept {
-        return side_perturbed(b.y, b.z, c.y, c.z, j, k) == orient && side_perturbed(c.y, c.z, a.y, a.z, j, k) == orient &&
-               side_perturbed(a.y, a.z, b.y, b.z, j, k) == orient;
+        return side_perturbed(b.y, b.z, c.y, c.z, j, k) == orient &&
+               side_perturbed(c.y, c.z, a.y, a.z, j, k) == orient && side_perturbed(a.y, a.z, b.y, b.z, j, k) == orient;
     }
 
     /// Whether voxel centre (i, j, k), perturbed, lies beyond the crossing in +x. Exact.
@@ -112,7 +113,8 @@ struct crossing_triangle {
         row_estimate r;
         r.base = (offset - n.z * dk) * inv_nx;
         r.slope = n.y * inv_nx;
-        r.tol = 1e-9 * (1.0 + std::max(std::abs(xmin), std::abs(xmax)) + (std::abs(offset) + std::abs(n.y) * jmax + std::abs(n.z * dk)) * std::abs(inv_nx));
+        r.tol = 1e-9 * (1.0 + std::max(std::abs(xmin), std::abs(xmax)) +
+                        (std::abs(offset) + std::abs(n.y) * jmax + std::abs(n.z * dk)) * std::abs(inv_nx));
         return r;
     }
 
@@ -127,8 +129,10 @@ struct crossing_triangle {
             long long l = static_cast<long long>(std::floor(xmin)), h = static_cast<long long>(std::ceil(xmax)) + 1;
             while (l < h) {
                 const long long m = l + (h - l) / 2;
-                if (beyond(double(m), dj, dk)) h = m;
-                else l = m + 1;
+                if (beyond(double(m), dj, dk))
+                    h = m;
+                else
+                    l = m + 1;
             }
             return l;
         }
@@ -169,7 +173,8 @@ struct crossing_triangle {
             const double dk = double(k);
             // Where the edges meet the line z = k, rounded: the run's ends up to rounding.
             double ya = std::numeric_limits<double>::infinity(), yb = -ya;
-            bool between_corners = true;  // the line meets edges only strictly between their corners (exact comparisons)
+            bool between_corners =
+                true;  // the line meets edges only strictly between their corners (exact comparisons)
             for (int e = 0; e < 3; ++e) {
                 const vec3<double>& u = *p[e];
                 const vec3<double>& v = *p[(e + 1) % 3];

@@ -391,69 +391,69 @@ inline result<window_job> plan(const voxelize_options& options, bool closed, std
 }  // namespace detail::vox
 
 template <class M, class T>
-    requires voxelize_mesh<M, T> result<voxelization> voxelize(const M& mesh, const grid_geometry& grid,
-                                                               const voxelize_options& options) {
-        if (auto ok = check_grid_geometry(grid, "voxelize"); !ok) return ok.error();
-        auto g = detail::vox::gather<M, T>(mesh, grid, options.allow_degenerate);
-        if (!g) return g.error();
-        voxelization out{bit_grid::unwritten(grid), false, {}, g->tris.size(), g->degenerate};
-        auto job = detail::vox::plan(options, g->closed, out.note, out.filled);
-        if (!job) return job.error();
-        if (!detail::vox::fill_window(g->tris, nullptr, nullptr, {0, 0, 0}, out.voxels, *job, options.threads,
-                                      options.progress))
-            return fail(errc::cancelled, "voxelize: cancelled");
-        return out;
-    }
+    requires voxelize_mesh<M, T>
+result<voxelization> voxelize(const M& mesh, const grid_geometry& grid, const voxelize_options& options) {
+    if (auto ok = check_grid_geometry(grid, "voxelize"); !ok) return ok.error();
+    auto g = detail::vox::gather<M, T>(mesh, grid, options.allow_degenerate);
+    if (!g) return g.error();
+    voxelization out{bit_grid::unwritten(grid), false, {}, g->tris.size(), g->degenerate};
+    auto job = detail::vox::plan(options, g->closed, out.note, out.filled);
+    if (!job) return job.error();
+    if (!detail::vox::fill_window(g->tris, nullptr, nullptr, {0, 0, 0}, out.voxels, *job, options.threads,
+                                  options.progress))
+        return fail(errc::cancelled, "voxelize: cancelled");
+    return out;
+}
 
 template <class M, class T, writable_voxel_grid G>
-    requires voxelize_mesh<M, T> result<voxelization> voxelize_into(const M& mesh, G& grid,
-                                                                    const voxelize_options& options) {
-        auto v = voxelize<M, T>(mesh, geometry_of(grid), options);
-        if (!v) return v.error();
-        const auto d = grid.dims();
-        for (std::size_t k = 0; k < d[2]; ++k)
-            for (std::size_t j = 0; j < d[1]; ++j)
-                for (std::size_t i = 0; i < d[0]; ++i)
-                    grid.set(i, j, k, static_cast<typename G::value_type>(v->voxels.value(i, j, k)));
-        return v;
-    }
+    requires voxelize_mesh<M, T>
+result<voxelization> voxelize_into(const M& mesh, G& grid, const voxelize_options& options) {
+    auto v = voxelize<M, T>(mesh, geometry_of(grid), options);
+    if (!v) return v.error();
+    const auto d = grid.dims();
+    for (std::size_t k = 0; k < d[2]; ++k)
+        for (std::size_t j = 0; j < d[1]; ++j)
+            for (std::size_t i = 0; i < d[0]; ++i)
+                grid.set(i, j, k, static_cast<typename G::value_type>(v->voxels.value(i, j, k)));
+    return v;
+}
 
 template <class M, class T>
-    requires positioned_mesh<M, T> result<grid_geometry> voxel_grid_around(const M& mesh, std::size_t resolution,
-                                                                           std::size_t padding) {
-        if (resolution == 0) return fail(errc::invalid_argument, "voxel_grid_around: resolution must be at least 1");
-        vec3<double> lo{std::numeric_limits<double>::max(), std::numeric_limits<double>::max(),
-                        std::numeric_limits<double>::max()};
-        vec3<double> hi = -lo;
-        bool any = false;
-        for (auto v : T::vertices(mesh)) {
-            const vec3<typename T::scalar> p = T::position(mesh, v);
-            for (std::size_t a = 0; a < 3; ++a) {
-                if (!std::isfinite(double(p[a])))
-                    return fail(errc::invalid_argument, "voxel_grid_around: a vertex position is not finite");
-                lo[a] = std::min(lo[a], double(p[a]));
-                hi[a] = std::max(hi[a], double(p[a]));
-            }
-            any = true;
-        }
-        if (!any) return fail(errc::invalid_argument, "voxel_grid_around: the mesh has no vertices");
-        const double extent = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
-        if (!std::isfinite(extent))
-            return fail(errc::unsupported,
-                        "voxel_grid_around: the mesh spans more than the largest double along an axis; "
-                        "scale it down to voxelize it");
-        const double h = extent > 0 ? extent / double(resolution) : 1.0;
-        grid_geometry g;
+    requires positioned_mesh<M, T>
+result<grid_geometry> voxel_grid_around(const M& mesh, std::size_t resolution, std::size_t padding) {
+    if (resolution == 0) return fail(errc::invalid_argument, "voxel_grid_around: resolution must be at least 1");
+    vec3<double> lo{std::numeric_limits<double>::max(), std::numeric_limits<double>::max(),
+                    std::numeric_limits<double>::max()};
+    vec3<double> hi = -lo;
+    bool any = false;
+    for (auto v : T::vertices(mesh)) {
+        const vec3<typename T::scalar> p = T::position(mesh, v);
         for (std::size_t a = 0; a < 3; ++a) {
-            const auto n = static_cast<std::size_t>(std::ceil((hi[a] - lo[a]) / h - 1e-9));
-            g.dims[a] = std::max<std::size_t>(n, 1) + 2 * padding;
-            // Centre the box: the voxels span [lo - pad*h, ...] and samples sit at voxel centres.
-            const double span = double(g.dims[a]) * h;
-            g.origin[a] = 0.5 * (lo[a] + hi[a]) - 0.5 * span + 0.5 * h;
-            g.spacing[a] = h;
+            if (!std::isfinite(double(p[a])))
+                return fail(errc::invalid_argument, "voxel_grid_around: a vertex position is not finite");
+            lo[a] = std::min(lo[a], double(p[a]));
+            hi[a] = std::max(hi[a], double(p[a]));
         }
-        return g;
+        any = true;
     }
+    if (!any) return fail(errc::invalid_argument, "voxel_grid_around: the mesh has no vertices");
+    const double extent = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
+    if (!std::isfinite(extent))
+        return fail(errc::unsupported,
+                    "voxel_grid_around: the mesh spans more than the largest double along an axis; "
+                    "scale it down to voxelize it");
+    const double h = extent > 0 ? extent / double(resolution) : 1.0;
+    grid_geometry g;
+    for (std::size_t a = 0; a < 3; ++a) {
+        const auto n = static_cast<std::size_t>(std::ceil((hi[a] - lo[a]) / h - 1e-9));
+        g.dims[a] = std::max<std::size_t>(n, 1) + 2 * padding;
+        // Centre the box: the voxels span [lo - pad*h, ...] and samples sit at voxel centres.
+        const double span = double(g.dims[a]) * h;
+        g.origin[a] = 0.5 * (lo[a] + hi[a]) - 0.5 * span + 0.5 * h;
+        g.spacing[a] = h;
+    }
+    return g;
+}
 
 inline std::uint64_t voxelize_memory_estimate(const grid_geometry& grid, std::size_t triangles) {
     const double words = std::ceil(double(grid.dims[0]) / 64.0) * double(grid.dims[1]) * double(grid.dims[2]);

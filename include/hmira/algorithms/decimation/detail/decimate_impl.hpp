@@ -147,7 +147,8 @@ private:
     /// The collapse this edge would make, or nothing when the constraints forbid it.
     std::optional<candidate<H>> candidate_of(E e) const {
         const H h = T::edge_halfedge(m_, e), o = T::opposite(m_, h);
-        if (o_.keep_boundary && (T::face(m_, h) == T::null_face() || T::face(m_, o) == T::null_face())) return std::nullopt;
+        if (o_.keep_boundary && (T::face(m_, h) == T::null_face() || T::face(m_, o) == T::null_face()))
+            return std::nullopt;
         const V a = T::target(m_, o), b = T::target(m_, h);
         const bool pa = pinned(a), pb = pinned(b);
         if (pa && pb) return std::nullopt;
@@ -170,8 +171,10 @@ private:
     /// collapse.
     void update(std::uint32_t key) {
         refused_[key] = 0;
-        if (const auto c = candidate_of(edges_[key])) heap_.set(key, c->cost);
-        else heap_.erase(key);
+        if (const auto c = candidate_of(edges_[key]))
+            heap_.set(key, c->cost);
+        else
+            heap_.erase(key);
     }
 
     /// The normal-angle and aspect-ratio limits on the faces that survive around the edge.
@@ -211,7 +214,8 @@ private:
 
     /// Longest edge over the height onto it, 1 for an equilateral triangle; `twice_area_sq`
     /// is the squared norm of the cross product.
-    static double aspect_ratio(const vec3<double>& p, const vec3<double>& q, const vec3<double>& r, double twice_area_sq) {
+    static double aspect_ratio(const vec3<double>& p, const vec3<double>& q, const vec3<double>& r,
+                               double twice_area_sq) {
         if (!(twice_area_sq > 0)) return std::numeric_limits<double>::infinity();
         const double l = std::max({squared_norm(q - p), squared_norm(r - q), squared_norm(p - r)});
         return l / std::sqrt(twice_area_sq) * (std::sqrt(3.0) / 2);
@@ -259,9 +263,9 @@ private:
     M& m_;
     const decimate_options& o_;
     indexed_heap heap_;
-    std::vector<quadric> quadrics_;   // by vertex index
-    std::vector<std::uint8_t> fixed_;  // by vertex index: locked, boundary
-    std::vector<E> edges_;             // by edge index
+    std::vector<quadric> quadrics_;      // by vertex index
+    std::vector<std::uint8_t> fixed_;    // by vertex index: locked, boundary
+    std::vector<E> edges_;               // by edge index
     std::vector<std::uint8_t> refused_;  // by edge index: left the queue refused, retried nearby
     std::size_t faces_ = 0;
     double cos_limit_ = 0;
@@ -281,7 +285,8 @@ result<decimate_result> decimate(M& mesh, const decimate_options& options) {
     if (options.max_error && !(*options.max_error >= 0 && std::isfinite(*options.max_error)))
         return bad("option max_error must be a finite distance >= 0, got " + std::to_string(*options.max_error));
     if (!(options.max_normal_angle >= 0 && options.max_normal_angle <= 180))
-        return bad("option max_normal_angle must be in [0, 180] degrees, got " + std::to_string(options.max_normal_angle));
+        return bad("option max_normal_angle must be in [0, 180] degrees, got " +
+                   std::to_string(options.max_normal_angle));
     if (!(options.max_aspect_ratio >= 1))
         return bad("option max_aspect_ratio must be at least 1, got " + std::to_string(options.max_aspect_ratio));
     if (!options.locked_vertices.empty()) {
@@ -293,7 +298,8 @@ result<decimate_result> decimate(M& mesh, const decimate_options& options) {
     }
     for (auto v : T::vertices(mesh))
         if (!dt::finite(dt::position_of<M, T>(mesh, v)))
-            return fail(errc::invalid_argument, "decimate: vertex " + std::to_string(T::vertex_index(mesh, v)) + " has a non-finite position",
+            return fail(errc::invalid_argument,
+                        "decimate: vertex " + std::to_string(T::vertex_index(mesh, v)) + " has a non-finite position",
                         (long long)T::vertex_index(mesh, v));
 
     decimate_result out;
@@ -315,7 +321,8 @@ result<decimate_result> decimate(M& mesh, const decimate_options& options) {
             out.triangulated = true;
             out.note = "polygon faces were triangulated first; ";
         } else {
-            return fail(errc::unsupported, "decimate: the mesh has faces that are not triangles and the model cannot triangulate them");
+            return fail(errc::unsupported,
+                        "decimate: the mesh has faces that are not triangles and the model cannot triangulate them");
         }
     }
     std::size_t target = 0;
@@ -334,9 +341,10 @@ result<decimate_result> decimate(M& mesh, const decimate_options& options) {
     out.faces = d.faces();
     out.vertices = T::vertex_count(mesh);
     if (out.stopped_by == decimate_stop::constraints)
-        out.note += "stopped at " + std::to_string(out.faces) + " faces, above the target of " + std::to_string(target) +
-                    ": no remaining collapse satisfies the constraints (boundary, locked vertices, normal angle, aspect "
-                    "ratio) and the link condition";
+        out.note +=
+            "stopped at " + std::to_string(out.faces) + " faces, above the target of " + std::to_string(target) +
+            ": no remaining collapse satisfies the constraints (boundary, locked vertices, normal angle, aspect "
+            "ratio) and the link condition";
     else if (out.stopped_by == decimate_stop::max_error && (options.target_faces || options.target_ratio))
         out.note += "stopped at " + std::to_string(out.faces) + " faces by max_error, before the face target";
     if (out.note.size() >= 2 && out.note.substr(out.note.size() - 2) == "; ") out.note.resize(out.note.size() - 2);

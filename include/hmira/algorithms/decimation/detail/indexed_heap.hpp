@@ -49,8 +49,10 @@ public:
         if (i == entries_.size()) return;
         entries_[i] = last;
         place_[last.key] = i;
-        if (i > 0 && before(last, entries_[(i - 1) / 2])) up(i);
-        else down(i);
+        if (i > 0 && before(last, entries_[(i - 1) / 2]))
+            up(i);
+        else
+            down(i);
     }
 
 private:

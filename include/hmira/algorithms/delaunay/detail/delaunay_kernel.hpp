@@ -75,8 +75,10 @@ inline std::vector<std::uint32_t> insertion_order(const std::vector<xy>& pts, bo
     const double scale = extent > 0 ? (double((1u << bits) - 1) / extent) : 0.0;
     std::vector<std::uint64_t> keys(n);
     for (std::size_t i = 0; i < n; ++i) {
-        const auto qx = static_cast<std::uint32_t>(std::clamp((pts[i].x - minx) * scale, 0.0, double((1u << bits) - 1)));
-        const auto qy = static_cast<std::uint32_t>(std::clamp((pts[i].y - miny) * scale, 0.0, double((1u << bits) - 1)));
+        const auto qx =
+            static_cast<std::uint32_t>(std::clamp((pts[i].x - minx) * scale, 0.0, double((1u << bits) - 1)));
+        const auto qy =
+            static_cast<std::uint32_t>(std::clamp((pts[i].y - miny) * scale, 0.0, double((1u << bits) - 1)));
         std::uint32_t round = 2;
         if (brio) {
             // A fixed hash of the index, so that the result does not depend on a global seed:

@@ -281,30 +281,29 @@ result<delaunay_triangles> delaunay_triangulation(const R& points, const delauna
 }
 
 template <class M, class T, delaunay_point_range R>
-    requires mesh_builder<M, T> result<delaunay_mesh_result<M, T>> delaunay_triangulation(
-        M& mesh, const R& points, const delaunay_options& options) {
-        auto tri = delaunay_triangulation(points, options);
-        if (!tri) return tri.error();
-        delaunay_mesh_result<M, T> out;
-        out.status = tri->status;
-        out.vertex_to_input = std::move(tri->vertex_to_input);
-        out.input_to_vertex = std::move(tri->input_to_vertex);
-        if (tri->status != delaunay_status::ok) return out;
-        using S = typename T::scalar;
-        out.vertices.reserve(tri->points.size());
-        for (const auto& q : tri->points) out.vertices.push_back(T::add_vertex(mesh, vec3<S>{S(q.x), S(q.y), S(q.z)}));
-        out.faces.reserve(tri->triangles.size());
-        for (const auto& t : tri->triangles) {
-            const std::array<vertex_handle_t<M, T>, 3> vs = {out.vertices[t[0]], out.vertices[t[1]],
-                                                             out.vertices[t[2]]};
-            auto f = T::add_face(mesh, std::span<const vertex_handle_t<M, T>>(vs.data(), 3));
-            if (!f) return f.error();
-            out.faces.push_back(*f);
-        }
-        out.hull.reserve(tri->hull.size());
-        for (std::uint32_t v : tri->hull) out.hull.push_back(out.vertices[v]);
-        out.voronoi = std::move(tri->voronoi);
-        return out;
+    requires mesh_builder<M, T>
+result<delaunay_mesh_result<M, T>> delaunay_triangulation(M& mesh, const R& points, const delaunay_options& options) {
+    auto tri = delaunay_triangulation(points, options);
+    if (!tri) return tri.error();
+    delaunay_mesh_result<M, T> out;
+    out.status = tri->status;
+    out.vertex_to_input = std::move(tri->vertex_to_input);
+    out.input_to_vertex = std::move(tri->input_to_vertex);
+    if (tri->status != delaunay_status::ok) return out;
+    using S = typename T::scalar;
+    out.vertices.reserve(tri->points.size());
+    for (const auto& q : tri->points) out.vertices.push_back(T::add_vertex(mesh, vec3<S>{S(q.x), S(q.y), S(q.z)}));
+    out.faces.reserve(tri->triangles.size());
+    for (const auto& t : tri->triangles) {
+        const std::array<vertex_handle_t<M, T>, 3> vs = {out.vertices[t[0]], out.vertices[t[1]], out.vertices[t[2]]};
+        auto f = T::add_face(mesh, std::span<const vertex_handle_t<M, T>>(vs.data(), 3));
+        if (!f) return f.error();
+        out.faces.push_back(*f);
     }
+    out.hull.reserve(tri->hull.size());
+    for (std::uint32_t v : tri->hull) out.hull.push_back(out.vertices[v]);
+    out.voronoi = std::move(tri->voronoi);
+    return out;
+}
 
 }  // namespace hmira

@@ -58,15 +58,15 @@ bool zero_area_face(const M& mesh, typename T::face_handle f) {
 using bevel_origins = std::vector<std::pair<std::size_t, std::size_t>>;
 
 template <class M, class T>
-void note_origin(const M& mesh, typename T::vertex_handle v, const std::array<std::size_t, 2>& edges, bevel_origins& origin) {
+void note_origin(const M& mesh, typename T::vertex_handle v, const std::array<std::size_t, 2>& edges,
+                 bevel_origins& origin) {
     for (auto e : edges)
         if (e != index_map::none) origin.emplace_back(T::vertex_index(mesh, v), e);
 }
 
 /// Step 1: splits the slid edges (once where slides from both ends meet exactly).
 template <class M, class T, class Plan, class Out>
-result<void> bevel_split_slides(M& mesh, const Plan& plan, Out& out, progress_gate& progress,
-                                bevel_origins& origin) {
+result<void> bevel_split_slides(M& mesh, const Plan& plan, Out& out, progress_gate& progress, bevel_origins& origin) {
     namespace du = ::hmira::detail::euler;
     for (const auto& sl : plan.slides) {
         if (auto ok = progress.step(); !ok) return ok.error();
@@ -96,8 +96,7 @@ result<void> bevel_split_slides(M& mesh, const Plan& plan, Out& out, progress_ga
 
 /// Step 2: points inside corners between two bevelled edges, hung from the vertex by makeEV.
 template <class M, class T, class Plan, class Out>
-result<void> bevel_hang_inners(M& mesh, const Plan& plan, Out& out, progress_gate& progress,
-                               bevel_origins& origin) {
+result<void> bevel_hang_inners(M& mesh, const Plan& plan, Out& out, progress_gate& progress, bevel_origins& origin) {
     for (const auto& in : plan.inners) {
         if (auto ok = progress.step(); !ok) return ok.error();
         const auto r = mev<M, T>(mesh, in.corner, pos<M, T>(mesh, in.v) + in.dir * in.width);
@@ -112,8 +111,7 @@ result<void> bevel_hang_inners(M& mesh, const Plan& plan, Out& out, progress_gat
 /// quads. A boundary edge has one face: its quad (u, w, q, p) is the whole strip, and the edge
 /// stays as the strip's boundary side. Returns a halfedge of each strip, on its F_L long side.
 template <class M, class T, class Plan>
-result<std::vector<typename T::halfedge_handle>> bevel_cut_strips(M& mesh, const Plan& plan,
-                                                                  progress_gate& progress) {
+result<std::vector<typename T::halfedge_handle>> bevel_cut_strips(M& mesh, const Plan& plan, progress_gate& progress) {
     const auto& sel = plan.sel;
     std::vector<typename T::halfedge_handle> strip_side(sel.size());
     for (std::size_t i = 0; i < sel.size(); ++i) {
@@ -125,7 +123,8 @@ result<std::vector<typename T::halfedge_handle>> bevel_cut_strips(M& mesh, const
             strip_side[i] = T::opposite(mesh, left.value().halfedge);
             continue;
         }
-        if (auto right = mef<M, T>(mesh, T::prev(mesh, T::prev(mesh, o)), T::next(mesh, o)); !right) return right.error();
+        if (auto right = mef<M, T>(mesh, T::prev(mesh, T::prev(mesh, o)), T::next(mesh, o)); !right)
+            return right.error();
         strip_side[i] = T::opposite(mesh, left.value().halfedge);  // q -> p, inside the strip
         if (auto ok = kef<M, T>(mesh, h); !ok) return ok.error();
     }
@@ -158,12 +157,12 @@ struct bevel_profiles {
     using V = typename T::vertex_handle;
     using H = typename T::halfedge_handle;
     struct end_edge {
-        V a, b;                     // the edge's ends, as first met (from a strip's F_L side)
-        vec3<double> v{}, dir{};    // the original end vertex, and the unit edge direction away from it
-        int uses = 0;               // strips ending in this edge (2 at a mitre or pass-through)
-        H side{};                   // its halfedge in the first such strip (no edge dies before it is split)
-        std::vector<V> arc;         // a, the arc points, b
-        bool straight = false;      // a boundary strip ends in it: its points are evenly spaced on it
+        V a, b;                   // the edge's ends, as first met (from a strip's F_L side)
+        vec3<double> v{}, dir{};  // the original end vertex, and the unit edge direction away from it
+        int uses = 0;             // strips ending in this edge (2 at a mitre or pass-through)
+        H side{};                 // its halfedge in the first such strip (no edge dies before it is split)
+        std::vector<V> arc;       // a, the arc points, b
+        bool straight = false;    // a boundary strip ends in it: its points are evenly spaced on it
     };
     struct strip_end {
         bool pointed = false;   // the end vertex stayed: the strip ends in it
@@ -183,16 +182,18 @@ struct bevel_profiles {
     std::vector<patch> patches;
 
     /// The end edge joining the vertices of indices a and b.
-    std::size_t end_edge_between(std::size_t a, std::size_t b) const { return end_edge_at.at(std::make_pair(std::min(a, b), std::max(a, b))); }
+    std::size_t end_edge_between(std::size_t a, std::size_t b) const {
+        return end_edge_at.at(std::make_pair(std::min(a, b), std::max(a, b)));
+    }
 };
 
 /// Records how strip i ends on `side` (0: the source of its bevelled edge) in the end edge a-b
 /// (halfedge `along`), creating that end edge on first use. `ends` holds the bevelled edges'
 /// original end positions.
 template <class M, class T, class Plan>
-void bevel_add_end(const M& mesh, const Plan& plan,
-                   const std::vector<std::pair<vec3<double>, vec3<double>>>& ends, bevel_profiles<M, T>& pr, std::size_t i,
-                   int side, typename T::halfedge_handle along, typename T::vertex_handle a, typename T::vertex_handle b) {
+void bevel_add_end(const M& mesh, const Plan& plan, const std::vector<std::pair<vec3<double>, vec3<double>>>& ends,
+                   bevel_profiles<M, T>& pr, std::size_t i, int side, typename T::halfedge_handle along,
+                   typename T::vertex_handle a, typename T::vertex_handle b) {
     using V = typename T::vertex_handle;
     const auto ia = T::vertex_index(mesh, a), ib = T::vertex_index(mesh, b);
     const auto key = std::make_pair(std::min(ia, ib), std::max(ia, ib));
@@ -248,7 +249,8 @@ result<void> bevel_find_profiles(const M& mesh, const Plan& plan,
         auto h = start;
         do {
             pa.corners.push_back(T::target(mesh, h));
-            const auto a = T::vertex_index(mesh, du::source<M, T>(mesh, h)), b = T::vertex_index(mesh, T::target(mesh, h));
+            const auto a = T::vertex_index(mesh, du::source<M, T>(mesh, h)),
+                       b = T::vertex_index(mesh, T::target(mesh, h));
             if (!pr.end_edge_at.contains(std::make_pair(std::min(a, b), std::max(a, b)))) all_arcs = false;
             h = T::next(mesh, h);
         } while (h != start);
@@ -298,7 +300,8 @@ result<void> bevel_split_end_edges(M& mesh, std::size_t n, bevel_profiles<M, T>&
 /// from the F_L side (a fan to the vertex at a pointed end). A strip pointed at both ends has
 /// no profile to follow and stays one face. Lists the strip faces in out.strip_faces.
 template <class M, class T, class Out>
-result<void> bevel_cut_across(M& mesh, std::size_t n, const bevel_profiles<M, T>& pr, Out& out, progress_gate& progress) {
+result<void> bevel_cut_across(M& mesh, std::size_t n, const bevel_profiles<M, T>& pr, Out& out,
+                              progress_gate& progress) {
     for (std::size_t i = 0; i < pr.strip_face.size(); ++i) {
         auto c = pr.strip_face[i];
         out.strip_faces.push_back(c);
@@ -336,7 +339,8 @@ result<void> bevel_fill_patches(M& mesh, const bevel_profiles<M, T>& pr, Out& ou
         for (std::size_t s = 0; s < k; ++s) {
             // Side s runs from corner s - 1 to corner s (the corners were read as targets).
             const auto from = pa.corners[(s + k - 1) % k];
-            const auto& ee = pr.end_edges[pr.end_edge_between(T::vertex_index(mesh, from), T::vertex_index(mesh, pa.corners[s]))];
+            const auto& ee =
+                pr.end_edges[pr.end_edge_between(T::vertex_index(mesh, from), T::vertex_index(mesh, pa.corners[s]))];
             arcs[s] = ee.arc;
             if (ee.a != from) std::reverse(arcs[s].begin(), arcs[s].end());
         }
@@ -386,7 +390,8 @@ result<void> bevel_build(M& mesh, const Plan& plan, Out& out, progress_gate& pro
     const auto n = static_cast<std::size_t>(plan.segments);
     progress.add_work(sel.size() * (n + 1));
     bevel_profiles<M, T> pr;
-    if (auto ok = bevel_find_profiles<M, T>(mesh, plan, ends, strip_side.value(), out, pr, progress); !ok) return ok.error();
+    if (auto ok = bevel_find_profiles<M, T>(mesh, plan, ends, strip_side.value(), out, pr, progress); !ok)
+        return ok.error();
     if (auto ok = bevel_split_end_edges<M, T>(mesh, n, pr, out, progress, origin); !ok) return ok.error();
     if (auto ok = bevel_cut_across<M, T>(mesh, n, pr, out, progress); !ok) return ok.error();
     return bevel_fill_patches<M, T>(mesh, pr, out, progress, origin);
@@ -414,7 +419,8 @@ result<bevel_result<M, T>> bevel_build_checked(M& mesh, const bevel_plan<M, T>& 
                 for (auto u : JT::face_vertices(mesh, f)) {
                     const auto at = std::lower_bound(origin.begin(), origin.end(),
                                                      std::pair<std::size_t, std::size_t>{JT::vertex_index(mesh, u), 0});
-                    if (at != origin.end() && at->first == JT::vertex_index(mesh, u)) blame = std::min(blame, at->second);
+                    if (at != origin.end() && at->first == JT::vertex_index(mesh, u))
+                        blame = std::min(blame, at->second);
                 }
                 if (blame != index_map::none) blamed.push_back(blame);
             }
@@ -434,7 +440,8 @@ result<bevel_result<M, T>> bevel(M& mesh, const R& edges, const bevel_options& o
     if (!(options.width > 0) || !de::finite(options.width))
         return fail(errc::invalid_argument, "bevel: width must be finite and > 0");
     if (options.segments < 1 || options.segments > 64)
-        return fail(errc::invalid_argument, "bevel: segments must lie in [1, 64], got " + std::to_string(options.segments));
+        return fail(errc::invalid_argument,
+                    "bevel: segments must lie in [1, 64], got " + std::to_string(options.segments));
     // Planning is as long as building: it steps the progress too, so a cancel is heard early.
     detail::progress_gate progress(options.progress, 0, "bevel");
     if constexpr (std::ranges::sized_range<const R>) progress.add_work(std::ranges::size(edges));
@@ -473,10 +480,12 @@ template <class M, class T, class R>
     requires bevelable_mesh<M, T> && range_of_handles<R, typename T::vertex_handle>
 result<bevel_result<M, T>> bevel_vertices(M& mesh, const R& vertices, const bevel_options& options) {
     if (options.segments != 1)
-        return fail(errc::unsupported, "bevel_vertices: only segments = 1 (a flat cut) is supported in vertex-only mode");
+        return fail(errc::unsupported,
+                    "bevel_vertices: only segments = 1 (a flat cut) is supported in vertex-only mode");
     if (!(options.width > 0) || !detail::editing::finite(options.width))
         return fail(errc::invalid_argument, "bevel_vertices: width must be finite and > 0");
-    auto r = truncate<M, T>(mesh, vertices, {.fraction = 1.0 / 3.0, .distance = options.width, .progress = options.progress});
+    auto r = truncate<M, T>(mesh, vertices,
+                            {.fraction = 1.0 / 3.0, .distance = options.width, .progress = options.progress});
     if (!r) return r.error();
     bevel_result<M, T> out;
     for (auto f : r.value().faces)

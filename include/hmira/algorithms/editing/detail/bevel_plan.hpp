@@ -21,9 +21,9 @@ template <class M, class T>
 struct bevel_plan {
     /// A new vertex slid along an unbevelled edge.
     struct slide {
-        typename T::halfedge_handle h;  ///< the unbevelled edge, leaving the end vertex
-        double t = 0;                   ///< fraction of the edge from its source; < 0: split with its partner
-        double t_back = -1;             ///< the partner's fraction from the other end, or < 0
+        typename T::halfedge_handle h;            ///< the unbevelled edge, leaving the end vertex
+        double t = 0;                             ///< fraction of the edge from its source; < 0: split with its partner
+        double t_back = -1;                       ///< the partner's fraction from the other end, or < 0
         std::array<std::size_t, 2> edges{};       ///< the bevelled edges (indices) it serves; none: index_map::none
         std::array<std::size_t, 2> edges_back{};  ///< the partner's, when t_back >= 0
     };
@@ -35,18 +35,18 @@ struct bevel_plan {
         double width = 0;                    ///< after the clamp
         std::array<std::size_t, 2> edges{};  ///< the two bevelled edges (indices)
     };
-    std::vector<typename T::halfedge_handle> sel;     ///< one halfedge per bevelled edge
-    std::vector<std::size_t> sel_edge;                ///< the index of each bevelled edge
-    std::vector<typename T::vertex_handle> touched;   ///< the bevelled edges' ends
-    std::vector<bool> removed;                        ///< per touched vertex: it goes
-    std::vector<slide> slides;                        ///< the slid vertices
-    std::vector<inner> inners;                        ///< the corner vertices
-    std::vector<std::array<bool, 2>> end_kept;        ///< per bevelled edge: source / target stays
-    int segments = 1;                                 ///< bevel_options::segments
-    bool share_meeting_points = false;                ///< slides meeting mid-edge share one point (global clamp)
-    double requested_width = 0;                       ///< bevel_options::width
-    double smallest_width = 0;                        ///< the smallest width used after the clamp
-    std::size_t limited_edges = 0;                    ///< bevelled edges with a clamped new vertex
+    std::vector<typename T::halfedge_handle> sel;    ///< one halfedge per bevelled edge
+    std::vector<std::size_t> sel_edge;               ///< the index of each bevelled edge
+    std::vector<typename T::vertex_handle> touched;  ///< the bevelled edges' ends
+    std::vector<bool> removed;                       ///< per touched vertex: it goes
+    std::vector<slide> slides;                       ///< the slid vertices
+    std::vector<inner> inners;                       ///< the corner vertices
+    std::vector<std::array<bool, 2>> end_kept;       ///< per bevelled edge: source / target stays
+    int segments = 1;                                ///< bevel_options::segments
+    bool share_meeting_points = false;               ///< slides meeting mid-edge share one point (global clamp)
+    double requested_width = 0;                      ///< bevel_options::width
+    double smallest_width = 0;                       ///< the smallest width used after the clamp
+    std::size_t limited_edges = 0;                   ///< bevelled edges with a clamped new vertex
     /// Per bevelled edge: it is a boundary edge (sel holds its halfedge in its one face, the
     /// strip lies in that face and the edge itself stays as the strip's boundary side).
     std::vector<bool> on_boundary;
@@ -64,9 +64,10 @@ result<std::vector<std::pair<typename T::halfedge_handle, bool>>> bevel_select(c
         if (auto ok = progress.step(); !ok) return ok.error();
         const typename T::edge_handle e = e0;
         if (T::edge_index(mesh, e) >= T::edge_index_bound(mesh) || du::known_removed<M, T>(mesh, e))
-            return fail(errc::invalid_handle,
-                        "bevel: edge " + std::to_string(T::edge_index(mesh, e)) + " does not exist (out of range or deleted)",
-                        static_cast<long long>(T::edge_index(mesh, e)));
+            return fail(
+                errc::invalid_handle,
+                "bevel: edge " + std::to_string(T::edge_index(mesh, e)) + " does not exist (out of range or deleted)",
+                static_cast<long long>(T::edge_index(mesh, e)));
         auto h = T::edge_halfedge(mesh, e);
         const bool no_left = T::face(mesh, h) == T::null_face();
         const bool no_right = T::face(mesh, T::opposite(mesh, h)) == T::null_face();
@@ -95,10 +96,10 @@ struct bevel_planning {
         std::size_t edge_a, edge_b;
     };
     bevel_plan<M, T> plan;
-    index_set bevelled;                                // edge indices of the bevelled edges
-    index_map touched_at;                              // vertex index -> position in plan.touched
-    std::vector<slide_offset> slides;                  // the slides, before the clamp
-    index_map slide_at;                                // halfedge index -> position in slides
+    index_set bevelled;                                   // edge indices of the bevelled edges
+    index_map touched_at;                                 // vertex index -> position in plan.touched
+    std::vector<slide_offset> slides;                     // the slides, before the clamp
+    index_map slide_at;                                   // halfedge index -> position in slides
     std::vector<std::array<std::size_t, 2>> inner_edges;  // per inner point: its two bevelled edges
 
     std::size_t edge_of(const M& mesh, H h) const { return T::edge_index(mesh, T::edge(mesh, h)); }
@@ -108,7 +109,8 @@ struct bevel_planning {
 /// The chosen edges not yet dropped become the plan's selection; their ends, checked as
 /// corners, become plan.touched. errc::unsupported when every edge has been dropped.
 template <class M, class T>
-result<void> bevel_plan_selection(const M& mesh, const std::vector<std::pair<typename T::halfedge_handle, bool>>& chosen,
+result<void> bevel_plan_selection(const M& mesh,
+                                  const std::vector<std::pair<typename T::halfedge_handle, bool>>& chosen,
                                   const index_set& dropped, bevel_planning<M, T>& st, progress_gate& progress) {
     namespace du = ::hmira::detail::euler;
     auto& plan = st.plan;
@@ -121,8 +123,9 @@ result<void> bevel_plan_selection(const M& mesh, const std::vector<std::pair<typ
         plan.on_boundary.push_back(boundary);
     }
     if (plan.sel.empty())
-        return fail(errc::unsupported, "bevel: every selected edge would leave a face of zero area "
-                                       "(its width clamped too far); nothing bevelled");
+        return fail(errc::unsupported,
+                    "bevel: every selected edge would leave a face of zero area "
+                    "(its width clamped too far); nothing bevelled");
     progress.add_work(plan.sel.size());
     for (auto h : plan.sel) {
         if (auto ok = progress.step(); !ok) return ok.error();
@@ -262,8 +265,10 @@ void bevel_plan_widths(const M& mesh, bevel_planning<M, T>& st, const bevel_opti
 
 /// Plans one round of bevel(): the chosen edges minus the dropped ones, from the mesh as it is.
 template <class M, class T>
-result<bevel_plan<M, T>> bevel_make_plan(const M& mesh, const std::vector<std::pair<typename T::halfedge_handle, bool>>& chosen,
-                                         const index_set& dropped, const bevel_options& options, progress_gate& progress) {
+result<bevel_plan<M, T>> bevel_make_plan(const M& mesh,
+                                         const std::vector<std::pair<typename T::halfedge_handle, bool>>& chosen,
+                                         const index_set& dropped, const bevel_options& options,
+                                         progress_gate& progress) {
     namespace du = ::hmira::detail::euler;
     bevel_planning<M, T> st;
     auto& plan = st.plan;
@@ -278,7 +283,8 @@ result<bevel_plan<M, T>> bevel_make_plan(const M& mesh, const std::vector<std::p
         for (int side = 0; side < 2; ++side) {
             const auto v = side == 0 ? du::source<M, T>(mesh, sel[i]) : T::target(mesh, sel[i]);
             // A boundary strip's ends stay, yet its ends are edges (p-u, w-q) for the profile.
-            plan.end_kept[i][side] = !plan.on_boundary[i] && !plan.removed[st.touched_at.find(T::vertex_index(mesh, v))];
+            plan.end_kept[i][side] =
+                !plan.on_boundary[i] && !plan.removed[st.touched_at.find(T::vertex_index(mesh, v))];
         }
     plan.requested_width = options.width;
     plan.share_meeting_points = !options.clamp_overlap || options.clamp_globally;

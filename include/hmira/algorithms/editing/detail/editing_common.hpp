@@ -152,7 +152,8 @@ private:
         for (std::size_t c = slots_.size(); c > 1; c >>= 1) --shift_;
         size_ = 0;
         for (std::size_t w = 0; w < old.size(); ++w)
-            for (std::uint64_t b = old[w]; b != 0; b &= b - 1) insert(64 * w + static_cast<std::size_t>(std::countr_zero(b)));
+            for (std::uint64_t b = old[w]; b != 0; b &= b - 1)
+                insert(64 * w + static_cast<std::size_t>(std::countr_zero(b)));
         return false;
     }
     std::vector<std::size_t> slots_;
@@ -216,23 +217,27 @@ private:
 /// high the degree. `what` names the calling function.
 /// Cost O(V_adjacentV) on a valid mesh; on corrupt links at most O(H_all) steps and memory.
 template <class M, class T>
-result<std::vector<typename T::halfedge_handle>> checked_outgoing(const M& m, typename T::vertex_handle v, const char* what) {
+result<std::vector<typename T::halfedge_handle>> checked_outgoing(const M& m, typename T::vertex_handle v,
+                                                                  const char* what) {
     namespace de = detail::euler;
     std::vector<typename T::halfedge_handle> out;
     const auto start = T::vertex_halfedge(m, v);
     if (start == T::null_halfedge()) return out;
     const std::size_t bound = T::halfedge_index_bound(m);
     auto corrupt = [&](const std::string& why) {
-        return fail(errc::topology, std::string(what) + ": the edges around " + de::name<M, T>("vertex", m, v) + " are corrupt (" + why + ")",
-                    de::index_of<M, T>(m, v));
+        return fail(
+            errc::topology,
+            std::string(what) + ": the edges around " + de::name<M, T>("vertex", m, v) + " are corrupt (" + why + ")",
+            de::index_of<M, T>(m, v));
     };
     auto h = start;
     do {
         if (T::target(m, T::opposite(m, h)) != v)
-            return corrupt("halfedge " + std::to_string(T::halfedge_index(m, h)) + " of its rotation does not leave it");
+            return corrupt("halfedge " + std::to_string(T::halfedge_index(m, h)) +
+                           " of its rotation does not leave it");
         if (out.size() >= bound)
-            return corrupt("its rotation does not return to halfedge " + std::to_string(T::halfedge_index(m, start)) + " within " +
-                           std::to_string(bound) + " steps");
+            return corrupt("its rotation does not return to halfedge " + std::to_string(T::halfedge_index(m, start)) +
+                           " within " + std::to_string(bound) + " steps");
         out.push_back(h);
         h = T::next(m, T::opposite(m, h));
     } while (h != start);
@@ -270,22 +275,27 @@ result<void> check_corner_vertex(const M& m, typename T::vertex_handle v, const 
     if (!rotation) return rotation.error();
     const auto& hs = rotation.value();
     if (hs.empty())
-        return fail(errc::topology, std::string(what) + ": " + de::name<M, T>("vertex", m, v) + " is isolated; there is no corner to cut",
-                    de::index_of<M, T>(m, v));
+        return fail(
+            errc::topology,
+            std::string(what) + ": " + de::name<M, T>("vertex", m, v) + " is isolated; there is no corner to cut",
+            de::index_of<M, T>(m, v));
     std::size_t gaps = 0;
     for (auto h : hs) gaps += T::face(m, h) == T::null_face() ? 1 : 0;
     if (gaps > 1)
         return fail(errc::non_manifold,
-                    std::string(what) + ": " + de::name<M, T>("vertex", m, v) + " is non-manifold (" + std::to_string(gaps) +
-                        " boundary gaps); its corner is not one cone",
+                    std::string(what) + ": " + de::name<M, T>("vertex", m, v) + " is non-manifold (" +
+                        std::to_string(gaps) + " boundary gaps); its corner is not one cone",
                     de::index_of<M, T>(m, v));
     if (gaps == 1 && hs.size() < 2)
-        return fail(errc::topology, std::string(what) + ": " + de::name<M, T>("vertex", m, v) + " ends a wire edge", de::index_of<M, T>(m, v));
+        return fail(errc::topology, std::string(what) + ": " + de::name<M, T>("vertex", m, v) + " ends a wire edge",
+                    de::index_of<M, T>(m, v));
     if (gaps == 0 && hs.size() < 2)
-        return fail(errc::topology, std::string(what) + ": " + de::name<M, T>("vertex", m, v) + " has degree 1", de::index_of<M, T>(m, v));
+        return fail(errc::topology, std::string(what) + ": " + de::name<M, T>("vertex", m, v) + " has degree 1",
+                    de::index_of<M, T>(m, v));
     for (auto h : hs)
         if (T::target(m, h) == v)
-            return fail(errc::topology, std::string(what) + ": " + de::name<M, T>("vertex", m, v) + " has a loop edge", de::index_of<M, T>(m, v));
+            return fail(errc::topology, std::string(what) + ": " + de::name<M, T>("vertex", m, v) + " has a loop edge",
+                        de::index_of<M, T>(m, v));
     return {};
 }
 
@@ -295,7 +305,8 @@ result<void> check_corner_vertex(const M& m, typename T::vertex_handle v, const 
 template <class T>
 result<void> inner_call_allowed(const char* what) {
     if constexpr (fault_injecting_traits<T>) {
-        if (T::fail_inner_call()) return fail(errc::topology, std::string(what) + ": failure injected by the traits (test hook)");
+        if (T::fail_inner_call())
+            return fail(errc::topology, std::string(what) + ": failure injected by the traits (test hook)");
     }
     return {};
 }
@@ -327,7 +338,7 @@ result<void> kev(M& m, typename T::halfedge_handle h) {
 /// What split_edge made of the halfedge u -> w.
 template <class M, class T>
 struct split_result {
-    typename T::vertex_handle vertex;         ///< the new vertex x
+    typename T::vertex_handle vertex;           ///< the new vertex x
     typename T::halfedge_handle first, second;  ///< u -> x and x -> w, on the side of the split halfedge
 };
 
@@ -382,8 +393,8 @@ result<typename T::face_handle> replace_vertex_by_polygon(M& m, typename T::vert
     }
     // Cut the corner of each face around v into a triangle a[i] v a[i+1], unless it is one.
     for (std::size_t i = 0; i < d; ++i) {
-        const auto in = T::opposite(m, hs[i]);          // a[i] -> v
-        const auto out = hs[(i + 1) % d];                // v -> a[i+1], same face as `in`
+        const auto in = T::opposite(m, hs[i]);            // a[i] -> v
+        const auto out = hs[(i + 1) % d];                 // v -> a[i+1], same face as `in`
         if (T::next(m, T::next(m, out)) == in) continue;  // already a triangle
         if (auto r = mef<M, T>(m, T::prev(m, in), out); !r) return r.error();
         if (d == 2) break;  // one triangle, merged into the other face below

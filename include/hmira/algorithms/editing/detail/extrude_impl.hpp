@@ -18,7 +18,8 @@ template <class M, class T>
 result<void> check_extrude_face(const M& m, typename T::face_handle f) {
     namespace de = detail::euler;
     if (!de::usable<M, T>(m, f))
-        return fail(errc::invalid_handle, "extrude: " + de::name<M, T>("face", m, f) + " does not exist", de::index_of<M, T>(m, f));
+        return fail(errc::invalid_handle, "extrude: " + de::name<M, T>("face", m, f) + " does not exist",
+                    de::index_of<M, T>(m, f));
     return {};
 }
 
@@ -123,8 +124,8 @@ result<void> extrude_region(M& m, const std::vector<typename T::face_handle>& fa
             x = T::opposite(m, leaving);
             leaving = T::next(m, x);
         }
-        h0[i] = T::opposite(m, leaving);               // into v from outside, along the outline edge leaving v
-        h1[i] = T::prev(m, T::opposite(m, g));         // the last outside corner before g
+        h0[i] = T::opposite(m, leaving);        // into v from outside, along the outline edge leaving v
+        h1[i] = T::prev(m, T::opposite(m, g));  // the last outside corner before g
         place[i] = pos<M, T>(m, T::target(m, g));
         by_target.emplace(T::vertex_index(m, T::target(m, g)), i);
     }
@@ -166,8 +167,8 @@ result<void> extrude_region(M& m, const std::vector<typename T::face_handle>& fa
 /// Extrudes each face of `fs` on its own (individual mode, or a single face), along the given
 /// direction or its own normal, in one transaction.
 template <class M, class T>
-result<extrude_result<M, T>> extrude_each(M& mesh, const std::vector<typename T::face_handle>& fs, const vec3<double>& dir,
-                                          const extrude_options& options) {
+result<extrude_result<M, T>> extrude_each(M& mesh, const std::vector<typename T::face_handle>& fs,
+                                          const vec3<double>& dir, const extrude_options& options) {
     std::vector<vec3<double>> moves;
     std::size_t corners = 0;  // V + n, E + 2n, F + n for n corners over all loops
     for (auto f : fs) {
@@ -201,7 +202,8 @@ result<extrude_result<M, T>> extrude_each(M& mesh, const std::vector<typename T:
 /// in the region), adding the faces' area vectors to `area`. errc::topology for a region that
 /// is not connected through edges, has no outline, or is pinched at an outline vertex.
 template <class M, class T>
-result<std::vector<typename T::halfedge_handle>> extrude_outline(const M& mesh, const std::vector<typename T::face_handle>& fs,
+result<std::vector<typename T::halfedge_handle>> extrude_outline(const M& mesh,
+                                                                 const std::vector<typename T::face_handle>& fs,
                                                                  const index_set& in_region, vec3<double>& area) {
     using F = typename T::face_handle;
     auto in_r = [&](F f) { return f != T::null_face() && in_region.contains(T::face_index(mesh, f)); };
@@ -226,7 +228,8 @@ result<std::vector<typename T::halfedge_handle>> extrude_outline(const M& mesh, 
         }
         if (count != fs.size())
             return fail(errc::topology,
-                        "extrude: the faces are not connected through edges; use extrude_mode::individual or extrude each part");
+                        "extrude: the faces are not connected through edges; use extrude_mode::individual or extrude "
+                        "each part");
     }
     for (auto f : fs) {
         area += area_vector_with_rings<M, T>(mesh, f);
@@ -235,7 +238,8 @@ result<std::vector<typename T::halfedge_handle>> extrude_outline(const M& mesh, 
                 if (!in_r(T::face(mesh, T::opposite(mesh, h)))) outline.push_back(h);
     }
     if (outline.empty())
-        return fail(errc::topology, "extrude: the region is a whole closed component; it has no outline to build walls on");
+        return fail(errc::topology,
+                    "extrude: the region is a whole closed component; it has no outline to build walls on");
     std::vector<std::size_t> ends;
     for (auto g : outline) ends.push_back(T::vertex_index(mesh, T::target(mesh, g)));
     std::sort(ends.begin(), ends.end());
@@ -277,13 +281,15 @@ result<extrude_result<M, T>> extrude(M& mesh, const R& faces, const extrude_opti
         fs.push_back(f);
     }
     if (fs.empty()) return fail(errc::invalid_argument, "extrude: no face selected");
-    if (options.mode == extrude_mode::individual || fs.size() == 1) return de::extrude_each<M, T>(mesh, fs, dir, options);
+    if (options.mode == extrude_mode::individual || fs.size() == 1)
+        return de::extrude_each<M, T>(mesh, fs, dir, options);
     // Region: connected, with an outline, not pinched.
     vec3<double> area{};
     const auto outline = de::extrude_outline<M, T>(mesh, fs, in_region, area);
     if (!outline) return outline.error();
     if (!options.direction) {
-        if (!(norm(area) > 0)) return fail(errc::invalid_argument, "extrude: the region's mean normal is zero; give a direction");
+        if (!(norm(area) > 0))
+            return fail(errc::invalid_argument, "extrude: the region's mean normal is zero; give a direction");
         dir = normalized(area);
     }
     return de::transact<M, T>(mesh, [&]<class JT>() -> result<extrude_result<M, T>> {

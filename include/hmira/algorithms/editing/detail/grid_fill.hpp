@@ -31,7 +31,7 @@ typename T::halfedge_handle into_vertex(const M& m, typename T::face_handle f, t
 /// What grid_fill added to the mesh.
 template <class M, class T>
 struct grid_fill_result {
-    std::vector<typename T::face_handle> faces;      ///< the new faces (the filled face is not repeated)
+    std::vector<typename T::face_handle> faces;       ///< the new faces (the filled face is not repeated)
     std::vector<typename T::vertex_handle> vertices;  ///< the new vertices
 };
 
@@ -106,11 +106,11 @@ inline fitted_sphere fit_sphere(const std::vector<vec3<double>>& pts) {
 /// even n, where R_i = L_{i+1}).
 struct grid_fill_layout {
     using P = vec3<double>;
-    std::size_t k = 0;   ///< arcs
-    std::size_t n = 0;   ///< segments per arc
-    std::size_t h = 0;   ///< m of the description: patch size
-    bool odd = false;    ///< n is odd: strips between the patches, a k-gon in the middle
-    std::size_t a0 = 0;  ///< where patch i starts on arc i (h for even n, h + 1 for odd)
+    std::size_t k = 0;                            ///< arcs
+    std::size_t n = 0;                            ///< segments per arc
+    std::size_t h = 0;                            ///< m of the description: patch size
+    bool odd = false;                             ///< n is odd: strips between the patches, a k-gon in the middle
+    std::size_t a0 = 0;                           ///< where patch i starts on arc i (h for even n, h + 1 for odd)
     std::vector<std::vector<P>> ap;               ///< the arcs' positions
     std::vector<std::vector<P>> lp, rp;           ///< the inner paths L_i, R_i
     std::vector<std::vector<std::vector<P>>> gp;  ///< each patch's grid G
@@ -222,7 +222,8 @@ struct grid_fill_builder {
 /// Even n: the inner paths are spokes to one centre vertex. Spoke 0 is an antenna ending in
 /// the centre; each further spoke closes patch i - 1.
 template <class M, class T>
-result<void> grid_fill_spokes(grid_fill_builder<M, T>& b, const std::vector<std::vector<typename T::vertex_handle>>& arcs) {
+result<void> grid_fill_spokes(grid_fill_builder<M, T>& b,
+                              const std::vector<std::vector<typename T::vertex_handle>>& arcs) {
     const auto& g = b.g;
     const std::size_t k = g.k, h = g.h;
     b.lv[0].push_back(arcs[0][h]);
@@ -245,7 +246,8 @@ result<void> grid_fill_spokes(grid_fill_builder<M, T>& b, const std::vector<std:
 /// the inner edge I_{i+1} -> I_i closes strip i + 1. What is left is strip 0 and the middle
 /// k-gon, split by the edge I_{k-1} -> I_0. Each strip is then cut by its rungs.
 template <class M, class T>
-result<void> grid_fill_strips(grid_fill_builder<M, T>& b, const std::vector<std::vector<typename T::vertex_handle>>& arcs) {
+result<void> grid_fill_strips(grid_fill_builder<M, T>& b,
+                              const std::vector<std::vector<typename T::vertex_handle>>& arcs) {
     using V = typename T::vertex_handle;
     using F = typename T::face_handle;
     const auto& g = b.g;
@@ -289,8 +291,8 @@ result<void> grid_fill_strips(grid_fill_builder<M, T>& b, const std::vector<std:
 /// Cuts patch i into quads: rows r = 1 .. h-1 from G[r][0] to G[r][h], then each row strip
 /// into cells.
 template <class M, class T>
-result<void> grid_fill_cells(grid_fill_builder<M, T>& b, const std::vector<std::vector<typename T::vertex_handle>>& arcs,
-                             std::size_t i) {
+result<void> grid_fill_cells(grid_fill_builder<M, T>& b,
+                             const std::vector<std::vector<typename T::vertex_handle>>& arcs, std::size_t i) {
     using V = typename T::vertex_handle;
     using F = typename T::face_handle;
     const auto& gl = b.g;
@@ -341,7 +343,8 @@ result<void> grid_fill_cells(grid_fill_builder<M, T>& b, const std::vector<std::
 /// by walking the current face: O(k n^3) at worst (O(k n^2) new elements). Run inside a
 /// transaction (T journaled); an inner failure is passed on.
 template <class M, class T>
-result<grid_fill_result<M, T>> grid_fill(M& m, typename T::face_handle f, const std::vector<std::vector<typename T::vertex_handle>>& arcs) {
+result<grid_fill_result<M, T>> grid_fill(M& m, typename T::face_handle f,
+                                         const std::vector<std::vector<typename T::vertex_handle>>& arcs) {
     grid_fill_result<M, T> out;
     const auto layout = grid_fill_positions<M, T>(m, arcs);
     const std::size_t k = layout.k;
@@ -350,7 +353,8 @@ result<grid_fill_result<M, T>> grid_fill(M& m, typename T::face_handle f, const 
     b.rv.resize(k);
     b.patch.resize(k);
     b.strip.resize(k);
-    if (auto ok = layout.odd ? grid_fill_strips<M, T>(b, arcs) : grid_fill_spokes<M, T>(b, arcs); !ok) return ok.error();
+    if (auto ok = layout.odd ? grid_fill_strips<M, T>(b, arcs) : grid_fill_spokes<M, T>(b, arcs); !ok)
+        return ok.error();
     for (std::size_t i = 0; i < k; ++i)
         if (auto ok = grid_fill_cells<M, T>(b, arcs, i); !ok) return ok.error();
     return out;

@@ -56,7 +56,8 @@ public:
     void push_back(const X& x) {
         if (chunks_.empty() || chunks_.back().size() == chunks_.back().capacity()) {
             std::vector<X> c;
-            c.reserve(chunks_.empty() ? 16 : std::min<std::size_t>(2 * chunks_.back().capacity(), std::size_t{1} << 16));
+            c.reserve(chunks_.empty() ? 16
+                                      : std::min<std::size_t>(2 * chunks_.back().capacity(), std::size_t{1} << 16));
             chunks_.push_back(std::move(c));
         }
         chunks_.back().push_back(x);
@@ -85,7 +86,16 @@ public:
     using E = typename T::edge_handle;
     using P = vec3<typename T::scalar>;
 
-    enum class kind : std::uint8_t { next, target, face, vertex_halfedge, face_halfedge, position, ring_added, ring_removed };
+    enum class kind : std::uint8_t {
+        next,
+        target,
+        face,
+        vertex_halfedge,
+        face_halfedge,
+        position,
+        ring_added,
+        ring_removed
+    };
     struct entry {
         kind what;
         H h{};  // the halfedge changed (next, target, face), or the ring's halfedge
@@ -100,7 +110,9 @@ public:
 
     /// Remembers the index bounds: elements at or above them are made by the edit.
     explicit journal(const M& m)
-        : halfedge_bound_(T::halfedge_index_bound(m)), vertex_bound_(T::vertex_index_bound(m)), face_bound_(T::face_index_bound(m)) {}
+        : halfedge_bound_(T::halfedge_index_bound(m)),
+          vertex_bound_(T::vertex_index_bound(m)),
+          face_bound_(T::face_index_bound(m)) {}
 
     void record_next(const M& m, H h, H n) {
         if (old(m, n)) {
@@ -135,7 +147,9 @@ public:
         entries_.push_back({kind::position, H{}, H{}, v, F{}});
         positions_.push_back(T::position(m, v));
     }
-    void record_ring(F f, H h, bool added) { entries_.push_back({added ? kind::ring_added : kind::ring_removed, h, H{}, V{}, f}); }
+    void record_ring(F f, H h, bool added) {
+        entries_.push_back({added ? kind::ring_added : kind::ring_removed, h, H{}, V{}, f});
+    }
 
     /// Room for one more created element, reserved before the model creates it (so that
     /// recording it cannot throw after it exists).
@@ -160,7 +174,9 @@ public:
     void erase_later(V v) { erase_vertices_.push_back(v); }
 
     /// Number of raw mutations so far (the fault-injection tests count them).
-    std::size_t size() const { return entries_.size() + made_vertices_.size() + made_edges_.size() + made_faces_.size(); }
+    std::size_t size() const {
+        return entries_.size() + made_vertices_.size() + made_edges_.size() + made_faces_.size();
+    }
 
     /// Performs the deferred erasures. Erasing only marks elements on every shipped model and
     /// cannot fail; should the very first one throw, nothing has happened yet and the caller
@@ -178,29 +194,29 @@ public:
         entries_.for_each_newest_first([&](const entry& e) {
             const entry* it = &e;
             switch (it->what) {
-            case kind::next:
-                // A new halfedge had no next yet; it is erased below.
-                if (it->old_h != T::null_halfedge()) T::set_next(m, it->h, it->old_h);
-                break;
-            case kind::target: T::set_target(m, it->h, it->v); break;
-            case kind::face: T::set_face(m, it->h, it->f); break;
-            case kind::vertex_halfedge:
-                if constexpr (vertex_halfedge_restorable_mesh<M, T>)
-                    T::restore_vertex_halfedge(m, it->v, it->old_h);
-                else
-                    T::set_vertex_halfedge(m, it->v, it->old_h);
-                break;
-            case kind::face_halfedge: T::set_face_halfedge(m, it->f, it->old_h); break;
-            case kind::position:
-                --position;
-                if constexpr (position_mutable_mesh<M, T>) T::set_position(m, it->v, positions_[position]);
-                break;
-            case kind::ring_added:
-                if constexpr (inner_ring_mutable_mesh<M, T>) T::remove_inner_ring(m, it->f, it->h);
-                break;
-            case kind::ring_removed:
-                if constexpr (inner_ring_mutable_mesh<M, T>) T::add_inner_ring(m, it->f, it->h);
-                break;
+                case kind::next:
+                    // A new halfedge had no next yet; it is erased below.
+                    if (it->old_h != T::null_halfedge()) T::set_next(m, it->h, it->old_h);
+                    break;
+                case kind::target: T::set_target(m, it->h, it->v); break;
+                case kind::face: T::set_face(m, it->h, it->f); break;
+                case kind::vertex_halfedge:
+                    if constexpr (vertex_halfedge_restorable_mesh<M, T>)
+                        T::restore_vertex_halfedge(m, it->v, it->old_h);
+                    else
+                        T::set_vertex_halfedge(m, it->v, it->old_h);
+                    break;
+                case kind::face_halfedge: T::set_face_halfedge(m, it->f, it->old_h); break;
+                case kind::position:
+                    --position;
+                    if constexpr (position_mutable_mesh<M, T>) T::set_position(m, it->v, positions_[position]);
+                    break;
+                case kind::ring_added:
+                    if constexpr (inner_ring_mutable_mesh<M, T>) T::remove_inner_ring(m, it->f, it->h);
+                    break;
+                case kind::ring_removed:
+                    if constexpr (inner_ring_mutable_mesh<M, T>) T::add_inner_ring(m, it->f, it->h);
+                    break;
             }
         });
         // set_next(h, n) also set prev(n) = h. The first recorded prev of each n is its value
@@ -256,11 +272,26 @@ struct journaled_traits : T {
     using E = typename T::edge_handle;
     static inline thread_local journal<M, T>* active = nullptr;
 
-    static void set_next(M& m, H h, H n) { active->record_next(m, h, n); T::set_next(m, h, n); }
-    static void set_target(M& m, H h, V v) { active->record_target(m, h); T::set_target(m, h, v); }
-    static void set_face(M& m, H h, F f) { active->record_face(m, h); T::set_face(m, h, f); }
-    static void set_vertex_halfedge(M& m, V v, H h) { active->record_vertex_halfedge(m, v); T::set_vertex_halfedge(m, v, h); }
-    static void set_face_halfedge(M& m, F f, H h) { active->record_face_halfedge(m, f); T::set_face_halfedge(m, f, h); }
+    static void set_next(M& m, H h, H n) {
+        active->record_next(m, h, n);
+        T::set_next(m, h, n);
+    }
+    static void set_target(M& m, H h, V v) {
+        active->record_target(m, h);
+        T::set_target(m, h, v);
+    }
+    static void set_face(M& m, H h, F f) {
+        active->record_face(m, h);
+        T::set_face(m, h, f);
+    }
+    static void set_vertex_halfedge(M& m, V v, H h) {
+        active->record_vertex_halfedge(m, v);
+        T::set_vertex_halfedge(m, v, h);
+    }
+    static void set_face_halfedge(M& m, F f, H h) {
+        active->record_face_halfedge(m, f);
+        T::set_face_halfedge(m, f, h);
+    }
     static void set_position(M& m, V v, const vec3<typename T::scalar>& p)
         requires position_mutable_mesh<M, T>
     {

@@ -17,9 +17,11 @@ namespace detail::editing {
 template <class M, class T>
 result<void> check_truncate_options(const truncate_options& o, const char* what) {
     if (!(o.distance >= 0) || !finite(o.distance))
-        return fail(errc::invalid_argument, std::string(what) + ": distance must be finite and >= 0 (0 selects fraction)");
+        return fail(errc::invalid_argument,
+                    std::string(what) + ": distance must be finite and >= 0 (0 selects fraction)");
     if (o.distance == 0 && !(o.fraction > 0 && o.fraction < 1))
-        return fail(errc::invalid_argument, std::string(what) + ": fraction must lie in (0, 1), got " + std::to_string(o.fraction));
+        return fail(errc::invalid_argument,
+                    std::string(what) + ": fraction must lie in (0, 1), got " + std::to_string(o.fraction));
     return {};
 }
 
@@ -40,7 +42,11 @@ result<void> truncate_checked(M& m, const std::vector<typename T::vertex_handle>
                               const truncate_options& o, Out& out) {
     using H = typename T::halfedge_handle;
     // Plan every split before changing anything, from the original geometry.
-    struct cut { H h; double t_from, t_to; bool both; };
+    struct cut {
+        H h;
+        double t_from, t_to;
+        bool both;
+    };
     std::vector<cut> cuts;
     for (auto v : vs)
         for (auto h : outgoing<M, T>(m, v)) {
@@ -116,7 +122,9 @@ result<truncate_result<M, T>> truncate(M& mesh, typename T::vertex_handle vertex
     selected.insert(T::vertex_index(mesh, vertex));
     auto r = de::transact<M, T>(mesh, [&]<class JT>() -> result<truncate_set_result<M, T>> {
         truncate_set_result<M, T> set;
-        if (auto ok = de::truncate_checked<M, JT>(mesh, std::vector<typename T::vertex_handle>{vertex}, selected, options, set); !ok)
+        if (auto ok = de::truncate_checked<M, JT>(mesh, std::vector<typename T::vertex_handle>{vertex}, selected,
+                                                  options, set);
+            !ok)
             return ok.error();
         return set;
     });

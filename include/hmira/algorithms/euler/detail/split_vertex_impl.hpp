@@ -18,7 +18,8 @@ namespace hmira::detail::euler {
 /// to and including `to`; empty if `to` is not met before coming back to `from` (then the
 /// two are not in one rotation). O(halfedges turned over).
 template <class M, class T>
-std::vector<typename T::halfedge_handle> turn_between(const M& m, typename T::halfedge_handle from, typename T::halfedge_handle to) {
+std::vector<typename T::halfedge_handle> turn_between(const M& m, typename T::halfedge_handle from,
+                                                      typename T::halfedge_handle to) {
     std::vector<typename T::halfedge_handle> out;
     auto x = from;
     do {
@@ -82,7 +83,8 @@ result<void> join_vertices_refusal(const M& mesh, typename T::halfedge_handle h)
     // h's and o's own corners merge with their neighbours' (counted above through n and r).
     if (to_w > 0)
         return fail(errc::topology,
-                    "join_vertices: " + de::name<M, T>("vertex", mesh, v) + " and " + de::name<M, T>("vertex", mesh, w) +
+                    "join_vertices: " + de::name<M, T>("vertex", mesh, v) + " and " +
+                        de::name<M, T>("vertex", mesh, w) +
                         " are joined by more than one edge; joining them would leave a loop edge",
                     de::index_of<M, T>(mesh, w));
     const auto common = [&]() -> long long {
@@ -104,20 +106,24 @@ result<void> join_vertices_refusal(const M& mesh, typename T::halfedge_handle h)
     }();
     if (common != -2)
         return fail(errc::non_manifold,
-                    "join_vertices: " + de::name<M, T>("vertex", mesh, v) + " and " + de::name<M, T>("vertex", mesh, w) +
-                        " have a common neighbour (vertex " + (common >= 0 ? std::to_string(common) : std::string("(no index)")) +
+                    "join_vertices: " + de::name<M, T>("vertex", mesh, v) + " and " +
+                        de::name<M, T>("vertex", mesh, w) + " have a common neighbour (vertex " +
+                        (common >= 0 ? std::to_string(common) : std::string("(no index)")) +
                         "); joining them would make a double edge",
                     common);
     for (auto a : fv)
         for (auto b : fw)
             if (a == b)
                 return fail(errc::non_manifold,
-                            "join_vertices: " + de::name<M, T>("face", mesh, a) + " touches both ends of the edge without containing it; joining them would make it touch one vertex twice",
+                            "join_vertices: " + de::name<M, T>("face", mesh, a) +
+                                " touches both ends of the edge without containing it; joining them would make it "
+                                "touch one vertex twice",
                             de::index_of<M, T>(mesh, a));
     if (gaps > 1)
         return fail(errc::non_manifold,
-                    "join_vertices: the joined vertex would have " + std::to_string(gaps) + " boundary gaps (" + de::name<M, T>("vertex", mesh, v) +
-                        " and " + de::name<M, T>("vertex", mesh, w) + " are on the boundary and the edge is not), which pinches the surface",
+                    "join_vertices: the joined vertex would have " + std::to_string(gaps) + " boundary gaps (" +
+                        de::name<M, T>("vertex", mesh, v) + " and " + de::name<M, T>("vertex", mesh, w) +
+                        " are on the boundary and the edge is not), which pinches the surface",
                     de::index_of<M, T>(mesh, w));
 
     return {};

@@ -59,7 +59,6 @@ inline std::optional<hmira::error> check_options(const fill_hole_options& o, con
 }
 }  // namespace detail::holes
 
-
 namespace detail::holes {
 
 /// A model whose raw mutations the editing journal can record and undo
@@ -124,10 +123,12 @@ result<hole_loop<M, T>> walk_loop(const M& mesh, typename T::halfedge_handle bou
     namespace de = detail::euler;
     using V = typename T::vertex_handle;
     if (!de::usable<M, T>(mesh, boundary_halfedge))
-        return fail(errc::invalid_handle, "fill_hole: " + de::name<M, T>("halfedge", mesh, boundary_halfedge) + " does not exist",
+        return fail(errc::invalid_handle,
+                    "fill_hole: " + de::name<M, T>("halfedge", mesh, boundary_halfedge) + " does not exist",
                     de::index_of<M, T>(mesh, boundary_halfedge));
     if (T::face(mesh, boundary_halfedge) != T::null_face())
-        return fail(errc::topology, "fill_hole: " + de::name<M, T>("halfedge", mesh, boundary_halfedge) + " is not on a boundary",
+        return fail(errc::topology,
+                    "fill_hole: " + de::name<M, T>("halfedge", mesh, boundary_halfedge) + " is not on a boundary",
                     de::index_of<M, T>(mesh, boundary_halfedge));
     hole_loop<M, T> loop;
     // The loop starts at the halfedge's target, as CGAL's does: the programme's greedy bend term
@@ -140,12 +141,16 @@ result<hole_loop<M, T>> walk_loop(const M& mesh, typename T::halfedge_handle bou
         x = T::next(mesh, x);
     } while (x != first);
     const std::size_t n = loop.h.size();
-    if (n < 3) return fail(errc::topology, "fill_hole: the loop has fewer than three edges", de::index_of<M, T>(mesh, boundary_halfedge));
+    if (n < 3)
+        return fail(errc::topology, "fill_hole: the loop has fewer than three edges",
+                    de::index_of<M, T>(mesh, boundary_halfedge));
     std::vector<V> sorted = loop.v;
-    std::sort(sorted.begin(), sorted.end(), [&](V a, V b) { return T::vertex_index(mesh, a) < T::vertex_index(mesh, b); });
+    std::sort(sorted.begin(), sorted.end(),
+              [&](V a, V b) { return T::vertex_index(mesh, a) < T::vertex_index(mesh, b); });
     for (std::size_t i = 1; i < n; ++i)
         if (sorted[i] == sorted[i - 1])
-            return fail(errc::topology, "fill_hole: the loop passes " + de::name<M, T>("vertex", mesh, sorted[i]) + " twice",
+            return fail(errc::topology,
+                        "fill_hole: the loop passes " + de::name<M, T>("vertex", mesh, sorted[i]) + " twice",
                         de::index_of<M, T>(mesh, sorted[i]));
     return loop;
 }
@@ -239,10 +244,11 @@ inline result<hole_plan> plan_hole(const loop_data& loop, const fill_hole_option
     if (plan.centre) {
         auto c = fan_centre(loop);
         if (!c)
-            return fail(errc::topology,
-                        "fill_hole: every triangulation of the loop would repeat an edge the mesh already has or make a "
-                        "degenerate triangle, and so would a fan around any centre tried",
-                        element);
+            return fail(
+                errc::topology,
+                "fill_hole: every triangulation of the loop would repeat an edge the mesh already has or make a "
+                "degenerate triangle, and so would a fan around any centre tried",
+                element);
         plan.centre_at = *c;
     } else {
         auto ordered = in_interval_order(n, plan.tris);
@@ -367,8 +373,8 @@ void build_triangles(M& mesh, const hole_loop<M, T>& hl, const triangle_list& tr
 /// Asks `gate`; a cancellation returns errc::cancelled with the patch half refined.
 template <class M, class T>
 result<void> refine_and_fair_hole(M& mesh, const hole_loop<M, T>& hl, const hole_plan& plan,
-                                  const std::vector<double>& scale, const fill_hole_options& options, progress_gate& gate,
-                                  fill_hole_result<M, T>& out) {
+                                  const std::vector<double>& scale, const fill_hole_options& options,
+                                  progress_gate& gate, fill_hole_result<M, T>& out) {
     const auto& v = hl.v;
     const std::size_t n = v.size();
     patch<M, T> pt;
@@ -470,7 +476,7 @@ auto run_undoable(M& mesh, bool asked, Work&& work) {
 template <class M, class T>
     requires triangle_operable_mesh<M, T>
 result<fill_hole_result<M, T>> fill_hole(M& mesh, typename T::halfedge_handle boundary_halfedge,
-                                                       const fill_hole_options& options) {
+                                         const fill_hole_options& options) {
     namespace dh = detail::holes;
     if (auto bad = dh::check_options(options, "fill_hole")) return *bad;
     // The loop's length sizes the progress estimate; fill_one checks the halfedge itself.
@@ -483,7 +489,8 @@ result<fill_hole_result<M, T>> fill_hole(M& mesh, typename T::halfedge_handle bo
         } while (x != boundary_halfedge);
     }
     detail::progress_gate gate(options.progress, dh::fill_blocks(n, options));
-    return dh::run_undoable<M, T>(mesh, bool(options.progress), [&]<class TT>(bool can_roll_back) -> result<fill_hole_result<M, T>> {
+    return dh::run_undoable<
+        M, T>(mesh, bool(options.progress), [&]<class TT>(bool can_roll_back) -> result<fill_hole_result<M, T>> {
         auto r = dh::fill_one<M, TT>(mesh, boundary_halfedge, options, gate, can_roll_back);
         if (!r) return r.error();
         return fill_hole_result<M, T>{std::move(r->faces), std::move(r->vertices), r->faired, r->fairing_iterations};
@@ -494,7 +501,9 @@ template <class M, class T>
     requires hole_fillable_mesh<M, T>
 result<fill_holes_result> fill_holes(M& mesh, std::size_t max_size, const fill_hole_options& options) {
     namespace dh = detail::holes;
-    if (max_size < 3) return fail(errc::invalid_argument, "fill_holes: option max_size must be at least 3, got " + std::to_string(max_size));
+    if (max_size < 3)
+        return fail(errc::invalid_argument,
+                    "fill_holes: option max_size must be at least 3, got " + std::to_string(max_size));
     if (auto bad = dh::check_options(options, "fill_holes")) return *bad;
     using H = typename T::halfedge_handle;
     std::vector<H> loops;
@@ -516,38 +525,39 @@ result<fill_holes_result> fill_holes(M& mesh, std::size_t max_size, const fill_h
         blocks += len <= max_size ? dh::fill_blocks(len, options) : 0;
     }
     detail::progress_gate gate(options.progress, blocks);
-    return dh::run_undoable<M, T>(mesh, bool(options.progress), [&]<class TT>(bool can_roll_back) -> result<fill_holes_result> {
-        fill_holes_result out;
-        for (std::size_t l = 0; l < loops.size(); ++l) {
-            // Later loops are only worth asking about while nothing can be undone, or when
-            // everything can.
-            const bool ask = can_roll_back || out.filled == 0;
-            if (ask && !gate.advance(0)) return fail(errc::cancelled, "fill_holes: cancelled");
-            open_hole hole;
-            hole.vertex = T::vertex_index(mesh, T::target(mesh, loops[l]));
-            hole.edges = sizes[l];
-            if (sizes[l] > max_size) {
-                out.open.push_back(std::move(hole));
-                continue;
+    return dh::run_undoable<M, T>(
+        mesh, bool(options.progress), [&]<class TT>(bool can_roll_back) -> result<fill_holes_result> {
+            fill_holes_result out;
+            for (std::size_t l = 0; l < loops.size(); ++l) {
+                // Later loops are only worth asking about while nothing can be undone, or when
+                // everything can.
+                const bool ask = can_roll_back || out.filled == 0;
+                if (ask && !gate.advance(0)) return fail(errc::cancelled, "fill_holes: cancelled");
+                open_hole hole;
+                hole.vertex = T::vertex_index(mesh, T::target(mesh, loops[l]));
+                hole.edges = sizes[l];
+                if (sizes[l] > max_size) {
+                    out.open.push_back(std::move(hole));
+                    continue;
+                }
+                detail::progress_gate never(dh::no_progress, 1);
+                auto r = dh::fill_one<M, TT>(mesh, loops[l], options, ask ? gate : never, can_roll_back);
+                if (!r) {
+                    if (r.error().code == errc::cancelled) return fail(errc::cancelled, "fill_holes: cancelled");
+                    hole.reason = open_hole_reason::refused;
+                    hole.code = r.error().code;
+                    hole.message = std::move(r.error().message);
+                    out.open.push_back(std::move(hole));
+                    continue;
+                }
+                ++out.filled;
+                out.faces_added += r->faces.size();
+                out.vertices_added += r->vertices.size();
+                if (!r->faired) ++out.unfaired;
             }
-            detail::progress_gate never(dh::no_progress, 1);
-            auto r = dh::fill_one<M, TT>(mesh, loops[l], options, ask ? gate : never, can_roll_back);
-            if (!r) {
-                if (r.error().code == errc::cancelled) return fail(errc::cancelled, "fill_holes: cancelled");
-                hole.reason = open_hole_reason::refused;
-                hole.code = r.error().code;
-                hole.message = std::move(r.error().message);
-                out.open.push_back(std::move(hole));
-                continue;
-            }
-            ++out.filled;
-            out.faces_added += r->faces.size();
-            out.vertices_added += r->vertices.size();
-            if (!r->faired) ++out.unfaired;
-        }
-        out.skipped = out.open.size();
-        return out;
-    });
+            out.skipped = out.open.size();
+            return out;
+        });
 }
 
 }  // namespace hmira

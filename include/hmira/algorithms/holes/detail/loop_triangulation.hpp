@@ -167,14 +167,16 @@ inline result<triangle_list> triangulate_by_projection(const loop_data& loop) {
     for (std::size_t i = 0; i < n; ++i) loops[0].push_back(i);
     auto t = triangulate_polygon(pts, loops);
     if (!t)
-        return fail(errc::unsupported, "fill_hole: a loop of " + std::to_string(n) +
-                                           " edges is too long for the dynamic programme and its projection is not simple: " +
-                                           t.error().message);
+        return fail(
+            errc::unsupported,
+            "fill_hole: a loop of " + std::to_string(n) +
+                " edges is too long for the dynamic programme and its projection is not simple: " + t.error().message);
     triangle_list tris;
     for (auto tri : *t) {
         std::sort(tri.begin(), tri.end());
         if (loop.is_joined(tri[0], tri[1]) || loop.is_joined(tri[1], tri[2]) || loop.is_joined(tri[0], tri[2]))
-            return fail(errc::unsupported, "fill_hole: the projected triangulation of a long loop repeats an existing edge");
+            return fail(errc::unsupported,
+                        "fill_hole: the projected triangulation of a long loop repeats an existing edge");
         tris.push_back(tri);
     }
     return tris;
@@ -198,7 +200,8 @@ inline void reduce_area_by_flips(const loop_data& loop, triangle_list& tris) {
     auto attach = [&](std::size_t t) {
         const auto& c = tris[t];
         for (int e = 0; e < 3; ++e) {
-            auto [it, fresh] = on_edge.try_emplace(pair_key(c[e], c[(e + 1) % 3]), std::array<std::size_t, 2>{none, none});
+            auto [it, fresh] =
+                on_edge.try_emplace(pair_key(c[e], c[(e + 1) % 3]), std::array<std::size_t, 2>{none, none});
             (void)fresh;
             (it->second[0] == none ? it->second[0] : it->second[1]) = t;
         }
@@ -219,8 +222,10 @@ inline void reduce_area_by_flips(const loop_data& loop, triangle_list& tris) {
         return a;
     };
     // Bend across edge (a, b) when the triangle `skip` is replaced by one of normal `with`.
-    auto edge_bend = [&](std::size_t a, std::size_t b, const vec3<double>& nrm, std::size_t skip_a, std::size_t skip_b) {
-        if (loop.is_loop_edge(a, b)) return bend(nrm, loop.rim[std::min(a, b) + 1 == std::max(a, b) ? std::min(a, b) : n - 1]);
+    auto edge_bend = [&](std::size_t a, std::size_t b, const vec3<double>& nrm, std::size_t skip_a,
+                         std::size_t skip_b) {
+        if (loop.is_loop_edge(a, b))
+            return bend(nrm, loop.rim[std::min(a, b) + 1 == std::max(a, b) ? std::min(a, b) : n - 1]);
         const auto& ts = on_edge.at(pair_key(a, b));
         for (auto t : ts)
             if (t != none && t != skip_a && t != skip_b) return bend(nrm, normal_of(loop, tris[t]));
@@ -230,7 +235,8 @@ inline void reduce_area_by_flips(const loop_data& loop, triangle_list& tris) {
     for (const auto& [key, ts] : on_edge) {
         const std::size_t a = std::size_t(key >> 32), b = std::size_t(key & 0xffffffffu);
         const auto n0 = normal_of(loop, tris[ts[0]]);
-        max_bend = std::max(max_bend, ts[1] == none ? edge_bend(a, b, n0, ts[0], none) : bend(n0, normal_of(loop, tris[ts[1]])));
+        max_bend = std::max(max_bend,
+                            ts[1] == none ? edge_bend(a, b, n0, ts[0], none) : bend(n0, normal_of(loop, tris[ts[1]])));
     }
     for (std::size_t round = 0; round < 4 * n; ++round) {
         bool flipped = false;
@@ -250,7 +256,8 @@ inline void reduce_area_by_flips(const loop_data& loop, triangle_list& tris) {
             std::sort(w.begin(), w.end());
             const double old_area = area(loop.p[tris[t0][0]], loop.p[tris[t0][1]], loop.p[tris[t0][2]]) +
                                     area(loop.p[tris[t1][0]], loop.p[tris[t1][1]], loop.p[tris[t1][2]]);
-            const double new_area = area(loop.p[u[0]], loop.p[u[1]], loop.p[u[2]]) + area(loop.p[w[0]], loop.p[w[1]], loop.p[w[2]]);
+            const double new_area =
+                area(loop.p[u[0]], loop.p[u[1]], loop.p[u[2]]) + area(loop.p[w[0]], loop.p[w[1]], loop.p[w[2]]);
             if (!(new_area < old_area * (1 - 1e-12))) continue;
             const auto nu = normal_of(loop, u), nw = normal_of(loop, w);
             if (dot(nu, nu) == 0 || dot(nw, nw) == 0) continue;

@@ -123,7 +123,8 @@ bool refine_patch(M& mesh, patch<M, T>& pt, double density, std::size_t max_new_
             const auto f = pt.faces[fi];
             const auto h0 = T::face_halfedge(mesh, f);
             const auto h1 = T::next(mesh, h0), h2 = T::next(mesh, h1);
-            const std::array<typename T::vertex_handle, 3> v{T::target(mesh, h2), T::target(mesh, h0), T::target(mesh, h1)};
+            const std::array<typename T::vertex_handle, 3> v{T::target(mesh, h2), T::target(mesh, h0),
+                                                             T::target(mesh, h1)};
             std::array<vec3<double>, 3> p;
             std::array<double, 3> s;
             for (int i = 0; i < 3; ++i) {
@@ -168,10 +169,11 @@ enum class fairing_energy { membrane, thin_plate };
 /// Moves the patch's added vertices so that the uniform (umbrella) Laplacian vanishes at each
 /// (membrane), or the Laplacian of the Laplacian (thin plate), every other vertex fixed: the
 /// loop, and for the thin plate also the ring outside it. Writes positions only when all three
-/// coordinate solves converge (not when `gate` cancels one). Returns the solve with the most iterations. O(iterations * nnz).
+/// coordinate solves converge (not when `gate` cancels one). Returns the solve with the most iterations. O(iterations *
+/// nnz).
 template <class M, class T>
-solve_outcome fair_patch(M& mesh, const patch<M, T>& pt, fairing_energy energy, double tolerance, std::size_t max_iterations,
-                         progress_gate& gate) {
+solve_outcome fair_patch(M& mesh, const patch<M, T>& pt, fairing_energy energy, double tolerance,
+                         std::size_t max_iterations, progress_gate& gate) {
     namespace dt = triangle_ops;
     using V = typename T::vertex_handle;
     solve_outcome worst{.converged = true, .iterations = 0, .relative_residual = 0};

@@ -140,7 +140,6 @@ result<double> default_target_edge_length(const M& mesh) {
     return mean;
 }
 
-
 template <class M, class T>
     requires remeshable_mesh<M, T>
 result<isotropic_remeshing_estimate> estimate_isotropic_remeshing(const M& mesh, double L) {
@@ -152,16 +151,15 @@ result<isotropic_remeshing_estimate> estimate_isotropic_remeshing(const M& mesh,
                                         (triangles + double(T::face_count(mesh))) * remeshing_bytes_per_triangle};
 }
 
-
 template <class M, class T>
     requires remeshable_mesh<M, T>
-result<isotropic_remeshing_result> isotropic_remeshing(M& mesh,
-                                                                     const isotropic_remeshing_options& options) {
+result<isotropic_remeshing_result> isotropic_remeshing(M& mesh, const isotropic_remeshing_options& options) {
     const double L = options.target_edge_length;
     if (auto ok = detail::remeshing::check_length(L); !ok) return ok.error();
     if (options.feature_angle && !(*options.feature_angle >= 0 && *options.feature_angle <= 180))
-        return fail(errc::invalid_argument, "isotropic_remeshing: option feature_angle must lie in [0, 180] degrees, got " +
-                                                detail::remeshing::number(*options.feature_angle));
+        return fail(errc::invalid_argument,
+                    "isotropic_remeshing: option feature_angle must lie in [0, 180] degrees, got " +
+                        detail::remeshing::number(*options.feature_angle));
     if (auto ok = detail::remeshing::check_finite<M, T>(mesh); !ok) return ok.error();
     for (auto f : T::faces(mesh)) {
         const auto h = T::face_halfedge(mesh, f);
@@ -188,8 +186,8 @@ result<isotropic_remeshing_result> isotropic_remeshing(M& mesh,
     for (const auto i : options.feature_edges) {
         if (i >= feature.size())
             return fail(errc::invalid_argument,
-                        "isotropic_remeshing: option feature_edges names edge " + std::to_string(i) + ", but edge indices end at " +
-                            std::to_string(feature.size()),
+                        "isotropic_remeshing: option feature_edges names edge " + std::to_string(i) +
+                            ", but edge indices end at " + std::to_string(feature.size()),
                         (long long)i);
         feature[i] = 1;
     }

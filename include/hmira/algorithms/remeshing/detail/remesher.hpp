@@ -106,8 +106,10 @@ public:
             const vec3<double> p = la ? pa : lb ? pb : (pa + pb) * 0.5;
             const H x = la ? T::opposite(m_, h) : h;  // x's source is removed
             if (!short_enough_after(source(x), T::target(m_, x), p)) continue;
-            const collapse_edge_options options{.placement = collapse_placement::given, .position = p, .check_geometry = true};
-            if (const char* refusal = triangle_ops::collapse_refusal<M, T>(m_, x, options); refusal[0] != '\0') continue;
+            const collapse_edge_options options{
+                .placement = collapse_placement::given, .position = p, .check_geometry = true};
+            if (const char* refusal = triangle_ops::collapse_refusal<M, T>(m_, x, options); refusal[0] != '\0')
+                continue;
             // The edges that go: x's own and, per triangle beside it, the one at the removed end.
             const H o = T::opposite(m_, x);
             dead_[ei] = 1;

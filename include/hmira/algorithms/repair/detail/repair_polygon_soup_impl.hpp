@@ -19,28 +19,34 @@
 namespace hmira {
 
 inline std::string soup_repair_report::summary() const {
-        std::string s;
-        auto plural = [](std::size_t n, const char* one, const char* many) { return std::to_string(n) + " " + (n == 1 ? one : many); };
-        auto list = [](const repair_count& c) {
-            std::string t = " (";
-            for (std::size_t i = 0; i < c.first.size(); ++i) t += (i ? ", " : "") + std::to_string(c.first[i]);
-            return t + (c.first.size() < c.count ? ", ...)" : ")");
-        };
-        auto add = [&](const std::string& part) { s += (s.empty() ? "" : "; ") + part; };
-        if (degenerate_faces.count) add("dropped " + plural(degenerate_faces.count, "degenerate face", "degenerate faces") + list(degenerate_faces));
-        if (merged_corners.count) add("merged repeated corners in " + plural(merged_corners.count, "face", "faces") + list(merged_corners));
-        if (nonmanifold_edge_faces.count) {
-            const bool dropped = dropped_faces > degenerate_faces.count;
-            add(plural(nonmanifold_edges, "non-manifold edge", "non-manifold edges") + ": " + (dropped ? "dropped " : "cut free ") +
-                plural(nonmanifold_edge_faces.count, "extra face", "extra faces") + list(nonmanifold_edge_faces));
-        }
-        if (detached_faces.count) add("detached " + plural(detached_faces.count, "face", "faces") + list(detached_faces));
-        if (flipped_faces.count) add("flipped " + plural(flipped_faces.count, "face", "faces") + list(flipped_faces));
-        if (orientation_cuts) add("opened " + plural(orientation_cuts, "edge", "edges") + " where no orientation agrees");
-        if (added_vertices)
-            add("split " + plural(split_vertices.count, "vertex", "vertices") + list(split_vertices) + " into " +
-                plural(added_vertices, "extra copy", "extra copies"));
-        return s.empty() ? "no repair needed" : s;
+    std::string s;
+    auto plural = [](std::size_t n, const char* one, const char* many) {
+        return std::to_string(n) + " " + (n == 1 ? one : many);
+    };
+    auto list = [](const repair_count& c) {
+        std::string t = " (";
+        for (std::size_t i = 0; i < c.first.size(); ++i) t += (i ? ", " : "") + std::to_string(c.first[i]);
+        return t + (c.first.size() < c.count ? ", ...)" : ")");
+    };
+    auto add = [&](const std::string& part) { s += (s.empty() ? "" : "; ") + part; };
+    if (degenerate_faces.count)
+        add("dropped " + plural(degenerate_faces.count, "degenerate face", "degenerate faces") +
+            list(degenerate_faces));
+    if (merged_corners.count)
+        add("merged repeated corners in " + plural(merged_corners.count, "face", "faces") + list(merged_corners));
+    if (nonmanifold_edge_faces.count) {
+        const bool dropped = dropped_faces > degenerate_faces.count;
+        add(plural(nonmanifold_edges, "non-manifold edge", "non-manifold edges") + ": " +
+            (dropped ? "dropped " : "cut free ") + plural(nonmanifold_edge_faces.count, "extra face", "extra faces") +
+            list(nonmanifold_edge_faces));
+    }
+    if (detached_faces.count) add("detached " + plural(detached_faces.count, "face", "faces") + list(detached_faces));
+    if (flipped_faces.count) add("flipped " + plural(flipped_faces.count, "face", "faces") + list(flipped_faces));
+    if (orientation_cuts) add("opened " + plural(orientation_cuts, "edge", "edges") + " where no orientation agrees");
+    if (added_vertices)
+        add("split " + plural(split_vertices.count, "vertex", "vertices") + list(split_vertices) + " into " +
+            plural(added_vertices, "extra copy", "extra copies"));
+    return s.empty() ? "no repair needed" : s;
 }
 
 namespace detail {
@@ -48,7 +54,9 @@ namespace detail {
 /// Union-find with path halving and union by size.
 class corner_sets {
 public:
-    explicit corner_sets(std::size_t n) : parent_(n), size_(n, 1) { std::iota(parent_.begin(), parent_.end(), std::uint64_t{0}); }
+    explicit corner_sets(std::size_t n) : parent_(n), size_(n, 1) {
+        std::iota(parent_.begin(), parent_.end(), std::uint64_t{0});
+    }
     std::uint64_t find(std::uint64_t x) {
         while (parent_[x] != x) x = parent_[x] = parent_[parent_[x]];
         return x;
@@ -122,7 +130,8 @@ inline edge_groups group_edges(const working_faces& w, std::size_t vertex_count)
         });
     }
     for (std::uint64_t i = 0; i < c; ++i)
-        if (i == 0 || low(g.by_edge[i]) != low(g.by_edge[i - 1]) || high(g.by_edge[i]) != high(g.by_edge[i - 1])) g.group_start.push_back(i);
+        if (i == 0 || low(g.by_edge[i]) != low(g.by_edge[i - 1]) || high(g.by_edge[i]) != high(g.by_edge[i - 1]))
+            g.group_start.push_back(i);
     g.group_start.push_back(c);
     return g;
 }
@@ -130,8 +139,8 @@ inline edge_groups group_edges(const working_faces& w, std::size_t vertex_count)
 /// Pairs the half-edges of each edge: two faces on an edge are paired; on an edge with more
 /// faces the first face is paired with the first one running the other way (else the second)
 /// and the rest are left unpaired and returned as "extra".
-inline std::vector<std::uint64_t> pair_edges(const working_faces& w, const edge_groups& g, std::vector<std::uint8_t>& extra,
-                                             std::size_t& nonmanifold_edges) {
+inline std::vector<std::uint64_t> pair_edges(const working_faces& w, const edge_groups& g,
+                                             std::vector<std::uint8_t>& extra, std::size_t& nonmanifold_edges) {
     std::vector<std::uint64_t> partner(w.corners.size(), no_partner);
     extra.assign(w.offsets.size() - 1, 0);
     nonmanifold_edges = 0;
@@ -160,7 +169,8 @@ inline std::vector<std::uint64_t> pair_edges(const working_faces& w, const edge_
 /// left degenerate (fewer than 3 corners, or a vertex repeated elsewhere); notes both in the
 /// report. Errors (errc::invalid_argument) for decreasing offsets or a vertex out of range.
 inline result<working_faces> merge_corners(std::size_t vertex_count, std::span<const std::uint64_t> face_offsets,
-                                           std::span<const std::uint32_t> corners, std::size_t listed, soup_repair_report& report) {
+                                           std::span<const std::uint32_t> corners, std::size_t listed,
+                                           soup_repair_report& report) {
     const std::size_t input_faces = face_offsets.size() - 1;
     working_faces w;
     w.corners.reserve(corners.size());
@@ -168,13 +178,18 @@ inline result<working_faces> merge_corners(std::size_t vertex_count, std::span<c
     std::vector<std::uint32_t> sorted;
     for (std::size_t f = 0; f < input_faces; ++f) {
         const auto b = face_offsets[f], e = face_offsets[f + 1];
-        if (e < b) return fail(errc::invalid_argument, "repair_polygon_soup: face_offsets decrease at face " + std::to_string(f), static_cast<long long>(f));
+        if (e < b)
+            return fail(errc::invalid_argument,
+                        "repair_polygon_soup: face_offsets decrease at face " + std::to_string(f),
+                        static_cast<long long>(f));
         const std::size_t start = w.corners.size();
         for (auto k = b; k < e; ++k) {
             const auto v = corners[k];
             if (v >= vertex_count)
-                return fail(errc::invalid_argument, "repair_polygon_soup: face " + std::to_string(f) + " names vertex " + std::to_string(v) + " of " +
-                                                        std::to_string(vertex_count), static_cast<long long>(f));
+                return fail(errc::invalid_argument,
+                            "repair_polygon_soup: face " + std::to_string(f) + " names vertex " + std::to_string(v) +
+                                " of " + std::to_string(vertex_count),
+                            static_cast<long long>(f));
             if (w.corners.size() == start || w.corners.back() != v) w.corners.push_back(v);
         }
         while (w.corners.size() - start > 1 && w.corners.back() == w.corners[start]) w.corners.pop_back();
@@ -221,7 +236,8 @@ inline working_faces without_extra_faces(const working_faces& w, const std::vect
 /// Step 3: which faces to reverse, each connected piece oriented by a breadth-first walk over
 /// glued edges, keeping the orientation most of its faces had; a glued pair that runs the
 /// same way after the walk's choices is opened instead (counted in the report).
-inline std::vector<std::uint8_t> orient_pieces(const working_faces& w, std::vector<std::uint64_t>& partner, soup_repair_report& report) {
+inline std::vector<std::uint8_t> orient_pieces(const working_faces& w, std::vector<std::uint64_t>& partner,
+                                               soup_repair_report& report) {
     const std::size_t nf = w.source.size();
     std::vector<std::uint8_t> flip(nf, 0), seen(nf, 0);
     std::vector<std::uint32_t> piece;
@@ -297,8 +313,9 @@ inline void group_fans(const working_faces& w, const std::vector<std::uint64_t>&
 /// other edges on both ends; such a face is detached whole (its glued edges opened, noted in
 /// the report). Detaching only opens edges that had a single pair, so it cannot create a new
 /// conflict: one pass suffices. Returns whether any face was detached.
-inline bool detach_stuck_faces(const working_faces& w, const edge_groups& groups, const std::vector<std::uint32_t>& vertex_of,
-                               std::vector<std::uint64_t>& partner, std::size_t listed, soup_repair_report& report) {
+inline bool detach_stuck_faces(const working_faces& w, const edge_groups& groups,
+                               const std::vector<std::uint32_t>& vertex_of, std::vector<std::uint64_t>& partner,
+                               std::size_t listed, soup_repair_report& report) {
     const std::size_t nf = w.source.size();
     std::vector<std::uint64_t> keyed;
     std::vector<std::uint8_t> detach(nf, 0);
@@ -306,7 +323,8 @@ inline bool detach_stuck_faces(const working_faces& w, const edge_groups& groups
     for (std::size_t i = 0; i + 1 < groups.group_start.size(); ++i) {
         const auto b = groups.group_start[i], e = groups.group_start[i + 1];
         if (e - b < 3) continue;
-        keyed.assign(groups.by_edge.begin() + static_cast<std::ptrdiff_t>(b), groups.by_edge.begin() + static_cast<std::ptrdiff_t>(e));
+        keyed.assign(groups.by_edge.begin() + static_cast<std::ptrdiff_t>(b),
+                     groups.by_edge.begin() + static_cast<std::ptrdiff_t>(e));
         auto key = [&](std::uint64_t k) {
             const auto a = vertex_of[k], z = vertex_of[w.next(k)];
             return std::pair{std::min(a, z), std::max(a, z)};
@@ -334,8 +352,9 @@ inline bool detach_stuck_faces(const working_faces& w, const edge_groups& groups
 
 /// The output faces (reversed where flip says, on the output vertices) and the report's
 /// flipped faces and split vertices; takes w's face sources.
-inline void write_repaired(working_faces& w, const std::vector<std::uint8_t>& flip, const std::vector<std::uint32_t>& vertex_of,
-                           std::size_t vertex_count, std::size_t listed, repaired_polygon_soup& out) {
+inline void write_repaired(working_faces& w, const std::vector<std::uint8_t>& flip,
+                           const std::vector<std::uint32_t>& vertex_of, std::size_t vertex_count, std::size_t listed,
+                           repaired_polygon_soup& out) {
     soup_repair_report& report = out.report;
     const std::size_t nf = w.source.size();
     out.vertex_count = vertex_count + out.copied_from.size();
@@ -363,12 +382,17 @@ inline void write_repaired(working_faces& w, const std::vector<std::uint8_t>& fl
 
 }  // namespace detail
 
-inline result<repaired_polygon_soup> repair_polygon_soup(std::size_t vertex_count, std::span<const std::uint64_t> face_offsets,
-                                                         std::span<const std::uint32_t> corners, const soup_repair_options& options) {
+inline result<repaired_polygon_soup> repair_polygon_soup(std::size_t vertex_count,
+                                                         std::span<const std::uint64_t> face_offsets,
+                                                         std::span<const std::uint32_t> corners,
+                                                         const soup_repair_options& options) {
     if (vertex_count > std::size_t{0xffffffffu})
-        return fail(errc::invalid_argument, "repair_polygon_soup: " + std::to_string(vertex_count) + " vertices; at most 2^32 - 1 can be indexed");
+        return fail(errc::invalid_argument, "repair_polygon_soup: " + std::to_string(vertex_count) +
+                                                " vertices; at most 2^32 - 1 can be indexed");
     if (face_offsets.empty() || face_offsets.front() != 0 || face_offsets.back() != corners.size())
-        return fail(errc::invalid_argument, "repair_polygon_soup: face_offsets must start at 0 and end at corners.size() (" + std::to_string(corners.size()) + ")");
+        return fail(errc::invalid_argument,
+                    "repair_polygon_soup: face_offsets must start at 0 and end at corners.size() (" +
+                        std::to_string(corners.size()) + ")");
     const std::size_t input_faces = face_offsets.size() - 1;
     const std::size_t listed = options.listed;
     repaired_polygon_soup out;
@@ -379,7 +403,8 @@ inline result<repaired_polygon_soup> repair_polygon_soup(std::size_t vertex_coun
     if (!merged) return merged.error();
     detail::working_faces w = std::move(*merged);
     if (w.source.size() > std::size_t{0xffffffffu})
-        return fail(errc::invalid_argument, "repair_polygon_soup: " + std::to_string(w.source.size()) + " faces; at most 2^32 - 1 are supported");
+        return fail(errc::invalid_argument, "repair_polygon_soup: " + std::to_string(w.source.size()) +
+                                                " faces; at most 2^32 - 1 are supported");
     detail::index_faces(w);
 
     // 2. Pair the faces along each edge.
@@ -404,7 +429,8 @@ inline result<repaired_polygon_soup> repair_polygon_soup(std::size_t vertex_coun
     std::vector<std::uint32_t> vertex_of(w.corners.size());  // output vertex of each corner
     detail::group_fans(w, partner, vertex_count, out.copied_from, vertex_of);
     if (vertex_count + out.copied_from.size() > std::size_t{0xffffffffu})
-        return fail(errc::invalid_argument, "repair_polygon_soup: splitting vertices would need more than 2^32 - 1 vertices");
+        return fail(errc::invalid_argument,
+                    "repair_polygon_soup: splitting vertices would need more than 2^32 - 1 vertices");
     if (detail::detach_stuck_faces(w, groups, vertex_of, partner, listed, report))
         detail::group_fans(w, partner, vertex_count, out.copied_from, vertex_of);
 

@@ -32,7 +32,7 @@ struct buffers {
 /// What a step ran into.
 struct step_status {
     bool cancelled = false;
-    long long beyond_range = -1;  ///< a vertex whose new position is not a finite double, or -1
+    long long beyond_range = -1;    ///< a vertex whose new position is not a finite double, or -1
     bool not_finite_input = false;  ///< that vertex's neighbourhood holds a non-finite coordinate
 };
 
@@ -80,7 +80,7 @@ vec3<double> moved(const M& m, std::size_t i, typename T::halfedge_handle s, dou
     } while (x != s);
     if (total > 0) return pi + sum * (amount / total);
     if (total != total) return {total, total, total};  // the weights overflowed: NaN, so the caller rescales
-    return pi;  // an obtuse fan whose cotangents cancel: leave it
+    return pi;                                         // an obtuse fan whose cotangents cancel: leave it
 }
 
 /// Vertex i's new position, computed as moved() does on its neighbourhood scaled by a power of
@@ -90,8 +90,7 @@ vec3<double> moved(const M& m, std::size_t i, typename T::halfedge_handle s, dou
 /// when a coordinate of the neighbourhood is not finite (`not_finite_input` then set).
 template <class M, class T>
 vec3<double> moved_rescaled(const M& m, std::size_t i, typename T::halfedge_handle s, double amount,
-                            laplacian_weights weights,
-                            const std::vector<vec3<double>>& p, bool& not_finite_input) {
+                            laplacian_weights weights, const std::vector<vec3<double>>& p, bool& not_finite_input) {
     double largest = 0;
     const auto widen = [&](std::size_t k) {
         largest = std::max({largest, std::abs(p[k].x), std::abs(p[k].y), std::abs(p[k].z)});
@@ -186,8 +185,8 @@ result<void> run(M& m, std::size_t iterations, std::initializer_list<double> amo
     bool first = true;
     for (std::size_t k = 0; k < iterations; ++k)
         for (const double amount : amounts) {
-            const auto status = step<M, T>(m, amount, weights, fixed, first ? &undo.positions() : nullptr, b.p, b.out,
-                                           gate, visited);
+            const auto status =
+                step<M, T>(m, amount, weights, fixed, first ? &undo.positions() : nullptr, b.p, b.out, gate, visited);
             first = false;
             if (!status.cancelled && status.beyond_range < 0) continue;
             undo.restore_only([&](std::size_t i) { return !fixed[i]; });
@@ -207,23 +206,28 @@ result<void> run(M& m, std::size_t iterations, std::initializer_list<double> amo
 }
 
 template <class M, class T>
-result<std::vector<char>> fixed_set(const M& m, bool fix_boundary, const std::vector<std::size_t>& listed, laplacian_weights weights,
-                                    const char* who) {
+result<std::vector<char>> fixed_set(const M& m, bool fix_boundary, const std::vector<std::size_t>& listed,
+                                    laplacian_weights weights, const char* who) {
     std::vector<char> fixed(T::vertex_index_bound(m), 0);
     for (auto i : listed) {
         if (i >= fixed.size())
-            return fail(errc::invalid_argument, std::string(who) + ": option fixed_vertices names vertex " + std::to_string(i) + " of " +
-                                                    std::to_string(fixed.size()), (long long)i);
+            return fail(errc::invalid_argument,
+                        std::string(who) + ": option fixed_vertices names vertex " + std::to_string(i) + " of " +
+                            std::to_string(fixed.size()),
+                        (long long)i);
         fixed[i] = 1;
     }
     for (auto v : T::vertices(m)) {
         const auto s = T::vertex_halfedge(m, v);
-        if (fix_boundary && s != T::null_halfedge() && T::face(m, s) == T::null_face()) fixed[T::vertex_index(m, v)] = 1;
+        if (fix_boundary && s != T::null_halfedge() && T::face(m, s) == T::null_face())
+            fixed[T::vertex_index(m, v)] = 1;
     }
     if (weights == laplacian_weights::cotangent)
         for (auto f : T::faces(m))
             if (!detail::triangle_ops::in_triangle<M, T>(m, T::face_halfedge(m, f)))
-                return fail(errc::topology, std::string(who) + ": cotangent weights need triangles; a face is not one (triangulate_faces first)");
+                return fail(errc::topology,
+                            std::string(who) +
+                                ": cotangent weights need triangles; a face is not one (triangulate_faces first)");
     return fixed;
 }
 
@@ -233,8 +237,10 @@ template <class M, class T>
     requires smoothable_mesh<M, T>
 result<smooth_result> laplacian_smooth(M& mesh, const laplacian_smooth_options& options) {
     if (!(options.lambda > 0 && options.lambda <= 1))
-        return fail(errc::invalid_argument, "laplacian_smooth: option lambda must lie in (0, 1], got " + std::to_string(options.lambda));
-    auto fixed = detail::smoothing::fixed_set<M, T>(mesh, options.fix_boundary, options.fixed_vertices, options.weights, "laplacian_smooth");
+        return fail(errc::invalid_argument,
+                    "laplacian_smooth: option lambda must lie in (0, 1], got " + std::to_string(options.lambda));
+    auto fixed = detail::smoothing::fixed_set<M, T>(mesh, options.fix_boundary, options.fixed_vertices, options.weights,
+                                                    "laplacian_smooth");
     if (!fixed) return fixed.error();
     if (auto r = detail::smoothing::run<M, T>(mesh, options.iterations, {options.lambda}, options.weights, *fixed,
                                               options.progress, "laplacian_smooth");
@@ -245,14 +251,15 @@ result<smooth_result> laplacian_smooth(M& mesh, const laplacian_smooth_options& 
     return out;
 }
 
-
 template <class M, class T>
     requires smoothable_mesh<M, T>
 result<smooth_result> taubin_smooth(M& mesh, const taubin_smooth_options& options) {
     if (!(options.lambda > 0 && options.lambda <= 1 && options.mu < -options.lambda && options.mu >= -1))
-        return fail(errc::invalid_argument, "taubin_smooth: options must satisfy 0 < lambda <= 1 and -1 <= mu < -lambda, got lambda " +
-                                                std::to_string(options.lambda) + ", mu " + std::to_string(options.mu));
-    auto fixed = detail::smoothing::fixed_set<M, T>(mesh, options.fix_boundary, options.fixed_vertices, options.weights, "taubin_smooth");
+        return fail(errc::invalid_argument,
+                    "taubin_smooth: options must satisfy 0 < lambda <= 1 and -1 <= mu < -lambda, got lambda " +
+                        std::to_string(options.lambda) + ", mu " + std::to_string(options.mu));
+    auto fixed = detail::smoothing::fixed_set<M, T>(mesh, options.fix_boundary, options.fixed_vertices, options.weights,
+                                                    "taubin_smooth");
     if (!fixed) return fixed.error();
     if (auto r = detail::smoothing::run<M, T>(mesh, options.iterations, {options.lambda, options.mu}, options.weights,
                                               *fixed, options.progress, "taubin_smooth");

@@ -69,8 +69,12 @@ public:
     static constexpr std::size_t block = 1u << 14;
 
     cc_level(M& mesh, cc_workspace<M, T>& w, progress_gate& gate)
-        : mesh_(mesh), w_(w), gate_(gate), vertex_bound_(T::vertex_index_bound(mesh)),
-          face_bound_(T::face_index_bound(mesh)), old_vertices_(T::vertex_count(mesh)) {}
+        : mesh_(mesh),
+          w_(w),
+          gate_(gate),
+          vertex_bound_(T::vertex_index_bound(mesh)),
+          face_bound_(T::face_index_bound(mesh)),
+          old_vertices_(T::vertex_count(mesh)) {}
 
     /// The whole level.
     bool run() {
@@ -111,13 +115,19 @@ private:
     }
 
     V vertex_of(std::size_t i) {
-        if constexpr (bulk_growable_mesh<M, T>) return T::vertex_at(mesh_, i);
-        else { (void)i; return V{}; }  // not called: in_place_ is false
+        if constexpr (bulk_growable_mesh<M, T>)
+            return T::vertex_at(mesh_, i);
+        else {
+            (void)i;
+            return V{};
+        }  // not called: in_place_ is false
     }
 
     void resize_vertices(std::size_t n) {  // in place only
-        if constexpr (bulk_growable_mesh<M, T>) T::resize(mesh_, n, T::edge_index_bound(mesh_), face_bound_);
-        else (void)n;
+        if constexpr (bulk_growable_mesh<M, T>)
+            T::resize(mesh_, n, T::edge_index_bound(mesh_), face_bound_);
+        else
+            (void)n;
     }
 
     vec3<double> face_point_of(F f) {
@@ -236,8 +246,10 @@ private:
         const std::size_t face_total = in_place_ ? face_bound_ : w_.faces.size();
         for (std::size_t i = 0; i < face_total; ++i) {
             F f{};
-            if constexpr (bulk_growable_mesh<M, T>) f = in_place_ ? T::face_at(mesh_, i) : w_.faces[i];
-            else f = w_.faces[i];
+            if constexpr (bulk_growable_mesh<M, T>)
+                f = in_place_ ? T::face_at(mesh_, i) : w_.faces[i];
+            else
+                f = w_.faces[i];
             split_face_edges(f, make);
             cut_face(f, make);
             if ((i + 1) % block == 0 && !gate_.advance(1)) return false;
@@ -337,7 +349,8 @@ private:
             ++seen;
             if (w_.boundary_edges[i] == 0 && w_.valence[i] > 0) {
                 const double n = double(w_.valence[i]);
-                dt::set_position<M, T>(mesh_, v, (dt::position_of<M, T>(mesh_, v) * (n - 2) + w_.vertex_point[i] / n) / n);
+                dt::set_position<M, T>(mesh_, v,
+                                       (dt::position_of<M, T>(mesh_, v) * (n - 2) + w_.vertex_point[i] / n) / n);
             } else if (w_.boundary_edges[i] == 2) {
                 dt::set_position<M, T>(mesh_, v, w_.vertex_point[i]);
             }  // else it stays
@@ -376,9 +389,11 @@ result<catmull_clark_result> catmull_clark_subdivide(M& mesh, const catmull_clar
     for (auto f : T::faces(mesh)) {
         if (de::has_rings<M, T>(mesh, f))
             return fail(errc::unsupported,
-                        "catmull_clark_subdivide: " + de::name<M, T>("face", mesh, f) + " has inner rings (triangulate_faces or fill them first)",
+                        "catmull_clark_subdivide: " + de::name<M, T>("face", mesh, f) +
+                            " has inner rings (triangulate_faces or fill them first)",
                         de::index_of<M, T>(mesh, f));
-        const std::size_t degree = detail::triangle_ops::loop_length<M, T>(mesh, T::face_halfedge(mesh, f), std::size_t(-1));
+        const std::size_t degree =
+            detail::triangle_ops::loop_length<M, T>(mesh, T::face_halfedge(mesh, f), std::size_t(-1));
         counts.corners += degree;
         max_degree = std::max(max_degree, degree);
     }
@@ -401,10 +416,12 @@ result<catmull_clark_result> catmull_clark_subdivide(M& mesh, const catmull_clar
         blocks += (2 * counts.vertices + counts.edges + 2 * counts.faces) / (1u << 14);
         counts = counts.next();
         if (2 * counts.edges >= (std::uint64_t(1) << 31))
-            return fail(errc::invalid_argument, "catmull_clark_subdivide: " + std::to_string(options.levels) +
-                                                    " levels would make more than 2^31 halfedges, more than a mesh index holds");
+            return fail(errc::invalid_argument,
+                        "catmull_clark_subdivide: " + std::to_string(options.levels) +
+                            " levels would make more than 2^31 halfedges, more than a mesh index holds");
     }
-    if (options.levels == 0) return catmull_clark_result{T::vertex_count(mesh), T::edge_count(mesh), T::face_count(mesh)};
+    if (options.levels == 0)
+        return catmull_clark_result{T::vertex_count(mesh), T::edge_count(mesh), T::face_count(mesh)};
     const std::size_t vertex_bound = T::vertex_index_bound(mesh) + std::size_t(counts.vertices - first.vertices);
     const std::size_t edge_bound = T::edge_index_bound(mesh) + std::size_t(counts.edges - first.edges);
     const std::size_t face_bound = T::face_index_bound(mesh) + std::size_t(counts.faces - first.faces);
@@ -412,8 +429,8 @@ result<catmull_clark_result> catmull_clark_subdivide(M& mesh, const catmull_clar
     [[maybe_unused]] const detail::subdivision::appending_guard<M> appending(mesh);  // new vertices are told by index
     ds::cc_workspace<M, T> work;
     work.room = {vertex_bound, edge_bound, face_bound};
-    work.reserve(vertex_bound - std::size_t(counts.vertices - largest_input.vertices), face_bound - std::size_t(counts.faces - largest_input.faces),
-                 max_degree);
+    work.reserve(vertex_bound - std::size_t(counts.vertices - largest_input.vertices),
+                 face_bound - std::size_t(counts.faces - largest_input.faces), max_degree);
 
     detail::progress_gate gate(options.progress, std::size_t(blocks));
     // Without a callback nothing can stop a level half way: its preconditions hold for the

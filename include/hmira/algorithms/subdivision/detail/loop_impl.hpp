@@ -39,13 +39,13 @@ template <class M, class T>
 struct loop_workspace {
     std::vector<vec3<double>> vertex_point;  // the sums of neighbours, then boundary vertices' new positions
     std::vector<std::uint32_t> valence;
-    std::vector<std::uint8_t> boundary_edges;              // saturates at 3
+    std::vector<std::uint8_t> boundary_edges;            // saturates at 3
     std::vector<typename T::vertex_handle> edge_vertex;  // by old edge index: its new vertex, null once split
     struct triangle {
         std::array<typename T::halfedge_handle, 3> halfedges;  // null for a deleted face
         typename T::halfedge_handle old_corner_cut;            // see loop_level
     };
-    std::vector<triangle> triangles;  // by old face index
+    std::vector<triangle> triangles;    // by old face index
     std::array<std::size_t, 3> room{};  // the vertex, edge and face index bounds the mesh has capacity for
 
     void reserve(std::size_t vertex_bound, std::size_t edge_bound, std::size_t face_bound) {
@@ -66,7 +66,8 @@ long long gather_triangles(const M& mesh, loop_workspace<M, T>& w, cancel_point*
     w.triangles.assign(T::face_index_bound(mesh), {{H{}, H{}, H{}}, T::null_halfedge()});
     for (auto f : T::faces(mesh)) {
         const H h0 = T::face_halfedge(mesh, f), h1 = T::next(mesh, h0), h2 = T::next(mesh, h1);
-        if (T::next(mesh, h2) != h0 || detail::euler::has_rings<M, T>(mesh, f)) return (long long)T::face_index(mesh, f);
+        if (T::next(mesh, h2) != h0 || detail::euler::has_rings<M, T>(mesh, f))
+            return (long long)T::face_index(mesh, f);
         w.triangles[T::face_index(mesh, f)].halfedges = {h0, h1, h2};
         if (go_on && !(*go_on)()) return -2;
     }
@@ -280,7 +281,8 @@ template <class M, class T>
     requires loop_subdividable_mesh<M, T>
 result<loop_result> loop_subdivide(M& mesh, const loop_options& options) {
     if (options.levels > 10)
-        return fail(errc::invalid_argument, "loop_subdivide: option levels must be at most 10, got " + std::to_string(options.levels));
+        return fail(errc::invalid_argument,
+                    "loop_subdivide: option levels must be at most 10, got " + std::to_string(options.levels));
     namespace ds = detail::subdivision;
     // Every level's counts are known: the mesh and the working arrays are sized for the last
     // level before the first change, so nothing allocates once the mesh has started to change.
@@ -298,10 +300,13 @@ result<loop_result> loop_subdivide(M& mesh, const loop_options& options) {
     ds::loop_workspace<M, T> work;
     if (!overflow) work.triangles.reserve(T::face_index_bound(mesh) + std::size_t(largest_f - f0));
     if (const long long bad = ds::gather_triangles<M, T>(mesh, work); bad >= 0)
-        return fail(errc::topology, "loop_subdivide: face " + std::to_string(bad) + " is not a triangle (triangulate_faces first)", bad);
+        return fail(errc::topology,
+                    "loop_subdivide: face " + std::to_string(bad) + " is not a triangle (triangulate_faces first)",
+                    bad);
     if (overflow)
-        return fail(errc::invalid_argument, "loop_subdivide: " + std::to_string(options.levels) +
-                                                " levels would make more than 2^31 halfedges, more than a mesh index holds");
+        return fail(errc::invalid_argument,
+                    "loop_subdivide: " + std::to_string(options.levels) +
+                        " levels would make more than 2^31 halfedges, more than a mesh index holds");
     if (options.levels == 0) return loop_result{T::vertex_count(mesh), T::edge_count(mesh), T::face_count(mesh)};
     const std::size_t vertex_bound = T::vertex_index_bound(mesh) + std::size_t(v - v0);
     const std::size_t edge_bound = T::edge_index_bound(mesh) + std::size_t(e - e0);
@@ -309,7 +314,8 @@ result<loop_result> loop_subdivide(M& mesh, const loop_options& options) {
     ds::reserve_room<M, T>(mesh, vertex_bound, edge_bound, face_bound);
     work.room = {vertex_bound, edge_bound, face_bound};
     [[maybe_unused]] const detail::subdivision::appending_guard<M> appending(mesh);  // new vertices are told by index
-    work.reserve(vertex_bound - std::size_t(v - largest_v), edge_bound - std::size_t(e - largest_e), face_bound - std::size_t(f - largest_f));
+    work.reserve(vertex_bound - std::size_t(v - largest_v), edge_bound - std::size_t(e - largest_e),
+                 face_bound - std::size_t(f - largest_f));
     detail::progress_gate gate(options.progress, std::size_t(elements / ds::check_every));
     ds::cancel_point go_on{gate};
     // Without a callback nothing can stop a level half way, so there is nothing to copy. With
@@ -318,8 +324,8 @@ result<loop_result> loop_subdivide(M& mesh, const loop_options& options) {
     ds::range_guard<M, T> range(mesh);
     for (std::size_t l = 0; l < options.levels; ++l) {
         // Level 0's triangles were gathered above; later ones are triangles only (-1) unless cancelled (-2).
-        const bool cancelled = (l > 0 && ds::gather_triangles<M, T>(mesh, work, &go_on) == -2) ||
-                               !ds::loop_level<M, T>(mesh, work, go_on);
+        const bool cancelled =
+            (l > 0 && ds::gather_triangles<M, T>(mesh, work, &go_on) == -2) || !ds::loop_level<M, T>(mesh, work, go_on);
         if (cancelled) {
             range.dismiss();
             undo.restore();

@@ -18,7 +18,8 @@ template <class M, class T>
 void reserve_room(M& mesh, std::size_t vertices, std::size_t edges, std::size_t faces) {
     if constexpr (reservable_mesh<M, T>)
         T::reserve(mesh, vertices, edges, faces);
-    else if constexpr (requires { mesh.reserve(vertices, edges, faces); } && requires { mesh.edge_index_bound(); })
+    else if constexpr (
+        requires { mesh.reserve(vertices, edges, faces); } && requires { mesh.edge_index_bound(); })
         mesh.reserve(vertices, edges, faces);
 }
 

@@ -108,8 +108,10 @@ bool sqrt3_level(M& mesh, sqrt3_workspace<M, T>& w, bool trisect_boundary, cance
             }
         }
         if (t.boundary_side == T::null_halfedge()) {
-            t.first = (dt::position_of<M, T>(mesh, T::target(mesh, t.h0)) + dt::position_of<M, T>(mesh, T::target(mesh, h1)) +
-                       dt::position_of<M, T>(mesh, T::target(mesh, h2))) / 3.0;
+            t.first =
+                (dt::position_of<M, T>(mesh, T::target(mesh, t.h0)) + dt::position_of<M, T>(mesh, T::target(mesh, h1)) +
+                 dt::position_of<M, T>(mesh, T::target(mesh, h2))) /
+                3.0;
         } else {
             const H o = T::opposite(mesh, t.boundary_side);
             const auto a = dt::position_of<M, T>(mesh, source_of(t.boundary_side));
@@ -173,11 +175,14 @@ template <class M, class T>
     requires sqrt3_subdividable_mesh<M, T>
 result<sqrt3_result> sqrt3_subdivide(M& mesh, const sqrt3_options& options) {
     if (options.levels > 20)
-        return fail(errc::invalid_argument, "sqrt3_subdivide: option levels must be at most 20, got " + std::to_string(options.levels));
+        return fail(errc::invalid_argument,
+                    "sqrt3_subdivide: option levels must be at most 20, got " + std::to_string(options.levels));
     namespace ds = detail::subdivision;
     ds::sqrt3_workspace<M, T> work;
     if (const long long bad = ds::gather_sqrt3_triangles<M, T>(mesh, work); bad >= 0)
-        return fail(errc::topology, "sqrt3_subdivide: face " + std::to_string(bad) + " is not a triangle (triangulate_faces first)", bad);
+        return fail(errc::topology,
+                    "sqrt3_subdivide: face " + std::to_string(bad) + " is not a triangle (triangulate_faces first)",
+                    bad);
     std::uint64_t boundary = 0;
     for (auto e : T::edges(mesh)) {
         const auto h = T::edge_halfedge(mesh, e);
@@ -191,11 +196,13 @@ result<sqrt3_result> sqrt3_subdivide(M& mesh, const sqrt3_options& options) {
         elements += 2 * v + e + 3 * f + e;
         v += f + trisected, e += 3 * f + trisected, f *= 3, boundary += 2 * trisected;
         if (2 * e >= (std::uint64_t(1) << 31))
-            return fail(errc::invalid_argument, "sqrt3_subdivide: " + std::to_string(options.levels) +
-                                                    " levels would make more than 2^31 halfedges, more than a mesh index holds");
+            return fail(errc::invalid_argument,
+                        "sqrt3_subdivide: " + std::to_string(options.levels) +
+                            " levels would make more than 2^31 halfedges, more than a mesh index holds");
     }
     if (options.levels == 0) return sqrt3_result{T::vertex_count(mesh), T::edge_count(mesh), T::face_count(mesh)};
-    ds::reserve_room<M, T>(mesh, T::vertex_index_bound(mesh) + std::size_t(v - v0), T::edge_index_bound(mesh) + std::size_t(e - e0),
+    ds::reserve_room<M, T>(mesh, T::vertex_index_bound(mesh) + std::size_t(v - v0),
+                           T::edge_index_bound(mesh) + std::size_t(e - e0),
                            T::face_index_bound(mesh) + std::size_t(f - f0));
     work.triangles.reserve(std::size_t(f / 3));
     detail::progress_gate gate(options.progress, std::size_t(elements / ds::check_every));

@@ -28,8 +28,10 @@ const char* collapse_refusal(const M& m, typename T::halfedge_handle h, const co
     const bool tri0 = f0 != T::null_face() && n0 == 3, tri1 = f1 != T::null_face() && n1 == 3;
     if ((tri0 && detail::euler::has_rings<M, T>(m, f0)) || (tri1 && detail::euler::has_rings<M, T>(m, f1)))
         return "a triangle beside the edge has inner rings";
-    if (f0 == T::null_face() && n0 == 3) return "the edge lies on a boundary loop of three edges (the hole would close to a double edge)";
-    if (f1 == T::null_face() && n1 == 3) return "the edge lies on a boundary loop of three edges (the hole would close to a double edge)";
+    if (f0 == T::null_face() && n0 == 3)
+        return "the edge lies on a boundary loop of three edges (the hole would close to a double edge)";
+    if (f1 == T::null_face() && n1 == 3)
+        return "the edge lies on a boundary loop of three edges (the hole would close to a double edge)";
     const auto c = tri0 ? T::target(m, T::next(m, h)) : a;
     const auto d = tri1 ? T::target(m, T::next(m, o)) : a;
     if (tri0 && tri1 && c == d) return "the two triangles beside the edge share all three vertices";
@@ -38,7 +40,8 @@ const char* collapse_refusal(const M& m, typename T::halfedge_handle h, const co
         return T::face(m, T::opposite(m, T::next(m, x))) == T::null_face() &&
                T::face(m, T::opposite(m, T::prev(m, x))) == T::null_face();
     };
-    if ((tri0 && dangling(h)) || (tri1 && dangling(o))) return "a triangle beside the edge hangs on it alone (its other edges are boundary)";
+    if ((tri0 && dangling(h)) || (tri1 && dangling(o)))
+        return "a triangle beside the edge hangs on it alone (its other edges are boundary)";
     // Link condition: the only vertices adjacent to both ends are the third corners of the
     // triangles beside the edge.
     const auto start = T::vertex_halfedge(m, a);
@@ -61,10 +64,12 @@ const char* collapse_refusal(const M& m, typename T::halfedge_handle h, const co
         const auto cd = find_halfedge<M, T>(m, c, d);
         if (cd != T::null_halfedge()) {
             auto third = [&](typename T::halfedge_handle y) {
-                return T::face(m, y) != T::null_face() && loop_length<M, T>(m, y) == 3 ? T::target(m, T::next(m, y)) : c;
+                return T::face(m, y) != T::null_face() && loop_length<M, T>(m, y) == 3 ? T::target(m, T::next(m, y))
+                                                                                       : c;
             };
             const auto x1 = third(cd), x2 = third(T::opposite(m, cd));
-            if ((x1 == a && x2 == b) || (x1 == b && x2 == a)) return "the edge belongs to a tetrahedron (it would flatten)";
+            if ((x1 == a && x2 == b) || (x1 == b && x2 == a))
+                return "the edge belongs to a tetrahedron (it would flatten)";
         }
     }
     // A polygon (or inner ring) around a that also passes through b elsewhere would visit the
@@ -72,7 +77,8 @@ const char* collapse_refusal(const M& m, typename T::halfedge_handle h, const co
     x = start;
     do {
         const auto g = T::face(m, x);
-        if (g != T::null_face() && g != f0 && g != f1 && (loop_length<M, T>(m, x) > 3 || detail::euler::has_rings<M, T>(m, g))) {
+        if (g != T::null_face() && g != f0 && g != f1 &&
+            (loop_length<M, T>(m, x) > 3 || detail::euler::has_rings<M, T>(m, g))) {
             auto visits_b = [&](typename T::halfedge_handle s) {
                 auto y = s;
                 do {
@@ -131,11 +137,11 @@ struct collapse_links {
     H h, o, hn, hp, on, op;
     V a, b;
     F f0, f1;
-    bool tri0 = false, tri1 = false;     // the face on each side is a triangle, which goes
-    V c{}, d{};                          // the third corners of those triangles
-    H c_out{}, d_out{};                  // a surviving outgoing halfedge of c, d
-    H b_any{};                           // a surviving outgoing halfedge of b (null: none yet)
-    std::vector<H> into_a;               // the halfedges that end at a
+    bool tri0 = false, tri1 = false;  // the face on each side is a triangle, which goes
+    V c{}, d{};                       // the third corners of those triangles
+    H c_out{}, d_out{};               // a surviving outgoing halfedge of c, d
+    H b_any{};                        // a surviving outgoing halfedge of b (null: none yet)
+    std::vector<H> into_a;            // the halfedges that end at a
 
     /// Whether x's edge goes: the collapsed edge, and one side of each triangle that goes.
     /// Read from the mesh at each call.
@@ -212,8 +218,8 @@ void absorb_triangle(M& mesh, typename T::halfedge_handle t, typename T::halfedg
 /// A polygon or boundary loop beside the collapsed edge loses it: `prev` now leads to `next`,
 /// and face f (null for the boundary) no longer starts at `dead`.
 template <class M, class T>
-void skip_edge(M& mesh, typename T::halfedge_handle prev, typename T::halfedge_handle dead, typename T::halfedge_handle next,
-               typename T::face_handle f) {
+void skip_edge(M& mesh, typename T::halfedge_handle prev, typename T::halfedge_handle dead,
+               typename T::halfedge_handle next, typename T::face_handle f) {
     T::set_next(mesh, prev, next);
     if (f != T::null_face()) {
         if (T::face_halfedge(mesh, f) == dead) T::set_face_halfedge(mesh, f, next);
@@ -224,11 +230,15 @@ void skip_edge(M& mesh, typename T::halfedge_handle prev, typename T::halfedge_h
 template <class M, class T>
 void apply_collapse(M& mesh, collapse_links<M, T>& l, const vec3<double>& p) {
     // Side of h: triangle (a, b, c) goes, hn (b -> c) taking the place of hp's twin (a -> c).
-    if (l.tri0) absorb_triangle<M, T>(mesh, T::opposite(mesh, l.hp), l.hn);
-    else skip_edge<M, T>(mesh, l.hp, l.h, l.hn, l.f0);
+    if (l.tri0)
+        absorb_triangle<M, T>(mesh, T::opposite(mesh, l.hp), l.hn);
+    else
+        skip_edge<M, T>(mesh, l.hp, l.h, l.hn, l.f0);
     // Side of o: triangle (b, a, d) goes, op (d -> b) taking the place of on's twin (d -> a).
-    if (l.tri1) absorb_triangle<M, T>(mesh, T::opposite(mesh, l.on), l.op);
-    else skip_edge<M, T>(mesh, l.op, l.o, l.on, l.f1);
+    if (l.tri1)
+        absorb_triangle<M, T>(mesh, T::opposite(mesh, l.on), l.op);
+    else
+        skip_edge<M, T>(mesh, l.op, l.o, l.on, l.f1);
     for (const auto x : l.into_a)
         if (!l.removed_edge(mesh, x)) T::set_target(mesh, x, l.b);
     if (l.b_any == T::null_halfedge())
@@ -269,16 +279,19 @@ bool is_collapse_ok(const M& mesh, typename T::halfedge_handle h, const collapse
 
 template <class M, class T>
     requires triangle_operable_mesh<M, T>
-result<collapse_edge_result<M, T>> collapse_edge(M& mesh, typename T::halfedge_handle h, const collapse_edge_options& options) {
+result<collapse_edge_result<M, T>> collapse_edge(M& mesh, typename T::halfedge_handle h,
+                                                 const collapse_edge_options& options) {
     namespace de = detail::euler;
     namespace dt = detail::triangle_ops;
     if (!de::usable<M, T>(mesh, h))
         return fail(errc::invalid_handle, "collapse_edge: " + de::name<M, T>("halfedge", mesh, h) + " does not exist",
                     de::index_of<M, T>(mesh, h));
     if (options.placement == collapse_placement::given && !dt::finite(options.position))
-        return fail(errc::invalid_argument, "collapse_edge: option position is not finite", de::index_of<M, T>(mesh, h));
+        return fail(errc::invalid_argument, "collapse_edge: option position is not finite",
+                    de::index_of<M, T>(mesh, h));
     if (const char* why = dt::collapse_refusal<M, T>(mesh, h, options); *why != '\0')
-        return fail(errc::topology, "collapse_edge: cannot collapse " + de::name<M, T>("halfedge", mesh, h) + ": " + why,
+        return fail(errc::topology,
+                    "collapse_edge: cannot collapse " + de::name<M, T>("halfedge", mesh, h) + ": " + why,
                     de::index_of<M, T>(mesh, h));
     auto l = dt::read_collapse_links<M, T>(mesh, h);
     const auto pa = dt::position_of<M, T>(mesh, l.a), pb = dt::position_of<M, T>(mesh, l.b);

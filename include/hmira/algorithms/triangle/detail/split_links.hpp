@@ -13,7 +13,9 @@ namespace detail::triangle_ops {
 template <class M, class T>
 struct traits_new_elements {
     M& mesh;
-    typename T::halfedge_handle edge(typename T::vertex_handle a, typename T::vertex_handle b) { return T::new_edge(mesh, a, b); }
+    typename T::halfedge_handle edge(typename T::vertex_handle a, typename T::vertex_handle b) {
+        return T::new_edge(mesh, a, b);
+    }
     typename T::face_handle face() { return T::new_face(mesh); }
 };
 
@@ -24,8 +26,8 @@ struct traits_new_elements {
 /// which lets a batch take them from elements it made in bulk. Returns the new halfedge
 /// w -> b. O(1).
 template <class M, class T, class Make>
-typename T::halfedge_handle split_links(M& mesh, typename T::halfedge_handle h, typename T::vertex_handle w, bool cut_h, bool cut_o,
-                                        Make& make) {
+typename T::halfedge_handle split_links(M& mesh, typename T::halfedge_handle h, typename T::vertex_handle w, bool cut_h,
+                                        bool cut_o, Make& make) {
     const auto o = T::opposite(mesh, h);
     const auto a = T::target(mesh, o), b = T::target(mesh, h);
     const auto f0 = T::face(mesh, h), f1 = T::face(mesh, o);
@@ -33,8 +35,8 @@ typename T::halfedge_handle split_links(M& mesh, typename T::halfedge_handle h, 
     const auto a_out = T::vertex_halfedge(mesh, a);
     const auto b_out = T::vertex_halfedge(mesh, b);
 
-    const auto h2 = make.edge(w, b);  // w -> b
-    const auto o2 = T::opposite(mesh, h2);    // b -> w
+    const auto h2 = make.edge(w, b);        // w -> b
+    const auto o2 = T::opposite(mesh, h2);  // b -> w
     // h: a -> w, o: w -> a; the new edge takes h's place in front of hn and o's behind op.
     T::set_target(mesh, h, w);
     T::set_next(mesh, h, h2);
@@ -87,7 +89,8 @@ typename T::halfedge_handle split_links(M& mesh, typename T::halfedge_handle h, 
 
 /// split_links with new edges and faces from the traits.
 template <class M, class T>
-typename T::halfedge_handle split_links(M& mesh, typename T::halfedge_handle h, typename T::vertex_handle w, bool cut_h, bool cut_o) {
+typename T::halfedge_handle split_links(M& mesh, typename T::halfedge_handle h, typename T::vertex_handle w, bool cut_h,
+                                        bool cut_o) {
     traits_new_elements<M, T> make{mesh};
     return split_links<M, T>(mesh, h, w, cut_h, cut_o, make);
 }

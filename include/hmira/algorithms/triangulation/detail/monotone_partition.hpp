@@ -98,12 +98,8 @@ public:
         for (const std::size_t v : order) {
             const std::size_t u = x_.prev[v];
             switch (kind_[v]) {
-                case corner_kind::start:
-                    open(v);
-                    break;
-                case corner_kind::end:
-                    close(u, v);
-                    break;
+                case corner_kind::start: open(v); break;
+                case corner_kind::end: close(u, v); break;
                 case corner_kind::split: {
                     const std::size_t e = below(v);
                     if (e == n_) return false;

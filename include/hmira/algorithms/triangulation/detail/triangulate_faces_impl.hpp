@@ -351,55 +351,56 @@ private:
 }  // namespace detail::triangulation
 
 template <class M, class T>
-    requires face_triangulable_mesh<M, T> result<std::vector<std::array<typename T::vertex_handle, 3>>> face_triangles(
-        const M& mesh, typename T::face_handle f, const triangulate_polygon_options& options) {
-        namespace dt = detail::triangulation;
-        using out_t = std::vector<std::array<typename T::vertex_handle, 3>>;
-        if (!detail::euler::has_rings<M, T>(mesh, f)) {
-            if (const auto q = dt::convex_quad_cut<M, T>(mesh, f, options.delaunay); q.from >= 0) {
-                const auto c = [&](int k) { return q.corner[std::size_t((q.from + k) % 4)]; };
-                return out_t{{c(2), c(3), c(0)}, {c(0), c(1), c(2)}};  // the diagonal c(0)-c(2)
-            }
+    requires face_triangulable_mesh<M, T>
+result<std::vector<std::array<typename T::vertex_handle, 3>>> face_triangles(
+    const M& mesh, typename T::face_handle f, const triangulate_polygon_options& options) {
+    namespace dt = detail::triangulation;
+    using out_t = std::vector<std::array<typename T::vertex_handle, 3>>;
+    if (!detail::euler::has_rings<M, T>(mesh, f)) {
+        if (const auto q = dt::convex_quad_cut<M, T>(mesh, f, options.delaunay); q.from >= 0) {
+            const auto c = [&](int k) { return q.corner[std::size_t((q.from + k) % 4)]; };
+            return out_t{{c(2), c(3), c(0)}, {c(0), c(1), c(2)}};  // the diagonal c(0)-c(2)
         }
-        auto poly = dt::project_face<M, T>(mesh, f);
-        if (!poly) return poly.error();
-        if (poly->loops.size() == 1 && poly->loops[0].size() == 3)
-            return out_t{{poly->vertices[0], poly->vertices[1], poly->vertices[2]}};
-        auto tris = triangulate_polygon(poly->points, poly->loops, options);
-        if (!tris) {
-            auto e = tris.error();
-            return fail(e.code, "face " + std::to_string(T::face_index(mesh, f)) + ": " + e.message,
-                        (long long)T::face_index(mesh, f));
-        }
-        out_t out;
-        out.reserve(tris->size());
-        for (const auto& t : *tris) out.push_back({poly->vertices[t[0]], poly->vertices[t[1]], poly->vertices[t[2]]});
-        return out;
     }
+    auto poly = dt::project_face<M, T>(mesh, f);
+    if (!poly) return poly.error();
+    if (poly->loops.size() == 1 && poly->loops[0].size() == 3)
+        return out_t{{poly->vertices[0], poly->vertices[1], poly->vertices[2]}};
+    auto tris = triangulate_polygon(poly->points, poly->loops, options);
+    if (!tris) {
+        auto e = tris.error();
+        return fail(e.code, "face " + std::to_string(T::face_index(mesh, f)) + ": " + e.message,
+                    (long long)T::face_index(mesh, f));
+    }
+    out_t out;
+    out.reserve(tris->size());
+    for (const auto& t : *tris) out.push_back({poly->vertices[t[0]], poly->vertices[t[1]], poly->vertices[t[2]]});
+    return out;
+}
 
 template <class M, class T>
-    requires triangulable_mesh<M, T> result<triangulate_faces_result> triangulate_faces(
-        M& mesh, const triangulate_polygon_options& options) {
-        namespace dt = detail::triangulation;
-        std::vector<dt::face_plan<M, T>> plans;
-        std::vector<dt::quad_plan<M, T>> quads;
-        if (auto planned = dt::plan_faces<M, T>(mesh, options, plans, quads); !planned) return planned.error();
-        triangulate_faces_result out;
-        std::size_t added = quads.size();
-        for (const auto& pl : plans) added += pl.triangles.size() - 1;
-        if constexpr (reservable_mesh<M, T> && edge_index_mesh<M, T>)
-            T::reserve(mesh, T::vertex_index_bound(mesh), T::edge_index_bound(mesh) + added,
-                       T::face_index_bound(mesh) + added);
-        for (const auto& q : quads) {
-            if (auto cut = dt::cut_quad<M, T>(mesh, q); !cut) return cut.error();
-            ++out.triangles_added;
-            ++out.faces_cut;
-        }
-        for (const auto& pl : plans) {
-            if (auto cut = dt::face_cutter<M, T>(mesh, pl).run(out); !cut) return cut.error();
-            ++out.faces_cut;
-        }
-        return out;
+    requires triangulable_mesh<M, T>
+result<triangulate_faces_result> triangulate_faces(M& mesh, const triangulate_polygon_options& options) {
+    namespace dt = detail::triangulation;
+    std::vector<dt::face_plan<M, T>> plans;
+    std::vector<dt::quad_plan<M, T>> quads;
+    if (auto planned = dt::plan_faces<M, T>(mesh, options, plans, quads); !planned) return planned.error();
+    triangulate_faces_result out;
+    std::size_t added = quads.size();
+    for (const auto& pl : plans) added += pl.triangles.size() - 1;
+    if constexpr (reservable_mesh<M, T> && edge_index_mesh<M, T>)
+        T::reserve(mesh, T::vertex_index_bound(mesh), T::edge_index_bound(mesh) + added,
+                   T::face_index_bound(mesh) + added);
+    for (const auto& q : quads) {
+        if (auto cut = dt::cut_quad<M, T>(mesh, q); !cut) return cut.error();
+        ++out.triangles_added;
+        ++out.faces_cut;
     }
+    for (const auto& pl : plans) {
+        if (auto cut = dt::face_cutter<M, T>(mesh, pl).run(out); !cut) return cut.error();
+        ++out.faces_cut;
+    }
+    return out;
+}
 
 }  // namespace hmira

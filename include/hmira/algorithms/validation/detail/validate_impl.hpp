@@ -36,14 +36,23 @@ struct live_elements {
     std::vector<std::uint8_t> live_h, live_v, live_f;
 
     explicit live_elements(const M& m)
-        : mesh(m), nh(T::halfedge_index_bound(m)), nv(T::vertex_index_bound(m)), nf(T::face_index_bound(m)), live_h(nh, 0), live_v(nv, 0),
+        : mesh(m),
+          nh(T::halfedge_index_bound(m)),
+          nv(T::vertex_index_bound(m)),
+          nf(T::face_index_bound(m)),
+          live_h(nh, 0),
+          live_v(nv, 0),
           live_f(nf, 0) {
         for (auto v : T::vertices(mesh)) live_v[T::vertex_index(mesh, v)] = 1;
         for (auto f : T::faces(mesh)) live_f[T::face_index(mesh, f)] = 1;
         for (H h : T::halfedges(mesh)) live_h[T::halfedge_index(mesh, h)] = 1;
     }
-    bool ok_h(H h) const { return h != T::null_halfedge() && T::halfedge_index(mesh, h) < nh && live_h[T::halfedge_index(mesh, h)]; }
-    bool ok_v(typename T::vertex_handle v) const { return T::vertex_index(mesh, v) < nv && live_v[T::vertex_index(mesh, v)]; }
+    bool ok_h(H h) const {
+        return h != T::null_halfedge() && T::halfedge_index(mesh, h) < nh && live_h[T::halfedge_index(mesh, h)];
+    }
+    bool ok_v(typename T::vertex_handle v) const {
+        return T::vertex_index(mesh, v) < nv && live_v[T::vertex_index(mesh, v)];
+    }
     bool ok_f(typename T::face_handle f) const { return T::face_index(mesh, f) < nf && live_f[T::face_index(mesh, f)]; }
     std::string hs(H h) const { return std::to_string(T::halfedge_index(mesh, h)); }
 };
@@ -53,44 +62,52 @@ struct live_elements {
 /// vertex's outgoing ones for the loop and fan checks. Returns whether every link can be
 /// followed (the later checks walk them).
 template <class M, class T>
-bool validate_halfedge_links(const M& mesh, const validate_options& options, const live_elements<M, T>& live, problem_sink& sink,
-                             std::vector<std::size_t>& face_sides, std::vector<std::size_t>& outgoing) {
+bool validate_halfedge_links(const M& mesh, const validate_options& options, const live_elements<M, T>& live,
+                             problem_sink& sink, std::vector<std::size_t>& face_sides,
+                             std::vector<std::size_t>& outgoing) {
     using H = typename T::halfedge_handle;
     bool links_ok = true;
     for (H h : T::halfedges(mesh)) {
         if (sink.full()) return false;
         const auto n = T::next(mesh, h), p = T::prev(mesh, h), o = T::opposite(mesh, h);
         if (!live.ok_h(n) || !live.ok_h(p) || !live.ok_h(o)) {
-            sink.add(problem_kind::invalid_reference, T::halfedge_index(mesh, h), "halfedge " + live.hs(h) + " links to a missing halfedge");
+            sink.add(problem_kind::invalid_reference, T::halfedge_index(mesh, h),
+                     "halfedge " + live.hs(h) + " links to a missing halfedge");
             links_ok = false;
             continue;
         }
         if (T::prev(mesh, n) != h || T::next(mesh, p) != h) {
-            sink.add(problem_kind::broken_link, T::halfedge_index(mesh, h), "halfedge " + live.hs(h) + ": next/prev are not inverse");
+            sink.add(problem_kind::broken_link, T::halfedge_index(mesh, h),
+                     "halfedge " + live.hs(h) + ": next/prev are not inverse");
             links_ok = false;
         }
         if (T::opposite(mesh, o) != h || o == h || T::edge(mesh, o) != T::edge(mesh, h)) {
-            sink.add(problem_kind::broken_link, T::halfedge_index(mesh, h), "halfedge " + live.hs(h) + ": opposite is not an involution on one edge");
+            sink.add(problem_kind::broken_link, T::halfedge_index(mesh, h),
+                     "halfedge " + live.hs(h) + ": opposite is not an involution on one edge");
             links_ok = false;
         }
         const auto t = T::target(mesh, h);
         if (!live.ok_v(t)) {
-            sink.add(problem_kind::invalid_reference, T::halfedge_index(mesh, h), "halfedge " + live.hs(h) + " points to a missing vertex");
+            sink.add(problem_kind::invalid_reference, T::halfedge_index(mesh, h),
+                     "halfedge " + live.hs(h) + " points to a missing vertex");
             links_ok = false;
             continue;
         }
         if (T::target(mesh, T::opposite(mesh, n)) != t) {
-            sink.add(problem_kind::broken_link, T::halfedge_index(mesh, h), "halfedge " + live.hs(h) + ": next does not start where it ends");
+            sink.add(problem_kind::broken_link, T::halfedge_index(mesh, h),
+                     "halfedge " + live.hs(h) + ": next does not start where it ends");
             links_ok = false;
         }
         const auto f = T::face(mesh, h);
         if (f != T::null_face() && !live.ok_f(f)) {
-            sink.add(problem_kind::invalid_reference, T::halfedge_index(mesh, h), "halfedge " + live.hs(h) + " lies in a missing face");
+            sink.add(problem_kind::invalid_reference, T::halfedge_index(mesh, h),
+                     "halfedge " + live.hs(h) + " lies in a missing face");
             links_ok = false;
             continue;
         }
         if (T::face(mesh, n) != f) {
-            sink.add(problem_kind::broken_link, T::halfedge_index(mesh, h), "halfedge " + live.hs(h) + ": next lies in another face");
+            sink.add(problem_kind::broken_link, T::halfedge_index(mesh, h),
+                     "halfedge " + live.hs(h) + ": next lies in another face");
             links_ok = false;
         }
         if (f != T::null_face()) ++face_sides[T::face_index(mesh, f)];
@@ -106,8 +123,8 @@ bool validate_halfedge_links(const M& mesh, const validate_options& options, con
 /// Faces of a halfedge model: the outer loop and inner rings account for every halfedge of
 /// the face, and stay in it.
 template <class M, class T>
-void validate_halfedge_loops(const M& mesh, const validate_options& options, const live_elements<M, T>& live, problem_sink& sink,
-                             const std::vector<std::size_t>& face_sides) {
+void validate_halfedge_loops(const M& mesh, const validate_options& options, const live_elements<M, T>& live,
+                             problem_sink& sink, const std::vector<std::size_t>& face_sides) {
     using H = typename T::halfedge_handle;
     for (auto f : T::faces(mesh)) {
         if (sink.full()) return;
@@ -122,7 +139,9 @@ void validate_halfedge_loops(const M& mesh, const validate_options& options, con
             H h = s;
             do {
                 if (T::face(mesh, h) != f) {
-                    sink.add(problem_kind::broken_link, fi, "face " + std::to_string(fi) + ": its " + what + " contains halfedge " + live.hs(h) + " of another face");
+                    sink.add(problem_kind::broken_link, fi,
+                             "face " + std::to_string(fi) + ": its " + what + " contains halfedge " + live.hs(h) +
+                                 " of another face");
                     return len;
                 }
                 h = T::next(mesh, h);
@@ -132,18 +151,21 @@ void validate_halfedge_loops(const M& mesh, const validate_options& options, con
         };
         std::size_t sides = walk(start, "outer loop");
         if (!options.relaxed && sides < 3)
-            sink.add(problem_kind::degenerate_face, fi, "face " + std::to_string(fi) + " has " + std::to_string(sides) + " sides");
+            sink.add(problem_kind::degenerate_face, fi,
+                     "face " + std::to_string(fi) + " has " + std::to_string(sides) + " sides");
         if constexpr (inner_ring_mesh<M, T>)
             for (auto r : T::inner_rings(mesh, f)) {
                 if (!live.ok_h(r)) {
-                    sink.add(problem_kind::invalid_reference, fi, "face " + std::to_string(fi) + " has an inner ring with an invalid halfedge");
+                    sink.add(problem_kind::invalid_reference, fi,
+                             "face " + std::to_string(fi) + " has an inner ring with an invalid halfedge");
                     continue;
                 }
                 sides += walk(r, "inner ring");
             }
         if (sides != face_sides[fi])
-            sink.add(problem_kind::broken_link, fi, "face " + std::to_string(fi) + " has " + std::to_string(face_sides[fi]) +
-                                                        " halfedges but its loops hold " + std::to_string(sides));
+            sink.add(problem_kind::broken_link, fi,
+                     "face " + std::to_string(fi) + " has " + std::to_string(face_sides[fi]) +
+                         " halfedges but its loops hold " + std::to_string(sides));
     }
 }
 
@@ -151,8 +173,8 @@ void validate_halfedge_loops(const M& mesh, const validate_options& options, con
 /// outgoing halfedge (otherwise the vertex is non-manifold), and a boundary vertex stores a
 /// boundary halfedge.
 template <class M, class T>
-void validate_halfedge_fans(const M& mesh, const validate_options& options, const live_elements<M, T>& live, problem_sink& sink,
-                            const std::vector<std::size_t>& outgoing) {
+void validate_halfedge_fans(const M& mesh, const validate_options& options, const live_elements<M, T>& live,
+                            problem_sink& sink, const std::vector<std::size_t>& outgoing) {
     using H = typename T::halfedge_handle;
     for (auto v : T::vertices(mesh)) {
         if (sink.full()) return;
@@ -160,13 +182,16 @@ void validate_halfedge_fans(const M& mesh, const validate_options& options, cons
         const auto h0 = T::vertex_halfedge(mesh, v);
         if (h0 == T::null_halfedge()) {
             if (outgoing[vi] != 0)
-                sink.add(problem_kind::broken_link, vi, "vertex " + std::to_string(vi) + " stores no halfedge but has " + std::to_string(outgoing[vi]));
+                sink.add(
+                    problem_kind::broken_link, vi,
+                    "vertex " + std::to_string(vi) + " stores no halfedge but has " + std::to_string(outgoing[vi]));
             else if (!options.relaxed)
                 sink.add(problem_kind::isolated_vertex, vi, "vertex " + std::to_string(vi) + " is isolated");
             continue;
         }
         if (!live.ok_h(h0) || T::target(mesh, T::opposite(mesh, h0)) != v) {
-            sink.add(problem_kind::broken_link, vi, "vertex " + std::to_string(vi) + " stores a halfedge that does not leave it");
+            sink.add(problem_kind::broken_link, vi,
+                     "vertex " + std::to_string(vi) + " stores a halfedge that does not leave it");
             continue;
         }
         std::size_t around = 0;
@@ -178,10 +203,12 @@ void validate_halfedge_fans(const M& mesh, const validate_options& options, cons
             if (++around > live.nh) break;
         } while (h != h0);
         if (around != outgoing[vi])
-            sink.add(problem_kind::non_manifold_vertex, vi, "vertex " + std::to_string(vi) + ": its fan reaches " + std::to_string(around) +
-                                                                " of its " + std::to_string(outgoing[vi]) + " edges");
+            sink.add(problem_kind::non_manifold_vertex, vi,
+                     "vertex " + std::to_string(vi) + ": its fan reaches " + std::to_string(around) + " of its " +
+                         std::to_string(outgoing[vi]) + " edges");
         else if (saw_boundary && T::face(mesh, h0) != T::null_face())
-            sink.add(problem_kind::broken_link, vi, "vertex " + std::to_string(vi) + " is on the boundary but stores an interior halfedge");
+            sink.add(problem_kind::broken_link, vi,
+                     "vertex " + std::to_string(vi) + " is on the boundary but stores an interior halfedge");
     }
 }
 
@@ -205,7 +232,8 @@ void validate_positions(const M& mesh, problem_sink& sink) {
         const auto p = static_cast<vec3<typename T::scalar>>(T::position(mesh, v));
         if (!(std::isfinite(double(p.x)) && std::isfinite(double(p.y)) && std::isfinite(double(p.z)))) {
             const auto vi = T::vertex_index(mesh, v);
-            sink.add(problem_kind::non_finite_position, vi, "vertex " + std::to_string(vi) + " has a non-finite coordinate (NaN or infinity)");
+            sink.add(problem_kind::non_finite_position, vi,
+                     "vertex " + std::to_string(vi) + " has a non-finite coordinate (NaN or infinity)");
         }
     }
 }
@@ -248,8 +276,8 @@ struct face_pass {
 /// pass, inner rings included (a face's inner rings are part of its fan at their vertices:
 /// without them a vertex on a ring would look like a pinch).
 template <class M, class T>
-face_pass validate_faces(const M& mesh, const validate_options& options, const std::vector<std::uint8_t>& live, problem_sink& sink,
-                         face_corners& corners) {
+face_pass validate_faces(const M& mesh, const validate_options& options, const std::vector<std::uint8_t>& live,
+                         problem_sink& sink, face_corners& corners) {
     const std::size_t nv = live.size();
     face_pass pass;
     std::vector<std::uint32_t> loop;
@@ -270,14 +298,16 @@ face_pass validate_faces(const M& mesh, const validate_options& options, const s
             loop.push_back(static_cast<std::uint32_t>(T::vertex_index(mesh, v)));
         }
         if (!closes) {
-            sink.add(problem_kind::broken_link, fi, "face " + std::to_string(fi) + ": its loop does not return to its first halfedge");
+            sink.add(problem_kind::broken_link, fi,
+                     "face " + std::to_string(fi) + ": its loop does not return to its first halfedge");
             pass.loops_close = false;
             continue;
         }
         bool bad = false;
         for (auto i : loop)
             if (i >= nv || !live[i]) {
-                sink.add(problem_kind::invalid_reference, fi, "face " + std::to_string(fi) + " uses vertex " + std::to_string(i) + ", which does not exist");
+                sink.add(problem_kind::invalid_reference, fi,
+                         "face " + std::to_string(fi) + " uses vertex " + std::to_string(i) + ", which does not exist");
                 bad = true;
                 pass.references_ok = false;
                 break;
@@ -285,7 +315,8 @@ face_pass validate_faces(const M& mesh, const validate_options& options, const s
         if (bad) continue;
         if (!options.relaxed) {
             if (loop.size() < 3) {
-                sink.add(problem_kind::degenerate_face, fi, "face " + std::to_string(fi) + " has only " + std::to_string(loop.size()) + " vertices");
+                sink.add(problem_kind::degenerate_face, fi,
+                         "face " + std::to_string(fi) + " has only " + std::to_string(loop.size()) + " vertices");
                 continue;
             }
             auto sorted = loop;
@@ -324,10 +355,13 @@ void validate_edges(const M& mesh, problem_sink& sink) {
     for (const auto& e : edge_census<M, T>(mesh)) {
         if (sink.full()) return;
         if (e.uses() > 2)
-            sink.add(problem_kind::non_manifold_edge, e.a, "edge " + std::to_string(e.a) + "-" + std::to_string(e.b) + " has " + std::to_string(e.uses()) + " faces");
+            sink.add(problem_kind::non_manifold_edge, e.a,
+                     "edge " + std::to_string(e.a) + "-" + std::to_string(e.b) + " has " + std::to_string(e.uses()) +
+                         " faces");
         else if (e.forward == 2 || e.backward == 2)
-            sink.add(problem_kind::inconsistent_orientation, e.a, "edge " + std::to_string(e.a) + "-" + std::to_string(e.b) +
-                                                                       " is run in the same direction by both its faces");
+            sink.add(problem_kind::inconsistent_orientation, e.a,
+                     "edge " + std::to_string(e.a) + "-" + std::to_string(e.b) +
+                         " is run in the same direction by both its faces");
     }
 }
 
@@ -336,7 +370,10 @@ void validate_edges(const M& mesh, problem_sink& sink) {
 inline void validate_corner_fans(const face_corners& corners, std::size_t nv, problem_sink& sink) {
     const std::size_t nc = corners.vertex.size();
     union_find fans(nc);
-    struct key { std::uint64_t vw; std::uint32_t corner; };
+    struct key {
+        std::uint64_t vw;
+        std::uint32_t corner;
+    };
     std::vector<key> keys;
     keys.reserve(2 * nc);
     for (std::size_t c = 0; c < nc; ++c) {
@@ -351,10 +388,12 @@ inline void validate_corner_fans(const face_corners& corners, std::size_t nv, pr
     for (std::size_t c = 0; c < nc && !sink.full(); ++c) {
         const auto v = corners.vertex[c];
         const auto r = fans.find(static_cast<std::uint32_t>(c));
-        if (first_root[v] == UINT32_MAX) first_root[v] = r;
+        if (first_root[v] == UINT32_MAX)
+            first_root[v] = r;
         else if (first_root[v] != r && !reported[v]) {
             reported[v] = 1;
-            sink.add(problem_kind::non_manifold_vertex, v, "vertex " + std::to_string(v) + " joins two or more separate fans of faces");
+            sink.add(problem_kind::non_manifold_vertex, v,
+                     "vertex " + std::to_string(v) + " joins two or more separate fans of faces");
         }
     }
 }
@@ -395,7 +434,8 @@ std::vector<mesh_problem> validate(const M& mesh, const validate_options& option
         for (auto v : T::vertices(mesh)) {
             if (sink.full()) break;
             const auto vi = T::vertex_index(mesh, v);
-            if (!corners.used[vi]) sink.add(problem_kind::isolated_vertex, vi, "vertex " + std::to_string(vi) + " is used by no face");
+            if (!corners.used[vi])
+                sink.add(problem_kind::isolated_vertex, vi, "vertex " + std::to_string(vi) + " is used by no face");
         }
     }
     return out;
