@@ -6,7 +6,7 @@ pkgs=(build-essential cmake ninja-build ccache pkg-config
       libgtest-dev libbenchmark-dev libtbb-dev libcli11-dev zlib1g-dev libtinyobjloader-dev
       libopenmesh-dev libcgal-dev libcgal-demo libeigen3-dev
       python3-venv python3-dev libusb-1.0-0 doxygen time
-      clang-14 libclang-rt-14-dev clang-16 libclang-rt-16-dev chromium)
+      clang-14 libclang-rt-14-dev clang-16 libclang-rt-16-dev clang-format-16 chromium)
 # npm: Debian's package, unless a Node.js with npm is already installed (Debian's npm would
 # fight a newer nodejs package over the same files).
 command -v npm >/dev/null || pkgs+=(npm)

@@ -16,6 +16,10 @@ bash scripts/test-data.sh build/test-data
 # committed as viewer/dist/hmira-viewer.js, so every build embeds it without node: check that it
 # is what the sources make now.
 bash viewer/check-bundle.sh
+# The house layout and format: every C++ file formatted by .clang-format (clang-format-16); no
+# header over 700 lines, and each algorithm header's entry point within its first 100 lines.
+bash scripts/check-format.sh
+python3 scripts/check-layout.py
 
 common=(-G Ninja -DHMIRA_WERROR=ON -DHMIRA_BUILD_TESTS=ON -DHMIRA_BUILD_APPS=ON -DHMIRA_BUILD_EXAMPLES=ON
         -DHMIRA_TEST_DATA_DIR="$PWD/build/test-data")
