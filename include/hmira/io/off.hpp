@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
 #include <filesystem>
 #include <sstream>
 #include <string>
@@ -22,6 +23,68 @@
 #include "obj.hpp"  // detail::append_coordinate
 
 namespace hmira::io {
+
+namespace detail {
+
+/// The colour of OFF vertex i, after its position (and normal): "r g b [a]", integers 0..255
+/// or floats 0..1; with texture coordinates after it (STCOFF), r g b only. Errors name
+/// `name:line`.
+inline result<std::array<std::uint8_t, 4>> off_read_color(text_cursor& c, long long i, bool has_texture,
+                                                          const std::string& name) {
+    auto where = [&] { return name + ":" + std::to_string(c.line()); };
+    std::array<double, 4> col{0, 0, 0, -1};
+    int k = 0;
+    const int wanted = has_texture ? 3 : 4;  // with texture coordinates after, read RGB only
+    for (; k < wanted && !c.at_line_end('#'); ++k)
+        if (!c.number(col[static_cast<std::size_t>(k)]))
+            return fail(errc::parse_error,
+                        where() + ": colour of vertex " + std::to_string(i) + ": " + describe_bad_number(c));
+    if (k < 3)
+        return fail(errc::parse_error, where() + ": vertex " + std::to_string(i) + " has no colour (COFF needs r g b)");
+    // Integer colours run 0..255, float colours 0..1; anything else is refused.
+    const bool bytes = std::max({col[0], col[1], col[2], col[3]}) > 1.0;
+    std::array<std::uint8_t, 4> rgba{};
+    for (std::size_t j = 0; j < 4; ++j) {
+        const double x = j == 3 && k < 4 ? (bytes ? 255.0 : 1.0) : col[j];
+        const auto byte = color_channel(x, bytes);
+        if (!byte)
+            return fail(errc::parse_error, where() + ": colour of vertex " + std::to_string(i) + ": channel " +
+                                               std::to_string(j) + " is " + number_text(x) + ", outside " +
+                                               (bytes ? "0..255" : "0..1"));
+        rgba[j] = *byte;
+    }
+    return rgba;
+}
+
+/// The corners of OFF face f ("k i1 ... ik", k >= 3, each index in [0, nv)), appended to
+/// soup.indices. Errors name `name:line`.
+inline result<void> off_read_face(text_cursor& c, long long f, long long nv, polygon_soup& soup,
+                                  const std::string& name) {
+    auto where = [&] { return name + ":" + std::to_string(c.line()); };
+    long long k = 0;
+    if (!c.number(k))
+        return fail(errc::parse_error, where() + ": face " + std::to_string(f) + ": " + describe_bad_number(c) +
+                                           " (expected a vertex count)");
+    if (k < 3)
+        return fail(errc::degenerate_face, where() + ": face " + std::to_string(f) + " has " + std::to_string(k) +
+                                               " vertices; at least 3 needed");
+    for (long long j = 0; j < k; ++j) {
+        long long idx = 0;
+        if (c.at_line_end('#'))
+            return fail(errc::parse_error, where() + ": face " + std::to_string(f) + " lists fewer than its " +
+                                               std::to_string(k) + " vertices");
+        if (!c.number(idx))
+            return fail(errc::parse_error, where() + ": face " + std::to_string(f) + ": " + describe_bad_number(c) +
+                                               " (expected a vertex index)");
+        if (idx < 0 || idx >= nv)
+            return fail(errc::parse_error, where() + ": face " + std::to_string(f) + " uses vertex " +
+                                               std::to_string(idx) + ", out of range [0, " + std::to_string(nv) + ")");
+        soup.indices.push_back(static_cast<std::uint32_t>(idx));
+    }
+    return {};
+}
+
+}  // namespace detail
 
 /// Parses OFF text into a soup. Errors name `name:line`.
 /// Complexity: O(bytes). Errors (errc::parse_error / degenerate_face / unsupported): a missing
@@ -106,29 +169,9 @@ inline result<polygon_soup> parse_off(std::string_view text, const std::string& 
             soup.attributes.normals.push_back({n[0], n[1], n[2]});
         }
         if (has_colors) {
-            std::array<double, 4> col{0, 0, 0, -1};
-            int k = 0;
-            const int wanted = has_texture ? 3 : 4;  // with texture coordinates after, read RGB only
-            for (; k < wanted && !c.at_line_end('#'); ++k)
-                if (!c.number(col[static_cast<std::size_t>(k)]))
-                    return fail(errc::parse_error, where() + ": colour of vertex " + std::to_string(i) + ": " +
-                                                       detail::describe_bad_number(c));
-            if (k < 3)
-                return fail(errc::parse_error,
-                            where() + ": vertex " + std::to_string(i) + " has no colour (COFF needs r g b)");
-            // Integer colours run 0..255, float colours 0..1; anything else is refused.
-            const bool bytes = std::max({col[0], col[1], col[2], col[3]}) > 1.0;
-            std::array<std::uint8_t, 4> rgba{};
-            for (std::size_t j = 0; j < 4; ++j) {
-                const double x = j == 3 && k < 4 ? (bytes ? 255.0 : 1.0) : col[j];
-                const auto byte = detail::color_channel(x, bytes);
-                if (!byte)
-                    return fail(errc::parse_error, where() + ": colour of vertex " + std::to_string(i) + ": channel " +
-                                                       std::to_string(j) + " is " + detail::number_text(x) +
-                                                       ", outside " + (bytes ? "0..255" : "0..1"));
-                rgba[j] = *byte;
-            }
-            soup.attributes.colors.push_back(rgba);
+            auto rgba = detail::off_read_color(c, i, has_texture, name);
+            if (!rgba) return rgba.error();
+            soup.attributes.colors.push_back(*rgba);
         }
         c.next_line();
         if (!ticker.tick(c.offset())) return detail::progress_ticker::cancelled(where());
@@ -139,27 +182,7 @@ inline result<polygon_soup> parse_off(std::string_view text, const std::string& 
             return fail(errc::parse_error, name + ":" + std::to_string(c.line()) + ": file ends after " +
                                                std::to_string(f) + " of " + std::to_string(nf) +
                                                " faces (header count too large, or truncated file)");
-        long long k = 0;
-        if (!c.number(k))
-            return fail(errc::parse_error, where() + ": face " + std::to_string(f) + ": " +
-                                               detail::describe_bad_number(c) + " (expected a vertex count)");
-        if (k < 3)
-            return fail(errc::degenerate_face, where() + ": face " + std::to_string(f) + " has " + std::to_string(k) +
-                                                   " vertices; at least 3 needed");
-        for (long long j = 0; j < k; ++j) {
-            long long idx = 0;
-            if (c.at_line_end('#'))
-                return fail(errc::parse_error, where() + ": face " + std::to_string(f) + " lists fewer than its " +
-                                                   std::to_string(k) + " vertices");
-            if (!c.number(idx))
-                return fail(errc::parse_error, where() + ": face " + std::to_string(f) + ": " +
-                                                   detail::describe_bad_number(c) + " (expected a vertex index)");
-            if (idx < 0 || idx >= nv)
-                return fail(errc::parse_error, where() + ": face " + std::to_string(f) + " uses vertex " +
-                                                   std::to_string(idx) + ", out of range [0, " + std::to_string(nv) +
-                                                   ")");
-            soup.indices.push_back(static_cast<std::uint32_t>(idx));
-        }
+        if (auto face = detail::off_read_face(c, f, nv, soup, name); !face) return face.error();
         soup.face_offsets.push_back(soup.indices.size());
         c.next_line();
         if (!ticker.tick(c.offset())) return detail::progress_ticker::cancelled(where());
