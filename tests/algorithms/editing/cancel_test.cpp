@@ -192,7 +192,16 @@ TYPED_TEST(cancel_test, cancel_at_kth_report_leaves_the_mesh_unchanged) {
         for (const auto& c : cases<M>()) {
             const std::size_t reports = c.elements / 1024;
             ASSERT_GE(reports, 3u) << c.name << ": the shape is too small to cancel in the middle";
-            for (std::size_t k : {std::size_t(1), std::size_t(2), reports / 2 + 1, reports}) {
+            M fresh;
+            ASSERT_TRUE(hmira_test::add_face_list(fresh, c.shape));
+            ASSERT_FALSE(c.run(&fresh, {}));
+#ifdef HMIRA_SANITIZER_BUILD
+            // Instrumented, each stop costs seconds: the first and the last report only.
+            const std::vector<std::size_t> stops{1, reports};
+#else
+            const std::vector<std::size_t> stops{1, 2, reports / 2 + 1, reports};
+#endif
+            for (std::size_t k : stops) {
                 SCOPED_TRACE(c.name + ", cancelled at report " + std::to_string(k));
                 M m;
                 ASSERT_TRUE(hmira_test::add_face_list(m, c.shape));
@@ -207,9 +216,6 @@ TYPED_TEST(cancel_test, cancel_at_kth_report_leaves_the_mesh_unchanged) {
                 // The rolled-back mesh still takes the whole edit, with the same result as a fresh one.
                 ASSERT_FALSE(c.run(&m, {}));
                 EXPECT_TRUE(hmira_test::is_valid(m));
-                M fresh;
-                ASSERT_TRUE(hmira_test::add_face_list(fresh, c.shape));
-                ASSERT_FALSE(c.run(&fresh, {}));
                 EXPECT_EQ(hmira_test::count(m), hmira_test::count(fresh));
             }
         }

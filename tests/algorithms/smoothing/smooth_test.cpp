@@ -13,6 +13,7 @@
 #include <hmira/algorithms/subdivision/loop.hpp>
 
 #include "algorithms/triangle/triangle_support.hpp"
+#include "support/cancel_points.hpp"
 
 namespace {
 
@@ -368,7 +369,7 @@ TYPED_TEST(smoothing_test, a_cancellation_at_any_call_restores_every_position) {
             M plain = *j.mesh;
             ASSERT_TRUE(smooth(plain, {}));
             EXPECT_EQ(take_snapshot(plain), take_snapshot(done));  // the callback changes nothing
-            for (int stop_at = 1; stop_at <= calls_to_finish; stop_at += std::max(1, calls_to_finish / 5)) {
+            for (const int stop_at : hmira_test::cancel_points(calls_to_finish, 5)) {
                 M m = *j.mesh;
                 int calls = 0;
                 auto r = smooth(m, [&](double) { return ++calls < stop_at; });

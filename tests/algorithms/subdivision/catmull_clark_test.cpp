@@ -18,6 +18,7 @@
 
 #include "algorithms/subdivision/subdivision_support.hpp"
 #include "algorithms/triangle/triangle_support.hpp"
+#include "support/cancel_points.hpp"
 
 namespace {
 
@@ -289,7 +290,7 @@ TYPED_TEST(catmull_clark_test, a_cancellation_at_any_point_leaves_the_mesh_uncha
             EXPECT_EQ(r->faces, 4096u * 64u);
         }
         ASSERT_GT(calls_to_finish, 8);
-        for (int stop_at = 1; stop_at <= calls_to_finish; stop_at += std::max(1, calls_to_finish / 9)) {
+        for (const int stop_at : hmira_test::cancel_points(calls_to_finish, 9)) {
             M m = original;
             int calls = 0;
             auto r =

@@ -14,6 +14,7 @@
 #include <hmira/core/progress.hpp>
 
 #include "algorithms/triangle/triangle_support.hpp"
+#include "support/cancel_points.hpp"
 
 namespace hmira_test {
 
@@ -77,7 +78,7 @@ void expect_cancellation_restores(const M& original, std::size_t elements, Run r
     }
     EXPECT_GE(std::size_t(calls_to_finish), elements / 65536) << elements << " elements";
     ASSERT_GE(calls_to_finish, 3);
-    for (int stop_at = 1; stop_at <= calls_to_finish; stop_at += std::max(1, calls_to_finish / 6)) {
+    for (const int stop_at : hmira_test::cancel_points(calls_to_finish, 6)) {
         M m = original;
         int calls = 0;
         auto r = run(m, [&](double) { return ++calls < stop_at; });

@@ -171,8 +171,13 @@ TYPED_TEST(triangle_random, random_flips_splits_and_collapses_keep_the_mesh_vali
     using M = TypeParam;
     HMIRA_REQUIRE_TRIANGLE_OPS(M)
     else {
+#ifdef HMIRA_SANITIZER_BUILD
+        const std::vector<std::uint64_t> seeds{1};  // instrumented, each run of 600 steps costs seconds
+#else
+        const std::vector<std::uint64_t> seeds{1, 2};
+#endif
         for (bool holes : {false, true}) {
-            for (std::uint64_t seed : {1u, 2u}) {
+            for (std::uint64_t seed : seeds) {
                 session<M> s(mesh_from<M>(test_surface(holes)), seed * 7919 + holes);
                 ASSERT_TRUE(valid_topology(s.mesh));
                 for (int i = 0; i < 600; ++i) {
