@@ -251,6 +251,22 @@ TEST(self_intersections, the_tetrahedron_with_a_triangle_through_it_is_reported)
     EXPECT_TRUE(found(sphere).empty());
 }
 
+TEST(self_intersections, validate_reports_them_only_when_asked) {
+    hmira::face_vertex_mesh m;
+    ASSERT_TRUE(hmira_test::add_face_list(
+        m, two({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0.5, 0.2, -1}, {0.2, 0.5, 1}}, {0, 1, 2}, {0, 3, 4})));
+    auto kind_count = [](const std::vector<hmira::mesh_problem>& ps) {
+        return std::count_if(ps.begin(), ps.end(),
+                             [](const auto& p) { return p.kind == hmira::problem_kind::self_intersection; });
+    };
+    EXPECT_EQ(kind_count(hmira::validate(m)), 0);
+    const auto ps = hmira::validate(m, {.check_self_intersections = true});
+    ASSERT_EQ(kind_count(ps), 1);
+    EXPECT_EQ(ps.back().element, 0u);
+    EXPECT_EQ(ps.back().message, "faces 0 and 1 intersect");
+    EXPECT_STREQ(hmira::to_string(hmira::problem_kind::self_intersection), "self-intersection");
+}
+
 TEST(self_intersections, refuses_coordinates_outside_the_predicates_range) {
     face_list g = two({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}}, {0, 1, 2}, {1, 3, 2});
     g.points[3].y = std::numeric_limits<double>::quiet_NaN();
