@@ -17,6 +17,7 @@
 #include "../../../core/result.hpp"
 #include "../../../predicates/intersect3d.hpp"
 #include "../../conversion/detail/parallel.hpp"
+#include "../../triangulation/detail/indexed_triangles.hpp"
 #include "../../triangulation/triangulate_faces.hpp"
 #include "../self_intersections.hpp"
 
@@ -24,60 +25,7 @@ namespace hmira::detail::self_intersect {
 
 using predicates::point3;
 
-/// One triangle of a face, by vertex index.
-struct triangle {
-    std::array<std::size_t, 3> v;
-    std::size_t face;
-};
-
-/// Every vertex position as doubles, by vertex index; an error names the first vertex with a
-/// coordinate the exact predicates cannot take.
-template <class M, class T>
-result<std::vector<point3>> read_positions(const M& mesh, const char* what) {
-    std::vector<point3> pos(T::vertex_index_bound(mesh));
-    for (auto v : T::vertices(mesh)) {
-        const std::size_t i = T::vertex_index(mesh, v);
-        const vec3<typename T::scalar> q = T::position(mesh, v);
-        const point3 p{double(q.x), double(q.y), double(q.z)};
-        for (std::size_t k = 0; k < 3; ++k)
-            if (!predicates::in_predicate_range(p[k]))
-                return fail(errc::invalid_argument,
-                            std::string(what) + ": vertex " + std::to_string(i) +
-                                " has a coordinate that is not finite or outside the exact predicates' range",
-                            (long long)i);
-        pos[i] = p;
-    }
-    return pos;
-}
-
-/// The faces as triangles: a triangle as itself, a polygon as face_triangles cuts it, or fanned
-/// from its first corner when it has no simple projection.
-template <class M, class T>
-std::vector<triangle> mesh_triangles(const M& mesh) {
-    std::vector<triangle> out;
-    out.reserve(T::face_count(mesh));
-    std::vector<std::size_t> loop;
-    for (auto f : T::faces(mesh)) {
-        const std::size_t fi = T::face_index(mesh, f);
-        loop.clear();
-        for (auto v : T::face_vertices(mesh, f)) loop.push_back(T::vertex_index(mesh, v));
-        if (loop.size() < 3) continue;
-        bool rings = false;
-        if constexpr (inner_ring_mesh<M, T>) rings = !std::ranges::empty(T::inner_rings(mesh, f));
-        if (loop.size() == 3 && !rings) {
-            out.push_back({{loop[0], loop[1], loop[2]}, fi});
-            continue;
-        }
-        if (auto tris = face_triangles<M, T>(mesh, f)) {
-            for (const auto& t : *tris)
-                out.push_back(
-                    {{T::vertex_index(mesh, t[0]), T::vertex_index(mesh, t[1]), T::vertex_index(mesh, t[2])}, fi});
-            continue;
-        }
-        for (std::size_t i = 1; i + 1 < loop.size(); ++i) out.push_back({{loop[0], loop[i], loop[i + 1]}, fi});
-    }
-    return out;
-}
+using triangle = detail::triangulation::indexed_triangle;
 
 /// The closed axis-aligned box of a triangle (exact: the corners are doubles).
 struct box {
@@ -198,9 +146,9 @@ template <class M, class T>
     requires self_intersection_mesh<M, T>
 result<std::vector<face_pair>> self_intersections(const M& mesh, const self_intersections_options& options) {
     namespace si = detail::self_intersect;
-    auto pos = si::read_positions<M, T>(mesh, "self_intersections");
+    auto pos = detail::triangulation::predicate_positions<M, T>(mesh, "self_intersections");
     if (!pos) return pos.error();
-    const std::vector<si::triangle> tris = si::mesh_triangles<M, T>(mesh);
+    const std::vector<si::triangle> tris = detail::triangulation::indexed_triangles<M, T>(mesh);
     const si::sweep sweep(tris, *pos);
     const std::size_t blocks = (tris.size() + si::block_size - 1) / si::block_size;
     std::vector<std::vector<face_pair>> found(blocks);
