@@ -23,11 +23,10 @@ int run_validate(const validate_args& a, const common_options& o) {
     int code = ok;
     auto loaded = load(a.input, o, code);
     if (!loaded) return code;
-    const auto problems =
-        hmira::validate(loaded->mesh, {.relaxed = a.relaxed,
-                                       .check_geometry = !a.no_geometry,
-                                       .max_problems = 0,
-                                       .check_self_intersections = a.self_intersections});
+    const auto problems = hmira::validate(loaded->mesh, {.relaxed = a.relaxed,
+                                                         .check_geometry = !a.no_geometry,
+                                                         .max_problems = 0,
+                                                         .check_self_intersections = a.self_intersections});
     if (problems.empty()) {
         say(o, a.input + ": valid (" + std::to_string(loaded->mesh.vertex_count()) + " vertices, " +
                    std::to_string(loaded->mesh.face_count()) + " faces)");

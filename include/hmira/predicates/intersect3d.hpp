@@ -57,8 +57,7 @@ inline bool segments_meet_2d(int k, const point3& p, const point3& q, const poin
 inline bool point_in_triangle_2d(int k, const point3& p, const point3& a, const point3& b, const point3& c) noexcept {
     const int o = orient2d_drop(k, a, b, c);
     if (o == 0)
-        return segments_meet_2d(k, p, p, a, b) || segments_meet_2d(k, p, p, b, c) ||
-               segments_meet_2d(k, p, p, c, a);
+        return segments_meet_2d(k, p, p, a, b) || segments_meet_2d(k, p, p, b, c) || segments_meet_2d(k, p, p, c, a);
     return orient2d_drop(k, a, b, p) * o >= 0 && orient2d_drop(k, b, c, p) * o >= 0 &&
            orient2d_drop(k, c, a, p) * o >= 0;
 }

@@ -36,8 +36,8 @@ double solid_angle_winding(const M& m, const vec3<double>& q) {
             const double la = std::sqrt(a.x * a.x + a.y * a.y + a.z * a.z);
             const double lb = std::sqrt(b.x * b.x + b.y * b.y + b.z * b.z);
             const double lc = std::sqrt(c.x * c.x + c.y * c.y + c.z * c.z);
-            const double det = a.x * (b.y * c.z - b.z * c.y) - a.y * (b.x * c.z - b.z * c.x) +
-                               a.z * (b.x * c.y - b.y * c.x);
+            const double det =
+                a.x * (b.y * c.z - b.z * c.y) - a.y * (b.x * c.z - b.z * c.x) + a.z * (b.x * c.y - b.y * c.x);
             const double dot = la * lb * lc + (a.x * b.x + a.y * b.y + a.z * b.z) * lc +
                                (b.x * c.x + b.y * c.y + b.z * c.z) * la + (c.x * a.x + c.y * a.y + c.z * a.z) * lb;
             sum += 2 * std::atan2(det, dot);

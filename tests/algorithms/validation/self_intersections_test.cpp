@@ -213,27 +213,36 @@ TEST(self_intersections, faces_sharing_a_vertex_are_reported_only_when_they_meet
                   two({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0.5, 0.2, -1}, {0.2, 0.5, 1}}, {0, 1, 2}, {0, 3, 4})),
               first_pair);
     // Overlapping in one plane: reported.
-    EXPECT_EQ(
-        on_face_vertex_mesh(two({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}, {-1, 2, 0}}, {0, 1, 2}, {0, 3, 4})),
-        first_pair);
+    EXPECT_EQ(on_face_vertex_mesh(two({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}, {-1, 2, 0}}, {0, 1, 2}, {0, 3, 4})),
+              first_pair);
 }
 
 TEST(self_intersections, touching_without_sharing_is_reported) {
     // A corner of one triangle on the face of the other, vertices not shared.
-    EXPECT_EQ(on_face_vertex_mesh(two({{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {0.5, 0.5, 0}, {1, 1, 1}, {0, 1, 1}},
-                                      {0, 1, 2}, {3, 4, 5})),
+    EXPECT_EQ(on_face_vertex_mesh(
+                  two({{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {0.5, 0.5, 0}, {1, 1, 1}, {0, 1, 1}}, {0, 1, 2}, {3, 4, 5})),
               first_pair);
     // The same corner an ulp above the face: apart.
-    EXPECT_EQ(on_face_vertex_mesh(two({{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {0.5, 0.5, 0x1p-1074 * 0x1p900}, {1, 1, 1},
-                                       {0, 1, 1}},
-                                      {0, 1, 2}, {3, 4, 5})),
+    EXPECT_EQ(on_face_vertex_mesh(
+                  two({{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {0.5, 0.5, 0x1p-1074 * 0x1p900}, {1, 1, 1}, {0, 1, 1}},
+                      {0, 1, 2}, {3, 4, 5})),
               none);
 }
 
 TEST(self_intersections, polygon_faces_are_reported_by_face_index) {
     // Two unit squares crossing at right angles, and a third far away.
-    face_list g{{{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {0, 2, 0}, {1, 1, -1}, {1, 1, 1}, {1, 3, 1}, {1, 3, -1},
-                 {5, 5, 5}, {6, 5, 5}, {6, 6, 5}, {5, 6, 5}},
+    face_list g{{{0, 0, 0},
+                 {2, 0, 0},
+                 {2, 2, 0},
+                 {0, 2, 0},
+                 {1, 1, -1},
+                 {1, 1, 1},
+                 {1, 3, 1},
+                 {1, 3, -1},
+                 {5, 5, 5},
+                 {6, 5, 5},
+                 {6, 6, 5},
+                 {5, 6, 5}},
                 {{8, 9, 10, 11}, {0, 1, 2, 3}, {4, 5, 6, 7}}};
     EXPECT_EQ(on_face_vertex_mesh(g), (std::vector<face_pair>{{1, 2}}));
 }

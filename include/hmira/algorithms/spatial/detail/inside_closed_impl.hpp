@@ -49,7 +49,7 @@ inline crossing cross(const point3& a, const point3& b, const point3& c, const p
     // Not on the face: the moved point q' leaves a box it touches only at its upper y or z end.
     if (q.y == yhi || q.z == zhi || q.x == xmax) return {};
     const int s = predicates::orient2d(a.y, a.z, b.y, b.z, c.y, c.z);  // sign of the normal's x
-    if (s == 0) return {};                                              // parallel to the ray
+    if (s == 0) return {};                                             // parallel to the ray
     if (perturbed_side(a, b, q) != s || perturbed_side(b, c, q) != s || perturbed_side(c, a, q) != s) return {};
     // q' projects inside; the face is ahead along +x when q is on its back side. q is off the
     // face's plane here: on it, projecting inside the closed triangle, it would lie on the face.
@@ -110,7 +110,7 @@ result<std::vector<point_location>> inside_closed(const M& mesh, std::span<const
                 const std::size_t end = std::min(points.size(), (b + 1) * di::block_size);
                 for (std::size_t i = b * di::block_size; i < end; ++i) {
                     const di::winding w = di::wind(tris, *pos, points[i]);
-                    out[i] = w.on_surface   ? point_location::on_surface
+                    out[i] = w.on_surface    ? point_location::on_surface
                              : w.number != 0 ? point_location::inside
                                              : point_location::outside;
                 }
