@@ -16,14 +16,17 @@ struct validate_args {
     std::size_t max = 20;
     bool relaxed = hmira::validate_options{}.relaxed;
     bool no_geometry = !hmira::validate_options{}.check_geometry;
+    bool self_intersections = hmira::validate_options{}.check_self_intersections;
 };
 
 int run_validate(const validate_args& a, const common_options& o) {
     int code = ok;
     auto loaded = load(a.input, o, code);
     if (!loaded) return code;
-    const auto problems =
-        hmira::validate(loaded->mesh, {.relaxed = a.relaxed, .check_geometry = !a.no_geometry, .max_problems = 0});
+    const auto problems = hmira::validate(loaded->mesh, {.relaxed = a.relaxed,
+                                                         .check_geometry = !a.no_geometry,
+                                                         .max_problems = 0,
+                                                         .check_self_intersections = a.self_intersections});
     if (problems.empty()) {
         say(o, a.input + ": valid (" + std::to_string(loaded->mesh.vertex_count()) + " vertices, " +
                    std::to_string(loaded->mesh.face_count()) + " faces)");
@@ -50,6 +53,8 @@ const bool registered =
                           sub.add_flag("--relaxed", a->relaxed,
                                        "accept isolated vertices and the other states legal during Euler construction");
                           sub.add_flag("--no-geometry", a->no_geometry, "skip the zero-area face check");
+                          sub.add_flag("--self-intersections", a->self_intersections,
+                                       "also list pairs of faces that intersect (exact; slower)");
                           return [a](const common_options& o) { return run_validate(*a, o); };
                       }});
 

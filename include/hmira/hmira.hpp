@@ -14,3 +14,5 @@
 #include "algorithms/topology/connected_components.hpp"
 #include "algorithms/topology/mesh_topology.hpp"
 #include "algorithms/validation/validate.hpp"
+#include "algorithms/validation/self_intersections.hpp"
+#include "algorithms/spatial/inside_closed.hpp"

@@ -311,3 +311,15 @@ class MeshCore:
         """
         killEF: removes the edge, merging its two faces; returns (face, h0, h1) for make_edge_face.
         """
+
+    def self_intersections(self) -> NDArray[numpy.int64]:
+        """
+        The pairs of faces that intersect other than along a shared edge or vertex (touching, crossing, folded or overlapping in one plane), decided exactly: a (k, 2) int64 array of face indices, each row (f, g) with f < g, rows sorted. Polygon faces are tested by their triangles.
+
+        Examples
+        --------
+        >>> import numpy as np, hmira
+        >>> v = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [.2, .2, -1], [.3, .2, 1], [.2, .3, 1]], float)
+        >>> hmira.Mesh(v, [[0, 1, 2], [3, 4, 5]]).self_intersections().tolist()
+        [[0, 1]]
+        """

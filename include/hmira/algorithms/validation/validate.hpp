@@ -25,6 +25,10 @@ struct validate_options {
     bool check_geometry = true;
     /// Stop after this many problems (0: no limit), so a badly broken mesh reports quickly.
     std::size_t max_problems = 1000;
+    /// Also report pairs of faces that intersect other than along what they share, decided
+    /// exactly (self_intersections.hpp; needs positions). Off by default: it costs a box sweep
+    /// over all faces, O(T log T + K), where the other checks are linear.
+    bool check_self_intersections = false;
 };
 
 enum class problem_kind {
@@ -38,6 +42,7 @@ enum class problem_kind {
     wire_edge,                 ///< an edge with no face on either side (legal in relaxed mode)
     broken_link,               ///< halfedge invariants violated (next/prev/opposite/target/face)
     non_finite_position,       ///< a vertex coordinate is NaN or infinite
+    self_intersection,         ///< two faces meet other than along what they share (element: the first face)
 };
 
 /// One problem: its kind, the index of the element concerned (vertex, face or halfedge index
@@ -61,12 +66,14 @@ concept validate_mesh = face_vertex_range_mesh<M, T> && vertex_index_mesh<M, T> 
 /// orientation), vertices whose faces form several fans, isolated vertices (strict mode).
 /// Halfedge models also: every next/prev/opposite/target/face link, loops of faces and inner
 /// rings, vertex fans, boundary halfedges stored at boundary vertices, wire edges (strict).
+/// With check_self_intersections, on models with positions and sound face loops, last: each
+/// pair of faces self_intersections() reports, as one problem naming both faces.
 ///
 /// \pre none: any state of the mesh, however broken, is reported rather than followed.
 /// \post the mesh is unchanged; at most options.max_problems problems (0: all), in the order
 ///       of the checks above.
 /// Complexity: O(V + C log C) for V vertices and C face corners, plus O(H_all) for halfedge
-/// models.
+/// models, plus that of self_intersections when asked for.
 template <class M, class T = default_traits<M>>
     requires validate_mesh<M, T>
 std::vector<mesh_problem> validate(const M& mesh, const validate_options& options = {});
@@ -84,6 +91,7 @@ inline const char* to_string(problem_kind k) {
         case problem_kind::wire_edge: return "wire edge";
         case problem_kind::broken_link: return "broken link";
         case problem_kind::non_finite_position: return "non-finite position";
+        case problem_kind::self_intersection: return "self-intersection";
     }
     return "unknown";
 }

@@ -14,6 +14,7 @@
 
 #include "../../../concepts.hpp"
 #include "../../topology/connected_components.hpp"  // union_find
+#include "../self_intersections.hpp"
 #include "../../topology/edge_census.hpp"
 
 namespace hmira::detail {
@@ -437,6 +438,15 @@ std::vector<mesh_problem> validate(const M& mesh, const validate_options& option
             if (!corners.used[vi])
                 sink.add(problem_kind::isolated_vertex, vi, "vertex " + std::to_string(vi) + " is used by no face");
         }
+    }
+    if constexpr (self_intersection_mesh<M, T>) {
+        // Positions outside the exact predicates' range (non-finite ones reported above) leave
+        // the check undone rather than guessed.
+        if (options.check_self_intersections && !sink.full())
+            if (auto pairs = self_intersections<M, T>(mesh))
+                for (const auto& p : *pairs)
+                    sink.add(problem_kind::self_intersection, p[0],
+                             "faces " + std::to_string(p[0]) + " and " + std::to_string(p[1]) + " intersect");
     }
     return out;
 }
