@@ -39,7 +39,7 @@ def main() -> None:
     m = hmira.read_mesh(a.mesh)
     m.subdivide(scheme="loop", levels=a.levels)
     v = np.array(m.vertices, dtype=np.float64)
-    f = np.array(m.faces(), dtype=np.int64)
+    f = np.array(m.faces, dtype=np.int64)
     print(f"mesh: {Path(a.mesh).name} Loop x{a.levels}: {len(v)} vertices, {len(f)} triangles; "
           f"{a.queries} queries, {os.cpu_count()} cores")
 

@@ -77,15 +77,20 @@ inline bool collinear(const vec3<double>& a, const vec3<double>& b, const vec3<d
            orient2d(a.z, a.x, b.z, b.x, c.z, c.x) == 0;
 }
 
-/// The binned-SAH build over order[begin, end) of triangles with boxes `boxes` and centroids
-/// `centres`, written in preorder: an inner node's left child follows it, its `index` is the
-/// right child. The two halves of a split are disjoint ranges of `order`, so big subtrees build
-/// in parallel into their own vectors, appended in the same order afterwards: the tree does not
-/// depend on the schedule.
+/// A triangle while the tree is built: its box, the box's centre and its index. The build
+/// partitions these records themselves, so every pass over a node's range reads memory in order.
+struct prim {
+    box b;
+    vec3<double> c;
+    std::uint32_t id = 0;
+};
+
+/// The binned-SAH build over prims[begin, end), written in preorder: an inner node's left child
+/// follows it, its `index` is the right child. The two halves of a split are disjoint ranges of
+/// `prims`, so big subtrees build in parallel into their own vectors, appended in the same order
+/// afterwards: the tree does not depend on the schedule.
 struct builder {
-    const std::vector<box>& boxes;
-    const std::vector<vec3<double>>& centres;
-    std::vector<std::uint32_t>& order;
+    std::vector<prim>& prims;
     std::uint32_t max_leaf;
 
     /// Depth of the subtree built.
@@ -93,7 +98,7 @@ struct builder {
         const std::size_t at = out.size();
         out.push_back({});
         box b, cb;
-        for (std::uint32_t i = begin; i < end; ++i) b.grow(boxes[order[i]]), cb.grow(centres[order[i]]);
+        for (std::uint32_t i = begin; i < end; ++i) b.grow(prims[i].b), cb.grow(prims[i].c);
         store(out[at], b);
         const std::uint32_t mid = split(begin, end, b, cb, depth);
         if (mid == begin) {
@@ -129,39 +134,45 @@ struct builder {
         return std::min(bins - 1, static_cast<int>((c - lo) * scale));
     }
 
-    /// Partitions order[begin, end) and returns where the right child starts, or begin for a
+    /// Partitions prims[begin, end) and returns where the right child starts, or begin for a
     /// leaf. Cost model: a box test costs as much as a triangle test.
     std::uint32_t split(std::uint32_t begin, std::uint32_t end, const box& b, const box& cb, std::size_t depth) const {
         const std::uint32_t n = end - begin;
         if (n <= 1) return begin;
         if (depth >= sah_depth) return n <= max_leaf ? begin : median(begin, end, cb);
+        std::array<double, 3> scale{};
+        for (std::size_t axis = 0; axis < 3; ++axis) {
+            const double extent = cb.hi[axis] - cb.lo[axis];
+            scale[axis] = extent > 0 ? bins / extent : 0;
+        }
+        // One pass bins the triangles along all three axes.
+        std::array<std::array<box, bins>, 3> bb;
+        std::array<std::array<std::uint32_t, bins>, 3> count{};
+        for (std::uint32_t i = begin; i < end; ++i)
+            for (std::size_t axis = 0; axis < 3; ++axis) {
+                if (scale[axis] == 0) continue;
+                const auto k = std::size_t(bin_of(prims[i].c[axis], cb.lo[axis], scale[axis]));
+                bb[axis][k].grow(prims[i].b);
+                ++count[axis][k];
+            }
         double best = inf;
         int best_axis = -1, best_bin = 0;
         for (std::size_t axis = 0; axis < 3; ++axis) {
-            const double extent = cb.hi[axis] - cb.lo[axis];
-            if (!(extent > 0)) continue;
-            const double scale = bins / extent;
-            std::array<box, bins> bb;
-            std::array<std::uint32_t, bins> count{};
-            for (std::uint32_t i = begin; i < end; ++i) {
-                const int k = bin_of(centres[order[i]][axis], cb.lo[axis], scale);
-                bb[std::size_t(k)].grow(boxes[order[i]]);
-                ++count[std::size_t(k)];
-            }
-            // right[k]: cost of the bins k.. on the right side.
+            if (scale[axis] == 0) continue;
+            // right_cost[k]: the cost of the bins k.. on the right side.
             std::array<double, bins> right_cost{};
             box r;
             std::uint32_t nr = 0;
             for (int k = bins - 1; k > 0; --k) {
-                r.grow(bb[std::size_t(k)]);
-                nr += count[std::size_t(k)];
+                r.grow(bb[axis][std::size_t(k)]);
+                nr += count[axis][std::size_t(k)];
                 right_cost[std::size_t(k)] = nr ? nr * r.half_area() : 0;
             }
             box l;
             std::uint32_t nl = 0;
             for (int k = 0; k + 1 < bins; ++k) {
-                l.grow(bb[std::size_t(k)]);
-                nl += count[std::size_t(k)];
+                l.grow(bb[axis][std::size_t(k)]);
+                nl += count[axis][std::size_t(k)];
                 if (nl == 0 || nl == n) continue;
                 const double cost = nl * l.half_area() + right_cost[std::size_t(k) + 1];
                 if (cost < best) best = cost, best_axis = int(axis), best_bin = k;
@@ -171,11 +182,10 @@ struct builder {
         const double area = b.half_area();
         if (n <= max_leaf && n * area <= area + best) return begin;
         const auto axis = std::size_t(best_axis);
-        const double scale = bins / (cb.hi[axis] - cb.lo[axis]);
-        const auto it = std::partition(order.begin() + begin, order.begin() + end, [&](std::uint32_t t) {
-            return bin_of(centres[t][axis], cb.lo[axis], scale) <= best_bin;
+        const auto it = std::partition(prims.begin() + begin, prims.begin() + end, [&](const prim& t) {
+            return bin_of(t.c[axis], cb.lo[axis], scale[axis]) <= best_bin;
         });
-        return static_cast<std::uint32_t>(it - order.begin());
+        return static_cast<std::uint32_t>(it - prims.begin());
     }
 
     /// The median along the centroids' longest axis, ties broken by index.
@@ -184,10 +194,9 @@ struct builder {
         for (std::size_t k = 1; k < 3; ++k)
             if (cb.hi[k] - cb.lo[k] > cb.hi[axis] - cb.lo[axis]) axis = k;
         const std::uint32_t mid = begin + (end - begin) / 2;
-        std::nth_element(order.begin() + begin, order.begin() + mid, order.begin() + end,
-                         [&](std::uint32_t a, std::uint32_t b) {
-                             return centres[a][axis] < centres[b][axis] ||
-                                    (centres[a][axis] == centres[b][axis] && a < b);
+        std::nth_element(prims.begin() + begin, prims.begin() + mid, prims.begin() + end,
+                         [&](const prim& a, const prim& b) {
+                             return a.c[axis] < b.c[axis] || (a.c[axis] == b.c[axis] && a.id < b.id);
                          });
         return mid;
     }

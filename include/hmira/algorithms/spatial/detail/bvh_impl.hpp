@@ -57,19 +57,16 @@ struct bvh_access {
         t.point_count_ = points.size();
         const std::size_t n = triangles.size();
         if (n == 0) return t;
-        std::vector<bb::box> boxes(n);
-        std::vector<vec3<double>> centres(n);
-        std::vector<std::uint32_t> order(n);
+        std::vector<bb::prim> prims(n);
         detail::with_thread_count(options.threads, [&] {
             detail::parallel_chunks(n, 4096, [&](std::size_t lo, std::size_t hi) {
                 for (std::size_t i = lo; i < hi; ++i) {
-                    const auto& tri = triangles[i];
-                    for (auto v : tri) boxes[i].grow(points[v]);
-                    centres[i] = (boxes[i].lo + boxes[i].hi) * 0.5;
-                    order[i] = static_cast<std::uint32_t>(i);
+                    for (auto v : triangles[i]) prims[i].b.grow(points[v]);
+                    prims[i].c = (prims[i].b.lo + prims[i].b.hi) * 0.5;
+                    prims[i].id = static_cast<std::uint32_t>(i);
                 }
             });
-            const bb::builder b{boxes, centres, order, options.max_leaf_size};
+            const bb::builder b{prims, options.max_leaf_size};
             t.nodes_.reserve(2 * n);
             t.depth_ = b.build(t.nodes_, 0, static_cast<std::uint32_t>(n), 0);
             t.corners_.resize(n);
@@ -78,7 +75,7 @@ struct bvh_access {
             t.degenerate_.resize(n);
             detail::parallel_chunks(n, 4096, [&](std::size_t lo, std::size_t hi) {
                 for (std::size_t i = lo; i < hi; ++i) {
-                    const std::uint32_t k = order[i];
+                    const std::uint32_t k = prims[i].id;
                     t.vertices_[i] = triangles[k];
                     t.faces_[i] = faces.empty() ? k : faces[k];
                 }
