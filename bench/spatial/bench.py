@@ -85,10 +85,11 @@ def main() -> None:
                  ("any-hit rays (occlusion)", t_any, "Open3D", o_any)]
         # Agreement (Open3D works in float32: differences of float rounding are expected).
         scale = float(np.linalg.norm(hi - lo))
+        both = np.isfinite(ot) & np.isfinite(rt)
         print(f"agreement with Open3D: max |distance difference| / diagonal = {np.max(np.abs(od - cd)) / scale:.2e}; "
               f"hit/miss differ on {np.sum(np.isfinite(ot) != np.isfinite(rt))} of {a.queries} rays; "
               f"max |t difference| / diagonal on common hits = "
-              f"{np.max(np.abs(ot - rt)[np.isfinite(ot) & np.isfinite(rt)]) / scale:.2e}; "
+              f"{np.max(np.abs(ot[both] - rt[both])) / scale:.2e}; "
               f"occlusion differs on {np.sum(oocc.numpy().astype(bool) != hit_any)}")
     except ImportError as e:
         print(f"Open3D not available: {e}")
@@ -108,7 +109,7 @@ def main() -> None:
 
     print(f"\n{'query':44s} {'hmira s':>9s} {'peer':>8s} {'peer s':>9s} {'ratio':>7s}")
     for name, h, peer, p in rows:
-        print(f"{name:44s} {h:9.3f} {peer:>8s} {p:9.3f} {h / p:7.2f}x")
+        print(f"{name:44s} {h:9.3f} {peer:>8s} {p:9.3f} {h / p:7.3g}x")
 
 
 if __name__ == "__main__":
