@@ -22,9 +22,10 @@ from typing import Any, Optional, Sequence, Tuple
 import numpy as np
 
 from . import _core
-from ._core import Topology, delaunay_triangulation, marching_cubes
+from ._core import BVH, Topology, delaunay_triangulation, marching_cubes
 
 __all__ = [
+    "BVH",
     "Mesh",
     "Topology",
     "VertexView",

@@ -322,4 +322,134 @@ class MeshCore:
         >>> v = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [.2, .2, -1], [.3, .2, 1], [.2, .3, 1]], float)
         >>> hmira.Mesh(v, [[0, 1, 2], [3, 4, 5]]).self_intersections().tolist()
         [[0, 1]]
+    def closest_point(self, points: Annotated[NDArray, dict(shape=(None, None), device='cpu', writable=False)], *, max_distance: float = float('inf'), threads: int = 0, nan: str = 'raise') -> tuple:
+        The closest surface point to each query point.
+
+        Parameters
+        ----------
+        points : ndarray, shape (n, 3), float64 or float32
+        max_distance : float
+            Look no farther; a point with nothing that close gets face -1 and distance inf.
+        threads : int
+            Worker threads (0: all). The answers do not depend on it.
+        nan : {'raise', 'propagate'}
+            A query with a NaN or infinite coordinate raises ValueError naming its index, or gets NaN
+            point and distance and face -1.
+
+        Returns
+        -------
+        points : ndarray (n, 3) float64
+        faces : ndarray (n,) int64
+            The face each point lies on (-1 if none).
+        barycentrics : ndarray (n, 3) float64
+            Weights on the corners of the triangle of that face's triangulation the point lies on.
+        distances : ndarray (n,) float64
+
+        Builds a BVH on every call: keep an hmira.BVH to query the same mesh again.
+
+        >>> import hmira, numpy as np
+        >>> m = hmira.Mesh([[0, 0, 0], [1, 0, 0], [0, 1, 0]], [[0, 1, 2]])
+        >>> points, faces, bary, dist = m.closest_point(np.array([[0.2, 0.2, 1.0]]))
+        >>> faces.tolist(), dist.tolist()
+        ([0], [1.0])
+
+    def ray_intersect(self, origins: Annotated[NDArray, dict(shape=(None, None), device='cpu', writable=False)], directions: Annotated[NDArray, dict(shape=(None, None), device='cpu', writable=False)], *, mode: str = 'first', threads: int = 0, nan: str = 'raise') -> object:
+        Intersects rays origin + t * direction (t >= 0) with the surface.
+
+        Parameters
+        ----------
+        origins, directions : ndarray, shape (n, 3), float64 or float32
+        mode : {'first', 'any'}
+            'first': the nearest hit of each ray; 'any': whether it hits at all (occlusion, faster).
+        threads : int
+            Worker threads (0: all).
+        nan : {'raise', 'propagate'}
+            A ray with a non-finite coordinate raises ValueError naming its index, or gets a NaN t.
+
+        Returns
+        -------
+        mode 'first': (t, faces, barycentrics, points): t (n,) (inf for a miss), faces (n,) int64
+        (-1 for a miss), barycentrics (n, 3), points (n, 3). mode 'any': a bool array (n,).
+        Degenerate (zero-area) triangles are never hit.
+
+        Builds a BVH on every call: keep an hmira.BVH to query the same mesh again.
+
+        >>> import hmira, numpy as np
+        >>> m = hmira.Mesh([[0, 0, 0], [1, 0, 0], [0, 1, 0]], [[0, 1, 2]])
+        >>> t, faces, bary, points = m.ray_intersect(np.array([[0.2, 0.2, 1.0]]), np.array([[0.0, 0.0, -1.0]]))
+        >>> t.tolist(), faces.tolist()
+        ([1.0], [0])
+
+class BVH:
+    """
+    A bounding-volume hierarchy over a Mesh's faces (polygons triangulated in their plane), for
+    repeated batched closest-point and ray queries.
+
+    The tree copies the triangles; a query after the mesh's connectivity changed raises
+    ValueError. Positions moved in place (through Mesh.vertices) are not detected: call refit().
+
+    Parameters
+    ----------
+    mesh : Mesh
+        A mesh with at least one face.
+
+    Examples
+    --------
+    >>> import hmira, numpy as np
+    >>> m = hmira.Mesh([[0, 0, 0], [1, 0, 0], [0, 1, 0]], [[0, 1, 2]])
+    >>> bvh = hmira.BVH(m)
+    >>> bvh.closest_point(np.array([[0.2, 0.2, 1.0]]))[3].tolist()
+    [1.0]
+    """
+
+    def __init__(self, mesh: object) -> None: ...
+
+    @property
+    def triangle_count(self) -> int:
+        """Number of triangles in the tree."""
+
+    def refit(self) -> None:
+        Recomputes the boxes from the mesh's current positions (after moving vertices), keeping the tree.
+
+    def closest_point(self, points: Annotated[NDArray, dict(shape=(None, None), device='cpu', writable=False)], *, max_distance: float = float('inf'), threads: int = 0, nan: str = 'raise') -> tuple:
+        The closest surface point to each query point.
+
+        Parameters
+        ----------
+        points : ndarray, shape (n, 3), float64 or float32
+        max_distance : float
+            Look no farther; a point with nothing that close gets face -1 and distance inf.
+        threads : int
+            Worker threads (0: all). The answers do not depend on it.
+        nan : {'raise', 'propagate'}
+            A query with a NaN or infinite coordinate raises ValueError naming its index, or gets NaN
+            point and distance and face -1.
+
+        Returns
+        -------
+        points : ndarray (n, 3) float64
+        faces : ndarray (n,) int64
+            The face each point lies on (-1 if none).
+        barycentrics : ndarray (n, 3) float64
+            Weights on the corners of the triangle of that face's triangulation the point lies on.
+        distances : ndarray (n,) float64
+
+    def ray_intersect(self, origins: Annotated[NDArray, dict(shape=(None, None), device='cpu', writable=False)], directions: Annotated[NDArray, dict(shape=(None, None), device='cpu', writable=False)], *, mode: str = 'first', threads: int = 0, nan: str = 'raise') -> object:
+        Intersects rays origin + t * direction (t >= 0) with the surface.
+
+        Parameters
+        ----------
+        origins, directions : ndarray, shape (n, 3), float64 or float32
+        mode : {'first', 'any'}
+            'first': the nearest hit of each ray; 'any': whether it hits at all (occlusion, faster).
+        threads : int
+            Worker threads (0: all).
+        nan : {'raise', 'propagate'}
+            A ray with a non-finite coordinate raises ValueError naming its index, or gets a NaN t.
+
+        Returns
+        -------
+        mode 'first': (t, faces, barycentrics, points): t (n,) (inf for a miss), faces (n,) int64
+        (-1 for a miss), barycentrics (n, 3), points (n, 3). mode 'any': a bool array (n,).
+        Degenerate (zero-area) triangles are never hit.
         """

@@ -148,6 +148,7 @@ void bind_conversion(nb::module_& m);  // marching_cubes, voxelize (conversion.c
 void bind_delaunay(nb::module_& m);    // delaunay_triangulation (delaunay.cpp)
 void bind_io(nb::module_& m);          // write_polygons (io.cpp)
 void bind_mesh(nb::module_& m);        // Topology and MeshCore (mesh.cpp and the Mesh families)
+void bind_spatial(nb::module_& m);     // BVH (spatial.cpp)
 void bind_viewer(nb::module_& m);      // viewer.cpp
 void bind_blocks(nb::module_& m);      // marching cubes by blocks for hmira.dask (blocks.cpp)
 

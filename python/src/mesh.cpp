@@ -249,6 +249,7 @@ void bind_mesh(nb::module_& m) {
     bind_mesh_editing(core);
     bind_mesh_euler(core);
     bind_mesh_intersections(core);
+    bind_mesh_spatial(core);
 }
 
 }  // namespace hmira_py

@@ -28,6 +28,7 @@ NB_MODULE(_core, m) {
     hmira_py::bind_delaunay(m);
     hmira_py::bind_io(m);
     hmira_py::bind_mesh(m);
+    hmira_py::bind_spatial(m);
     hmira_py::bind_viewer(m);
     hmira_py::bind_blocks(m);
 }

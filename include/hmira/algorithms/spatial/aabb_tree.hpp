@@ -17,6 +17,7 @@
 #include "../../concepts.hpp"
 #include "../../core/result.hpp"
 #include "../../core/vec3.hpp"
+#include "ray.hpp"
 
 namespace hmira {
 
@@ -32,14 +33,6 @@ struct ray_hit {
     double t = 0;          ///< the ray parameter: point = origin + t * direction
     vec3<double> point{};  ///< where the ray hits
     std::size_t face = 0;  ///< the id of the triangle hit (see aabb_tree)
-};
-
-/// A ray: origin + t * direction, for t in [t_min, t_max].
-struct ray {
-    vec3<double> origin{};                                   ///< where the ray starts
-    vec3<double> direction{};                                ///< not necessarily unit length; must be non-zero
-    double t_min = 0;                                        ///< the smallest parameter that counts as a hit
-    double t_max = std::numeric_limits<double>::infinity();  ///< the largest one
 };
 
 namespace detail::spatial {

@@ -8,6 +8,7 @@
 
 #if defined(HMIRA_HAS_TBB)
 #include <tbb/blocked_range.h>
+#include <tbb/parallel_invoke.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 #endif
@@ -25,6 +26,17 @@ void parallel_chunks(std::size_t n, std::size_t grain, const Body& body) {
                       [&](const tbb::blocked_range<std::size_t>& r) { body(r.begin(), r.end()); });
 #else
     body(std::size_t(0), n);
+#endif
+}
+
+/// Runs f() and g(), in parallel when TBB is available (serially, f first, without it).
+template <class F, class G>
+void parallel_invoke(const F& f, const G& g) {
+#if defined(HMIRA_HAS_TBB)
+    tbb::parallel_invoke(f, g);
+#else
+    f();
+    g();
 #endif
 }
 
