@@ -54,59 +54,81 @@ inline double cotangent(const vec3<double>& a, const vec3<double>& b, const vec3
 /// weights computed once (neighbourhoods::weight).
 enum class weighting { uniform, cotangent, frozen };
 
-/// Every free vertex's neighbourhood in compressed rows over dense vertex indices, gathered
-/// once per call: row r is the r-th free vertex in the mesh's vertex order, its entries the
-/// neighbours in the order the halfedges around it circulate (the order the sums run in, so
-/// the result does not depend on how the rows are stored). `Index` holds a vertex index.
+/// Every vertex's neighbourhood in compressed rows over dense vertex indices, gathered once per
+/// call: row r is the r-th vertex in the mesh's vertex order, its entries the neighbours in the
+/// order the halfedges around it circulate (the order the sums run in, so the result does not
+/// depend on how the rows are stored). A vertex that does not move (fixed, or without edges)
+/// has an empty row. `Index` holds a vertex index.
 template <class Index>
 struct neighbourhoods {
     static constexpr Index none = Index(-1);
-    std::vector<Index> vertex;         ///< row r's vertex index
-    std::vector<std::size_t> ordinal;  ///< row r's place in the mesh's vertex order (for the progress calls)
-    std::vector<std::size_t> first;    ///< row r's entries are [first[r], first[r + 1])
-    std::vector<Index> neighbour;      ///< an entry's neighbour
+    std::vector<Index> vertex;       ///< row r's vertex index
+    std::vector<std::size_t> first;  ///< row r's entries are [first[r], first[r + 1])
+    std::vector<Index> neighbour;    ///< an entry's neighbour
     /// Cotangent weights only: an entry's third corner in the face left of the edge from the
     /// vertex to the neighbour, and in the face right of it (none at a boundary).
     std::vector<Index> left, right;
     std::vector<double> weight;  ///< weighting::frozen only: an entry's weight
 
     std::size_t rows() const noexcept { return vertex.size(); }
+    bool moves(std::size_t r) const noexcept { return first[r] != first[r + 1]; }
 };
 
-/// The free vertices' neighbourhoods (`fixed` by vertex index; a vertex without edges has no
-/// row: it stays), with the third corners when `corners` is set. O(V + E).
+/// Rows one gathering task takes.
+inline constexpr std::size_t rows_per_task = 8192;
+
+/// The neighbourhoods (`fixed` by vertex index), with the third corners when `corners` is set:
+/// the vertex order is listed first, then two parallel walks around the vertices, one to
+/// count each row's entries and one to write them where the counts put them. O(V + E).
 template <class Index, class M, class T>
 neighbourhoods<Index> gather(const M& m, const std::vector<char>& fixed, bool corners) {
+    using H = typename T::halfedge_handle;
     neighbourhoods<Index> n;
-    const std::size_t vertices = T::vertex_count(m);
-    n.vertex.reserve(vertices);
-    n.ordinal.reserve(vertices);
-    n.first.reserve(vertices + 1);
-    n.first.push_back(0);
-    n.neighbour.reserve(6 * vertices);
-    const auto corner = [&](typename T::halfedge_handle y) {
+    std::vector<H> out_of;  // a halfedge out of row r's vertex, or null when it does not move
+    n.vertex.reserve(T::vertex_count(m));
+    out_of.reserve(T::vertex_count(m));
+    for (auto v : T::vertices(m)) {
+        const auto i = T::vertex_index(m, v);
+        n.vertex.push_back(Index(i));
+        out_of.push_back(fixed[i] ? T::null_halfedge() : T::vertex_halfedge(m, v));
+    }
+    const std::size_t rows = n.rows();
+    n.first.assign(rows + 1, 0);
+    const auto walk = [&](std::size_t r, auto&& visit) {
+        const H s = out_of[r];
+        if (s == T::null_halfedge()) return;
+        H x = s;
+        do {
+            visit(x);
+            x = T::next(m, T::opposite(m, x));
+        } while (x != s);
+    };
+    detail::parallel_chunks(rows, rows_per_task, [&](std::size_t r0, std::size_t r1) {
+        for (std::size_t r = r0; r < r1; ++r) walk(r, [&](H) { ++n.first[r + 1]; });
+    });
+    for (std::size_t r = 0; r < rows; ++r) n.first[r + 1] += n.first[r];
+    n.neighbour.resize(n.first[rows]);
+    if (corners) {
+        n.left.resize(n.first[rows]);
+        n.right.resize(n.first[rows]);
+    }
+    const auto corner = [&](H y) {
         if (T::face(m, y) == T::null_face()) return neighbourhoods<Index>::none;
         return Index(T::vertex_index(m, T::target(m, T::next(m, y))));
     };
-    std::size_t ordinal = 0;
-    for (auto v : T::vertices(m)) {
-        const std::size_t k = ordinal++;
-        const auto i = T::vertex_index(m, v);
-        const auto s = T::vertex_halfedge(m, v);
-        if (fixed[i] || s == T::null_halfedge()) continue;
-        n.vertex.push_back(Index(i));
-        n.ordinal.push_back(k);
-        auto x = s;
-        do {
-            n.neighbour.push_back(Index(T::vertex_index(m, T::target(m, x))));
-            if (corners) {
-                n.left.push_back(corner(x));
-                n.right.push_back(corner(T::opposite(m, x)));
-            }
-            x = T::next(m, T::opposite(m, x));
-        } while (x != s);
-        n.first.push_back(n.neighbour.size());
-    }
+    detail::parallel_chunks(rows, rows_per_task, [&](std::size_t r0, std::size_t r1) {
+        for (std::size_t r = r0; r < r1; ++r) {
+            std::size_t k = n.first[r];
+            walk(r, [&](H x) {
+                n.neighbour[k] = Index(T::vertex_index(m, T::target(m, x)));
+                if (corners) {
+                    n.left[k] = corner(x);
+                    n.right[k] = corner(T::opposite(m, x));
+                }
+                ++k;
+            });
+        }
+    });
     return n;
 }
 
@@ -217,6 +239,7 @@ step_status step(const neighbourhoods<Index>& n, std::size_t vertex_count, doubl
         detail::parallel_chunks(to - from, rows_per_chunk, [&](std::size_t c0, std::size_t c1) {
             bool all_finite = true;
             for (std::size_t r = from + c0; r < from + c1; ++r) {
+                if (!n.moves(r)) continue;
                 const vec3<double> q = moved<W>(n, r, amount, at);
                 all_finite &= finite(q);
                 out[n.vertex[r]] = round(q);
@@ -227,11 +250,9 @@ step_status step(const neighbourhoods<Index>& n, std::size_t vertex_count, doubl
     // The gate is asked before the vertex that makes the count reach check_every, as a walk of
     // the vertices one by one would.
     std::size_t done = 0;
-    for (std::size_t o = check_every - visited - 1; o < vertex_count; o += check_every) {
-        const auto upto = std::size_t(std::lower_bound(n.ordinal.begin() + std::ptrdiff_t(done), n.ordinal.end(), o) -
-                                      n.ordinal.begin());
-        sweep(done, upto);
-        done = upto;
+    for (std::size_t r = check_every - visited - 1; r < vertex_count; r += check_every) {
+        sweep(done, r);
+        done = r;
         if (!gate.advance(1)) return {true, -1, false};
     }
     sweep(done, n.rows());
@@ -240,7 +261,7 @@ step_status step(const neighbourhoods<Index>& n, std::size_t vertex_count, doubl
         // Rare (coordinates near the largest double): redo the rows that overflowed, in order.
         for (std::size_t r = 0; r < n.rows(); ++r) {
             const std::size_t i = n.vertex[r];
-            if (finite(out[i])) continue;
+            if (!n.moves(r) || finite(out[i])) continue;
             bool bad_input = false;
             const vec3<double> q = moved_rescaled<W>(n, r, amount, p, bad_input);
             if (!finite(q)) return {false, (long long)i, bad_input};
