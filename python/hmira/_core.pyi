@@ -197,14 +197,15 @@ class MeshCore:
         {'vertices': 9, 'edges': 12, 'faces': 4}
         """
 
-    def laplacian_smooth(self, *, iterations: int = 1, lambda_: float = 0.5, weights: str = 'uniform', fix_boundary: bool = True, fixed_vertices: Sequence[int] | None = None) -> int:
+    def laplacian_smooth(self, *, iterations: int = 1, lambda_: float = 0.5, weights: str = 'uniform', fix_boundary: bool = True, fixed_vertices: Sequence[int] | None = None, refresh_weights: bool = True, threads: int = 0) -> int:
         """
-        Laplacian smoothing (uniform or cotangent weights, step lambda_ in (0, 1]); returns the number of vertices free to move.
+        Laplacian smoothing (uniform or cotangent weights, step lambda_ in (0, 1]); returns the number of vertices free to move. refresh_weights: recompute cotangent weights before every step (False: once). threads: worker threads (0: all); the result does not depend on it.
         """
 
-    def taubin_smooth(self, *, iterations: int = 10, lambda_: float = 0.5, mu: float = -0.53, weights: str = 'uniform', fix_boundary: bool = True, fixed_vertices: Sequence[int] | None = None) -> int:
+    def taubin_smooth(self, *, iterations: int = 10, lambda_: float = 0.5, mu: float = -0.53, weights: str = 'uniform', fix_boundary: bool = True, fixed_vertices: Sequence[int] | None = None, refresh_weights: bool = True, threads: int = 0) -> int:
         """
         Taubin lambda/mu smoothing (keeps the volume); returns the number of vertices free to move.
+        refresh_weights and threads as in laplacian_smooth.
         """
 
     def decimate(self, *, target_faces: int | None = None, target_ratio: float | None = None, max_error: float | None = None, keep_boundary: bool = True, max_normal_angle: float = 90.0, max_aspect_ratio: float = float('inf'), locked_vertices: Sequence[int] | None = None) -> dict:

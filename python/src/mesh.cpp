@@ -7,8 +7,10 @@
 // its contents, I/O and queries; each algorithm family adds its methods from its own file.
 #include "mesh_binding.hpp"
 
+#include <cmath>
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -22,9 +24,57 @@ namespace hmira_py {
 
 namespace {
 
+/// Builds `fresh` in one pass (halfedge_mesh::assign_polygons) from an (n, 3) float64 array and
+/// an (m, k) integer array, read in place with the GIL released; the positions are moved into
+/// the mesh, not copied again. False, `fresh` untouched, for anything else (a sequence of
+/// polygons, a non-finite coordinate, an index out of range, a soup the one-pass build refuses):
+/// the caller then takes the readers' soup path, which reports the problem as it always has.
+template <class Index>
+bool assign_rows(halfedge_mesh& fresh, const vertex_array& vertices,
+                 const nb::ndarray<const Index, nb::ndim<2>, nb::c_contig, nb::device::cpu>& faces) {
+    const std::size_t nv = vertices.shape(0), m = faces.shape(0), k = faces.shape(1);
+    if (vertices.shape(1) != 3 || nv > 0xffffffffu || m * k >= 0xffffffffu) return false;
+    nb::gil_scoped_release release;
+    cpp_timer timer;
+    const double* v = vertices.data();
+    std::vector<vec3<double>> points(nv);
+    bool ok = true;
+    for (std::size_t i = 0; i < nv; ++i) {
+        points[i] = {v[3 * i], v[3 * i + 1], v[3 * i + 2]};
+        ok &= std::isfinite(v[3 * i]) & std::isfinite(v[3 * i + 1]) & std::isfinite(v[3 * i + 2]);
+    }
+    const Index* f = faces.data();
+    std::vector<std::uint32_t> corners(m * k);
+    for (std::size_t c = 0; c < m * k; ++c) {
+        ok &= f[c] >= 0 && std::uint64_t(f[c]) < nv;
+        corners[c] = static_cast<std::uint32_t>(f[c]);
+    }
+    if (!ok) return false;
+    std::vector<std::uint32_t> offsets(m + 1);
+    for (std::size_t i = 0; i <= m; ++i) offsets[i] = static_cast<std::uint32_t>(i * k);
+    return bool(fresh.assign_polygons(points, std::span<const std::uint32_t>(offsets),
+                                      std::span<const std::uint32_t>(corners)));
+}
+
+/// assign_rows when `faces` is an int32 or int64 (m, k) array (not a list or a tuple).
+bool assign_arrays(halfedge_mesh& fresh, const vertex_array& vertices, nb::handle faces) {
+    if (nb::isinstance<nb::list>(faces) || nb::isinstance<nb::tuple>(faces)) return false;
+    nb::ndarray<const std::int32_t, nb::ndim<2>, nb::c_contig, nb::device::cpu> narrow;
+    if (nb::try_cast(faces, narrow, false)) return assign_rows(fresh, vertices, narrow);
+    nb::ndarray<const std::int64_t, nb::ndim<2>, nb::c_contig, nb::device::cpu> wide;
+    if (nb::try_cast(faces, wide, false)) return assign_rows(fresh, vertices, wide);
+    return false;
+}
+
 void set_polygons(py_mesh& self, const vertex_array& vertices, nb::handle faces) {
-    const auto soup = to_soup(vertices, faces, "Mesh");
     halfedge_mesh fresh;
+    // A clean (m, k) array builds in one pass; the one-pass build gives the very mesh the soup
+    // path's add_face calls give for every soup it takes (io/detail/polygon_soup.hpp).
+    if (assign_arrays(fresh, vertices, faces)) {
+        self.replace(std::move(fresh));
+        return;
+    }
+    const auto soup = to_soup(vertices, faces, "Mesh");
     hmira::result<void> built;
     {
         // The readers' own soup-to-mesh path, so construction gets whatever repair they do.
@@ -65,12 +115,25 @@ nb::ndarray<nb::numpy, double, nb::ndim<2>> positions(py_mesh& self) {
 }
 
 nb::list polygons(const py_mesh& self) {
-    nb::list out;
     const auto& m = self.get();
+    // Lists made at their final size and filled in place: one pass, no appends.
+    nb::list out = nb::steal<nb::list>(PyList_New(Py_ssize_t(m.face_count())));
+    std::vector<long long> corners;
+    Py_ssize_t k = 0;
     for (auto f : m.faces()) {
-        nb::list poly;
-        for (auto v : m.face_vertices(f)) poly.append(static_cast<long long>(v.index));
-        out.append(poly);
+        corners.clear();
+        for (auto v : m.face_vertices(f)) corners.push_back(static_cast<long long>(v.index));
+        PyObject* poly = PyList_New(Py_ssize_t(corners.size()));
+        if (!poly) throw nb::python_error();
+        for (std::size_t c = 0; c < corners.size(); ++c) {
+            PyObject* i = PyLong_FromLongLong(corners[c]);
+            if (!i) {
+                Py_DECREF(poly);
+                throw nb::python_error();
+            }
+            PyList_SET_ITEM(poly, Py_ssize_t(c), i);
+        }
+        PyList_SET_ITEM(out.ptr(), k++, poly);
     }
     return out;
 }

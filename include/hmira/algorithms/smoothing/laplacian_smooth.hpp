@@ -35,6 +35,10 @@ struct laplacian_smooth_options {
     laplacian_weights weights = laplacian_weights::uniform;  ///< neighbour weights
     bool fix_boundary = true;                                ///< keep boundary vertices where they are
     std::vector<std::size_t> fixed_vertices{};               ///< vertex indices (feature vertices) that stay exactly
+    /// Cotangent weights: recomputed from the current positions before every step (false: once,
+    /// from the starting positions, which makes every step the same linear filter).
+    bool refresh_weights = true;
+    unsigned threads = 0;  ///< worker threads (0: all available); the result does not depend on it
     /// Called between blocks of work (every 65536 vertices visited, counted across steps) with
     /// the fraction done; returning false cancels (errc::cancelled, every position restored).
     progress_function progress = {};
@@ -48,6 +52,8 @@ struct taubin_smooth_options {
     laplacian_weights weights = laplacian_weights::uniform;  ///< neighbour weights
     bool fix_boundary = true;                                ///< keep boundary vertices where they are
     std::vector<std::size_t> fixed_vertices{};               ///< vertex indices that stay exactly
+    bool refresh_weights = true;  ///< cotangent weights: recomputed before every step (false: once)
+    unsigned threads = 0;         ///< worker threads (0: all available); the result does not depend on it
     /// Called between blocks of work (every 65536 vertices visited, counted across steps) with
     /// the fraction done; returning false cancels (errc::cancelled, every position restored).
     progress_function progress = {};
@@ -77,10 +83,11 @@ concept smoothable_mesh = halfedge_navigable_mesh<M, T> && position_mutable_mesh
 /// errc::unsupported, naming the vertex, when a new position would lie beyond the range of
 /// double (cotangent weights can extrapolate) or a neighbourhood holds a non-finite
 /// coordinate; errc::cancelled when options.progress returns false.
-/// Complexity O(iterations * (V + E)), and 48 bytes per vertex besides the mesh (72 for more
-/// than one step: the starting positions are kept to restore them). Each step streams the
-/// vertices in index order and reads their neighbours, so the time per vertex steps up once
-/// mesh and buffers outgrow the last-level cache, and is flat beyond it (bench/sweep).
+/// Complexity O(V + E) to gather the neighbourhoods once, in compressed rows, then
+/// O(iterations * (V + E)) for the steps, which stream the rows and two position arrays (in
+/// parallel over options.threads); 72 bytes per vertex and 4 per halfedge besides the mesh (12
+/// per halfedge with cotangent weights). The time per vertex steps up once the arrays outgrow
+/// the last-level cache, and is flat beyond it (bench/sweep).
 template <class M, class T = default_traits<M>>
     requires smoothable_mesh<M, T>
 [[nodiscard]] result<smooth_result> laplacian_smooth(M& mesh, const laplacian_smooth_options& options = {});
@@ -94,7 +101,7 @@ template <class M, class T = default_traits<M>>
 /// -1 <= mu < -lambda, or for a fixed vertex out of range; errc::topology as laplacian_smooth;
 /// errc::unsupported, naming the vertex, when a new position would lie beyond the range of
 /// double; errc::cancelled when options.progress returns false.
-/// Complexity O(iterations * (V + E)), and 72 bytes per vertex besides the mesh.
+/// Complexity as laplacian_smooth, the two half-steps each one parallel sweep.
 template <class M, class T = default_traits<M>>
     requires smoothable_mesh<M, T>
 [[nodiscard]] result<smooth_result> taubin_smooth(M& mesh, const taubin_smooth_options& options = {});

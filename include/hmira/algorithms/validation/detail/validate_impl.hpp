@@ -259,10 +259,20 @@ struct face_corners {
 template <class M, class T>
 bool has_zero_area(const M& mesh, typename T::face_handle f) {
     using S = typename T::scalar;
-    vec3<S> area{};
-    std::vector<vec3<S>> ps;
-    for (auto v : T::face_vertices(mesh, f)) ps.push_back(static_cast<vec3<S>>(T::position(mesh, v)));
-    for (std::size_t i = 0; i < ps.size(); ++i) area += cross(ps[i], ps[(i + 1) % ps.size()]);
+    vec3<S> area{}, first{}, prev{};
+    bool started = false;
+    // The edges' cross products summed in loop order, the closing edge last, without a copy of
+    // the corners.
+    for (auto v : T::face_vertices(mesh, f)) {
+        const auto p = static_cast<vec3<S>>(T::position(mesh, v));
+        if (started)
+            area += cross(prev, p);
+        else
+            first = p;
+        started = true;
+        prev = p;
+    }
+    if (started) area += cross(prev, first);
     return area == vec3<S>{};
 }
 
@@ -281,7 +291,7 @@ face_pass validate_faces(const M& mesh, const validate_options& options, const s
                          problem_sink& sink, face_corners& corners) {
     const std::size_t nv = live.size();
     face_pass pass;
-    std::vector<std::uint32_t> loop;
+    std::vector<std::uint32_t> loop, sorted;  // reused from face to face
     // A face loop with more corners than the mesh has halfedges never closes (corrupt next
     // links): stop there rather than follow it, since a model's rings need not guard.
     std::size_t longest_loop = std::numeric_limits<std::size_t>::max();
@@ -320,7 +330,7 @@ face_pass validate_faces(const M& mesh, const validate_options& options, const s
                          "face " + std::to_string(fi) + " has only " + std::to_string(loop.size()) + " vertices");
                 continue;
             }
-            auto sorted = loop;
+            sorted.assign(loop.begin(), loop.end());
             std::sort(sorted.begin(), sorted.end());
             if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) {
                 sink.add(problem_kind::degenerate_face, fi, "face " + std::to_string(fi) + " repeats a vertex");
@@ -381,7 +391,19 @@ inline void validate_corner_fans(const face_corners& corners, std::size_t nv, pr
         keys.push_back({(std::uint64_t(corners.vertex[c]) << 32) | corners.next[c], static_cast<std::uint32_t>(c)});
         keys.push_back({(std::uint64_t(corners.vertex[c]) << 32) | corners.prev[c], static_cast<std::uint32_t>(c)});
     }
-    std::sort(keys.begin(), keys.end(), [](const key& a, const key& b) { return a.vw < b.vw; });
+    // Grouped by vertex with a counting sort, then each vertex's keys sorted: O(C log d).
+    std::vector<std::size_t> start(nv + 1, 0);
+    for (const auto& k : keys) ++start[(k.vw >> 32) + 1];
+    for (std::size_t v = 1; v <= nv; ++v) start[v] += start[v - 1];
+    {
+        std::vector<key> grouped(keys.size());
+        auto fill = start;
+        for (const auto& k : keys) grouped[fill[k.vw >> 32]++] = k;
+        keys.swap(grouped);
+    }
+    for (std::size_t v = 0; v < nv; ++v)
+        std::sort(keys.begin() + std::ptrdiff_t(start[v]), keys.begin() + std::ptrdiff_t(start[v + 1]),
+                  [](const key& a, const key& b) { return a.vw < b.vw; });
     for (std::size_t i = 1; i < keys.size(); ++i)
         if (keys[i].vw == keys[i - 1].vw) fans.unite(keys[i].corner, keys[i - 1].corner);
     std::vector<std::uint32_t> first_root(nv, UINT32_MAX);
