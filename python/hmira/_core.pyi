@@ -9,27 +9,31 @@ import numpy
 from numpy.typing import NDArray
 
 
-def marching_cubes(volume: Annotated[NDArray, dict(shape=(None, None, None), device='cpu', writable=False)], iso: float = 0.0, *, spacing: Sequence[float] = [1.0, 1.0, 1.0], origin: Sequence[float] = [0.0, 0.0, 0.0], inside: str = 'below', threads: int = 0) -> tuple:
+def marching_cubes(volume: Annotated[NDArray, dict(shape=(None, None, None), device='cpu', writable=False)], iso: float | None = None, *, spacing: Sequence[float] = [1.0, 1.0, 1.0], origin: Sequence[float] = [0.0, 0.0, 0.0], inside: str = 'below', threads: int = 0) -> tuple:
     """
     Extract the iso-surface of a 3-D volume as a welded, closed triangle mesh.
 
     Parameters
     ----------
     volume : ndarray, shape (n0, n1, n2)
-        Samples, float32, float64, uint8, uint16 or int16; C- or Fortran-ordered or
-        strided, read in place (never copied). A NaN or infinite sample raises
-        ValueError naming it ("volume[3, 4, 5] is inf").
-    iso : float
+        Samples of any float, integer or bool dtype (hmira.marching_cubes also takes
+        nested lists); C- or Fortran-ordered or strided, read in place (never copied).
+        A NaN or infinite sample raises ValueError naming it ("volume[3, 4, 5] is inf").
+    iso : float, optional
         The iso value, within the samples' range [min, max]: outside it there is no
-        surface, and ValueError names the range. Scans (CT, MRI) need a positive iso
-        and ``inside="above"``, e.g. ``hmira.marching_cubes(ct, 300.0, inside="above")``.
+        surface, and ValueError names the range. Default: the midpoint of the range
+        (as scikit-image), so a default never gives an empty mesh. A signed distance
+        field wants ``iso=0.0``; scans (CT, MRI) want ``inside="above"``, e.g.
+        ``hmira.marching_cubes(ct, 300.0, inside="above")``.
     spacing : sequence of 3 floats, keyword-only
         Distance between samples along array axes 0, 1, 2.
     origin : sequence of 3 floats, keyword-only
         Position of sample [0, 0, 0].
     inside : {"below", "above"}, keyword-only
         Which side of `iso` is the solid ("below" for signed distances, "above" for
-        CT/MRI scans). Triangles wind counter-clockwise seen from outside.
+        CT/MRI scans and label maps). Triangles wind counter-clockwise seen from outside
+        the solid: a label map or scan left at "below" takes the background for the
+        solid and comes out inside-out (``hmira.Mesh(v, f).volume()`` is negative).
     threads : int, keyword-only
         Worker threads (0: all cores). The output does not depend on it.
 
@@ -48,7 +52,7 @@ def marching_cubes(volume: Annotated[NDArray, dict(shape=(None, None, None), dev
     --------
     >>> import numpy as np, hmira
     >>> x, y, z = np.mgrid[-1:1:32j, -1:1:32j, -1:1:32j]
-    >>> v, f = hmira.marching_cubes(x**2 + y**2 + z**2 - 0.5, 0.0)
+    >>> v, f = hmira.marching_cubes(x**2 + y**2 + z**2 - 0.5, 0.0)  # the zero level of a distance
     >>> v.shape[1], f.dtype.name, len(f) == 2 * len(v) - 4
     (3, 'int32', True)
     """
@@ -181,9 +185,9 @@ class MeshCore:
         Closes the boundary loop of a boundary halfedge with triangles (minimal area, maximal dihedral, Liepa 2003); with refine=True the patch is refined to the edge length around the hole, and fair='membrane' or 'thin-plate' (implies refine) smooths it. Returns the new faces.
         """
 
-    def fill_holes(self, max_size: int, *, max_dynamic_programming_edges: int = 200, refine: bool = False, fair: str = 'none') -> dict:
+    def fill_holes(self, max_edges: int = 1000, *, max_dynamic_programming_edges: int = 200, refine: bool = False, fair: str = 'none') -> dict:
         """
-        Fills every hole of at most max_size boundary edges (refine and fair as for fill_hole); returns {'filled', 'skipped', 'faces_added', 'vertices_added', 'unfaired', 'open'}, 'open' listing each hole left open as {'vertex', 'edges', 'reason'}. Ctrl-C stops it with the mesh unchanged.
+        Fills every hole of at most max_edges boundary edges (the CLI's --max-edges and default) (refine and fair as for fill_hole); returns {'filled', 'skipped', 'faces_added', 'vertices_added', 'unfaired', 'open'}, 'open' listing each hole left open as {'vertex', 'edges', 'reason'}. Ctrl-C stops it with the mesh unchanged.
         """
 
     def subdivide(self, *, scheme: str = 'loop', levels: int = 1) -> dict:
@@ -207,11 +211,12 @@ class MeshCore:
         Taubin lambda/mu smoothing (keeps the volume); returns the number of vertices free to move.
         """
 
-    def decimate(self, *, target_faces: int | None = None, target_ratio: float | None = None, max_error: float | None = None, keep_boundary: bool = True, max_normal_angle: float = 90.0, max_aspect_ratio: float = float('inf'), locked_vertices: Sequence[int] | None = None) -> dict:
+    def decimate(self, *, target_faces: int | None = None, target_ratio: float | None = None, max_error: float | None = None, fix_boundary: bool = True, max_normal_angle: float = 90.0, max_aspect_ratio: float = float('inf'), fixed_vertices: Sequence[int] | None = None) -> dict:
         """
         Quadric error decimation (Garland-Heckbert) until the first target reached: target_faces, target_ratio
         (of the faces) or max_error (a distance). Polygons are triangulated first. Boundary vertices stay
-        unless keep_boundary=False; locked_vertices never move. Returns {'faces', 'vertices', 'collapses',
+        unless fix_boundary=False; fixed_vertices never move (the names smoothing uses; hmira.Mesh.decimate
+        still takes keep_boundary and locked_vertices, deprecated). Returns {'faces', 'vertices', 'collapses',
         'triangulated', 'stopped_by', 'error', 'note'}; vertices are renumbered densely afterwards.
 
         >>> m = hmira.Mesh([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [0.5, 0.5, 0]],
@@ -310,4 +315,28 @@ class MeshCore:
     def kill_edge_face(self, halfedge: int) -> tuple:
         """
         killEF: removes the edge, merging its two faces; returns (face, h0, h1) for make_edge_face.
+        """
+
+    def bounds(self) -> Annotated[NDArray[numpy.float64], dict(shape=(None, None))]:
+        """
+        The bounding box as a (2, 3) float64 array [min, max]; (0, 3) without vertices.
+        """
+
+    def area(self) -> float:
+        """The total area of the faces."""
+
+    def volume(self) -> float:
+        """
+        The signed enclosed volume (divergence theorem): positive for a closed mesh wound counter-clockwise seen from outside, negative when inside-out.
+        """
+
+    def face_normals(self) -> Annotated[NDArray[numpy.float64], dict(shape=(None, None))]:
+        """Unit face normals (m, 3) in face order; zero for a face of zero area."""
+
+    def face_areas(self) -> Annotated[NDArray[numpy.float64], dict(shape=(None,))]:
+        """Face areas (m,) in face order."""
+
+    def edges(self) -> Annotated[NDArray[numpy.int32], dict(shape=(None, None))]:
+        """
+        Each edge once as (k, 2) int32 vertex indices, the smaller index first.
         """

@@ -20,6 +20,8 @@
 
 namespace hmira_py {
 
+void bind_mesh_geometry(nb::class_<py_mesh>& c);
+
 namespace {
 
 void set_polygons(py_mesh& self, const vertex_array& vertices, nb::handle faces) {
@@ -248,6 +250,7 @@ void bind_mesh(nb::module_& m) {
     bind_contents(core);
     bind_mesh_editing(core);
     bind_mesh_euler(core);
+    bind_mesh_geometry(core);  // bounds, area, volume, edges, split (mesh_geometry.cpp)
 }
 
 }  // namespace hmira_py
