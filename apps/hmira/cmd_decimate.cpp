@@ -29,9 +29,9 @@ int run_decimate(const decimate_args& a, const common_options& o) {
     int code = ok;
     auto loaded = load_for_edit(a.input, o, code);
     if (!loaded) return code;
-    if (!a.locked.empty()) std::cerr << "hmira decimate: --lock is deprecated; use --fix (as hmira smooth)\n";
     if (!check_indices(a.fixed, loaded->mesh.vertex_count(), "vertex", "--fix", a.input, code)) return code;
     if (!check_indices(a.locked, loaded->mesh.vertex_count(), "vertex", "--lock", a.input, code)) return code;
+    if (!a.locked.empty()) std::cerr << "hmira decimate: --lock is deprecated; use --fix (as hmira smooth)\n";
     const std::uint64_t work = loaded->mesh.face_count();
     return run_edit(*loaded, a.input, a.output, "decimating " + a.input, o,
                     [&](hmira::halfedge_mesh& mesh, int& c) -> std::optional<edit_outcome> {
