@@ -25,8 +25,8 @@ nb::tuple volume_tuple(hmira::dense_grid<T>&& grid) {
     const auto g = grid.geometry();
     auto* held = new hmira::dense_grid<T>(std::move(grid));
     nb::capsule owner(held, [](void* p) noexcept { delete static_cast<hmira::dense_grid<T>*>(p); });
-    auto samples = nb::ndarray<nb::numpy, T, nb::ndim<3>, nb::f_contig>(held->data(), {g.dims[0], g.dims[1], g.dims[2]},
-                                                                       owner);
+    auto samples =
+        nb::ndarray<nb::numpy, T, nb::ndim<3>, nb::f_contig>(held->data(), {g.dims[0], g.dims[1], g.dims[2]}, owner);
     return nb::make_tuple(samples, nb::make_tuple(g.spacing.x, g.spacing.y, g.spacing.z),
                           nb::make_tuple(g.origin.x, g.origin.y, g.origin.z));
 }
@@ -56,9 +56,8 @@ nb::tuple read_raw(const std::string& path, const std::vector<std::size_t>& dims
                    const std::vector<double>& spacing, const std::vector<double>& origin, bool big_endian) {
     if (dims.size() != 3 || spacing.size() != 3 || origin.size() != 3)
         value_error("read_volume: dims, spacing and origin need 3 values each");
-    const hmira::grid_geometry g{{dims[0], dims[1], dims[2]},
-                                 {origin[0], origin[1], origin[2]},
-                                 {spacing[0], spacing[1], spacing[2]}};
+    const hmira::grid_geometry g{
+        {dims[0], dims[1], dims[2]}, {origin[0], origin[1], origin[2]}, {spacing[0], spacing[1], spacing[2]}};
     if (type == "uint8") return read_raw_as<std::uint8_t>(path, g, big_endian);
     if (type == "int8") return read_raw_as<std::int8_t>(path, g, big_endian);
     if (type == "uint16") return read_raw_as<std::uint16_t>(path, g, big_endian);
@@ -76,8 +75,8 @@ nb::tuple read_raw(const std::string& path, const std::vector<std::size_t>& dims
 void bind_volume_io(nb::module_& m) {
     m.def("_read_inr", &read_inr, nb::arg("path"),
           "An .inr or .inr.gz volume as (float32 samples (nx, ny, nz), spacing, origin).");
-    m.def("_read_raw", &read_raw, nb::arg("path"), nb::kw_only(), nb::arg("dims"), nb::arg("type"),
-          nb::arg("spacing"), nb::arg("origin"), nb::arg("big_endian"),
+    m.def("_read_raw", &read_raw, nb::arg("path"), nb::kw_only(), nb::arg("dims"), nb::arg("type"), nb::arg("spacing"),
+          nb::arg("origin"), nb::arg("big_endian"),
           "A .raw volume (x fastest, no header) as (samples (nx, ny, nz), spacing, origin).");
 }
 

@@ -52,7 +52,9 @@ result<sample_range> samples_range(const G& grid) {
                 if (!std::isfinite(v))
                     return fail(errc::invalid_argument, "sample (" + std::to_string(i) + ", " + std::to_string(j) +
                                                             ", " + std::to_string(k) + ") is " +
-                                                            (std::isnan(v) ? "nan" : v > 0 ? "inf" : "-inf") +
+                                                            (std::isnan(v) ? "nan"
+                                                             : v > 0       ? "inf"
+                                                                           : "-inf") +
                                                             "; every sample must be finite");
                 if (v < r.min) r.min = v;
                 if (v > r.max) r.max = v;
