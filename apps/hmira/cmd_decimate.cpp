@@ -2,6 +2,7 @@
 // `hmira decimate`: quadric error decimation (Garland-Heckbert) of a triangle mesh down to a
 // face count, a fraction of the faces, or an error bound; polygon input is triangulated first.
 #include <cmath>
+#include <iostream>
 
 #include <hmira/algorithms/decimation/decimate.hpp>
 
@@ -18,7 +19,8 @@ struct decimate_args {
     double max_normal_angle = hmira::decimate_options{}.max_normal_angle;
     double max_aspect_ratio = 0;  // 0: not given (the library's default, no limit)
     bool move_boundary = !hmira::decimate_options{}.keep_boundary;
-    std::vector<std::size_t> locked;
+    std::vector<std::size_t> fixed;
+    std::vector<std::size_t> locked;  // --lock: the old name of --fix (deprecated; smooth calls it --fix)
 };
 
 int run_decimate(const decimate_args& a, const common_options& o) {
@@ -27,7 +29,9 @@ int run_decimate(const decimate_args& a, const common_options& o) {
     int code = ok;
     auto loaded = load_for_edit(a.input, o, code);
     if (!loaded) return code;
+    if (!check_indices(a.fixed, loaded->mesh.vertex_count(), "vertex", "--fix", a.input, code)) return code;
     if (!check_indices(a.locked, loaded->mesh.vertex_count(), "vertex", "--lock", a.input, code)) return code;
+    if (!a.locked.empty()) std::cerr << "hmira decimate: --lock is deprecated; use --fix (as hmira smooth)\n";
     const std::uint64_t work = loaded->mesh.face_count();
     return run_edit(*loaded, a.input, a.output, "decimating " + a.input, o,
                     [&](hmira::halfedge_mesh& mesh, int& c) -> std::optional<edit_outcome> {
@@ -37,7 +41,9 @@ int run_decimate(const decimate_args& a, const common_options& o) {
                         options.keep_boundary = !a.move_boundary;
                         options.max_normal_angle = a.max_normal_angle;
                         if (a.max_aspect_ratio > 0) options.max_aspect_ratio = a.max_aspect_ratio;
-                        options.locked_vertices = a.locked;
+                        options.locked_vertices = a.fixed;
+                        options.locked_vertices.insert(options.locked_vertices.end(), a.locked.begin(),
+                                                       a.locked.end());
                         options.progress = [&](double f) {
                             bar.update(std::uint64_t(f * double(work)), work);
                             return true;
@@ -80,9 +86,10 @@ const bool registered = register_command(
                         "refuse collapses that make a face thinner than this (1 = equilateral), >= 1")
              ->check(finite_number(">= 1", [](double x) { return x >= 1; }));
          sub.add_flag("--move-boundary", a->move_boundary, "let boundary edges collapse and boundary vertices move");
-         sub.add_option("--lock", a->locked, "keep vertex N where it is (0-based, file order; repeatable, or N,M,...)")
+         sub.add_option("--fix", a->fixed, "keep vertex N where it is (0-based, file order; repeatable, or N,M,...)")
              ->delimiter(',')
              ->check(CLI::NonNegativeNumber);
+         sub.add_option("--lock", a->locked, "deprecated name of --fix")->delimiter(',')->check(CLI::NonNegativeNumber);
          return [a](const common_options& o) { return run_decimate(*a, o); };
      }});
 

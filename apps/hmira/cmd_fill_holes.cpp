@@ -13,7 +13,7 @@ using namespace hmira_cli;
 
 struct fill_holes_args {
     std::string input, output;
-    std::size_t max_edges = 1000;
+    std::size_t max_edges = hmira::fill_holes_default_max_edges;
     bool refine = hmira::fill_hole_options{}.refine;
     std::string fair = name_of(hmira::fill_hole_options{}.fair);
 };
@@ -80,7 +80,8 @@ const bool registered = register_command(
          sub.add_option("output", a->output,
                         "mesh file to write: the input's vertices in file order, new faces after the old")
              ->required();
-         sub.add_option("--max-edges", a->max_edges, "fill only loops of at most this many edges (>= 3; default 1000)")
+         sub.add_option("--max-edges", a->max_edges, "fill only loops of at most this many edges (>= 3)")
+             ->capture_default_str()
              ->check(whole_number(3, std::numeric_limits<std::uint64_t>::max()));
          sub.add_flag("--refine", a->refine, "refine each patch to the edge length around its hole (Liepa)");
          sub.add_option("--fair", a->fair,

@@ -3,11 +3,16 @@
 // n^3 grid, or on a volume file (.inr, .inr.gz, or .raw with its grid given on the command
 // line), writing the iso-surface as a mesh. A .raw or uncompressed .inr file is read slab by
 // slab (pread), so its size is not bounded by memory; the output is the same.
+#include <algorithm>
 #include <cstdint>
 #include <filesystem>
+#include <limits>
+#include <optional>
+#include <span>
 #include <ranges>
 #include <variant>
 
+#include <hmira/algorithms/conversion/iso_level.hpp>
 #include <hmira/algorithms/conversion/marching_cubes.hpp>
 #include <hmira/algorithms/conversion/marching_cubes_blocks.hpp>
 #include <hmira/grids/implicit_shapes.hpp>
@@ -25,7 +30,9 @@ using namespace hmira_cli;
 struct mc_args {
     std::string source, output;
     std::size_t resolution = 64;
-    double iso = hmira::marching_cubes_options{}.iso;
+    /// Not given: 0 for a named shape (a distance field), the midpoint of the samples' range for a
+    /// volume file (hmira::default_iso, as Python and scikit-image).
+    std::optional<double> iso;
     std::string inside = name_of(hmira::marching_cubes_options{}.inside);
     bool normals = hmira::marching_cubes_options{}.normals;
     // .raw volumes only
@@ -184,8 +191,9 @@ std::optional<int> run_mc_by_slabs(const mc_args& a, const common_options& o,
     if (!layout) return std::nullopt;
     auto reader = hmira::io::volume_slab_reader::open(a.source, *layout);
     if (!reader) return std::nullopt;  // a size mismatch: the whole-volume reader names it as usual
-    const hmira::marching_cubes_block_options opt{
-        .iso = a.iso, .inside = named<hmira::iso_inside>(a.inside), .threads = static_cast<unsigned>(o.threads)};
+    hmira::marching_cubes_block_options opt{.iso = a.iso.value_or(0.0),
+                                            .inside = named<hmira::iso_inside>(a.inside),
+                                            .threads = static_cast<unsigned>(o.threads)};
     const auto& g = layout->geometry;
     auto run = [&]<class T>(T) -> hmira::result<hmira::indexed_triangles<double>> {
         const std::size_t plane = g.dims[0] * g.dims[1] * sizeof(T);
@@ -193,6 +201,26 @@ std::optional<int> run_mc_by_slabs(const mc_args& a, const common_options& o,
         auto fetch = [&](std::size_t k0, std::size_t count, std::vector<T>& out) {
             return reader->read_slices(k0, count, out);
         };
+        if (!a.iso) {
+            // The default iso needs the samples' range first: one more pass over the file, slab by
+            // slab, through the library's range of each slab (the same midpoint as a whole volume's).
+            hmira::sample_range range{std::numeric_limits<double>::infinity(),
+                                      -std::numeric_limits<double>::infinity()};
+            bool finite = true;
+            std::vector<T> slab;
+            for (std::size_t k0 = 0; k0 < g.dims[2] && finite; k0 += slices) {
+                const std::size_t count = std::min(slices, g.dims[2] - k0);
+                if (auto got = fetch(k0, count, slab); !got) return got.error();
+                const hmira::grid_geometry part{{g.dims[0], g.dims[1], count}, g.origin, g.spacing};
+                const auto view = hmira::make_grid_view(std::span<const T>(slab.data(), part.size()), part);
+                if (!view) return view.error();
+                const auto r = hmira::samples_range(*view);
+                // A non-finite sample: marching cubes names it, in the whole file's terms.
+                finite = r.has_value();
+                if (finite) range = {std::min(range.min, r->min), std::max(range.max, r->max)};
+            }
+            if (finite && range.min <= range.max) opt.iso = range.midpoint();
+        }
         return hmira::marching_cubes_by_slabs<double, T>(g, slices, fetch, opt);
     };
     hmira::result<hmira::indexed_triangles<double>> tri = hmira::fail(hmira::errc::invalid_argument, "");
@@ -245,7 +273,12 @@ int run_mc(const mc_args& a, const common_options& o) {
     auto code_for = [&](const hmira::error& e) { return from_file ? input_exit_code(e) : exit_code_for(e); };
     if (!grid) return report(code_for(grid.error()), grid.error().message);
     hmira::face_vertex_mesh m;
-    const hmira::marching_cubes_options opt{.iso = a.iso,
+    double iso = a.iso.value_or(hmira::marching_cubes_options{}.iso);
+    if (!a.iso && from_file) {
+        // A range that cannot be read (a non-finite sample) is left for marching cubes to report.
+        if (auto mid = std::visit([](const auto& g) { return hmira::default_iso(g); }, *grid)) iso = *mid;
+    }
+    const hmira::marching_cubes_options opt{.iso = iso,
                                             .inside = named<hmira::iso_inside>(a.inside),
                                             .normals = a.normals,
                                             .threads = static_cast<unsigned>(o.threads)};
@@ -271,8 +304,13 @@ const bool registered = register_command(
          sub.add_option("-n,--resolution", a->resolution, "samples per axis for a named shape")
              ->capture_default_str()
              ->check(whole_number(2, 2048));
-         sub.add_option("--iso", a->iso, "iso value")->capture_default_str()->check(finite_number());
-         sub.add_option("--inside", a->inside, "which side of the iso value is inside")
+         sub.add_option("--iso", a->iso,
+                        "iso value, within the samples' range (default: 0 for a shape, the range's midpoint for a "
+                        "volume file)")
+             ->check(finite_number());
+         sub.add_option("--inside", a->inside,
+                        "which side of the iso value is inside: below for distance fields, above for scans and "
+                        "label maps (at below they come out inside-out)")
              ->capture_default_str()
              ->check(CLI::IsMember(names_of<hmira::iso_inside>()));
          sub.add_flag("--normals", a->normals, "write per-vertex normals from the field's gradient");

@@ -9,24 +9,27 @@ Examples
 --------
 >>> import numpy as np, hmira
 >>> x, y, z = np.mgrid[-1:1:40j, -1:1:40j, -1:1:40j]
->>> vertices, faces = hmira.marching_cubes(x**2 + y**2 + z**2 - 0.5)
+>>> vertices, faces = hmira.marching_cubes(x**2 + y**2 + z**2 - 0.5, 0.0)
 >>> mesh = hmira.Mesh(vertices, faces)
 >>> mesh.topology().genus
 0
 """
 from __future__ import annotations
 
+import os
+import warnings
 import weakref
-from typing import Any, Optional, Sequence, Tuple
+from typing import Any, List, Optional, Sequence, Tuple
 
 import numpy as np
 
 from . import _core
-from ._core import BVH, Topology, delaunay_triangulation, marching_cubes
+from ._core import BVH, Topology, delaunay_triangulation
 
 __all__ = [
     "BVH",
     "Mesh",
+    "RepairWarning",
     "Topology",
     "VertexView",
     "bevel",
@@ -36,6 +39,7 @@ __all__ = [
     "marching_cubes",
     "mesh_topology",
     "read_mesh",
+    "read_volume",
     "render",
     "truncate",
     "view",
@@ -44,6 +48,22 @@ __all__ = [
 ]
 
 __version__ = "0.1.0"
+
+
+class RepairWarning(UserWarning):
+    """Issued when :func:`read_mesh` repaired a file to hold it in a half-edge mesh (the CLI's
+    editing commands print the same one-line summary); ``Mesh.repairs`` keeps the summary."""
+
+
+def marching_cubes(volume: Any, iso: Optional[float] = None, **options: Any) -> Tuple[np.ndarray, np.ndarray]:
+    if not isinstance(volume, np.ndarray):
+        volume = np.asarray(volume)  # nested lists, and other array-likes
+        if volume.dtype == object:
+            raise ValueError("marching_cubes: volume must be a 3-D array of numbers (ragged nested lists?)")
+    return _core.marching_cubes(volume, iso, **options)
+
+
+marching_cubes.__doc__ = _core.marching_cubes.__doc__
 
 
 class VertexView(np.ndarray):
@@ -185,6 +205,9 @@ class Mesh(_core.MeshCore):
     8
     """
 
+    #: What :func:`read_mesh` repaired, as the CLI's one-line summary ("" when nothing was).
+    repairs: str = ""
+
     def __init__(self, vertices: Any = None, faces: Any = None) -> None:
         super().__init__()
         if vertices is None and faces is None:
@@ -315,9 +338,146 @@ class Mesh(_core.MeshCore):
         raise ValueError(f"smooth: method must be 'taubin' or 'laplacian', got {method!r}")
 
     @classmethod
-    def from_trimesh(cls, tm: Any) -> "Mesh":
-        """A Mesh from a ``trimesh.Trimesh`` (or anything with ``.vertices`` and ``.faces``)."""
-        return cls(np.asarray(tm.vertices), np.asarray(tm.faces))
+    def from_trimesh(cls, tm: Any, *, repair: bool = False) -> "Mesh":
+        """A Mesh from a ``trimesh.Trimesh`` (or anything with ``.vertices`` and ``.faces``).
+
+        The faces must be a consistently oriented 2-manifold, as the class says: a non-manifold
+        edge or vertex, or faces wound against each other, raise ValueError naming the element,
+        unless ``repair=True``: then the faces go through the readers' repair, whose one-line summary
+        the mesh's ``repairs`` keeps (as :func:`read_mesh`).
+        """
+        out = cls()
+        vertices, faces = _vertex_array(np.asarray(tm.vertices)), _faces_arg(np.asarray(tm.faces))
+        out.repairs = out._set_polygons_checked(vertices, faces, repair=repair)
+        return out
+
+    # Geometry basics (mesh_geometry.cpp: bounds, area, volume, face_normals, face_areas, edges).
+
+    def __len__(self) -> int:
+        """The number of faces (as trimesh)."""
+        return self.face_count
+
+    def split(self) -> List["Mesh"]:
+        """The connected components that have faces, each a new Mesh, in order of their lowest
+        vertex index (vertices used by no face are left out; vertex colours follow).
+
+        Examples
+        --------
+        >>> import hmira
+        >>> two = hmira.Mesh([[0, 0, 0], [1, 0, 0], [0, 1, 0], [5, 0, 0], [6, 0, 0], [5, 1, 0]],
+        ...                  [[0, 1, 2], [3, 4, 5]])
+        >>> [len(part) for part in two.split()]
+        [1, 1]
+        """
+        labels, count = self._face_components()
+        parts = []
+        for c in range(count):
+            part = Mesh()
+            part._assign_faces(self, np.flatnonzero(labels == c).tolist())
+            parts.append(part)
+        return parts
+
+    def apply_transform(self, matrix: Any) -> "Mesh":
+        """A transformed copy: positions mapped by a 4x4 affine matrix (last row 0, 0, 0, 1).
+        A matrix that mirrors (negative determinant) also reverses every face, so the copy
+        stays wound counter-clockwise seen from outside (as trimesh does).
+
+        Examples
+        --------
+        >>> import numpy as np, hmira
+        >>> m = hmira.Mesh([[0, 0, 0], [1, 0, 0], [0, 1, 0]], [[0, 1, 2]])
+        >>> m.apply_transform(np.diag([2.0, 2.0, 2.0, 1.0])).area()
+        2.0
+        """
+        t = np.asarray(matrix, dtype=np.float64)
+        if t.shape != (4, 4):
+            raise ValueError(f"apply_transform: expected a 4x4 matrix, got shape {t.shape}")
+        if not np.all(np.isfinite(t)):
+            raise ValueError("apply_transform: the matrix must be finite")
+        if not np.array_equal(t[3], [0.0, 0.0, 0.0, 1.0]):
+            raise ValueError(f"apply_transform: the last row must be [0, 0, 0, 1] (an affine map), got {t[3].tolist()}")
+        out = self.copy()
+        v = out._positions()
+        v[...] = v @ t[:3, :3].T + t[:3, 3]
+        if np.linalg.det(t[:3, :3]) < 0:
+            out.flip()
+        return out
+
+    def translate(self, offset: Sequence[float]) -> "Mesh":
+        """A copy moved by `offset` (3 numbers)."""
+        t = np.eye(4)
+        t[:3, 3] = np.asarray(offset, dtype=np.float64).reshape(3)
+        return self.apply_transform(t)
+
+    def scale(self, factor: Any, center: Optional[Sequence[float]] = None) -> "Mesh":
+        """A copy scaled by `factor` (a number, or 3 per axis) about `center` (default the origin)."""
+        f = np.broadcast_to(np.asarray(factor, dtype=np.float64), (3,))
+        c = np.zeros(3) if center is None else np.asarray(center, dtype=np.float64).reshape(3)
+        t = np.eye(4)
+        t[:3, :3] = np.diag(f)
+        t[:3, 3] = c - f * c
+        return self.apply_transform(t)
+
+    @property
+    def vertex_colors(self) -> Optional[np.ndarray]:
+        """Per-vertex RGBA colours as an (n, 4) uint8 array (a copy), or None when the mesh has
+        none; read from PLY/OFF/OBJ files and written back by :meth:`write`. Assign an (n, 3) or
+        (n, 4) uint8 array to set them, None to drop them."""
+        return self._vertex_colors
+
+    @vertex_colors.setter
+    def vertex_colors(self, value: Any) -> None:
+        if value is None:
+            self._set_vertex_colors(None)
+            return
+        c = np.asarray(value)
+        if c.dtype != np.uint8:
+            if c.dtype.kind == "f" and c.size and c.min() >= 0 and c.max() <= 1:
+                c = np.round(c * 255)
+            c = c.astype(np.uint8)
+        self._set_vertex_colors(np.ascontiguousarray(c))
+
+    def __getstate__(self) -> dict:
+        state = {"vertices": np.array(self._positions()), "polygons": self.polygons}
+        colors = self._vertex_colors
+        if colors is not None:
+            state["vertex_colors"] = colors
+        return state
+
+    def __setstate__(self, state: dict) -> None:
+        # Called on a fresh Mesh() (see __reduce__). A pickled mesh was valid: rebuild it exactly, refusing (never repairing) anything else.
+        self._set_polygons_checked(_vertex_array(state["vertices"]), state["polygons"], repair=False)
+        if state.get("vertex_colors") is not None:
+            self._set_vertex_colors(np.ascontiguousarray(state["vertex_colors"], dtype=np.uint8))
+
+    def __reduce__(self) -> Any:
+        return (Mesh, (), self.__getstate__())
+
+    # The one vocabulary (as smoothing and the CLI): fix_boundary, fixed_vertices, max_edges.
+
+    def decimate(self, *, keep_boundary: Optional[bool] = None, locked_vertices: Optional[Sequence[int]] = None,
+                 **options: Any) -> dict:
+        """Quadric error decimation: see :meth:`MeshCore.decimate`. ``keep_boundary`` and
+        ``locked_vertices`` are the deprecated names of ``fix_boundary`` and ``fixed_vertices``."""
+        if keep_boundary is not None:
+            warnings.warn("decimate: keep_boundary is deprecated; use fix_boundary", DeprecationWarning, stacklevel=2)
+            options.setdefault("fix_boundary", keep_boundary)
+        if locked_vertices is not None:
+            warnings.warn("decimate: locked_vertices is deprecated; use fixed_vertices", DeprecationWarning,
+                          stacklevel=2)
+            options.setdefault("fixed_vertices", locked_vertices)
+        return super().decimate(**options)
+
+    def fill_holes(self, max_edges: Optional[int] = None, *, max_size: Optional[int] = None, **options: Any) -> dict:
+        """Fill every hole of at most `max_edges` boundary edges (default: the CLI's, from the
+        library): see :meth:`MeshCore.fill_holes`. ``max_size`` is its deprecated name."""
+        if max_size is not None:
+            warnings.warn("fill_holes: max_size is deprecated; use max_edges", DeprecationWarning, stacklevel=2)
+            if max_edges is None:
+                max_edges = max_size
+        if max_edges is None:
+            return super().fill_holes(**options)
+        return super().fill_holes(max_edges, **options)
 
     def to_trimesh(self) -> Any:
         """A ``trimesh.Trimesh`` copy (needs trimesh; triangles only, as trimesh holds)."""
@@ -338,14 +498,22 @@ def as_mesh(mesh: Any) -> Mesh:
     raise ValueError("expected a hmira.Mesh, a (vertices, faces) pair, or an object with .vertices and .faces")
 
 
-def read_mesh(path: Any, *, weld_stl: bool = True) -> Mesh:
+def read_mesh(path: Any, *, weld_stl: bool = True, repair: bool = True) -> Mesh:
     """Read an OBJ, OFF, PLY or STL file (chosen by extension) into a :class:`Mesh`.
+
+    A file a half-edge mesh cannot hold as it is (non-manifold edges or vertices, faces wound
+    against each other, degenerate faces) is repaired, as the CLI's editing commands do, and
+    never silently: a :class:`RepairWarning` carries the one-line summary the CLI prints, and
+    the mesh's ``repairs`` attribute keeps it ("" when nothing was repaired). ``hmira validate``
+    describes the file as it is.
 
     Parameters
     ----------
     path : str or os.PathLike
     weld_stl : bool, keyword-only
         STL: weld corners with equal coordinates (default), else a triangle soup.
+    repair : bool, keyword-only
+        False: refuse such a file (ValueError naming the first face at fault) instead.
 
     Raises
     ------
@@ -363,8 +531,78 @@ def read_mesh(path: Any, *, weld_stl: bool = True) -> Mesh:
     1
     """
     m = Mesh()
-    m._read(str(path), weld_stl=weld_stl)
+    summary = m._read_reported(os.fspath(path), weld_stl=weld_stl, repair=repair)
+    m.repairs = summary
+    if summary:
+        warnings.warn(f"{os.fspath(path)}: repaired for editing: {summary}", RepairWarning, stacklevel=2)
     return m
+
+
+def _read_sidecar(path: str) -> dict:
+    """The grid of a .raw volume from the "key: value" sidecar ``hmira voxelize`` writes next to it."""
+    fields = {}
+    with open(path, encoding="utf-8") as f:
+        for line in f:
+            line = line.split("#", 1)[0].strip()
+            if ":" in line:
+                key, value = line.split(":", 1)
+                fields[key.strip()] = value.strip()
+    return fields
+
+
+def read_volume(path: Any, *, dims: Optional[Sequence[int]] = None, dtype: Optional[str] = None,
+                spacing: Optional[Sequence[float]] = None, origin: Optional[Sequence[float]] = None,
+                big_endian: bool = False) -> Tuple[np.ndarray, Tuple[float, float, float], Tuple[float, float, float]]:
+    """Read a volume that ``hmira mc`` reads: .inr, .inr.gz, or .raw (x fastest, no header).
+
+    A .raw volume's grid comes from its sidecar (``<path>.txt``, as ``hmira voxelize`` writes
+    it) or from `dims`, `dtype`, `spacing` and `origin`, which override it (the CLI's
+    ``--dims``, ``--type``, ``--spacing``, ``--origin``).
+
+    Returns
+    -------
+    volume : ndarray, shape (nx, ny, nz)
+        ``volume[i, j, k]`` is the sample at ``origin + spacing * (i, j, k)`` (Fortran-ordered,
+        no copy); .inr samples as float32, .raw samples in their stored type.
+    spacing, origin : tuple of 3 floats
+        Pass them on: ``hmira.marching_cubes(volume, iso, spacing=spacing, origin=origin)``.
+
+    Examples
+    --------
+    >>> import numpy as np, hmira, os, tempfile
+    >>> path = os.path.join(tempfile.mkdtemp(), "v.raw")
+    >>> np.arange(24, dtype=np.uint8).tofile(path)
+    >>> volume, spacing, origin = hmira.read_volume(path, dims=(2, 3, 4), dtype="uint8")
+    >>> volume.shape, int(volume[1, 0, 0]), int(volume[0, 1, 0])
+    ((2, 3, 4), 1, 2)
+    """
+    p = os.fspath(path)
+    lower = p.lower()
+    if lower.endswith(".inr") or lower.endswith(".inr.gz"):
+        if dims is not None or dtype is not None or spacing is not None or origin is not None:
+            raise ValueError("read_volume: dims, dtype, spacing and origin describe .raw volumes only")
+        volume, sp, org = _core._read_inr(p)
+        return volume, tuple(sp), tuple(org)
+    if not lower.endswith(".raw"):
+        raise ValueError(f"read_volume: {p}: not a .inr, .inr.gz or .raw volume")
+    side = _read_sidecar(p + ".txt") if os.path.exists(p + ".txt") else {}
+
+    def numbers(given: Any, key: str, default: Any, kind: Any) -> list:
+        if given is None:
+            if key not in side:
+                if default is None:
+                    raise ValueError(f"read_volume: {p} needs {key} (no sidecar {p}.txt says it)")
+                return list(default)
+            given = side[key].split(",")
+        values = [kind(x) for x in np.atleast_1d(given)]
+        return values * 3 if len(values) == 1 and key == "spacing" else values
+
+    grid_dims = numbers(dims, "dims", None, int)
+    sample = dtype if dtype is not None else side.get("type", "float32")
+    volume, sp, org = _core._read_raw(p, dims=grid_dims, type=np.dtype(sample).name,
+                                      spacing=numbers(spacing, "spacing", (1.0, 1.0, 1.0), float),
+                                      origin=numbers(origin, "origin", (0.0, 0.0, 0.0), float), big_endian=big_endian)
+    return volume, tuple(sp), tuple(org)
 
 
 def write_mesh(path: Any, mesh: Any, *, ascii: bool = False, big_endian: bool = False, float32: bool = False,

@@ -180,13 +180,15 @@ def _fragment(view_name: str, up: str) -> str:
 
 def render(mesh: Any, path: Any, *, view: str = "iso", up: str = "y", size: Tuple[int, int] = (800, 600), compare: Any = None,
            info: bool = False, timeout: float = 120.0) -> None:
-    """Write a PNG of the mesh as the viewer draws it, through headless Chromium.
+    """Write a picture of the mesh as the viewer draws it, through headless Chromium.
 
     Parameters
     ----------
     mesh : as :func:`view`
     path : str or os.PathLike
-        The PNG to write (atomically: a failure leaves an existing file alone).
+        The picture to write (atomically: a failure leaves an existing file alone), by
+        extension: ``.png``; ``.jpg``/``.jpeg`` and ``.webp`` are converted from Chromium's PNG
+        with Pillow (ValueError when Pillow is missing); any other extension is refused.
     view : {"iso", "front", "back", "left", "right", "top", "bottom"}, keyword-only
         Where the camera looks from ("side" is "right").
     up : {"y", "z"}, keyword-only
@@ -202,10 +204,13 @@ def render(mesh: Any, path: Any, *, view: str = "iso", up: str = "y", size: Tupl
 
     Raises
     ------
+    ValueError
+        An extension other than .png, .jpg, .jpeg or .webp, or a .jpg/.webp without Pillow.
     RuntimeError
         No Chromium (install it with ``apt install chromium``), no viewer bundle, or Chromium
         failed or timed out (the message carries its output).
     """
+    encode = _encoder_for(path)
     width, height = (int(x) for x in size)
     if not (16 <= width <= 4096 and 16 <= height <= 4096):
         raise ValueError(f"render: size must be two integers in 16..4096, got {tuple(size)}")
@@ -222,7 +227,34 @@ def render(mesh: Any, path: Any, *, view: str = "iso", up: str = "y", size: Tupl
             f.write(page)
         url = "file://" + page_path + "#" + fragment
         png = _screenshot(chromium, url, work, width, height, timeout)
-    _write_atomically(path, png)
+    _write_atomically(path, encode(png))
+
+
+def _encoder_for(path: Any) -> Any:
+    """The function turning Chromium's PNG bytes into the bytes `path`'s extension asks for;
+    ValueError, before any work, for an extension it cannot honour."""
+    ext = os.path.splitext(os.fspath(path))[1].lower()
+    if ext == ".png":
+        return lambda png: png
+    formats = {".jpg": "JPEG", ".jpeg": "JPEG", ".webp": "WEBP"}
+    if ext not in formats:
+        raise ValueError(f"render: cannot write {ext or 'a file without extension'!r}; use .png, .jpg, .jpeg or .webp")
+    try:
+        from PIL import Image
+    except ImportError:
+        raise ValueError(f"render: writing {ext} needs Pillow (pip install pillow); .png needs nothing more") from None
+
+    def convert(png: bytes) -> bytes:
+        import io
+
+        out = io.BytesIO()
+        image = Image.open(io.BytesIO(png))
+        if formats[ext] == "JPEG":
+            image = image.convert("RGB")  # JPEG has no alpha
+        image.save(out, format=formats[ext])
+        return out.getvalue()
+
+    return convert
 
 
 def _screenshot(chromium: str, url: str, work: str, width: int, height: int, timeout: float) -> bytes:

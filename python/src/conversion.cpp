@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include <hmira/algorithms/conversion/iso_level.hpp>
 #include <hmira/algorithms/conversion/marching_cubes.hpp>
 #include <hmira/algorithms/conversion/voxelize.hpp>
 #include <hmira/algorithms/conversion/voxelize_blocks.hpp>
@@ -32,20 +33,24 @@ constexpr const char* MC_DOC = R"doc(Extract the iso-surface of a 3-D volume as 
 Parameters
 ----------
 volume : ndarray, shape (n0, n1, n2)
-    Samples, float32, float64, uint8, uint16 or int16; C- or Fortran-ordered or
-    strided, read in place (never copied). A NaN or infinite sample raises
-    ValueError naming it ("volume[3, 4, 5] is inf").
-iso : float
+    Samples of any float, integer or bool dtype (hmira.marching_cubes also takes
+    nested lists); C- or Fortran-ordered or strided, read in place (never copied).
+    A NaN or infinite sample raises ValueError naming it ("volume[3, 4, 5] is inf").
+iso : float, optional
     The iso value, within the samples' range [min, max]: outside it there is no
-    surface, and ValueError names the range. Scans (CT, MRI) need a positive iso
-    and ``inside="above"``, e.g. ``hmira.marching_cubes(ct, 300.0, inside="above")``.
+    surface, and ValueError names the range. Default: the midpoint of the range
+    (as scikit-image), so a default never gives an empty mesh. A signed distance
+    field wants ``iso=0.0``; scans (CT, MRI) want ``inside="above"``, e.g.
+    ``hmira.marching_cubes(ct, 300.0, inside="above")``.
 spacing : sequence of 3 floats, keyword-only
     Distance between samples along array axes 0, 1, 2.
 origin : sequence of 3 floats, keyword-only
     Position of sample [0, 0, 0].
 inside : {"below", "above"}, keyword-only
     Which side of `iso` is the solid ("below" for signed distances, "above" for
-    CT/MRI scans). Triangles wind counter-clockwise seen from outside.
+    CT/MRI scans and label maps). Triangles wind counter-clockwise seen from outside
+    the solid: a label map or scan left at "below" takes the background for the
+    solid and comes out inside-out (``hmira.Mesh(v, f).volume()`` is negative).
 threads : int, keyword-only
     Worker threads (0: all cores). The output does not depend on it.
 
@@ -64,7 +69,7 @@ Examples
 --------
 >>> import numpy as np, hmira
 >>> x, y, z = np.mgrid[-1:1:32j, -1:1:32j, -1:1:32j]
->>> v, f = hmira.marching_cubes(x**2 + y**2 + z**2 - 0.5, 0.0)
+>>> v, f = hmira.marching_cubes(x**2 + y**2 + z**2 - 0.5, 0.0)  # the zero level of a distance
 >>> v.shape[1], f.dtype.name, len(f) == 2 * len(v) - 4
 (3, 'int32', True)
 )doc";
@@ -122,10 +127,22 @@ vec3<double> triple(const std::vector<double>& v, const char* name) {
 
 using mc_volume = nb::ndarray<nb::ro, nb::ndim<3>, nb::device::cpu>;
 
+/// Marching cubes over grid `g`; without an iso, at the midpoint of its samples' range (the library's
+/// default_iso, as scikit-image). A range that cannot be read (a non-finite sample) is left for
+/// marching cubes to report, naming the sample as the caller's array indexes it.
+template <hmira::voxel_grid G>
+hmira::result<hmira::indexed_triangles<double>> run_mc(const G& g, hmira::marching_cubes_options options,
+                                                       bool iso_given) {
+    if (!iso_given)
+        if (auto iso = hmira::default_iso(g)) options.iso = *iso;
+    return hmira::marching_cubes_indexed<double>(g, options);
+}
+
 template <class V>
 hmira::result<hmira::indexed_triangles<double>> extract(const mc_volume& volume, const vec3<double>& spacing,
                                                         const vec3<double>& origin,
-                                                        const hmira::marching_cubes_options& options, bool& swapped) {
+                                                        const hmira::marching_cubes_options& options, bool iso_given,
+                                                        bool& swapped) {
     const auto* p = static_cast<const V*>(volume.data());
     const std::size_t n0 = volume.shape(0), n1 = volume.shape(1), n2 = volume.shape(2);
     const std::int64_t s0 = volume.stride(0), s1 = volume.stride(1), s2 = volume.stride(2);
@@ -135,24 +152,24 @@ hmira::result<hmira::indexed_triangles<double>> extract(const mc_volume& volume,
     if (fits(n0, s0, 1) && fits(n1, s1, std::int64_t(n0)) && fits(n2, s2, std::int64_t(n0 * n1))) {
         // Fortran order: array axis 0 runs along memory, as the grid's x does.
         const contiguous_view<V> g{p, {n0, n1, n2}, origin, spacing};
-        return hmira::marching_cubes_indexed<double>(g, options);
+        return run_mc(g, options, iso_given);
     }
     if (fits(n2, s2, 1) && fits(n1, s1, std::int64_t(n2)) && fits(n0, s0, std::int64_t(n1 * n2))) {
         // C order: the grid's x is array axis 2; the caller swaps columns 0 and 2 back.
         swapped = true;
         const contiguous_view<V> g{
             p, {n2, n1, n0}, {origin.z, origin.y, origin.x}, {spacing.z, spacing.y, spacing.x}, true};
-        return hmira::marching_cubes_indexed<double>(g, options);
+        return run_mc(g, options, iso_given);
     }
     const strided_view<V> g{p, {n0, n1, n2}, {s0, s1, s2}, origin, spacing};
-    return hmira::marching_cubes_indexed<double>(g, options);
+    return run_mc(g, options, iso_given);
 }
 
-nb::tuple marching_cubes(const mc_volume& volume, double iso, const std::vector<double>& spacing,
+nb::tuple marching_cubes(const mc_volume& volume, std::optional<double> iso, const std::vector<double>& spacing,
                          const std::vector<double>& origin, const std::string& inside, unsigned threads) {
     const auto sp = triple(spacing, "spacing"), org = triple(origin, "origin");
     interrupt_watch watch;
-    hmira::marching_cubes_options options{.iso = iso,
+    hmira::marching_cubes_options options{.iso = iso.value_or(0.0),
                                           .inside = choice_arg<hmira::iso_inside>(inside, "marching_cubes", "inside"),
                                           .normals = false,
                                           .threads = threads,
@@ -163,19 +180,33 @@ nb::tuple marching_cubes(const mc_volume& volume, double iso, const std::vector<
     {
         nb::gil_scoped_release release;
         cpp_timer timer;
+        const bool given = iso.has_value();
         if (dt == nb::dtype<float>())
-            r = extract<float>(volume, sp, org, options, swapped);
+            r = extract<float>(volume, sp, org, options, given, swapped);
         else if (dt == nb::dtype<double>())
-            r = extract<double>(volume, sp, org, options, swapped);
+            r = extract<double>(volume, sp, org, options, given, swapped);
         else if (dt == nb::dtype<std::uint8_t>())
-            r = extract<std::uint8_t>(volume, sp, org, options, swapped);
+            r = extract<std::uint8_t>(volume, sp, org, options, given, swapped);
         else if (dt == nb::dtype<std::uint16_t>())
-            r = extract<std::uint16_t>(volume, sp, org, options, swapped);
+            r = extract<std::uint16_t>(volume, sp, org, options, given, swapped);
         else if (dt == nb::dtype<std::int16_t>())
-            r = extract<std::int16_t>(volume, sp, org, options, swapped);
+            r = extract<std::int16_t>(volume, sp, org, options, given, swapped);
+        else if (dt == nb::dtype<std::int8_t>())
+            r = extract<std::int8_t>(volume, sp, org, options, given, swapped);
+        else if (dt == nb::dtype<std::int32_t>())
+            r = extract<std::int32_t>(volume, sp, org, options, given, swapped);
+        else if (dt == nb::dtype<std::uint32_t>())
+            r = extract<std::uint32_t>(volume, sp, org, options, given, swapped);
+        else if (dt == nb::dtype<std::int64_t>())
+            r = extract<std::int64_t>(volume, sp, org, options, given, swapped);
+        else if (dt == nb::dtype<std::uint64_t>())
+            r = extract<std::uint64_t>(volume, sp, org, options, given, swapped);
+        else if (dt == nb::dtype<bool>())
+            r = extract<bool>(volume, sp, org, options, given, swapped);
         else
             r = hmira::fail(hmira::errc::invalid_argument,
-                            "marching_cubes: volume dtype must be float32, float64, uint8, uint16 or int16");
+                            "marching_cubes: volume dtype must be a float (float32, float64), an integer (int8 to "
+                            "int64, uint8 to uint64) or bool");
     }
     watch.rethrow();
     auto tri = take(std::move(r));
@@ -465,7 +496,7 @@ void bind_conversion(nb::module_& m) {
     const hmira::marching_cubes_options mc;
     const hmira::voxelize_options vox;
     const bool fill_open = vox.open_mesh == hmira::open_mesh_fill::winding_number;
-    m.def("marching_cubes", &marching_cubes, nb::arg("volume"), nb::arg("iso") = mc.iso, nb::kw_only(),
+    m.def("marching_cubes", &marching_cubes, nb::arg("volume"), nb::arg("iso") = nb::none(), nb::kw_only(),
           nb::arg("spacing") = std::vector<double>{1, 1, 1}, nb::arg("origin") = std::vector<double>{0, 0, 0},
           nb::arg("inside") = name_of(mc.inside), nb::arg("threads") = mc.threads, MC_DOC);
     m.def("_voxelize", &voxelize, nb::arg("vertices"), nb::arg("faces"), nb::kw_only(),

@@ -18,27 +18,28 @@ hmira::fill_hole_options fill_options(std::size_t max_dynamic_programming_edges,
     return o;
 }
 
-nb::list open_holes(const hmira::fill_holes_result& r, std::size_t max_size) {
+nb::list open_holes(const hmira::fill_holes_result& r, std::size_t max_edges) {
     nb::list open;
     for (const auto& h : r.open) {
         nb::dict e;
         e["vertex"] = h.vertex;
         e["edges"] = h.edges;
         e["reason"] = h.reason == hmira::open_hole_reason::too_long
-                          ? "a loop of " + std::to_string(h.edges) + " edges > max_size " + std::to_string(max_size)
+                          ? "a loop of " + std::to_string(h.edges) + " edges > max_edges " + std::to_string(max_edges)
                           : h.message;
         open.append(e);
     }
     return open;
 }
 
-nb::dict fill_holes(py_mesh& s, std::size_t max_size, std::size_t max_dynamic_programming_edges, bool refine,
+nb::dict fill_holes(py_mesh& s, std::size_t max_edges, std::size_t max_dynamic_programming_edges, bool refine,
                     const std::string& fair) {
     const auto o = fill_options(max_dynamic_programming_edges, refine, fair, "fill_holes");
+    if (max_edges < 3) value_error("fill_holes: max_edges must be at least 3, got " + std::to_string(max_edges));
     const auto r = change_compacted(s, [&](halfedge_mesh& m, hmira::progress_function progress) {
         auto with_progress = o;
         with_progress.progress = std::move(progress);
-        return hmira::fill_holes(m, max_size, with_progress);
+        return hmira::fill_holes(m, max_edges, with_progress);
     });
     nb::dict d;
     d["filled"] = r.filled;
@@ -46,7 +47,7 @@ nb::dict fill_holes(py_mesh& s, std::size_t max_size, std::size_t max_dynamic_pr
     d["faces_added"] = r.faces_added;
     d["vertices_added"] = r.vertices_added;
     d["unfaired"] = r.unfaired;
-    d["open"] = open_holes(r, max_size);
+    d["open"] = open_holes(r, max_edges);
     return d;
 }
 
@@ -77,10 +78,10 @@ void bind_mesh_holes(nb::class_<py_mesh>& c) {
          "the patch is refined to the edge length around the hole, and fair='membrane' or 'thin-plate' (implies "
          "refine) smooths it. "
          "Returns the new faces.")
-        .def("fill_holes", &fill_holes, nb::arg("max_size"), nb::kw_only(),
+        .def("fill_holes", &fill_holes, nb::arg("max_edges") = hmira::fill_holes_default_max_edges, nb::kw_only(),
              nb::arg("max_dynamic_programming_edges") = defaults.max_dynamic_programming_edges,
              nb::arg("refine") = defaults.refine, nb::arg("fair") = name_of(defaults.fair),
-             "Fills every hole of at most max_size boundary edges (refine and fair as for fill_hole); returns "
+             "Fills every hole of at most max_edges boundary edges (the CLI's --max-edges and default) (refine and fair as for fill_hole); returns "
              "{'filled', 'skipped', "
              "'faces_added', 'vertices_added', 'unfaired', 'open'}, 'open' listing each hole left open as {'vertex', "
              "'edges', "

@@ -22,6 +22,8 @@
 
 namespace hmira_py {
 
+void bind_mesh_geometry(nb::class_<py_mesh>& c);
+
 namespace {
 
 /// Builds `fresh` in one pass (halfedge_mesh::assign_polygons) from an (n, 3) float64 array and
@@ -313,6 +315,7 @@ void bind_mesh(nb::module_& m) {
     bind_mesh_euler(core);
     bind_mesh_intersections(core);
     bind_mesh_spatial(core);
+    bind_mesh_geometry(core);  // bounds, area, volume, edges, split (mesh_geometry.cpp)
 }
 
 }  // namespace hmira_py

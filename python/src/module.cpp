@@ -5,6 +5,8 @@
 
 namespace hmira_py {
 
+void bind_volume_io(nb::module_& m);  // .inr / .raw volumes for hmira.read_volume (volume_io.cpp)
+
 void register_errors(nb::module_&) {
     nb::register_exception_translator([](const std::exception_ptr& p, void*) {
         try {
@@ -31,4 +33,5 @@ NB_MODULE(_core, m) {
     hmira_py::bind_spatial(m);
     hmira_py::bind_viewer(m);
     hmira_py::bind_blocks(m);
+    hmira_py::bind_volume_io(m);
 }

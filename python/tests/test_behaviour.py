@@ -265,7 +265,7 @@ def test_rss_grows_less_than_5_mb_over_1000_calls(tmp_path):
 LEAK_SCRIPT = """
 import numpy as np, hmira, tempfile, os
 x, y, z = np.mgrid[-1:1:24j, -1:1:24j, -1:1:24j]
-v, f = hmira.marching_cubes(x**2 + y**2 + z**2 - 0.5)
+v, f = hmira.marching_cubes(x**2 + y**2 + z**2 - 0.5, 0.0)
 m = hmira.Mesh(v, f); view = m.vertices; t = m.topology(); m.truncate([0]); c = m.copy()
 g = hmira.voxelize(v, f, resolution=8); d = hmira.delaunay_triangulation(v[:, :2], voronoi=True)
 p = os.path.join(tempfile.mkdtemp(), "m.ply"); hmira.write_mesh(p, c); r = hmira.read_mesh(p)

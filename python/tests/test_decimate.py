@@ -60,11 +60,11 @@ def test_boundary_vertices_stay_and_loops_are_kept():
     assert m.validate() == []
 
 
-def test_locked_vertices_keep_their_coordinates_exactly():
+def test_fixed_vertices_keep_their_coordinates_exactly():
     m = torus(holes=True)
     locked = list(range(0, 384, 7))
     pts = np.array(m.vertices)[locked].copy()
-    m.decimate(target_ratio=0.1, keep_boundary=False, locked_vertices=locked)
+    m.decimate(target_ratio=0.1, fix_boundary=False, fixed_vertices=locked)
     after = {tuple(p) for p in np.array(m.vertices).tolist()}
     assert all(tuple(p) in after for p in pts.tolist())
     assert m.validate() == []
@@ -101,7 +101,7 @@ def test_polygons_are_triangulated_first_with_a_note():
     [({}, "target_faces, target_ratio or max_error"), ({"target_ratio": float("nan")}, "target_ratio"),
      ({"target_ratio": 2.0}, "target_ratio"), ({"max_error": -1.0}, "max_error"),
      ({"target_faces": 10, "max_normal_angle": float("nan")}, "max_normal_angle"),
-     ({"target_faces": 10, "locked_vertices": [10**6]}, "decimate")])
+     ({"target_faces": 10, "fixed_vertices": [10**6]}, "decimate")])
 def test_bad_options_are_refused_by_name_and_change_nothing(kwargs, name):
     m = torus()
     before = (np.array(m.vertices).tolist(), m.polygons)

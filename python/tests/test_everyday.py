@@ -183,7 +183,7 @@ def test_fill_holes_on_a_real_mesh_matches_the_cli(data, cli, tmp_path):
 def test_fill_holes_refuses_a_bad_size_and_changes_nothing():
     m = hmira.Mesh(TETRA_V, TETRA_F[:3])
     before = state(m)
-    with pytest.raises(ValueError, match="max_size must be at least 3"):
+    with pytest.raises(ValueError, match="max_edges must be at least 3"):
         m.fill_holes(2)
     assert state(m) == before
 

@@ -86,5 +86,5 @@ def test_fill_holes_names_each_hole_it_leaves_open():
     assert r["filled"] == 0 and r["skipped"] == 2
     assert sorted(h["edges"] for h in r["open"]) == [64, 64]
     for h in r["open"]:
-        assert "64 edges > max_size 10" in h["reason"]
+        assert "64 edges > max_edges 10" in h["reason"]
         assert 0 <= h["vertex"] < 128

@@ -107,7 +107,7 @@ def test_bad_inputs_raise_value_error_with_the_message():
     with pytest.raises(ValueError, match="finite"):
         hmira.marching_cubes(ellipsoid(), np.inf)
     with pytest.raises(ValueError, match="dtype"):
-        hmira.marching_cubes(ellipsoid().astype(np.int64), 0.0)
+        hmira.marching_cubes(ellipsoid().astype(np.complex128), 0.0)
     with pytest.raises(TypeError):
         hmira.marching_cubes(np.zeros((4, 4)), 0.0)
 

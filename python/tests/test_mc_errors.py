@@ -52,12 +52,15 @@ def test_an_iso_outside_the_range_raises_naming_the_range(dtype):
     assert len(f) == 0
 
 
-def test_the_skull_at_the_default_iso_raises_and_at_the_gallery_iso_meshes(data):
+def test_the_skull_at_iso_0_raises_and_at_the_default_and_the_gallery_iso_meshes(data):
     vol, spacing = read_inr(data / "images" / "skull_2.9.inr")
     lo, hi = float(vol.min()), float(vol.max())
-    assert lo > 0  # the default iso 0 lies below every sample
+    assert lo > 0  # iso 0 lies below every sample
     with pytest.raises(ValueError, match=r"iso 0 is outside the samples' range \[" + re.escape(repr(lo).removesuffix(".0"))):
-        hmira.marching_cubes(vol, spacing=spacing)
+        hmira.marching_cubes(vol, 0.0, spacing=spacing)
+    v, f = hmira.marching_cubes(vol, spacing=spacing, inside="above")  # the default: the range's midpoint
+    ref_v, ref_f = hmira.marching_cubes(vol, lo / 2 + hi / 2, spacing=spacing, inside="above")
+    assert len(f) > 0 and np.array_equal(v, ref_v) and np.array_equal(f, ref_f)
     v, f = hmira.marching_cubes(vol, 2.9, spacing=spacing, inside="above")
     assert len(f) > 0 and np.isfinite(v).all()
 

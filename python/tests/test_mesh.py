@@ -103,7 +103,7 @@ def test_topology_and_validate_on_real_meshes_match_the_cli(data, cli):
 
 def test_topology_of_known_shapes():
     x, y, z = np.mgrid[-1.5:1.5:48j, -1.5:1.5:48j, -1.5:1.5:48j]
-    v, f = hmira.marching_cubes(np.sqrt((np.sqrt(x**2 + y**2) - 1) ** 2 + z**2) - 0.35)
+    v, f = hmira.marching_cubes(np.sqrt((np.sqrt(x**2 + y**2) - 1) ** 2 + z**2) - 0.35, 0.0)
     t = hmira.mesh_topology((v, f))
     assert (t.genus, t.components, t.boundary_loops, t.euler_characteristic) == (1, 1, 0, 0)
     open_cube = hmira.Mesh(CUBE_V, CUBE_F[1:])

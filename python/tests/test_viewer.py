@@ -94,7 +94,7 @@ def test_view_takes_arrays_objects_and_compare(tmp_path):
     assert hmira.view(duck).html == from_mesh
     # Triangles from marching cubes (int32 faces) go in as they are.
     x, y, z = np.mgrid[-1:1:20j, -1:1:20j, -1:1:20j]
-    v, f = hmira.marching_cubes(x**2 + y**2 + z**2 - 0.5)
+    v, f = hmira.marching_cubes(x**2 + y**2 + z**2 - 0.5, 0.0)
     info = scene_of(hmira.view((v, f)).html)["meshes"][0]["info"]
     assert (info["vertices"], info["faces"], info["genus"], info["closed"]) == (len(v), len(f), 0, True)
 
@@ -175,7 +175,7 @@ def extent(mask):
 def test_render_writes_a_png_of_the_mesh(tmp_path):
     chromium_or_fail()
     x, y, z = np.mgrid[-1:1:40j, -1:1:40j, -1:1:40j]
-    sphere = hmira.Mesh(*hmira.marching_cubes(x**2 + y**2 + z**2 - 0.5))
+    sphere = hmira.Mesh(*hmira.marching_cubes(x**2 + y**2 + z**2 - 0.5, 0.0))
     out = tmp_path / "sphere.png"
     hmira.render(sphere, out, size=(320, 240))
     assert out.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"

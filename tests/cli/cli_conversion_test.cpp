@@ -107,10 +107,16 @@ TEST(CliMarchingCubes, an_iso_outside_the_volumes_range_is_an_error_naming_the_r
     };
     const std::string range = "range [" + text(double(*lo)) + ", " + text(double(*hi)) + "]";
     for (const std::string how : {"", "--slab-slices 5", "--normals"}) {
-        const auto r = hmira(dir, "mc '" + skull.string() + "' s.ply " + how);
+        const auto r = hmira(dir, "mc '" + skull.string() + "' s.ply --iso 0 " + how);
         EXPECT_EQ(r.code, 1) << how << ": " << r.err;
         EXPECT_TRUE(one_line_error(r, std::string("iso 0 is outside the samples' ") + range)) << how;
         EXPECT_FALSE(std::filesystem::exists(dir.path() / "s.ply")) << how;
+    }
+    // Without --iso, a volume is cut at the midpoint of its range: never an empty surface, whole or by slabs.
+    for (const std::string how : {"", "--slab-slices 5"}) {
+        const auto r = hmira(dir, "mc '" + skull.string() + "' d.ply --inside above " + how);
+        EXPECT_EQ(r.code, 0) << how << ": " << r.err;
+        EXPECT_EQ(r.out.find(" 0 triangles"), std::string::npos) << r.out;
     }
     // Both volumes at the gallery's commands (the liver, 0 and 1, has 0 in its range).
     for (const std::string& cmd : {"mc '" + skull.string() + "' s.ply --iso 2.9 --inside above",

@@ -90,7 +90,7 @@ TEST(cli_decimate, bad_command_lines_exit_2_naming_the_option_and_leave_the_outp
         {"--faces -3", "--faces"},
         {"--faces 10 --max-normal-angle 200", "--max-normal-angle"},
         {"--faces 10 --max-aspect-ratio 0.5", "--max-aspect-ratio"},
-        {"--faces 10 --lock 100000", "--lock"},
+        {"--faces 10 --fix 100000", "--fix"},
         {"--faces 10 --no-such-option", "--no-such-option"},
     };
     for (const auto& [args, option] : cases) {

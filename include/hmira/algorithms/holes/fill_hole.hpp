@@ -113,6 +113,10 @@ struct fill_holes_result {
     std::vector<open_hole> open;     ///< each loop left open, in the order the loops were found, with its reason
 };
 
+/// fill_holes' `max_size` when a front end is not given one (the CLI's --max-edges, Python's
+/// max_edges): scan holes are filled, an open mesh's rim (usually longer) is left open.
+inline constexpr std::size_t fill_holes_default_max_edges = 1000;
+
 /// A mesh fill_holes can run on: the triangle operators, and halfedge indices to mark the
 /// boundary halfedges already visited.
 template <class M, class T = default_traits<M>>
