@@ -67,8 +67,8 @@ inline hmira::triangle_set set_of(const triangle_soup& s) {
 /// a fixed seed); zeros when either soup is empty.
 inline hausdorff_result hausdorff(const triangle_soup& a, const triangle_soup& b, std::size_t per_triangle = 10,
                                   std::size_t min_samples = 1000000) {
-    const auto h = hmira::hausdorff_distance(set_of(a), set_of(b),
-                                             {.per_triangle = per_triangle, .min_samples = min_samples});
+    const auto h =
+        hmira::hausdorff_distance(set_of(a), set_of(b), {.per_triangle = per_triangle, .min_samples = min_samples});
     if (!h) return {};
     return {h->a_to_b, h->b_to_a};
 }

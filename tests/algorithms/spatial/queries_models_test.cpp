@@ -46,7 +46,8 @@ hmira_test::face_list uv_sphere(std::size_t slices, std::size_t stacks) {
     auto id = [&](std::size_t j, std::size_t i) { return 1 + (j - 1) * slices + i % slices; };
     for (std::size_t i = 0; i < slices; ++i) s.faces.push_back({0, id(1, i), id(1, i + 1)});
     for (std::size_t j = 1; j + 1 < stacks; ++j)
-        for (std::size_t i = 0; i < slices; ++i) s.faces.push_back({id(j, i), id(j + 1, i), id(j + 1, i + 1), id(j, i + 1)});
+        for (std::size_t i = 0; i < slices; ++i)
+            s.faces.push_back({id(j, i), id(j + 1, i), id(j + 1, i + 1), id(j, i + 1)});
     for (std::size_t i = 0; i < slices; ++i) s.faces.push_back({id(stacks - 1, i), south, id(stacks - 1, i + 1)});
     return s;
 }

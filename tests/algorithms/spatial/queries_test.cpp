@@ -146,8 +146,10 @@ TEST(signed_distance, winding_sign_is_right_on_an_open_hemisphere) {
     std::vector<int> inside;
     for (const auto& p : random_points(600 * scale, 1.5, 11)) {
         const double r = hmira::norm(p);
-        if (r < 0.85 && p.z > 0.1) q.push_back(p), inside.push_back(1);           // under the dome
-        else if (r > 1.1 || (p.z < -0.2 && r < 0.8)) q.push_back(p), inside.push_back(0);  // away, or below the rim
+        if (r < 0.85 && p.z > 0.1)
+            q.push_back(p), inside.push_back(1);  // under the dome
+        else if (r > 1.1 || (p.z < -0.2 && r < 0.8))
+            q.push_back(p), inside.push_back(0);  // away, or below the rim
     }
     const auto t = tally(s, q, inside);
     EXPECT_EQ(t.wrong_winding, 0u);
@@ -190,8 +192,10 @@ TEST(signed_distance, winding_sign_is_right_on_a_sphere_with_flipped_faces) {
     std::vector<int> inside;
     for (const auto& p : random_points(600 * scale, 1.5, 13)) {
         const double r = hmira::norm(p);
-        if (r < 0.8) q.push_back(p), inside.push_back(1);
-        else if (r > 1.2) q.push_back(p), inside.push_back(0);
+        if (r < 0.8)
+            q.push_back(p), inside.push_back(1);
+        else if (r > 1.2)
+            q.push_back(p), inside.push_back(0);
     }
     // Make sure some points sit right under a flipped face, where its normal decides.
     for (std::size_t i = 0; i < tris.size(); i += 10) {
@@ -401,10 +405,11 @@ TEST(hausdorff_distance, matches_a_brute_force_scan_on_small_meshes) {
         for (const auto& t : tf)
             for (int i = 0; i <= n; ++i)
                 for (int j = 0; i + j <= n; ++j) {
-                    const v3 p = pf[t[0]] + (pf[t[1]] - pf[t[0]]) * (double(i) / n) +
-                                 (pf[t[2]] - pf[t[0]]) * (double(j) / n);
+                    const v3 p =
+                        pf[t[0]] + (pf[t[1]] - pf[t[0]]) * (double(i) / n) + (pf[t[2]] - pf[t[0]]) * (double(j) / n);
                     double d = 1e300;
-                    for (const auto& u : tt) d = std::min(d, brute_distance_to_triangle(p, pt[u[0]], pt[u[1]], pt[u[2]]));
+                    for (const auto& u : tt)
+                        d = std::min(d, brute_distance_to_triangle(p, pt[u[0]], pt[u[1]], pt[u[2]]));
                     worst = std::max(worst, d);
                 }
         return worst;
@@ -487,7 +492,8 @@ TEST(winding_number, real_meshes_fast_within_bound_and_zero_outside_the_box) {
     for (std::size_t i = 0; i < 40 * scale; ++i) {
         v3 p;
         for (std::size_t k = 0; k < 3; ++k)
-            p[k] = std::uniform_real_distribution<double>(lo[k] - 0.2 * (hi[k] - lo[k]), hi[k] + 0.2 * (hi[k] - lo[k]))(rng);
+            p[k] = std::uniform_real_distribution<double>(lo[k] - 0.2 * (hi[k] - lo[k]),
+                                                          hi[k] + 0.2 * (hi[k] - lo[k]))(rng);
         q.push_back(p);
     }
     const auto direct = hmira::winding_number(*s, q, {.method = hmira::winding_method::direct});

@@ -15,10 +15,10 @@ namespace hmira {
 
 /// Options of hausdorff_distance.
 struct hausdorff_options {
-    std::size_t per_triangle = 10;       ///< at least this many random points per triangle
-    std::size_t min_samples = 1000000;   ///< and at least this many per surface, spread evenly over its triangles
+    std::size_t per_triangle = 10;      ///< at least this many random points per triangle
+    std::size_t min_samples = 1000000;  ///< and at least this many per surface, spread evenly over its triangles
     std::uint64_t seed = 0x9e3779b97f4a7c15ull;  ///< triangle i draws from std::mt19937_64(seed ^ i)
-    unsigned threads = 0;                ///< worker threads (0: all); the answers do not depend on it
+    unsigned threads = 0;                        ///< worker threads (0: all); the answers do not depend on it
 };
 
 /// One direction: from sample points on one surface to the other surface.

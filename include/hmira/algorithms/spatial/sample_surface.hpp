@@ -36,11 +36,11 @@ struct sample_surface_options {
 
 /// The samples: point i = sum over k of barycentrics[i][k] * position(corners[i][k]).
 struct surface_samples {
-    std::vector<vec3<double>> points;                      ///< on the surface
-    std::vector<std::size_t> faces;                        ///< T::face_index of each point's face
-    std::vector<std::array<double, 3>> barycentrics;       ///< non-negative, summing to 1
-    std::vector<std::array<std::size_t, 3>> corners;       ///< the vertex indices they weigh (a polygon's
-                                                           ///< triangle, as triangles_of cuts it)
+    std::vector<vec3<double>> points;                 ///< on the surface
+    std::vector<std::size_t> faces;                   ///< T::face_index of each point's face
+    std::vector<std::array<double, 3>> barycentrics;  ///< non-negative, summing to 1
+    std::vector<std::array<std::size_t, 3>> corners;  ///< the vertex indices they weigh (a polygon's
+                                                      ///< triangle, as triangles_of cuts it)
 };
 
 /// `count` points on the surface of `mesh` (faces triangulated as triangles_of does).

@@ -44,9 +44,9 @@ struct signed_distance_options {
 
 /// Per query point: the signed distance, the closest surface point and the face it lies on.
 struct signed_distances {
-    std::vector<double> distances;         ///< |p - closest|, negative inside; NaN for a propagated NaN point
-    std::vector<vec3<double>> closest;     ///< the closest point on the surface
-    std::vector<std::size_t> faces;        ///< T::face_index of the face holding it
+    std::vector<double> distances;      ///< |p - closest|, negative inside; NaN for a propagated NaN point
+    std::vector<vec3<double>> closest;  ///< the closest point on the surface
+    std::vector<std::size_t> faces;     ///< T::face_index of the face holding it
 };
 
 /// Which points of `points` lie inside `mesh`: 1 where the winding number is at least 1/2.

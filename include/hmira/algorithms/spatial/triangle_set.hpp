@@ -90,8 +90,8 @@ template <class M, class T = default_traits<M>>
 /// Errors: errc::invalid_argument naming the triangle or the point (`who` prefixes it).
 /// Complexity: O(V + F).
 [[nodiscard]] inline result<triangle_set> make_triangle_set(std::span<const vec3<double>> points,
-                                                           std::span<const std::array<std::uint32_t, 3>> triangles,
-                                                           std::string_view who = "make_triangle_set") {
+                                                            std::span<const std::array<std::uint32_t, 3>> triangles,
+                                                            std::string_view who = "make_triangle_set") {
     triangle_set out;
     out.points.assign(points.begin(), points.end());
     for (std::size_t i = 0; i < points.size(); ++i)
@@ -105,8 +105,8 @@ template <class M, class T = default_traits<M>>
         for (auto c : triangles[i])
             if (c >= points.size())
                 return fail(errc::invalid_argument,
-                            std::string(who) + ": triangle " + std::to_string(i) + " uses vertex " +
-                                std::to_string(c) + ", but there are " + std::to_string(points.size()),
+                            std::string(who) + ": triangle " + std::to_string(i) + " uses vertex " + std::to_string(c) +
+                                ", but there are " + std::to_string(points.size()),
                             (long long)i);
         out.faces[i] = i;
     }

@@ -47,9 +47,9 @@ struct winding_number_options {
     /// centre holding its triangles) is replaced by its expansion when the point lies farther
     /// than beta * r from the centre. Larger is slower and more accurate; must exceed 1.
     double beta = 2.0;
-    bool error_bounds = false;        ///< also return each point's guaranteed error bound
+    bool error_bounds = false;           ///< also return each point's guaranteed error bound
     nan_policy nan = nan_policy::error;  ///< non-finite query points
-    unsigned threads = 0;             ///< worker threads (0: all); the answers do not depend on it
+    unsigned threads = 0;                ///< worker threads (0: all); the answers do not depend on it
 };
 
 /// The winding numbers, one per query point, and (when asked for) the bound on each one's error.

@@ -30,8 +30,7 @@ struct distance_sums {
     }
 };
 
-inline one_sided_distance sampled_distance(const triangle_set& from, const aabb_tree& to,
-                                           const hausdorff_options& o) {
+inline one_sided_distance sampled_distance(const triangle_set& from, const aabb_tree& to, const hausdorff_options& o) {
     const std::size_t f = from.triangles.size();
     const std::size_t k = std::max(o.per_triangle, (o.min_samples + f - 1) / f);
     // Only the vertices a triangle uses: a model may keep deleted vertices below its bound.

@@ -129,15 +129,13 @@ inline result<surface_samples> sample_surface(const triangle_set& surface, std::
                                               const sample_surface_options& options) {
     namespace ds = detail::spatial;
     const auto areas = ds::areas_of(surface);
-    if (!(areas.total() > 0))
-        return fail(errc::invalid_argument, "sample_surface: the mesh has no area to sample");
+    if (!(areas.total() > 0)) return fail(errc::invalid_argument, "sample_surface: the mesh has no area to sample");
     ds::uniform01 u(options.seed);
     const std::size_t candidates = options.method == sampling_method::poisson_disk ? 5 * count : count;
     surface_samples out;
     out.points.reserve(candidates);
     for (std::size_t i = 0; i < candidates; ++i) ds::add_uniform_sample(surface, areas, u, out);
-    if (options.method == sampling_method::poisson_disk && count > 0)
-        return ds::eliminate(out, count, areas.total());
+    if (options.method == sampling_method::poisson_disk && count > 0) return ds::eliminate(out, count, areas.total());
     return out;
 }
 

@@ -21,10 +21,9 @@ result<dense_grid<V>> signed_distance_grid(const triangle_set& surface, const gr
                                            const signed_distance_grid_options& options) {
     if (auto ok = check_grid_geometry(g, "signed_distance_grid"); !ok) return ok.error();
     if (!(options.band > 0))
-        return fail(errc::invalid_argument, "signed_distance_grid: band must be positive, got " +
-                                                std::to_string(options.band));
-    if (surface.triangles.empty())
-        return fail(errc::invalid_argument, "signed_distance_grid: the mesh has no faces");
+        return fail(errc::invalid_argument,
+                    "signed_distance_grid: band must be positive, got " + std::to_string(options.band));
+    if (surface.triangles.empty()) return fail(errc::invalid_argument, "signed_distance_grid: the mesh has no faces");
     if (auto ok = detail::spatial::check_winding_options({.beta = options.beta}, "signed_distance_grid"); !ok)
         return ok.error();
     const detail::spatial::distance_engine engine(surface, options.sign);
@@ -34,8 +33,7 @@ result<dense_grid<V>> signed_distance_grid(const triangle_set& surface, const gr
             for (std::size_t r = r0; r < r1; ++r) {
                 const std::size_t j = r % g.dims[1], k = r / g.dims[1];
                 for (std::size_t i = 0; i < g.dims[0]; ++i)
-                    grid.set(i, j, k,
-                             V(engine.at(g.position(i, j, k), options.beta, options.band, nullptr, nullptr)));
+                    grid.set(i, j, k, V(engine.at(g.position(i, j, k), options.beta, options.band, nullptr, nullptr)));
             }
         });
     });

@@ -158,8 +158,7 @@ inline result<std::vector<std::uint8_t>> contains(const triangle_set& surface, s
 
 inline result<signed_distances> signed_distance(const triangle_set& surface, std::span<const vec3<double>> points,
                                                 const signed_distance_options& options) {
-    if (auto ok = detail::spatial::check_query(surface, points, options.nan, "signed_distance"); !ok)
-        return ok.error();
+    if (auto ok = detail::spatial::check_query(surface, points, options.nan, "signed_distance"); !ok) return ok.error();
     if (auto ok = detail::spatial::check_winding_options({.beta = options.beta}, "signed_distance"); !ok)
         return ok.error();
     const detail::spatial::distance_engine engine(surface, options.sign);

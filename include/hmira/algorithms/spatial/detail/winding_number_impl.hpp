@@ -40,9 +40,8 @@ inline result<void> check_query(const triangle_set& s, std::span<const vec3<doub
     if (s.triangles.empty()) return fail(errc::invalid_argument, std::string(who) + ": the mesh has no faces");
     if (nan == nan_policy::error)
         if (const long long i = first_non_finite(points); i >= 0)
-            return fail(errc::invalid_argument, std::string(who) + ": query point " + std::to_string(i) +
-                                                    " is not finite",
-                        i);
+            return fail(errc::invalid_argument,
+                        std::string(who) + ": query point " + std::to_string(i) + " is not finite", i);
     return {};
 }
 
@@ -126,8 +125,8 @@ private:
         std::array<double, 9> first_order{};    // M[3 i + j] = sum of vector_area_i * (centroid - centre)_j
         std::array<double, 27> second_order{};  // S[9 i + 3 j + k] = sum of vector_area_i * C_jk, C the
                                                 // triangle's second moment about the centre over its area
-        std::uint32_t first = 0;              // leaf: first slot of order_; inner: left child (right = first + 1)
-        std::uint32_t count = 0;              // triangles in a leaf, 0 for an inner node
+        std::uint32_t first = 0;                // leaf: first slot of order_; inner: left child (right = first + 1)
+        std::uint32_t count = 0;                // triangles in a leaf, 0 for an inner node
     };
     static constexpr std::uint32_t leaf_size = 8;
 
@@ -210,11 +209,10 @@ private:
         for (std::size_t a = 1; a < 3; ++a)
             if (hi[a] - lo[a] > hi[axis] - lo[axis]) axis = a;
         const std::uint32_t mid = begin + (end - begin) / 2;
-        std::nth_element(order_.begin() + begin, order_.begin() + mid, order_.begin() + end,
-                         [&](std::uint32_t a, std::uint32_t b) {
-                             return centroid_[a][axis] < centroid_[b][axis] ||
-                                    (centroid_[a][axis] == centroid_[b][axis] && a < b);
-                         });
+        std::nth_element(
+            order_.begin() + begin, order_.begin() + mid, order_.begin() + end, [&](std::uint32_t a, std::uint32_t b) {
+                return centroid_[a][axis] < centroid_[b][axis] || (centroid_[a][axis] == centroid_[b][axis] && a < b);
+            });
         return mid;
     }
 
@@ -270,8 +268,7 @@ inline result<void> check_winding_options(const winding_number_options& o, const
 
 inline result<winding_numbers> winding_number(const triangle_set& surface, std::span<const vec3<double>> points,
                                               const winding_number_options& options) {
-    if (auto ok = detail::spatial::check_query(surface, points, options.nan, "winding_number"); !ok)
-        return ok.error();
+    if (auto ok = detail::spatial::check_query(surface, points, options.nan, "winding_number"); !ok) return ok.error();
     if (auto ok = detail::spatial::check_winding_options(options, "winding_number"); !ok) return ok.error();
     return detail::spatial::winding_numbers_of(surface, points, options);
 }
