@@ -23,6 +23,7 @@ import numpy as np
 
 from . import _core
 from ._core import Topology, delaunay_triangulation, marching_cubes
+from ._core import hausdorff_distance, signed_distance, winding_number
 
 __all__ = [
     "Mesh",
@@ -32,13 +33,16 @@ __all__ = [
     "delaunay_triangulation",
     "extrude",
     "flip_normals",
+    "hausdorff_distance",
     "marching_cubes",
     "mesh_topology",
     "read_mesh",
     "render",
+    "signed_distance",
     "truncate",
     "view",
     "voxelize",
+    "winding_number",
     "write_mesh",
 ]
 

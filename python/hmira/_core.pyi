@@ -311,3 +311,46 @@ class MeshCore:
         """
         killEF: removes the edge, merging its two faces; returns (face, h0, h1) for make_edge_face.
         """
+
+    def winding_number(self, points: Annotated[NDArray, dict(device='cpu', writable=False)], *, method: str = 'fast', beta: float = 2.0, nan: str = 'error', threads: int = 0) -> object:
+        """
+        Generalised winding numbers at points (k, 3) (see hmira.winding_number).
+        """
+
+    def contains(self, points: Annotated[NDArray, dict(device='cpu', writable=False)], *, beta: float = 2.0, nan: str = 'error', threads: int = 0) -> NDArray[numpy.bool_]:
+        """
+        Whether each point (k, 3) is inside: winding number at least 1/2 (a bool array).
+        """
+
+    def signed_distance(self, points: Annotated[NDArray, dict(device='cpu', writable=False)], *, sign: str = 'winding_number', beta: float = 2.0, nan: str = 'error', threads: int = 0) -> object:
+        """
+        Signed distances from points (k, 3), negative inside (see hmira.signed_distance).
+        """
+
+    def sample_surface(self, count: int, *, method: str = 'uniform', seed: int = 0) -> dict:
+        """
+        count points on the surface, 'uniform' by area or 'poisson_disk' (blue noise), the same for the same seed: {'points' (count, 3), 'faces' (count,), 'barycentrics' (count, 3), 'corners' (count, 3)}: point i is sum over k of barycentrics[i, k] * vertex corners[i, k].
+        """
+
+def winding_number(vertices: Annotated[NDArray, dict(device='cpu', writable=False)], faces: Annotated[NDArray, dict(device='cpu', writable=False)], points: Annotated[NDArray, dict(device='cpu', writable=False)], *, method: str = 'fast', beta: float = 2.0, nan: str = 'error', threads: int = 0) -> object:
+    """
+    Generalised winding numbers of the triangles (vertices (n, 3), faces (m, 3)) at points (k, 3), float64 or float32: 1 inside a closed outward surface, 0 outside, robust on open and self-intersecting input. method 'fast' (Barill et al., accuracy beta > 1) or 'direct'. nan='error' raises ValueError naming a non-finite point; nan='propagate' gives NaN there.
+
+    Example
+    -------
+    >>> import numpy as np, hmira
+    >>> V = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1.0]])
+    >>> F = np.array([[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]])
+    >>> hmira.winding_number(V, F, np.array([[0.1, 0.1, 0.1], [2, 2, 2.0]])).round(3)
+    array([1., 0.])
+    """
+
+def signed_distance(vertices: Annotated[NDArray, dict(device='cpu', writable=False)], faces: Annotated[NDArray, dict(device='cpu', writable=False)], points: Annotated[NDArray, dict(device='cpu', writable=False)], *, sign: str = 'winding_number', beta: float = 2.0, nan: str = 'error', threads: int = 0) -> object:
+    """
+    Signed distances from points (k, 3) to the triangles (vertices, faces), negative inside. sign 'winding_number' (robust on open, soup and flipped input), 'pseudo_normal' or 'parity'.
+    """
+
+def hausdorff_distance(a: object, b: object, *, per_triangle: int = 10, min_samples: int = 1000000, seed: int = 11400714819323198485, threads: int = 0) -> dict:
+    """
+    Sampled Hausdorff distance between two surfaces, each a Mesh or a (vertices, faces) pair: {'symmetric', 'a_to_b', 'b_to_a'}, each direction {'max', 'mean', 'rms', 'samples'}.
+    """

@@ -150,5 +150,6 @@ void bind_io(nb::module_& m);          // write_polygons (io.cpp)
 void bind_mesh(nb::module_& m);        // Topology and MeshCore (mesh.cpp and the Mesh families)
 void bind_viewer(nb::module_& m);      // viewer.cpp
 void bind_blocks(nb::module_& m);      // marching cubes by blocks for hmira.dask (blocks.cpp)
+void bind_queries(nb::module_& m);     // winding_number, signed_distance, hausdorff_distance (queries.cpp)
 
 }  // namespace hmira_py

@@ -248,6 +248,7 @@ void bind_mesh(nb::module_& m) {
     bind_contents(core);
     bind_mesh_editing(core);
     bind_mesh_euler(core);
+    bind_mesh_queries(core);
 }
 
 }  // namespace hmira_py

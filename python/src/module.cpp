@@ -30,4 +30,5 @@ NB_MODULE(_core, m) {
     hmira_py::bind_mesh(m);
     hmira_py::bind_viewer(m);
     hmira_py::bind_blocks(m);
+    hmira_py::bind_queries(m);
 }
