@@ -186,6 +186,6 @@ void bind_mesh_decimation(nb::class_<py_mesh>& c);          // decimate (decimat
 void bind_mesh_remeshing(nb::class_<py_mesh>& c);           // remesh (remeshing.cpp)
 void bind_mesh_editing(nb::class_<py_mesh>& c);             // truncate, bevel, extrude (editing.cpp)
 void bind_mesh_euler(nb::class_<py_mesh>& c);               // the Euler operators (euler.cpp)
-void bind_mesh_queries(nb::class_<py_mesh>& c);  // winding_number, contains, signed_distance, sample_surface (queries.cpp)
+void bind_mesh_queries(nb::class_<py_mesh>& c);             // contains, signed_distance, ... (queries.cpp)
 
 }  // namespace hmira_py
