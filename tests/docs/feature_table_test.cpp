@@ -238,8 +238,8 @@ using rows =
              row_remove_face, row_remove_vertex, row_truncate, row_bevel, row_extrude, row_flip_edge, row_split_edge,
              row_split_face, row_collapse_edge, row_face_triangles, row_triangulate_faces, row_fill_hole,
              row_fill_holes, row_loop, row_sqrt3, row_catmull_clark, row_decimate, row_smooth, row_remesh,
-             row_copy_from, row_copy_into, row_aabb_tree, row_surface_queries, row_marching_cubes, row_voxelize, row_delaunay, row_read,
-             row_write, row_adapt_brute, row_adapt_indexed>;
+             row_copy_from, row_copy_into, row_aabb_tree, row_surface_queries, row_marching_cubes, row_voxelize,
+             row_delaunay, row_read, row_write, row_adapt_brute, row_adapt_indexed>;
 
 // ---- the capabilities of concepts.hpp: one row each -------------------------------------------
 
