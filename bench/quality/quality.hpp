@@ -1,6 +1,6 @@
 // bench/quality/quality.hpp
 // How good a decimated or remeshed surface is: the symmetric Hausdorff distance to the input
-// (sampled through the AABB tree), triangle-quality histograms and edge-length statistics.
+// (the library's hausdorff_distance), triangle-quality histograms and edge-length statistics.
 // Used by the mesh_quality tool and by the decimation and remeshing benchmarks.
 #pragma once
 
@@ -9,12 +9,10 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <random>
 #include <string>
-#include <thread>
 #include <vector>
 
-#include <hmira/algorithms/spatial/aabb_tree.hpp>
+#include <hmira/algorithms/spatial/hausdorff_distance.hpp>
 #include <hmira/concepts.hpp>
 
 namespace hmira_bench::quality {
@@ -45,13 +43,9 @@ triangle_soup soup_of(const M& mesh) {
     return s;
 }
 
-/// One direction of the sampled distance: from points on `from` to the surface `to`.
-struct one_sided {
-    double max = 0;           ///< the largest distance met (the one-sided Hausdorff distance)
-    double mean = 0;          ///< the mean distance over the samples
-    double rms = 0;           ///< the root mean square distance
-    std::size_t samples = 0;  ///< how many points were sampled
-};
+/// One direction of the sampled distance: from points on one surface to the other
+/// (hmira::one_sided_distance: max, mean, rms, samples).
+using one_sided = hmira::one_sided_distance;
 
 /// The sampled Hausdorff distance between two surfaces, both ways.
 struct hausdorff_result {
@@ -61,67 +55,22 @@ struct hausdorff_result {
     double symmetric() const { return std::max(a_to_b.max, b_to_a.max); }
 };
 
-/// Samples `from` with its vertices (those a triangle uses) plus max(per_triangle, ceil(min_samples / triangles))
-/// uniformly random points per triangle (fixed seed: the same input gives the same answer)
-/// and measures their distance to the surface in `to`. Runs on `threads` threads.
-inline one_sided sample_distance(const triangle_soup& from, const hmira::aabb_tree& to, std::size_t per_triangle = 10,
-                                 std::size_t min_samples = 1000000, unsigned threads = 0) {
-    one_sided out;
-    if (from.triangles.empty() || to.empty()) return out;
-    const std::size_t k = std::max(per_triangle, (min_samples + from.triangles.size() - 1) / from.triangles.size());
-    if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
-    struct partial {
-        double max = 0, sum = 0, sum2 = 0;
-        std::size_t n = 0;
-    };
-    std::vector<partial> parts(threads);
-    // Only the vertices a triangle uses: a model may keep deleted vertices below its bound.
-    std::vector<char> used(from.points.size(), 0);
-    for (const auto& tri : from.triangles) used[tri[0]] = used[tri[1]] = used[tri[2]] = 1;
-    auto work = [&](unsigned t) {
-        partial& p = parts[t];
-        auto add = [&](const vec3<double>& q) {
-            const double d = to.closest_point(q).distance;
-            p.max = std::max(p.max, d);
-            p.sum += d;
-            p.sum2 += d * d;
-            ++p.n;
-        };
-        for (std::size_t i = t; i < from.triangles.size(); i += threads) {
-            const auto& tri = from.triangles[i];
-            const auto a = from.points[tri[0]], b = from.points[tri[1]], c = from.points[tri[2]];
-            std::mt19937_64 rng(0x9e3779b97f4a7c15ull ^ i);  // per triangle: independent of threads
-            std::uniform_real_distribution<double> u01(0, 1);
-            for (std::size_t s = 0; s < k; ++s) {
-                double u = u01(rng), v = u01(rng);
-                if (u + v > 1) u = 1 - u, v = 1 - v;
-                add(a + (b - a) * u + (c - a) * v);
-            }
-        }
-        for (std::size_t i = t; i < from.points.size(); i += threads)
-            if (used[i]) add(from.points[i]);
-    };
-    std::vector<std::thread> pool;
-    for (unsigned t = 1; t < threads; ++t) pool.emplace_back(work, t);
-    work(0);
-    for (auto& th : pool) th.join();
-    double sum = 0, sum2 = 0;
-    for (const auto& p : parts) {
-        out.max = std::max(out.max, p.max);
-        sum += p.sum;
-        sum2 += p.sum2;
-        out.samples += p.n;
-    }
-    out.mean = sum / double(out.samples);
-    out.rms = std::sqrt(sum2 / double(out.samples));
-    return out;
+/// A soup as the library's triangle_set (triangle i on face i).
+inline hmira::triangle_set set_of(const triangle_soup& s) {
+    hmira::triangle_set t{s.points, s.triangles, std::vector<std::size_t>(s.triangles.size())};
+    for (std::size_t i = 0; i < t.faces.size(); ++i) t.faces[i] = i;
+    return t;
 }
 
-/// The symmetric sampled Hausdorff distance between A and B (see sample_distance).
+/// The symmetric sampled Hausdorff distance between A and B (hmira::hausdorff_distance: the
+/// vertices plus max(per_triangle, ceil(min_samples / triangles)) random points per triangle,
+/// a fixed seed); zeros when either soup is empty.
 inline hausdorff_result hausdorff(const triangle_soup& a, const triangle_soup& b, std::size_t per_triangle = 10,
                                   std::size_t min_samples = 1000000) {
-    const hmira::aabb_tree ta(a.points, a.triangles), tb(b.points, b.triangles);
-    return {sample_distance(a, tb, per_triangle, min_samples), sample_distance(b, ta, per_triangle, min_samples)};
+    const auto h =
+        hmira::hausdorff_distance(set_of(a), set_of(b), {.per_triangle = per_triangle, .min_samples = min_samples});
+    if (!h) return {};
+    return {h->a_to_b, h->b_to_a};
 }
 
 /// Triangle shape: the minimum angle (degrees) and the aspect ratio (circumradius over twice

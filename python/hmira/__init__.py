@@ -25,6 +25,7 @@ import numpy as np
 
 from . import _core
 from ._core import BVH, Topology, delaunay_triangulation
+from ._core import hausdorff_distance, signed_distance, winding_number
 
 __all__ = [
     "BVH",
@@ -36,14 +37,17 @@ __all__ = [
     "delaunay_triangulation",
     "extrude",
     "flip_normals",
+    "hausdorff_distance",
     "marching_cubes",
     "mesh_topology",
     "read_mesh",
     "read_volume",
     "render",
+    "signed_distance",
     "truncate",
     "view",
     "voxelize",
+    "winding_number",
     "write_mesh",
 ]
 

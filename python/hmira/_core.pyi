@@ -9,31 +9,27 @@ import numpy
 from numpy.typing import NDArray
 
 
-def marching_cubes(volume: Annotated[NDArray, dict(shape=(None, None, None), device='cpu', writable=False)], iso: float | None = None, *, spacing: Sequence[float] = [1.0, 1.0, 1.0], origin: Sequence[float] = [0.0, 0.0, 0.0], inside: str = 'below', threads: int = 0) -> tuple:
+def marching_cubes(volume: Annotated[NDArray, dict(shape=(None, None, None), device='cpu', writable=False)], iso: float = 0.0, *, spacing: Sequence[float] = [1.0, 1.0, 1.0], origin: Sequence[float] = [0.0, 0.0, 0.0], inside: str = 'below', threads: int = 0) -> tuple:
     """
     Extract the iso-surface of a 3-D volume as a welded, closed triangle mesh.
 
     Parameters
     ----------
     volume : ndarray, shape (n0, n1, n2)
-        Samples of any float, integer or bool dtype (hmira.marching_cubes also takes
-        nested lists); C- or Fortran-ordered or strided, read in place (never copied).
-        A NaN or infinite sample raises ValueError naming it ("volume[3, 4, 5] is inf").
-    iso : float, optional
+        Samples, float32, float64, uint8, uint16 or int16; C- or Fortran-ordered or
+        strided, read in place (never copied). A NaN or infinite sample raises
+        ValueError naming it ("volume[3, 4, 5] is inf").
+    iso : float
         The iso value, within the samples' range [min, max]: outside it there is no
-        surface, and ValueError names the range. Default: the midpoint of the range
-        (as scikit-image), so a default never gives an empty mesh. A signed distance
-        field wants ``iso=0.0``; scans (CT, MRI) want ``inside="above"``, e.g.
-        ``hmira.marching_cubes(ct, 300.0, inside="above")``.
+        surface, and ValueError names the range. Scans (CT, MRI) need a positive iso
+        and ``inside="above"``, e.g. ``hmira.marching_cubes(ct, 300.0, inside="above")``.
     spacing : sequence of 3 floats, keyword-only
         Distance between samples along array axes 0, 1, 2.
     origin : sequence of 3 floats, keyword-only
         Position of sample [0, 0, 0].
     inside : {"below", "above"}, keyword-only
         Which side of `iso` is the solid ("below" for signed distances, "above" for
-        CT/MRI scans and label maps). Triangles wind counter-clockwise seen from outside
-        the solid: a label map or scan left at "below" takes the background for the
-        solid and comes out inside-out (``hmira.Mesh(v, f).volume()`` is negative).
+        CT/MRI scans). Triangles wind counter-clockwise seen from outside.
     threads : int, keyword-only
         Worker threads (0: all cores). The output does not depend on it.
 
@@ -52,7 +48,7 @@ def marching_cubes(volume: Annotated[NDArray, dict(shape=(None, None, None), dev
     --------
     >>> import numpy as np, hmira
     >>> x, y, z = np.mgrid[-1:1:32j, -1:1:32j, -1:1:32j]
-    >>> v, f = hmira.marching_cubes(x**2 + y**2 + z**2 - 0.5, 0.0)  # the zero level of a distance
+    >>> v, f = hmira.marching_cubes(x**2 + y**2 + z**2 - 0.5, 0.0)
     >>> v.shape[1], f.dtype.name, len(f) == 2 * len(v) - 4
     (3, 'int32', True)
     """
@@ -185,9 +181,9 @@ class MeshCore:
         Closes the boundary loop of a boundary halfedge with triangles (minimal area, maximal dihedral, Liepa 2003); with refine=True the patch is refined to the edge length around the hole, and fair='membrane' or 'thin-plate' (implies refine) smooths it. Returns the new faces.
         """
 
-    def fill_holes(self, max_edges: int = 1000, *, max_dynamic_programming_edges: int = 200, refine: bool = False, fair: str = 'none') -> dict:
+    def fill_holes(self, max_size: int, *, max_dynamic_programming_edges: int = 200, refine: bool = False, fair: str = 'none') -> dict:
         """
-        Fills every hole of at most max_edges boundary edges (the CLI's --max-edges and default) (refine and fair as for fill_hole); returns {'filled', 'skipped', 'faces_added', 'vertices_added', 'unfaired', 'open'}, 'open' listing each hole left open as {'vertex', 'edges', 'reason'}. Ctrl-C stops it with the mesh unchanged.
+        Fills every hole of at most max_size boundary edges (refine and fair as for fill_hole); returns {'filled', 'skipped', 'faces_added', 'vertices_added', 'unfaired', 'open'}, 'open' listing each hole left open as {'vertex', 'edges', 'reason'}. Ctrl-C stops it with the mesh unchanged.
         """
 
     def subdivide(self, *, scheme: str = 'loop', levels: int = 1) -> dict:
@@ -211,12 +207,11 @@ class MeshCore:
         Taubin lambda/mu smoothing (keeps the volume); returns the number of vertices free to move.
         """
 
-    def decimate(self, *, target_faces: int | None = None, target_ratio: float | None = None, max_error: float | None = None, fix_boundary: bool = True, max_normal_angle: float = 90.0, max_aspect_ratio: float = float('inf'), fixed_vertices: Sequence[int] | None = None) -> dict:
+    def decimate(self, *, target_faces: int | None = None, target_ratio: float | None = None, max_error: float | None = None, keep_boundary: bool = True, max_normal_angle: float = 90.0, max_aspect_ratio: float = float('inf'), locked_vertices: Sequence[int] | None = None) -> dict:
         """
         Quadric error decimation (Garland-Heckbert) until the first target reached: target_faces, target_ratio
         (of the faces) or max_error (a distance). Polygons are triangulated first. Boundary vertices stay
-        unless fix_boundary=False; fixed_vertices never move (the names smoothing uses; hmira.Mesh.decimate
-        still takes keep_boundary and locked_vertices, deprecated). Returns {'faces', 'vertices', 'collapses',
+        unless keep_boundary=False; locked_vertices never move. Returns {'faces', 'vertices', 'collapses',
         'triangulated', 'stopped_by', 'error', 'note'}; vertices are renumbered densely afterwards.
 
         >>> m = hmira.Mesh([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [0.5, 0.5, 0]],
@@ -317,26 +312,45 @@ class MeshCore:
         killEF: removes the edge, merging its two faces; returns (face, h0, h1) for make_edge_face.
         """
 
-    def bounds(self) -> Annotated[NDArray[numpy.float64], dict(shape=(None, None))]:
+    def winding_number(self, points: Annotated[NDArray, dict(device='cpu', writable=False)], *, method: str = 'fast', beta: float = 2.0, nan: str = 'error', threads: int = 0) -> object:
         """
-        The bounding box as a (2, 3) float64 array [min, max]; (0, 3) without vertices.
-        """
-
-    def area(self) -> float:
-        """The total area of the faces."""
-
-    def volume(self) -> float:
-        """
-        The signed enclosed volume (divergence theorem): positive for a closed mesh wound counter-clockwise seen from outside, negative when inside-out.
+        Generalised winding numbers at points (k, 3) (see hmira.winding_number).
         """
 
-    def face_normals(self) -> Annotated[NDArray[numpy.float64], dict(shape=(None, None))]:
-        """Unit face normals (m, 3) in face order; zero for a face of zero area."""
-
-    def face_areas(self) -> Annotated[NDArray[numpy.float64], dict(shape=(None,))]:
-        """Face areas (m,) in face order."""
-
-    def edges(self) -> Annotated[NDArray[numpy.int32], dict(shape=(None, None))]:
+    def contains(self, points: Annotated[NDArray, dict(device='cpu', writable=False)], *, beta: float = 2.0, nan: str = 'error', threads: int = 0) -> NDArray[numpy.bool_]:
         """
-        Each edge once as (k, 2) int32 vertex indices, the smaller index first.
+        Whether each point (k, 3) is inside: winding number at least 1/2 (a bool array).
         """
+
+    def signed_distance(self, points: Annotated[NDArray, dict(device='cpu', writable=False)], *, sign: str = 'winding_number', beta: float = 2.0, nan: str = 'error', threads: int = 0) -> object:
+        """
+        Signed distances from points (k, 3), negative inside (see hmira.signed_distance).
+        """
+
+    def sample_surface(self, count: int, *, method: str = 'uniform', seed: int = 0) -> dict:
+        """
+        count points on the surface, 'uniform' by area or 'poisson_disk' (blue noise), the same for the same seed: {'points' (count, 3), 'faces' (count,), 'barycentrics' (count, 3), 'corners' (count, 3)}: point i is sum over k of barycentrics[i, k] * vertex corners[i, k].
+        """
+
+def winding_number(vertices: Annotated[NDArray, dict(device='cpu', writable=False)], faces: Annotated[NDArray, dict(device='cpu', writable=False)], points: Annotated[NDArray, dict(device='cpu', writable=False)], *, method: str = 'fast', beta: float = 2.0, nan: str = 'error', threads: int = 0) -> object:
+    """
+    Generalised winding numbers of the triangles (vertices (n, 3), faces (m, 3)) at points (k, 3), float64 or float32: 1 inside a closed outward surface, 0 outside, robust on open and self-intersecting input. method 'fast' (Barill et al., accuracy beta > 1) or 'direct'. nan='error' raises ValueError naming a non-finite point; nan='propagate' gives NaN there.
+
+    Example
+    -------
+    >>> import numpy as np, hmira
+    >>> V = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1.0]])
+    >>> F = np.array([[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]])
+    >>> hmira.winding_number(V, F, np.array([[0.1, 0.1, 0.1], [2, 2, 2.0]])).round(3)
+    array([1., 0.])
+    """
+
+def signed_distance(vertices: Annotated[NDArray, dict(device='cpu', writable=False)], faces: Annotated[NDArray, dict(device='cpu', writable=False)], points: Annotated[NDArray, dict(device='cpu', writable=False)], *, sign: str = 'winding_number', beta: float = 2.0, nan: str = 'error', threads: int = 0) -> object:
+    """
+    Signed distances from points (k, 3) to the triangles (vertices, faces), negative inside. sign 'winding_number' (robust on open, soup and flipped input), 'pseudo_normal' or 'parity'.
+    """
+
+def hausdorff_distance(a: object, b: object, *, per_triangle: int = 10, min_samples: int = 1000000, seed: int = 11400714819323198485, threads: int = 0) -> dict:
+    """
+    Sampled Hausdorff distance between two surfaces, each a Mesh or a (vertices, faces) pair: {'symmetric', 'a_to_b', 'b_to_a'}, each direction {'max', 'mean', 'rms', 'samples'}.
+    """

@@ -151,5 +151,6 @@ void bind_mesh(nb::module_& m);        // Topology and MeshCore (mesh.cpp and th
 void bind_spatial(nb::module_& m);     // BVH (spatial.cpp)
 void bind_viewer(nb::module_& m);      // viewer.cpp
 void bind_blocks(nb::module_& m);      // marching cubes by blocks for hmira.dask (blocks.cpp)
+void bind_queries(nb::module_& m);     // winding_number, signed_distance, hausdorff_distance (queries.cpp)
 
 }  // namespace hmira_py

@@ -316,6 +316,7 @@ void bind_mesh(nb::module_& m) {
     bind_mesh_intersections(core);
     bind_mesh_spatial(core);
     bind_mesh_geometry(core);  // bounds, area, volume, edges, split (mesh_geometry.cpp)
+    bind_mesh_queries(core);
 }
 
 }  // namespace hmira_py

@@ -188,5 +188,6 @@ void bind_mesh_editing(nb::class_<py_mesh>& c);             // truncate, bevel, 
 void bind_mesh_euler(nb::class_<py_mesh>& c);               // the Euler operators (euler.cpp)
 void bind_mesh_intersections(nb::class_<py_mesh>& c);       // self_intersections (intersections.cpp)
 void bind_mesh_spatial(nb::class_<py_mesh>& c);             // closest_point, ray_intersect (spatial.cpp)
+void bind_mesh_queries(nb::class_<py_mesh>& c);             // contains, signed_distance, ... (queries.cpp)
 
 }  // namespace hmira_py

@@ -34,4 +34,5 @@ NB_MODULE(_core, m) {
     hmira_py::bind_viewer(m);
     hmira_py::bind_blocks(m);
     hmira_py::bind_volume_io(m);
+    hmira_py::bind_queries(m);
 }

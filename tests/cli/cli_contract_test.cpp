@@ -86,8 +86,9 @@ struct writer {
 };
 
 // Every writing subcommand of `hmira --help` but view (an HTML page: tests/cli/cli_view_test.cpp
-// checks it refuses what its float positions cannot hold) and voxelize (checked below: its
-// outputs hold voxels, and the .raw sidecar's origin and spacing).
+// checks it refuses what its float positions cannot hold), voxelize (checked below: its
+// outputs hold voxels, and the .raw sidecar's origin and spacing) and sdf (a float32 volume:
+// tests/cli/cli_queries_test.cpp).
 const writer writers[] = {
     {"convert_off", "convert IN OUT", ".off", "out.off"},
     {"convert_obj", "convert IN OUT", ".off", "out.obj"},
@@ -111,6 +112,8 @@ const writer writers[] = {
     {"bevel_vertices", "bevel IN OUT --vertices-all", ".off", "out.off"},
     {"extrude", "extrude IN OUT --all --mode individual", ".off", "out.off"},
     {"delaunay", "delaunay IN OUT", ".xyz", "out.off"},
+    {"offset", "offset IN OUT --distance 0.1 -n 16", ".off", "out.off"},
+    {"sample", "sample IN OUT --count 100", ".off", "out.ply"},
 };
 
 // gtest prints a failing case's parameters with these.

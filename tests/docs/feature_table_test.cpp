@@ -39,6 +39,7 @@
 #include <hmira/algorithms/smoothing/laplacian_smooth.hpp>
 #include <hmira/algorithms/decimation/decimate.hpp>
 #include <hmira/algorithms/spatial/aabb_tree.hpp>
+#include <hmira/algorithms/spatial/winding_number.hpp>
 #include <hmira/algorithms/subdivision/catmull_clark.hpp>
 #include <hmira/algorithms/subdivision/sqrt3.hpp>
 #include <hmira/algorithms/subdivision/loop.hpp>
@@ -208,6 +209,12 @@ HMIRA_ROW(row_copy_into, "copy_mesh (into this model, e.g. from halfedge_mesh)",
           hmira::copy_mesh<hmira::halfedge_mesh, M, hmira::default_traits<hmira::halfedge_mesh>, T>(h, m));
 HMIRA_ROW(row_aabb_tree, "aabb_tree_from_mesh (closest_point, ray_intersect)", "algorithms/spatial/aabb_tree.hpp",
           hmira::aabb_tree_source_mesh, (const M& m), hmira::aabb_tree_from_mesh<M, T>(m));
+HMIRA_ROW(row_surface_queries,
+          "winding_number, contains, signed_distance, signed_distance_grid, offset, sample_surface, hausdorff_distance",
+          "algorithms/spatial/winding_number.hpp (and signed_distance, signed_distance_grid, sample_surface, "
+          "hausdorff_distance)",
+          hmira::surface_query_mesh, (const M& m, std::span<const hmira::vec3<double>> p),
+          hmira::winding_number<M, T>(m, p));
 HMIRA_ROW(row_marching_cubes, "marching_cubes (into the mesh)", "algorithms/conversion/marching_cubes.hpp",
           hmira::mesh_builder, (M & m, const hmira::dense_grid<float>& g), hmira::marching_cubes<M, T>(m, g));
 HMIRA_ROW(row_voxelize, "voxelize", "algorithms/conversion/voxelize.hpp", hmira::voxelize_mesh,
@@ -231,8 +238,8 @@ using rows =
              row_remove_face, row_remove_vertex, row_truncate, row_bevel, row_extrude, row_flip_edge, row_split_edge,
              row_split_face, row_collapse_edge, row_face_triangles, row_triangulate_faces, row_fill_hole,
              row_fill_holes, row_loop, row_sqrt3, row_catmull_clark, row_decimate, row_smooth, row_remesh,
-             row_copy_from, row_copy_into, row_aabb_tree, row_marching_cubes, row_voxelize, row_delaunay, row_read,
-             row_write, row_adapt_brute, row_adapt_indexed>;
+             row_copy_from, row_copy_into, row_aabb_tree, row_surface_queries, row_marching_cubes, row_voxelize,
+             row_delaunay, row_read, row_write, row_adapt_brute, row_adapt_indexed>;
 
 // ---- the capabilities of concepts.hpp: one row each -------------------------------------------
 
@@ -766,6 +773,14 @@ void run_everyday_claims() {
         const double centre = tree->closest_point({0, 0, 0}).distance;
         EXPECT_GT(centre, 0.5 * hmira::norm(corner)) << title;
         EXPECT_LT(centre, hmira::norm(corner)) << title;
+    }
+    if constexpr (row_surface_queries::supported<M>) {
+        auto m = icosahedron<M>();
+        const std::vector<hmira::vec3<double>> p{{0, 0, 0}, {5, 5, 5}};
+        auto w = hmira::winding_number(m, p, {.method = hmira::winding_method::direct});
+        ASSERT_TRUE(w) << title << ": " << w.error().message;
+        EXPECT_NEAR(w->values[0], 1, 1e-12) << title;
+        EXPECT_NEAR(w->values[1], 0, 1e-12) << title;
     }
 }
 

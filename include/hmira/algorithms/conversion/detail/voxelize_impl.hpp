@@ -22,6 +22,7 @@
 #include "../../../core/vec3.hpp"
 #include "../../../grids/bit_grid.hpp"
 #include "../../../grids/voxel_grid.hpp"
+#include "../../spatial/detail/solid_angle.hpp"
 #include "../voxelize.hpp"
 #include "parallel.hpp"
 #include "voxel_surface.hpp"
@@ -40,14 +41,8 @@ inline std::uint64_t mix(std::uint64_t x) {
     return x ^ (x >> 31);
 }
 
-/// The signed solid angle of triangle a, b, c seen from the origin (Van Oosterom and
-/// Strackee's formula): the winding number is the sum over the triangles over 4 pi.
-inline double solid_angle(vec3<double> a, vec3<double> b, vec3<double> c) {
-    const double la = norm(a), lb = norm(b), lc = norm(c);
-    const double num = dot(a, cross(b, c));
-    const double den = la * lb * lc + dot(a, b) * lc + dot(b, c) * la + dot(c, a) * lb;
-    return 2 * std::atan2(num, den);
-}
+/// The signed solid angle of a triangle seen from the origin (spatial/detail/solid_angle.hpp).
+using detail::spatial::solid_angle;
 
 // Voxel coordinates are clamped to +-2^60 (far outside any grid) and magnitudes below 2^-180
 // are flushed to 0, so the exact predicates stay in their range.
