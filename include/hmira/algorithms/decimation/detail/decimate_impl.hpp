@@ -117,7 +117,7 @@ public:
             heap_.erase(key);
             const auto c = candidate_of(edges_[key]);
             if (!c || !collapse(*c)) {
-                refused_[key] = 1;
+                refuse(key);
                 continue;
             }
             out.error = std::max(out.error, c->cost);
@@ -135,7 +135,16 @@ public:
     std::size_t faces() const noexcept { return faces_; }
 
 private:
-    static constexpr std::uint8_t locked = 1, boundary = 2;
+    // refused_near: an edge at the vertex left the queue refused (refused_), to be retried when
+    // a collapse next to the vertex changes its neighbourhood.
+    static constexpr std::uint8_t locked = 1, boundary = 2, refused_near = 4;
+
+    void refuse(std::uint32_t key) {
+        refused_[key] = 1;
+        const H h = T::edge_halfedge(m_, edges_[key]);
+        fixed_[index(T::target(m_, h))] |= refused_near;
+        fixed_[index(T::target(m_, T::opposite(m_, h)))] |= refused_near;
+    }
 
     std::size_t index(V v) const { return T::vertex_index(m_, v); }
     vec3<double> position(V v) const { return detail::triangle_ops::position_of<M, T>(m_, v); }
@@ -231,15 +240,18 @@ private:
         const auto f0 = T::face(m_, h), f1 = T::face(m_, o);
         const std::uint32_t side0 = std::uint32_t(T::edge_index(m_, T::edge(m_, T::prev(m_, h))));
         const std::uint32_t side1 = std::uint32_t(T::edge_index(m_, T::edge(m_, T::next(m_, o))));
-        auto r = collapse_edge<M, T>(m_, h, {.placement = collapse_placement::given, .position = c.position});
-        if (!r) return false;  // the topology rules refused it; collapse_edge changed nothing
+        // collapse_edge's steps without its error message, which a refusal would build for nothing:
+        // the topology rules (the link condition), then the collapse itself.
+        if (*dt::collapse_refusal<M, T>(m_, h, {}) != '\0') return false;
+        auto links = dt::read_collapse_links<M, T>(m_, h);
+        dt::apply_collapse<M, T>(m_, links, c.position);
         // The edges beside the edge went with their triangles.
         if (f0 != T::null_face()) heap_.erase(side0), --faces_;
         if (f1 != T::null_face()) heap_.erase(side1), --faces_;
         quadrics_[index(b)] += quadrics_[index(a)];
-        fixed_[index(b)] |= fixed_[index(a)] & boundary;
+        fixed_[index(b)] = std::uint8_t((fixed_[index(b)] | (fixed_[index(a)] & boundary)) & ~refused_near);
         // Every edge at the survivor has a new cost; an edge refused before at a neighbour may
-        // pass now that the neighbourhood changed.
+        // pass now that the neighbourhood changed (only neighbours marked refused_near have one).
         const H s = T::vertex_halfedge(m_, b);
         H x = s;
         do {
@@ -248,13 +260,16 @@ private:
         } while (x != s);
         do {
             const V n = T::target(m_, x);
-            const H t = T::vertex_halfedge(m_, n);
-            H y = t;
-            do {
-                const std::uint32_t k = std::uint32_t(T::edge_index(m_, T::edge(m_, y)));
-                if (refused_[k]) update(k);
-                y = T::next(m_, T::opposite(m_, y));
-            } while (y != t);
+            if (std::uint8_t& flags = fixed_[index(n)]; flags & refused_near) {
+                flags = std::uint8_t(flags & ~refused_near);  // every refused edge at n is retried below
+                const H t = T::vertex_halfedge(m_, n);
+                H y = t;
+                do {
+                    const std::uint32_t k = std::uint32_t(T::edge_index(m_, T::edge(m_, y)));
+                    if (refused_[k]) update(k);
+                    y = T::next(m_, T::opposite(m_, y));
+                } while (y != t);
+            }
             x = T::next(m_, T::opposite(m_, x));
         } while (x != s);
         return true;
