@@ -37,8 +37,27 @@ struct decimate_options {
     /// the height onto it, scaled so that an equilateral triangle has 1) unless the face was
     /// already worse. Infinity (the default) turns the check off; must be at least 1.
     double max_aspect_ratio = std::numeric_limits<double>::infinity();
+    /// Refuse a collapse that makes a face whose smallest angle is below this many degrees, in
+    /// [0, 60], unless the face was already worse. 0 turns the check off.
+    double min_angle = 1;
     /// Vertex indices (T::vertex_index) that neither move nor disappear.
     std::vector<std::size_t> locked_vertices = {};
+    /// Weight each face's plane by the face's area over the mean face area, so that a large
+    /// flat face holds the surface as firmly as the many small faces of a detailed part. When
+    /// false every plane counts once, whatever its face's size.
+    bool area_weighted = true;
+    /// Edges where the surface bends by more than this many degrees (the angle between the
+    /// normals of their two triangles, in [0, 180]) are feature edges; see feature_edges.
+    std::optional<double> feature_angle = std::nullopt;
+    /// More feature edges, by edge index (T::edge_index). A feature edge adds to the quadrics
+    /// of its ends the planes through it perpendicular to its two faces, weighted like those
+    /// faces, so that collapses near a crease keep the crease where it is.
+    std::vector<std::size_t> feature_edges = {};
+    /// Feature lines keep their shape: a vertex where feature edges meet in other than two (a
+    /// corner or a line's end) never moves; a vertex inside a line moves only along the line, onto
+    /// its neighbour there; an edge between two feature vertices collapses only if it is a
+    /// feature edge. The lines of the result run through vertices of the input's lines.
+    bool keep_features = false;
     /// Called between blocks of collapses with the fraction done; returning false cancels
     /// (errc::cancelled, "decimate: cancelled") and restores the mesh from a copy taken
     /// before the first change (mesh_rollback), which is made only when a callback is given.
@@ -83,8 +102,10 @@ concept decimatable_mesh = triangle_operable_mesh<M, T> && vertex_index_mesh<M, 
 ///       condition); with keep_boundary the boundary vertices keep their positions. Locked vertices keep
 ///       their handles and positions bit for bit. Removed elements are erased the model's way (nothing is
 ///       compacted).
+/// With keep_features, every vertex where feature edges meet in other than two keeps its position bit for bit,
+/// and every vertex of the result on a feature edge keeps the position of a vertex on a feature edge of the input.
 /// Errors (mesh unchanged): errc::invalid_argument naming the option for no target, a NaN or out-of-range
-/// option, a locked vertex index out of range, or a non-finite position (naming the vertex);
+/// option, a locked vertex or feature edge index out of range, or a non-finite position (naming the vertex);
 /// errc::unsupported for polygon input on a model that cannot triangulate (triangles only is fine);
 /// errc::cancelled for a cancellation ("decimate: cancelled"); the errors of triangulate_faces.
 /// Complexity O(V + E + F) to set up plus O(E log E) to queue every edge; each collapse then costs O(d^2)
