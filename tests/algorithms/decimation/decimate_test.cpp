@@ -342,7 +342,8 @@ TYPED_TEST(decimate_test, kept_feature_lines_run_through_the_input_rims_and_plai
         EXPECT_TRUE(valid_topology(kept));
         EXPECT_EQ(chi(kept), 2);
         // Every vertex on a crease of the result (found again from its positions) is a rim vertex of
-        // the input, exactly where it was: on the unit circle, at z = 0 or 1 (up to the rounding of cos, sin and float positions).
+        // the input, exactly where it was: on the unit circle, at z = 0 or 1 (up to the rounding of cos, sin
+        // and float positions).
         const auto creases = crease_vertices(kept, 45);
         ASSERT_GE(creases.size(), 12u);  // both rims are still there, at least triangles
         using T = hmira::default_traits<M>;
