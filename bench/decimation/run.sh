@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Decimation to 1% of the twice-Loop-subdivided bunny: hmira (halfedge_mesh, OpenMesh, CGAL)
-# against CGAL's Garland-Heckbert edge_collapse, OpenMesh's Decimater + ModQuadricT and Open3D's
-# simplify_quadric_decimation, in one run; prints times and ratios, and leaves every output mesh
-# in $HMIRA_DECIMATION_OUT (default build-bench/decimation-out) for the quality tool.
+# against CGAL's Garland-Heckbert edge_collapse and OpenMesh's Decimater + ModQuadricT in C++; then
+# from Python (peers.py) against pyfqmr, fast-simplification, Open3D and pymeshlab on armadillo
+# Loop x2, bunny00, fandisk and elephant at 1% and 10%. Prints times, quality and ratios, and leaves
+# every output mesh in $HMIRA_DECIMATION_OUT (default build-bench/decimation-out).
 # Usage: bench/decimation/run.sh [REPS]   (HMIRA_BENCH_VENV selects the peers' venv)
 set -euo pipefail
 root="$(cd "$(dirname "$0")/../.." && pwd)"
@@ -16,10 +17,9 @@ cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DHMIRA_BUILD_B
 cmake --build "$build" --target decimation_bench -j2 >/dev/null
 mkdir -p "$out"
 "$build/bench/decimation/decimation_bench" --bunny "$data/meshes/bunny00.off" --out "$out" --reps "$reps" | tee "$out/hmira.txt"
-target="$(sed -n 's/^input .* target \([0-9]*\)$/\1/p' "$out/hmira.txt")"
-"$py" "$root/bench/decimation/peers.py" "$out" "$target" "$reps" | tee "$out/open3d.txt"
-read -r wall cpu < <(sed -n 's/^hmira_halfedge_seconds //p' "$out/hmira.txt")
-read -r o3wall o3cpu < <(awk '{print $2, $5}' "$out/open3d.txt")
-awk -v w="$wall" -v c="$cpu" -v ow="$o3wall" -v oc="$o3cpu" \
-  'BEGIN { printf "  hmira halfedge_mesh / open3d                   %.3f  %.3f\n", w / ow, c / oc }'
+# The Python peers (pyfqmr, fast-simplification, Open3D, pymeshlab) beside hmira's package, installed
+# from this tree into the venv first: times of the call alone, Hausdorff, minimum angles, ratios.
+"$py" -m pip install -q pyfqmr fast-simplification pymeshlab nanobind scikit-build-core >&2
+CMAKE_BUILD_PARALLEL_LEVEL=2 "$py" -m pip install -q --no-build-isolation "$root" >&2
+"$py" "$root/bench/decimation/peers.py" "$data" --reps "${HMIRA_DECIMATION_REPS:-5}" --out "$out/python" | tee "$out/peers.txt"
 echo "output meshes in $out"

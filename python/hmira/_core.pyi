@@ -207,11 +207,12 @@ class MeshCore:
         Taubin lambda/mu smoothing (keeps the volume); returns the number of vertices free to move.
         """
 
-    def decimate(self, *, target_faces: int | None = None, target_ratio: float | None = None, max_error: float | None = None, keep_boundary: bool = True, max_normal_angle: float = 90.0, max_aspect_ratio: float = float('inf'), locked_vertices: Sequence[int] | None = None) -> dict:
+    def decimate(self, *, target_faces: int | None = None, target_ratio: float | None = None, max_error: float | None = None, keep_boundary: bool = True, max_normal_angle: float = 90.0, max_aspect_ratio: float = float('inf'), locked_vertices: Sequence[int] | None = None, min_angle: float = 1.0, area_weighted: bool = True, feature_angle: float | None = None, feature_edges: Sequence[int] | None = None, keep_features: bool = False) -> dict:
         """
         Quadric error decimation (Garland-Heckbert) until the first target reached: target_faces, target_ratio
         (of the faces) or max_error (a distance). Polygons are triangulated first. Boundary vertices stay
-        unless keep_boundary=False; locked_vertices never move. Returns {'faces', 'vertices', 'collapses',
+        unless keep_boundary=False; locked_vertices never move. feature_angle (degrees) and feature_edges add
+        planes through creases; keep_features keeps feature lines on their input vertices. Returns {'faces', 'vertices', 'collapses',
         'triangulated', 'stopped_by', 'error', 'note'}; vertices are renumbered densely afterwards.
 
         >>> m = hmira.Mesh([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [0.5, 0.5, 0]],

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <optional>
 #include <random>
 #include <set>
 #include <sstream>
@@ -300,6 +301,93 @@ TYPED_TEST(decimate_test, runs_are_deterministic) {
     }
 }
 
+/// The vertices at a crease of at least `degrees` (an edge whose two triangles' normals differ by that
+/// much), found here from the positions alone.
+template <class M, class T = hmira::default_traits<M>>
+std::vector<hmira::vec3<double>> crease_vertices(const M& m, double degrees) {
+    std::vector<hmira::vec3<double>> out;
+    auto pos = [&](auto v) {
+        const auto p = T::position(m, v);
+        return hmira::vec3<double>{double(p[0]), double(p[1]), double(p[2])};
+    };
+    auto normal = [&](auto h) {
+        const auto a = pos(T::target(m, T::opposite(m, h))), b = pos(T::target(m, h));
+        return hmira::cross(b - a, pos(T::target(m, T::next(m, h))) - a);
+    };
+    const double c = std::cos(degrees * 3.14159265358979323846 / 180);
+    for (auto e : T::edges(m)) {
+        const auto h = T::edge_halfedge(m, e), o = T::opposite(m, h);
+        const auto n0 = normal(h), n1 = normal(o);
+        if (hmira::dot(n0, n1) <= c * hmira::norm(n0) * hmira::norm(n1)) {
+            out.push_back(pos(T::target(m, h)));
+            out.push_back(pos(T::target(m, o)));
+        }
+    }
+    return out;
+}
+
+/// How far a point is from the rims of capped_cylinder (the unit circles at z = 0 and z = 1).
+double off_rim(const hmira::vec3<double>& p) {
+    return std::max(std::fabs(std::hypot(p.x, p.y) - 1), std::min(std::fabs(p.z), std::fabs(p.z - 1)));
+}
+
+TYPED_TEST(decimate_test, kept_feature_lines_run_through_the_input_rims_and_plain_decimation_leaves_them) {
+    using M = TypeParam;
+    HMIRA_REQUIRE_TRIANGLE_OPS(M)
+    else {
+        const face_list input = capped_cylinder(48, 8);
+        M kept = mesh_from<M>(input), plain = mesh_from<M>(input);
+        auto r = hmira::decimate(kept, {.target_ratio = 0.15, .feature_angle = 45, .keep_features = true});
+        ASSERT_TRUE(r) << r.error().message;
+        EXPECT_TRUE(valid_topology(kept));
+        EXPECT_EQ(chi(kept), 2);
+        // Every vertex on a crease of the result (found again from its positions) is a rim vertex of
+        // the input, exactly where it was: on the unit circle, at z = 0 or 1 (up to the rounding of cos, sin
+        // and float positions).
+        const auto creases = crease_vertices(kept, 45);
+        ASSERT_GE(creases.size(), 12u);  // both rims are still there, at least triangles
+        using T = hmira::default_traits<M>;
+        const double tolerance = sizeof(typename T::scalar) < sizeof(double) ? 1e-6 : 1e-12;  // float models
+        for (const auto& p : creases) EXPECT_LE(off_rim(p), tolerance) << p.x << " " << p.y << " " << p.z;
+        // Without keep_features the rims are free to move off the circles, and do: the check above fails.
+        ASSERT_TRUE(hmira::decimate(plain, {.target_ratio = 0.15}));
+        double worst = 0;
+        for (const auto& p : crease_vertices(plain, 45)) worst = std::max(worst, off_rim(p));
+        EXPECT_GT(worst, 10 * tolerance);
+    }
+}
+
+TYPED_TEST(decimate_test, no_collapse_leaves_an_angle_under_the_minimum_it_did_not_find) {
+    using M = TypeParam;
+    using T = hmira::default_traits<M>;
+    HMIRA_REQUIRE_TRIANGLE_OPS(M)
+    else {
+        M m = mesh_from<M>(bumpy_torus(20 * scale, 12 * scale, false, 5));
+        // The smallest angle of every face, from its sides by the law of cosines.
+        auto smallest = [&] {
+            double out = 180;
+            for (auto f : T::faces(m)) {
+                std::vector<hmira::vec3<double>> p;
+                for (auto v : T::face_vertices(m, f)) {
+                    const auto q = T::position(m, v);
+                    p.push_back({double(q[0]), double(q[1]), double(q[2])});
+                }
+                for (int i = 0; i < 3; ++i) {
+                    const auto u = p[(i + 1) % 3] - p[i], w = p[(i + 2) % 3] - p[i];
+                    out = std::min(out, std::acos(hmira::dot(u, w) / (hmira::norm(u) * hmira::norm(w))) * 180 /
+                                            3.14159265358979323846);
+                }
+            }
+            return out;
+        };
+        // A limit below every angle of the input: the result may not go under it.
+        const double limit = std::min(15.0, 0.9 * smallest());
+        ASSERT_TRUE(hmira::decimate(m, {.target_ratio = 0.05, .min_angle = limit}));
+        EXPECT_TRUE(valid_topology(m));
+        EXPECT_GE(smallest(), limit - 1e-9);
+    }
+}
+
 TYPED_TEST(decimate_test, polygon_input_is_triangulated_first_with_a_note) {
     using M = TypeParam;
     HMIRA_REQUIRE_TRIANGLE_OPS(M)
@@ -339,6 +427,9 @@ TYPED_TEST(decimate_test, bad_options_are_refused_by_name_and_change_nothing) {
             {{.target_faces = 10, .max_normal_angle = nan}, "max_normal_angle"},
             {{.target_faces = 10, .max_aspect_ratio = 0.5}, "max_aspect_ratio"},
             {{.target_faces = 10, .locked_vertices = {T::vertex_index_bound(m) + 3}}, "locked_vertices"},
+            {{.target_faces = 10, .min_angle = 61}, "min_angle"},
+            {{.target_faces = 10, .feature_angle = -1}, "feature_angle"},
+            {{.target_faces = 10, .feature_edges = {T::edge_index_bound(m) + 3}}, "feature_edges"},
         };
         for (const auto& [options, name] : cases) {
             auto r = hmira::decimate(m, options);

@@ -37,8 +37,21 @@ struct decimate_options {
     /// the height onto it, scaled so that an equilateral triangle has 1) unless the face was
     /// already worse. Infinity (the default) turns the check off; must be at least 1.
     double max_aspect_ratio = std::numeric_limits<double>::infinity();
+    /// Refuse a collapse making a face with an angle under this (degrees, [0, 60]) unless it was worse; 0: off.
+    double min_angle = 1;
     /// Vertex indices (T::vertex_index) that neither move nor disappear.
     std::vector<std::size_t> locked_vertices = {};
+    /// Weight each face's plane by its area over the mean face area (a large flat face holds the surface as
+    /// firmly as the many small faces of a detailed part); false: every plane counts once.
+    bool area_weighted = true;
+    /// Edges whose two triangles' normals differ by more than this (degrees, [0, 180]) are feature edges.
+    std::optional<double> feature_angle = std::nullopt;
+    /// More feature edges, by edge index. A feature edge adds to its ends' quadrics the planes through it
+    /// perpendicular to its two faces, weighted like them, so that collapses keep the crease in place.
+    std::vector<std::size_t> feature_edges = {};
+    /// Feature lines keep their shape: a vertex where other than two feature edges meet never moves, one
+    /// inside a line moves only onto its neighbour along it, and no other edge joins two feature vertices.
+    bool keep_features = false;
     /// Called between blocks of collapses with the fraction done; returning false cancels
     /// (errc::cancelled, "decimate: cancelled") and restores the mesh from a copy taken
     /// before the first change (mesh_rollback), which is made only when a callback is given.
@@ -71,27 +84,24 @@ concept decimatable_mesh = triangle_operable_mesh<M, T> && vertex_index_mesh<M, 
 /// Quadric error decimation (Garland and Heckbert 1997): every edge is queued at the error of its best
 /// collapse point (the point that minimises the summed squared distances to the planes of the faces merged
 /// into its ends; the best of the two ends and the midpoint when those planes do not pin a point), and the
-/// cheapest edge collapses (collapse_edge) until a target is reached. After a collapse the survivor's edges
-/// are re-queued at their new cost. A collapse is refused, and the edge leaves the queue until its
-/// neighbourhood changes, when collapse_edge's topology rules (the link condition) or the options'
-/// constraints forbid it. Polygon input is triangulated first (triangulate_faces; the note says so).
-/// Deterministic: single-threaded, ties broken by edge index.
+/// cheapest edge collapses (collapse_edge) until a target is reached; the survivor's edges are re-queued. A
+/// collapse refused by the link condition or the options leaves the queue until its neighbourhood changes.
+/// Polygon input is triangulated first (the note says so). Deterministic: ties broken by edge index.
 ///
 /// \pre every vertex position is finite.
 /// \post the faces are triangles; faces <= the face target when stopped_by is target_faces (one fewer at
 ///       most: an interior collapse removes two faces). Genus and boundary loops are kept (the link
 ///       condition); with keep_boundary the boundary vertices keep their positions. Locked vertices keep
-///       their handles and positions bit for bit. Removed elements are erased the model's way (nothing is
-///       compacted).
+///       their handles and positions bit for bit; with keep_features every vertex on a feature line has the
+///       position of an input vertex on one. Removed elements are erased the model's way (not compacted).
 /// Errors (mesh unchanged): errc::invalid_argument naming the option for no target, a NaN or out-of-range
-/// option, a locked vertex index out of range, or a non-finite position (naming the vertex);
+/// option, a locked vertex or feature edge index out of range, or a non-finite position (naming the vertex);
 /// errc::unsupported for polygon input on a model that cannot triangulate (triangles only is fine);
 /// errc::cancelled for a cancellation ("decimate: cancelled"); the errors of triangulate_faces.
 /// Complexity O(V + E + F) to set up plus O(E log E) to queue every edge; each collapse then costs O(d^2)
 /// for the checks and the refused neighbours (d the valence around it) and O(d log E) for the queue
-/// updates. Plus O(V + E + F) for the copy when a progress callback is given (core/rollback.hpp). Memory: 80 bytes of
-/// quadric
-/// and 1 byte of flags per vertex, about 24 bytes per edge. Cache behaviour: detail/decimate_impl.hpp.
+/// updates; plus O(V + E + F) for the copy a progress callback needs (core/rollback.hpp). Memory: 80 bytes of
+/// quadric and 1 byte of flags per vertex, about 30 bytes per edge. Cache behaviour: detail/decimate_impl.hpp.
 template <class M, class T = default_traits<M>>
     requires decimatable_mesh<M, T>
 [[nodiscard]] result<decimate_result> decimate(M& mesh, const decimate_options& options);

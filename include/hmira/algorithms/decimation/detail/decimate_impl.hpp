@@ -10,6 +10,7 @@
 #pragma once
 
 #include <algorithm>
+#include <utility>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -51,7 +52,6 @@ public:
 
     /// Counts per vertex, quadrics, flags, the queue. O(V + E + F log E).
     void start(std::size_t faces) {
-        namespace dt = detail::triangle_ops;
         faces_ = faces;
         const std::size_t vb = T::vertex_index_bound(m_), eb = T::edge_index_bound(m_);
         quadrics_.assign(vb, quadric{});
@@ -59,39 +59,47 @@ public:
         edges_.assign(eb, E{});
         refused_.assign(eb, 0);
         cos_limit_ = std::cos(o_.max_normal_angle * std::numbers::pi / 180);
+        const double sin_min = std::sin(o_.min_angle * std::numbers::pi / 180);
+        sin_min_sq_ = sin_min * sin_min;
         for (std::size_t i : o_.locked_vertices) fixed_[i] |= locked;
+        // The weight of a face's plane: its area over the mean area (or 1), so that the errors
+        // stay squared distances on the scale of the model.
+        double mean_area = 0;
+        if (o_.area_weighted) {
+            for (auto f : T::faces(m_)) mean_area += norm(twice_area_vector(T::face_halfedge(m_, f)));
+            mean_area = faces > 0 ? mean_area / double(faces) : 0;
+        }
+        const auto weight = [&](double twice_area) { return mean_area > 0 ? twice_area / mean_area : 1.0; };
         for (auto f : T::faces(m_)) {
             const H h = T::face_halfedge(m_, f);
             const V a = T::target(m_, h), b = T::target(m_, T::next(m_, h)), c = T::target(m_, T::prev(m_, h));
-            const auto pa = dt::position_of<M, T>(m_, a);
-            const auto n = cross(dt::position_of<M, T>(m_, b) - pa, dt::position_of<M, T>(m_, c) - pa);
+            const auto pa = position(a);
+            const auto n = cross(position(b) - pa, position(c) - pa);
             const double len = norm(n);
             if (!(len > 0)) continue;  // a degenerate face pins no plane
-            const quadric q = quadric::of_plane(n * (1 / len), pa);
-            quadrics_[T::vertex_index(m_, a)] += q;
-            quadrics_[T::vertex_index(m_, b)] += q;
-            quadrics_[T::vertex_index(m_, c)] += q;
+            const quadric q = quadric::of_plane(n * (1 / len), pa, weight(len));
+            quadrics_[index(a)] += q;
+            quadrics_[index(b)] += q;
+            quadrics_[index(c)] += q;
         }
+        mark_features();
         for (auto e : T::edges(m_)) {
             const H h = T::edge_halfedge(m_, e), o = T::opposite(m_, h);
             const bool hb = T::face(m_, h) == T::null_face(), ob = T::face(m_, o) == T::null_face();
-            if (!hb && !ob) continue;
-            const V a = T::target(m_, o), b = T::target(m_, h);
-            fixed_[T::vertex_index(m_, a)] |= boundary;
-            fixed_[T::vertex_index(m_, b)] |= boundary;
-            if (o_.keep_boundary || (hb && ob)) continue;
+            if (!hb && !ob) {
+                if (!feature_.empty() && feature_[T::edge_index(m_, e)])
+                    for (const H side : {h, o}) add_edge_plane(side, weight);
+                continue;
+            }
+            fixed_[index(T::target(m_, o))] |= boundary;
+            fixed_[index(T::target(m_, h))] |= boundary;
             // A plane through the boundary edge, perpendicular to its face, keeps the
             // boundary from shrinking when boundary edges may collapse.
-            const H inner = hb ? o : h;
-            const auto p0 = dt::position_of<M, T>(m_, T::target(m_, T::opposite(m_, inner)));
-            const auto p1 = dt::position_of<M, T>(m_, T::target(m_, inner));
-            const auto p2 = dt::position_of<M, T>(m_, T::target(m_, T::next(m_, inner)));
-            const auto n = cross(cross(p1 - p0, p2 - p0), p1 - p0);
-            const double len = norm(n);
-            if (!(len > 0)) continue;
-            const quadric q = quadric::of_plane(n * (1 / len), p0);
-            quadrics_[T::vertex_index(m_, a)] += q;
-            quadrics_[T::vertex_index(m_, b)] += q;
+            if (!o_.keep_boundary && !(hb && ob)) add_edge_plane(hb ? o : h, weight);
+        }
+        if (o_.keep_features) {
+            feature_count_.assign(vb, 0);
+            for (auto v : T::vertices(m_)) count_features(v);
         }
         for (auto e : T::edges(m_)) {
             const std::size_t i = T::edge_index(m_, e);
@@ -117,7 +125,7 @@ public:
             heap_.erase(key);
             const auto c = candidate_of(edges_[key]);
             if (!c || !collapse(*c)) {
-                refused_[key] = 1;
+                refuse(key);
                 continue;
             }
             out.error = std::max(out.error, c->cost);
@@ -135,9 +143,69 @@ public:
     std::size_t faces() const noexcept { return faces_; }
 
 private:
-    static constexpr std::uint8_t locked = 1, boundary = 2;
+    // refused_near: an edge at the vertex left the queue refused (refused_), to be retried when
+    // a collapse next to the vertex changes its neighbourhood.
+    static constexpr std::uint8_t locked = 1, boundary = 2, refused_near = 4;
+
+    void refuse(std::uint32_t key) {
+        refused_[key] = 1;
+        const H h = T::edge_halfedge(m_, edges_[key]);
+        fixed_[index(T::target(m_, h))] |= refused_near;
+        fixed_[index(T::target(m_, T::opposite(m_, h)))] |= refused_near;
+    }
 
     std::size_t index(V v) const { return T::vertex_index(m_, v); }
+
+    /// The cross product of the triangle of h's edges: twice its area, along its normal.
+    vec3<double> twice_area_vector(H h) const {
+        const auto p0 = position(T::target(m_, T::opposite(m_, h))), p1 = position(T::target(m_, h));
+        return cross(p1 - p0, position(T::target(m_, T::next(m_, h))) - p0);
+    }
+
+    /// The plane through the edge of h perpendicular to h's triangle, weighted like that
+    /// triangle, joins the quadrics of the edge's ends.
+    template <class Weight>
+    void add_edge_plane(H h, const Weight& weight) {
+        const V a = T::target(m_, T::opposite(m_, h)), b = T::target(m_, h);
+        const auto face_n = twice_area_vector(h);
+        const auto n = cross(face_n, position(b) - position(a));
+        const double len = norm(n);
+        if (!(len > 0)) return;
+        const quadric q = quadric::of_plane(n * (1 / len), position(a), weight(norm(face_n)));
+        quadrics_[index(a)] += q;
+        quadrics_[index(b)] += q;
+    }
+
+    /// Feature edges by edge index, from the options' angle and list (none: feature_ stays empty).
+    void mark_features() {
+        if (!o_.feature_angle && o_.feature_edges.empty() && !o_.keep_features) return;
+        feature_.assign(T::edge_index_bound(m_), 0);
+        for (std::size_t i : o_.feature_edges) feature_[i] = 1;
+        if (!o_.feature_angle) return;
+        const double cos_limit = std::cos(*o_.feature_angle * std::numbers::pi / 180);
+        for (auto e : T::edges(m_)) {
+            const H h = T::edge_halfedge(m_, e), o = T::opposite(m_, h);
+            if (T::face(m_, h) == T::null_face() || T::face(m_, o) == T::null_face()) continue;
+            const auto n0 = twice_area_vector(h), n1 = twice_area_vector(o);
+            const double len = std::sqrt(squared_norm(n0) * squared_norm(n1));
+            if (len > 0 && dot(n0, n1) < cos_limit * len) feature_[T::edge_index(m_, e)] = 1;
+        }
+    }
+
+    bool is_feature(E e) const { return !feature_.empty() && feature_[T::edge_index(m_, e)]; }
+
+    /// The number of feature edges at v, up to 3 (keep_features).
+    void count_features(V v) {
+        std::uint8_t n = 0;
+        const H s = T::vertex_halfedge(m_, v);
+        if (s == T::null_halfedge()) return;
+        H x = s;
+        do {
+            if (is_feature(T::edge(m_, x)) && n < 3) ++n;
+            x = T::next(m_, T::opposite(m_, x));
+        } while (x != s);
+        feature_count_[index(v)] = n;
+    }
     vec3<double> position(V v) const { return detail::triangle_ops::position_of<M, T>(m_, v); }
     bool pinned(V v) const {
         const std::uint8_t f = fixed_[index(v)];
@@ -150,12 +218,23 @@ private:
         if (o_.keep_boundary && (T::face(m_, h) == T::null_face() || T::face(m_, o) == T::null_face()))
             return std::nullopt;
         const V a = T::target(m_, o), b = T::target(m_, h);
-        const bool pa = pinned(a), pb = pinned(b);
+        bool pa = pinned(a), pb = pinned(b), on_line = false;
+        if (o_.keep_features) {
+            // Along a feature line only its inner vertices move; off it, a feature vertex stays.
+            const std::uint8_t ca = feature_count_[index(a)], cb = feature_count_[index(b)];
+            on_line = is_feature(e);
+            pa = pa || (on_line ? ca != 2 : ca > 0);
+            pb = pb || (on_line ? cb != 2 : cb > 0);
+        }
         if (pa && pb) return std::nullopt;
         const quadric q = quadrics_[index(a)] + quadrics_[index(b)];
         // A pinned end survives where it is.
         if (pa) return candidate<H>{o, position(a), q(position(a))};
         if (pb) return candidate<H>{h, position(b), q(position(b))};
+        if (on_line) {  // the survivor stays on the line: at the better end
+            const double cb = q(position(b)), ca = q(position(a));
+            return ca < cb ? candidate<H>{o, position(a), ca} : candidate<H>{h, position(b), cb};
+        }
         if (const auto x = q.minimiser(); x && std::isfinite(x->x) && std::isfinite(x->y) && std::isfinite(x->z))
             return candidate<H>{h, *x, q(*x)};
         // No single best point: the best of the two ends and the midpoint.
@@ -201,6 +280,10 @@ private:
                     if (lb > 0 && (cos_limit_ >= 0 ? d < 0 || d * d < cos_limit_ * cos_limit_ * lb * la
                                                    : d < 0 && d * d > cos_limit_ * cos_limit_ * lb * la))
                         return false;
+                    if (sin_min_sq_ > 0) {
+                        const double after_sin = sin_min_angle_sq(c.position, qu, qw, la);
+                        if (after_sin < sin_min_sq_ && after_sin < sin_min_angle_sq(pv, pu, pw, lb)) return false;
+                    }
                     if (aspect) {
                         const double r_after = aspect_ratio(c.position, qu, qw, la);
                         if (r_after > o_.max_aspect_ratio && r_after > aspect_ratio(pv, pu, pw, lb)) return false;
@@ -210,6 +293,18 @@ private:
             } while (x != s);
         }
         return true;
+    }
+
+    /// The squared sine of the triangle's smallest angle (opposite its shortest side: twice the
+    /// area over the two longer sides); `twice_area_sq` is the squared norm of the cross product.
+    static double sin_min_angle_sq(const vec3<double>& p, const vec3<double>& q, const vec3<double>& r,
+                                   double twice_area_sq) {
+        double a = squared_norm(q - p), b = squared_norm(r - q), c = squared_norm(p - r);
+        if (a > b) std::swap(a, b);
+        if (b > c) std::swap(b, c);
+        if (a > b) std::swap(a, b);
+        const double d = b * c;
+        return d > 0 ? twice_area_sq / d : 0;
     }
 
     /// Longest edge over the height onto it, 1 for an equilateral triangle; `twice_area_sq`
@@ -231,15 +326,31 @@ private:
         const auto f0 = T::face(m_, h), f1 = T::face(m_, o);
         const std::uint32_t side0 = std::uint32_t(T::edge_index(m_, T::edge(m_, T::prev(m_, h))));
         const std::uint32_t side1 = std::uint32_t(T::edge_index(m_, T::edge(m_, T::next(m_, o))));
-        auto r = collapse_edge<M, T>(m_, h, {.placement = collapse_placement::given, .position = c.position});
-        if (!r) return false;  // the topology rules refused it; collapse_edge changed nothing
+        // The side edges that stay take the place of those that go, feature flag included.
+        const std::uint32_t kept0 = std::uint32_t(T::edge_index(m_, T::edge(m_, T::next(m_, h))));
+        const std::uint32_t kept1 = std::uint32_t(T::edge_index(m_, T::edge(m_, T::prev(m_, o))));
+        const V c0 = T::target(m_, T::next(m_, h)), c1 = T::target(m_, T::next(m_, o));
+        // collapse_edge's steps without its error message, which a refusal would build for nothing:
+        // the topology rules (the link condition), then the collapse itself.
+        if (*dt::collapse_refusal<M, T>(m_, h, {}) != '\0') return false;
+        auto links = dt::read_collapse_links<M, T>(m_, h);
+        dt::apply_collapse<M, T>(m_, links, c.position);
         // The edges beside the edge went with their triangles.
         if (f0 != T::null_face()) heap_.erase(side0), --faces_;
         if (f1 != T::null_face()) heap_.erase(side1), --faces_;
+        if (!feature_.empty()) {
+            if (f0 != T::null_face()) feature_[kept0] |= feature_[side0];
+            if (f1 != T::null_face()) feature_[kept1] |= feature_[side1];
+        }
+        if (o_.keep_features) {
+            count_features(b);
+            if (f0 != T::null_face()) count_features(c0);
+            if (f1 != T::null_face()) count_features(c1);
+        }
         quadrics_[index(b)] += quadrics_[index(a)];
-        fixed_[index(b)] |= fixed_[index(a)] & boundary;
+        fixed_[index(b)] = std::uint8_t((fixed_[index(b)] | (fixed_[index(a)] & boundary)) & ~refused_near);
         // Every edge at the survivor has a new cost; an edge refused before at a neighbour may
-        // pass now that the neighbourhood changed.
+        // pass now that the neighbourhood changed (only neighbours marked refused_near have one).
         const H s = T::vertex_halfedge(m_, b);
         H x = s;
         do {
@@ -248,13 +359,16 @@ private:
         } while (x != s);
         do {
             const V n = T::target(m_, x);
-            const H t = T::vertex_halfedge(m_, n);
-            H y = t;
-            do {
-                const std::uint32_t k = std::uint32_t(T::edge_index(m_, T::edge(m_, y)));
-                if (refused_[k]) update(k);
-                y = T::next(m_, T::opposite(m_, y));
-            } while (y != t);
+            if (std::uint8_t& flags = fixed_[index(n)]; flags & refused_near) {
+                flags = std::uint8_t(flags & ~refused_near);  // every refused edge at n is retried below
+                const H t = T::vertex_halfedge(m_, n);
+                H y = t;
+                do {
+                    const std::uint32_t k = std::uint32_t(T::edge_index(m_, T::edge(m_, y)));
+                    if (refused_[k]) update(k);
+                    y = T::next(m_, T::opposite(m_, y));
+                } while (y != t);
+            }
             x = T::next(m_, T::opposite(m_, x));
         } while (x != s);
         return true;
@@ -267,8 +381,11 @@ private:
     std::vector<std::uint8_t> fixed_;    // by vertex index: locked, boundary
     std::vector<E> edges_;               // by edge index
     std::vector<std::uint8_t> refused_;  // by edge index: left the queue refused, retried nearby
+    std::vector<std::uint8_t> feature_;        // by edge index (empty without features)
+    std::vector<std::uint8_t> feature_count_;  // by vertex index: feature edges at it, up to 3 (keep_features)
     std::size_t faces_ = 0;
     double cos_limit_ = 0;
+    double sin_min_sq_ = 0;
 };
 
 }  // namespace detail::decimation
@@ -287,8 +404,19 @@ result<decimate_result> decimate(M& mesh, const decimate_options& options) {
     if (!(options.max_normal_angle >= 0 && options.max_normal_angle <= 180))
         return bad("option max_normal_angle must be in [0, 180] degrees, got " +
                    std::to_string(options.max_normal_angle));
+    if (!(options.min_angle >= 0 && options.min_angle <= 60))
+        return bad("option min_angle must be in [0, 60] degrees, got " + std::to_string(options.min_angle));
     if (!(options.max_aspect_ratio >= 1))
         return bad("option max_aspect_ratio must be at least 1, got " + std::to_string(options.max_aspect_ratio));
+    if (options.feature_angle && !(*options.feature_angle >= 0 && *options.feature_angle <= 180))
+        return bad("option feature_angle must be in [0, 180] degrees, got " + std::to_string(*options.feature_angle));
+    if (!options.feature_edges.empty()) {
+        std::vector<std::uint8_t> live(T::edge_index_bound(mesh), 0);
+        for (auto e : T::edges(mesh)) live[T::edge_index(mesh, e)] = 1;
+        for (std::size_t i : options.feature_edges)
+            if (i >= live.size() || !live[i])
+                return bad("option feature_edges names edge " + std::to_string(i) + ", which does not exist");
+    }
     if (!options.locked_vertices.empty()) {
         std::vector<std::uint8_t> live(T::vertex_index_bound(mesh), 0);
         for (auto v : T::vertices(mesh)) live[T::vertex_index(mesh, v)] = 1;
