@@ -42,8 +42,7 @@ int run_decimate(const decimate_args& a, const common_options& o) {
                         options.max_normal_angle = a.max_normal_angle;
                         if (a.max_aspect_ratio > 0) options.max_aspect_ratio = a.max_aspect_ratio;
                         options.locked_vertices = a.fixed;
-                        options.locked_vertices.insert(options.locked_vertices.end(), a.locked.begin(),
-                                                       a.locked.end());
+                        options.locked_vertices.insert(options.locked_vertices.end(), a.locked.begin(), a.locked.end());
                         options.progress = [&](double f) {
                             bar.update(std::uint64_t(f * double(work)), work);
                             return true;

@@ -81,7 +81,8 @@ void bind_mesh_holes(nb::class_<py_mesh>& c) {
         .def("fill_holes", &fill_holes, nb::arg("max_edges") = hmira::fill_holes_default_max_edges, nb::kw_only(),
              nb::arg("max_dynamic_programming_edges") = defaults.max_dynamic_programming_edges,
              nb::arg("refine") = defaults.refine, nb::arg("fair") = name_of(defaults.fair),
-             "Fills every hole of at most max_edges boundary edges (the CLI's --max-edges and default) (refine and fair as for fill_hole); returns "
+             "Fills every hole of at most max_edges boundary edges (the CLI's --max-edges and default) (refine and "
+             "fair as for fill_hole); returns "
              "{'filled', 'skipped', "
              "'faces_added', 'vertices_added', 'unfaired', 'open'}, 'open' listing each hole left open as {'vertex', "
              "'edges', "

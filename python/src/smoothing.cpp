@@ -34,14 +34,13 @@ void bind_mesh_smoothing(nb::class_<py_mesh>& c) {
          "laplacian_smooth",
          [](py_mesh& s, std::size_t iterations, double lambda, const std::string& weights, bool fix_boundary,
             std::optional<std::vector<long long>> fixed_vertices, bool refresh_weights, unsigned threads) {
-             hmira::laplacian_smooth_options o{
-                 .iterations = iterations,
-                 .lambda = lambda,
-                 .weights = weights_arg(weights, "laplacian_smooth"),
-                 .fix_boundary = fix_boundary,
-                 .fixed_vertices = fixed_arg(s.get(), fixed_vertices, "laplacian_smooth"),
-                 .refresh_weights = refresh_weights,
-                 .threads = threads};
+             hmira::laplacian_smooth_options o{.iterations = iterations,
+                                               .lambda = lambda,
+                                               .weights = weights_arg(weights, "laplacian_smooth"),
+                                               .fix_boundary = fix_boundary,
+                                               .fixed_vertices = fixed_arg(s.get(), fixed_vertices, "laplacian_smooth"),
+                                               .refresh_weights = refresh_weights,
+                                               .threads = threads};
              return smooth(s, o,
                            [](halfedge_mesh& m, const auto& options) { return hmira::laplacian_smooth(m, options); });
          },

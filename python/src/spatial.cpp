@@ -75,8 +75,8 @@ struct py_bvh {
             throw hmira_failure(hmira::errc::invalid_argument,
                                 std::string(who) + ": the mesh changed since its BVH was built: rebuild the BVH");
         mesh->refuse_while_writing();
-        check(hmira::detail::bvh_build::check_fresh<halfedge_mesh, hmira::default_traits<halfedge_mesh>>(
-            *mesh->mesh, tree, who));
+        check(hmira::detail::bvh_build::check_fresh<halfedge_mesh, hmira::default_traits<halfedge_mesh>>(*mesh->mesh,
+                                                                                                         tree, who));
     }
 };
 
@@ -86,7 +86,7 @@ hmira::bvh build(const py_mesh& m, const char* who) {
 }
 
 nb::tuple closest(const hmira::bvh& tree, const any_array& points, double max_distance, unsigned threads,
-                    const std::string& nan, const char* who) {
+                  const std::string& nan, const char* who) {
     const rows in(points, who, "points");
     const hmira::closest_point_options o{.max_distance = max_distance, .threads = threads, .nan = nan_arg(nan, who)};
     std::vector<double> p, b, d;
@@ -116,7 +116,8 @@ nb::tuple closest(const hmira::bvh& tree, const any_array& points, double max_di
 /// mode "first": (t, faces, barycentrics, points); mode "any": a bool array.
 nb::object intersect(const hmira::bvh& tree, const any_array& origins, const any_array& directions,
                      const std::string& mode, unsigned threads, const std::string& nan, const char* who) {
-    if (mode != "first" && mode != "any") value_error(std::string(who) + ": mode must be 'first' or 'any', got '" + mode + "'");
+    if (mode != "first" && mode != "any")
+        value_error(std::string(who) + ": mode must be 'first' or 'any', got '" + mode + "'");
     const rows o(origins, who, "origins"), d(directions, who, "directions");
     if (o.n != d.n)
         value_error(std::string(who) + ": " + std::to_string(o.n) + " origins but " + std::to_string(d.n) +
@@ -212,10 +213,10 @@ std::string with_example(const char* doc, const char* example) {
 void bind_mesh_spatial(nb::class_<py_mesh>& c) {
     const hmira::closest_point_options defaults;
     // Docstrings live as long as the module.
-    static const std::string closest_mesh_doc = with_example(
-        closest_doc,
-        ">>> points, faces, bary, dist = m.closest_point(np.array([[0.2, 0.2, 1.0]]))\n"
-        ">>> faces.tolist(), dist.tolist()\n([0], [1.0])\n");
+    static const std::string closest_mesh_doc =
+        with_example(closest_doc,
+                     ">>> points, faces, bary, dist = m.closest_point(np.array([[0.2, 0.2, 1.0]]))\n"
+                     ">>> faces.tolist(), dist.tolist()\n([0], [1.0])\n");
     static const std::string ray_mesh_doc = with_example(
         ray_doc,
         ">>> t, faces, bary, points = m.ray_intersect(np.array([[0.2, 0.2, 1.0]]), np.array([[0.0, 0.0, -1.0]]))\n"
@@ -227,8 +228,7 @@ void bind_mesh_spatial(nb::class_<py_mesh>& c) {
              return closest(tree, points, max_distance, threads, nan, "closest_point");
          },
          nb::arg("points"), nb::kw_only(), nb::arg("max_distance") = defaults.max_distance,
-         nb::arg("threads") = defaults.threads, nb::arg("nan") = "raise",
-         closest_mesh_doc.c_str())
+         nb::arg("threads") = defaults.threads, nb::arg("nan") = "raise", closest_mesh_doc.c_str())
         .def(
             "ray_intersect",
             [](const py_mesh& s, const any_array& origins, const any_array& directions, const std::string& mode,
@@ -237,21 +237,21 @@ void bind_mesh_spatial(nb::class_<py_mesh>& c) {
                 return intersect(tree, origins, directions, mode, threads, nan, "ray_intersect");
             },
             nb::arg("origins"), nb::arg("directions"), nb::kw_only(), nb::arg("mode") = "first",
-            nb::arg("threads") = 0u, nb::arg("nan") = "raise",
-            ray_mesh_doc.c_str());
+            nb::arg("threads") = 0u, nb::arg("nan") = "raise", ray_mesh_doc.c_str());
 }
 
 void bind_spatial(nb::module_& m) {
-    nb::class_<py_bvh>(m, "BVH",
-                       "A bounding-volume hierarchy over a Mesh's faces (polygons triangulated in their plane), for\n"
-                       "repeated batched closest-point and ray queries.\n\n"
-                       "The tree copies the triangles; a query after the mesh's connectivity changed raises\n"
-                       "ValueError. Positions moved in place (through Mesh.vertices) are not detected: call refit().\n\n"
-                       "Parameters\n----------\nmesh : Mesh\n    A mesh with at least one face.\n\n"
-                       "Examples\n--------\n>>> import hmira, numpy as np\n"
-                       ">>> m = hmira.Mesh([[0, 0, 0], [1, 0, 0], [0, 1, 0]], [[0, 1, 2]])\n"
-                       ">>> bvh = hmira.BVH(m)\n"
-                       ">>> bvh.closest_point(np.array([[0.2, 0.2, 1.0]]))[3].tolist()\n[1.0]\n")
+    nb::class_<py_bvh>(
+        m, "BVH",
+        "A bounding-volume hierarchy over a Mesh's faces (polygons triangulated in their plane), for\n"
+        "repeated batched closest-point and ray queries.\n\n"
+        "The tree copies the triangles; a query after the mesh's connectivity changed raises\n"
+        "ValueError. Positions moved in place (through Mesh.vertices) are not detected: call refit().\n\n"
+        "Parameters\n----------\nmesh : Mesh\n    A mesh with at least one face.\n\n"
+        "Examples\n--------\n>>> import hmira, numpy as np\n"
+        ">>> m = hmira.Mesh([[0, 0, 0], [1, 0, 0], [0, 1, 0]], [[0, 1, 2]])\n"
+        ">>> bvh = hmira.BVH(m)\n"
+        ">>> bvh.closest_point(np.array([[0.2, 0.2, 1.0]]))[3].tolist()\n[1.0]\n")
         .def(
             "__init__",
             [](py_bvh* self, nb::handle mesh) {
@@ -265,7 +265,8 @@ void bind_spatial(nb::module_& m) {
             "refit",
             [](py_bvh& b) {
                 b.check_fresh("BVH.refit");
-                check(read_without_gil(*b.mesh, [&](const halfedge_mesh& mesh) { return hmira::refit_bvh(mesh, b.tree); }));
+                check(read_without_gil(*b.mesh,
+                                       [&](const halfedge_mesh& mesh) { return hmira::refit_bvh(mesh, b.tree); }));
             },
             "Recomputes the boxes from the mesh's current positions (after moving vertices), keeping the tree.")
         .def(

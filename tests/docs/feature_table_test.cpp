@@ -40,6 +40,10 @@
 #include <hmira/algorithms/decimation/decimate.hpp>
 #include <hmira/algorithms/spatial/aabb_tree.hpp>
 #include <hmira/algorithms/spatial/winding_number.hpp>
+#include <hmira/algorithms/spatial/bvh.hpp>
+#include <hmira/algorithms/spatial/inside_closed.hpp>
+#include <hmira/algorithms/validation/self_intersections.hpp>
+#include <hmira/algorithms/geometry/mesh_measures.hpp>
 #include <hmira/algorithms/subdivision/catmull_clark.hpp>
 #include <hmira/algorithms/subdivision/sqrt3.hpp>
 #include <hmira/algorithms/subdivision/loop.hpp>
@@ -215,6 +219,15 @@ HMIRA_ROW(row_surface_queries,
           "hausdorff_distance)",
           hmira::surface_query_mesh, (const M& m, std::span<const hmira::vec3<double>> p),
           hmira::winding_number<M, T>(m, p));
+HMIRA_ROW(row_bvh, "build_bvh, refit_bvh (closest_point(s), first/any/all ray hits)", "algorithms/spatial/bvh.hpp",
+          hmira::bvh_source_mesh, (const M& m), hmira::build_bvh<M, T>(m));
+HMIRA_ROW(row_inside_closed, "inside_closed, closed_winding_number (exact)", "algorithms/spatial/inside_closed.hpp",
+          hmira::inside_closed_mesh, (const M& m, std::span<const hmira::vec3<double>> p),
+          hmira::inside_closed<M, T>(m, p));
+HMIRA_ROW(row_self_intersections, "self_intersections (exact)", "algorithms/validation/self_intersections.hpp",
+          hmira::self_intersection_mesh, (const M& m), hmira::self_intersections<M, T>(m));
+HMIRA_ROW(row_measures, "surface_area, signed_volume", "algorithms/geometry/mesh_measures.hpp", hmira::face_normal_mesh,
+          (const M& m), hmira::signed_volume<M, T>(m));
 HMIRA_ROW(row_marching_cubes, "marching_cubes (into the mesh)", "algorithms/conversion/marching_cubes.hpp",
           hmira::mesh_builder, (M & m, const hmira::dense_grid<float>& g), hmira::marching_cubes<M, T>(m, g));
 HMIRA_ROW(row_voxelize, "voxelize", "algorithms/conversion/voxelize.hpp", hmira::voxelize_mesh,
@@ -238,8 +251,9 @@ using rows =
              row_remove_face, row_remove_vertex, row_truncate, row_bevel, row_extrude, row_flip_edge, row_split_edge,
              row_split_face, row_collapse_edge, row_face_triangles, row_triangulate_faces, row_fill_hole,
              row_fill_holes, row_loop, row_sqrt3, row_catmull_clark, row_decimate, row_smooth, row_remesh,
-             row_copy_from, row_copy_into, row_aabb_tree, row_surface_queries, row_marching_cubes, row_voxelize,
-             row_delaunay, row_read, row_write, row_adapt_brute, row_adapt_indexed>;
+             row_copy_from, row_copy_into, row_aabb_tree, row_surface_queries, row_bvh, row_inside_closed,
+             row_self_intersections, row_measures, row_marching_cubes, row_voxelize, row_delaunay, row_read, row_write,
+             row_adapt_brute, row_adapt_indexed>;
 
 // ---- the capabilities of concepts.hpp: one row each -------------------------------------------
 
@@ -773,6 +787,30 @@ void run_everyday_claims() {
         const double centre = tree->closest_point({0, 0, 0}).distance;
         EXPECT_GT(centre, 0.5 * hmira::norm(corner)) << title;
         EXPECT_LT(centre, hmira::norm(corner)) << title;
+    }
+    if constexpr (row_bvh::supported<M>) {
+        auto m = icosahedron<M>();
+        auto tree = hmira::build_bvh(m);
+        ASSERT_TRUE(tree) << title << ": " << tree.error().message;
+        auto c = hmira::closest_point(m, *tree, hmira::vec3<double>{0, 0, 0});
+        ASSERT_TRUE(c) << title << ": " << c.error().message;
+        EXPECT_GT(c->distance, 0.5) << title;  // the origin is inside, away from every face
+    }
+    if constexpr (row_inside_closed::supported<M>) {
+        auto m = icosahedron<M>();
+        const std::vector<hmira::vec3<double>> p{{0, 0, 0}, {5, 5, 5}};
+        auto where = hmira::inside_closed(m, std::span<const hmira::vec3<double>>(p));
+        ASSERT_TRUE(where) << title << ": " << where.error().message;
+        EXPECT_EQ((*where)[0], hmira::point_location::inside) << title;
+        EXPECT_EQ((*where)[1], hmira::point_location::outside) << title;
+    }
+    if constexpr (row_self_intersections::supported<M>) {
+        auto pairs = hmira::self_intersections(icosahedron<M>());
+        ASSERT_TRUE(pairs) << title << ": " << pairs.error().message;
+        EXPECT_TRUE(pairs->empty()) << title;
+    }
+    if constexpr (row_measures::supported<M>) {
+        EXPECT_GT(hmira::signed_volume(icosahedron<M>()), 0) << title;
     }
     if constexpr (row_surface_queries::supported<M>) {
         auto m = icosahedron<M>();

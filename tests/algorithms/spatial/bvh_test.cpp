@@ -76,9 +76,8 @@ v3 newell(const polygon& g) {
 /// Whether q (in the polygon's plane) is inside it: crossing number in the projection that
 /// drops the normal's largest coordinate.
 bool inside(const polygon& g, const v3& q, const v3& n) {
-    const std::size_t k = std::abs(n.x) >= std::abs(n.y) && std::abs(n.x) >= std::abs(n.z)
-                              ? 0
-                              : (std::abs(n.y) >= std::abs(n.z) ? 1 : 2);
+    const std::size_t k =
+        std::abs(n.x) >= std::abs(n.y) && std::abs(n.x) >= std::abs(n.z) ? 0 : (std::abs(n.y) >= std::abs(n.z) ? 1 : 2);
     const std::size_t u = (k + 1) % 3, w = (k + 2) % 3;
     bool in = false;
     for (std::size_t i = 0, j = g.corners.size() - 1; i < g.corners.size(); j = i++) {
@@ -98,7 +97,8 @@ double polygon_distance(const polygon& g, const v3& p) {
     }
     double best = inf;
     for (std::size_t i = 0; i < g.corners.size(); ++i)
-        best = std::min(best, hmira::norm(closest_on_segment(p, g.corners[i], g.corners[(i + 1) % g.corners.size()]) - p));
+        best =
+            std::min(best, hmira::norm(closest_on_segment(p, g.corners[i], g.corners[(i + 1) % g.corners.size()]) - p));
     return best;
 }
 
@@ -185,10 +185,9 @@ void check_queries(const hmira::bvh& tree, const std::vector<polygon>& polys, un
             double edge = inf;
             for (const auto& g : polys)
                 for (std::size_t k = 0; k < g.corners.size(); ++k)
-                    edge = std::min(edge,
-                                    hmira::norm(closest_on_segment(q, g.corners[k],
-                                                                   g.corners[(k + 1) % g.corners.size()]) -
-                                                q));
+                    edge = std::min(
+                        edge,
+                        hmira::norm(closest_on_segment(q, g.corners[k], g.corners[(k + 1) % g.corners.size()]) - q));
             EXPECT_LT(edge, eps) << "query " << i << " brute " << b.t << " tree " << h.t;
         } else {
             EXPECT_EQ(b.hits, 0u);
@@ -280,7 +279,8 @@ TYPED_TEST(bvh_test, concave_faces_are_cut_in_their_plane_not_fanned) {
             for (std::size_t j = 0; j < g.corners.size(); j += 2) {
                 const v3 notch = centre + (g.corners[j] - centre) * 1.03;
                 ASSERT_FALSE(inside(g, notch, n));
-                for (const auto& h : tree->all_hits({.origin = notch + n, .direction = n * -1, .t_min = 0.5, .t_max = 1.5}))
+                for (const auto& h :
+                     tree->all_hits({.origin = notch + n, .direction = n * -1, .t_min = 0.5, .t_max = 1.5}))
                     EXPECT_NE(h.face, g.face) << "corner " << j;
             }
             const auto h = tree->first_hit({.origin = centre + n, .direction = n * -1});

@@ -15,27 +15,23 @@
 
 namespace hmira {
 
-/// Options of decimate. Set at least one of the three targets; with several, decimation
-/// stops at the first one reached.
+/// Options of decimate. Set at least one of the three targets; with several, it stops at the first reached.
 struct decimate_options {
     /// Stop once the mesh has at most this many faces.
     std::optional<std::size_t> target_faces = std::nullopt;
     /// Stop once the mesh has at most this fraction of its (triangulated) faces, in [0, 1].
     std::optional<double> target_ratio = std::nullopt;
-    /// Stop before a collapse whose error exceeds this distance in model units (the square
-    /// root of the quadric error: the root of the summed squared distances to the planes the
-    /// new vertex stands for, an upper bound of its distance to each of them).
+    /// Stop before a collapse whose error exceeds this distance in model units (the root of the summed squared
+    /// distances to the planes the new vertex stands for, an upper bound of its distance to each of them).
     std::optional<double> max_error = std::nullopt;
-    /// Boundary vertices never move and boundary edges never collapse. When false, boundary
-    /// edges collapse too, held near their place by planes through them perpendicular to
-    /// their face.
+    /// Boundary vertices never move and boundary edges never collapse. When false, boundary edges collapse
+    /// too, held near their place by planes through them perpendicular to their face.
     bool keep_boundary = true;
-    /// Refuse a collapse that turns the normal of a remaining face by more than this many
-    /// degrees, in [0, 180]; a face that would degenerate is always refused.
+    /// Refuse a collapse that turns a remaining face's normal by more than this (degrees, [0, 180]); a face
+    /// that would degenerate is always refused.
     double max_normal_angle = 90;
-    /// Refuse a collapse that makes a face with an aspect ratio above this (longest edge over
-    /// the height onto it, scaled so that an equilateral triangle has 1) unless the face was
-    /// already worse. Infinity (the default) turns the check off; must be at least 1.
+    /// Refuse a collapse making a face with an aspect ratio (longest edge over the height onto it, 1 for an
+    /// equilateral triangle) above this unless it was worse. At least 1; infinity (the default): off.
     double max_aspect_ratio = std::numeric_limits<double>::infinity();
     /// Refuse a collapse making a face with an angle under this (degrees, [0, 60]) unless it was worse; 0: off.
     double min_angle = 1;
@@ -52,9 +48,8 @@ struct decimate_options {
     /// Feature lines keep their shape: a vertex where other than two feature edges meet never moves, one
     /// inside a line moves only onto its neighbour along it, and no other edge joins two feature vertices.
     bool keep_features = false;
-    /// Called between blocks of collapses with the fraction done; returning false cancels
-    /// (errc::cancelled, "decimate: cancelled") and restores the mesh from a copy taken
-    /// before the first change (mesh_rollback), which is made only when a callback is given.
+    /// Called between blocks of collapses with the fraction done; returning false cancels (errc::cancelled,
+    /// "decimate: cancelled") and restores the mesh from a copy (mesh_rollback) made only when one is given.
     progress_function progress = {};
 };
 
@@ -76,8 +71,8 @@ struct decimate_result {
     std::string note;  ///< in words: the triangulation, and why a face target was missed
 };
 
-/// A mesh decimate can run on: the triangle operators, dense vertex and edge indices, and
-/// (for polygon input only) the Euler operators that triangulate.
+/// A mesh decimate can run on: the triangle operators, dense vertex and edge indices, and (for polygon input
+/// only) the Euler operators that triangulate.
 template <class M, class T = default_traits<M>>
 concept decimatable_mesh = triangle_operable_mesh<M, T> && vertex_index_mesh<M, T> && edge_index_mesh<M, T>;
 

@@ -20,8 +20,8 @@ namespace hmira {
 
 /// Options of build_bvh.
 struct bvh_options {
-    unsigned threads = 0;              ///< worker threads for the build (0: all); the tree never depends on it
-    std::uint32_t max_leaf_size = 4;   ///< a leaf holds at most this many triangles (1 to 64)
+    unsigned threads = 0;             ///< worker threads for the build (0: all); the tree never depends on it
+    std::uint32_t max_leaf_size = 4;  ///< a leaf holds at most this many triangles (1 to 64)
 };
 
 /// What a batched query does with a query that is not finite (a NaN or infinite coordinate).
@@ -75,8 +75,8 @@ struct bvh_access;
 /// vertex indices (the triangles' corners). Models with `T::change_count` (change_counted_mesh)
 /// also let the mesh-taking queries notice a change of connectivity that keeps the counts.
 template <class M, class T = default_traits<M>>
-concept bvh_source_mesh = face_triangulable_mesh<M, T> && vertex_index_mesh<M, T> && vertex_list_mesh<M, T> &&
-                          face_list_mesh<M, T>;
+concept bvh_source_mesh =
+    face_triangulable_mesh<M, T> && vertex_index_mesh<M, T> && vertex_list_mesh<M, T> && face_list_mesh<M, T>;
 
 /// A bvh over the faces of `mesh`. A triangle is taken as it is; a polygon, or a face with inner
 /// rings, is cut by face_triangles (triangulate_polygon in the face's plane, so concave faces
@@ -135,8 +135,7 @@ template <class M, class T = default_traits<M>>
 [[nodiscard]] result<bool> ray_any_hit(const M& mesh, const bvh& tree, const ray& r);
 template <class M, class T = default_traits<M>>
     requires bvh_source_mesh<M, T>
-[[nodiscard]] result<std::vector<std::uint8_t>> ray_any_hits(const M& mesh, const bvh& tree,
-                                                             std::span<const ray> rays,
+[[nodiscard]] result<std::vector<std::uint8_t>> ray_any_hits(const M& mesh, const bvh& tree, std::span<const ray> rays,
                                                              const ray_query_options& options = {});
 template <class M, class T = default_traits<M>>
     requires bvh_source_mesh<M, T>
@@ -239,10 +238,10 @@ private:
     friend struct detail::bvh_access;
 
     std::vector<node> nodes_;
-    std::vector<corners> corners_;                     // leaf order
+    std::vector<corners> corners_;                        // leaf order
     std::vector<std::array<std::uint32_t, 3>> vertices_;  // leaf order
-    std::vector<std::size_t> faces_;                   // leaf order
-    std::vector<std::uint8_t> degenerate_;             // leaf order: corners collinear, exactly
+    std::vector<std::size_t> faces_;                      // leaf order
+    std::vector<std::uint8_t> degenerate_;                // leaf order: corners collinear, exactly
     std::size_t point_count_ = 0, depth_ = 0;
     source source_{};
 };

@@ -377,10 +377,10 @@ private:
     M& m_;
     const decimate_options& o_;
     indexed_heap heap_;
-    std::vector<quadric> quadrics_;      // by vertex index
-    std::vector<std::uint8_t> fixed_;    // by vertex index: locked, boundary
-    std::vector<E> edges_;               // by edge index
-    std::vector<std::uint8_t> refused_;  // by edge index: left the queue refused, retried nearby
+    std::vector<quadric> quadrics_;            // by vertex index
+    std::vector<std::uint8_t> fixed_;          // by vertex index: locked, boundary
+    std::vector<E> edges_;                     // by edge index
+    std::vector<std::uint8_t> refused_;        // by edge index: left the queue refused, retried nearby
     std::vector<std::uint8_t> feature_;        // by edge index (empty without features)
     std::vector<std::uint8_t> feature_count_;  // by vertex index: feature edges at it, up to 3 (keep_features)
     std::size_t faces_ = 0;

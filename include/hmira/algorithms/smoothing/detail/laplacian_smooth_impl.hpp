@@ -221,7 +221,6 @@ void freeze_weights(neighbourhoods<Index>& n, const std::vector<vec3<double>>& p
     });
 }
 
-
 /// One Jacobi step out = p + amount * L(p) over the rows, in parallel; `round` brings each new
 /// position to what the mesh's scalar holds, so a model with float positions rounds between
 /// steps as it would writing and reading back its positions. Every check_every vertices
@@ -312,8 +311,10 @@ result<void> run_on(M& m, const run_options& o, std::initializer_list<double> am
     // The positions are read once, into the rollback, and written once, at the end.
     position_rollback<M, T> undo(m);
     const auto round = [](const vec3<double>& q) {
-        if constexpr (std::is_same_v<S, double>) return q;
-        else return vec3<double>{double(S(q.x)), double(S(q.y)), double(S(q.z))};
+        if constexpr (std::is_same_v<S, double>)
+            return q;
+        else
+            return vec3<double>{double(S(q.x)), double(S(q.y)), double(S(q.z))};
     };
     const bool cotangent = o.weights == laplacian_weights::cotangent;
     step_status status;
@@ -400,8 +401,8 @@ result<smooth_result> laplacian_smooth(M& mesh, const laplacian_smooth_options& 
     if (!fixed) return fixed.error();
     const detail::smoothing::run_options run{options.iterations, options.weights, options.refresh_weights,
                                              options.threads};
-    if (auto r = detail::smoothing::run<M, T>(mesh, run, {options.lambda}, *fixed, options.progress,
-                                              "laplacian_smooth");
+    if (auto r =
+            detail::smoothing::run<M, T>(mesh, run, {options.lambda}, *fixed, options.progress, "laplacian_smooth");
         !r)
         return r.error();
     smooth_result out;

@@ -44,8 +44,7 @@ struct bvh_access {
             return fail(errc::invalid_argument, "bvh: max_leaf_size must be 1 to 64");
         for (std::size_t i = 0; i < points.size(); ++i)
             if (!bb::finite(points[i]))
-                return fail(errc::invalid_argument, "bvh: point " + std::to_string(i) + " is not finite",
-                            (long long)i);
+                return fail(errc::invalid_argument, "bvh: point " + std::to_string(i) + " is not finite", (long long)i);
         for (std::size_t i = 0; i < triangles.size(); ++i)
             for (auto v : triangles[i])
                 if (v >= points.size())
@@ -100,8 +99,7 @@ struct bvh_access {
         namespace bb = detail::bvh_build;
         if (points.size() < t.point_count_)
             return fail(errc::invalid_argument, "bvh::refit: " + std::to_string(points.size()) +
-                                                    " points, the tree was built on " +
-                                                    std::to_string(t.point_count_));
+                                                    " points, the tree was built on " + std::to_string(t.point_count_));
         for (std::size_t i = 0; i < t.point_count_; ++i)
             if (!bb::finite(points[i]))
                 return fail(errc::invalid_argument, "bvh::refit: point " + std::to_string(i) + " is not finite",
@@ -251,33 +249,36 @@ struct bvh_access {
         bool found = false;
         std::size_t best_i = 0;
         double bu = 0, bv = 0;
-        traverse(t, r, [&] { return best; },
-                 [&](std::size_t i, double s, double u, double v) {
-                     if (s < best || !found) best = s, found = true, best_i = i, bu = u, bv = v;
-                     return true;
-                 });
+        traverse(
+            t, r, [&] { return best; },
+            [&](std::size_t i, double s, double u, double v) {
+                if (s < best || !found) best = s, found = true, best_i = i, bu = u, bv = v;
+                return true;
+            });
         return found ? make_hit(t, r, best_i, best, bu, bv) : ray_surface_hit{};
     }
 
     static bool any(const bvh& t, const ray& r) {
         if (!finite_ray(r)) return false;
         bool hit = false;
-        traverse(t, r, [&] { return r.t_max; },
-                 [&](std::size_t, double, double, double) {
-                     hit = true;
-                     return false;
-                 });
+        traverse(
+            t, r, [&] { return r.t_max; },
+            [&](std::size_t, double, double, double) {
+                hit = true;
+                return false;
+            });
         return hit;
     }
 
     static std::vector<ray_surface_hit> all(const bvh& t, const ray& r) {
         std::vector<ray_surface_hit> out;
         if (!finite_ray(r)) return out;
-        traverse(t, r, [&] { return r.t_max; },
-                 [&](std::size_t i, double s, double u, double v) {
-                     out.push_back(make_hit(t, r, i, s, u, v));
-                     return true;
-                 });
+        traverse(
+            t, r, [&] { return r.t_max; },
+            [&](std::size_t i, double s, double u, double v) {
+                out.push_back(make_hit(t, r, i, s, u, v));
+                return true;
+            });
         std::sort(out.begin(), out.end(), [](const ray_surface_hit& a, const ray_surface_hit& b) {
             return a.t < b.t || (a.t == b.t && (a.face < b.face || (a.face == b.face && a.vertices < b.vertices)));
         });
@@ -351,7 +352,9 @@ inline result<std::vector<std::uint8_t>> bvh::any_hits(std::span<const ray> rays
         [&](std::size_t i) { return std::uint8_t(detail::bvh_access::any(*this, rays[i])); });
 }
 
-inline result<void> bvh::refit(std::span<const vec3<double>> points) { return detail::bvh_access::refit(*this, points); }
+inline result<void> bvh::refit(std::span<const vec3<double>> points) {
+    return detail::bvh_access::refit(*this, points);
+}
 
 namespace detail::bvh_build {
 
@@ -416,7 +419,9 @@ result<bvh> build_bvh(const M& mesh, const bvh_options& options) {
     triangles.reserve(T::face_count(mesh));
     faces.reserve(T::face_count(mesh));
     std::vector<std::uint32_t> loop;
-    const auto index = [&](typename T::vertex_handle v) { return static_cast<std::uint32_t>(T::vertex_index(mesh, v)); };
+    const auto index = [&](typename T::vertex_handle v) {
+        return static_cast<std::uint32_t>(T::vertex_index(mesh, v));
+    };
     for (auto f : T::faces(mesh)) {
         loop.clear();
         for (auto v : T::face_vertices(mesh, f)) loop.push_back(index(v));
@@ -428,7 +433,8 @@ result<bvh> build_bvh(const M& mesh, const bvh_options& options) {
         }
         auto cut = face_triangles<M, T>(mesh, f);
         if (cut) {
-            for (const auto& t : *cut) triangles.push_back({index(t[0]), index(t[1]), index(t[2])}), faces.push_back(fi);
+            for (const auto& t : *cut)
+                triangles.push_back({index(t[0]), index(t[1]), index(t[2])}), faces.push_back(fi);
         } else if (cut.error().code == errc::degenerate_face) {
             for (std::size_t i = 1; i + 1 < loop.size(); ++i)
                 triangles.push_back({loop[0], loop[i], loop[i + 1]}), faces.push_back(fi);
