@@ -23,12 +23,29 @@ python3 -m venv "$venv"
 echo "== viewer bundle (viewer/build.sh), compiled into hmira._core for hmira.view and hmira.render"
 viewer/build.sh
 
-echo "== pip install . (builds hmira._core)"
+echo "== pip wheel . (builds hmira._core), then pip install of that wheel"
 # The build requirements (pinned in pyproject.toml) are already in the venv from the
 # requirements file: building without isolation keeps nanobind's path stable from run to run,
 # so ccache (CMAKE_CXX_COMPILER_LAUNCHER, set by the project) hits on an unchanged tree.
-"$venv/bin/python" -m pip install -q --no-build-isolation .
+wheels=$(mktemp -d)
+"$venv/bin/python" -m pip wheel -q --no-build-isolation --no-deps -w "$wheels" .
+"$venv/bin/python" -m pip install -q "$wheels"/hmira-*.whl
 echo "built and installed after $(( $(date +%s) - start )) s"
+
+echo "== the wheel is self-contained: _core finds oneTBB inside the installed package"
+core=$("$venv/bin/python" -c 'import hmira._core as c; print(c.__file__)')
+pkg=$(dirname "$core")
+if ldd "$core" | grep -q libtbb; then
+  if ! ldd "$core" | grep libtbb | grep -q "=> $pkg/"; then
+    echo "hmira._core resolves oneTBB outside the wheel:" >&2
+    ldd "$core" | grep libtbb >&2
+    exit 1
+  fi
+  "$venv/bin/python" -c 'import sys, zipfile
+names = zipfile.ZipFile(sys.argv[1]).namelist()
+sys.exit(0 if any(n.startswith("hmira/libtbb") for n in names) else "the wheel carries no libtbb")' "$wheels"/hmira-*.whl
+fi
+rm -rf "$wheels"
 
 echo "== type stubs: committed python/hmira/_core.pyi must equal nanobind's stubgen output"
 stubs=$(mktemp -d)

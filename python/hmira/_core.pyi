@@ -9,27 +9,31 @@ import numpy
 from numpy.typing import NDArray
 
 
-def marching_cubes(volume: Annotated[NDArray, dict(shape=(None, None, None), device='cpu', writable=False)], iso: float = 0.0, *, spacing: Sequence[float] = [1.0, 1.0, 1.0], origin: Sequence[float] = [0.0, 0.0, 0.0], inside: str = 'below', threads: int = 0) -> tuple:
+def marching_cubes(volume: Annotated[NDArray, dict(shape=(None, None, None), device='cpu', writable=False)], iso: float | None = None, *, spacing: Sequence[float] = [1.0, 1.0, 1.0], origin: Sequence[float] = [0.0, 0.0, 0.0], inside: str = 'below', threads: int = 0) -> tuple:
     """
     Extract the iso-surface of a 3-D volume as a welded, closed triangle mesh.
 
     Parameters
     ----------
     volume : ndarray, shape (n0, n1, n2)
-        Samples, float32, float64, uint8, uint16 or int16; C- or Fortran-ordered or
-        strided, read in place (never copied). A NaN or infinite sample raises
-        ValueError naming it ("volume[3, 4, 5] is inf").
-    iso : float
+        Samples of any float, integer or bool dtype (hmira.marching_cubes also takes
+        nested lists); C- or Fortran-ordered or strided, read in place (never copied).
+        A NaN or infinite sample raises ValueError naming it ("volume[3, 4, 5] is inf").
+    iso : float, optional
         The iso value, within the samples' range [min, max]: outside it there is no
-        surface, and ValueError names the range. Scans (CT, MRI) need a positive iso
-        and ``inside="above"``, e.g. ``hmira.marching_cubes(ct, 300.0, inside="above")``.
+        surface, and ValueError names the range. Default: the midpoint of the range
+        (as scikit-image), so a default never gives an empty mesh. A signed distance
+        field wants ``iso=0.0``; scans (CT, MRI) want ``inside="above"``, e.g.
+        ``hmira.marching_cubes(ct, 300.0, inside="above")``.
     spacing : sequence of 3 floats, keyword-only
         Distance between samples along array axes 0, 1, 2.
     origin : sequence of 3 floats, keyword-only
         Position of sample [0, 0, 0].
     inside : {"below", "above"}, keyword-only
         Which side of `iso` is the solid ("below" for signed distances, "above" for
-        CT/MRI scans). Triangles wind counter-clockwise seen from outside.
+        CT/MRI scans and label maps). Triangles wind counter-clockwise seen from outside
+        the solid: a label map or scan left at "below" takes the background for the
+        solid and comes out inside-out (``hmira.Mesh(v, f).volume()`` is negative).
     threads : int, keyword-only
         Worker threads (0: all cores). The output does not depend on it.
 
@@ -48,7 +52,7 @@ def marching_cubes(volume: Annotated[NDArray, dict(shape=(None, None, None), dev
     --------
     >>> import numpy as np, hmira
     >>> x, y, z = np.mgrid[-1:1:32j, -1:1:32j, -1:1:32j]
-    >>> v, f = hmira.marching_cubes(x**2 + y**2 + z**2 - 0.5, 0.0)
+    >>> v, f = hmira.marching_cubes(x**2 + y**2 + z**2 - 0.5, 0.0)  # the zero level of a distance
     >>> v.shape[1], f.dtype.name, len(f) == 2 * len(v) - 4
     (3, 'int32', True)
     """
@@ -181,9 +185,9 @@ class MeshCore:
         Closes the boundary loop of a boundary halfedge with triangles (minimal area, maximal dihedral, Liepa 2003); with refine=True the patch is refined to the edge length around the hole, and fair='membrane' or 'thin-plate' (implies refine) smooths it. Returns the new faces.
         """
 
-    def fill_holes(self, max_size: int, *, max_dynamic_programming_edges: int = 200, refine: bool = False, fair: str = 'none') -> dict:
+    def fill_holes(self, max_edges: int = 1000, *, max_dynamic_programming_edges: int = 200, refine: bool = False, fair: str = 'none') -> dict:
         """
-        Fills every hole of at most max_size boundary edges (refine and fair as for fill_hole); returns {'filled', 'skipped', 'faces_added', 'vertices_added', 'unfaired', 'open'}, 'open' listing each hole left open as {'vertex', 'edges', 'reason'}. Ctrl-C stops it with the mesh unchanged.
+        Fills every hole of at most max_edges boundary edges (the CLI's --max-edges and default) (refine and fair as for fill_hole); returns {'filled', 'skipped', 'faces_added', 'vertices_added', 'unfaired', 'open'}, 'open' listing each hole left open as {'vertex', 'edges', 'reason'}. Ctrl-C stops it with the mesh unchanged.
         """
 
     def subdivide(self, *, scheme: str = 'loop', levels: int = 1) -> dict:
@@ -197,22 +201,25 @@ class MeshCore:
         {'vertices': 9, 'edges': 12, 'faces': 4}
         """
 
-    def laplacian_smooth(self, *, iterations: int = 1, lambda_: float = 0.5, weights: str = 'uniform', fix_boundary: bool = True, fixed_vertices: Sequence[int] | None = None) -> int:
+    def laplacian_smooth(self, *, iterations: int = 1, lambda_: float = 0.5, weights: str = 'uniform', fix_boundary: bool = True, fixed_vertices: Sequence[int] | None = None, refresh_weights: bool = True, threads: int = 0) -> int:
         """
-        Laplacian smoothing (uniform or cotangent weights, step lambda_ in (0, 1]); returns the number of vertices free to move.
+        Laplacian smoothing (uniform or cotangent weights, step lambda_ in (0, 1]); returns the number of vertices free to move. refresh_weights: recompute cotangent weights before every step (False: once). threads: worker threads (0: all); the result does not depend on it.
         """
 
-    def taubin_smooth(self, *, iterations: int = 10, lambda_: float = 0.5, mu: float = -0.53, weights: str = 'uniform', fix_boundary: bool = True, fixed_vertices: Sequence[int] | None = None) -> int:
+    def taubin_smooth(self, *, iterations: int = 10, lambda_: float = 0.5, mu: float = -0.53, weights: str = 'uniform', fix_boundary: bool = True, fixed_vertices: Sequence[int] | None = None, refresh_weights: bool = True, threads: int = 0) -> int:
         """
         Taubin lambda/mu smoothing (keeps the volume); returns the number of vertices free to move.
+        refresh_weights and threads as in laplacian_smooth.
         """
 
-    def decimate(self, *, target_faces: int | None = None, target_ratio: float | None = None, max_error: float | None = None, keep_boundary: bool = True, max_normal_angle: float = 90.0, max_aspect_ratio: float = float('inf'), locked_vertices: Sequence[int] | None = None, min_angle: float = 1.0, area_weighted: bool = True, feature_angle: float | None = None, feature_edges: Sequence[int] | None = None, keep_features: bool = False) -> dict:
+    def decimate(self, *, target_faces: int | None = None, target_ratio: float | None = None, max_error: float | None = None, fix_boundary: bool = True, max_normal_angle: float = 90.0, max_aspect_ratio: float = float('inf'), fixed_vertices: Sequence[int] | None = None, min_angle: float = 1.0, area_weighted: bool = True, feature_angle: float | None = None, feature_edges: Sequence[int] | None = None, keep_features: bool = False) -> dict:
         """
         Quadric error decimation (Garland-Heckbert) until the first target reached: target_faces, target_ratio
         (of the faces) or max_error (a distance). Polygons are triangulated first. Boundary vertices stay
-        unless keep_boundary=False; locked_vertices never move. feature_angle (degrees) and feature_edges add
-        planes through creases; keep_features keeps feature lines on their input vertices. Returns {'faces', 'vertices', 'collapses',
+        unless fix_boundary=False; fixed_vertices never move (the names smoothing uses; hmira.Mesh.decimate
+        still takes keep_boundary and locked_vertices, deprecated). feature_angle (degrees) and feature_edges
+        add planes through creases; keep_features keeps feature lines on their input vertices.
+        Returns {'faces', 'vertices', 'collapses',
         'triangulated', 'stopped_by', 'error', 'note'}; vertices are renumbered densely afterwards.
 
         >>> m = hmira.Mesh([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [0.5, 0.5, 0]],
@@ -313,6 +320,108 @@ class MeshCore:
         killEF: removes the edge, merging its two faces; returns (face, h0, h1) for make_edge_face.
         """
 
+    def self_intersections(self) -> NDArray[numpy.int64]:
+        """
+        The pairs of faces that intersect other than along a shared edge or vertex (touching, crossing, folded or overlapping in one plane), decided exactly: a (k, 2) int64 array of face indices, each row (f, g) with f < g, rows sorted. Polygon faces are tested by their triangles.
+
+        Examples
+        --------
+        >>> import numpy as np, hmira
+        >>> v = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [.2, .2, -1], [.3, .2, 1], [.2, .3, 1]], float)
+        >>> hmira.Mesh(v, [[0, 1, 2], [3, 4, 5]]).self_intersections().tolist()
+        [[0, 1]]
+        """
+
+    def closest_point(self, points: Annotated[NDArray, dict(shape=(None, None), device='cpu', writable=False)], *, max_distance: float = float('inf'), threads: int = 0, nan: str = 'raise') -> tuple:
+        """
+        The closest surface point to each query point.
+
+        Parameters
+        ----------
+        points : ndarray, shape (n, 3), float64 or float32
+        max_distance : float
+            Look no farther; a point with nothing that close gets face -1 and distance inf.
+        threads : int
+            Worker threads (0: all). The answers do not depend on it.
+        nan : {'raise', 'propagate'}
+            A query with a NaN or infinite coordinate raises ValueError naming its index, or gets NaN
+            point and distance and face -1.
+
+        Returns
+        -------
+        points : ndarray (n, 3) float64
+        faces : ndarray (n,) int64
+            The face each point lies on (-1 if none).
+        barycentrics : ndarray (n, 3) float64
+            Weights on the corners of the triangle of that face's triangulation the point lies on.
+        distances : ndarray (n,) float64
+
+        Builds a BVH on every call: keep an hmira.BVH to query the same mesh again.
+
+        Examples
+        --------
+        >>> import hmira, numpy as np
+        >>> m = hmira.Mesh([[0, 0, 0], [1, 0, 0], [0, 1, 0]], [[0, 1, 2]])
+        >>> points, faces, bary, dist = m.closest_point(np.array([[0.2, 0.2, 1.0]]))
+        >>> faces.tolist(), dist.tolist()
+        ([0], [1.0])
+        """
+
+    def ray_intersect(self, origins: Annotated[NDArray, dict(shape=(None, None), device='cpu', writable=False)], directions: Annotated[NDArray, dict(shape=(None, None), device='cpu', writable=False)], *, mode: str = 'first', threads: int = 0, nan: str = 'raise') -> object:
+        """
+        Intersects rays origin + t * direction (t >= 0) with the surface.
+
+        Parameters
+        ----------
+        origins, directions : ndarray, shape (n, 3), float64 or float32
+        mode : {'first', 'any'}
+            'first': the nearest hit of each ray; 'any': whether it hits at all (occlusion, faster).
+        threads : int
+            Worker threads (0: all).
+        nan : {'raise', 'propagate'}
+            A ray with a non-finite coordinate raises ValueError naming its index, or gets a NaN t.
+
+        Returns
+        -------
+        mode 'first': (t, faces, barycentrics, points): t (n,) (inf for a miss), faces (n,) int64
+        (-1 for a miss), barycentrics (n, 3), points (n, 3). mode 'any': a bool array (n,).
+        Degenerate (zero-area) triangles are never hit.
+
+        Builds a BVH on every call: keep an hmira.BVH to query the same mesh again.
+
+        Examples
+        --------
+        >>> import hmira, numpy as np
+        >>> m = hmira.Mesh([[0, 0, 0], [1, 0, 0], [0, 1, 0]], [[0, 1, 2]])
+        >>> t, faces, bary, points = m.ray_intersect(np.array([[0.2, 0.2, 1.0]]), np.array([[0.0, 0.0, -1.0]]))
+        >>> t.tolist(), faces.tolist()
+        ([1.0], [0])
+        """
+
+    def bounds(self) -> Annotated[NDArray[numpy.float64], dict(shape=(None, None))]:
+        """
+        The bounding box as a (2, 3) float64 array [min, max]; (0, 3) without vertices.
+        """
+
+    def area(self) -> float:
+        """The total area of the faces."""
+
+    def volume(self) -> float:
+        """
+        The signed enclosed volume (divergence theorem): positive for a closed mesh wound counter-clockwise seen from outside, negative when inside-out.
+        """
+
+    def face_normals(self) -> Annotated[NDArray[numpy.float64], dict(shape=(None, None))]:
+        """Unit face normals (m, 3) in face order; zero for a face of zero area."""
+
+    def face_areas(self) -> Annotated[NDArray[numpy.float64], dict(shape=(None,))]:
+        """Face areas (m,) in face order."""
+
+    def edges(self) -> Annotated[NDArray[numpy.int32], dict(shape=(None, None))]:
+        """
+        Each edge once as (k, 2) int32 vertex indices, the smaller index first.
+        """
+
     def winding_number(self, points: Annotated[NDArray, dict(device='cpu', writable=False)], *, method: str = 'fast', beta: float = 2.0, nan: str = 'error', threads: int = 0) -> object:
         """
         Generalised winding numbers at points (k, 3) (see hmira.winding_number).
@@ -331,6 +440,85 @@ class MeshCore:
     def sample_surface(self, count: int, *, method: str = 'uniform', seed: int = 0) -> dict:
         """
         count points on the surface, 'uniform' by area or 'poisson_disk' (blue noise), the same for the same seed: {'points' (count, 3), 'faces' (count,), 'barycentrics' (count, 3), 'corners' (count, 3)}: point i is sum over k of barycentrics[i, k] * vertex corners[i, k].
+        """
+
+class BVH:
+    """
+    A bounding-volume hierarchy over a Mesh's faces (polygons triangulated in their plane), for
+    repeated batched closest-point and ray queries.
+
+    The tree copies the triangles; a query after the mesh's connectivity changed raises
+    ValueError. Positions moved in place (through Mesh.vertices) are not detected: call refit().
+
+    Parameters
+    ----------
+    mesh : Mesh
+        A mesh with at least one face.
+
+    Examples
+    --------
+    >>> import hmira, numpy as np
+    >>> m = hmira.Mesh([[0, 0, 0], [1, 0, 0], [0, 1, 0]], [[0, 1, 2]])
+    >>> bvh = hmira.BVH(m)
+    >>> bvh.closest_point(np.array([[0.2, 0.2, 1.0]]))[3].tolist()
+    [1.0]
+    """
+
+    def __init__(self, mesh: object) -> None: ...
+
+    @property
+    def triangle_count(self) -> int:
+        """Number of triangles in the tree."""
+
+    def refit(self) -> None:
+        """
+        Recomputes the boxes from the mesh's current positions (after moving vertices), keeping the tree.
+        """
+
+    def closest_point(self, points: Annotated[NDArray, dict(shape=(None, None), device='cpu', writable=False)], *, max_distance: float = float('inf'), threads: int = 0, nan: str = 'raise') -> tuple:
+        """
+        The closest surface point to each query point.
+
+        Parameters
+        ----------
+        points : ndarray, shape (n, 3), float64 or float32
+        max_distance : float
+            Look no farther; a point with nothing that close gets face -1 and distance inf.
+        threads : int
+            Worker threads (0: all). The answers do not depend on it.
+        nan : {'raise', 'propagate'}
+            A query with a NaN or infinite coordinate raises ValueError naming its index, or gets NaN
+            point and distance and face -1.
+
+        Returns
+        -------
+        points : ndarray (n, 3) float64
+        faces : ndarray (n,) int64
+            The face each point lies on (-1 if none).
+        barycentrics : ndarray (n, 3) float64
+            Weights on the corners of the triangle of that face's triangulation the point lies on.
+        distances : ndarray (n,) float64
+        """
+
+    def ray_intersect(self, origins: Annotated[NDArray, dict(shape=(None, None), device='cpu', writable=False)], directions: Annotated[NDArray, dict(shape=(None, None), device='cpu', writable=False)], *, mode: str = 'first', threads: int = 0, nan: str = 'raise') -> object:
+        """
+        Intersects rays origin + t * direction (t >= 0) with the surface.
+
+        Parameters
+        ----------
+        origins, directions : ndarray, shape (n, 3), float64 or float32
+        mode : {'first', 'any'}
+            'first': the nearest hit of each ray; 'any': whether it hits at all (occlusion, faster).
+        threads : int
+            Worker threads (0: all).
+        nan : {'raise', 'propagate'}
+            A ray with a non-finite coordinate raises ValueError naming its index, or gets a NaN t.
+
+        Returns
+        -------
+        mode 'first': (t, faces, barycentrics, points): t (n,) (inf for a miss), faces (n,) int64
+        (-1 for a miss), barycentrics (n, 3), points (n, 3). mode 'any': a bool array (n,).
+        Degenerate (zero-area) triangles are never hit.
         """
 
 def winding_number(vertices: Annotated[NDArray, dict(device='cpu', writable=False)], faces: Annotated[NDArray, dict(device='cpu', writable=False)], points: Annotated[NDArray, dict(device='cpu', writable=False)], *, method: str = 'fast', beta: float = 2.0, nan: str = 'error', threads: int = 0) -> object:
