@@ -25,8 +25,11 @@ namespace hmira::predicates {
 /// \pre the line is not parallel to the plane (orient3d(r, s, t, p) != orient3d(r, s, t, q), or
 ///   more precisely (s - r) x (t - r) . (q - p) != 0) and r, s, t are not collinear.
 struct line_plane_point {
-    point3 p, q;     ///< two points of the line
-    point3 r, s, t;  ///< three points of the plane
+    point3 p;  ///< a point of the line
+    point3 q;  ///< another point of the line
+    point3 r;  ///< a point of the plane
+    point3 s;  ///< a second point of the plane
+    point3 t;  ///< a third point of the plane
 };
 
 /// orient3d(x, b, c, d) for the implicit point x, exactly: +1 if d is on the side of the plane

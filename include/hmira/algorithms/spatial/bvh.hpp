@@ -212,10 +212,12 @@ public:
 
     /// What the tree was built from, for the mesh-taking queries' staleness check.
     struct source {
-        std::size_t vertices = 0, faces = 0, vertex_bound = 0;  ///< V, F, vertex index bound
-        std::uint64_t change_count = 0;                         ///< T::change_count, where there is one
-        bool counted = false;                                   ///< whether change_count was read
-        bool operator==(const source&) const = default;
+        std::size_t vertices = 0;                        ///< V at the build
+        std::size_t faces = 0;                           ///< F at the build
+        std::size_t vertex_bound = 0;                    ///< the vertex index bound at the build
+        std::uint64_t change_count = 0;                  ///< T::change_count, where there is one
+        bool counted = false;                            ///< whether change_count was read
+        bool operator==(const source&) const = default;  ///< all fields equal
     };
     /// The counts recorded at the build. O(1).
     const source& built_from() const noexcept { return source_; }
@@ -225,9 +227,11 @@ public:
     /// A node: its box (float, rounded outward); an inner node's left child follows it and
     /// `index` is its right child; a leaf (count > 0) holds triangles index .. index + count - 1.
     struct node {
-        std::array<float, 3> lo{}, hi{};
-        std::uint32_t index = 0, count = 0;
-        bool operator==(const node&) const = default;
+        std::array<float, 3> lo{};                     ///< the box's lower corner
+        std::array<float, 3> hi{};                     ///< the box's upper corner
+        std::uint32_t index = 0;                       ///< the right child, or a leaf's first triangle
+        std::uint32_t count = 0;                       ///< a leaf's triangle count; 0 for an inner node
+        bool operator==(const node&) const = default;  ///< all fields equal
     };
 
 private:
