@@ -332,7 +332,7 @@ private:
         const V c0 = T::target(m_, T::next(m_, h)), c1 = T::target(m_, T::next(m_, o));
         // collapse_edge's steps without its error message, which a refusal would build for nothing:
         // the topology rules (the link condition), then the collapse itself.
-        if (*dt::collapse_refusal<M, T>(m_, h, {}) != '\0') return false;
+        if (dt::collapse_refusal<M, T>(m_, h, {})[0] != '\0') return false;
         auto links = dt::read_collapse_links<M, T>(m_, h);
         dt::apply_collapse<M, T>(m_, links, c.position);
         // The edges beside the edge went with their triangles.
