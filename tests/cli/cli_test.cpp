@@ -707,11 +707,13 @@ TEST(cli, mc_reads_raw_volumes_of_every_sample_type_into_a_closed_sphere) {
     });
     write_raw_volume<double>(dir / "d.raw", 24, -1.15, 0.1, true,
                              [&](double x, double y, double z) { return dist(x, y, z); });
+    // Signed distances: the surface is their zero level, not the default midpoint of the range.
     const std::string grid = " --dims 24,24,24 --origin -1.15,-1.15,-1.15";
-    for (const std::string& run : {"mc f.raw out.off" + grid + " --spacing 0.1",
-                                   "mc f.raw out.off" + grid + " --type float32 --spacing 0.1,0.1,0.1",
-                                   "mc s.raw out.off" + grid + " --type int16 --endian big --spacing 0.1",
-                                   "mc d.raw out.off" + grid + " --type float64 --endian big --spacing 0.1"}) {
+    const std::string sdf = grid + " --iso 0";
+    for (const std::string& run : {"mc f.raw out.off" + sdf + " --spacing 0.1",
+                                   "mc f.raw out.off" + sdf + " --type float32 --spacing 0.1,0.1,0.1",
+                                   "mc s.raw out.off" + sdf + " --type int16 --endian big --spacing 0.1",
+                                   "mc d.raw out.off" + sdf + " --type float64 --endian big --spacing 0.1"}) {
         SCOPED_TRACE(run);
         const auto r = hmira(dir, run);
         ASSERT_EQ(r.code, 0) << r.err;
@@ -748,14 +750,14 @@ TEST(cli, mc_reads_inr_and_inr_gz_volumes_by_name) {
     header += std::string(252 - header.size(), '\n') + "##}\n";
     ASSERT_EQ(header.size(), 256u);
     hmira_test::write_bytes(dir / "s.inr", header + hmira_test::read_bytes(dir / "samples"));
-    const auto r = hmira(dir, "mc s.inr a.off");
+    const auto r = hmira(dir, "mc s.inr a.off --iso 0");
     ASSERT_EQ(r.code, 0) << r.err;
     const auto a = read_back(dir / "a.off");
     expect_sound(a);
     EXPECT_NEAR(hmira_test::signed_volume(a), 4.0 / 3 * std::numbers::pi * r0 * r0 * r0, 0.03);
     // Gzipped, named .inr.gz (or upper case): the same surface.
     ASSERT_EQ(std::system(("cd '" + dir.path().string() + "' && gzip -c s.inr > S.INR.GZ").c_str()), 0);
-    const auto gz = hmira(dir, "mc S.INR.GZ b.off");
+    const auto gz = hmira(dir, "mc S.INR.GZ b.off --iso 0");
     if (gz.code != 0 && gz.err.find("zlib") != std::string::npos)
         GTEST_SKIP() << "hmira built without zlib: " << gz.err;
     ASSERT_EQ(gz.code, 0) << gz.err;

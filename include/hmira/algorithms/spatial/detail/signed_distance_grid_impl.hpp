@@ -58,11 +58,19 @@ inline result<indexed_triangles<double>> offset(const triangle_set& surface, dou
     // Three samples of margin beyond |d| on each side, within `resolution` samples in all.
     const double h = extent > 0 ? extent / double(options.resolution - 7) : 1.0;
     const double margin = std::abs(d) + 3 * h;
+    const auto overflow = [] {
+        return fail(errc::invalid_argument,
+                    "offset: the mesh's extent plus the distance overflows double; scale the mesh down first");
+    };
+    if (!std::isfinite(extent) || !std::isfinite(margin) || !(h > 0)) return overflow();
     grid_geometry g;
     g.spacing = {h, h, h};
     for (std::size_t a = 0; a < 3; ++a) {
         g.origin[a] = lo[a] - margin;
-        g.dims[a] = std::size_t(std::ceil((hi[a] - lo[a] + 2 * margin) / h)) + 1;
+        const double samples = std::ceil((hi[a] - lo[a] + 2 * margin) / h);
+        if (!std::isfinite(g.origin[a]) || !(samples >= 0 && samples <= double(options.resolution) + 8))
+            return overflow();
+        g.dims[a] = std::size_t(samples) + 1;
     }
     auto field = signed_distance_grid<double>(
         surface, g, {.band = std::abs(d) + 3 * h, .beta = options.beta, .threads = options.threads});
