@@ -8,6 +8,14 @@
 
 namespace hmira_test {
 
+/// Whether this test binary runs under AddressSanitizer and UBSan (CI's only run of the gtest
+/// suites), where each instrumented step costs 10-30 times its plain time.
+#ifdef HMIRA_SANITIZER_BUILD
+inline constexpr bool sanitizer_build = true;
+#else
+inline constexpr bool sanitizer_build = false;
+#endif
+
 /// The progress calls (1-based) at which to cancel an algorithm that reports `calls` times.
 /// A plain build stops at every (calls / samples)-th call from the first. A sanitizer build
 /// stops at the first, the middle and the last call only: the start, a half-written mesh and a

@@ -42,6 +42,9 @@ std::vector<std::array<std::uint32_t, 3>> cgal_triangles(const std::vector<hmira
 TEST(delaunay_cgal, same_triangles_as_cgal_on_uniform_points) {
     for (std::uint64_t seed : {1u, 2u, 3u}) {
         for (std::size_t n : {std::size_t(10), std::size_t(1000), std::size_t(100000)}) {
+#ifdef HMIRA_SANITIZER_BUILD
+            if (n == 100000 && seed != 1) continue;  // instrumented CGAL takes ~10 s per 10^5 points
+#endif
             const auto pts = hmira_test::uniform_points(n, seed);
             const auto d = hmira::delaunay_triangulation(pts);
             ASSERT_TRUE(d);

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "algorithms/editing/editing_support.hpp"
+#include "support/cancel_points.hpp"
 
 namespace {
 
@@ -213,7 +214,9 @@ TYPED_TEST(cancel_test, cancel_at_kth_report_leaves_the_mesh_unchanged) {
                 EXPECT_EQ(rec.fractions.size(), k) << "the edit went on reporting after it was cancelled";
                 EXPECT_TRUE(hmira_test::is_valid(m));
                 EXPECT_TRUE(take_snapshot(m) == before) << "the cancelled edit changed the mesh";
-                // The rolled-back mesh still takes the whole edit, with the same result as a fresh one.
+                // The rolled-back mesh still takes the whole edit, with the same result as a fresh one
+                // (instrumented, after the last stop only, which changed the most before rolling back).
+                if (hmira_test::sanitizer_build && k != stops.back()) continue;
                 ASSERT_FALSE(c.run(&m, {}));
                 EXPECT_TRUE(hmira_test::is_valid(m));
                 EXPECT_EQ(hmira_test::count(m), hmira_test::count(fresh));

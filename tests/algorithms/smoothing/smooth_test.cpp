@@ -345,7 +345,11 @@ TYPED_TEST(smoothing_test, a_cancellation_at_any_call_restores_every_position) {
             std::size_t iterations;
             bool taubin;
         };
-        for (const job j : {job{&big, 1, true}, job{&small, 30000, false}, job{&small, 20000, true}}) {
+        // Instrumented, the small mesh runs 3 and 2 blocks of 65536 vertex visits instead of 5 and 7.
+        constexpr std::size_t laplacian_steps = hmira_test::sanitizer_build ? 16384 : 30000;
+        constexpr std::size_t taubin_iterations = hmira_test::sanitizer_build ? 6000 : 20000;
+        for (const job j :
+             {job{&big, 1, true}, job{&small, laplacian_steps, false}, job{&small, taubin_iterations, true}}) {
             const auto before = take_snapshot(*j.mesh);
             const std::size_t steps = j.iterations * (j.taubin ? 2 : 1);
             const std::size_t elements = steps * T::vertex_count(*j.mesh);
