@@ -4,7 +4,7 @@
 # Usage: bash scripts/bench.sh [family ...]     (default: all of bench/*/run.sh)
 # Families: every bench/<family> with a run.sh (core euler io marching_cubes voxelize delaunay
 # geometry subdivision smoothing triangulation holes decimation remeshing editing repair python
-# dask sweep spatial).
+# dask sweep spatial boolean).
 # sweep: size sweeps of the performance-critical algorithms (10^4 to 10^7 elements), the
 # fitted log-log exponent of CPU time beside each doc block's complexity, PASS/FAIL; a few
 # minutes (bench/sweep/run.sh --quick: under a minute). Not run in CI.
