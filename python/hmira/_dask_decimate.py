@@ -54,7 +54,8 @@ def _options(decimate: Any) -> dict:
     if unknown:
         raise ValueError(f"hmira.dask.decimate: unknown options {sorted(unknown)} (supported: target_ratio, max_error, "
                          f"{', '.join(_OPTION_NAMES)})")
-    return {"ratio": None if ratio is None else float(ratio), "max_error": None if max_error is None else float(max_error),
+    return {"ratio": None if ratio is None else float(ratio),
+            "max_error": None if max_error is None else float(max_error),
             "options": o}
 
 
@@ -461,7 +462,8 @@ def marching_cubes_decimated(darr, iso, decimate, *, block=128, spacing=(1.0, 1.
     opts = _options(decimate)
     darr = da.asarray(darr)
     if darr.ndim != 3 or any(s < 2 for s in darr.shape):
-        raise ValueError(f"hmira.dask.marching_cubes: needs a 3-d array of at least 2 samples per axis, got {darr.shape}")
+        raise ValueError(f"hmira.dask.marching_cubes: needs a 3-d array of at least 2 samples per axis, "
+                         f"got {darr.shape}")
     block = int(block)
     if block < 2:
         raise ValueError(f"hmira.dask.marching_cubes: block must be at least 2 cubes, got {block}")
