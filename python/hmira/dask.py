@@ -35,13 +35,13 @@ import operator
 import os
 import tempfile
 import threading
-from typing import Optional, Sequence, Tuple
+from typing import Any, Optional, Sequence, Tuple
 
 import numpy as np
 
 from . import _core
 
-__all__ = ["marching_cubes", "voxelize"]
+__all__ = ["marching_cubes", "voxelize", "decimate", "decimation_quality", "volume_decimation_quality"]
 
 _DTYPES = (np.float32, np.float64, np.uint8, np.uint16, np.int16)
 
@@ -371,7 +371,8 @@ def _block_tasks(darr, iso, spacing, origin, inside, func=_mesh_block, extra=(),
 
 def marching_cubes(darr, iso: float = 0.0, *, spacing: Sequence[float] = (1.0, 1.0, 1.0),
                    origin: Sequence[float] = (0.0, 0.0, 0.0), inside: str = "below", out: Optional[str] = None,
-                   window: int = 0, threads: int = 0) -> Optional[Tuple[np.ndarray, np.ndarray]]:
+                   window: int = 0, threads: int = 0, decimate: Any = None, block: int = 128,
+                   zarr: Any = None) -> Optional[Tuple[np.ndarray, np.ndarray]]:
     """Marching cubes of a ``dask.array``, chunk by chunk, welded into exactly the whole-volume mesh.
 
     Parameters
@@ -399,6 +400,17 @@ def marching_cubes(darr, iso: float = 0.0, *, spacing: Sequence[float] = (1.0, 1
     threads : int, keyword-only
         Without ``out``, on a scheduler outside this process: threads of the merge in the
         client (0: all cores). The result does not depend on it.
+    decimate : float or dict, keyword-only
+        Decimate as it meshes: a target ratio of faces, or a dict as :func:`hmira.dask.decimate`
+        takes. Marching cubes and decimation run block by block on a fixed grid of ``block``
+        cubes (not the chunks: the result is the same for every chunking), then on the grid
+        offset by half a block, so the full-resolution mesh never exists in one place; the blocks
+        weld exactly (see ``hmira._dask_decimate``). ``window`` and ``threads`` do not apply.
+    block : int, keyword-only
+        With ``decimate``: the edge of a decimation block in cubes.
+    zarr : str or zarr store, keyword-only
+        With ``decimate``: also (or instead of returning) stream the result into this zarr group
+        (arrays ``vertices`` and ``faces``).
 
     Returns
     -------
@@ -424,6 +436,11 @@ def marching_cubes(darr, iso: float = 0.0, *, spacing: Sequence[float] = (1.0, 1
     """
     import dask
 
+    if decimate is not None:
+        from ._dask_decimate import marching_cubes_decimated
+
+        return marching_cubes_decimated(darr, iso, decimate, block=block, spacing=spacing, origin=origin, inside=inside,
+                                        out=out, zarr=zarr)
     if int(threads) < 0:
         raise ValueError(f"hmira.dask.marching_cubes: threads must be 0 (all cores) or more, got {threads}")
     if out is None and _in_process(darr):
@@ -630,3 +647,6 @@ def _stream_ply(path, shape, chunks, tasks, window, empty=None):
 
 # Chunked voxelization lives in its own module; hmira.dask exposes it beside marching_cubes.
 from ._dask_voxelize import voxelize  # noqa: E402,F401
+
+# Out-of-core decimation (block-wise, exact seams) lives in its own module too.
+from ._dask_decimate import decimate, decimation_quality, volume_decimation_quality  # noqa: E402,F401

@@ -6,6 +6,7 @@
 namespace hmira_py {
 
 void bind_volume_io(nb::module_& m);  // .inr / .raw volumes for hmira.read_volume (volume_io.cpp)
+void bind_decimate_blocks(nb::module_& m);  // one block of hmira.dask.decimate (decimate_blocks.cpp)
 
 void register_errors(nb::module_&) {
     nb::register_exception_translator([](const std::exception_ptr& p, void*) {
@@ -35,4 +36,5 @@ NB_MODULE(_core, m) {
     hmira_py::bind_blocks(m);
     hmira_py::bind_volume_io(m);
     hmira_py::bind_queries(m);
+    hmira_py::bind_decimate_blocks(m);
 }
