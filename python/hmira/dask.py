@@ -630,3 +630,8 @@ def _stream_ply(path, shape, chunks, tasks, window, empty=None):
 
 # Chunked voxelization lives in its own module; hmira.dask exposes it beside marching_cubes.
 from ._dask_voxelize import voxelize  # noqa: E402,F401
+
+# The chunked signed distance lives in its own module too.
+from ._dask_sdf import signed_distance  # noqa: E402,F401
+
+__all__ += ["signed_distance"]
