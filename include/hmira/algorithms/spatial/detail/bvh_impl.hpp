@@ -88,7 +88,8 @@ struct bvh_access {
     /// The largest |coordinate| of a box: every box lies within the root's.
     static double reach_of(const node& root) {
         double r = 0;
-        for (std::size_t k = 0; k < 3; ++k) r = std::max({r, std::abs(double(root.lo[k])), std::abs(double(root.hi[k]))});
+        for (std::size_t k = 0; k < 3; ++k)
+            r = std::max({r, std::abs(double(root.lo[k])), std::abs(double(root.hi[k]))});
         return r;
     }
 
