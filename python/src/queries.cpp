@@ -198,8 +198,8 @@ public:
     /// Samples [lo, lo + shape) of the grid whose sample (i, j, k) lies at origin + pitch * (i, j, k),
     /// computed as signed_distance_grid's grid_geometry::position does.
     nb::ndarray<nb::numpy, double> block(const std::array<double, 3>& origin, double pitch,
-                                         const std::array<std::size_t, 3>& lo,
-                                         const std::array<std::size_t, 3>& shape, unsigned threads) const {
+                                         const std::array<std::size_t, 3>& lo, const std::array<std::size_t, 3>& shape,
+                                         unsigned threads) const {
         if (!(pitch > 0) || !std::isfinite(pitch)) value_error("signed_distance: pitch must be positive and finite");
         std::vector<double> out(shape[0] * shape[1] * shape[2]);
         {
