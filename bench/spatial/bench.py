@@ -1,9 +1,13 @@
-"""Spatial queries against Open3D's RaycastingScene (Embree, float32) and trimesh's proximity:
+"""Spatial queries against Open3D's RaycastingScene (Embree, float32), libigl's signed_distance
+(fast winding number and hierarchical winding number signs) and trimesh's proximity:
 armadillo.off Loop-subdivided twice, 10^6 query points uniform in its bounding box enlarged by
 10%, 10^6 rays from them in uniformly random directions; all threads. Prints each time and the
-ratio hmira / peer (below 1: hmira is faster), and checks that the answers agree.
+ratio hmira / peer (below 1: hmira is faster), and checks that the answers agree. Then a sign
+table: on an open hemisphere, two overlapping spheres as one soup and a sphere with flipped
+faces, how many query points each method puts on the wrong side.
 
 Usage: python bench.py [--mesh PATH] [--levels 2] [--queries 1000000] [--trimesh-subset 2000]
+                       [--igl-subset 100000] [--igl-wn-subset 2000] [--no-signs]
 """
 from __future__ import annotations
 
@@ -34,6 +38,9 @@ def main() -> None:
     ap.add_argument("--queries", type=int, default=1_000_000)
     ap.add_argument("--trimesh-subset", type=int, default=2000)
     ap.add_argument("--repeats", type=int, default=3)
+    ap.add_argument("--igl-subset", type=int, default=100_000)
+    ap.add_argument("--igl-wn-subset", type=int, default=2000)
+    ap.add_argument("--no-signs", action="store_true")
     a = ap.parse_args()
 
     m = hmira.read_mesh(a.mesh)
@@ -56,6 +63,7 @@ def main() -> None:
     t_cp, (cp, cf, _, cd) = timed(lambda: bvh.closest_point(points), a.repeats)
     t_ray, (rt, rf, _, _) = timed(lambda: bvh.ray_intersect(points, dirs), a.repeats)
     t_any, hit_any = timed(lambda: bvh.ray_intersect(points, dirs, mode="any"), a.repeats)
+    t_sd, sd = timed(lambda: hmira.signed_distance(v, f, points), a.repeats)
     t_ray32, (rt32, _, _, _) = timed(
         lambda: bvh.ray_intersect(points.astype(np.float32), dirs.astype(np.float32)), a.repeats)
 
@@ -76,13 +84,17 @@ def main() -> None:
         o_cp, ocp = timed(lambda: scene.compute_closest_points(o3d.core.Tensor(p32)), a.repeats)
         o_ray, oray = timed(lambda: scene.cast_rays(o3d.core.Tensor(rays32)), a.repeats)
         o_any, oocc = timed(lambda: scene.test_occlusions(o3d.core.Tensor(rays32)), a.repeats)
+        o_sd, osd = timed(lambda: scene.compute_signed_distance(o3d.core.Tensor(p32)), a.repeats)
         od = np.linalg.norm(ocp["points"].numpy() - p32, axis=1)
         ot = oray["t_hit"].numpy()
         rows += [("build (add_triangles + first query)", t_build, "Open3D", o_build),
                  ("closest point", t_cp, "Open3D", o_cp),
                  ("first-hit rays", t_ray, "Open3D", o_ray),
                  ("first-hit rays (float32 input)", t_ray32, "Open3D", o_ray),
-                 ("any-hit rays (occlusion)", t_any, "Open3D", o_any)]
+                 ("any-hit rays (occlusion)", t_any, "Open3D", o_any),
+                 ("signed distance", t_sd, "Open3D", o_sd)]
+        print(f"signed distance: the sign differs from Open3D's (ray parity) at "
+              f"{np.sum(np.sign(osd.numpy()) != np.sign(sd))} of {a.queries} points")
         # Agreement (Open3D works in float32: differences of float rounding are expected).
         scale = float(np.linalg.norm(hi - lo))
         both = np.isfinite(ot) & np.isfinite(rt)
@@ -107,9 +119,116 @@ def main() -> None:
     except ImportError as e:
         print(f"trimesh not available: {e}")
 
+    try:
+        import igl
+
+        fi = np.ascontiguousarray(f, dtype=np.int64)
+        for label, kind, n in [("fast winding number", igl.SIGNED_DISTANCE_TYPE_FAST_WINDING_NUMBER, a.igl_subset),
+                               ("winding number", igl.SIGNED_DISTANCE_TYPE_WINDING_NUMBER, a.igl_wn_subset)]:
+            n = min(n, a.queries)
+            sub = np.ascontiguousarray(points[:n])
+            i_t, (isd, _, _, _) = timed(lambda: igl.signed_distance(sub, v, fi, kind), 1)
+            h_t, hsd = timed(lambda: hmira.signed_distance(v, f, sub), a.repeats)
+            rows.append((f"signed distance, {n} queries", h_t, f"igl {label}", i_t))
+            print(f"agreement with libigl ({label}): max |distance difference| = "
+                  f"{np.max(np.abs(np.abs(isd) - np.abs(hsd))):.2e}; "
+                  f"sign differs at {np.sum(np.sign(isd) != np.sign(hsd))}")
+    except ImportError as e:
+        print(f"libigl not available: {e}")
+
     print(f"\n{'query':44s} {'hmira s':>9s} {'peer':>8s} {'peer s':>9s} {'ratio':>7s}")
     for name, h, peer, p in rows:
         print(f"{name:44s} {h:9.3f} {peer:>8s} {p:9.3f} {h / p:7.3g}x")
+    if not a.no_signs:
+        sign_table()
+
+
+def sphere(centre=(0.0, 0.0, 0.0), subdivisions=4):
+    import trimesh
+
+    s = trimesh.creation.icosphere(subdivisions=subdivisions)
+    return np.asarray(s.vertices) + np.asarray(centre), np.asarray(s.faces, dtype=np.int64)
+
+
+def sign_cases():
+    """(name, vertices, faces, points, truth): truth 1 inside, 0 outside; points near the
+    surface, where the answer is a matter of convention, are left out."""
+    rng = np.random.default_rng(1)
+    cases = []
+    # An open hemisphere (z >= 0): inside the dome above its rim, outside beyond the sphere.
+    v, f = sphere()
+    keep = np.all(v[f][:, :, 2] >= -1e-9, axis=1)
+    p = rng.uniform(-1.5, 1.5, (20000, 3))
+    r = np.linalg.norm(p, axis=1)
+    inside, outside = (r < 0.9) & (p[:, 2] > 0.2), r > 1.1
+    cases.append(("open hemisphere", v, f[keep], p[inside | outside], inside[inside | outside]))
+    # Two overlapping spheres as one soup: inside either is inside.
+    v1, f1 = sphere()
+    v2, f2 = sphere((0.8, 0.0, 0.0))
+    v, f = np.vstack([v1, v2]), np.vstack([f1, f2 + len(v1)])
+    p = rng.uniform([-1.5, -1.5, -1.5], [2.3, 1.5, 1.5], (20000, 3))
+    r1, r2 = np.linalg.norm(p, axis=1), np.linalg.norm(p - [0.8, 0, 0], axis=1)
+    inside, outside = (r1 < 0.95) | (r2 < 0.95), (r1 > 1.05) & (r2 > 1.05)
+    cases.append(("two overlapping spheres (soup)", v, f, p[inside | outside], inside[inside | outside]))
+    # A sphere with a fifth of its faces flipped.
+    v, f = sphere()
+    f = f.copy()
+    flip = rng.random(len(f)) < 0.2
+    f[flip] = f[flip][:, ::-1]
+    p = rng.uniform(-1.5, 1.5, (20000, 3))
+    r = np.linalg.norm(p, axis=1)
+    inside, outside = r < 0.95, r > 1.05
+    cases.append(("sphere, 20% of faces flipped", v, f, p[inside | outside], inside[inside | outside]))
+    return cases
+
+
+def sign_table():
+    """Wrong signs per method and case (a point counts wrong when the method puts it on the
+    other side than the truth, or on the surface)."""
+    methods = [(f"hmira {s}", lambda v, f, p, s=s: hmira.signed_distance(v, f, p, sign=s) < 0)
+               for s in ("winding_number", "pseudo_normal", "parity")]
+    try:
+        import open3d as o3d
+
+        def o3d_inside(v, f, p):
+            scene = o3d.t.geometry.RaycastingScene()
+            scene.add_triangles(o3d.core.Tensor(v.astype(np.float32)), o3d.core.Tensor(f.astype(np.uint32)))
+            return scene.compute_signed_distance(o3d.core.Tensor(p.astype(np.float32))).numpy() < 0
+
+        methods.append(("Open3D compute_signed_distance", o3d_inside))
+    except ImportError:
+        pass
+    try:
+        import igl
+
+        for label, kind in [("fast winding number", igl.SIGNED_DISTANCE_TYPE_FAST_WINDING_NUMBER),
+                            ("winding number", igl.SIGNED_DISTANCE_TYPE_WINDING_NUMBER),
+                            ("pseudonormal", igl.SIGNED_DISTANCE_TYPE_PSEUDONORMAL)]:
+            methods.append((f"libigl {label}", lambda v, f, p, kind=kind: igl.signed_distance(
+                np.ascontiguousarray(p), np.ascontiguousarray(v), np.ascontiguousarray(f, dtype=np.int64),
+                kind)[0] < 0))
+    except ImportError:
+        pass
+    try:
+        import trimesh
+
+        # trimesh's signed distance is positive inside.
+        methods.append(("trimesh proximity.signed_distance",
+                        lambda v, f, p: trimesh.proximity.signed_distance(trimesh.Trimesh(v, f, process=False), p) > 0))
+    except ImportError:
+        pass
+    cases = sign_cases()
+    print("\nwrong signs (points on the wrong side / points tested)")
+    print(f"{'method':36s}" + "".join(f" {name:>32s}" for name, *_ in cases))
+    for label, inside in methods:
+        cells = []
+        for _, v, f, p, truth in cases:
+            try:
+                wrong = int(np.sum(np.asarray(inside(v, f, p), dtype=bool) != truth))
+                cells.append(f"{wrong} / {len(p)}")
+            except Exception as e:  # a peer that refuses the input counts as failing it
+                cells.append(f"error: {type(e).__name__}")
+        print(f"{label:36s}" + "".join(f" {c:>32s}" for c in cells))
 
 
 if __name__ == "__main__":

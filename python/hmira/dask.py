@@ -41,7 +41,14 @@ import numpy as np
 
 from . import _core
 
-__all__ = ["marching_cubes", "voxelize", "decimate", "decimation_quality", "volume_decimation_quality"]
+__all__ = [
+    "marching_cubes",
+    "voxelize",
+    "decimate",
+    "decimation_quality",
+    "volume_decimation_quality",
+    "signed_distance",
+]
 
 _DTYPES = (np.float32, np.float64, np.uint8, np.uint16, np.int16)
 
@@ -650,3 +657,7 @@ from ._dask_voxelize import voxelize  # noqa: E402,F401
 
 # Out-of-core decimation (block-wise, exact seams) lives in its own module too.
 from ._dask_decimate import decimate, decimation_quality, volume_decimation_quality  # noqa: E402,F401
+
+# The chunked signed distance lives in its own module too.
+from ._dask_sdf import signed_distance  # noqa: E402,F401
+

@@ -3,9 +3,15 @@
 // arrays, and Mesh.winding_number / contains / signed_distance / sample_surface. Points come in
 // as (n, 3) float64 or float32 arrays (float64 C-contiguous ones without a copy); answers go
 // out in the points' dtype. The GIL is released while C++ runs.
+#include <array>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <limits>
+#include <memory>
 #include <vector>
+
+#include <nanobind/stl/array.h>
 
 #include <hmira/algorithms/spatial/hausdorff_distance.hpp>
 #include <hmira/algorithms/spatial/sample_surface.hpp>
@@ -174,9 +180,66 @@ nb::dict hausdorff_free(nb::handle a, nb::handle b, std::size_t per_triangle, st
     return out;
 }
 
+/// The signed-distance engine over (V, F) arrays that the blocks of hmira.dask.signed_distance
+/// share: built once (the closest-point and winding-number trees), then queried per block.
+class sdf_engine {
+public:
+    sdf_engine(const any_array& vertices, const any_array& faces, const std::string& sign, double beta)
+        : surface_(set_arg(vertices, faces, "signed_distance")),
+          sign_(choice_arg<hmira::sign_mode>(sign, "signed_distance", "sign")),
+          beta_(beta) {
+        if (surface_.triangles.empty()) value_error("signed_distance: the mesh has no faces");
+        if (auto ok = hmira::detail::spatial::check_winding_options({.beta = beta}, "signed_distance"); !ok)
+            value_error(ok.error().message);
+        nb::gil_scoped_release release;
+        engine_ = std::make_unique<hmira::detail::spatial::distance_engine>(surface_, sign_);
+    }
+
+    /// Samples [lo, lo + shape) of the grid whose sample (i, j, k) lies at origin + pitch * (i, j, k),
+    /// computed as signed_distance_grid's grid_geometry::position does.
+    nb::ndarray<nb::numpy, double> block(const std::array<double, 3>& origin, double pitch,
+                                         const std::array<std::size_t, 3>& lo, const std::array<std::size_t, 3>& shape,
+                                         unsigned threads) const {
+        if (!(pitch > 0) || !std::isfinite(pitch)) value_error("signed_distance: pitch must be positive and finite");
+        std::vector<double> out(shape[0] * shape[1] * shape[2]);
+        {
+            nb::gil_scoped_release release;
+            constexpr double inf = std::numeric_limits<double>::infinity();
+            hmira::detail::with_thread_count(threads, [&] {
+                hmira::detail::parallel_chunks(shape[0] * shape[1], 1, [&](std::size_t r0, std::size_t r1) {
+                    for (std::size_t r = r0; r < r1; ++r) {
+                        const std::size_t i = r / shape[1], j = r % shape[1];
+                        for (std::size_t k = 0; k < shape[2]; ++k) {
+                            const v3 p{origin[0] + double(lo[0] + i) * pitch, origin[1] + double(lo[1] + j) * pitch,
+                                       origin[2] + double(lo[2] + k) * pitch};
+                            out[r * shape[2] + k] = engine_->at(p, beta_, inf, nullptr, nullptr);
+                        }
+                    }
+                });
+            });
+        }
+        return adopt<double>(std::move(out), {shape[0], shape[1], shape[2]});
+    }
+
+private:
+    hmira::triangle_set surface_;
+    hmira::sign_mode sign_;
+    double beta_;
+    std::unique_ptr<hmira::detail::spatial::distance_engine> engine_;
+};
+
 }  // namespace
 
 void bind_queries(nb::module_& m) {
+    nb::class_<sdf_engine>(m, "_SignedDistanceEngine",
+                           "The signed distance to the triangles (vertices, faces), built once and sampled block by "
+                           "block (see hmira.dask.signed_distance).")
+        .def(nb::init<const any_array&, const any_array&, const std::string&, double>(), nb::arg("vertices"),
+             nb::arg("faces"), nb::kw_only(), nb::arg("sign") = "winding_number", nb::arg("beta") = 2.0)
+        .def("block", &sdf_engine::block, nb::kw_only(), nb::arg("origin"), nb::arg("pitch"), nb::arg("lo"),
+             nb::arg("shape"), nb::arg("threads") = 1,
+             "Signed distances at samples [lo, lo + shape) of the grid with sample (i, j, k) at "
+             "origin + pitch * (i, j, k): a float64 array of that shape.");
     const hmira::winding_number_options w{};
     const hmira::signed_distance_options sd{};
     const hmira::hausdorff_options h{};

@@ -37,10 +37,17 @@ struct closest_point_options {
     bvh_nan_policy nan = bvh_nan_policy::refuse;                    ///< batched queries: non-finite points
 };
 
+/// How the ray queries test boxes: both keep every box the ray meets and give the same answers.
+enum class bvh_box_test {
+    float32,  ///< float slabs widened by a bound on their rounding (double for a ray float cannot bound)
+    float64,  ///< double slabs
+};
+
 /// Options of the batched ray queries.
 struct ray_query_options {
     unsigned threads = 0;                         ///< worker threads (0: all)
     bvh_nan_policy nan = bvh_nan_policy::refuse;  ///< rays with a non-finite origin or direction
+    bvh_box_test boxes = bvh_box_test::float32;   ///< the box test (the answers do not depend on it)
 };
 
 /// The face index of a query that found nothing.
@@ -168,7 +175,7 @@ public:
     /// Complexity O(log n) expected, O(n) worst case.
     closest_surface_point closest_point(const vec3<double>& p, const closest_point_options& options = {}) const;
     /// The hit of r with the smallest t in [r.t_min, r.t_max] (found() false for none); hits on
-    /// edges count. Ties go to the triangle met first. Complexity O(log n) expected.
+    /// edges count. Ties go to the triangle first in the tree's order. Complexity O(log n) expected.
     ray_surface_hit first_hit(const ray& r) const;
     /// Whether r hits any triangle with t in [r.t_min, r.t_max]: stops at the first it finds.
     bool any_hit(const ray& r) const;
@@ -247,6 +254,7 @@ private:
     std::vector<std::size_t> faces_;                      // leaf order
     std::vector<std::uint8_t> degenerate_;                // leaf order: corners collinear, exactly
     std::size_t point_count_ = 0, depth_ = 0;
+    double reach_ = 0;  // the largest |coordinate| of the root box
     source source_{};
 };
 

@@ -68,6 +68,7 @@ struct bvh_access {
             const bb::builder b{prims, options.max_leaf_size};
             t.nodes_.reserve(2 * n);
             t.depth_ = b.build(t.nodes_, 0, static_cast<std::uint32_t>(n), 0);
+            t.reach_ = reach_of(t.nodes_[0]);
             t.corners_.resize(n);
             t.vertices_.resize(n);
             t.faces_.resize(n);
@@ -82,6 +83,14 @@ struct bvh_access {
             place_corners(t, points);
         });
         return t;
+    }
+
+    /// The largest |coordinate| of a box: every box lies within the root's.
+    static double reach_of(const node& root) {
+        double r = 0;
+        for (std::size_t k = 0; k < 3; ++k)
+            r = std::max({r, std::abs(double(root.lo[k])), std::abs(double(root.hi[k]))});
+        return r;
     }
 
     /// Corners and degeneracy flags of every triangle from `points`.
@@ -124,6 +133,7 @@ struct bvh_access {
                     n.lo[k] = std::min(l.lo[k], r.lo[k]), n.hi[k] = std::max(l.hi[k], r.hi[k]);
             }
         }
+        if (!t.nodes_.empty()) t.reach_ = reach_of(t.nodes_[0]);
         return {};
     }
 
@@ -204,23 +214,43 @@ struct bvh_access {
 
     /// The traversal the three ray queries share: calls leaf(i, t, u, v) on every hit of a
     /// non-degenerate triangle with t in [t_min, bound()], nearer boxes first; stops when
-    /// leaf returns false.
+    /// leaf returns false. The boxes are tested in float (box_entry_float) unless the ray
+    /// cannot be bounded in float or `boxes` asks for double; both keep every box the ray
+    /// meets, and the triangles are always tested in double, so the hits are the same.
     template <class Bound, class Leaf>
-    static void traverse(const bvh& t, const ray& r, const Bound& bound, const Leaf& leaf) {
+    static void traverse(const bvh& t, const ray& r, bvh_box_test boxes, const Bound& bound, const Leaf& leaf) {
         namespace bb = detail::bvh_build;
         if (t.nodes_.empty()) return;
+        if (boxes == bvh_box_test::float32) {
+            const bb::float_ray f = bb::prepare_float_ray(r.origin, r.direction, t.reach_);
+            if (f.exact) {
+                const float t_min = bb::round_down(r.t_min);
+                descend(t, r, bound, leaf, [&](const node& n) {
+                    return bb::box_entry_float(n, f, t_min, bb::round_up(bound()));
+                });
+                return;
+            }
+        }
         const vec3<double> inv{1.0 / r.direction.x, 1.0 / r.direction.y, 1.0 / r.direction.z};
-        struct entry {
+        descend(t, r, bound, leaf,
+                [&](const node& n) { return bb::box_entry(n, r.origin, inv, r.t_min, bound()); });
+    }
+
+    /// traverse's loop, with entry(node) giving where the ray enters a box (NaN: it misses).
+    template <class Bound, class Leaf, class Entry>
+    static void descend(const bvh& t, const ray& r, const Bound& bound, const Leaf& leaf, const Entry& entry) {
+        namespace bb = detail::bvh_build;
+        struct item {
             std::uint32_t node;
             double t;
         };
-        entry stack[bb::stack_size];
+        item stack[bb::stack_size];
         int top = 0;
-        const double t0 = bb::box_entry(t.nodes_[0], r.origin, inv, r.t_min, bound());
+        const double t0 = entry(t.nodes_[0]);
         if (!(t0 <= bound())) return;
         stack[top++] = {0, t0};
         while (top > 0) {
-            const entry e = stack[--top];
+            const item e = stack[--top];
             if (!(e.t <= bound())) continue;
             const node& n = t.nodes_[e.node];
             if (n.count > 0) {
@@ -234,35 +264,36 @@ struct bvh_access {
                 continue;
             }
             const std::uint32_t a = e.node + 1, b = n.index;
-            const double ta = bb::box_entry(t.nodes_[a], r.origin, inv, r.t_min, bound());
-            const double tb = bb::box_entry(t.nodes_[b], r.origin, inv, r.t_min, bound());
+            const double ta = entry(t.nodes_[a]), tb = entry(t.nodes_[b]);
             const bool a_first = !(tb < ta);  // NaN (a miss) sorts last
-            const entry near{a_first ? a : b, a_first ? ta : tb}, far{a_first ? b : a, a_first ? tb : ta};
+            const item near{a_first ? a : b, a_first ? ta : tb}, far{a_first ? b : a, a_first ? tb : ta};
             if (far.t <= bound()) stack[top++] = far;
             if (near.t <= bound()) stack[top++] = near;
         }
     }
 
-    static ray_surface_hit first(const bvh& t, const ray& r) {
+    static ray_surface_hit first(const bvh& t, const ray& r, bvh_box_test boxes) {
         if (!finite_ray(r)) return nan_hit();
         double best = r.t_max;
         bool found = false;
         std::size_t best_i = 0;
         double bu = 0, bv = 0;
+        // Among equal parameters the triangle first in the tree's order wins, whatever order
+        // the traversal meets them in.
         traverse(
-            t, r, [&] { return best; },
+            t, r, boxes, [&] { return best; },
             [&](std::size_t i, double s, double u, double v) {
-                if (s < best || !found) best = s, found = true, best_i = i, bu = u, bv = v;
+                if (s < best || !found || (s == best && i < best_i)) best = s, found = true, best_i = i, bu = u, bv = v;
                 return true;
             });
         return found ? make_hit(t, r, best_i, best, bu, bv) : ray_surface_hit{};
     }
 
-    static bool any(const bvh& t, const ray& r) {
+    static bool any(const bvh& t, const ray& r, bvh_box_test boxes) {
         if (!finite_ray(r)) return false;
         bool hit = false;
         traverse(
-            t, r, [&] { return r.t_max; },
+            t, r, boxes, [&] { return r.t_max; },
             [&](std::size_t, double, double, double) {
                 hit = true;
                 return false;
@@ -274,7 +305,7 @@ struct bvh_access {
         std::vector<ray_surface_hit> out;
         if (!finite_ray(r)) return out;
         traverse(
-            t, r, [&] { return r.t_max; },
+            t, r, bvh_box_test::float32, [&] { return r.t_max; },
             [&](std::size_t i, double s, double u, double v) {
                 out.push_back(make_hit(t, r, i, s, u, v));
                 return true;
@@ -322,9 +353,11 @@ inline closest_surface_point bvh::closest_point(const vec3<double>& p, const clo
     return detail::bvh_access::closest(*this, p, options.max_distance);
 }
 
-inline ray_surface_hit bvh::first_hit(const ray& r) const { return detail::bvh_access::first(*this, r); }
+inline ray_surface_hit bvh::first_hit(const ray& r) const {
+    return detail::bvh_access::first(*this, r, bvh_box_test::float32);
+}
 
-inline bool bvh::any_hit(const ray& r) const { return detail::bvh_access::any(*this, r); }
+inline bool bvh::any_hit(const ray& r) const { return detail::bvh_access::any(*this, r, bvh_box_test::float32); }
 
 inline std::vector<ray_surface_hit> bvh::all_hits(const ray& r) const { return detail::bvh_access::all(*this, r); }
 
@@ -341,7 +374,7 @@ inline result<std::vector<ray_surface_hit>> bvh::first_hits(std::span<const ray>
     return detail::bvh_access::batch<ray_surface_hit>(
         rays.size(), options.threads, options.nan, "first_hits",
         [&](std::size_t i) { return detail::bvh_access::finite_ray(rays[i]); },
-        [&](std::size_t i) { return detail::bvh_access::first(*this, rays[i]); });
+        [&](std::size_t i) { return detail::bvh_access::first(*this, rays[i], options.boxes); });
 }
 
 inline result<std::vector<std::uint8_t>> bvh::any_hits(std::span<const ray> rays,
@@ -349,7 +382,7 @@ inline result<std::vector<std::uint8_t>> bvh::any_hits(std::span<const ray> rays
     return detail::bvh_access::batch<std::uint8_t>(
         rays.size(), options.threads, options.nan, "any_hits",
         [&](std::size_t i) { return detail::bvh_access::finite_ray(rays[i]); },
-        [&](std::size_t i) { return std::uint8_t(detail::bvh_access::any(*this, rays[i])); });
+        [&](std::size_t i) { return std::uint8_t(detail::bvh_access::any(*this, rays[i], options.boxes)); });
 }
 
 inline result<void> bvh::refit(std::span<const vec3<double>> points) {
