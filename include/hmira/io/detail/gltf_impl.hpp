@@ -173,9 +173,9 @@ inline result<void> load_buffers(gltf_document& doc, std::string_view bin, const
             bytes = doc.owned.back();
         } else {
             const std::string& u = uri->text;
-            if (!load) return doc.bad(where + " refers to the file '" + u + "', which cannot be read from memory");
+            if (!load) return doc.bad(where + " refers to the file '" + printable(u) + "', which cannot be read from memory");
             if (u.find(':') != std::string::npos || u.starts_with('/') || u.find("..") != std::string::npos)
-                return doc.bad(where + ".uri '" + u + "' is not a relative path beside the file");
+                return doc.bad(where + ".uri '" + printable(u) + "' is not a relative path beside the file");
             std::string path;
             for (std::size_t k = 0; k < u.size(); ++k) {  // percent-decoding (%20 for spaces)
                 unsigned v = 0;
@@ -259,7 +259,7 @@ inline result<gltf_accessor> accessor(const gltf_document& doc, std::uint64_t i,
     std::size_t components = 0;
     for (auto t : types)
         if (type->text == t) components = t == "SCALAR" ? 1 : static_cast<std::size_t>(t.back() - '0');
-    if (components == 0) return doc.bad(where + " has type " + type->text + ", not what " + who + " needs");
+    if (components == 0) return doc.bad(where + " has type " + printable(type->text) + ", not what " + who + " needs");
     auto ct = doc.index(acc, "componentType", where);
     if (!ct) return ct.error();
     bool known = false;

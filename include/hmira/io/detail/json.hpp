@@ -19,8 +19,9 @@ namespace hmira::io::detail {
 /// Deepest nesting of arrays and objects accepted (a glTF document needs fewer than ten).
 inline constexpr int max_json_depth = 64;
 
-/// A JSON value. Objects keep their members in document order; find() is linear, which suits
-/// glTF's small objects.
+/// A JSON value. An array's elements are `items`; an object's member values are `items` too,
+/// named by `keys` (same order, the document's); find() is linear, which suits glTF's small
+/// objects. (No vector of pairs: a pair holding the still incomplete json_value is ill-formed.)
 struct json_value {
     enum class kind : std::uint8_t { null, boolean, number, string, array, object };
     kind type = kind::null;
@@ -28,13 +29,13 @@ struct json_value {
     double number = 0;
     std::string text;
     std::vector<json_value> items;
-    std::vector<std::pair<std::string, json_value>> members;
+    std::vector<std::string> keys;
 
     /// The member named `key` of an object, or null (also for a value that is no object).
     const json_value* find(std::string_view key) const {
         if (type != kind::object) return nullptr;
-        for (const auto& [k, v] : members)
-            if (k == key) return &v;
+        for (std::size_t i = 0; i < keys.size() && i < items.size(); ++i)
+            if (keys[i] == key) return &items[i];
         return nullptr;
     }
     bool is_number() const { return type == kind::number; }
@@ -42,6 +43,25 @@ struct json_value {
     bool is_array() const { return type == kind::array; }
     bool is_object() const { return type == kind::object; }
 };
+
+/// Text from the file as it may appear in a one-line message: printable ASCII as is, anything
+/// else as \xNN, at most 40 characters (then "...").
+inline std::string printable(std::string_view s) {
+    std::string out;
+    for (std::size_t i = 0; i < s.size() && i < 40; ++i) {
+        const auto c = static_cast<unsigned char>(s[i]);
+        if (c >= 0x20 && c < 0x7f) {
+            out += static_cast<char>(c);
+        } else {
+            static constexpr char hex[] = "0123456789abcdef";
+            out += "\\x";
+            out += hex[c >> 4];
+            out += hex[c & 15];
+        }
+    }
+    if (s.size() > 40) out += "...";
+    return out;
+}
 
 /// Parses a whole JSON document (trailing whitespace allowed, nothing else after it).
 /// Complexity O(bytes). Errors (errc::parse_error): "<name>: byte offset N: <what>".
@@ -102,7 +122,7 @@ private:
         while (at_ < s_.size() && (std::string_view("+-0123456789.eE").find(s_[at_]) != std::string_view::npos)) ++at_;
         if (start == at_) {
             at_ = start;
-            return error(std::string("unexpected character '") + s_[start] + "'");
+            return error("unexpected character '" + printable(s_.substr(start, 1)) + "'");
         }
         const char* first = s_.data() + start;
         const char* last = s_.data() + at_;
@@ -178,7 +198,7 @@ private:
                     append_utf8(out, code);
                     break;
                 }
-                default: --at_; return error(std::string("unknown escape '\\") + e + "'");
+                default: --at_; return error("unknown escape '\\" + printable(std::string_view(&e, 1)) + "'");
             }
         }
     }
@@ -207,12 +227,13 @@ private:
         while (true) {
             skip_space();
             if (at_ >= s_.size() || s_[at_] != '"') return error("expected a member name in quotes");
-            out.members.emplace_back();
-            if (auto ok = string(out.members.back().first); !ok) return ok;
+            out.keys.emplace_back();
+            if (auto ok = string(out.keys.back()); !ok) return ok;
             skip_space();
             if (at_ >= s_.size() || s_[at_] != ':') return error("expected ':' after a member name");
             ++at_;
-            if (auto ok = value(out.members.back().second, depth); !ok) return ok;
+            out.items.emplace_back();
+            if (auto ok = value(out.items.back(), depth); !ok) return ok;
             skip_space();
             if (at_ >= s_.size()) return error("unterminated object");
             if (s_[at_] == '}') return ++at_, result<void>{};
