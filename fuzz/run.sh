@@ -2,7 +2,7 @@
 # Builds the parser fuzz targets (OBJ, OFF, PLY, STL, glTF, INR plain and gzip, binvox, .xyz/.csv
 # points) with clang 14's libFuzzer (+ ASan/UBSan) and runs each for a bounded time with its
 # dictionary on a copy of its committed corpus, so CI stays deterministic in what it keeps.
-# 8 targets x 18 s (scripts/test.sh) keeps the CI run near 2.5 minutes; fuzz/run-long.sh runs
+# 9 targets x 18 s (scripts/test.sh) keeps the CI run near 3 minutes; fuzz/run-long.sh runs
 # them for long.
 # First checks that every public header under include/hmira/io and include/hmira/meshes
 # compiles on its own with clang 14 (-Wall -Wextra -Werror).
