@@ -62,6 +62,8 @@ mesh_outcome build_and_round_trip(const hmira::io::polygon_soup& soup, hmira::io
         case io::file_format::off: again = io::format_off(mesh); break;
         case io::file_format::ply: again = io::format_ply(mesh, {.ply = io::ply_encoding::binary_big_endian}); break;
         case io::file_format::stl: again = io::format_stl(mesh); break;
+        case io::file_format::glb:
+        case io::file_format::gltf: again = io::format_gltf(mesh); break;
     }
     // What a reader accepted (finite coordinates, one loop per face) the writer must write.
     if (!again) return {true, kind + ": the writer refused what the reader read: " + again.error().message};

@@ -30,7 +30,7 @@ int run_convert(const convert_args& a, const common_options& o) {
 }
 
 const bool registered = register_command(
-    {"convert", "Convert a mesh between OBJ, OFF, PLY and STL (format from the extensions)",
+    {"convert", "Convert a mesh between OBJ, OFF, PLY, STL and glTF (.glb, .gltf) (format from the extensions)",
      "hmira convert bunny.off bunny.ply --float", 30, [](CLI::App& sub) {
          auto a = std::make_shared<convert_args>();
          sub.add_option("input", a->input, "mesh file to read")->required();

@@ -26,12 +26,23 @@ import numpy as np
 from . import _core
 from ._core import BVH, Topology, delaunay_triangulation
 from ._core import hausdorff_distance, signed_distance, winding_number
+from ._core import (BevelResult, DecimateResult, ExtrudeResult, FillHolesResult, OpenHole, RemeshResult,
+                    SubdivideResult, TriangulateResult, TruncateResult)
 
 __all__ = [
     "BVH",
+    "BevelResult",
+    "DecimateResult",
+    "ExtrudeResult",
+    "FillHolesResult",
     "Mesh",
+    "OpenHole",
+    "RemeshResult",
     "RepairWarning",
+    "SubdivideResult",
     "Topology",
+    "TriangulateResult",
+    "TruncateResult",
     "VertexView",
     "bevel",
     "delaunay_triangulation",
@@ -55,8 +66,9 @@ __version__ = "0.1.0"
 
 
 class RepairWarning(UserWarning):
-    """Issued when :func:`read_mesh` repaired a file to hold it in a half-edge mesh (the CLI's
-    editing commands print the same one-line summary); ``Mesh.repairs`` keeps the summary."""
+    """Issued when :func:`read_mesh`, ``Mesh(vertices, faces, repair=True)`` or
+    :meth:`Mesh.from_trimesh` repaired faces to hold them in a half-edge mesh (the CLI's editing
+    commands print the same one-line summary); ``Mesh.repairs`` keeps the summary."""
 
 
 def marching_cubes(volume: Any, iso: Optional[float] = None, **options: Any) -> Tuple[np.ndarray, np.ndarray]:
@@ -187,14 +199,19 @@ class Mesh(_core.MeshCore):
         Positions (converted to float64).
     faces : array_like of int, shape (m, k), or sequence of sequences, optional
         Faces as rows of vertex indices, or polygons of any sizes. The mesh must be a
-        consistently oriented 2-manifold (with or without boundary); construction goes
-        through the same soup-to-mesh path as the file readers.
+        consistently oriented 2-manifold (with or without boundary).
+    repair : bool, keyword-only
+        Repair faces a half-edge mesh cannot hold as given (non-manifold edges or vertices,
+        faces wound against each other, degenerate faces) with the file readers' repair, which
+        :func:`read_mesh` uses: a :class:`RepairWarning` carries its one-line summary and
+        ``repairs`` keeps it. Default: refuse them.
 
     Raises
     ------
     ValueError
         A vertex index out of range, a non-finite coordinate, a non-manifold or
-        inconsistently oriented face (the message names the face).
+        inconsistently oriented face (the message names the face, edge or vertex), unless
+        ``repair=True``.
 
     Examples
     --------
@@ -203,7 +220,7 @@ class Mesh(_core.MeshCore):
     ...                [[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]])
     >>> m.topology().genus, m.validate()
     (0, [])
-    >>> m.truncate(all=True, fraction=0.3)["faces"]
+    >>> m.truncate(all=True, fraction=0.3).faces
     4
     >>> m.face_count
     8
@@ -212,13 +229,16 @@ class Mesh(_core.MeshCore):
     #: What :func:`read_mesh` repaired, as the CLI's one-line summary ("" when nothing was).
     repairs: str = ""
 
-    def __init__(self, vertices: Any = None, faces: Any = None) -> None:
+    def __init__(self, vertices: Any = None, faces: Any = None, *, repair: bool = False) -> None:
         super().__init__()
         if vertices is None and faces is None:
             return
         if vertices is None or faces is None:
             raise ValueError("Mesh: give both vertices and faces, or neither")
-        self._set_polygons(_vertex_array(vertices), _faces_arg(faces))
+        summary = self._set_polygons_checked(_vertex_array(vertices), _faces_arg(faces), repair=repair)
+        if summary:
+            self.repairs = summary
+            warnings.warn(f"Mesh: repaired for editing: {summary}", RepairWarning, stacklevel=2)
 
     @property
     def vertices(self) -> VertexView:
@@ -249,7 +269,7 @@ class Mesh(_core.MeshCore):
         return viewer.repr_html(self)
 
     def truncate(self, vertices: Optional[Sequence[int]] = None, *, all: bool = False,
-                 fraction: Optional[float] = None, distance: Optional[float] = None) -> dict:
+                 fraction: Optional[float] = None, distance: Optional[float] = None) -> TruncateResult:
         """Cut chosen corners off, in place (as ``hmira truncate``).
 
         Parameters
@@ -265,8 +285,8 @@ class Mesh(_core.MeshCore):
 
         Returns
         -------
-        dict
-            ``faces``: new faces, ``vertices``: new vertices. Indices stay dense.
+        TruncateResult
+            ``faces``: new faces, ``vertices``: new vertices (counts). Indices stay dense.
 
         Examples
         --------
@@ -274,19 +294,19 @@ class Mesh(_core.MeshCore):
         >>> m = hmira.Mesh([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]],
         ...                [[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]])
         >>> m.truncate([0], fraction=0.5)
-        {'faces': 1, 'vertices': 3}
+        TruncateResult(faces=1, vertices=3)
         """
         return self._truncate(None if vertices is None else [int(v) for v in vertices], all=all, fraction=fraction, distance=distance)
 
     def bevel(self, edges: Optional[Sequence[Tuple[int, int]]] = None, *, all: bool = False, angle: Optional[float] = None,
               width: float = 0.1, segments: int = 1, no_clamp: bool = False, vertices: Optional[Sequence[int]] = None,
-              vertices_all: bool = False) -> dict:
+              vertices_all: bool = False) -> BevelResult:
         """Bevel edges (by their end vertices, all, or sharper than ``angle`` degrees) or, in
         vertex-only mode, corners; in place (as ``hmira bevel``).
 
         Returns
         -------
-        dict
+        BevelResult
             ``strip_faces``, ``vertex_faces``, ``vertices`` (counts made) and ``width`` (used).
 
         Examples
@@ -294,7 +314,7 @@ class Mesh(_core.MeshCore):
         >>> import hmira
         >>> m = hmira.Mesh([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]],
         ...                [[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]])
-        >>> m.bevel([(0, 1)], width=0.05)["strip_faces"]
+        >>> m.bevel([(0, 1)], width=0.05).strip_faces
         1
         """
         e = None if edges is None else [(int(a), int(b)) for a, b in edges]
@@ -303,19 +323,19 @@ class Mesh(_core.MeshCore):
                            vertices=v, vertices_all=vertices_all)
 
     def extrude(self, faces: Optional[Sequence[int]] = None, *, all: bool = False, distance: float = 1.0,
-                direction: Optional[Sequence[float]] = None, mode: str = "region") -> dict:
+                direction: Optional[Sequence[float]] = None, mode: str = "region") -> ExtrudeResult:
         """Extrude faces, in place (as ``hmira extrude``); ``mode`` is "region" or "individual".
 
         Returns
         -------
-        dict
-            ``top_faces``, ``side_faces`` and ``vertices`` made.
+        ExtrudeResult
+            ``top_faces``, ``side_faces`` and ``vertices`` made (counts).
 
         Examples
         --------
         >>> import hmira
         >>> m = hmira.Mesh([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]], [[0, 1, 2, 3]])
-        >>> m.extrude([0], distance=2.0)["side_faces"]
+        >>> m.extrude([0], distance=2.0).side_faces
         4
         """
         d = None if direction is None else [float(x) for x in direction]
@@ -353,6 +373,8 @@ class Mesh(_core.MeshCore):
         out = cls()
         vertices, faces = _vertex_array(np.asarray(tm.vertices)), _faces_arg(np.asarray(tm.faces))
         out.repairs = out._set_polygons_checked(vertices, faces, repair=repair)
+        if out.repairs:
+            warnings.warn(f"Mesh: repaired for editing: {out.repairs}", RepairWarning, stacklevel=2)
         return out
 
     # Geometry basics (mesh_geometry.cpp: bounds, area, volume, face_normals, face_areas, edges).
@@ -460,7 +482,7 @@ class Mesh(_core.MeshCore):
     # The one vocabulary (as smoothing and the CLI): fix_boundary, fixed_vertices, max_edges.
 
     def decimate(self, *, keep_boundary: Optional[bool] = None, locked_vertices: Optional[Sequence[int]] = None,
-                 **options: Any) -> dict:
+                 **options: Any) -> DecimateResult:
         """Quadric error decimation: see :meth:`MeshCore.decimate`. ``keep_boundary`` and
         ``locked_vertices`` are the deprecated names of ``fix_boundary`` and ``fixed_vertices``."""
         if keep_boundary is not None:
@@ -472,7 +494,7 @@ class Mesh(_core.MeshCore):
             options.setdefault("fixed_vertices", locked_vertices)
         return super().decimate(**options)
 
-    def fill_holes(self, max_edges: Optional[int] = None, *, max_size: Optional[int] = None, **options: Any) -> dict:
+    def fill_holes(self, max_edges: Optional[int] = None, *, max_size: Optional[int] = None, **options: Any) -> FillHolesResult:
         """Fill every hole of at most `max_edges` boundary edges (default: the CLI's, from the
         library): see :meth:`MeshCore.fill_holes`. ``max_size`` is its deprecated name."""
         if max_size is not None:
@@ -489,6 +511,129 @@ class Mesh(_core.MeshCore):
 
         return trimesh.Trimesh(vertices=np.array(self._positions()), faces=self.faces, process=False)
 
+    # Bridges to Open3D, PyVista and meshio: duck-typed on the way in (no import needed), the
+    # package imported only on the way out. Construction checks as Mesh(V, F, repair=...) does.
+
+    def _triangles(self) -> np.ndarray:
+        """(m, 3) int32 triangles: the faces, or a triangulated copy's when some are polygons."""
+        if self.face_count == 0:
+            return np.zeros((0, 3), dtype=np.int32)
+        try:
+            faces = self.faces
+            if faces.shape[1] == 3:
+                return faces
+        except ValueError:
+            pass
+        copy = self.copy()
+        copy.triangulate_faces()
+        return copy.faces
+
+    @classmethod
+    def _from_arrays(cls, vertices: Any, faces: Any, colors: Any, repair: bool) -> "Mesh":
+        out = cls()
+        out.repairs = out._set_polygons_checked(_vertex_array(vertices), _faces_arg(faces), repair=repair)
+        if out.repairs:
+            warnings.warn(f"Mesh: repaired for editing: {out.repairs}", RepairWarning, stacklevel=3)
+        if colors is not None and len(colors) == out.vertex_count and not out.repairs:
+            out.vertex_colors = colors
+        return out
+
+    @classmethod
+    def from_open3d(cls, mesh: Any, *, repair: bool = False) -> "Mesh":
+        """A Mesh from an ``open3d.geometry.TriangleMesh`` (its vertices, triangles and vertex
+        colours); checked as ``Mesh(vertices, faces, repair=repair)``."""
+        if not hasattr(mesh, "vertices") or not hasattr(mesh, "triangles"):
+            raise ValueError("from_open3d: expected an open3d.geometry.TriangleMesh (.vertices and .triangles)")
+        colors = None
+        if getattr(mesh, "has_vertex_colors", lambda: False)():
+            colors = np.asarray(mesh.vertex_colors, dtype=np.float64)
+        return cls._from_arrays(np.asarray(mesh.vertices), np.asarray(mesh.triangles, dtype=np.int64), colors, repair)
+
+    def to_open3d(self) -> Any:
+        """An ``open3d.geometry.TriangleMesh`` copy (needs open3d): polygons are triangulated in
+        the copy; vertex colours go along (as floats in [0, 1])."""
+        import open3d  # optional dependency
+
+        out = open3d.geometry.TriangleMesh(open3d.utility.Vector3dVector(np.array(self._positions())),
+                                           open3d.utility.Vector3iVector(np.asarray(self._triangles(), np.int32)))
+        colors = self._vertex_colors
+        if colors is not None:
+            out.vertex_colors = open3d.utility.Vector3dVector(colors[:, :3].astype(np.float64) / 255.0)
+        return out
+
+    @classmethod
+    def from_pyvista(cls, mesh: Any, *, repair: bool = False) -> "Mesh":
+        """A Mesh from a ``pyvista.PolyData`` (points and polygon faces; lines and vertices are
+        left out; other datasets: call ``.extract_surface()`` first); checked as
+        ``Mesh(vertices, faces, repair=repair)``. An "RGB" or "RGBA" uint8 point array becomes
+        the vertex colours."""
+        if not hasattr(mesh, "points") or not hasattr(mesh, "faces"):
+            raise ValueError("from_pyvista: expected a pyvista.PolyData (.points and .faces); "
+                             "call .extract_surface() on other datasets")
+        cells = np.asarray(mesh.faces, dtype=np.int64).ravel()
+        polygons = []
+        i = 0
+        while i < len(cells):
+            k = int(cells[i])
+            if k < 1 or i + 1 + k > len(cells):
+                raise ValueError(f"from_pyvista: the face array is malformed at offset {i} (size {k})")
+            polygons.append(cells[i + 1:i + 1 + k])
+            i += 1 + k
+        sizes = {len(p) for p in polygons}
+        faces: Any = np.array(polygons, dtype=np.int64) if len(sizes) == 1 else [p.tolist() for p in polygons]
+        if not polygons:
+            faces = np.zeros((0, 3), dtype=np.int64)
+        colors = None
+        data = getattr(mesh, "point_data", {})
+        for name in ("RGBA", "RGB"):
+            if name in data and np.asarray(data[name]).dtype == np.uint8:
+                colors = np.asarray(data[name])
+                break
+        return cls._from_arrays(np.asarray(mesh.points), faces, colors, repair)
+
+    def to_pyvista(self) -> Any:
+        """A ``pyvista.PolyData`` copy (needs pyvista), polygons kept; vertex colours go along as
+        the "RGBA" point array."""
+        import pyvista  # optional dependency
+
+        polygons = self.polygons
+        cells = np.fromiter((x for p in polygons for x in (len(p), *p)), dtype=np.int64,
+                            count=sum(len(p) + 1 for p in polygons))
+        out = pyvista.PolyData(np.array(self._positions()), cells)
+        colors = self._vertex_colors
+        if colors is not None:
+            out.point_data["RGBA"] = colors
+        return out
+
+    @classmethod
+    def from_meshio(cls, mesh: Any, *, repair: bool = False) -> "Mesh":
+        """A Mesh from a ``meshio.Mesh``: its triangle, quad and polygon cell blocks (other cells,
+        such as lines or tetrahedra, are left out; none at all is a ValueError); checked as
+        ``Mesh(vertices, faces, repair=repair)``."""
+        if not hasattr(mesh, "points") or not hasattr(mesh, "cells"):
+            raise ValueError("from_meshio: expected a meshio.Mesh (.points and .cells)")
+        blocks = [np.asarray(c.data, dtype=np.int64) for c in mesh.cells
+                  if c.type in ("triangle", "quad") or c.type.startswith("polygon")]
+        if not blocks:
+            kinds = sorted({c.type for c in mesh.cells})
+            raise ValueError(f"from_meshio: no triangle, quad or polygon cells (the mesh has {kinds or 'none'})")
+        sizes = {b.shape[1] for b in blocks}
+        faces: Any = np.concatenate(blocks) if len(sizes) == 1 else [row.tolist() for b in blocks for row in b]
+        return cls._from_arrays(np.asarray(mesh.points), faces, None, repair)
+
+    def to_meshio(self) -> Any:
+        """A ``meshio.Mesh`` copy (needs meshio): one cell block per face size ("triangle",
+        "quad", "polygon"), in order of size, each keeping the faces' relative order."""
+        import meshio  # optional dependency
+
+        polygons = self.polygons
+        by_size: dict = {}
+        for p in polygons:
+            by_size.setdefault(len(p), []).append(p)
+        names = {3: "triangle", 4: "quad"}
+        cells = [(names.get(k, "polygon"), np.array(by_size[k], dtype=np.int64)) for k in sorted(by_size)]
+        return meshio.Mesh(np.array(self._positions()), cells)
+
 
 def as_mesh(mesh: Any) -> Mesh:
     """A :class:`Mesh` from a Mesh (returned as is), a ``(vertices, faces)`` pair, or any
@@ -503,7 +648,7 @@ def as_mesh(mesh: Any) -> Mesh:
 
 
 def read_mesh(path: Any, *, weld_stl: bool = True, repair: bool = True) -> Mesh:
-    """Read an OBJ, OFF, PLY or STL file (chosen by extension) into a :class:`Mesh`.
+    """Read an OBJ, OFF, PLY, STL or glTF (.glb, .gltf) file (chosen by extension) into a :class:`Mesh`.
 
     A file a half-edge mesh cannot hold as it is (non-manifold edges or vertices, faces wound
     against each other, degenerate faces) is repaired, as the CLI's editing commands do, and
@@ -612,7 +757,7 @@ def read_volume(path: Any, *, dims: Optional[Sequence[int]] = None, dtype: Optio
 def write_mesh(path: Any, mesh: Any, *, ascii: bool = False, big_endian: bool = False, float32: bool = False,
                attributes: bool = True) -> None:
     """Write a :class:`Mesh`, a ``(vertices, faces)`` pair or any object with ``.vertices`` and
-    ``.faces`` to an OBJ, OFF, PLY or STL file, atomically (a failure never leaves a partial
+    ``.faces`` to an OBJ, OFF, PLY, STL or glTF (.glb, .gltf) file, atomically (a failure never leaves a partial
     file). Options as ``hmira convert``: ``ascii`` (PLY/STL text), ``big_endian`` (PLY),
     ``float32`` (PLY coordinates), ``attributes`` (normals/colours read from a file).
 
@@ -682,7 +827,13 @@ def voxelize(vertices: Any, faces: Any = None, *, resolution: Optional[int] = No
     """
     if faces is None:
         if isinstance(vertices, Mesh):
-            v, f = np.array(vertices._positions()), vertices.polygons
+            # The mesh's own positions (no copy) and its faces as one (m, k) array, which the
+            # extension reads in place with the GIL released; a list only for mixed face sizes.
+            v = vertices._positions()
+            try:
+                f = vertices.faces
+            except ValueError:
+                f = vertices.polygons
         elif isinstance(vertices, tuple) and len(vertices) == 2:
             v, f = vertices
         elif hasattr(vertices, "vertices") and hasattr(vertices, "faces"):
@@ -707,17 +858,17 @@ def mesh_topology(mesh: Any) -> Topology:
     return as_mesh(mesh).topology()
 
 
-def truncate(mesh: Mesh, vertices: Optional[Sequence[int]] = None, **options: Any) -> dict:
+def truncate(mesh: Mesh, vertices: Optional[Sequence[int]] = None, **options: Any) -> TruncateResult:
     """``mesh.truncate(vertices, **options)``: see :meth:`Mesh.truncate`."""
     return mesh.truncate(vertices, **options)
 
 
-def bevel(mesh: Mesh, edges: Optional[Sequence[Tuple[int, int]]] = None, **options: Any) -> dict:
+def bevel(mesh: Mesh, edges: Optional[Sequence[Tuple[int, int]]] = None, **options: Any) -> BevelResult:
     """``mesh.bevel(edges, **options)``: see :meth:`Mesh.bevel`."""
     return mesh.bevel(edges, **options)
 
 
-def extrude(mesh: Mesh, faces: Optional[Sequence[int]] = None, **options: Any) -> dict:
+def extrude(mesh: Mesh, faces: Optional[Sequence[int]] = None, **options: Any) -> ExtrudeResult:
     """``mesh.extrude(faces, **options)``: see :meth:`Mesh.extrude`."""
     return mesh.extrude(faces, **options)
 

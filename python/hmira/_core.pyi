@@ -9,7 +9,7 @@ import numpy
 from numpy.typing import NDArray
 
 
-def marching_cubes(volume: Annotated[NDArray, dict(shape=(None, None, None), device='cpu', writable=False)], iso: float | None = None, *, spacing: Sequence[float] = [1.0, 1.0, 1.0], origin: Sequence[float] = [0.0, 0.0, 0.0], inside: str = 'below', threads: int = 0) -> tuple:
+def marching_cubes(volume: Annotated[NDArray, dict(shape=(None, None, None), device='cpu', writable=False)], iso: float | None = None, *, spacing: Sequence[float] = [1.0, 1.0, 1.0], origin: Sequence[float] = [0.0, 0.0, 0.0], inside: str = 'below', threads: int = 0) -> tuple[NDArray[numpy.float64], NDArray[numpy.int32]]:
     """
     Extract the iso-surface of a 3-D volume as a welded, closed triangle mesh.
 
@@ -87,6 +87,249 @@ def delaunay_triangulation(points: Annotated[NDArray[numpy.float64], dict(shape=
     (2, 3)
     """
 
+class OpenHole:
+    """A hole fill_holes left open: its first vertex, length and why."""
+
+    @property
+    def vertex(self) -> int: ...
+
+    @property
+    def edges(self) -> int: ...
+
+    @property
+    def reason(self) -> str: ...
+
+    def __getitem__(self, key: str) -> object:
+        """The field `key`, as the dict results of earlier versions offered it."""
+
+    def keys(self) -> list:
+        """The field names, in order (with __getitem__, dict(result) works)."""
+
+    def __eq__(self, other: object | None) -> bool: ...
+
+    def __repr__(self) -> str: ...
+
+    __hash__: None = None
+
+class FillHolesResult:
+    """
+    What Mesh.fill_holes did: loops filled and skipped, faces and vertices added.
+    """
+
+    @property
+    def filled(self) -> int: ...
+
+    @property
+    def skipped(self) -> int: ...
+
+    @property
+    def faces_added(self) -> int: ...
+
+    @property
+    def vertices_added(self) -> int: ...
+
+    @property
+    def unfaired(self) -> int: ...
+
+    @property
+    def open(self) -> list[OpenHole]: ...
+
+    def __getitem__(self, key: str) -> object:
+        """The field `key`, as the dict results of earlier versions offered it."""
+
+    def keys(self) -> list:
+        """The field names, in order (with __getitem__, dict(result) works)."""
+
+    def __eq__(self, other: object | None) -> bool: ...
+
+    def __repr__(self) -> str: ...
+
+    __hash__: None = None
+
+class DecimateResult:
+    """
+    What Mesh.decimate did: faces and vertices after, collapses, why it stopped ('target_faces', 'max_error' or 'constraints'), the largest error of a collapse made.
+    """
+
+    @property
+    def faces(self) -> int: ...
+
+    @property
+    def vertices(self) -> int: ...
+
+    @property
+    def collapses(self) -> int: ...
+
+    @property
+    def triangulated(self) -> bool: ...
+
+    @property
+    def stopped_by(self) -> str: ...
+
+    @property
+    def error(self) -> float: ...
+
+    @property
+    def note(self) -> str: ...
+
+    def __getitem__(self, key: str) -> object:
+        """The field `key`, as the dict results of earlier versions offered it."""
+
+    def keys(self) -> list:
+        """The field names, in order (with __getitem__, dict(result) works)."""
+
+    def __eq__(self, other: object | None) -> bool: ...
+
+    def __repr__(self) -> str: ...
+
+    __hash__: None = None
+
+class TruncateResult:
+    """What Mesh.truncate made: new faces and vertices (counts)."""
+
+    @property
+    def faces(self) -> int: ...
+
+    @property
+    def vertices(self) -> int: ...
+
+    def __getitem__(self, key: str) -> object:
+        """The field `key`, as the dict results of earlier versions offered it."""
+
+    def keys(self) -> list:
+        """The field names, in order (with __getitem__, dict(result) works)."""
+
+    def __eq__(self, other: object | None) -> bool: ...
+
+    def __repr__(self) -> str: ...
+
+    __hash__: None = None
+
+class BevelResult:
+    """
+    What Mesh.bevel made: strip faces, vertex faces, vertices (counts), and the smallest width used.
+    """
+
+    @property
+    def strip_faces(self) -> int: ...
+
+    @property
+    def vertex_faces(self) -> int: ...
+
+    @property
+    def vertices(self) -> int: ...
+
+    @property
+    def width(self) -> float: ...
+
+    def __getitem__(self, key: str) -> object:
+        """The field `key`, as the dict results of earlier versions offered it."""
+
+    def keys(self) -> list:
+        """The field names, in order (with __getitem__, dict(result) works)."""
+
+    def __eq__(self, other: object | None) -> bool: ...
+
+    def __repr__(self) -> str: ...
+
+    __hash__: None = None
+
+class ExtrudeResult:
+    """What Mesh.extrude made: top faces, side faces, vertices (counts)."""
+
+    @property
+    def top_faces(self) -> int: ...
+
+    @property
+    def side_faces(self) -> int: ...
+
+    @property
+    def vertices(self) -> int: ...
+
+    def __getitem__(self, key: str) -> object:
+        """The field `key`, as the dict results of earlier versions offered it."""
+
+    def keys(self) -> list:
+        """The field names, in order (with __getitem__, dict(result) works)."""
+
+    def __eq__(self, other: object | None) -> bool: ...
+
+    def __repr__(self) -> str: ...
+
+    __hash__: None = None
+
+class RemeshResult:
+    """What Mesh.remesh did: splits, collapses, flips, feature edges kept."""
+
+    @property
+    def splits(self) -> int: ...
+
+    @property
+    def collapses(self) -> int: ...
+
+    @property
+    def flips(self) -> int: ...
+
+    @property
+    def feature_edges(self) -> int: ...
+
+    def __getitem__(self, key: str) -> object:
+        """The field `key`, as the dict results of earlier versions offered it."""
+
+    def keys(self) -> list:
+        """The field names, in order (with __getitem__, dict(result) works)."""
+
+    def __eq__(self, other: object | None) -> bool: ...
+
+    def __repr__(self) -> str: ...
+
+    __hash__: None = None
+
+class SubdivideResult:
+    """Vertex, edge and face counts after Mesh.subdivide."""
+
+    @property
+    def vertices(self) -> int: ...
+
+    @property
+    def edges(self) -> int: ...
+
+    @property
+    def faces(self) -> int: ...
+
+    def __getitem__(self, key: str) -> object:
+        """The field `key`, as the dict results of earlier versions offered it."""
+
+    def keys(self) -> list:
+        """The field names, in order (with __getitem__, dict(result) works)."""
+
+    def __eq__(self, other: object | None) -> bool: ...
+
+    def __repr__(self) -> str: ...
+
+    __hash__: None = None
+
+class TriangulateResult:
+    """What Mesh.triangulate_faces did: faces cut, triangles added."""
+
+    @property
+    def faces_cut(self) -> int: ...
+
+    @property
+    def triangles_added(self) -> int: ...
+
+    def __getitem__(self, key: str) -> object:
+        """The field `key`, as the dict results of earlier versions offered it."""
+
+    def keys(self) -> list:
+        """The field names, in order (with __getitem__, dict(result) works)."""
+
+    def __eq__(self, other: object | None) -> bool: ...
+
+    def __repr__(self) -> str: ...
+
+    __hash__: None = None
+
 class Topology:
     """Counts of a mesh's elements and its topological invariants."""
 
@@ -155,12 +398,12 @@ class MeshCore:
         Turns the edge between two triangles to join their opposite vertices; returns the flipped halfedge. Its own inverse.
         """
 
-    def split_edge(self, halfedge: int, *, position: Sequence[float] | None = None, split_triangles: bool = True) -> tuple:
+    def split_edge(self, halfedge: int, *, position: Sequence[float] | None = None, split_triangles: bool = True) -> tuple[int, int]:
         """
         A new vertex on the edge (at its midpoint by default), the triangles beside it split; returns (vertex, halfedge from the new vertex to the old target). collapse_edge(halfedge, placement='target') undoes it.
         """
 
-    def split_face(self, face: int, *, position: Sequence[float] | None = None) -> tuple:
+    def split_face(self, face: int, *, position: Sequence[float] | None = None) -> tuple[int, int]:
         """
         Splits a triangle into three at a new vertex (its centroid by default); returns (vertex, halfedge).
         """
@@ -175,9 +418,9 @@ class MeshCore:
         Merges the halfedge's source into its target, which survives at `placement` ('midpoint', 'target', 'source' or 'given' with position); returns the surviving vertex. Deleted slots stay until collect_garbage().
         """
 
-    def triangulate_faces(self, *, delaunay: bool = False) -> dict:
+    def triangulate_faces(self, *, delaunay: bool = False) -> TriangulateResult:
         """
-        Triangulates every polygon (inner rings included, robust on concave faces); with delaunay=True each face's diagonals are its constrained Delaunay ones (largest smallest angle). Returns {'faces_cut', 'triangles_added'}.
+        Triangulates every polygon (inner rings included, robust on concave faces); with delaunay=True each face's diagonals are its constrained Delaunay ones (largest smallest angle). Returns a TriangulateResult (faces_cut, triangles_added).
         """
 
     def fill_hole(self, boundary_halfedge: int, *, max_dynamic_programming_edges: int = 200, refine: bool = False, fair: str = 'none') -> list[int]:
@@ -185,20 +428,21 @@ class MeshCore:
         Closes the boundary loop of a boundary halfedge with triangles (minimal area, maximal dihedral, Liepa 2003); with refine=True the patch is refined to the edge length around the hole, and fair='membrane' or 'thin-plate' (implies refine) smooths it. Returns the new faces.
         """
 
-    def fill_holes(self, max_edges: int = 1000, *, max_dynamic_programming_edges: int = 200, refine: bool = False, fair: str = 'none') -> dict:
+    def fill_holes(self, max_edges: int = 1000, *, max_dynamic_programming_edges: int = 200, refine: bool = False, fair: str = 'none') -> FillHolesResult:
         """
-        Fills every hole of at most max_edges boundary edges (the CLI's --max-edges and default) (refine and fair as for fill_hole); returns {'filled', 'skipped', 'faces_added', 'vertices_added', 'unfaired', 'open'}, 'open' listing each hole left open as {'vertex', 'edges', 'reason'}. Ctrl-C stops it with the mesh unchanged.
+        Fills every hole of at most max_edges boundary edges (the CLI's --max-edges and default) (refine and fair as for fill_hole); returns a FillHolesResult (filled, skipped, faces_added, vertices_added, unfaired, open), 'open' listing each hole left open as an OpenHole (vertex, edges, reason). Ctrl-C stops it with the mesh unchanged.
         """
 
-    def subdivide(self, *, scheme: str = 'loop', levels: int = 1) -> dict:
+    def subdivide(self, *, scheme: str = 'loop', levels: int = 1) -> SubdivideResult:
         """
         Subdivides `levels` times with `scheme`: 'loop' or 'sqrt3' (triangle meshes) or 'catmull-clark' (any
-        polygon mesh), boundaries included; returns the counts after the last level. 'sqrt3' refines the
+        polygon mesh), boundaries included; returns the counts after the last level
+        (a SubdivideResult). 'sqrt3' refines the
         boundary on every second level of a call, so give it an even `levels` for a smooth boundary.
 
         >>> m = hmira.Mesh([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]], [[0, 1, 2, 3]])
         >>> m.subdivide(scheme='catmull-clark')
-        {'vertices': 9, 'edges': 12, 'faces': 4}
+        SubdivideResult(vertices=9, edges=12, faces=4)
         """
 
     def laplacian_smooth(self, *, iterations: int = 1, lambda_: float = 0.5, weights: str = 'uniform', fix_boundary: bool = True, fixed_vertices: Sequence[int] | None = None, refresh_weights: bool = True, threads: int = 0) -> int:
@@ -212,37 +456,37 @@ class MeshCore:
         refresh_weights and threads as in laplacian_smooth.
         """
 
-    def decimate(self, *, target_faces: int | None = None, target_ratio: float | None = None, max_error: float | None = None, fix_boundary: bool = True, max_normal_angle: float = 90.0, max_aspect_ratio: float = float('inf'), fixed_vertices: Sequence[int] | None = None, min_angle: float = 1.0, area_weighted: bool = True, feature_angle: float | None = None, feature_edges: Sequence[int] | None = None, keep_features: bool = False) -> dict:
+    def decimate(self, *, target_faces: int | None = None, target_ratio: float | None = None, max_error: float | None = None, fix_boundary: bool = True, max_normal_angle: float = 90.0, max_aspect_ratio: float = float('inf'), fixed_vertices: Sequence[int] | None = None, min_angle: float = 1.0, area_weighted: bool = True, feature_angle: float | None = None, feature_edges: Sequence[int] | None = None, keep_features: bool = False) -> DecimateResult:
         """
         Quadric error decimation (Garland-Heckbert) until the first target reached: target_faces, target_ratio
         (of the faces) or max_error (a distance). Polygons are triangulated first. Boundary vertices stay
         unless fix_boundary=False; fixed_vertices never move (the names smoothing uses; hmira.Mesh.decimate
         still takes keep_boundary and locked_vertices, deprecated). feature_angle (degrees) and feature_edges
         add planes through creases; keep_features keeps feature lines on their input vertices.
-        Returns {'faces', 'vertices', 'collapses',
-        'triangulated', 'stopped_by', 'error', 'note'}; vertices are renumbered densely afterwards.
+        Returns a DecimateResult (faces, vertices, collapses,
+        triangulated, stopped_by, error, note); vertices are renumbered densely afterwards.
 
         >>> m = hmira.Mesh([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [0.5, 0.5, 0]],
         ...                [[0, 1, 4], [1, 2, 4], [2, 3, 4], [3, 0, 4]])
-        >>> m.decimate(target_faces=2)['faces']
+        >>> m.decimate(target_faces=2).faces
         2
         """
 
-    def remesh(self, *, target_edge_length: float | None = None, iterations: int = 5, feature_angle: float | None = None, feature_edges: Sequence[int] | None = None) -> dict:
+    def remesh(self, *, target_edge_length: float | None = None, iterations: int = 5, feature_angle: float | None = None, feature_edges: Sequence[int] | None = None) -> RemeshResult:
         """
         Isotropic remeshing of a triangle mesh towards target_edge_length (default: the mean edge length):
         `iterations` rounds of split, collapse, flip and tangential relaxation with projection onto the input.
         The boundary is kept, and so are edges sharper than feature_angle degrees and the edges listed in
-        feature_edges (edge indices). Returns {'splits', 'collapses', 'flips', 'feature_edges'}.
+        feature_edges (edge indices). Returns a RemeshResult (splits, collapses, flips, feature_edges).
 
         >>> m = hmira.Mesh([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]], [[0, 1, 2], [0, 2, 3]])
-        >>> m.remesh(target_edge_length=0.25)['feature_edges']
+        >>> m.remesh(target_edge_length=0.25).feature_edges
         4
         """
 
     def write(self, path: str, *, ascii: bool = False, big_endian: bool = False, float32: bool = False, attributes: bool = True) -> None:
         """
-        Write the mesh to a file (OBJ, OFF, PLY or STL by extension), atomically.
+        Write the mesh to a file (OBJ, OFF, PLY, STL, glTF .glb or .gltf by extension), atomically.
 
         Parameters
         ----------
@@ -300,22 +544,22 @@ class MeshCore:
     def make_vertex(self, position: Sequence[float]) -> int:
         """makeV: a new isolated vertex; returns its index."""
 
-    def make_edge_vertex(self, corner: int, position: Sequence[float]) -> tuple:
+    def make_edge_vertex(self, corner: int, position: Sequence[float]) -> tuple[int, int]:
         """
         makeEV: a new vertex joined to target(corner); returns (vertex, halfedge from the old vertex to the new).
         """
 
-    def kill_edge_vertex(self, halfedge: int) -> tuple:
+    def kill_edge_vertex(self, halfedge: int) -> tuple[int, int, tuple[float, float, float]]:
         """
         killEV: removes the edge and its degree-1 target; returns (vertex, corner, position) for the redo.
         """
 
-    def make_edge_face(self, h0: int, h1: int) -> tuple:
+    def make_edge_face(self, h0: int, h1: int) -> tuple[int, int]:
         """
         makeEF: splits a face by an edge from target(h0) to target(h1); returns (halfedge, face).
         """
 
-    def kill_edge_face(self, halfedge: int) -> tuple:
+    def kill_edge_face(self, halfedge: int) -> tuple[int, int, int]:
         """
         killEF: removes the edge, merging its two faces; returns (face, h0, h1) for make_edge_face.
         """

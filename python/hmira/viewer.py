@@ -8,6 +8,7 @@ ran before ``pip install .``; without it these functions raise and say so.
 from __future__ import annotations
 
 import html
+import json
 import os
 import shutil
 import subprocess
@@ -313,11 +314,51 @@ def _cli_screenshot(chromium: str, url: str, work: str, profile: str, width: int
         return f.read()
 
 
+# Notebooks: the viewer script (three.js and the viewer, about 0.6 MB) goes to the notebook page once
+# per kernel session, as a global of the page (window.hmiraViewerBundle); each Mesh repr after the
+# first carries only its mesh and a loader that runs that script inside its frame. The frame is
+# therefore sandboxed with allow-same-origin (it reads its parent's global), unlike view()'s page.
+_notebook = {"sent": False}
+
+# Runs the bundle the notebook page holds; waits a little for the defining cell's script (it may
+# run after the frame loads), then says what to do when the page has no bundle (a notebook reopened
+# with outputs from a kernel that had already sent it: display hmira.viewer.notebook_script()).
+_LOADER = ("<script>(function(){var tries=0;function go(){var p=null;try{p=window.parent.hmiraViewerBundle;}"
+           "catch(e){}if(p){var s=document.createElement('script');s.text=p;document.body.appendChild(s);return;}"
+           "if(++tries<50){setTimeout(go,100);return;}document.body.insertAdjacentHTML('beforeend',"
+           "'<p style=\"font:13px sans-serif\">hmira: the viewer script is not in this notebook page: display "
+           "hmira.viewer.notebook_script() in a cell, or run the first cell that shows a mesh again.</p>');}go();})();"
+           "</script>")
+
+
+def _split_page(page: str) -> Tuple[str, str, str]:
+    """(before, bundle, after): the page around its last, inline viewer script."""
+    start = page.rindex("<script>")
+    end = page.rindex("</script>")
+    return page[:start], page[start + len("<script>"):end], page[end + len("</script>"):]
+
+
+def notebook_script() -> str:
+    """HTML that defines the viewer script in the notebook page (what the first Mesh repr of a
+    session carries); display it by hand after reopening a saved notebook."""
+    _require_bundle()
+    bundle = _split_page(page_html(([[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]], [[0, 1, 2]])))[1]
+    return "<script>window.hmiraViewerBundle=" + json.dumps(bundle).replace("</", "<\\/") + ";</script>"
+
+
 def repr_html(mesh: Any) -> str:
-    """Mesh._repr_html_: the viewer inline; without the bundle, the text repr and how to get it."""
+    """Mesh._repr_html_: the viewer inline, the viewer script sent to the notebook once per
+    session; without the bundle, the text repr and how to get it."""
     if not _core._viewer_bundle_available():
         return (f"<pre>{html.escape(repr(mesh))}</pre><p><small>(no inline viewer: this hmira was built without the "
                 "viewer bundle; run viewer/build.sh, then pip install .)</small></p>")
     if mesh.vertex_count == 0:
         return f"<pre>{html.escape(repr(mesh))}</pre>"
-    return view(mesh)._repr_html_()
+    before, bundle, after = _split_page(view(mesh).html)
+    page = before + _LOADER + after
+    frame = (f'<iframe srcdoc="{html.escape(page, quote=True)}" style="width:100%;height:480px;border:0" '
+             'sandbox="allow-scripts allow-same-origin" title="hmira view"></iframe>')
+    if _notebook["sent"]:
+        return frame
+    _notebook["sent"] = True
+    return "<script>window.hmiraViewerBundle=" + json.dumps(bundle).replace("</", "<\\/") + ";</script>" + frame

@@ -165,8 +165,9 @@ hmira::result<hmira::indexed_triangles<double>> extract(const mc_volume& volume,
     return run_mc(g, options, iso_given);
 }
 
-nb::tuple marching_cubes(const mc_volume& volume, std::optional<double> iso, const std::vector<double>& spacing,
-                         const std::vector<double>& origin, const std::string& inside, unsigned threads) {
+std::pair<nb::ndarray<nb::numpy, double>, nb::ndarray<nb::numpy, std::int32_t>> marching_cubes(
+    const mc_volume& volume, std::optional<double> iso, const std::vector<double>& spacing,
+    const std::vector<double>& origin, const std::string& inside, unsigned threads) {
     const auto sp = triple(spacing, "spacing"), org = triple(origin, "origin");
     interrupt_watch watch;
     hmira::marching_cubes_options options{.iso = iso.value_or(0.0),
@@ -224,7 +225,7 @@ nb::tuple marching_cubes(const mc_volume& volume, std::optional<double> iso, con
                   sizeof(std::array<std::uint32_t, 3>) == 3 * sizeof(std::int32_t));
     auto vertices = adopt<double>(std::move(tri.positions), {nv, 3});
     auto faces = adopt<std::int32_t>(std::move(tri.triangles), {nt, 3});
-    return nb::make_tuple(vertices, faces);
+    return {vertices, faces};
 }
 
 /// (V, F) numpy arrays seen as a mesh in place, without building one: what voxelize reads

@@ -2,6 +2,7 @@
 // Mesh.decimate: quadric error decimation. Ctrl-C cancels through the progress hook, and
 // decimate then restores the mesh.
 #include "mesh_binding.hpp"
+#include "results.hpp"
 
 #include <hmira/algorithms/decimation/decimate.hpp>
 
@@ -9,7 +10,7 @@ namespace hmira_py {
 
 namespace {
 
-nb::dict decimate(py_mesh& s, std::optional<std::size_t> target_faces, std::optional<double> target_ratio,
+decimate_report decimate(py_mesh& s, std::optional<std::size_t> target_faces, std::optional<double> target_ratio,
                   std::optional<double> max_error, bool fix_boundary, double max_normal_angle, double max_aspect_ratio,
                   std::optional<std::vector<long long>> fixed_vertices, double min_angle, bool area_weighted,
                   std::optional<double> feature_angle, std::optional<std::vector<std::size_t>> feature_edges,
@@ -30,17 +31,15 @@ nb::dict decimate(py_mesh& s, std::optional<std::size_t> target_faces, std::opti
         o.progress = std::move(progress);
         return hmira::decimate(m, o);
     });
-    nb::dict d;
-    d["faces"] = r.faces;
-    d["vertices"] = r.vertices;
-    d["collapses"] = r.collapses;
-    d["triangulated"] = r.triangulated;
-    d["stopped_by"] = r.stopped_by == hmira::decimate_stop::target_faces ? "target_faces"
-                      : r.stopped_by == hmira::decimate_stop::max_error  ? "max_error"
-                                                                         : "constraints";
-    d["error"] = r.error;
-    d["note"] = r.note;
-    return d;
+    return {.faces = r.faces,
+            .vertices = r.vertices,
+            .collapses = r.collapses,
+            .triangulated = r.triangulated,
+            .stopped_by = r.stopped_by == hmira::decimate_stop::target_faces ? "target_faces"
+                          : r.stopped_by == hmira::decimate_stop::max_error  ? "max_error"
+                                                                             : "constraints",
+            .error = r.error,
+            .note = r.note};
 }
 
 }  // namespace
@@ -59,11 +58,11 @@ void bind_mesh_decimation(nb::class_<py_mesh>& c) {
           "unless fix_boundary=False; fixed_vertices never move (the names smoothing uses; hmira.Mesh.decimate\n"
           "still takes keep_boundary and locked_vertices, deprecated). feature_angle (degrees) and feature_edges\n"
           "add planes through creases; keep_features keeps feature lines on their input vertices.\n"
-          "Returns {'faces', 'vertices', 'collapses',\n"
-          "'triangulated', 'stopped_by', 'error', 'note'}; vertices are renumbered densely afterwards.\n\n"
+          "Returns a DecimateResult (faces, vertices, collapses,\n"
+          "triangulated, stopped_by, error, note); vertices are renumbered densely afterwards.\n\n"
           ">>> m = hmira.Mesh([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [0.5, 0.5, 0]],\n"
           "...                [[0, 1, 4], [1, 2, 4], [2, 3, 4], [3, 0, 4]])\n"
-          ">>> m.decimate(target_faces=2)['faces']\n"
+          ">>> m.decimate(target_faces=2).faces\n"
           "2");
 }
 

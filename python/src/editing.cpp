@@ -2,6 +2,7 @@
 // Mesh._truncate, _bevel and _extrude (hmira.Mesh wraps them): the editing operations, each
 // atomic (on error or Ctrl-C the mesh is unchanged), the mesh renumbered densely afterwards.
 #include "mesh_binding.hpp"
+#include "results.hpp"
 
 #include <hmira/algorithms/editing/editing.hpp>
 #include <hmira/algorithms/geometry/sharp_edges.hpp>
@@ -10,7 +11,7 @@ namespace hmira_py {
 
 namespace {
 
-nb::dict truncate(py_mesh& self, std::optional<std::vector<long long>> vertices, bool all,
+truncate_report truncate(py_mesh& self, std::optional<std::vector<long long>> vertices, bool all,
                   std::optional<double> fraction, std::optional<double> distance) {
     auto& m0 = self.get();
     if (all == vertices.has_value()) value_error("truncate: give vertices or all=True (one of them)");
@@ -26,13 +27,10 @@ nb::dict truncate(py_mesh& self, std::optional<std::vector<long long>> vertices,
                                         .progress = std::move(progress)};
         return hmira::truncate(m, vs, o);
     });
-    nb::dict d;
-    d["faces"] = r.faces.size();
-    d["vertices"] = r.vertices.size();
-    return d;
+    return {.faces = r.faces.size(), .vertices = r.vertices.size()};
 }
 
-nb::dict bevel(py_mesh& self, std::optional<std::vector<std::pair<long long, long long>>> edges, bool all,
+bevel_report bevel(py_mesh& self, std::optional<std::vector<std::pair<long long, long long>>> edges, bool all,
                std::optional<double> angle, double width, int segments, bool no_clamp,
                std::optional<std::vector<long long>> vertices, bool vertices_all) {
     auto& m0 = self.get();
@@ -72,15 +70,13 @@ nb::dict bevel(py_mesh& self, std::optional<std::vector<std::pair<long long, lon
                                      .progress = std::move(progress)};
         return vertex_mode ? hmira::bevel_vertices(m, vs, o) : hmira::bevel(m, es, o);
     });
-    nb::dict d;
-    d["strip_faces"] = b.strip_faces.size();
-    d["vertex_faces"] = b.vertex_faces.size();
-    d["vertices"] = b.vertices.size();
-    d["width"] = b.width;
-    return d;
+    return {.strip_faces = b.strip_faces.size(),
+            .vertex_faces = b.vertex_faces.size(),
+            .vertices = b.vertices.size(),
+            .width = b.width};
 }
 
-nb::dict extrude(py_mesh& self, std::optional<std::vector<long long>> faces, bool all, double distance,
+extrude_report extrude(py_mesh& self, std::optional<std::vector<long long>> faces, bool all, double distance,
                  std::optional<std::vector<double>> direction, const std::string& mode) {
     auto& m0 = self.get();
     if (all == faces.has_value()) value_error("extrude: give faces or all=True (one of them)");
@@ -97,11 +93,7 @@ nb::dict extrude(py_mesh& self, std::optional<std::vector<long long>> faces, boo
             .distance = distance, .direction = towards, .mode = chosen, .progress = std::move(progress)};
         return hmira::extrude(m, fs, o);
     });
-    nb::dict d;
-    d["top_faces"] = r.top_faces.size();
-    d["side_faces"] = r.side_faces.size();
-    d["vertices"] = r.vertices.size();
-    return d;
+    return {.top_faces = r.top_faces.size(), .side_faces = r.side_faces.size(), .vertices = r.vertices.size()};
 }
 
 }  // namespace

@@ -4,6 +4,11 @@
 // invalid rather than naming another element.
 #include "mesh_binding.hpp"
 
+#include <nanobind/stl/tuple.h>
+
+#include <tuple>
+#include <utility>
+
 #include <hmira/algorithms/euler/euler.hpp>
 
 namespace hmira_py {
@@ -29,7 +34,7 @@ void bind_mesh_euler(nb::class_<py_mesh>& c) {
                 const auto q = point_arg(p, "make_edge_vertex");
                 const auto h = halfedge_arg(s.get(), corner, "make_edge_vertex");
                 auto r = take(hmira::make_edge_vertex(s.for_topology_change(), h, q));
-                return nb::make_tuple(idx(r.vertex), idx(r.halfedge));
+                return std::pair{idx(r.vertex), idx(r.halfedge)};
             },
             nb::arg("corner"), nb::arg("position"),
             "makeEV: a new vertex joined to target(corner); returns (vertex, halfedge from the old vertex to the new).")
@@ -38,8 +43,7 @@ void bind_mesh_euler(nb::class_<py_mesh>& c) {
             [](py_mesh& s, long long h) {
                 const auto hh = halfedge_arg(s.get(), h, "kill_edge_vertex");
                 auto r = take(hmira::kill_edge_vertex(s.for_topology_change(), hh));
-                return nb::make_tuple(idx(r.vertex), idx(r.corner),
-                                      nb::make_tuple(r.position.x, r.position.y, r.position.z));
+                return std::tuple{idx(r.vertex), idx(r.corner), std::tuple{r.position.x, r.position.y, r.position.z}};
             },
             nb::arg("halfedge"),
             "killEV: removes the edge and its degree-1 target; returns (vertex, corner, position) for the redo.")
@@ -49,7 +53,7 @@ void bind_mesh_euler(nb::class_<py_mesh>& c) {
                 const auto a = halfedge_arg(s.get(), h0, "make_edge_face"),
                            b = halfedge_arg(s.get(), h1, "make_edge_face");
                 auto r = take(hmira::make_edge_face(s.for_topology_change(), a, b));
-                return nb::make_tuple(idx(r.halfedge), idx(r.face));
+                return std::pair{idx(r.halfedge), idx(r.face)};
             },
             nb::arg("h0"), nb::arg("h1"),
             "makeEF: splits a face by an edge from target(h0) to target(h1); returns (halfedge, face).")
@@ -58,7 +62,7 @@ void bind_mesh_euler(nb::class_<py_mesh>& c) {
             [](py_mesh& s, long long h) {
                 const auto hh = halfedge_arg(s.get(), h, "kill_edge_face");
                 auto r = take(hmira::kill_edge_face(s.for_topology_change(), hh));
-                return nb::make_tuple(idx(r.face), idx(r.h0), idx(r.h1));
+                return std::tuple{idx(r.face), idx(r.h0), idx(r.h1)};
             },
             nb::arg("halfedge"),
             "killEF: removes the edge, merging its two faces; returns (face, h0, h1) for make_edge_face.");

@@ -2,6 +2,7 @@
 // Mesh.fill_hole and Mesh.fill_holes: boundary loops closed with triangles, optionally refined
 // and faired. Both roll a cancelled (Ctrl-C) or failed fill back themselves.
 #include "mesh_binding.hpp"
+#include "results.hpp"
 
 #include <hmira/algorithms/holes/fill_hole.hpp>
 
@@ -18,21 +19,19 @@ hmira::fill_hole_options fill_options(std::size_t max_dynamic_programming_edges,
     return o;
 }
 
-nb::list open_holes(const hmira::fill_holes_result& r, std::size_t max_edges) {
-    nb::list open;
-    for (const auto& h : r.open) {
-        nb::dict e;
-        e["vertex"] = h.vertex;
-        e["edges"] = h.edges;
-        e["reason"] = h.reason == hmira::open_hole_reason::too_long
-                          ? "a loop of " + std::to_string(h.edges) + " edges > max_edges " + std::to_string(max_edges)
-                          : h.message;
-        open.append(e);
-    }
+std::vector<open_hole_report> open_holes(const hmira::fill_holes_result& r, std::size_t max_edges) {
+    std::vector<open_hole_report> open;
+    for (const auto& h : r.open)
+        open.push_back({.vertex = h.vertex,
+                        .edges = h.edges,
+                        .reason = h.reason == hmira::open_hole_reason::too_long
+                                      ? "a loop of " + std::to_string(h.edges) + " edges > max_edges " +
+                                            std::to_string(max_edges)
+                                      : h.message});
     return open;
 }
 
-nb::dict fill_holes(py_mesh& s, std::size_t max_edges, std::size_t max_dynamic_programming_edges, bool refine,
+fill_holes_report fill_holes(py_mesh& s, std::size_t max_edges, std::size_t max_dynamic_programming_edges, bool refine,
                     const std::string& fair) {
     const auto o = fill_options(max_dynamic_programming_edges, refine, fair, "fill_holes");
     if (max_edges < 3) value_error("fill_holes: max_edges must be at least 3, got " + std::to_string(max_edges));
@@ -41,14 +40,12 @@ nb::dict fill_holes(py_mesh& s, std::size_t max_edges, std::size_t max_dynamic_p
         with_progress.progress = std::move(progress);
         return hmira::fill_holes(m, max_edges, with_progress);
     });
-    nb::dict d;
-    d["filled"] = r.filled;
-    d["skipped"] = r.skipped;
-    d["faces_added"] = r.faces_added;
-    d["vertices_added"] = r.vertices_added;
-    d["unfaired"] = r.unfaired;
-    d["open"] = open_holes(r, max_edges);
-    return d;
+    return {.filled = r.filled,
+            .skipped = r.skipped,
+            .faces_added = r.faces_added,
+            .vertices_added = r.vertices_added,
+            .unfaired = r.unfaired,
+            .open = open_holes(r, max_edges)};
 }
 
 }  // namespace
@@ -83,10 +80,8 @@ void bind_mesh_holes(nb::class_<py_mesh>& c) {
              nb::arg("refine") = defaults.refine, nb::arg("fair") = name_of(defaults.fair),
              "Fills every hole of at most max_edges boundary edges (the CLI's --max-edges and default) (refine and "
              "fair as for fill_hole); returns "
-             "{'filled', 'skipped', "
-             "'faces_added', 'vertices_added', 'unfaired', 'open'}, 'open' listing each hole left open as {'vertex', "
-             "'edges', "
-             "'reason'}. Ctrl-C stops it with the mesh unchanged.");
+             "a FillHolesResult (filled, skipped, faces_added, vertices_added, unfaired, open), 'open' listing each "
+             "hole left open as an OpenHole (vertex, edges, reason). Ctrl-C stops it with the mesh unchanged.");
 }
 
 }  // namespace hmira_py

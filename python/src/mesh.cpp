@@ -58,6 +58,8 @@ bool assign_rows(halfedge_mesh& fresh, const vertex_array& vertices,
                                       std::span<const std::uint32_t>(corners)));
 }
 
+}  // namespace
+
 /// assign_rows when `faces` is an int32 or int64 (m, k) array (not a list or a tuple).
 bool assign_arrays(halfedge_mesh& fresh, const vertex_array& vertices, nb::handle faces) {
     if (nb::isinstance<nb::list>(faces) || nb::isinstance<nb::tuple>(faces)) return false;
@@ -67,6 +69,8 @@ bool assign_arrays(halfedge_mesh& fresh, const vertex_array& vertices, nb::handl
     if (nb::try_cast(faces, wide, false)) return assign_rows(fresh, vertices, wide);
     return false;
 }
+
+namespace {
 
 void set_polygons(py_mesh& self, const vertex_array& vertices, nb::handle faces) {
     halfedge_mesh fresh;
@@ -250,7 +254,7 @@ void bind_contents(nb::class_<py_mesh>& core) {
             "_topology_version", [](const py_mesh& s) { return s.version; }, "Bumped by every topology change.")
         .def("write", &write, nb::arg("path"), nb::kw_only(), nb::arg("ascii") = false, nb::arg("big_endian") = false,
              nb::arg("float32") = false, nb::arg("attributes") = hmira::io::write_options{}.write_attributes,
-             R"doc(Write the mesh to a file (OBJ, OFF, PLY or STL by extension), atomically.
+             R"doc(Write the mesh to a file (OBJ, OFF, PLY, STL, glTF .glb or .gltf by extension), atomically.
 
 Parameters
 ----------

@@ -24,6 +24,9 @@
 
 namespace hmira_py {
 
+/// Builds `fresh` in one pass from an (m, k) int32/int64 face array (mesh.cpp); false for anything else.
+bool assign_arrays(halfedge_mesh& fresh, const vertex_array& vertices, nb::handle faces);
+
 namespace {
 
 using color4 = std::array<std::uint8_t, 4>;  // the readers' "v:color" property (RGBA)
@@ -217,6 +220,14 @@ std::string read_reported(py_mesh& self, const std::string& path, bool weld_stl,
 /// it, through the readers' repair. Returns the repair's one-line summary ("" when nothing was repaired).
 std::string set_polygons_checked(py_mesh& self, const vertex_array& vertices, nb::handle faces, bool repair,
                                  const char* who) {
+    {
+        // A clean (m, k) array builds in one pass, in place: nothing to refuse or repair.
+        halfedge_mesh fresh;
+        if (assign_arrays(fresh, vertices, faces)) {
+            self.replace(std::move(fresh));
+            return {};
+        }
+    }
     auto soup = to_soup(vertices, faces, who);
     halfedge_mesh fresh;
     std::string summary;

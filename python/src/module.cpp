@@ -7,6 +7,7 @@ namespace hmira_py {
 
 void bind_volume_io(nb::module_& m);  // .inr / .raw volumes for hmira.read_volume (volume_io.cpp)
 void bind_decimate_blocks(nb::module_& m);  // one block of hmira.dask.decimate (decimate_blocks.cpp)
+void bind_results(nb::module_& m);    // the typed results of the Mesh operations (results.cpp)
 
 void register_errors(nb::module_&) {
     nb::register_exception_translator([](const std::exception_ptr& p, void*) {
@@ -29,6 +30,7 @@ NB_MODULE(_core, m) {
         "bench/python).");
     hmira_py::bind_conversion(m);
     hmira_py::bind_delaunay(m);
+    hmira_py::bind_results(m);
     hmira_py::bind_io(m);
     hmira_py::bind_mesh(m);
     hmira_py::bind_spatial(m);

@@ -2,6 +2,7 @@
 // Mesh.remesh: isotropic remeshing, on a copy (the library works on one) that replaces the
 // mesh on success; Ctrl-C cancels through the progress hook.
 #include "mesh_binding.hpp"
+#include "results.hpp"
 
 #include <hmira/algorithms/remeshing/isotropic_remeshing.hpp>
 
@@ -9,7 +10,7 @@ namespace hmira_py {
 
 namespace {
 
-nb::dict remesh(py_mesh& s, std::optional<double> target_edge_length, std::size_t iterations,
+remesh_report remesh(py_mesh& s, std::optional<double> target_edge_length, std::size_t iterations,
                 std::optional<double> feature_angle, std::optional<std::vector<long long>> feature_edges) {
     std::vector<std::size_t> features;
     if (feature_edges)
@@ -30,12 +31,7 @@ nb::dict remesh(py_mesh& s, std::optional<double> target_edge_length, std::size_
                                               .feature_edges = features,
                                               .progress = std::move(progress)});
     });
-    nb::dict d;
-    d["splits"] = r.splits;
-    d["collapses"] = r.collapses;
-    d["flips"] = r.flips;
-    d["feature_edges"] = r.feature_edges;
-    return d;
+    return {.splits = r.splits, .collapses = r.collapses, .flips = r.flips, .feature_edges = r.feature_edges};
 }
 
 }  // namespace
@@ -47,9 +43,9 @@ void bind_mesh_remeshing(nb::class_<py_mesh>& c) {
           "Isotropic remeshing of a triangle mesh towards target_edge_length (default: the mean edge length):\n"
           "`iterations` rounds of split, collapse, flip and tangential relaxation with projection onto the input.\n"
           "The boundary is kept, and so are edges sharper than feature_angle degrees and the edges listed in\n"
-          "feature_edges (edge indices). Returns {'splits', 'collapses', 'flips', 'feature_edges'}.\n\n"
+          "feature_edges (edge indices). Returns a RemeshResult (splits, collapses, flips, feature_edges).\n\n"
           ">>> m = hmira.Mesh([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]], [[0, 1, 2], [0, 2, 3]])\n"
-          ">>> m.remesh(target_edge_length=0.25)['feature_edges']\n"
+          ">>> m.remesh(target_edge_length=0.25).feature_edges\n"
           "4");
 }
 

@@ -52,7 +52,7 @@ void bind_flip_and_split(nb::class_<py_mesh>& c) {
                 const auto r = change_without_gil(s, true, [&](halfedge_mesh& m, const hmira::progress_function&) {
                     return hmira::split_edge(m, hh, o);
                 });
-                return nb::make_tuple(idx(r.vertex), idx(r.halfedge));
+                return std::pair{idx(r.vertex), idx(r.halfedge)};
             },
             nb::arg("halfedge"), nb::kw_only(), nb::arg("position") = nb::none(),
             nb::arg("split_triangles") = hmira::split_edge_options{}.split_triangles,
@@ -67,7 +67,7 @@ void bind_flip_and_split(nb::class_<py_mesh>& c) {
                 const auto r = change_without_gil(s, true, [&](halfedge_mesh& m, const hmira::progress_function&) {
                     return hmira::split_face(m, ff, o);
                 });
-                return nb::make_tuple(idx(r.vertex), idx(r.halfedge));
+                return std::pair{idx(r.vertex), idx(r.halfedge)};
             },
             nb::arg("face"), nb::kw_only(), nb::arg("position") = nb::none(),
             "Splits a triangle into three at a new vertex (its centroid by default); returns (vertex, halfedge).");

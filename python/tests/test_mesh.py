@@ -53,8 +53,9 @@ def test_construction_from_arrays_lists_and_mesh_likes():
 def test_bad_construction_raises_value_error_naming_the_face():
     with pytest.raises(ValueError, match="out of range"):
         hmira.Mesh(TETRA_V, [[0, 1, 7]])
-    with pytest.raises(ValueError, match="face 1"):
-        hmira.Mesh(TETRA_V, [[0, 1, 2], [0, 1, 2]])  # same edge twice in the same direction
+    # The same edge twice in the same direction: refused naming the edge (repair=True would flip a face).
+    with pytest.raises(ValueError, match="edge 0->1 is run in the same direction by two faces"):
+        hmira.Mesh(TETRA_V, [[0, 1, 2], [0, 1, 2]])
     with pytest.raises(ValueError, match="non-finite"):
         hmira.Mesh([[0, 0, np.nan], [1, 0, 0], [0, 1, 0]], [[0, 1, 2]])
     with pytest.raises(ValueError):

@@ -48,6 +48,7 @@ TEST(fuzz_corpus, every_obj_input_is_handled) { replay("obj", hmira::io::file_fo
 TEST(fuzz_corpus, every_off_input_is_handled) { replay("off", hmira::io::file_format::off); }
 TEST(fuzz_corpus, every_ply_input_is_handled) { replay("ply", hmira::io::file_format::ply); }
 TEST(fuzz_corpus, every_stl_input_is_handled) { replay("stl", hmira::io::file_format::stl); }
+TEST(fuzz_corpus, every_gltf_input_is_handled) { replay("gltf", hmira::io::file_format::glb); }
 
 #if defined(HMIRA_FUZZ_VOLUMES)
 TEST(fuzz_corpus, every_inr_input_is_handled) {

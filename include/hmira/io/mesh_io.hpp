@@ -1,6 +1,6 @@
 // hmira/io/mesh_io.hpp
-// One entry point for every format: read_mesh / write_mesh pick OBJ, OFF, PLY or STL from the
-// file's extension (case-insensitive), and read_soup gives a file's content as indexed arrays
+// One entry point for every format: read_mesh / write_mesh pick OBJ, OFF, PLY, STL or glTF
+// (.glb, .gltf) from the file's extension (case-insensitive), and read_soup gives a file's content as indexed arrays
 // without building a mesh.
 #pragma once
 
@@ -14,6 +14,7 @@
 #include "../core/result.hpp"
 #include "detail/files.hpp"
 #include "detail/polygon_soup.hpp"
+#include "gltf.hpp"
 #include "io_options.hpp"
 #include "obj.hpp"
 #include "off.hpp"
@@ -27,7 +28,9 @@ enum class file_format {
     obj,  ///< Wavefront OBJ
     off,  ///< Object File Format
     ply,  ///< Stanford PLY
-    stl,  ///< STereoLithography
+    stl,   ///< STereoLithography
+    glb,   ///< glTF 2.0, binary container
+    gltf,  ///< glTF 2.0, JSON (buffers inline or beside the file)
 };
 
 /// The format's usual extension without the dot.
@@ -37,6 +40,8 @@ inline const char* to_string(file_format f) {
         case file_format::off: return "off";
         case file_format::ply: return "ply";
         case file_format::stl: return "stl";
+        case file_format::glb: return "glb";
+        case file_format::gltf: return "gltf";
     }
     return "?";
 }
@@ -50,6 +55,8 @@ inline std::optional<file_format> format_from_extension(const std::filesystem::p
     if (ext == ".off") return file_format::off;
     if (ext == ".ply") return file_format::ply;
     if (ext == ".stl") return file_format::stl;
+    if (ext == ".glb") return file_format::glb;
+    if (ext == ".gltf") return file_format::gltf;
     return std::nullopt;
 }
 
@@ -60,7 +67,7 @@ inline hmira::error unknown_extension(const std::filesystem::path& path) {
     if (std::filesystem::is_directory(path, ec))
         return fail(errc::io_error, path.string() + ": is a directory, not a mesh file");
     return fail(errc::unknown_format, path.string() + ": unknown mesh format '" + path.extension().string() +
-                                          "' (use .obj, .off, .ply or .stl)");
+                                          "' (use .obj, .off, .ply, .stl, .glb or .gltf)");
 }
 }  // namespace detail
 
@@ -76,6 +83,8 @@ inline result<polygon_soup> parse_any(std::string_view data, file_format format,
             if (!s) return s.error();
             return std::move(s->soup);
         }
+        case file_format::glb:
+        case file_format::gltf: return parse_gltf(data, name, options);
     }
     return fail(errc::unknown_format, name + ": unknown format");
 }
@@ -129,6 +138,8 @@ result<read_report> read_mesh(M& mesh, const std::filesystem::path& path, const 
         case file_format::off: return read_off<M, T>(mesh, path, options);
         case file_format::ply: return read_ply<M, T>(mesh, path, options);
         case file_format::stl: return read_stl<M, T>(mesh, path, options);
+        case file_format::glb:
+        case file_format::gltf: return read_gltf<M, T>(mesh, path, options);
     }
     return detail::unknown_extension(path);
 }
@@ -146,6 +157,8 @@ result<void> write_mesh(const M& mesh, const std::filesystem::path& path, const 
         case file_format::off: return write_off<M, T>(mesh, path, options);
         case file_format::ply: return write_ply<M, T>(mesh, path, options);
         case file_format::stl: return write_stl<M, T>(mesh, path, options);
+        case file_format::glb:
+        case file_format::gltf: return write_gltf<M, T>(mesh, path, options);
     }
     return detail::unknown_extension(path);
 }
