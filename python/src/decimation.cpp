@@ -11,10 +11,10 @@ namespace hmira_py {
 namespace {
 
 decimate_report decimate(py_mesh& s, std::optional<std::size_t> target_faces, std::optional<double> target_ratio,
-                  std::optional<double> max_error, bool fix_boundary, double max_normal_angle, double max_aspect_ratio,
-                  std::optional<std::vector<long long>> fixed_vertices, double min_angle, bool area_weighted,
-                  std::optional<double> feature_angle, std::optional<std::vector<std::size_t>> feature_edges,
-                  bool keep_features) {
+                         std::optional<double> max_error, bool fix_boundary, double max_normal_angle,
+                         double max_aspect_ratio, std::optional<std::vector<long long>> fixed_vertices,
+                         double min_angle, bool area_weighted, std::optional<double> feature_angle,
+                         std::optional<std::vector<std::size_t>> feature_edges, bool keep_features) {
     hmira::decimate_options o{.target_faces = target_faces,
                               .target_ratio = target_ratio,
                               .max_error = max_error,

@@ -12,7 +12,7 @@ namespace hmira_py {
 namespace {
 
 truncate_report truncate(py_mesh& self, std::optional<std::vector<long long>> vertices, bool all,
-                  std::optional<double> fraction, std::optional<double> distance) {
+                         std::optional<double> fraction, std::optional<double> distance) {
     auto& m0 = self.get();
     if (all == vertices.has_value()) value_error("truncate: give vertices or all=True (one of them)");
     std::vector<hmira::vertex_handle> vs;
@@ -31,8 +31,8 @@ truncate_report truncate(py_mesh& self, std::optional<std::vector<long long>> ve
 }
 
 bevel_report bevel(py_mesh& self, std::optional<std::vector<std::pair<long long, long long>>> edges, bool all,
-               std::optional<double> angle, double width, int segments, bool no_clamp,
-               std::optional<std::vector<long long>> vertices, bool vertices_all) {
+                   std::optional<double> angle, double width, int segments, bool no_clamp,
+                   std::optional<std::vector<long long>> vertices, bool vertices_all) {
     auto& m0 = self.get();
     const int ways =
         int(edges.has_value()) + int(all) + int(angle.has_value()) + int(vertices.has_value()) + int(vertices_all);
@@ -77,7 +77,7 @@ bevel_report bevel(py_mesh& self, std::optional<std::vector<std::pair<long long,
 }
 
 extrude_report extrude(py_mesh& self, std::optional<std::vector<long long>> faces, bool all, double distance,
-                 std::optional<std::vector<double>> direction, const std::string& mode) {
+                       std::optional<std::vector<double>> direction, const std::string& mode) {
     auto& m0 = self.get();
     if (all == faces.has_value()) value_error("extrude: give faces or all=True (one of them)");
     const auto chosen = choice_arg<hmira::extrude_mode>(mode, "extrude", "mode");

@@ -22,17 +22,17 @@ hmira::fill_hole_options fill_options(std::size_t max_dynamic_programming_edges,
 std::vector<open_hole_report> open_holes(const hmira::fill_holes_result& r, std::size_t max_edges) {
     std::vector<open_hole_report> open;
     for (const auto& h : r.open)
-        open.push_back({.vertex = h.vertex,
-                        .edges = h.edges,
-                        .reason = h.reason == hmira::open_hole_reason::too_long
-                                      ? "a loop of " + std::to_string(h.edges) + " edges > max_edges " +
-                                            std::to_string(max_edges)
-                                      : h.message});
+        open.push_back(
+            {.vertex = h.vertex,
+             .edges = h.edges,
+             .reason = h.reason == hmira::open_hole_reason::too_long
+                           ? "a loop of " + std::to_string(h.edges) + " edges > max_edges " + std::to_string(max_edges)
+                           : h.message});
     return open;
 }
 
 fill_holes_report fill_holes(py_mesh& s, std::size_t max_edges, std::size_t max_dynamic_programming_edges, bool refine,
-                    const std::string& fair) {
+                             const std::string& fair) {
     const auto o = fill_options(max_dynamic_programming_edges, refine, fair, "fill_holes");
     if (max_edges < 3) value_error("fill_holes: max_edges must be at least 3, got " + std::to_string(max_edges));
     const auto r = change_compacted(s, [&](halfedge_mesh& m, hmira::progress_function progress) {

@@ -5,9 +5,9 @@
 
 namespace hmira_py {
 
-void bind_volume_io(nb::module_& m);  // .inr / .raw volumes for hmira.read_volume (volume_io.cpp)
+void bind_volume_io(nb::module_& m);        // .inr / .raw volumes for hmira.read_volume (volume_io.cpp)
 void bind_decimate_blocks(nb::module_& m);  // one block of hmira.dask.decimate (decimate_blocks.cpp)
-void bind_results(nb::module_& m);    // the typed results of the Mesh operations (results.cpp)
+void bind_results(nb::module_& m);          // the typed results of the Mesh operations (results.cpp)
 
 void register_errors(nb::module_&) {
     nb::register_exception_translator([](const std::exception_ptr& p, void*) {

@@ -11,7 +11,7 @@ namespace hmira_py {
 namespace {
 
 remesh_report remesh(py_mesh& s, std::optional<double> target_edge_length, std::size_t iterations,
-                std::optional<double> feature_angle, std::optional<std::vector<long long>> feature_edges) {
+                     std::optional<double> feature_angle, std::optional<std::vector<long long>> feature_edges) {
     std::vector<std::size_t> features;
     if (feature_edges)
         for (long long e : *feature_edges) {

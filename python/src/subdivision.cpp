@@ -21,7 +21,8 @@ void bind_mesh_subdivision(nb::class_<py_mesh>& c) {
         },
         nb::kw_only(), nb::arg("scheme") = name_of(defaults.scheme), nb::arg("levels") = defaults.levels,
         "Subdivides `levels` times with `scheme`: 'loop' or 'sqrt3' (triangle meshes) or 'catmull-clark' (any\n"
-        "polygon mesh), boundaries included; returns the counts after the last level\n(a SubdivideResult). 'sqrt3' refines the\n"
+        "polygon mesh), boundaries included; returns the counts after the last level\n(a SubdivideResult). 'sqrt3' "
+        "refines the\n"
         "boundary on every second level of a call, so give it an even `levels` for a smooth boundary.\n\n"
         ">>> m = hmira.Mesh([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]], [[0, 1, 2, 3]])\n"
         ">>> m.subdivide(scheme='catmull-clark')\n"

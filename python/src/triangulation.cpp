@@ -19,7 +19,8 @@ void bind_mesh_triangulation(nb::class_<py_mesh>& c) {
         nb::kw_only(), nb::arg("delaunay") = hmira::triangulate_polygon_options{}.delaunay,
         "Triangulates every polygon (inner rings included, robust on concave faces); with delaunay=True each face's "
         "diagonals "
-        "are its constrained Delaunay ones (largest smallest angle). Returns a TriangulateResult (faces_cut, triangles_added).");
+        "are its constrained Delaunay ones (largest smallest angle). Returns a TriangulateResult (faces_cut, "
+        "triangles_added).");
 }
 
 }  // namespace hmira_py

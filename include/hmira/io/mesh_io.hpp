@@ -25,9 +25,9 @@ namespace hmira::io {
 
 /// The mesh file formats hmira reads and writes.
 enum class file_format {
-    obj,  ///< Wavefront OBJ
-    off,  ///< Object File Format
-    ply,  ///< Stanford PLY
+    obj,   ///< Wavefront OBJ
+    off,   ///< Object File Format
+    ply,   ///< Stanford PLY
     stl,   ///< STereoLithography
     glb,   ///< glTF 2.0, binary container
     gltf,  ///< glTF 2.0, JSON (buffers inline or beside the file)

@@ -173,7 +173,8 @@ inline result<void> load_buffers(gltf_document& doc, std::string_view bin, const
             bytes = doc.owned.back();
         } else {
             const std::string& u = uri->text;
-            if (!load) return doc.bad(where + " refers to the file '" + printable(u) + "', which cannot be read from memory");
+            if (!load)
+                return doc.bad(where + " refers to the file '" + printable(u) + "', which cannot be read from memory");
             if (u.find(':') != std::string::npos || u.starts_with('/') || u.find("..") != std::string::npos)
                 return doc.bad(where + ".uri '" + printable(u) + "' is not a relative path beside the file");
             std::string path;

@@ -308,7 +308,6 @@ inline double box_entry(const bvh::node& n, const vec3<double>& o, const vec3<do
     return t0;
 }
 
-
 /// A ray prepared for the float slab test: its origin and inverse direction rounded to float,
 /// and per axis the absolute part of the margin that covers that rounding. `exact` is false
 /// when float cannot bound the slabs (a direction component that is zero or nearly so, or

@@ -225,15 +225,13 @@ struct bvh_access {
             const bb::float_ray f = bb::prepare_float_ray(r.origin, r.direction, t.reach_);
             if (f.exact) {
                 const float t_min = bb::round_down(r.t_min);
-                descend(t, r, bound, leaf, [&](const node& n) {
-                    return bb::box_entry_float(n, f, t_min, bb::round_up(bound()));
-                });
+                descend(t, r, bound, leaf,
+                        [&](const node& n) { return bb::box_entry_float(n, f, t_min, bb::round_up(bound())); });
                 return;
             }
         }
         const vec3<double> inv{1.0 / r.direction.x, 1.0 / r.direction.y, 1.0 / r.direction.z};
-        descend(t, r, bound, leaf,
-                [&](const node& n) { return bb::box_entry(n, r.origin, inv, r.t_min, bound()); });
+        descend(t, r, bound, leaf, [&](const node& n) { return bb::box_entry(n, r.origin, inv, r.t_min, bound()); });
     }
 
     /// traverse's loop, with entry(node) giving where the ray enters a box (NaN: it misses).
