@@ -30,10 +30,21 @@
 
 namespace hmira::predicates {
 
-/// Coordinates accepted by the line-plane predicates: 0, or a magnitude in [2^-36, 2^64].
+/// Coordinates accepted by the line-plane predicates: 0, or a finite value below 2^80 in magnitude
+/// whose lowest set bit is at least 2^-96. Products of up to 11 such numbers (the degree of the
+/// predicates on line-plane points) neither overflow nor lose bits below the smallest subnormal,
+/// so the expansion arithmetic stays exact. Every double in [2^-43, 2^80] qualifies, as do
+/// coarser values below that, such as 2^-52 or 3 * 2^-60.
 inline bool in_implicit_range(double v) noexcept {
-    const double a = v < 0 ? -v : v;
-    return a == 0.0 || (a >= 0x1p-36 && a <= 0x1p64);
+    if (v == 0.0) return true;
+    if (!std::isfinite(v)) return false;
+    int e = 0;
+    const double f = std::frexp(v < 0 ? -v : v, &e);  // v = f 2^e, f in [0.5, 1)
+    if (e > 80) return false;
+    auto m = static_cast<std::uint64_t>(std::ldexp(f, 53));  // the 53-bit significand
+    int low = e - 53;
+    while ((m & 1u) == 0) m >>= 1, ++low;
+    return low >= -96;
 }
 
 /// The point where three planes meet, each plane given by three points.

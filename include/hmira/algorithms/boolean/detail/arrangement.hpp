@@ -61,8 +61,10 @@ inline predicates::line_plane_point coplanar_crossing(const point3& p, const poi
 
 class pair_stage {
 public:
-    pair_stage(arrangement& arr, const std::vector<soup_triangle>& tris, std::vector<triangle_cuts>& cuts)
-        : arr_(arr), tris_(tris), cuts_(cuts) {}
+    /// `explicit_points` are the first points of arr, kept apart because arr.points grows.
+    pair_stage(arrangement& arr, const std::vector<point3>& explicit_points, const std::vector<soup_triangle>& tris,
+               std::vector<triangle_cuts>& cuts)
+        : arr_(arr), explicit_(explicit_points), tris_(tris), cuts_(cuts) {}
 
     /// Intersects triangles i and j (of different meshes, both with area) and records the result.
     void intersect(std::uint32_t i, std::uint32_t j) {
@@ -79,7 +81,7 @@ public:
     }
 
 private:
-    const point3& pos(vid v) const { return arr_.points[v].explicit_coordinates(); }
+    const point3& pos(vid v) const { return explicit_[v]; }
 
     vid add(const predicates::line_plane_point& l) {
         arr_.points.emplace_back(l);
@@ -143,6 +145,7 @@ private:
     }
 
     arrangement& arr_;
+    const std::vector<point3>& explicit_;
     const std::vector<soup_triangle>& tris_;
     std::vector<triangle_cuts>& cuts_;
 };
@@ -242,7 +245,7 @@ inline bool build_arrangement(const std::vector<point3>& explicit_points, const 
                           : projection_axis(explicit_points[t[0]], explicit_points[t[1]], explicit_points[t[2]]);
     }
     std::vector<triangle_cuts> cuts(tris.size());
-    pair_stage stage(arr, tris, cuts);
+    pair_stage stage(arr, explicit_points, tris, cuts);
     for (const auto& [i, j] : candidate_pairs(arr.points, tris, arr.drop)) stage.intersect(i, j);
     if (gate && gate->cancelled()) return false;
     // Coincident points become one id; each triangle's lists are renamed and deduplicated.
@@ -267,9 +270,24 @@ inline bool build_arrangement(const std::vector<point3>& explicit_points, const 
         std::sort(cuts[i].points.begin(), cuts[i].points.end());
         cuts[i].points.erase(std::unique(cuts[i].points.begin(), cuts[i].points.end()), cuts[i].points.end());
         for (vid p : cuts[i].points)
-            if (!cut.insert_point(p)) return false;
+            if (!cut.insert_point(p)) {
+#ifdef HMIRA_BOOLEAN_DEBUG
+                auto pr = [&](vid v) { auto q = arr.points[v].approximate(); std::fprintf(stderr, "%u(%.17g %.17g %.17g k%d) ", v, q.x, q.y, q.z, int(arr.points[v].what())); };
+                std::fprintf(stderr, "triangle %zu mesh %u: ", i, tris[i].mesh); for (vid v : tris[i].v) pr(v);
+                std::fprintf(stderr, "\nfailing point: "); pr(p); std::fprintf(stderr, "\n");
+#endif
+                return false;
+            }
         for (const auto& s : cuts[i].segments)
-            if (!cut.insert_segment(s[0], s[1])) return false;
+            if (!cut.insert_segment(s[0], s[1])) {
+#ifdef HMIRA_BOOLEAN_DEBUG
+                auto pr = [&](vid v) { auto q = arr.points[v].approximate(); std::fprintf(stderr, "%u(%.17g %.17g %.17g k%d) ", v, q.x, q.y, q.z, int(arr.points[v].what())); };
+                std::fprintf(stderr, "triangle %zu mesh %u: ", i, tris[i].mesh); for (vid v : tris[i].v) pr(v);
+                std::fprintf(stderr, "\nfailing segment: "); pr(s[0]); pr(s[1]);
+                std::fprintf(stderr, "\nsegments:\n"); for (const auto& z : cuts[i].segments) { pr(z[0]); pr(z[1]); std::fprintf(stderr, "\n"); }
+#endif
+                return false;
+            }
         for (const tri3& t : cut.triangles()) arr.pieces.push_back({t, std::uint32_t(i)});
         arr.cut_edges.insert(arr.cut_edges.end(), cut.constraints().begin(), cut.constraints().end());
     }
