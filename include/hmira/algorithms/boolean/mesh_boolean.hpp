@@ -49,6 +49,8 @@ struct boolean_report {
     std::size_t intersecting_pairs = 0;      ///< candidate triangle pairs tested
     std::size_t cut_triangles = 0;           ///< input triangles cut by the other mesh
     std::size_t snapped_vertices = 0;        ///< distinct exact points that rounded to one double
+    std::size_t degenerate_faces = 0;        ///< output faces whose rounded corners are collinear
+    std::size_t rounding_intersections = 0;  ///< output face pairs that rounding made intersect
 };
 
 /// The models mesh_boolean reads: face loops, positions, vertex and face indices.
@@ -66,7 +68,9 @@ concept boolean_input_mesh = face_triangulable_mesh<M, T> && vertex_index_mesh<M
 /// uncut edges), or, when a patch has no input vertex off the other surface, of the rounded
 /// centroid of its largest piece; that fallback is the one decision not made exactly. Points are
 /// rounded to double once, at output; distinct points that round to the same double are merged
-/// and counted in snapped_vertices, and faces that collapse are dropped.
+/// and counted in snapped_vertices, and faces that collapse are dropped. The rounded result is
+/// checked exactly: faces whose corners became collinear and face pairs that now intersect
+/// (as self_intersections decides) are counted in the report; they are not yet repaired.
 ///
 /// \pre a and b are closed, consistently oriented outward, and each free of self-intersections
 ///   (self_intersections() empty); polygon faces are cut as face_triangles does.

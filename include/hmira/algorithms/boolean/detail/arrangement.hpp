@@ -41,6 +41,7 @@ struct arrangement {
     std::vector<std::array<vid, 2>> cut_edges;  ///< sorted, unique, each (smaller, larger)
     std::vector<std::vector<std::uint32_t>> coplanar;
     std::vector<int> drop;  ///< projection axis of each input triangle, -1 if it has no area
+    std::size_t pairs = 0;  ///< candidate pairs (boxes overlapping) tested exactly
 };
 
 /// What the pair stage found for one input triangle: points and segments, by point id.
@@ -246,7 +247,12 @@ inline bool build_arrangement(const std::vector<point3>& explicit_points, const 
     }
     std::vector<triangle_cuts> cuts(tris.size());
     pair_stage stage(arr, explicit_points, tris, cuts);
-    for (const auto& [i, j] : candidate_pairs(arr.points, tris, arr.drop)) stage.intersect(i, j);
+    const auto pairs = candidate_pairs(arr.points, tris, arr.drop);
+    arr.pairs = pairs.size();
+    for (std::size_t n = 0; n < pairs.size(); ++n) {
+        if (gate && (n & 1023) == 0 && gate->cancelled()) return false;
+        stage.intersect(pairs[n][0], pairs[n][1]);
+    }
     if (gate && gate->cancelled()) return false;
     // Coincident points become one id; each triangle's lists are renamed and deduplicated.
     const std::vector<vid> map = merge_points(arr.points);
@@ -270,24 +276,9 @@ inline bool build_arrangement(const std::vector<point3>& explicit_points, const 
         std::sort(cuts[i].points.begin(), cuts[i].points.end());
         cuts[i].points.erase(std::unique(cuts[i].points.begin(), cuts[i].points.end()), cuts[i].points.end());
         for (vid p : cuts[i].points)
-            if (!cut.insert_point(p)) {
-#ifdef HMIRA_BOOLEAN_DEBUG
-                auto pr = [&](vid v) { auto q = arr.points[v].approximate(); std::fprintf(stderr, "%u(%.17g %.17g %.17g k%d) ", v, q.x, q.y, q.z, int(arr.points[v].what())); };
-                std::fprintf(stderr, "triangle %zu mesh %u: ", i, tris[i].mesh); for (vid v : tris[i].v) pr(v);
-                std::fprintf(stderr, "\nfailing point: "); pr(p); std::fprintf(stderr, "\n");
-#endif
-                return false;
-            }
+            if (!cut.insert_point(p)) return false;
         for (const auto& s : cuts[i].segments)
-            if (!cut.insert_segment(s[0], s[1])) {
-#ifdef HMIRA_BOOLEAN_DEBUG
-                auto pr = [&](vid v) { auto q = arr.points[v].approximate(); std::fprintf(stderr, "%u(%.17g %.17g %.17g k%d) ", v, q.x, q.y, q.z, int(arr.points[v].what())); };
-                std::fprintf(stderr, "triangle %zu mesh %u: ", i, tris[i].mesh); for (vid v : tris[i].v) pr(v);
-                std::fprintf(stderr, "\nfailing segment: "); pr(s[0]); pr(s[1]);
-                std::fprintf(stderr, "\nsegments:\n"); for (const auto& z : cuts[i].segments) { pr(z[0]); pr(z[1]); std::fprintf(stderr, "\n"); }
-#endif
-                return false;
-            }
+            if (!cut.insert_segment(s[0], s[1])) return false;
         for (const tri3& t : cut.triangles()) arr.pieces.push_back({t, std::uint32_t(i)});
         arr.cut_edges.insert(arr.cut_edges.end(), cut.constraints().begin(), cut.constraints().end());
     }

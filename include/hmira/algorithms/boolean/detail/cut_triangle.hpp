@@ -32,7 +32,8 @@ inline int projection_axis(const point3& a, const point3& b, const point3& c) {
                    (b.z - a.z) * (c.x - a.x) - (b.x - a.x) * (c.z - a.z),
                    (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x)};
     std::array<int, 3> order{0, 1, 2};
-    std::sort(order.begin(), order.end(), [&](int i, int j) { return std::abs(n[std::size_t(i)]) > std::abs(n[std::size_t(j)]); });
+    std::sort(order.begin(), order.end(),
+              [&](int i, int j) { return std::abs(n[std::size_t(i)]) > std::abs(n[std::size_t(j)]); });
     for (int k : order)
         if (predicates::detail::orient2d_drop(k, a, b, c) != 0) return k;
     return -1;

@@ -6,11 +6,15 @@
 #include <algorithm>
 #include <array>
 #include <map>
+#include <numeric>
+#include <optional>
+#include <tuple>
 #include <string>
 #include <vector>
 
 #include "../../spatial/inside_closed.hpp"
 #include "../../topology/connected_components.hpp"
+#include "../../validation/self_intersections.hpp"
 #include "../../triangulation/detail/indexed_triangles.hpp"
 #include "../mesh_boolean.hpp"
 #include "arrangement.hpp"
@@ -91,6 +95,24 @@ inline bool keep(boolean_op op, std::uint32_t from, label l, bool& flip) {
     return false;
 }
 
+/// Checks the rounded output exactly: faces whose corners became collinear, and pairs of faces
+/// that rounding made intersect (the rule of self_intersections).
+inline void check_rounding(const io::polygon_soup& soup, boolean_report& report) {
+    std::vector<point3> pos;
+    for (const auto& p : soup.points) pos.push_back({p[0], p[1], p[2]});
+    std::vector<triangulation::indexed_triangle> tris;
+    for (std::size_t f = 0; f + 1 < soup.face_offsets.size(); ++f) {
+        const std::size_t o = soup.face_offsets[f];
+        tris.push_back({{soup.indices[o], soup.indices[o + 1], soup.indices[o + 2]}, f});
+        report.degenerate_faces +=
+            predicates::collinear(pos[soup.indices[o]], pos[soup.indices[o + 1]], pos[soup.indices[o + 2]]);
+    }
+    const self_intersect::sweep sweep(tris, pos);
+    std::vector<face_pair> pairs;
+    sweep.run_block(0, tris.size(), pairs);
+    report.rounding_intersections = pairs.size();
+}
+
 }  // namespace hmira::detail::boolean
 
 namespace hmira {
@@ -117,6 +139,7 @@ result<boolean_report> mesh_boolean(MO& out, const MA& a, const MB& b, const boo
     }
     if (!gate.advance()) return fail(errc::cancelled, "mesh_boolean: cancelled");
     boolean_report report;
+    report.intersecting_pairs = arr.pairs;
 
     // Labels: "on" pieces first, then patches of the rest joined across uncut edges.
     std::vector<label> labels(arr.pieces.size(), label::out);
@@ -153,18 +176,17 @@ result<boolean_report> mesh_boolean(MO& out, const MA& a, const MB& b, const boo
         if (other == 0) return inside_closed<MA, TA>(a, q);
         return inside_closed<MB, TB>(b, q);
     };
+    std::map<std::uint32_t, std::vector<std::uint32_t>> members;
+    for (std::uint32_t n = 0; n < arr.pieces.size(); ++n)
+        if (!on[n]) members[patches.find(n)].push_back(n);
     std::map<std::uint32_t, label> patch_label;
-    for (std::uint32_t n = 0; n < arr.pieces.size(); ++n) {
-        if (on[n]) continue;
-        const std::uint32_t root = patches.find(n);
-        if (patch_label.count(root)) continue;
-        const std::uint32_t other = 1 - tris[arr.pieces[n].source].mesh;
+    for (const auto& [root, list] : members) {
+        const std::uint32_t other = 1 - tris[arr.pieces[list[0]].source].mesh;
         // An input vertex of the patch off the other surface decides it exactly.
         std::optional<label> found;
         double best_area = -1;
         bd::point3 centroid{};
-        for (std::uint32_t m = n; m < arr.pieces.size() && !found; ++m) {
-            if (on[m] || patches.find(m) != root) continue;
+        for (std::uint32_t m : list) {
             for (vid v : arr.pieces[m].v) {
                 if (v >= explicit_count) continue;
                 auto where = locate(other, points[v]);
@@ -173,6 +195,7 @@ result<boolean_report> mesh_boolean(MO& out, const MA& a, const MB& b, const boo
                 found = *where == point_location::inside ? label::in : label::out;
                 break;
             }
+            if (found) break;
             const bd::point3 p = arr.points[arr.pieces[m].v[0]].approximate(),
                              q = arr.points[arr.pieces[m].v[1]].approximate(),
                              r = arr.points[arr.pieces[m].v[2]].approximate();
@@ -230,6 +253,7 @@ result<boolean_report> mesh_boolean(MO& out, const MA& a, const MB& b, const boo
         soup.face_offsets.push_back(soup.indices.size());
         report.faces.push_back({std::uint8_t(from), tris[p.source].face});
     }
+    bd::check_rounding(soup, report);
     if (!gate.advance()) return fail(errc::cancelled, "mesh_boolean: cancelled");
     if (auto r = detail::copy::build<MO, TO>(out, soup); !r) return r.error();
     return report;
