@@ -30,21 +30,27 @@
 
 namespace hmira::predicates {
 
-/// Coordinates accepted by the line-plane predicates: 0, or a finite value below 2^80 in magnitude
-/// whose lowest set bit is at least 2^-96. Products of up to 11 such numbers (the degree of the
+/// The exponents of v = m 2^low with m odd, and |v| < 2^high: the finest and the coarsest bit
+/// of a finite nonzero double.
+inline void bit_span(double v, int& low, int& high) noexcept {
+    const double f = std::frexp(v < 0 ? -v : v, &high);  // |v| = f 2^high, f in [0.5, 1)
+    auto m = static_cast<std::uint64_t>(std::ldexp(f, 53));
+    low = high - 53;
+    while ((m & 1u) == 0) m >>= 1, ++low;
+}
+
+/// Coordinates accepted by the line-plane predicates: 0, or a finite value below 2^85 in magnitude
+/// whose lowest set bit is at least 2^-92. Products of up to 11 such numbers (the degree of the
 /// predicates on line-plane points) neither overflow nor lose bits below the smallest subnormal,
-/// so the expansion arithmetic stays exact. Every double in [2^-43, 2^80] qualifies, as do
-/// coarser values below that, such as 2^-52 or 3 * 2^-60.
+/// so the expansion arithmetic stays exact. Every double in [2^-39, 2^85] qualifies, as do
+/// coarser values below that, such as 2^-52. A caller whose input spans at most 177 bits (from
+/// its coarsest to its finest bit) can scale it by a power of two into this range, exactly.
 inline bool in_implicit_range(double v) noexcept {
     if (v == 0.0) return true;
     if (!std::isfinite(v)) return false;
-    int e = 0;
-    const double f = std::frexp(v < 0 ? -v : v, &e);  // v = f 2^e, f in [0.5, 1)
-    if (e > 80) return false;
-    auto m = static_cast<std::uint64_t>(std::ldexp(f, 53));  // the 53-bit significand
-    int low = e - 53;
-    while ((m & 1u) == 0) m >>= 1, ++low;
-    return low >= -96;
+    int low = 0, high = 0;
+    bit_span(v, low, high);
+    return high <= 85 && low >= -92;
 }
 
 /// The point where three planes meet, each plane given by three points.

@@ -35,17 +35,39 @@ result<void> read_input(const M& mesh, std::uint32_t which, std::vector<point3>&
         const auto q = T::position(mesh, v);
         const point3 p{double(q.x), double(q.y), double(q.z)};
         for (std::size_t k = 0; k < 3; ++k)
-            if (!predicates::in_implicit_range(p[k]))
+            if (!std::isfinite(p[k]) || !predicates::in_predicate_range(p[k]))
                 return fail(errc::invalid_argument,
                             std::string("mesh_boolean: vertex ") + std::to_string(i) + " of mesh " +
                                 (which == 0 ? "a" : "b") +
-                                " has a coordinate that is not finite or outside predicates::in_implicit_range",
+                                " has a coordinate that is not finite or outside predicates::in_predicate_range",
                             (long long)i);
         points[base + i] = p;
     }
     for (const auto& t : triangulation::indexed_triangles<M, T>(mesh))
         tris.push_back({{vid(base + t.v[0]), vid(base + t.v[1]), vid(base + t.v[2])}, which, t.face});
     return {};
+}
+
+/// The power of two that brings every coordinate into predicates::in_implicit_range, or an
+/// error when the coordinates span too many bits for any one scale.
+inline result<int> implicit_scale(const std::vector<point3>& points) {
+    int low = 0, high = 0;
+    bool any = false;
+    for (const point3& p : points)
+        for (std::size_t k = 0; k < 3; ++k) {
+            if (p[k] == 0.0) continue;
+            int l = 0, h = 0;
+            predicates::bit_span(p[k], l, h);
+            low = any ? std::min(low, l) : l;
+            high = any ? std::max(high, h) : h;
+            any = true;
+        }
+    if (!any) return 0;
+    if (high - low > 177)
+        return fail(errc::invalid_argument, "mesh_boolean: the coordinates span " + std::to_string(high - low) +
+                                                " bits from the coarsest to the finest; exact booleans take 177");
+    // Bring the finest bit to -92 or above and the coarsest to 85 or below, centred.
+    return -92 - low + (177 - (high - low)) / 2;
 }
 
 /// Renames the corners so that exactly equal input points share one id.
@@ -128,6 +150,10 @@ result<boolean_report> mesh_boolean(MO& out, const MA& a, const MB& b, const boo
     std::vector<bd::soup_triangle> tris;
     if (auto r = bd::read_input<MA, TA>(a, 0, points, tris); !r) return r.error();
     if (auto r = bd::read_input<MB, TB>(b, 1, points, tris); !r) return r.error();
+    // Scaling by a power of two is exact and keeps every predicate's sign.
+    const auto scale = bd::implicit_scale(points);
+    if (!scale) return scale.error();
+    for (bd::point3& p : points) p = {std::ldexp(p.x, *scale), std::ldexp(p.y, *scale), std::ldexp(p.z, *scale)};
     bd::merge_explicit(points, tris);
     if (!gate.advance()) return fail(errc::cancelled, "mesh_boolean: cancelled");
 
@@ -172,7 +198,7 @@ result<boolean_report> mesh_boolean(MO& out, const MA& a, const MB& b, const boo
     }
     const std::size_t explicit_count = points.size();
     auto locate = [&](std::uint32_t other, const bd::point3& p) -> result<point_location> {
-        const vec3<double> q{p.x, p.y, p.z};
+        const vec3<double> q{std::ldexp(p.x, -*scale), std::ldexp(p.y, -*scale), std::ldexp(p.z, -*scale)};
         if (other == 0) return inside_closed<MA, TA>(a, q);
         return inside_closed<MB, TB>(b, q);
     };
@@ -237,7 +263,8 @@ result<boolean_report> mesh_boolean(MO& out, const MA& a, const MB& b, const boo
             auto it = out_id.find(v);
             if (it == out_id.end()) {
                 const bd::point3 x = arr.points[v].approximate();
-                const std::array<double, 3> key{x.x, x.y, x.z};
+                const std::array<double, 3> key{std::ldexp(x.x, -*scale), std::ldexp(x.y, -*scale),
+                                                std::ldexp(x.z, -*scale)};
                 auto [pos, fresh] = by_position.try_emplace(key, std::uint32_t(soup.points.size()));
                 if (fresh)
                     soup.points.push_back(key);
