@@ -186,3 +186,30 @@ TEST(exact_point, filter_survives_large_and_tiny_coordinates) {
 }
 
 }  // namespace
+
+namespace {
+
+// The filter must settle the common case on its own: random line-plane points in general
+// position against random explicit points, every interval sign decided and equal to the exact one.
+TEST(exact_point, filter_decides_general_position) {
+    std::mt19937_64 g(11);
+    std::uniform_real_distribution<double> u(-1, 1);
+    auto rp = [&] { return point3{u(g), u(g), u(g)}; };
+    int decided = 0;
+    for (int n = 0; n < 2000; ++n) {
+        const exact_point x(line_plane_point{rp(), rp(), rp(), rp(), rp()}), a(rp()), b(rp());
+        const int f = detail::orient2d_homogeneous<detail::interval>(n % 3, a, b, x).sign();
+        const int e = detail::orient2d_homogeneous<detail::exact_number>(n % 3, a, b, x).sign();
+        if (f != 2) {
+            ++decided;
+            ASSERT_EQ(f, e) << n;
+        }
+        const int fc = detail::compare_homogeneous<detail::interval>(0, x, a).sign();
+        if (fc != 2) {
+            ASSERT_EQ(fc, detail::compare_homogeneous<detail::exact_number>(0, x, a).sign()) << n;
+        }
+    }
+    EXPECT_GT(decided, 1990);
+}
+
+}  // namespace

@@ -88,6 +88,10 @@ namespace detail {
 struct interval {
     double lo = 0, hi = 0;
 
+    interval() = default;
+    /// The exact value v.
+    interval(double v) noexcept : lo(v), hi(v) {}
+    interval(double l, double h) noexcept : lo(l), hi(h) {}
     static interval exact(double v) noexcept { return {v, v}; }
     /// +1 / -1 when the whole interval is on one side of zero, 0 when it is exactly {0}, 2 when
     /// undecided (it straddles zero, or a bound overflowed to infinity or NaN).
@@ -123,6 +127,8 @@ public:
     kind what() const noexcept { return kind_; }
     /// The explicit coordinates. \pre what() == kind::explicit_point.
     const point3& explicit_coordinates() const noexcept { return p_; }
+    /// The definition. \pre what() == kind::line_plane.
+    const line_plane_point& line_plane() const noexcept { return l_; }
     /// The point rounded to double, for output only. Explicit points are returned as given.
     point3 approximate() const;
     /// Interval enclosures of X, Y, Z, W (W may straddle zero: then every predicate goes exact).

@@ -153,6 +153,55 @@ N compare_homogeneous(std::size_t axis, const exact_point& a, const exact_point&
     return A[axis] * B[3] - B[axis] * A[3];
 }
 
+/// Shortcuts by definition, before any arithmetic: the degeneracies an arrangement creates on
+/// purpose (a crossing point on the edge that made it, the same crossing found twice) are
+/// recognised from the points that define them.
+inline bool same_coordinates(const point3& a, const point3& b) noexcept {
+    return a.x == b.x && a.y == b.y && a.z == b.z;
+}
+
+/// a, b and c all lie on the line of one of them that is a line-plane point, by definition: each
+/// is that point, an end of its defining segment, or a line-plane point on the same line.
+inline bool on_one_defining_line(const exact_point& a, const exact_point& b, const exact_point& c) noexcept {
+    using K = exact_point::kind;
+    const exact_point* pts[3] = {&a, &b, &c};
+    for (const exact_point* x : pts) {
+        if (x->what() != K::line_plane) continue;
+        const line_plane_point& l = x->line_plane();
+        bool all = true;
+        for (const exact_point* y : pts) {
+            if (y == x) continue;
+            if (y->what() == K::explicit_point)
+                all = same_coordinates(y->explicit_coordinates(), l.p) ||
+                      same_coordinates(y->explicit_coordinates(), l.q);
+            else if (y->what() == K::line_plane)
+                all = (same_coordinates(y->line_plane().p, l.p) && same_coordinates(y->line_plane().q, l.q)) ||
+                      (same_coordinates(y->line_plane().p, l.q) && same_coordinates(y->line_plane().q, l.p));
+            else
+                all = false;
+            if (!all) break;
+        }
+        if (all) return true;
+    }
+    return false;
+}
+
+/// a and b are line-plane points with the same line (either way round) and the same plane (its
+/// three points in any order): the same point by definition.
+inline bool same_definition(const exact_point& a, const exact_point& b) noexcept {
+    using K = exact_point::kind;
+    if (a.what() != K::line_plane || b.what() != K::line_plane) return false;
+    const line_plane_point &x = a.line_plane(), &y = b.line_plane();
+    const bool line = (same_coordinates(x.p, y.p) && same_coordinates(x.q, y.q)) ||
+                      (same_coordinates(x.p, y.q) && same_coordinates(x.q, y.p));
+    if (!line) return false;
+    auto in_plane = [&](const point3& v) {
+        return same_coordinates(v, y.r) || same_coordinates(v, y.s) || same_coordinates(v, y.t);
+    };
+    return in_plane(x.r) && in_plane(x.s) && in_plane(x.t) && !same_coordinates(x.r, x.s) &&
+           !same_coordinates(x.s, x.t) && !same_coordinates(x.r, x.t);
+}
+
 }  // namespace detail
 
 inline std::array<detail::interval, 4> exact_point::lpi_filter(const line_plane_point& l) {
@@ -194,6 +243,7 @@ inline int orient2d(int drop, const exact_point& a, const exact_point& b, const 
     if (a.what() == K::explicit_point && b.what() == K::explicit_point && c.what() == K::explicit_point)
         return detail::orient2d_drop(drop, a.explicit_coordinates(), b.explicit_coordinates(),
                                      c.explicit_coordinates());
+    if (detail::on_one_defining_line(a, b, c)) return 0;
     if (detail::filter_usable(a) && detail::filter_usable(b) && detail::filter_usable(c)) {
         const int s = detail::orient2d_homogeneous<detail::interval>(drop, a, b, c).sign();
         if (s != 2) return s;
@@ -225,6 +275,7 @@ inline int compare_coordinate(int axis, const exact_point& a, const exact_point&
 }
 
 inline int compare_xyz(const exact_point& a, const exact_point& b) {
+    if (detail::same_definition(a, b)) return 0;
     for (int k = 0; k < 3; ++k)
         if (const int s = compare_coordinate(k, a, b); s != 0) return s;
     return 0;

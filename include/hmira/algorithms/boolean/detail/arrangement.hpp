@@ -165,20 +165,29 @@ inline std::vector<std::array<std::uint32_t, 2>> candidate_pairs(const std::vect
             }
         box[i] = {lo, hi};
     }
+    // The sweep runs along the axis of the largest extent, where boxes overlap least.
+    point3 lo{}, hi{};
+    for (std::size_t i = 0; i < box.size(); ++i)
+        for (std::size_t k = 0; k < 3; ++k) {
+            lo[k] = i == 0 ? box[i][0][k] : std::min(lo[k], box[i][0][k]);
+            hi[k] = i == 0 ? box[i][1][k] : std::max(hi[k], box[i][1][k]);
+        }
+    const point3 ext{hi.x - lo.x, hi.y - lo.y, hi.z - lo.z};
+    const std::size_t ax = ext.x >= ext.y && ext.x >= ext.z ? 0 : (ext.y >= ext.z ? 1 : 2);
     std::vector<std::uint32_t> order;
     for (std::uint32_t i = 0; i < tris.size(); ++i)
         if (drop[i] >= 0) order.push_back(i);
     std::sort(order.begin(), order.end(), [&](std::uint32_t x, std::uint32_t y) {
-        return box[x][0].x < box[y][0].x || (box[x][0].x == box[y][0].x && x < y);
+        return box[x][0][ax] < box[y][0][ax] || (box[x][0][ax] == box[y][0][ax] && x < y);
     });
     std::vector<std::array<std::uint32_t, 2>> out;
     for (std::size_t n = 0; n < order.size(); ++n) {
         const std::uint32_t x = order[n];
-        for (std::size_t m = n + 1; m < order.size() && box[order[m]][0].x <= box[x][1].x; ++m) {
+        for (std::size_t m = n + 1; m < order.size() && box[order[m]][0][ax] <= box[x][1][ax]; ++m) {
             const std::uint32_t y = order[m];
             if (tris[x].mesh == tris[y].mesh) continue;
             bool overlap = true;
-            for (std::size_t k = 1; k < 3; ++k)
+            for (std::size_t k = 0; k < 3; ++k)
                 overlap = overlap && box[x][0][k] <= box[y][1][k] && box[y][0][k] <= box[x][1][k];
             if (overlap) out.push_back({std::min(x, y), std::max(x, y)});
         }

@@ -118,21 +118,56 @@ inline bool keep(boolean_op op, std::uint32_t from, label l, bool& flip) {
 }
 
 /// Checks the rounded output exactly: faces whose corners became collinear, and pairs of faces
-/// that rounding made intersect (the rule of self_intersections).
-inline void check_rounding(const io::polygon_soup& soup, boolean_report& report) {
+/// that rounding made intersect (the rule of self_intersections). Only faces with a rounded
+/// (constructed) corner can have moved, so only pairs holding one are tested: each such face
+/// against every face whose box overlaps its own, by a sorted sweep along the longest axis.
+inline void check_rounding(const io::polygon_soup& soup, const std::vector<char>& rounded, boolean_report& report) {
     std::vector<point3> pos;
     for (const auto& p : soup.points) pos.push_back({p[0], p[1], p[2]});
-    std::vector<triangulation::indexed_triangle> tris;
-    for (std::size_t f = 0; f + 1 < soup.face_offsets.size(); ++f) {
+    const std::size_t n = soup.face_offsets.size() - 1;
+    std::vector<std::array<std::size_t, 3>> tris(n);
+    std::vector<std::array<point3, 2>> box(n);
+    std::vector<char> moved(n, 0);
+    point3 lo_all{}, hi_all{};
+    for (std::size_t f = 0; f < n; ++f) {
         const std::size_t o = soup.face_offsets[f];
-        tris.push_back({{soup.indices[o], soup.indices[o + 1], soup.indices[o + 2]}, f});
-        report.degenerate_faces +=
-            predicates::collinear(pos[soup.indices[o]], pos[soup.indices[o + 1]], pos[soup.indices[o + 2]]);
+        tris[f] = {soup.indices[o], soup.indices[o + 1], soup.indices[o + 2]};
+        box[f] = {pos[tris[f][0]], pos[tris[f][0]]};
+        for (std::size_t v : tris[f]) {
+            moved[f] = moved[f] || rounded[v];
+            for (std::size_t k = 0; k < 3; ++k) {
+                box[f][0][k] = std::min(box[f][0][k], pos[v][k]);
+                box[f][1][k] = std::max(box[f][1][k], pos[v][k]);
+                lo_all[k] = f == 0 ? box[f][0][k] : std::min(lo_all[k], box[f][0][k]);
+                hi_all[k] = f == 0 ? box[f][1][k] : std::max(hi_all[k], box[f][1][k]);
+            }
+        }
+        report.degenerate_faces += predicates::collinear(pos[tris[f][0]], pos[tris[f][1]], pos[tris[f][2]]);
     }
-    const self_intersect::sweep sweep(tris, pos);
-    std::vector<face_pair> pairs;
-    sweep.run_block(0, tris.size(), pairs);
-    report.rounding_intersections = pairs.size();
+    if (n == 0) return;
+    const point3 ext{hi_all.x - lo_all.x, hi_all.y - lo_all.y, hi_all.z - lo_all.z};
+    const std::size_t axis = ext.x >= ext.y && ext.x >= ext.z ? 0 : (ext.y >= ext.z ? 1 : 2);
+    std::vector<std::size_t> order(n);
+    std::iota(order.begin(), order.end(), std::size_t(0));
+    std::sort(order.begin(), order.end(),
+              [&](std::size_t x, std::size_t y) { return box[x][0][axis] < box[y][0][axis]; });
+    double longest = 0;
+    for (const auto& b : box) longest = std::max(longest, b[1][axis] - b[0][axis]);
+    std::vector<double> starts(n);
+    for (std::size_t m = 0; m < n; ++m) starts[m] = box[order[m]][0][axis];
+    std::vector<std::array<std::size_t, 2>> pairs;
+    for (std::size_t f = 0; f < n; ++f) {
+        if (!moved[f]) continue;
+        const auto first = std::lower_bound(starts.begin(), starts.end(), box[f][0][axis] - longest);
+        for (auto it = first; it != starts.end() && *it <= box[f][1][axis]; ++it) {
+            const std::size_t g = order[std::size_t(it - starts.begin())];
+            if (g == f || (moved[g] && g < f)) continue;  // a pair of moved faces once
+            bool overlap = true;
+            for (std::size_t k = 0; k < 3; ++k)
+                overlap = overlap && box[f][0][k] <= box[g][1][k] && box[g][0][k] <= box[f][1][k];
+            if (overlap && self_intersect::triangles_cross(tris[f], tris[g], pos)) ++report.rounding_intersections;
+        }
+    }
 }
 
 }  // namespace hmira::detail::boolean
@@ -280,7 +315,9 @@ result<boolean_report> mesh_boolean(MO& out, const MA& a, const MB& b, const boo
         soup.face_offsets.push_back(soup.indices.size());
         report.faces.push_back({std::uint8_t(from), tris[p.source].face});
     }
-    bd::check_rounding(soup, report);
+    std::vector<char> rounded(soup.points.size(), 0);
+    for (const auto& [v, o] : out_id) rounded[o] = rounded[o] || v >= explicit_count;
+    bd::check_rounding(soup, rounded, report);
     if (!gate.advance()) return fail(errc::cancelled, "mesh_boolean: cancelled");
     if (auto r = detail::copy::build<MO, TO>(out, soup); !r) return r.error();
     return report;
