@@ -1,0 +1,326 @@
+// hmira/algorithms/boolean/detail/mesh_boolean_impl.hpp
+// The machinery of mesh_boolean (see ../mesh_boolean.hpp): reading both inputs into one triangle
+// soup, the arrangement, labelling pieces against the other mesh, choosing and writing them.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <map>
+#include <numeric>
+#include <optional>
+#include <tuple>
+#include <string>
+#include <vector>
+
+#include "../../spatial/inside_closed.hpp"
+#include "../../topology/connected_components.hpp"
+#include "../../validation/self_intersections.hpp"
+#include "../../triangulation/detail/indexed_triangles.hpp"
+#include "../mesh_boolean.hpp"
+#include "arrangement.hpp"
+
+namespace hmira::detail::boolean {
+
+/// A piece's position with respect to the other mesh.
+enum class label : std::uint8_t { out, in, on_same, on_opposite };
+
+/// Appends one input's vertices and triangles; an error names the first vertex out of range.
+template <class M, class T>
+result<void> read_input(const M& mesh, std::uint32_t which, std::vector<point3>& points,
+                        std::vector<soup_triangle>& tris) {
+    const std::size_t base = points.size();
+    points.resize(base + T::vertex_index_bound(mesh));
+    for (auto v : T::vertices(mesh)) {
+        const std::size_t i = T::vertex_index(mesh, v);
+        const auto q = T::position(mesh, v);
+        const point3 p{double(q.x), double(q.y), double(q.z)};
+        for (std::size_t k = 0; k < 3; ++k)
+            if (!std::isfinite(p[k]) || !predicates::in_predicate_range(p[k]))
+                return fail(errc::invalid_argument,
+                            std::string("mesh_boolean: vertex ") + std::to_string(i) + " of mesh " +
+                                (which == 0 ? "a" : "b") +
+                                " has a coordinate that is not finite or outside predicates::in_predicate_range",
+                            (long long)i);
+        points[base + i] = p;
+    }
+    for (const auto& t : triangulation::indexed_triangles<M, T>(mesh))
+        tris.push_back({{vid(base + t.v[0]), vid(base + t.v[1]), vid(base + t.v[2])}, which, t.face});
+    return {};
+}
+
+/// The power of two that brings every coordinate into predicates::in_implicit_range, or an
+/// error when the coordinates span too many bits for any one scale.
+inline result<int> implicit_scale(const std::vector<point3>& points) {
+    int low = 0, high = 0;
+    bool any = false;
+    for (const point3& p : points)
+        for (std::size_t k = 0; k < 3; ++k) {
+            if (p[k] == 0.0) continue;
+            int l = 0, h = 0;
+            predicates::bit_span(p[k], l, h);
+            low = any ? std::min(low, l) : l;
+            high = any ? std::max(high, h) : h;
+            any = true;
+        }
+    if (!any) return 0;
+    if (high - low > 177)
+        return fail(errc::invalid_argument, "mesh_boolean: the coordinates span " + std::to_string(high - low) +
+                                                " bits from the coarsest to the finest; exact booleans take 177");
+    // Bring the finest bit to -92 or above and the coarsest to 85 or below, centred.
+    return -92 - low + (177 - (high - low)) / 2;
+}
+
+/// Renames the corners so that exactly equal input points share one id.
+inline void merge_explicit(std::vector<point3>& points, std::vector<soup_triangle>& tris) {
+    std::vector<vid> order(points.size()), map(points.size());
+    std::iota(order.begin(), order.end(), vid(0));
+    auto less = [&](vid x, vid y) {
+        const point3 &p = points[x], &q = points[y];
+        return std::tie(p.x, p.y, p.z) < std::tie(q.x, q.y, q.z);
+    };
+    std::sort(order.begin(), order.end(), [&](vid x, vid y) { return less(x, y) || (!less(y, x) && x < y); });
+    for (std::size_t n = 0; n < order.size(); ++n)
+        map[order[n]] = n > 0 && !less(order[n - 1], order[n]) ? map[order[n - 1]] : order[n];
+    for (soup_triangle& t : tris)
+        for (vid& v : t.v) v = map[v];
+}
+
+/// Whether the piece lies in input triangle j (coplanar with its source), and how it is turned.
+inline label coplanar_label(const arrangement& arr, const std::vector<soup_triangle>& tris, const piece& p,
+                            std::uint32_t j, bool& inside) {
+    const int k = arr.drop[p.source];
+    const tri3 &t = tris[p.source].v, &u = tris[j].v;
+    const auto& P = arr.points;
+    const int su = predicates::orient2d(k, P[u[0]], P[u[1]], P[u[2]]);
+    inside = su != 0;
+    for (vid v : p.v)
+        for (std::size_t m = 0; m < 3 && inside; ++m)
+            inside = su * predicates::orient2d(k, P[u[m]], P[u[(m + 1) % 3]], P[v]) >= 0;
+    const int st = predicates::orient2d(k, P[t[0]], P[t[1]], P[t[2]]);
+    return st == su ? label::on_same : label::on_opposite;
+}
+
+/// Whether a piece from mesh `from` with the given label is kept, and whether it is flipped.
+inline bool keep(boolean_op op, std::uint32_t from, label l, bool& flip) {
+    flip = false;
+    switch (op) {
+        case boolean_op::union_: return l == label::out || (from == 0 && l == label::on_same);
+        case boolean_op::intersection: return l == label::in || (from == 0 && l == label::on_same);
+        case boolean_op::difference:
+            if (from == 0) return l == label::out || l == label::on_opposite;
+            flip = true;
+            return l == label::in;
+        case boolean_op::xor_:
+            flip = l == label::in;
+            return l == label::out || l == label::in || l == label::on_opposite;
+    }
+    return false;
+}
+
+/// Checks the rounded output exactly: faces whose corners became collinear, and pairs of faces
+/// that rounding made intersect (the rule of self_intersections). Only faces with a rounded
+/// (constructed) corner can have moved, so only pairs holding one are tested: each such face
+/// against every face whose box overlaps its own, by a sorted sweep along the longest axis.
+inline void check_rounding(const io::polygon_soup& soup, const std::vector<char>& rounded, boolean_report& report) {
+    std::vector<point3> pos;
+    for (const auto& p : soup.points) pos.push_back({p[0], p[1], p[2]});
+    const std::size_t n = soup.face_offsets.size() - 1;
+    std::vector<std::array<std::size_t, 3>> tris(n);
+    std::vector<std::array<point3, 2>> box(n);
+    std::vector<char> moved(n, 0);
+    point3 lo_all{}, hi_all{};
+    for (std::size_t f = 0; f < n; ++f) {
+        const std::size_t o = soup.face_offsets[f];
+        tris[f] = {soup.indices[o], soup.indices[o + 1], soup.indices[o + 2]};
+        box[f] = {pos[tris[f][0]], pos[tris[f][0]]};
+        for (std::size_t v : tris[f]) {
+            moved[f] = moved[f] || rounded[v];
+            for (std::size_t k = 0; k < 3; ++k) {
+                box[f][0][k] = std::min(box[f][0][k], pos[v][k]);
+                box[f][1][k] = std::max(box[f][1][k], pos[v][k]);
+                lo_all[k] = f == 0 ? box[f][0][k] : std::min(lo_all[k], box[f][0][k]);
+                hi_all[k] = f == 0 ? box[f][1][k] : std::max(hi_all[k], box[f][1][k]);
+            }
+        }
+        report.degenerate_faces += predicates::collinear(pos[tris[f][0]], pos[tris[f][1]], pos[tris[f][2]]);
+    }
+    if (n == 0) return;
+    const point3 ext{hi_all.x - lo_all.x, hi_all.y - lo_all.y, hi_all.z - lo_all.z};
+    const std::size_t axis = ext.x >= ext.y && ext.x >= ext.z ? 0 : (ext.y >= ext.z ? 1 : 2);
+    std::vector<std::size_t> order(n);
+    std::iota(order.begin(), order.end(), std::size_t(0));
+    std::sort(order.begin(), order.end(),
+              [&](std::size_t x, std::size_t y) { return box[x][0][axis] < box[y][0][axis]; });
+    double longest = 0;
+    for (const auto& b : box) longest = std::max(longest, b[1][axis] - b[0][axis]);
+    std::vector<double> starts(n);
+    for (std::size_t m = 0; m < n; ++m) starts[m] = box[order[m]][0][axis];
+    std::vector<std::array<std::size_t, 2>> pairs;
+    for (std::size_t f = 0; f < n; ++f) {
+        if (!moved[f]) continue;
+        const auto first = std::lower_bound(starts.begin(), starts.end(), box[f][0][axis] - longest);
+        for (auto it = first; it != starts.end() && *it <= box[f][1][axis]; ++it) {
+            const std::size_t g = order[std::size_t(it - starts.begin())];
+            if (g == f || (moved[g] && g < f)) continue;  // a pair of moved faces once
+            bool overlap = true;
+            for (std::size_t k = 0; k < 3; ++k)
+                overlap = overlap && box[f][0][k] <= box[g][1][k] && box[g][0][k] <= box[f][1][k];
+            if (overlap && self_intersect::triangles_cross(tris[f], tris[g], pos)) ++report.rounding_intersections;
+        }
+    }
+}
+
+}  // namespace hmira::detail::boolean
+
+namespace hmira {
+
+template <class MO, class MA, class MB, class TO, class TA, class TB>
+    requires copy_target_mesh<MO, TO> && boolean_input_mesh<MA, TA> && boolean_input_mesh<MB, TB>
+result<boolean_report> mesh_boolean(MO& out, const MA& a, const MB& b, const boolean_options& options) {
+    namespace bd = detail::boolean;
+    using bd::label;
+    using bd::vid;
+    detail::progress_gate gate(options.progress, 4, "mesh_boolean");
+    std::vector<bd::point3> points;
+    std::vector<bd::soup_triangle> tris;
+    if (auto r = bd::read_input<MA, TA>(a, 0, points, tris); !r) return r.error();
+    if (auto r = bd::read_input<MB, TB>(b, 1, points, tris); !r) return r.error();
+    // Scaling by a power of two is exact and keeps every predicate's sign.
+    const auto scale = bd::implicit_scale(points);
+    if (!scale) return scale.error();
+    for (bd::point3& p : points) p = {std::ldexp(p.x, *scale), std::ldexp(p.y, *scale), std::ldexp(p.z, *scale)};
+    bd::merge_explicit(points, tris);
+    if (!gate.advance()) return fail(errc::cancelled, "mesh_boolean: cancelled");
+
+    bd::arrangement arr;
+    if (!bd::build_arrangement(points, tris, arr, &gate)) {
+        if (gate.cancelled()) return fail(errc::cancelled, "mesh_boolean: cancelled");
+        return fail(errc::unsupported,
+                    "mesh_boolean: the cuts of one triangle cross each other; an input intersects itself");
+    }
+    if (!gate.advance()) return fail(errc::cancelled, "mesh_boolean: cancelled");
+    boolean_report report;
+    report.intersecting_pairs = arr.pairs;
+
+    // Labels: "on" pieces first, then patches of the rest joined across uncut edges.
+    std::vector<label> labels(arr.pieces.size(), label::out);
+    std::vector<char> on(arr.pieces.size(), 0);
+    for (std::size_t n = 0; n < arr.pieces.size(); ++n)
+        for (std::uint32_t j : arr.coplanar[arr.pieces[n].source]) {
+            bool inside = false;
+            const label l = bd::coplanar_label(arr, tris, arr.pieces[n], j, inside);
+            if (inside) {
+                labels[n] = l;
+                on[n] = 1;
+                break;
+            }
+        }
+    union_find patches(arr.pieces.size());
+    {
+        std::map<std::array<vid, 2>, std::vector<std::uint32_t>> by_edge;
+        for (std::uint32_t n = 0; n < arr.pieces.size(); ++n) {
+            if (on[n]) continue;
+            const bd::tri3& t = arr.pieces[n].v;
+            for (std::size_t m = 0; m < 3; ++m) {
+                const std::array<vid, 2> e{std::min(t[m], t[(m + 1) % 3]), std::max(t[m], t[(m + 1) % 3])};
+                if (!std::binary_search(arr.cut_edges.begin(), arr.cut_edges.end(), e)) by_edge[e].push_back(n);
+            }
+        }
+        for (const auto& [e, ps] : by_edge)
+            for (std::size_t x = 1; x < ps.size(); ++x)
+                if (tris[arr.pieces[ps[x]].source].mesh == tris[arr.pieces[ps[0]].source].mesh)
+                    patches.unite(ps[0], ps[x]);
+    }
+    const std::size_t explicit_count = points.size();
+    auto locate = [&](std::uint32_t other, const bd::point3& p) -> result<point_location> {
+        const vec3<double> q{std::ldexp(p.x, -*scale), std::ldexp(p.y, -*scale), std::ldexp(p.z, -*scale)};
+        if (other == 0) return inside_closed<MA, TA>(a, q);
+        return inside_closed<MB, TB>(b, q);
+    };
+    std::map<std::uint32_t, std::vector<std::uint32_t>> members;
+    for (std::uint32_t n = 0; n < arr.pieces.size(); ++n)
+        if (!on[n]) members[patches.find(n)].push_back(n);
+    std::map<std::uint32_t, label> patch_label;
+    for (const auto& [root, list] : members) {
+        const std::uint32_t other = 1 - tris[arr.pieces[list[0]].source].mesh;
+        // An input vertex of the patch off the other surface decides it exactly.
+        std::optional<label> found;
+        double best_area = -1;
+        bd::point3 centroid{};
+        for (std::uint32_t m : list) {
+            for (vid v : arr.pieces[m].v) {
+                if (v >= explicit_count) continue;
+                auto where = locate(other, points[v]);
+                if (!where) return where.error();
+                if (*where == point_location::on_surface) continue;
+                found = *where == point_location::inside ? label::in : label::out;
+                break;
+            }
+            if (found) break;
+            const bd::point3 p = arr.points[arr.pieces[m].v[0]].approximate(),
+                             q = arr.points[arr.pieces[m].v[1]].approximate(),
+                             r = arr.points[arr.pieces[m].v[2]].approximate();
+            const bd::point3 u{q.x - p.x, q.y - p.y, q.z - p.z}, w{r.x - p.x, r.y - p.y, r.z - p.z};
+            const bd::point3 c{u.y * w.z - u.z * w.y, u.z * w.x - u.x * w.z, u.x * w.y - u.y * w.x};
+            const double area = c.x * c.x + c.y * c.y + c.z * c.z;
+            if (area > best_area) {
+                best_area = area;
+                centroid = {(p.x + q.x + r.x) / 3, (p.y + q.y + r.y) / 3, (p.z + q.z + r.z) / 3};
+            }
+        }
+        if (!found) {
+            auto where = locate(other, centroid);
+            if (!where) return where.error();
+            found = *where == point_location::inside ? label::in : label::out;
+        }
+        patch_label[root] = *found;
+    }
+    for (std::uint32_t n = 0; n < arr.pieces.size(); ++n)
+        if (!on[n]) labels[n] = patch_label[patches.find(n)];
+    if (!gate.advance()) return fail(errc::cancelled, "mesh_boolean: cancelled");
+
+    // The kept pieces, rounded once; distinct points that round alike are merged.
+    io::polygon_soup soup;
+    std::map<vid, std::uint32_t> out_id;
+    std::map<std::array<double, 3>, std::uint32_t> by_position;
+    std::vector<char> cut(tris.size(), 0);
+    for (const bd::piece& p : arr.pieces)
+        if (p.v != tris[p.source].v) cut[p.source] = 1;
+    report.cut_triangles = std::size_t(std::count(cut.begin(), cut.end(), 1));
+    for (std::size_t n = 0; n < arr.pieces.size(); ++n) {
+        const bd::piece& p = arr.pieces[n];
+        const std::uint32_t from = tris[p.source].mesh;
+        bool flip = false;
+        if (!bd::keep(options.op, from, labels[n], flip)) continue;
+        std::array<std::uint32_t, 3> f{};
+        for (std::size_t m = 0; m < 3; ++m) {
+            const vid v = p.v[m];
+            auto it = out_id.find(v);
+            if (it == out_id.end()) {
+                const bd::point3 x = arr.points[v].approximate();
+                const std::array<double, 3> key{std::ldexp(x.x, -*scale), std::ldexp(x.y, -*scale),
+                                                std::ldexp(x.z, -*scale)};
+                auto [pos, fresh] = by_position.try_emplace(key, std::uint32_t(soup.points.size()));
+                if (fresh)
+                    soup.points.push_back(key);
+                else
+                    ++report.snapped_vertices;
+                it = out_id.emplace(v, pos->second).first;
+            }
+            f[m] = it->second;
+        }
+        if (f[0] == f[1] || f[1] == f[2] || f[2] == f[0]) continue;
+        if (flip) std::swap(f[1], f[2]);
+        soup.indices.insert(soup.indices.end(), f.begin(), f.end());
+        soup.face_offsets.push_back(soup.indices.size());
+        report.faces.push_back({std::uint8_t(from), tris[p.source].face});
+    }
+    std::vector<char> rounded(soup.points.size(), 0);
+    for (const auto& [v, o] : out_id) rounded[o] = rounded[o] || v >= explicit_count;
+    bd::check_rounding(soup, rounded, report);
+    if (!gate.advance()) return fail(errc::cancelled, "mesh_boolean: cancelled");
+    if (auto r = detail::copy::build<MO, TO>(out, soup); !r) return r.error();
+    return report;
+}
+
+}  // namespace hmira
