@@ -456,7 +456,7 @@ class MeshCore:
         refresh_weights and threads as in laplacian_smooth.
         """
 
-    def decimate(self, *, target_faces: int | None = None, target_ratio: float | None = None, max_error: float | None = None, fix_boundary: bool = True, max_normal_angle: float = 90.0, max_aspect_ratio: float = float('inf'), fixed_vertices: Sequence[int] | None = None, min_angle: float = 1.0, area_weighted: bool = True, feature_angle: float | None = None, feature_edges: Sequence[int] | None = None, keep_features: bool = False) -> DecimateResult:
+    def decimate(self, *, target_faces: int | None = None, target_ratio: float | None = None, max_error: float | None = None, fix_boundary: bool = True, max_normal_angle: float = 120.0, max_aspect_ratio: float = float('inf'), fixed_vertices: Sequence[int] | None = None, min_angle: float = 1.0, area_weighted: bool = True, feature_angle: float | None = None, feature_edges: Sequence[int] | None = None, keep_features: bool = False) -> DecimateResult:
         """
         Quadric error decimation (Garland-Heckbert) until the first target reached: target_faces, target_ratio
         (of the faces) or max_error (a distance). Polygons are triangulated first. Boundary vertices stay

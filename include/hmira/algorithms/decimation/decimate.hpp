@@ -27,9 +27,9 @@ struct decimate_options {
     /// Boundary vertices never move and boundary edges never collapse. When false, boundary edges collapse
     /// too, held near their place by planes through them perpendicular to their face.
     bool keep_boundary = true;
-    /// Refuse a collapse that turns a remaining face's normal by more than this (degrees, [0, 180]); a face
-    /// that would degenerate is always refused.
-    double max_normal_angle = 90;
+    /// Refuse a collapse that turns a remaining face's normal by more than this (degrees, [0, 180]); a face that
+    /// would degenerate is always refused. Above 90, so that coarse targets may still turn faces on thin parts.
+    double max_normal_angle = 120;
     /// Refuse a collapse making a face with an aspect ratio (longest edge over the height onto it, 1 for an
     /// equilateral triangle) above this unless it was worse. At least 1; infinity (the default): off.
     double max_aspect_ratio = std::numeric_limits<double>::infinity();

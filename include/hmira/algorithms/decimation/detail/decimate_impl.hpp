@@ -58,6 +58,7 @@ public:
         fixed_.assign(vb, 0);
         edges_.assign(eb, E{});
         refused_.assign(eb, 0);
+        mark_.assign(vb, 0);
         cos_limit_ = std::cos(o_.max_normal_angle * std::numbers::pi / 180);
         const double sin_min = std::sin(o_.min_angle * std::numbers::pi / 180);
         sin_min_sq_ = sin_min * sin_min;
@@ -104,8 +105,9 @@ public:
         for (auto e : T::edges(m_)) {
             const std::size_t i = T::edge_index(m_, e);
             edges_[i] = e;
-            update(std::uint32_t(i));
+            if (const auto c = candidate_of(e)) heap_.append(std::uint32_t(i), c->cost);
         }
+        heap_.heapify();
     }
 
     /// Collapses until a target is reached, the queue empties or the callback cancels
@@ -248,9 +250,9 @@ private:
 
     /// Puts the edge in the queue at its current cost, or takes it out when it may not
     /// collapse.
-    void update(std::uint32_t key) {
+    void update(E e, std::uint32_t key) {
         refused_[key] = 0;
-        if (const auto c = candidate_of(edges_[key]))
+        if (const auto c = candidate_of(e))
             heap_.set(key, c->cost);
         else
             heap_.erase(key);
@@ -316,6 +318,42 @@ private:
         return l / std::sqrt(twice_area_sq) * (std::sqrt(3.0) / 2);
     }
 
+    /// The topology rules of collapse_refusal for an edge with a triangle on each side in a
+    /// mesh of triangles, in O(d): the ring of b is marked, then read from the ring of a. The
+    /// rare edge whose ends both have three neighbours (it may belong to a tetrahedron) takes
+    /// the general test.
+    bool link_ok(H h) {
+        const H o = T::opposite(m_, h), hn = T::next(m_, h), on = T::next(m_, o);
+        const V a = T::target(m_, o), b = T::target(m_, h), c = T::target(m_, hn), d = T::target(m_, on);
+        if (a == b || c == d) return false;
+        const auto border = [&](H x) { return T::face(m_, T::opposite(m_, x)) == T::null_face(); };
+        if ((border(hn) && border(T::prev(m_, h))) || (border(on) && border(T::prev(m_, o)))) return false;
+        if (++mark_clock_ == 0) {  // the clock wrapped: clear the marks once
+            std::fill(mark_.begin(), mark_.end(), 0u);
+            mark_clock_ = 1;
+        }
+        std::size_t valence_b = 0, valence_a = 0;
+        H s = T::vertex_halfedge(m_, b), x = s;
+        do {
+            mark_[index(T::target(m_, x))] = mark_clock_;
+            ++valence_b;
+            x = T::next(m_, T::opposite(m_, x));
+        } while (x != s);
+        bool a_on_boundary = false;
+        s = T::vertex_halfedge(m_, a), x = s;
+        do {
+            if (T::face(m_, x) == T::null_face()) a_on_boundary = true;
+            const V k = T::target(m_, x);
+            if (x != h && k != c && k != d && mark_[index(k)] == mark_clock_) return false;
+            ++valence_a;
+            x = T::next(m_, T::opposite(m_, x));
+        } while (x != s);
+        if (a_on_boundary && T::face(m_, T::vertex_halfedge(m_, b)) == T::null_face()) return false;
+        if (valence_a == 3 && valence_b == 3)
+            return detail::triangle_ops::collapse_refusal<M, T>(m_, h, {})[0] == '\0';
+        return true;
+    }
+
     /// Makes the collapse if the geometry and the topology allow it; then the quadric of the
     /// survivor, the queue around it, and edges refused before near it. False: nothing changed.
     bool collapse(const candidate<H>& c) {
@@ -332,7 +370,9 @@ private:
         const V c0 = T::target(m_, T::next(m_, h)), c1 = T::target(m_, T::next(m_, o));
         // collapse_edge's steps without its error message, which a refusal would build for nothing:
         // the topology rules (the link condition), then the collapse itself.
-        if (dt::collapse_refusal<M, T>(m_, h, {})[0] != '\0') return false;
+        if (f0 != T::null_face() && f1 != T::null_face() ? !link_ok(h)
+                                                         : dt::collapse_refusal<M, T>(m_, h, {})[0] != '\0')
+            return false;
         auto links = dt::read_collapse_links<M, T>(m_, h);
         dt::apply_collapse<M, T>(m_, links, c.position);
         // The edges beside the edge went with their triangles.
@@ -354,7 +394,8 @@ private:
         const H s = T::vertex_halfedge(m_, b);
         H x = s;
         do {
-            update(std::uint32_t(T::edge_index(m_, T::edge(m_, x))));
+            const E ex = T::edge(m_, x);
+            update(ex, std::uint32_t(T::edge_index(m_, ex)));
             x = T::next(m_, T::opposite(m_, x));
         } while (x != s);
         do {
@@ -364,8 +405,9 @@ private:
                 const H t = T::vertex_halfedge(m_, n);
                 H y = t;
                 do {
-                    const std::uint32_t k = std::uint32_t(T::edge_index(m_, T::edge(m_, y)));
-                    if (refused_[k]) update(k);
+                    const E ey = T::edge(m_, y);
+                    const std::uint32_t k = std::uint32_t(T::edge_index(m_, ey));
+                    if (refused_[k]) update(ey, k);
                     y = T::next(m_, T::opposite(m_, y));
                 } while (y != t);
             }
@@ -383,6 +425,8 @@ private:
     std::vector<std::uint8_t> refused_;        // by edge index: left the queue refused, retried nearby
     std::vector<std::uint8_t> feature_;        // by edge index (empty without features)
     std::vector<std::uint8_t> feature_count_;  // by vertex index: feature edges at it, up to 3 (keep_features)
+    std::vector<std::uint32_t> mark_;  // by vertex index: == mark_clock_ for the link test's marked ring
+    std::uint32_t mark_clock_ = 0;
     std::size_t faces_ = 0;
     double cos_limit_ = 0;
     double sin_min_sq_ = 0;

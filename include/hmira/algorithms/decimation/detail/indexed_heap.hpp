@@ -48,6 +48,19 @@ public:
         lower ? up(i) : down(i);
     }
 
+    /// Appends an absent key without ordering; heapify() restores the order once all are in.
+    /// O(1).
+    void append(std::uint32_t key, double cost) {
+        place_[key] = size_;
+        entries_[size_++] = {cost, key};
+    }
+
+    /// Orders the entries (Floyd's bottom-up construction). O(n).
+    void heapify() {
+        if (size_ < 2) return;
+        for (std::uint32_t i = (size_ - 2) / arity + 1; i-- > 0;) down(i);
+    }
+
     /// Removes the key if present. O(log n).
     void erase(std::uint32_t key) {
         const std::uint32_t i = place_[key];
