@@ -349,8 +349,7 @@ private:
             x = T::next(m_, T::opposite(m_, x));
         } while (x != s);
         if (a_on_boundary && T::face(m_, T::vertex_halfedge(m_, b)) == T::null_face()) return false;
-        if (valence_a == 3 && valence_b == 3)
-            return detail::triangle_ops::collapse_refusal<M, T>(m_, h, {})[0] == '\0';
+        if (valence_a == 3 && valence_b == 3) return detail::triangle_ops::collapse_refusal<M, T>(m_, h, {})[0] == '\0';
         return true;
     }
 
@@ -425,7 +424,7 @@ private:
     std::vector<std::uint8_t> refused_;        // by edge index: left the queue refused, retried nearby
     std::vector<std::uint8_t> feature_;        // by edge index (empty without features)
     std::vector<std::uint8_t> feature_count_;  // by vertex index: feature edges at it, up to 3 (keep_features)
-    std::vector<std::uint32_t> mark_;  // by vertex index: == mark_clock_ for the link test's marked ring
+    std::vector<std::uint32_t> mark_;          // by vertex index: == mark_clock_ for the link test's marked ring
     std::uint32_t mark_clock_ = 0;
     std::size_t faces_ = 0;
     double cos_limit_ = 0;
