@@ -108,6 +108,9 @@ using exact_homogeneous = std::array<dynamic_expansion, 4>;
 
 }  // namespace detail
 
+/// A point that is either given (explicit) or constructed (a line-plane or three-plane
+/// intersection), kept as its definition: predicates on it are exact, filtered by interval
+/// arithmetic first, and its coordinates are rounded only when approximate() is asked.
 class exact_point {
 public:
     /// What defines the point.
