@@ -92,7 +92,7 @@ bool closed(const mesh& m) {
 /// The closed, self-intersection-free meshes of the test data used here, smallest first, each
 /// small enough that the whole test stays short under the sanitizers.
 const char* const names[] = {"colored_tetra.ply", "cube.off",       "icosahedron.off", "hole.off",
-                             "cross.off",         "blob-closed.off", "ellipsoid.off",  "geosphere.off", "anchor.off"};
+                             "cross.off",         "mpi_triang.off", "blob-closed.off", "ellipsoid.off", "geosphere.off"};
 
 std::filesystem::path data_dir() {
     const char* dir = std::getenv("HMIRA_TEST_DATA");
@@ -151,16 +151,27 @@ TEST(mesh_boolean_real_meshes, each_mesh_against_moved_copies_of_itself_and_the_
     }
 }
 
-TEST(mesh_boolean_real_meshes, anchor_against_a_slightly_rotated_copy) {
-    // A rotation by about one degree: the two surfaces cross at small angles everywhere, and the
-    // cuts of many triangles meet the triangles' own vertices nearly collinearly. Inserting such
-    // a cut used to meet a region whose boundary passes a vertex twice.
+/// name against a copy rotated by the quaternion q and moved by `shift`, both read from the test data.
+void check_moved_copy(const char* name, std::array<double, 4> q, double shift) {
     const auto dir = data_dir();
-    if (dir.empty() || !std::filesystem::exists(dir / "anchor.off")) GTEST_SKIP() << "HMIRA_TEST_DATA not set";
+    if (dir.empty() || !std::filesystem::exists(dir / name)) GTEST_SKIP() << "HMIRA_TEST_DATA not set";
     mesh m;
-    ASSERT_TRUE(io::read_mesh(m, dir / "anchor.off"));
-    const std::array<double, 4> q{127.46303580528117, 1.4035791012433743, 0.31745168898168086, 0.45462177781818719};
-    check_pair(m, moved(m, bounds(m), 0.021593227428048863, q), true);
+    ASSERT_TRUE(io::read_mesh(m, dir / name));
+    check_pair(m, moved(m, bounds(m), shift, q), true);
+}
+
+// In these two, a cut inserted into a triangle crosses a strip of triangles whose outline passes
+// one vertex twice, or encloses a vertex whose triangles the cut all crosses.
+TEST(mesh_boolean_real_meshes, mpi_triang_against_a_rotated_copy) {
+    check_moved_copy("mpi_triang.off",
+                     {-0.38683176162103994, -0.039399956754155308, 0.68682363917932543, -0.24894784633514505},
+                     0.2353760662451162);
+}
+
+TEST(mesh_boolean_real_meshes, anchor_against_a_rotated_copy) {
+    check_moved_copy("anchor.off",
+                     {0.031051152150535638, -1.7340822205750985, -2.3271919942491852, -0.12280543689105411},
+                     0.25695500502311425);
 }
 
 }  // namespace
