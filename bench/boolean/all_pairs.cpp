@@ -160,8 +160,7 @@ int main(int argc, char** argv) {
         if (volume(m) <= 0) continue;  // inward-wound
         meshes.emplace_back(f.filename().string(), std::move(m));
     }
-    std::printf("%zu closed, self-intersection-free, outward meshes of at most %zu faces\n", meshes.size(),
-                max_faces);
+    std::printf("%zu closed, self-intersection-free, outward meshes of at most %zu faces\n", meshes.size(), max_faces);
     std::size_t pass = 0, total = 0;
     for (std::size_t i = 0; i < meshes.size(); ++i) {
         const auto& [name, m] = meshes[i];

@@ -4,10 +4,11 @@
 // decision an exact predicate (predicates/exact_point.hpp).
 //
 // Points are inserted by splitting the triangle (or the two triangles of an edge) that holds
-// them; a segment is inserted by removing the triangles it crosses and triangulating the two
-// sides of it, each a chain of vertices that all see the segment (see carve). The triangulation is not Delaunay: the arrangement
-// needs conformity, not shape. Per triangle the cost is O(n^2) for n inserted points, which stays
-// small for the usual case of a few cuts per triangle.
+// them; a segment is inserted by walking along it, removing the triangles it crosses and
+// triangulating the two sides of it, each a chain of vertices that all reach the segment (see
+// carve). The triangulation is not Delaunay: the arrangement needs conformity, not shape. Per
+// triangle the cost is O(n^2) for n inserted points, which stays small for the usual case of a
+// few cuts per triangle.
 #pragma once
 
 #include <algorithm>
@@ -183,8 +184,7 @@ private:
             if (r == b) break;
             const int side = orient(a, b, r);
             if (side == 0) return false;  // r on the line of ab but not on the segment: impossible
-            if (side > 0) p = r;
-            else q = r;
+            (side > 0 ? p : q) = r;       // the exit edge keeps the end on the other side
             if (!cross(p, q)) return false;
         }
         std::vector<tri3> kept;
@@ -209,7 +209,8 @@ private:
     /// p, q, c' is a triangle of smaller area inside it. Such a c occurs once in the chain (a chain
     /// that leaves c and comes back encloses a vertex inside p, q, c), and splits it in two chains
     /// of the same kind, on the bases pc and cq. Every step is an exact orient; the recursion
-    /// depth is at most the chain length, and the work O(n^2) for n chain vertices.
+    /// depth is at most the chain length n, and each triangle costs O(n) orients per move, at
+    /// most n moves (one when, as usual, the first vertex tried is already free).
     bool fill_side(vid p, vid q, const std::vector<vid>& side, std::vector<tri3>& out) const {
         if (side.empty()) return true;
         std::size_t best = 0;
