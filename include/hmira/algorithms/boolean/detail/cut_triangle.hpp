@@ -6,9 +6,10 @@
 // Points are inserted by splitting the triangle (or the two triangles of an edge) that holds
 // them; a segment is inserted by walking along it, removing the triangles it crosses and
 // triangulating the two sides of it, each a chain of vertices that all reach the segment (see
-// carve). The triangulation is not Delaunay: the arrangement needs conformity, not shape. Per
-// triangle the cost is O(n^2) for n inserted points, which stays small for the usual case of a
-// few cuts per triangle.
+// carve). The triangulation is not Delaunay: the arrangement needs conformity, not shape. The
+// triangles are a flat list scanned linearly: O(n) per point and O(n^2) per segment (a scan per
+// step of the walk), O(n^3) per triangle for n inserted points and segments, which stays small
+// for the usual case of a few cuts per triangle.
 #pragma once
 
 #include <algorithm>
