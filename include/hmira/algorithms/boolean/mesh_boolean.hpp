@@ -80,7 +80,7 @@ concept boolean_input_mesh = face_triangulable_mesh<M, T> && vertex_index_mesh<M
 /// that is not finite or outside predicates::in_implicit_range; errc::unsupported when one
 /// triangle's cuts cross each other (an input that intersects itself); errc::cancelled; those
 /// of building `out`.
-/// Complexity: O(T log T + K + sum over cut triangles of n_t^2 + P F) for T triangles, K box-
+/// Complexity: O(T log T + K + sum over cut triangles of n_t^3 + P F) for T triangles, K box-
 /// overlapping pairs, n_t cuts in triangle t, P patches and F faces: each pair is O(1) exact
 /// predicates, almost all settled by the floating-point filter.
 template <class MO, class MA, class MB, class TO = default_traits<MO>, class TA = default_traits<MA>,

@@ -4,10 +4,12 @@
 // decision an exact predicate (predicates/exact_point.hpp).
 //
 // Points are inserted by splitting the triangle (or the two triangles of an edge) that holds
-// them; a segment is inserted by removing the triangles it crosses and triangulating the two
-// polygons on either side of it by ear clipping. The triangulation is not Delaunay: the arrangement
-// needs conformity, not shape. Per triangle the cost is O(n^2) for n inserted points, which stays
-// small for the usual case of a few cuts per triangle.
+// them; a segment is inserted by walking along it, removing the triangles it crosses and
+// triangulating the two sides of it, each a chain of vertices that all reach the segment (see
+// carve). The triangulation is not Delaunay: the arrangement needs conformity, not shape. The
+// triangles are a flat list scanned linearly: O(n) per point and O(n^2) per segment (a scan per
+// step of the walk), O(n^3) per triangle for n inserted points and segments, which stays small
+// for the usual case of a few cuts per triangle.
 #pragma once
 
 #include <algorithm>
@@ -137,77 +139,100 @@ private:
         return std::find(constraints_.begin(), constraints_.end() - 1, e) != constraints_.end() - 1;
     }
 
-    /// Removes the triangles the open segment ab crosses and fills the two sides by ear clipping.
+    /// Removes the triangles the open segment ab crosses and triangulates the two sides.
     /// \pre no vertex lies on the open segment ab, and ab is not an edge.
+    ///
+    /// The triangles are found by walking from a along ab, edge by edge. Each crossed edge has one
+    /// end left of ab and one right; the left ends, in the order the edges are crossed (repeats in
+    /// a row dropped), form the left side, the right ends the right side. A side is not always a
+    /// simple polygon: it can pass through one vertex twice around triangles the walk did not
+    /// remove, or run out to a vertex whose triangles were all removed and back (a vertex is then
+    /// enclosed by the strip). Each such side is triangulated by fill_side, which relies only on
+    /// every vertex of the side reaching ab along the part of its crossed edge that lies on that side.
     bool carve(vid a, vid b) {
         std::vector<char> cut(tris_.size(), 0);
-        for (std::size_t i = 0; i < tris_.size(); ++i)
-            for (std::size_t m = 0; m < 3; ++m) {
-                const vid p = tris_[i][m], q = tris_[i][(m + 1) % 3];
-                if (orient(a, b, p) * orient(a, b, q) < 0 && orient(p, q, a) * orient(p, q, b) < 0) {
-                    if (is_constraint(p, q)) return false;
-                    cut[i] = 1;
-                }
-            }
-        // The boundary of the removed strip: directed edges whose reverse was not removed.
-        std::vector<std::array<vid, 2>> edges;
-        for (std::size_t i = 0; i < tris_.size(); ++i)
-            if (cut[i])
-                for (std::size_t m = 0; m < 3; ++m) edges.push_back({tris_[i][m], tris_[i][(m + 1) % 3]});
-        std::vector<std::array<vid, 2>> boundary;
-        for (const auto& e : edges)
-            if (std::find(edges.begin(), edges.end(), std::array<vid, 2>{e[1], e[0]}) == edges.end())
-                boundary.push_back(e);
-        auto next = [&](vid v) {
-            for (const auto& e : boundary)
-                if (e[0] == v) return e[1];
-            return v;
+        std::vector<vid> left, right;
+        auto cross = [&](vid p, vid q) {  // the edge pq, crossed by ab, p left of it
+            if (is_constraint(p, q)) return false;
+            if (left.empty() || left.back() != p) left.push_back(p);
+            if (right.empty() || right.back() != q) right.push_back(q);
+            return true;
         };
+        // The triangle at a that ab leaves through, and its edge pq opposite a (p left of ab).
+        vid p = a, q = a;
+        for (std::size_t i = 0; i < tris_.size() && p == a; ++i)
+            for (std::size_t m = 0; m < 3; ++m) {
+                const vid u = tris_[i][(m + 1) % 3], w = tris_[i][(m + 2) % 3];
+                if (tris_[i][m] != a || orient(a, u, b) <= 0 || orient(a, b, w) <= 0) continue;
+                cut[i] = 1;
+                p = w, q = u;  // counter-clockwise a, u, w: w is left of ab, u right
+                break;
+            }
+        if (p == a || !cross(p, q)) return false;
+        // Across each crossed edge to the next triangle, until the one with corner b.
+        for (std::size_t steps = 0;; ++steps) {
+            if (steps > tris_.size()) return false;  // only a broken triangulation gets here
+            std::size_t next = tris_.size(), m = 0;
+            for (std::size_t i = 0; i < tris_.size() && next == tris_.size(); ++i)
+                for (m = 0; m < 3; ++m)
+                    if (tris_[i][m] == p && tris_[i][(m + 1) % 3] == q) {
+                        next = i;
+                        break;
+                    }
+            if (next == tris_.size() || cut[next]) return false;
+            cut[next] = 1;
+            const vid r = tris_[next][(m + 2) % 3];
+            if (r == b) break;
+            const int side = orient(a, b, r);
+            if (side == 0) return false;  // r on the line of ab but not on the segment: impossible
+            (side > 0 ? p : q) = r;       // the exit edge keeps the end on the other side
+            if (!cross(p, q)) return false;
+        }
         std::vector<tri3> kept;
         for (std::size_t i = 0; i < tris_.size(); ++i)
             if (!cut[i]) kept.push_back(tris_[i]);
-        // Two loops, each counter-clockwise: a ... b then back along ba, and b ... a then ab.
-        for (vid start : {a, b}) {
-            const vid stop = start == a ? b : a;
-            std::vector<vid> poly{start};
-            for (vid v = next(start); v != stop; v = next(v)) {
-                if (poly.size() > boundary.size()) return false;  // not a simple strip
-                poly.push_back(v);
-            }
-            poly.push_back(stop);
-            if (!ear_clip(poly, kept)) return false;
-        }
+        // The left side lies left of a->b in the order crossed; the right side left of b->a
+        // when read backwards.
+        std::reverse(right.begin(), right.end());
+        if (!fill_side(a, b, left, kept) || !fill_side(b, a, right, kept)) return false;
         tris_ = std::move(kept);
         return true;
     }
 
-    /// Triangulates the simple counter-clockwise polygon by ear clipping, exactly.
-    bool ear_clip(std::vector<vid> poly, std::vector<tri3>& out) const {
-        while (poly.size() > 3) {
-            bool clipped = false;
-            for (std::size_t i = 0; i < poly.size() && !clipped; ++i) {
-                const std::size_t n = poly.size();
-                const vid u = poly[(i + n - 1) % n], v = poly[i], w = poly[(i + 1) % n];
-                if (orient(u, v, w) <= 0) continue;
-                bool empty = true;
-                for (vid x : poly)
-                    if (x != u && x != v && x != w && orient(u, v, x) >= 0 && orient(v, w, x) >= 0 &&
-                        orient(w, u, x) >= 0) {
-                        empty = false;
-                        break;
-                    }
-                if (!empty) continue;
-                out.push_back({u, v, w});
-                poly.erase(poly.begin() + std::ptrdiff_t(i));
-                clipped = true;
+    /// Triangulates the region between the segment pq and the chain `side` (every vertex strictly
+    /// left of p->q, ordered from p's end to q's), adding counter-clockwise triangles to `out`.
+    ///
+    /// Each vertex c of the chain reaches pq by a segment inside the region (part of an edge it
+    /// had in the removed triangles), and these segments meet pq in chain order. The triangle
+    /// p, q, c is then inside the region and meets no other part of the boundary as soon as it
+    /// holds no other chain vertex: a chain edge entering it would have to cut c off from pq, across
+    /// c's own segment. Such a c exists: while the triangle p, q, c holds another chain vertex c',
+    /// p, q, c' is a triangle of smaller area inside it. Such a c occurs once in the chain (a chain
+    /// that leaves c and comes back encloses a vertex inside p, q, c), and splits it in two chains
+    /// of the same kind, on the bases pc and cq. Every step is an exact orient; the recursion
+    /// depth is at most the chain length n, and each triangle costs O(n) orients per move, at
+    /// most n moves (one when, as usual, the first vertex tried is already free).
+    bool fill_side(vid p, vid q, const std::vector<vid>& side, std::vector<tri3>& out) const {
+        if (side.empty()) return true;
+        std::size_t best = 0;
+        for (std::size_t moves = 0, moved = 1; moved; ++moves) {
+            if (moves > side.size()) return false;  // each move goes to a smaller, nested triangle
+            moved = 0;
+            const vid c = side[best];
+            if (orient(p, q, c) <= 0) return false;  // not a side of the kind described
+            for (std::size_t i = 0; i < side.size(); ++i) {
+                const vid x = side[i];
+                if (x == c || orient(p, q, x) < 0 || orient(q, c, x) < 0 || orient(c, p, x) < 0) continue;
+                best = i;
+                moved = 1;
+                break;
             }
-            if (!clipped) return false;
         }
-        if (poly.size() == 3) {
-            if (orient(poly[0], poly[1], poly[2]) <= 0) return false;
-            out.push_back({poly[0], poly[1], poly[2]});
-        }
-        return true;
+        const vid c = side[best];
+        out.push_back({p, q, c});
+        const std::vector<vid> before(side.begin(), side.begin() + std::ptrdiff_t(best));
+        const std::vector<vid> after(side.begin() + std::ptrdiff_t(best) + 1, side.end());
+        return fill_side(p, c, before, out) && fill_side(c, q, after, out);
     }
 
     const std::vector<exact_point>& pts_;
