@@ -1,13 +1,18 @@
 // Booleans of OFF pairs in C++, for bench/boolean/run.sh: CGAL's corefinement with the Epick
-// kernel on Surface_mesh. Each case is timed two ways, the median of --reps runs: the operation
-// alone (both inputs already in Surface_mesh, copied outside the timed region), and from arrays
-// to arrays (building both Surface_mesh from vertex and triangle arrays, the operation, and
-// reading the output back into arrays). A refusal (CGAL throws or returns false) is reported,
-// not fatal. Each output is checked with CGAL's own is_valid_polygon_mesh, is_closed and
-// does_self_intersect, and its volume printed for the volume identity.
+// kernel on Surface_mesh, and hmira::mesh_boolean. Each case is timed two ways, the median of
+// --reps runs: the operation alone (both inputs already in the tool's mesh, copied outside the
+// timed region), and from arrays to arrays (building both meshes from vertex and triangle
+// arrays, the operation, and reading the output back into arrays). hmira's operation alone is
+// timed on its halfedge_mesh, and, the same generic code on other models, on CGAL's Surface_mesh
+// and (where compiled in) OpenMesh's TriMesh with double points; its arrays route goes through
+// face_vertex_mesh. A refusal (CGAL throws or returns false, hmira returns an error) is
+// reported, not fatal. Each output is checked with CGAL's own is_valid_polygon_mesh, is_closed
+// and does_self_intersect (hmira's output copied into a Surface_mesh for that), and its volume
+// printed for the volume identity.
 // Usage: boolean_bench --op union|intersection|difference --reps N A.off B.off
-// Prints one line: "cgal op=<op> alone=<s> arrays=<s> faces=<n> volume=<v> valid=<0|1> closed=<0|1>
-// self_intersecting=<0|1> refused=<0|1>".
+// Prints two lines: "cgal op=<op> alone=<s> arrays=<s> faces=<n> volume=<v> valid=<0|1> closed=<0|1>
+// self_intersecting=<0|1> refused=<0|1>", then "hmira" with the same keys and surface_mesh=<s>,
+// openmesh=<s> (-1 where not compiled in), cut=<n> snapped=<n> rounding=<n> from the report.
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -23,8 +28,15 @@
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Surface_mesh.h>
+#include <hmira/algorithms/boolean/mesh_boolean.hpp>
+#include <hmira/interop/cgal.hpp>
 #include <hmira/io/mesh_io.hpp>
+#include <hmira/meshes/face_vertex_mesh.hpp>
 #include <hmira/meshes/halfedge_mesh.hpp>
+#ifdef HMIRA_BENCH_WITH_OPENMESH
+#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+#include <hmira/interop/openmesh.hpp>
+#endif
 
 namespace {
 
@@ -106,6 +118,73 @@ double median(std::vector<double> t) {
     return t[t.size() / 2];
 }
 
+/// The result of one tool on one case, as the output line reports it.
+struct outcome {
+    std::vector<double> alone, whole;
+    surface result;
+    bool refused = false;
+};
+
+void print_line(const char* tool, const std::string& op, const outcome& o, const std::string& extra = "") {
+    const bool valid = !o.refused && CGAL::is_valid_polygon_mesh(o.result);
+    const bool closed = !o.refused && CGAL::is_closed(o.result);
+    const bool crossing = !o.refused && !o.result.is_empty() && pmp::does_self_intersect(o.result);
+    const double volume = o.refused || !closed ? 0.0 : pmp::volume(o.result);
+    std::printf(
+        "%s op=%s alone=%.6f arrays=%.6f faces=%zu volume=%.17g valid=%d closed=%d self_intersecting=%d "
+        "refused=%d%s\n",
+        tool, op.c_str(), o.alone.empty() ? -1.0 : median(o.alone), o.whole.empty() ? -1.0 : median(o.whole),
+        std::size_t(o.result.number_of_faces()), volume, int(valid), int(closed), int(crossing), int(o.refused),
+        extra.c_str());
+}
+
+hmira::boolean_op hmira_op(const std::string& op) { return *hmira::from_string<hmira::boolean_op>(op); }
+
+/// Any hmira model built from arrays (the polygon soup route every reader takes).
+template <class M>
+M to_model(const arrays& a) {
+    hmira::io::polygon_soup s;
+    for (std::size_t i = 0; i < a.xyz.size(); i += 3) s.points.push_back({a.xyz[i], a.xyz[i + 1], a.xyz[i + 2]});
+    for (const auto& t : a.tri) {
+        for (auto v : t) s.indices.push_back(std::uint32_t(v));
+        s.face_offsets.push_back(s.indices.size());
+    }
+    M m;
+    if (auto r = hmira::io::assign_from_soup(m, s, [](std::size_t) { return std::string("input"); }); !r) {
+        std::fprintf(stderr, "boolean_bench: %s\n", r.error().message.c_str());
+        std::exit(2);
+    }
+    return m;
+}
+
+/// A triangle mesh of any hmira model read back into arrays (vertex indices as the model numbers them).
+template <class M>
+arrays model_arrays(const M& m) {
+    using T = hmira::default_traits<M>;
+    arrays a;
+    for (auto v : T::vertices(m)) {
+        const auto p = T::position(m, v);
+        a.xyz.insert(a.xyz.end(), {double(p[0]), double(p[1]), double(p[2])});
+    }
+    for (auto f : T::faces(m)) {
+        std::array<std::size_t, 3> t{};
+        int k = 0;
+        for (auto v : T::face_vertices(m, f)) t[std::size_t(std::min(k++, 2))] = T::vertex_index(m, v);
+        a.tri.push_back(t);
+    }
+    return a;
+}
+
+/// Seconds of hmira::mesh_boolean alone on inputs of model M (built outside the timed region).
+template <class M>
+double hmira_alone_on(const M& ma, const M& mb, const std::string& op) {
+    hmira::halfedge_mesh out;
+    const auto t0 = clock_type::now();
+    auto r = hmira::mesh_boolean(out, ma, mb, {.op = hmira_op(op)});
+    const double s = std::chrono::duration<double>(clock_type::now() - t0).count();
+    return r ? s : -1.0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -125,36 +204,75 @@ int main(int argc, char** argv) {
         return 2;
     }
     const arrays a = read_arrays(files[0]), b = read_arrays(files[1]);
-    std::vector<double> alone, whole;
-    surface result;
-    bool refused = false;
-    for (int r = 0; r < reps && !refused; ++r) {
+    outcome cgal;
+    for (int r = 0; r < reps && !cgal.refused; ++r) {
         try {
             surface sa = to_surface(a), sb = to_surface(b), out;
             const auto t0 = clock_type::now();
             const bool ok = run_op(op, sa, sb, out);
-            alone.push_back(std::chrono::duration<double>(clock_type::now() - t0).count());
-            if (!ok) refused = true;
+            cgal.alone.push_back(std::chrono::duration<double>(clock_type::now() - t0).count());
+            if (!ok) cgal.refused = true;
             const auto t1 = clock_type::now();
             surface wa = to_surface(a), wb = to_surface(b), wout;
             run_op(op, wa, wb, wout);
             const arrays back = from_surface(wout);
-            whole.push_back(std::chrono::duration<double>(clock_type::now() - t1).count());
-            if (back.tri.empty() && !out.is_empty()) refused = true;
-            result = std::move(out);
+            cgal.whole.push_back(std::chrono::duration<double>(clock_type::now() - t1).count());
+            if (back.tri.empty() && !out.is_empty()) cgal.refused = true;
+            cgal.result = std::move(out);
         } catch (const std::exception& e) {
             std::fprintf(stderr, "cgal refused: %s\n", e.what());
-            refused = true;
+            cgal.refused = true;
         }
     }
-    const bool valid = !refused && CGAL::is_valid_polygon_mesh(result);
-    const bool closed = !refused && CGAL::is_closed(result);
-    const bool crossing = !refused && !result.is_empty() && pmp::does_self_intersect(result);
-    const double volume = refused || !closed ? 0.0 : pmp::volume(result);
-    std::printf(
-        "cgal op=%s alone=%.6f arrays=%.6f faces=%zu volume=%.17g valid=%d closed=%d self_intersecting=%d "
-        "refused=%d\n",
-        op.c_str(), alone.empty() ? -1.0 : median(alone), whole.empty() ? -1.0 : median(whole),
-        std::size_t(result.number_of_faces()), volume, int(valid), int(closed), int(crossing), int(refused));
+    print_line("cgal", op, cgal);
+    std::fflush(stdout);
+
+    outcome ours;
+    std::vector<double> on_surface, on_openmesh;
+    hmira::boolean_report report;
+    const auto ha = to_model<hmira::halfedge_mesh>(a), hb = to_model<hmira::halfedge_mesh>(b);
+    const surface sa = to_surface(a), sb = to_surface(b);
+#ifdef HMIRA_BENCH_WITH_OPENMESH
+    struct double_points : OpenMesh::DefaultTraits {
+        using Point = OpenMesh::Vec3d;
+    };
+    using om_tri = OpenMesh::TriMesh_ArrayKernelT<double_points>;
+    om_tri oa, ob;
+    for (auto [src, dst] : {std::pair{&a, &oa}, std::pair{&b, &ob}}) {
+        std::vector<om_tri::VertexHandle> vs;
+        for (std::size_t i = 0; i < src->xyz.size(); i += 3)
+            vs.push_back(dst->add_vertex({src->xyz[i], src->xyz[i + 1], src->xyz[i + 2]}));
+        for (const auto& t : src->tri) dst->add_face(vs[t[0]], vs[t[1]], vs[t[2]]);
+    }
+#endif
+    for (int r = 0; r < reps && !ours.refused; ++r) {
+        hmira::halfedge_mesh out;
+        const auto t0 = clock_type::now();
+        auto done = hmira::mesh_boolean(out, ha, hb, {.op = hmira_op(op)});
+        ours.alone.push_back(std::chrono::duration<double>(clock_type::now() - t0).count());
+        if (!done) {
+            std::fprintf(stderr, "hmira refused: %s\n", done.error().message.c_str());
+            ours.refused = true;
+            break;
+        }
+        report = std::move(*done);
+        const auto t1 = clock_type::now();
+        const auto fa = to_model<hmira::face_vertex_mesh>(a), fb = to_model<hmira::face_vertex_mesh>(b);
+        hmira::face_vertex_mesh fout;
+        const bool whole_ok = bool(hmira::mesh_boolean(fout, fa, fb, {.op = hmira_op(op)}));
+        const arrays back = model_arrays(fout);
+        ours.whole.push_back(std::chrono::duration<double>(clock_type::now() - t1).count());
+        if (!whole_ok || back.tri.size() != out.face_count()) ours.refused = true;
+        on_surface.push_back(hmira_alone_on(sa, sb, op));
+#ifdef HMIRA_BENCH_WITH_OPENMESH
+        on_openmesh.push_back(hmira_alone_on(oa, ob, op));
+#endif
+        if (r + 1 == reps) ours.result = to_surface(model_arrays(out));
+    }
+    char extra[256];
+    std::snprintf(extra, sizeof extra, " surface_mesh=%.6f openmesh=%.6f cut=%zu snapped=%zu rounding=%zu",
+                  on_surface.empty() ? -1.0 : median(on_surface), on_openmesh.empty() ? -1.0 : median(on_openmesh),
+                  report.cut_triangles, report.snapped_vertices, report.rounding_intersections);
+    print_line("hmira", op, ours, extra);
     return 0;
 }

@@ -1,5 +1,6 @@
 """Mesh booleans side by side: Manifold (manifold3d), libigl's copyleft.cgal.mesh_boolean and, through
-boolean_bench (C++), CGAL's corefinement with Epick, on the same inputs, in one run.
+boolean_bench (C++), CGAL's corefinement with Epick and hmira's mesh_boolean, on the same inputs, in
+one run (hmira's row adds its operation alone on Surface_mesh and OpenMesh inputs, -1 where not built).
 
 Inputs (written as OFF into --out, so that every tool reads the same numbers):
   sphere448:  Manifold's own perf test, Sphere(1, 448) (100,352 triangles) minus a copy translated by
@@ -150,13 +151,20 @@ def main():
             rows[tool] = t_whole
             print(f"{name:12} {tool:8} {t_alone:9.4f} {t_whole:9.4f} {len(t):9d} {str(closed(t)):>6} {volume(v, t):14.9g}")
         if a.cgal:
-            line = subprocess.run([a.cgal, "--op", a.op, "--reps", str(a.reps), str(pa), str(pb)],
-                                  capture_output=True, text=True).stdout.strip()
-            fields = dict(kv.split("=") for kv in line.split()[1:])
-            print(f"{name:12} {'cgal':8} {float(fields['alone']):9.4f} {float(fields['arrays']):9.4f} "
-                  f"{int(fields['faces']):9d} {str(fields['closed'] == '1'):>6} {float(fields['volume']):14.9g}"
-                  f"  valid={fields['valid']} self_intersecting={fields['self_intersecting']} refused={fields['refused']}")
-
+            # boolean_bench prints one line per tool (cgal, then hmira): "<tool> key=value ...".
+            lines = subprocess.run([a.cgal, "--op", a.op, "--reps", str(a.reps), str(pa), str(pb)],
+                                   capture_output=True, text=True).stdout.strip().splitlines()
+            for line in lines:
+                tool, *pairs = line.split()
+                fields = dict(kv.split("=") for kv in pairs)
+                note = (f"  valid={fields['valid']} self_intersecting={fields['self_intersecting']}"
+                        f" refused={fields['refused']}")
+                if tool == "hmira":
+                    note += (f" surface_mesh={float(fields['surface_mesh']):.4f}"
+                             f" openmesh={float(fields['openmesh']):.4f} cut={fields['cut']} snapped={fields['snapped']} rounding={fields['rounding']}")
+                print(f"{name:12} {tool:8} {float(fields['alone']):9.4f} {float(fields['arrays']):9.4f} "
+                      f"{int(fields['faces']):9d} {str(fields['closed'] == '1'):>6} {float(fields['volume']):14.9g}"
+                      + note)
 
 if __name__ == "__main__":
     main()

@@ -25,13 +25,14 @@ import numpy as np
 
 from . import _core
 from ._core import BVH, Topology, delaunay_triangulation
-from ._core import hausdorff_distance, signed_distance, winding_number
-from ._core import (BevelResult, DecimateResult, ExtrudeResult, FillHolesResult, OpenHole, RemeshResult,
+from ._core import hausdorff_distance, mesh_boolean, signed_distance, winding_number
+from ._core import (BevelResult, BooleanResult, DecimateResult, ExtrudeResult, FillHolesResult, OpenHole, RemeshResult,
                     SubdivideResult, TriangulateResult, TruncateResult)
 
 __all__ = [
     "BVH",
     "BevelResult",
+    "BooleanResult",
     "DecimateResult",
     "ExtrudeResult",
     "FillHolesResult",
@@ -50,6 +51,7 @@ __all__ = [
     "flip_normals",
     "hausdorff_distance",
     "marching_cubes",
+    "mesh_boolean",
     "mesh_topology",
     "read_mesh",
     "read_volume",

@@ -330,6 +330,47 @@ class TriangulateResult:
 
     __hash__: None = None
 
+class BooleanResult:
+    """
+    What mesh_boolean made: the new Mesh, per output face its origin (origin_mesh 0 for a, 1 for b; origin_face the face there), candidate pairs tested, input triangles cut, snapped vertices, degenerate faces and face pairs that rounding made intersect.
+    """
+
+    @property
+    def mesh(self) -> object: ...
+
+    @property
+    def origin_mesh(self) -> object: ...
+
+    @property
+    def origin_face(self) -> object: ...
+
+    @property
+    def intersecting_pairs(self) -> int: ...
+
+    @property
+    def cut_triangles(self) -> int: ...
+
+    @property
+    def snapped_vertices(self) -> int: ...
+
+    @property
+    def degenerate_faces(self) -> int: ...
+
+    @property
+    def rounding_intersections(self) -> int: ...
+
+    def __getitem__(self, key: str) -> object:
+        """The field `key`, as the dict results of earlier versions offered it."""
+
+    def keys(self) -> list:
+        """The field names, in order (with __getitem__, dict(result) works)."""
+
+    def __eq__(self, other: object | None) -> bool: ...
+
+    def __repr__(self) -> str: ...
+
+    __hash__: None = None
+
 class Topology:
     """Counts of a mesh's elements and its topological invariants."""
 
@@ -786,4 +827,37 @@ def signed_distance(vertices: Annotated[NDArray, dict(device='cpu', writable=Fal
 def hausdorff_distance(a: object, b: object, *, per_triangle: int = 10, min_samples: int = 1000000, seed: int = 11400714819323198485, threads: int = 0) -> dict:
     """
     Sampled Hausdorff distance between two surfaces, each a Mesh or a (vertices, faces) pair: {'symmetric', 'a_to_b', 'b_to_a'}, each direction {'max', 'mean', 'rms', 'samples'}.
+    """
+
+def mesh_boolean(a: object, b: object, *, op: str = 'union') -> BooleanResult:
+    """
+    Union, intersection, difference (a minus b) or symmetric difference of two closed meshes, computed exactly (hmira::mesh_boolean).
+
+    Parameters
+    ----------
+    a, b : Mesh or (vertices, faces)
+        Closed, oriented outward, free of self-intersections; polygons are cut into triangles.
+    op : str, keyword-only
+        'union' (default), 'intersection', 'difference' or 'xor'.
+
+    Returns
+    -------
+    BooleanResult
+        mesh (a new Mesh of triangles; empty for an empty result; where the result touches itself along edges, as an xor of overlapping meshes does along the intersection curve, those edges' vertices are split as read_mesh repairs, and mesh.repairs says so), origin_mesh (uint8 per output face: 0 for a, 1 for b), origin_face (int64 per output face: the face of that input it lies in), and the counts intersecting_pairs, cut_triangles, snapped_vertices, degenerate_faces, rounding_intersections.
+
+    Raises
+    ------
+    ValueError
+        An unknown op, a non-finite coordinate, an input that intersects itself.
+    KeyboardInterrupt
+        Ctrl-C; nothing is returned.
+
+    Examples
+    --------
+    >>> import hmira
+    >>> V = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]]
+    >>> F = [[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]]
+    >>> r = hmira.mesh_boolean(hmira.Mesh(V, F), hmira.Mesh(V, F), op='difference')
+    >>> r.mesh.face_count, len(r.origin_face)
+    (0, 0)
     """

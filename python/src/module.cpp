@@ -8,6 +8,7 @@ namespace hmira_py {
 void bind_volume_io(nb::module_& m);        // .inr / .raw volumes for hmira.read_volume (volume_io.cpp)
 void bind_decimate_blocks(nb::module_& m);  // one block of hmira.dask.decimate (decimate_blocks.cpp)
 void bind_results(nb::module_& m);          // the typed results of the Mesh operations (results.cpp)
+void bind_boolean(nb::module_& m);          // mesh_boolean (boolean.cpp)
 
 void register_errors(nb::module_&) {
     nb::register_exception_translator([](const std::exception_ptr& p, void*) {
@@ -39,4 +40,5 @@ NB_MODULE(_core, m) {
     hmira_py::bind_volume_io(m);
     hmira_py::bind_queries(m);
     hmira_py::bind_decimate_blocks(m);
+    hmira_py::bind_boolean(m);
 }

@@ -101,6 +101,16 @@ void bind_results(nb::module_& m) {
     bind_result<triangulate_report>(
         m, "TriangulateResult", "What Mesh.triangulate_faces did: faces cut, triangles added.",
         f("faces_cut", &triangulate_report::faces_cut), f("triangles_added", &triangulate_report::triangles_added));
+    bind_result<boolean_result>(
+        m, "BooleanResult",
+        "What mesh_boolean made: the new Mesh, per output face its origin (origin_mesh 0 for a, 1 for b; "
+        "origin_face the face there), candidate pairs tested, input triangles cut, snapped vertices, degenerate "
+        "faces and face pairs that rounding made intersect.",
+        f("mesh", &boolean_result::mesh), f("origin_mesh", &boolean_result::origin_mesh),
+        f("origin_face", &boolean_result::origin_face), f("intersecting_pairs", &boolean_result::intersecting_pairs),
+        f("cut_triangles", &boolean_result::cut_triangles), f("snapped_vertices", &boolean_result::snapped_vertices),
+        f("degenerate_faces", &boolean_result::degenerate_faces),
+        f("rounding_intersections", &boolean_result::rounding_intersections));
 }
 
 }  // namespace hmira_py

@@ -8,6 +8,7 @@
 #include "common.hpp"
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -55,6 +56,15 @@ struct subdivide_report {
 /// Mesh.triangulate_faces (hmira::triangulate_faces_result).
 struct triangulate_report {
     std::size_t faces_cut = 0, triangles_added = 0;
+};
+
+/// hmira.mesh_boolean (hmira::boolean_report; the face origins as arrays, the new Mesh).
+struct boolean_result {
+    nb::object mesh;
+    nb::object origin_mesh;  ///< uint8 numpy array, one per output face
+    nb::object origin_face;  ///< int64 numpy array, one per output face
+    std::size_t intersecting_pairs = 0, cut_triangles = 0, snapped_vertices = 0, degenerate_faces = 0,
+                rounding_intersections = 0;
 };
 
 /// Binds the result classes (results.cpp).

@@ -269,6 +269,7 @@ const char* with_input[] = {
     "extrude IN OUT --all --mode individual",
     "voxelize IN OUT -n 4",
     "view IN OUT",
+    "boolean IN in.off OUT --op difference",
 };
 
 /// An octahedron: triangles, closed, so that every subcommand above gets as far as writing.

@@ -288,6 +288,9 @@ TEST(cli_faults, every_documented_failure_exits_with_its_documented_code) {
         {"convert c.off no/such/folder/x.off", 3},
         {"mc missing.inr x.obj", 3},
         {"delaunay missing.xyz x.off", 3},
+        {"boolean c.off nan.off x.off", 1},
+        {"boolean c.off c.off x.off --op minus", 2},
+        {"boolean c.off missing.off x.off", 3},
     };
     if (const auto deg = data_file("degtri_sliding.off"); !deg.empty() && std::filesystem::exists(deg))
         failures.push_back({"extrude '" + deg + "' x.off --all --mode individual", 1});

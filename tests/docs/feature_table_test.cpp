@@ -37,6 +37,7 @@
 #include <hmira/algorithms/primitives/primitives.hpp>
 #include <hmira/algorithms/remeshing/isotropic_remeshing.hpp>
 #include <hmira/algorithms/smoothing/laplacian_smooth.hpp>
+#include <hmira/algorithms/boolean/mesh_boolean.hpp>
 #include <hmira/algorithms/decimation/decimate.hpp>
 #include <hmira/algorithms/spatial/aabb_tree.hpp>
 #include <hmira/algorithms/spatial/winding_number.hpp>
@@ -226,6 +227,9 @@ HMIRA_ROW(row_inside_closed, "inside_closed, closed_winding_number (exact)", "al
           hmira::inside_closed<M, T>(m, p));
 HMIRA_ROW(row_self_intersections, "self_intersections (exact)", "algorithms/validation/self_intersections.hpp",
           hmira::self_intersection_mesh, (const M& m), hmira::self_intersections<M, T>(m));
+HMIRA_ROW(row_boolean, "mesh_boolean (exact; from this model, e.g. into halfedge_mesh)",
+          "algorithms/boolean/mesh_boolean.hpp", hmira::boolean_input_mesh, (const M& a, hmira::halfedge_mesh& out),
+          hmira::mesh_boolean<hmira::halfedge_mesh, M, M>(out, a, a));
 HMIRA_ROW(row_measures, "surface_area, signed_volume", "algorithms/geometry/mesh_measures.hpp", hmira::face_normal_mesh,
           (const M& m), hmira::signed_volume<M, T>(m));
 HMIRA_ROW(row_marching_cubes, "marching_cubes (into the mesh)", "algorithms/conversion/marching_cubes.hpp",
@@ -252,8 +256,8 @@ using rows =
              row_split_face, row_collapse_edge, row_face_triangles, row_triangulate_faces, row_fill_hole,
              row_fill_holes, row_loop, row_sqrt3, row_catmull_clark, row_decimate, row_smooth, row_remesh,
              row_copy_from, row_copy_into, row_aabb_tree, row_surface_queries, row_bvh, row_inside_closed,
-             row_self_intersections, row_measures, row_marching_cubes, row_voxelize, row_delaunay, row_read, row_write,
-             row_adapt_brute, row_adapt_indexed>;
+             row_self_intersections, row_boolean, row_measures, row_marching_cubes, row_voxelize, row_delaunay,
+             row_read, row_write, row_adapt_brute, row_adapt_indexed>;
 
 // ---- the capabilities of concepts.hpp: one row each -------------------------------------------
 
@@ -808,6 +812,22 @@ void run_everyday_claims() {
         auto pairs = hmira::self_intersections(icosahedron<M>());
         ASSERT_TRUE(pairs) << title << ": " << pairs.error().message;
         EXPECT_TRUE(pairs->empty()) << title;
+    }
+    if constexpr (row_boolean::supported<M>) {
+        // This model's icosahedron against a halfedge_mesh one moved off-centre: the volume identity.
+        const auto a = icosahedron<M>();
+        auto b = icosahedron<hmira::halfedge_mesh>();
+        for (auto v : b.vertices()) b.set_position(v, b.position(v) + hmira::vec3<double>{0.31, 0.17, 0.13});
+        double volume[2] = {};
+        for (auto [i, op] : {std::pair{0, hmira::boolean_op::union_}, std::pair{1, hmira::boolean_op::intersection}}) {
+            hmira::halfedge_mesh out;
+            auto r = hmira::mesh_boolean(out, a, b, {.op = op});
+            ASSERT_TRUE(r) << title << ": " << r.error().message;
+            EXPECT_GT(r->cut_triangles, 0u) << title;
+            volume[i] = hmira::signed_volume(out);
+        }
+        EXPECT_NEAR(volume[0] + volume[1], hmira::signed_volume(a) + hmira::signed_volume(b), 1e-9) << title;
+        EXPECT_GT(volume[1], 0.1 * hmira::signed_volume(b)) << title;
     }
     if constexpr (row_measures::supported<M>) {
         EXPECT_GT(hmira::signed_volume(icosahedron<M>()), 0) << title;

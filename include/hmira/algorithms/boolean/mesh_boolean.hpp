@@ -10,10 +10,14 @@
 #pragma once
 
 #include <cstddef>
+#include <array>
 #include <cstdint>
+#include <string_view>
+#include <utility>
 #include <vector>
 
 #include "../../concepts.hpp"
+#include "../../core/enum_names.hpp"
 #include "../../core/progress.hpp"
 #include "../../core/result.hpp"
 #include "../copy/copy_mesh.hpp"
@@ -28,6 +32,13 @@ enum class boolean_op : std::uint8_t {
     difference,    ///< points in A and not in B
     xor_,          ///< points in exactly one
 };
+
+/// The operations' names, as the front ends spell them (core/enum_names.hpp).
+constexpr auto enum_names(boolean_op) {
+    using n = std::pair<boolean_op, std::string_view>;
+    return std::array{n{boolean_op::union_, "union"}, n{boolean_op::intersection, "intersection"},
+                      n{boolean_op::difference, "difference"}, n{boolean_op::xor_, "xor"}};
+}
 
 /// Options of mesh_boolean.
 struct boolean_options {
