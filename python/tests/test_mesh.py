@@ -135,7 +135,7 @@ def test_edits_match_the_cli(cli, tmp_path, edit):
     hmira.write_mesh(src, cube())
     m = hmira.read_mesh(src)
     summary = getattr(m, method)(**options)
-    assert isinstance(summary, dict) and m.validate() == []
+    assert summary["vertices"] > 0 and m.validate() == []
     out = tmp_path / "out.off"
     run_cli(cli, args[0], src, out, *args[1:], "-q")
     c = hmira.read_mesh(out)
