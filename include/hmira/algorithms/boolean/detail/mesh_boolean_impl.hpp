@@ -321,10 +321,10 @@ result<boolean_report> mesh_boolean(MO& out, const MA& a, const MB& b, const boo
     for (std::size_t n = 0; n < soup.points.size(); ++n)
         for (double c : soup.points[n])
             if (!std::isfinite(c))
-                return fail(errc::unsupported,
-                            "mesh_boolean: output vertex " + std::to_string(n) +
-                                " rounded to a coordinate that is not finite",
-                            (long long)n);
+                return fail(
+                    errc::unsupported,
+                    "mesh_boolean: output vertex " + std::to_string(n) + " rounded to a coordinate that is not finite",
+                    (long long)n);
     std::vector<char> rounded(soup.points.size(), 0);
     for (const auto& [v, o] : out_id) rounded[o] = rounded[o] || v >= explicit_count;
     bd::check_rounding(soup, rounded, report);
