@@ -132,7 +132,12 @@ public:
     const point3& explicit_coordinates() const noexcept { return p_; }
     /// The definition. \pre what() == kind::line_plane.
     const line_plane_point& line_plane() const noexcept { return l_; }
-    /// The point rounded to double, for output only. Explicit points are returned as given.
+    /// The point rounded to double, for output only. Explicit points are returned as given. A
+    /// constructed one is evaluated in floating point where the filter's intervals vouch for the
+    /// result (inside their enclosure, which is narrower than 2^-40 of the point's size), and
+    /// rounded from its exact homogeneous coordinates otherwise: it is finite and accurate however
+    /// nearly parallel the line and plane, or the three planes, that define it. NaN only when the
+    /// definition breaks its precondition (W exactly zero).
     point3 approximate() const;
     /// Interval enclosures of X, Y, Z, W (W may straddle zero: then every predicate goes exact).
     const std::array<detail::interval, 4>& filter() const noexcept { return filter_; }

@@ -119,6 +119,38 @@ inline exact_homogeneous normalise(std::array<exact_number, 4> h) {
     return out;
 }
 
+/// x / w, w nonzero, rounded to double from the exact expansions. Both are first scaled by the
+/// power of two that brings w's leading component into [0.5, 1), so neither overflows however high
+/// the degree, and each is summed from its smallest component up: for nonoverlapping expansions
+/// that sum is within an ulp or so of the exact value, and so is the quotient.
+inline double expansion_quotient(const dynamic_expansion& x, const dynamic_expansion& w) {
+    if (x.empty()) return 0.0;
+    int e = 0;
+    std::frexp(w.back(), &e);
+    double xs = 0, ws = 0;
+    for (double c : x) xs += std::ldexp(c, -e);
+    for (double c : w) ws += std::ldexp(c, -e);
+    return xs / ws;
+}
+
+/// True when every coordinate of f lies in the enclosure of X / W that the filter h gives (W > 0
+/// there), and each enclosure is narrower than 2^-40 of the point's largest coordinate: f is then
+/// within that distance of the exact point. This only chooses how a point is rounded for output
+/// (the double formula, or the exact coordinates when f is not vouched for); no decision uses it.
+inline bool vouched(const point3& f, const std::array<interval, 4>& h) noexcept {
+    double lo[3], hi[3], m = 0;
+    for (std::size_t k = 0; k < 3; ++k) {
+        const double a = h[k].lo / h[3].lo, b = h[k].lo / h[3].hi, c = h[k].hi / h[3].lo, d = h[k].hi / h[3].hi;
+        lo[k] = std::nextafter(std::min(a, b), -interval_inf);
+        hi[k] = std::nextafter(std::max(c, d), interval_inf);
+        m = std::max({m, std::fabs(lo[k]), std::fabs(hi[k])});
+    }
+    if (!std::isfinite(m)) return false;
+    for (std::size_t k = 0; k < 3; ++k)
+        if (!(lo[k] <= f[k] && f[k] <= hi[k] && hi[k] - lo[k] <= std::ldexp(m, -40))) return false;
+    return true;
+}
+
 /// True when the filter may be used: W certainly positive.
 inline bool filter_usable(const exact_point& p) noexcept { return p.filter()[3].lo > 0; }
 
@@ -227,15 +259,24 @@ inline detail::exact_homogeneous exact_point::exact() const {
 }
 
 inline point3 exact_point::approximate() const {
-    switch (kind_) {
-        case kind::line_plane: return predicates::approximate(l_);
-        case kind::three_planes: {
+    if (kind_ == kind::explicit_point) return p_;
+    if (filter_[3].lo > 0) {  // W certainly positive: the double formula, kept where the filter vouches for it
+        point3 f{};
+        if (kind_ == kind::line_plane) {
+            f = predicates::approximate(l_);
+        } else {
             const std::array<double, 4> h = detail::tpi_coordinates<double>(t_);
-            return {h[0] / h[3], h[1] / h[3], h[2] / h[3]};
+            f = {h[0] / h[3], h[1] / h[3], h[2] / h[3]};
         }
-        case kind::explicit_point: break;
+        if (detail::vouched(f, filter_)) return f;
     }
-    return p_;
+    const detail::exact_homogeneous h = exact();
+    if (h[3].empty()) {  // a definition outside its precondition has no point: NaN says so
+        const double nan = std::numeric_limits<double>::quiet_NaN();
+        return {nan, nan, nan};
+    }
+    return {detail::expansion_quotient(h[0], h[3]), detail::expansion_quotient(h[1], h[3]),
+            detail::expansion_quotient(h[2], h[3])};
 }
 
 inline int orient2d(int drop, const exact_point& a, const exact_point& b, const exact_point& c) {

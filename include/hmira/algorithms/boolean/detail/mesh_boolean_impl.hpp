@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <map>
 #include <numeric>
 #include <optional>
@@ -315,6 +316,15 @@ result<boolean_report> mesh_boolean(MO& out, const MA& a, const MB& b, const boo
         soup.face_offsets.push_back(soup.indices.size());
         report.faces.push_back({std::uint8_t(from), tris[p.source].face});
     }
+    // A safety net behind the exact rounding of constructed points: no result is reported with a
+    // coordinate that is not finite; the output mesh is left unchanged.
+    for (std::size_t n = 0; n < soup.points.size(); ++n)
+        for (double c : soup.points[n])
+            if (!std::isfinite(c))
+                return fail(
+                    errc::unsupported,
+                    "mesh_boolean: output vertex " + std::to_string(n) + " rounded to a coordinate that is not finite",
+                    (long long)n);
     std::vector<char> rounded(soup.points.size(), 0);
     for (const auto& [v, o] : out_id) rounded[o] = rounded[o] || v >= explicit_count;
     bd::check_rounding(soup, rounded, report);
