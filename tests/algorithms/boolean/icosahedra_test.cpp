@@ -14,6 +14,7 @@
 #include <hmira/algorithms/generators/platonic_solids.hpp>
 #include <hmira/meshes/face_vertex_mesh.hpp>
 
+#include "algorithms/boolean/boolean_support.hpp"
 #include "support/checks.hpp"
 
 namespace {
@@ -36,21 +37,7 @@ bool finite(const M& m) {
     return true;
 }
 
-/// Every directed edge has its reverse as often: the surface is closed.
-bool closed(const M& m) {
-    std::map<std::array<std::size_t, 2>, int> count;
-    for (auto f : T::faces(m)) {
-        std::vector<std::size_t> loop;
-        for (auto v : T::face_vertices(m, f)) loop.push_back(T::vertex_index(m, v));
-        for (std::size_t i = 0; i < loop.size(); ++i) {
-            const std::size_t a = loop[i], b = loop[(i + 1) % loop.size()];
-            count[{std::min(a, b), std::max(a, b)}] += a < b ? 1 : -1;
-        }
-    }
-    for (const auto& [e, c] : count)
-        if (c != 0) return false;
-    return true;
-}
+using hmira_test::closed;
 
 /// Union and intersection (and difference, if asked) of the icosahedron and its copy moved by `shift`.
 void check_shift(vec3<double> shift, bool difference = true) {

@@ -14,6 +14,7 @@
 #include <hmira/algorithms/validation/self_intersections.hpp>
 #include <hmira/algorithms/validation/validate.hpp>
 
+#include "algorithms/boolean/boolean_support.hpp"
 #include "support/checks.hpp"
 #include "support/models.hpp"
 
@@ -65,22 +66,7 @@ double volume(const M& m) {
     return hmira_test::signed_volume(m);
 }
 
-/// Every directed edge has its reverse as often: the surface is closed.
-template <class M, class T = default_traits<M>>
-bool closed(const M& m) {
-    std::map<std::array<std::size_t, 2>, int> count;
-    for (auto f : T::faces(m)) {
-        std::vector<std::size_t> loop;
-        for (auto v : T::face_vertices(m, f)) loop.push_back(T::vertex_index(m, v));
-        for (std::size_t i = 0; i < loop.size(); ++i) {
-            const std::size_t a = loop[i], b = loop[(i + 1) % loop.size()];
-            count[{std::min(a, b), std::max(a, b)}] += a < b ? 1 : -1;
-        }
-    }
-    for (const auto& [e, c] : count)
-        if (c != 0) return false;
-    return true;
-}
+using hmira_test::closed;
 
 template <class M, class O = M>
 O run(const M& a, const M& b, boolean_op op, boolean_report* report = nullptr) {

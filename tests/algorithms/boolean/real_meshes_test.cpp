@@ -16,6 +16,7 @@
 #include <hmira/io/mesh_io.hpp>
 #include <hmira/meshes/face_vertex_mesh.hpp>
 
+#include "algorithms/boolean/boolean_support.hpp"
 #include "support/checks.hpp"
 
 namespace {
@@ -72,20 +73,7 @@ mesh moved(const mesh& m, const box3& to, double shift, std::array<double, 4> qu
     return out;
 }
 
-bool closed(const mesh& m) {
-    std::map<std::array<std::size_t, 2>, int> count;
-    for (auto f : tr::faces(m)) {
-        std::vector<std::size_t> loop;
-        for (auto v : tr::face_vertices(m, f)) loop.push_back(tr::vertex_index(m, v));
-        for (std::size_t i = 0; i < loop.size(); ++i) {
-            const std::size_t a = loop[i], b = loop[(i + 1) % loop.size()];
-            count[{std::min(a, b), std::max(a, b)}] += a < b ? 1 : -1;
-        }
-    }
-    for (const auto& [e, c] : count)
-        if (c != 0) return false;
-    return true;
-}
+using hmira_test::closed;
 
 /// The closed, self-intersection-free meshes of the test data used here, smallest first, each
 /// small enough that the whole test stays short under the sanitizers.
