@@ -262,28 +262,11 @@ class _Welder:
 
 
 def _results_in_order(tasks):
-    """The tasks' results in order, a few at a time (each released once consumed on a Client)."""
-    import dask
+    """The tasks' results in order, a few at a time: hmira.dask's scheduling, with a window of two
+    tasks per core on the local schedulers."""
+    from . import dask as _hd  # imported here: hmira.dask imports this module at its end
 
-    try:
-        from distributed import default_client
-        client = default_client()
-    except (ImportError, ValueError):
-        client = None
-    if client is not None and dask.config.get("scheduler", None) in (None, "dask.distributed", "distributed"):
-        futures = client.compute(tasks)
-        try:
-            for i in range(len(futures)):
-                result = futures[i].result()
-                futures[i].release()
-                futures[i] = None
-                yield result
-        finally:
-            client.cancel([f for f in futures if f is not None])
-        return
-    window = 2 * (os.cpu_count() or 1)
-    for w0 in range(0, len(tasks), window):
-        yield from dask.compute(*tasks[w0:w0 + window])
+    return _hd._results_in_order(tasks, 2 * (os.cpu_count() or 1))
 
 
 def _assemble(tasks, out, zarr_out):
