@@ -6,6 +6,8 @@
 #   HMIRA_TEST_DATA  libcgal-demo data (default: build/test-data, as scripts/test-data.sh makes it)
 #   HMIRA_CLI        the C++ `hmira` binary the tests compare with (unset: those comparisons skip)
 #   HMIRA_PY_VENV    where the venv goes (default: build/python-venv; always made anew)
+#   HMIRA_PY_OPT     optimisation flags for the extension instead of the Release -O3 a user's
+#                    `pip install .` gets (scripts/test.sh passes -O1: the wheel is tested, not timed)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 start=$(date +%s)
@@ -28,7 +30,11 @@ echo "== pip wheel . (builds hmira._core), then pip install of that wheel"
 # requirements file: building without isolation keeps nanobind's path stable from run to run,
 # so ccache (CMAKE_CXX_COMPILER_LAUNCHER, set by the project) hits on an unchanged tree.
 wheels=$(mktemp -d)
-"$venv/bin/python" -m pip wheel -q --no-build-isolation --no-deps -w "$wheels" .
+opt=()
+if [ -n "${HMIRA_PY_OPT:-}" ]; then
+  opt=(-C "cmake.define.CMAKE_CXX_FLAGS_RELEASE=$HMIRA_PY_OPT -DNDEBUG")
+fi
+"$venv/bin/python" -m pip wheel -q --no-build-isolation --no-deps "${opt[@]}" -w "$wheels" .
 "$venv/bin/python" -m pip install -q "$wheels"/hmira-*.whl
 echo "built and installed after $(( $(date +%s) - start )) s"
 

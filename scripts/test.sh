@@ -41,7 +41,9 @@ bash tests/browser/run.sh build/test
 echo "browser tests finished after $(( $(date +%s) - start )) s"
 
 echo "== Python package: pip install . into a fresh venv, type-stub check, pytest"
-HMIRA_TEST_DATA="$PWD/build/test-data" HMIRA_CLI="$PWD/build/test/apps/hmira/hmira" bash scripts/python.sh
+# The extension at -O1, as the plain pass: -O3 doubles its compile time, and the benchmarks, not
+# these tests, time it (bench/python installs the Release build into the benchmark venv).
+HMIRA_PY_OPT=-O1 HMIRA_TEST_DATA="$PWD/build/test-data" HMIRA_CLI="$PWD/build/test/apps/hmira/hmira" bash scripts/python.sh
 echo "python pass finished after $(( $(date +%s) - start )) s"
 
 echo "== API reference (Doxygen; fails on any undocumented public entity)"
@@ -52,8 +54,11 @@ echo "== sanitizer build (AddressSanitizer + UndefinedBehaviorSanitizer, clang 1
 # not GCC 12: the typed suites compile 2-2.6x faster with it at -O0 (decimate_test.cpp 26 s vs
 # 66 s); with GCC this pass took ~2000 of CI's 2727 s. The plain pass above builds the programs,
 # examples and benchmarks with GCC, so both compilers compile the headers with -Werror.
+# -g0: line tables cost a fifth of this pass's compile time (loop_test.cpp: 32.5 s of CPU with -g1,
+# 26.5 s with -g0); a report still names every function on its stack, and a local build with -g1
+# adds the lines.
 cmake -S . -B build/asan "${common[@]}" -DCMAKE_CXX_COMPILER=clang++-16 -DHMIRA_SANITIZE=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-      -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O0 -g1" -DHMIRA_BUILD_BENCHMARKS=OFF >/dev/null
+      -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O0 -g0" -DHMIRA_BUILD_BENCHMARKS=OFF >/dev/null
 cmake --build build/asan -j"$jobs"
 (cd build/asan && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
    ctest --output-on-failure -j"$jobs" --timeout 900 -LE compile_fail)
