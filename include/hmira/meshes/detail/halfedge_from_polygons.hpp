@@ -167,25 +167,25 @@ struct halfedge_from_polygons {
                 entered.resize(d);
             }
             std::fill(entered.begin(), entered.begin() + d, 0);
+            // Entry i's halfedge v -> x pairs with the first entry whose p is x. An edge run
+            // twice the same way shows in the row of its source: both its entries pair with the
+            // same entry (caught by `entered`), or neither pairs (two gaps).
             u32 k_in = none, start = 0, open = 0;
             for (u32 i = 0; i < d; ++i) {
                 const u32 x = row[i].x;
-                u32 j_found = none;
-                for (u32 j = 0; j < d; ++j) {
-                    if (row[j].x == x && j != i) return false;  // v -> x twice
-                    if (row[j].p == x) {
-                        if (j_found != none) return false;  // x -> v twice
-                        j_found = j;
-                    }
-                }
-                after[i] = j_found;
-                if (j_found == none) {
+                u32 j = 0;
+                while (j < d && row[j].p != x) ++j;
+                if (j == d) {
+                    after[i] = none;
+                    twin[row[i].k] = none;
                     k_in = row[i].k;
                     ++open;
-                } else {
-                    entered[j_found] = 1;
+                    continue;
                 }
-                twin[row[i].k] = j_found == none ? none : row[j_found].kp;
+                if (entered[j]) return false;  // x -> v paired twice: v -> x is run twice
+                entered[j] = 1;
+                after[i] = j;
+                twin[row[i].k] = row[j].kp;
             }
             if (open > 1) return false;  // two boundary gaps: two fans
             if (open == 1) {
