@@ -53,11 +53,11 @@ bool assign_rows(halfedge_mesh& fresh, const vertex_array& vertices,
     const Index* f = faces.data();
     if constexpr (std::is_same_v<Index, std::int32_t>) {
         // Read in place (int32 and uint32 may alias): with fewer than 2^31 vertices a negative
-        // index reads as one past every vertex, which the build refuses as out of range.
+        // index reads as 2^31 or more, past every vertex, which the build refuses as out of range.
         if (nv <= 0x7fffffffu)
-                return bool(fresh.assign_polygons(points, std::span<const std::uint32_t>(offsets),
-                                              std::span<const std::uint32_t>(
-                                                  reinterpret_cast<const std::uint32_t*>(f), m * k)));
+            return bool(fresh.assign_polygons(
+                points, std::span<const std::uint32_t>(offsets),
+                std::span<const std::uint32_t>(reinterpret_cast<const std::uint32_t*>(f), m * k)));
     }
     std::vector<std::uint32_t> corners(m * k);
     for (std::size_t c = 0; c < m * k; ++c) {

@@ -219,7 +219,8 @@ struct halfedge_from_polygons {
             u32 h_prev = corner_h[e - 1], h = corner_h[b];
             for (u32 k = b; k < e; ++k) {
                 const u32 k_next = k + 1 == e ? b : k + 1, h_next = corner_h[k_next], a = corners[k];
-                m.halfedges_[h] = {vertex_handle(corners[k_next]), fh, halfedge_handle(h_next), halfedge_handle(h_prev)};
+                m.halfedges_[h] = {vertex_handle(corners[k_next]), fh, halfedge_handle(h_next),
+                                   halfedge_handle(h_prev)};
                 if (twin[k] == none) m.halfedges_[h ^ 1u] = {vertex_handle(a), {}, {}, {}};  // linked below
                 m.vertex_out_[a] = halfedge_handle(h);  // the last corner's, as add_face leaves it
                 h_prev = h;
