@@ -12,6 +12,7 @@
 #include <memory>
 #include <span>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include <hmira/algorithms/geometry/vertex_normals.hpp>
@@ -39,21 +40,31 @@ bool assign_rows(halfedge_mesh& fresh, const vertex_array& vertices,
     nb::gil_scoped_release release;
     cpp_timer timer;
     const double* v = vertices.data();
-    std::vector<vec3<double>> points(nv);
+    std::vector<vec3<double>> points;
+    points.reserve(nv);
     bool ok = true;
     for (std::size_t i = 0; i < nv; ++i) {
-        points[i] = {v[3 * i], v[3 * i + 1], v[3 * i + 2]};
+        points.push_back({v[3 * i], v[3 * i + 1], v[3 * i + 2]});
         ok &= std::isfinite(v[3 * i]) & std::isfinite(v[3 * i + 1]) & std::isfinite(v[3 * i + 2]);
     }
+    if (!ok) return false;
+    std::vector<std::uint32_t> offsets(m + 1);
+    for (std::size_t i = 0; i <= m; ++i) offsets[i] = static_cast<std::uint32_t>(i * k);
     const Index* f = faces.data();
+    if constexpr (std::is_same_v<Index, std::int32_t>) {
+        // Read in place (int32 and uint32 may alias): with fewer than 2^31 vertices a negative
+        // index reads as 2^31 or more, past every vertex, which the build refuses as out of range.
+        if (nv <= 0x7fffffffu)
+            return bool(fresh.assign_polygons(
+                points, std::span<const std::uint32_t>(offsets),
+                std::span<const std::uint32_t>(reinterpret_cast<const std::uint32_t*>(f), m * k)));
+    }
     std::vector<std::uint32_t> corners(m * k);
     for (std::size_t c = 0; c < m * k; ++c) {
         ok &= f[c] >= 0 && std::uint64_t(f[c]) < nv;
         corners[c] = static_cast<std::uint32_t>(f[c]);
     }
     if (!ok) return false;
-    std::vector<std::uint32_t> offsets(m + 1);
-    for (std::size_t i = 0; i <= m; ++i) offsets[i] = static_cast<std::uint32_t>(i * k);
     return bool(fresh.assign_polygons(points, std::span<const std::uint32_t>(offsets),
                                       std::span<const std::uint32_t>(corners)));
 }

@@ -367,7 +367,7 @@ public:
     /// an edge with more than two faces or a vertex whose faces form more than one fan (a
     /// pinch, which add_face tolerates as an intermediate state but a finished mesh must not have).
     /// Complexity O(V + C x valence) for C corners, linear in practice; no per-face allocation.
-    /// Scratch memory: 4 bytes per corner and 8 per vertex besides the mesh (an input it
+    /// Scratch memory: 24 bytes per corner and 8 per vertex besides the mesh (an input it
     /// refuses after the per-face checks is gone over a second time, with 12 bytes per corner
     /// more, to name the same element whatever the face order).
     static result<basic_halfedge_mesh> from_polygons(std::span<const point> points,

@@ -679,4 +679,51 @@ TEST(remeshing_real_meshes, edges_reach_the_band_and_features_stay_on_real_meshe
     }
 }
 
+// A cap (an angle near 180 degrees) lying on a feature line, across a crease from its
+// neighbour: the two feature edges a-c and c-b run along the line, and the cap's long side a-b
+// cuts the corner on the other side of the crease. The cap's normal says nothing, so the
+// flat-pair test must not keep its long side from being flipped; the flip puts the
+// triangles back on the feature line.
+TEST(remeshing_features, a_cap_on_a_feature_line_across_a_crease_is_flipped_away) {
+    using T = hmira::default_traits<hmira::halfedge_mesh>;
+    const std::vector<v3> points{{0, 0, 0}, {2, 0, 0}, {1, 0, -0.01}, {1, 1, 0}, {1, 0, -1}};
+    enum : std::uint32_t { a, b, c, d, e };
+    const std::vector<std::uint32_t> offsets{0, 3, 6, 9, 12}, corners{a, b, c, b, a, d, a, c, e, c, b, e};
+    auto built = hmira::halfedge_mesh::from_polygons(points, offsets, corners);
+    ASSERT_TRUE(built);
+    auto& m = *built;
+    auto edge_of = [&](std::uint32_t u, std::uint32_t w) {
+        const auto h = m.find_halfedge(hmira::vertex_handle(u), hmira::vertex_handle(w));
+        EXPECT_FALSE(h.is_null());
+        return std::size_t{T::edge(m, h).index};
+    };
+    auto largest_angle = [&] {
+        double worst = 0;
+        for (auto f : T::faces(m)) {
+            std::vector<v3> p;
+            for (auto v : m.face_vertices(f)) p.push_back(m.position(v));
+            for (int i = 0; i < 3; ++i) {
+                const v3 u = p[(i + 1) % 3] - p[i], w = p[(i + 2) % 3] - p[i];
+                const double cosine = hmira::dot(u, w) / (hmira::norm(u) * hmira::norm(w));
+                worst = std::max(worst, std::acos(std::clamp(cosine, -1.0, 1.0)) * 180 / std::numbers::pi);
+            }
+        }
+        return worst;
+    };
+    ASSERT_GT(largest_angle(), 178.0);
+    // L = 2: no edge is long enough to split, and every vertex is locked (boundary or feature),
+    // so only a flip can change the mesh.
+    auto r = hmira::isotropic_remeshing(
+        m, {.target_edge_length = 2.0, .iterations = 1, .feature_edges = {edge_of(a, c), edge_of(c, b)}});
+    ASSERT_TRUE(r) << r.error().message;
+    EXPECT_EQ(r->flips, 1u);
+    EXPECT_TRUE(valid_topology(m));
+    EXPECT_LE(largest_angle(), 170.0);
+    // The feature edges are still there, and the cap's long side is gone.
+    EXPECT_FALSE(m.find_halfedge(hmira::vertex_handle(a), hmira::vertex_handle(c)).is_null());
+    EXPECT_FALSE(m.find_halfedge(hmira::vertex_handle(c), hmira::vertex_handle(b)).is_null());
+    EXPECT_TRUE(m.find_halfedge(hmira::vertex_handle(a), hmira::vertex_handle(b)).is_null());
+    EXPECT_FALSE(m.find_halfedge(hmira::vertex_handle(c), hmira::vertex_handle(d)).is_null());
+}
+
 }  // namespace

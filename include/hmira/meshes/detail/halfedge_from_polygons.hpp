@@ -108,15 +108,26 @@ struct halfedge_from_polygons {
         return around == degree;
     }
 
+    // One corner as seen from its vertex v: the vertices before (p) and after (x) it in its
+    // face, the corner's own index k (its halfedge runs v -> x) and the index kp of the
+    // corner before it (whose halfedge runs p -> v).
+    struct corner_at_vertex {
+        std::uint32_t p, x, k, kp;
+    };
+
     // The connectivity of checked polygons (`out_begin[v]` where v's row of corners starts,
-    // `stamp` scratch of one entry per vertex) into the empty mesh m, in one pass over the
-    // faces: each corner a->b looks for its twin b->a among the corners already seen leaving
-    // b, and becomes edge 2e (a new edge) or the twin's halfedge + 1, so edges come in order
-    // of their first corner, as in link_polygons_checked. A corner's record gets its target at
-    // once (the row search reads it), the rest when its face is done; a boundary halfedge gets
-    // its target when its edge is made, its links at the end. False (m then half-built) on
-    // anything wrong: an edge run twice the same way, a vertex with two boundary gaps or
-    // several fans.
+    // `stamp` scratch of one entry per vertex) into the empty mesh m. Every question the link
+    // asks is about one vertex at a time, so the corners are first grouped by vertex (rows,
+    // filled in corner order) and each row is then read on its own, in contiguous memory:
+    // - the twin of the halfedge v -> x of a corner is the halfedge x -> v coming into v in
+    //   the row's corner whose p is x (none: a boundary edge);
+    // - next(twin(h)) is that corner's outgoing halfedge, so the walk around v that add_face
+    //   and validate take is a walk along the row, and v has one fan when that walk covers
+    //   the row (from the corner no halfedge comes into, when v is on the boundary).
+    // Edges are then numbered in order of their first corner, as in link_polygons_checked:
+    // a corner whose twin comes later (or has none) makes edge e, halfedge 2e, its twin (or the
+    // boundary halfedge) 2e + 1. False (m then half-built) on anything wrong: an edge run
+    // twice the same way, a vertex with two boundary gaps or several fans.
     template <class Offset>
     static bool link_polygons_fast(Mesh& m, std::span<const Offset> face_offsets,
                                    std::span<const std::uint32_t> corners, const std::vector<std::uint32_t>& out_begin,
@@ -126,79 +137,104 @@ struct halfedge_from_polygons {
         const std::size_t nv = out_begin.size() - 1, nf = face_offsets.empty() ? 0 : face_offsets.size() - 1,
                           nc = corners.size();
         std::copy(out_begin.begin(), out_begin.end() - 1, stamp.begin());  // stamp[v]: where v's row ends so far
-        // Each vertex's row holds the halfedges of the corners seen leaving it; the vertex a
-        // corner runs to is its halfedge's target, written as soon as the corner is seen.
-        detail::trivial_array<u32> rows;
-        rows.resize_for_overwrite(nc);  // written before read, row by row
-        m.vertex_out_.assign(nv, halfedge_handle{});
-        // A closed mesh has one edge per two corners; each boundary edge needs room for two more
-        // halfedges, grown in steps as they appear (realloc: the written records move along).
-        m.halfedges_.resize_for_overwrite(nc);
-        m.faces_.resize_for_overwrite(nf);
-        std::vector<u32> face_h;  // the halfedge of each corner of the face at hand
+        detail::trivial_array<corner_at_vertex> rows;
+        rows.resize_for_overwrite(nc);  // every entry written here, row by row
+        for (std::size_t f = 0; f < nf; ++f) {
+            const u32 b = static_cast<u32>(face_offsets[f]), e = static_cast<u32>(face_offsets[f + 1]);
+            for (u32 k = b; k < e; ++k) {
+                const u32 kp = k == b ? e - 1 : k - 1, kn = k + 1 == e ? b : k + 1;
+                rows[stamp[corners[k]]++] = {corners[kp], corners[kn], k, kp};
+            }
+        }
+        // Twins, one row at a time: twin[k] the corner whose halfedge is the twin of corner k's,
+        // none on the boundary. The boundary halfedges around a vertex v are the twins of the
+        // halfedge leaving v that has no twin (entering v) and of the one entering v that has
+        // none (leaving v): one pair of corners per boundary vertex, kept in `gaps`.
+        detail::trivial_array<u32> twin;
+        twin.resize_for_overwrite(nc);
+        struct gap {
+            u32 v, k_in, k_out;  // twin(halfedge of k_in) enters v, twin(halfedge of k_out) leaves it
+        };
+        std::vector<gap> gaps;
+        std::vector<u32> after;  // after[i]: the row entry that the walk around the vertex visits after entry i
+        std::vector<unsigned char> entered;
+        for (std::size_t v = 0; v < nv; ++v) {
+            const corner_at_vertex* row = rows.data() + out_begin[v];
+            const u32 d = out_begin[v + 1] - out_begin[v];
+            if (d == 0) continue;
+            if (after.size() < d) {
+                after.resize(d);
+                entered.resize(d);
+            }
+            std::fill(entered.begin(), entered.begin() + d, 0);
+            // Entry i's halfedge v -> x pairs with the first entry whose p is x. An edge run
+            // twice the same way shows in the row of its source: both its entries pair with the
+            // same entry (caught by `entered`), or neither pairs (two gaps).
+            u32 k_in = none, start = 0, open = 0;
+            for (u32 i = 0; i < d; ++i) {
+                const u32 x = row[i].x;
+                u32 j = 0;
+                while (j < d && row[j].p != x) ++j;
+                if (j == d) {
+                    after[i] = none;
+                    twin[row[i].k] = none;
+                    k_in = row[i].k;
+                    ++open;
+                    continue;
+                }
+                if (entered[j]) return false;  // x -> v paired twice: v -> x is run twice
+                entered[j] = 1;
+                after[i] = j;
+                twin[row[i].k] = row[j].kp;
+            }
+            if (open > 1) return false;  // two boundary gaps: two fans
+            if (open == 1) {
+                while (entered[start]) ++start;  // the corner no halfedge comes into
+                gaps.push_back({static_cast<u32>(v), k_in, row[start].kp});
+            }
+            u32 steps = 0, i = start;
+            do {
+                i = after[i];
+                ++steps;
+            } while (i != none && i != start && steps <= d);
+            if (steps != d) return false;
+        }
+        // Halfedges of the corners: the first corner of an edge (by corner index) gets 2e.
+        detail::trivial_array<u32> corner_h;
+        corner_h.resize_for_overwrite(nc);
         u32 edges = 0;
+        for (u32 k = 0; k < nc; ++k) {
+            const u32 t = twin[k];
+            if (t != none && t < k) continue;  // corner_h[k] was written with its twin
+            corner_h[k] = 2 * edges;
+            if (t != none) corner_h[t] = 2 * edges + 1;
+            ++edges;
+        }
+        m.vertex_out_.assign(nv, halfedge_handle{});
+        m.halfedges_.resize_for_overwrite(2 * std::size_t{edges});
+        m.faces_.resize_for_overwrite(nf);
         for (std::size_t f = 0; f < nf; ++f) {
             const u32 b = static_cast<u32>(face_offsets[f]), e = static_cast<u32>(face_offsets[f + 1]);
             const face_handle fh(static_cast<u32>(f));
-            if (face_h.size() < e - b) face_h.resize(e - b);
+            u32 h_prev = corner_h[e - 1], h = corner_h[b];
             for (u32 k = b; k < e; ++k) {
-                const u32 a = corners[k], t = corners[k + 1 == e ? b : k + 1];
-                u32 h = none;
-                for (u32 r = out_begin[t]; r < stamp[t]; ++r)
-                    if (m.halfedges_[rows[r]].target.index == a) {
-                        h = rows[r] ^ 1u;
-                        break;
-                    }
-                // A directed edge met twice (an orientation conflict or a third face) shows, at
-                // its first repeat, as a b->a that is itself a twin or already has one, or, with
-                // no b->a yet, as the earlier a->b in a's row.
-                if (h == none) {
-                    for (u32 r = out_begin[a]; r < stamp[a]; ++r)
-                        if (m.halfedges_[rows[r]].target.index == t) return false;
-                    h = 2 * edges++;
-                    if (h + 2 > m.halfedges_.size())
-                        m.halfedges_.resize_for_overwrite(
-                            std::min<std::size_t>(2 * nc, std::size_t{h} + 2 + (std::size_t{h} + 2) / 8 + 64));
-                    m.halfedges_[h + 1] = {vertex_handle(a), {}, {}, {}};  // boundary until a twin turns up
-                } else {
-                    if ((h & 1u) == 0 || !m.halfedges_[h].face.is_null()) return false;
-                    m.halfedges_[h].face = fh;  // taken: a second a->b must not pair with it
-                }
-                rows[stamp[a]++] = h;
-                m.halfedges_[h].target = vertex_handle(t);
-                face_h[k - b] = h;
+                const u32 k_next = k + 1 == e ? b : k + 1, h_next = corner_h[k_next], a = corners[k];
+                m.halfedges_[h] = {vertex_handle(corners[k_next]), fh, halfedge_handle(h_next),
+                                   halfedge_handle(h_prev)};
+                if (twin[k] == none) m.halfedges_[h ^ 1u] = {vertex_handle(a), {}, {}, {}};  // linked below
                 m.vertex_out_[a] = halfedge_handle(h);  // the last corner's, as add_face leaves it
+                h_prev = h;
+                h = h_next;
             }
-            const u32 n = e - b;
-            for (u32 i = 0; i < n; ++i)
-                m.halfedges_[face_h[i]] = {vertex_handle(corners[i + 1 == n ? b : b + i + 1]), fh,
-                                           halfedge_handle(face_h[i + 1 == n ? 0 : i + 1]),
-                                           halfedge_handle(face_h[i == 0 ? n - 1 : i - 1])};
-            m.faces_[f] = halfedge_handle(face_h[n - 1]);
+            m.faces_[f] = halfedge_handle(corner_h[e - 1]);
         }
-        m.halfedges_.resize(2 * std::size_t{edges});
-        // Boundary halfedges (the odd ones no face took) by the vertex they leave, then linked
-        // into loops: the boundary halfedge entering a vertex continues with the one leaving it.
-        std::fill(stamp.begin(), stamp.end(), none);
-        if (2 * std::size_t{edges} > nc) {
-            for (u32 h = 1; h < 2 * edges; h += 2)
-                if (m.halfedges_[h].face.is_null()) {
-                    const u32 from = m.halfedges_[h - 1].target.index;
-                    if (stamp[from] != none) return false;
-                    stamp[from] = h;
-                }
-            for (std::size_t v = 0; v < nv; ++v)
-                if (const u32 hb = stamp[v]; hb != none) {
-                    const u32 nb = stamp[m.halfedges_[hb].target.index];
-                    if (nb == none) return false;
-                    m.halfedges_[hb].next = halfedge_handle(nb);
-                    m.halfedges_[nb].prev = halfedge_handle(hb);
-                    m.vertex_out_[v] = halfedge_handle(hb);
-                }
+        // Boundary loops: the boundary halfedge entering a vertex continues with the one leaving it.
+        for (const gap& g : gaps) {
+            const u32 h_in = corner_h[g.k_in] ^ 1u, h_out = corner_h[g.k_out] ^ 1u;
+            m.halfedges_[h_in].next = halfedge_handle(h_out);
+            m.halfedges_[h_out].prev = halfedge_handle(h_in);
+            m.vertex_out_[g.v] = halfedge_handle(h_out);
         }
-        for (std::size_t v = 0; v < nv; ++v)
-            if (!single_fan(m, static_cast<u32>(v), out_begin[v + 1] - out_begin[v] + (stamp[v] != none ? 1u : 0u)))
-                return false;
         return true;
     }
 

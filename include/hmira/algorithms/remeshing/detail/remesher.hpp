@@ -214,8 +214,14 @@ public:
             if (before < thin_cosine) continue;
             const double after = std::max(largest_cosine(pc, pa, pd), largest_cosine(pd, pb, pc));
             if (!(after < before - 1e-3)) continue;
-            // Only across a nearly flat pair: a flip over a crease would cut into the surface.
-            if (dot(normalized(cross(pb - pa, pc - pa)), normalized(cross(pa - pb, pd - pb))) < flat_cosine) continue;
+            // Only across a nearly flat pair: a flip over a crease would cut into the surface. A
+            // cap (an angle over 160 degrees at c or d) is the exception: its normal says nothing,
+            // and its apex lies near ab, so the flip moves the surface by little. On a feature
+            // line (a, c, b locked in a row) the flip puts the edges back on the line.
+            const bool cap = dot(normalized(pa - pc), normalized(pb - pc)) < cap_cosine ||
+                             dot(normalized(pa - pd), normalized(pb - pd)) < cap_cosine;
+            if (!cap && dot(normalized(cross(pb - pa, pc - pa)), normalized(cross(pa - pb, pd - pb))) < flat_cosine)
+                continue;
             if (!flip_keeps_orientation(pa, pb, pc, pd)) continue;
             if (!is_flip_ok<M, T>(m_, h)) continue;
             triangle_ops::flip_links<M, T>(m_, h);
@@ -290,6 +296,7 @@ public:
 private:
     static constexpr double thin_cosine = 0.8191520442889918;  // cos 35 degrees
     static constexpr double flat_cosine = 0.9396926207859084;  // cos 20 degrees
+    static constexpr double cap_cosine = -0.9396926207859084;  // cos 160 degrees
 
     // The cosine of the smallest angle of triangle (a, b, c).
     static double largest_cosine(const vec3<double>& a, const vec3<double>& b, const vec3<double>& c) {
