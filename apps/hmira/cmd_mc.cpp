@@ -57,8 +57,8 @@ std::optional<hmira::face_vertex_mesh> decimated(const Positions& positions, con
         offsets.push_back(std::uint32_t(corners.size()));
     }
     hmira::halfedge_mesh h;
-    if (auto built = h.assign_polygons(std::span<const std::array<double, 3>>(points),
-                                       std::span<const std::uint32_t>(offsets), std::span<const std::uint32_t>(corners));
+    const std::span<const std::uint32_t> offsets_view(offsets), corners_view(corners);
+    if (auto built = h.assign_polygons(std::span<const std::array<double, 3>>(points), offsets_view, corners_view);
         !built) {
         code = report(invalid_input, "mc --decimate-ratio: " + built.error().message);
         return std::nullopt;
