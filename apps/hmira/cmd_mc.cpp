@@ -15,6 +15,7 @@
 #include <hmira/algorithms/conversion/iso_level.hpp>
 #include <hmira/algorithms/conversion/marching_cubes.hpp>
 #include <hmira/algorithms/conversion/marching_cubes_blocks.hpp>
+#include <hmira/algorithms/decimation/decimate.hpp>
 #include <hmira/grids/implicit_shapes.hpp>
 #include <hmira/grids/sample.hpp>
 #include <hmira/io/volume/inr.hpp>
@@ -38,7 +39,51 @@ struct mc_args {
     // .raw volumes only
     std::string dims, type = "float32", spacing, origin, endian = "little";
     std::size_t slab_slices = 0;  // 0: as many as fit in slab_bytes
+    std::optional<double> decimate_ratio;  // decimate_options::target_ratio, the library's other defaults
 };
+
+/// --decimate-ratio: the surface (positions, triangles) decimated by the library's decimate to that
+/// fraction of its faces, with decimate_options' other defaults, ready to save; the exit code on failure.
+template <class Positions, class Triangles>
+std::optional<hmira::face_vertex_mesh> decimated(const Positions& positions, const Triangles& triangles, double ratio,
+                                                 const common_options& o, int& code) {
+    std::vector<std::array<double, 3>> points;
+    points.reserve(positions.size());
+    for (const auto& p : positions) points.push_back({double(p.x), double(p.y), double(p.z)});
+    std::vector<std::uint32_t> corners, offsets{0};
+    corners.reserve(3 * triangles.size());
+    for (const auto& t : triangles) {
+        corners.insert(corners.end(), {std::uint32_t(t[0]), std::uint32_t(t[1]), std::uint32_t(t[2])});
+        offsets.push_back(std::uint32_t(corners.size()));
+    }
+    hmira::halfedge_mesh h;
+    const std::span<const std::uint32_t> offsets_view(offsets), corners_view(corners);
+    if (auto built = h.assign_polygons(std::span<const std::array<double, 3>>(points), offsets_view, corners_view);
+        !built) {
+        code = report(invalid_input, "mc --decimate-ratio: " + built.error().message);
+        return std::nullopt;
+    }
+    auto r = hmira::decimate(h, {.target_ratio = ratio});
+    if (!r) {
+        code = report(exit_code_for(r.error()), "mc --decimate-ratio: " + r.error().message);
+        return std::nullopt;
+    }
+    say(o, "decimated to " + std::to_string(r->faces) + " triangles (largest error " + std::to_string(r->error) +
+               (r->note.empty() ? ")" : "); " + r->note));
+    return to_face_vertex(h);
+}
+
+/// Writes the marching-cubes surface, decimated first with --decimate-ratio; the exit code.
+template <class Positions, class Triangles>
+int save_surface(const Positions& positions, const Triangles& triangles, const mc_args& a, const common_options& o) {
+    int code = ok;
+    auto m = decimated(positions, triangles, *a.decimate_ratio, o, code);
+    if (!m) return code;
+    if (int c = save(*m, a.output, {}, o); c != ok) return c;
+    say(o, a.output + ": " + std::to_string(m->vertex_count()) + " vertices, " + std::to_string(m->face_count()) +
+               " triangles");
+    return ok;
+}
 
 /// Samples read at once by the slab-by-slab path when --slab-slices is not given.
 constexpr std::size_t slab_bytes = std::size_t(64) << 20;
@@ -240,6 +285,7 @@ std::optional<int> run_mc_by_slabs(const mc_args& a, const common_options& o,
             case sample_type::float32: tri = run(float{}); break;
         }
     if (!tri) return report(input_exit_code(tri.error()), tri.error().message);
+    if (a.decimate_ratio) return save_surface(tri->positions, tri->triangles, a, o);
     if (auto w = hmira::io::write_mesh<hmira::indexed_triangles<double>, triangle_list_traits>(*tri, a.output); !w)
         return report(exit_code_for(w.error()), w.error().message);
     say(o, a.output + ": " + std::to_string(tri->positions.size()) + " vertices, " +
@@ -251,6 +297,11 @@ int run_mc(const mc_args& a, const common_options& o) {
     const bool raw = ends_with_lower(a.source, ".raw");
     if (!raw && (!a.dims.empty() || !a.spacing.empty() || !a.origin.empty()))
         return report(usage, "--dims, --spacing and --origin describe .raw volumes only; " + a.source + " is not one");
+    if (a.decimate_ratio && !(*a.decimate_ratio >= 0 && *a.decimate_ratio <= 1))
+        return report(usage, "--decimate-ratio must be in [0, 1], got " + std::to_string(*a.decimate_ratio));
+    if (a.decimate_ratio && a.normals)
+        return report(usage, "--normals (the field's gradient at the marching-cubes vertices) cannot go with "
+                             "--decimate-ratio");
     if (a.slab_slices && !raw && !ends_with_lower(a.source, ".inr"))
         return report(usage, "--slab-slices applies to .raw and .inr volumes only; " + a.source + " is not one");
     hmira::result<any_grid> grid = hmira::fail(hmira::errc::invalid_argument, "");
@@ -284,6 +335,18 @@ int run_mc(const mc_args& a, const common_options& o) {
                                             .threads = static_cast<unsigned>(o.threads)};
     auto r = std::visit([&](const auto& g) { return hmira::marching_cubes(m, g, opt); }, *grid);
     if (!r) return report(code_for(r.error()), r.error().message);
+    if (a.decimate_ratio) {
+        std::vector<hmira::vec3<double>> positions;
+        std::vector<std::array<std::size_t, 3>> triangles;
+        for (auto v : m.vertices()) positions.push_back(m.position(v));
+        for (auto f : m.faces()) {
+            std::array<std::size_t, 3> t{};
+            std::size_t i = 0;
+            for (auto v : m.face_vertices(f)) t[i++] = v.index;
+            triangles.push_back(t);
+        }
+        return save_surface(positions, triangles, a, o);
+    }
     hmira::io::mesh_attributes attributes;
     for (const auto& n : r->normals) attributes.normals.push_back({float(n.x), float(n.y), float(n.z)});
     hmira::io::write_options w;
@@ -330,6 +393,9 @@ const bool registered = register_command(
                 ".raw/.inr: z-slices read at a time (default: 64 MiB worth); the file is read slab by slab, so memory "
                 "holds a slab plus the output mesh, whatever the volume's size (not with --normals)")
              ->check(whole_number(1, 1000000));
+         sub.add_option("--decimate-ratio", a->decimate_ratio,
+                        "decimate the surface (quadric error, as 'hmira decimate --ratio') to this fraction of its "
+                        "triangles before writing it");
          sub.add_option("--endian", a->endian, ".raw: byte order of multi-byte samples")
              ->capture_default_str()
              ->check(CLI::IsMember({"little", "big"}));

@@ -8,18 +8,20 @@ Pass 1: every block decimates its own triangles. The vertices it shares with ano
 locked, and the triangles of other blocks around them come along as a halo whose vertices are all
 locked: the halo never changes, it only adds its planes to the quadrics of the shared vertices, so a
 collapse onto the seam is priced as it would be on the whole mesh. Marching cubes makes its own
-halo: each block is meshed with one more cube on every side.
+halo: each block is meshed with one more cube on every side. The vertices next to the locked ones
+stay too (_next_to), and the interior goes to the ratio of the triangles that do not touch them.
 
-Pass 2 (the seams): the grid is offset by half a block, so the seams of pass 1 lie inside the new
-blocks. A triangle goes to the offset block holding its centroid clamped to its pass-1 block, so
-every pass-1 block feeds the eight offset blocks it overlaps, and an offset block reads eight
-pass-1 results. Only the seam vertices of pass 1 (still at full resolution, with the planes of
-full-resolution faces) move in pass 2: decimating the rest again from its own coarser planes would
-add error on error (measured: 6x the Hausdorff distance of in-memory decimation on a gyroid). So
-the seams end denser than the asked ratio: the face count lands above the target. A seam vertex is
-free in pass 2 when all its triangles went to one offset block, and only in the offset block
-holding its position (the one that sees every pass-1 block around it, which holds while input
-triangles are under half a block across; hmira.dask.decimate checks it).
+Pass 2: the grid is offset by half a block, so the seams of pass 1 lie inside the new blocks. A
+triangle goes to the offset block holding its centroid clamped to its pass-1 block, so every
+pass-1 block feeds the eight offset blocks it overlaps, and an offset block reads eight pass-1
+results. Each vertex carries the quadric pass 1 left it (the planes of the full-resolution faces
+it stands for), and pass 2 starts from those quadrics instead of the planes of the coarse faces:
+the error of pass 1 is not forgotten, so pass 2 decimates the whole offset block, seams and
+interiors, as one decimation of the whole mesh would go on: towards the ratio of its input
+triangles, and no further than the error pass 1 reached in the blocks around it.
+A vertex is free in pass 2 when all its triangles went to one offset block, and a seam vertex of
+pass 1 only in the offset block holding its position (the one that sees every pass-1 block around
+it, which holds while input triangles are under half a block across; hmira.dask.decimate checks it).
 
 Every vertex keeps an integer key (its marching-cubes grid edge, or its input index), decimation
 keeps the keys of the survivors, and a vertex two blocks both output was locked in both, so its
@@ -113,17 +115,52 @@ def _split_fans(positions, triangles, locked):
     return positions[origin], tris, np.asarray(locked)[origin], origin
 
 
-def _decimate_block(positions, triangles, locked, own, target, opts):
+def _decimate_block(positions, triangles, locked, own, target, opts, quadrics=None):
+    """Decimates a block (_core._decimate_block after _split_fans): (positions, triangles, kept
+    input rows, error, quadrics of the kept rows). With `quadrics` (10 per row), the vertices start
+    from them instead of the planes of the triangles."""
     positions, triangles, locked, origin = _split_fans(np.asarray(positions, dtype=np.float64), triangles, locked)
-    pos, tris, kept, error = _core._decimate_block(
+    seeds = None if quadrics is None else np.ascontiguousarray(np.asarray(quadrics, dtype=np.float64)[origin])
+    pos, tris, kept, error, q = _core._decimate_block(
         np.ascontiguousarray(positions), np.ascontiguousarray(triangles, dtype=np.int32),
         np.ascontiguousarray(locked, dtype=bool), own=int(own), target_faces=int(target) + (len(triangles) - int(own)),
-        max_error=opts["max_error"], **opts["options"])
+        max_error=opts["max_error"], quadrics=seeds, **opts["options"])
     rows = origin[kept]
     if len(rows) and np.any(rows[1:] <= rows[:-1]):  # copies of one vertex (locked: one position) join again
         uniq, first, inverse = np.unique(rows, return_index=True, return_inverse=True)
-        return pos[first], inverse[tris].astype(np.int32), uniq, error
-    return pos, tris, rows, error
+        # Each copy holds the planes of its own fan (on top of the seed it started from, when given).
+        joined = np.zeros((len(uniq), 10))
+        np.add.at(joined, inverse, q)
+        if quadrics is not None:
+            joined -= (np.bincount(inverse, minlength=len(uniq)) - 1)[:, None] * np.asarray(quadrics)[uniq]
+        return pos[first], inverse[tris].astype(np.int32), uniq, error, joined
+    return pos, tris, rows, error, q
+
+
+def _on_boundary(triangles, n):
+    """The vertices on an edge of only one of the triangles."""
+    t = np.asarray(triangles, dtype=np.int64)
+    e = np.sort(np.concatenate([t[:, [0, 1]], t[:, [1, 2]], t[:, [2, 0]]]), axis=1)
+    key = e[:, 0] * n + e[:, 1]
+    u, c = np.unique(key, return_counts=True)
+    out = np.zeros(n, dtype=bool)
+    once = u[c == 1]
+    out[once // n] = True
+    out[once % n] = True
+    return out
+
+
+def _next_to(held, triangles):
+    """The vertices that share a triangle with a vertex in `held`.
+
+    Blocks decimate side by side, each with the vertices it shares with others locked. A collapse
+    onto a locked vertex would give it new edges, and two blocks could each add the same one (the
+    link condition of each sees only the other's triangles before it changed them). So the
+    vertices next to a locked one stay too: no collapse ever reaches a vertex another block sees,
+    and no two blocks ever change the same ring."""
+    out = np.zeros(len(held), dtype=bool)
+    out[triangles[held[triangles].any(axis=1)].ravel()] = True
+    return out
 
 
 class _Grid:
@@ -143,12 +180,12 @@ class _Grid:
 def _pass1(positions, keys, triangles, own, index, grid, opts):
     """Decimates one pass-1 block (its `own` first triangles, a locked halo after them) and splits
     the result for the eight offset blocks it overlaps: a list of 8 parts (None when empty), each
-    (positions, keys, own triangles, halo triangles, free flags), and the input triangle count of
-    each of the eight (the pass-2 targets)."""
+    (positions, keys, own triangles, halo triangles, free flags, quadrics), the input triangle
+    count of each of the eight (the pass-2 targets), and the error pass 1 reached here."""
     index = np.asarray(index, dtype=np.int64)
-    locked = np.zeros(len(positions), dtype=bool)
-    locked[triangles[own:].ravel()] = True
-    shared_before = locked.copy()
+    shared_before = np.zeros(len(positions), dtype=bool)
+    shared_before[triangles[own:].ravel()] = True
+    locked = shared_before | _next_to(shared_before, triangles[:own])
     lo, hi = index.astype(np.float64), index.astype(np.float64) + 1
 
     def corner_of(p, tris):
@@ -165,11 +202,14 @@ def _pass1(positions, keys, triangles, own, index, grid, opts):
     if own:
         # The triangles at the seams stay for pass 2: the target is the ratio of the others, so
         # that the interior is not decimated further to make up for them.
-        seam = int(locked[triangles[:own]].any(axis=1).sum())
-        pos, tris, kept, _error = _decimate_block(positions, triangles, locked, own, seam + _target(own - seam, opts),
-                                                  opts)
+        # So are the triangles at a boundary of the mesh (kept in place, as in-memory decimation keeps them).
+        held = locked | _on_boundary(triangles, len(positions)) if opts["options"].get("fix_boundary", True) else locked
+        seam = int(held[triangles[:own]].any(axis=1).sum())
+        pos, tris, kept, error, quadrics = _decimate_block(positions, triangles, locked, own,
+                                                           seam + _target(own - seam, opts), opts)
     else:
         pos, tris, kept = np.zeros((0, 3)), np.zeros((0, 3), dtype=np.int32), np.zeros(0, dtype=np.int64)
+        quadrics, error = np.zeros((0, 10)), 0.0
     k = np.asarray(keys)[kept]
     face = shared_before[kept]  # vertices other blocks share
     corner = corner_of(pos, tris)
@@ -201,11 +241,11 @@ def _pass1(positions, keys, triangles, own, index, grid, opts):
         remap[rows] = np.arange(len(rows))
         free = (bits[rows] == (1 << b)) & (~face[rows] | (home_c[rows] == b))
         parts.append((pos[rows], k[rows], remap[own_t].astype(np.int32), remap[halo_t].astype(np.int32), free,
-                      face[rows]))
-    return parts, counts
+                      quadrics[rows]))
+    return parts, counts, error
 
 
-def _pass2(parts, count, opts):
+def _pass2(parts, count, opts, error=None):
     """Merges the pass-1 parts of one offset block by key and decimates it: (positions, keys,
     triangles, shared flags), the shared vertices being those other offset blocks also output."""
     parts = [p for p in parts if p is not None]
@@ -215,14 +255,9 @@ def _pass2(parts, count, opts):
     keys = np.concatenate([p[1] for p in parts])
     uniq, first, inverse = np.unique(keys, return_index=True, return_inverse=True)
     positions = np.concatenate([p[0] for p in parts])[first]
+    quadrics = np.concatenate([p[5] for p in parts])[first]
     free = np.ones(len(uniq), dtype=bool)
     np.logical_and.at(free, inverse, np.concatenate([p[4] for p in parts]))
-    # Only the seams of pass 1 are decimated again: the rest was decimated once, from the planes of
-    # the full-resolution faces, and decimating it again from its own coarser planes would add
-    # error on error.
-    seam_vertex = np.zeros(len(uniq), dtype=bool)
-    np.logical_or.at(seam_vertex, inverse, np.concatenate([p[5] for p in parts]))
-    free &= seam_vertex
     starts = np.cumsum([0] + [len(p[1]) for p in parts])
     own = [inverse[starts[i]:starts[i + 1]][p[2]] for i, p in enumerate(parts)]
     halo = [inverse[starts[i]:starts[i + 1]][p[3]] for i, p in enumerate(parts)]
@@ -231,9 +266,17 @@ def _pass2(parts, count, opts):
     if len(own) == 0:
         return empty
     triangles = np.concatenate([own, halo]).astype(np.int32)
-    seam = int(seam_vertex[own].any(axis=1).sum())
-    target = len(own) - seam + _target(seam, opts) if opts["ratio"] is not None else 0
-    pos, tris, kept, _error = _decimate_block(positions, triangles, ~free, len(own), target, opts)
+    free &= ~_next_to(~free, triangles)
+    # Every vertex goes on from the quadric pass 1 left it (the planes of the full-resolution
+    # faces it stands for), so the whole block decimates towards the ratio of its input triangles,
+    # cheapest first, up to the error pass 1 reached around it (`error`, for a ratio): the seams
+    # end as coarse as the interiors, and no block is forced past that error to make up for the
+    # vertices it must keep.
+    o = opts
+    if error is not None and opts["ratio"] is not None:
+        o = dict(opts, max_error=error if opts["max_error"] is None else min(error, opts["max_error"]))
+    pos, tris, kept, _error, _q = _decimate_block(positions, triangles, ~free, len(own), _target(count, opts), o,
+                                                  quadrics)
     return pos, uniq[kept], tris, ~free[kept]
 
 
@@ -402,7 +445,11 @@ def _pass2_tasks(pass1, grid, opts, label):
 def _pass2_of(results, corners, opts):
     parts = [r[0][c] for r, c in zip(results, corners)]
     count = int(sum(r[1][c] for r, c in zip(results, corners)))
-    return _pass2(parts, count, opts)
+    # The error level pass 1 reached around this block, weighted by the input triangles each
+    # pass-1 block sends here.
+    weights = [float(r[1][c]) for r, c in zip(results, corners)]
+    error = sum(w * r[2] for w, r in zip(weights, results)) / sum(weights) if sum(weights) else 0.0
+    return _pass2(parts, count, opts, error)
 
 
 # ---------------------------------------------------------------- marching cubes, then decimation

@@ -15,7 +15,10 @@
 #include <string>
 #include <vector>
 
+#include <hmira/algorithms/topology/mesh_topology.hpp>
+#include <hmira/io/mesh_io.hpp>
 #include <hmira/io/volume/inr.hpp>
+#include <hmira/meshes/face_vertex_mesh.hpp>
 
 #include "io/io_support.hpp"
 #include "support/cli_runner.hpp"
@@ -140,6 +143,39 @@ TEST(CliMarchingCubes, an_iso_at_the_end_of_the_range_is_accepted) {
     EXPECT_EQ(off.code, 1) << off.err;
     EXPECT_TRUE(one_line_error(off, "iso 1.5 is outside the samples' range [0, 1]"));
     EXPECT_FALSE(std::filesystem::exists(dir.path() / "out2.ply"));
+}
+
+TEST(CliMarchingCubes, decimate_ratio_writes_the_decimated_closed_surface_on_both_paths) {
+    scratch_dir dir;
+    const std::size_t n = 20;
+    hmira_test::write_bytes(dir.path() / "s.raw", bytes_of(sphere_samples(n, 0, 0, 0, 10.0f)));
+    const std::string grid = " --dims 20,20,20 --iso 0";
+    ASSERT_EQ(hmira(dir, "mc s.raw full.ply" + grid).code, 0);
+    hmira::face_vertex_mesh full;
+    ASSERT_TRUE(hmira::io::read_mesh(full, dir.path() / "full.ply"));
+    // The .raw file read slab by slab, and the named shape sampled whole: both decimate.
+    for (const std::string& args : {"mc s.raw d.ply --slab-slices 6 --decimate-ratio 0.2" + grid,
+                                    std::string("mc sphere d.ply --resolution 20 --decimate-ratio 0.2")}) {
+        const auto r = hmira(dir, args);
+        ASSERT_EQ(r.code, 0) << args << ": " << r.err;
+        EXPECT_NE(r.out.find("decimated to "), std::string::npos) << r.out;
+        hmira::face_vertex_mesh m;
+        ASSERT_TRUE(hmira::io::read_mesh(m, dir.path() / "d.ply"));
+        const auto t = hmira::mesh_topology(m);
+        EXPECT_TRUE(t.closed()) << args;
+        EXPECT_EQ(t.genus, 0) << args;
+        EXPECT_EQ(t.non_manifold_edges, 0u) << args;
+        if (args.starts_with("mc s.raw")) {
+            // A fifth of the full surface's triangles (rounded up; one fewer at most).
+            const std::size_t target = (full.face_count() + 4) / 5;
+            EXPECT_LE(m.face_count(), target) << args;
+            EXPECT_GE(m.face_count() + 1, target) << args;
+        }
+    }
+    const auto bad = hmira(dir, "mc sphere e.ply --decimate-ratio 1.5");
+    EXPECT_EQ(bad.code, 2);
+    EXPECT_TRUE(one_line_error(bad, "--decimate-ratio must be in [0, 1]"));
+    EXPECT_FALSE(std::filesystem::exists(dir.path() / "e.ply"));
 }
 
 TEST(CliVoxelize, a_grid_larger_than_the_free_memory_is_refused_at_once_naming_the_estimate) {

@@ -51,15 +51,17 @@ struct decimate_options {
     /// Called between blocks of collapses with the fraction done; returning false cancels (errc::cancelled,
     /// "decimate: cancelled") and restores the mesh from a copy (mesh_rollback) made only when one is given.
     progress_function progress = {};
+    /// Starting quadrics replacing the planes of faces and edges, 10 finite numbers per vertex index (a_xx a_xy a_xz
+    /// a_yy a_yz a_zz b_x b_y b_z c of x^T A x + 2 b.x + c); a run's decimate_result::quadrics given here go on.
+    std::vector<double> start_quadrics = {};
+    bool return_quadrics = false;  ///< fill decimate_result::quadrics
 };
-
 /// Why decimate stopped.
 enum class decimate_stop {
     target_faces,  ///< the face target (target_faces or target_ratio) was reached
     max_error,     ///< the cheapest remaining collapse exceeds max_error
     constraints,   ///< no remaining collapse satisfies the constraints and the topology rules
 };
-
 /// What decimate did.
 struct decimate_result {
     std::size_t faces = 0;                                   ///< faces after
@@ -69,13 +71,11 @@ struct decimate_result {
     decimate_stop stopped_by = decimate_stop::target_faces;  ///< which condition ended it
     double error = 0;  ///< the largest error (a distance, see max_error) of a collapse made
     std::string note;  ///< in words: the triangulation, and why a face target was missed
+    std::vector<double> quadrics = {};  ///< return_quadrics: each vertex index's, as start_quadrics (0 if removed)
 };
-
-/// A mesh decimate can run on: the triangle operators, dense vertex and edge indices, and (for polygon input
-/// only) the Euler operators that triangulate.
+/// A mesh decimate can run on: triangle operators, dense vertex and edge indices (polygons: Euler operators).
 template <class M, class T = default_traits<M>>
 concept decimatable_mesh = triangle_operable_mesh<M, T> && vertex_index_mesh<M, T> && edge_index_mesh<M, T>;
-
 /// Quadric error decimation (Garland and Heckbert 1997): every edge is queued at the error of its best
 /// collapse point (the point that minimises the summed squared distances to the planes of the faces merged
 /// into its ends; the best of the two ends and the midpoint when those planes do not pin a point), and the

@@ -66,12 +66,19 @@ public:
         // The weight of a face's plane: its area over the mean area (or 1), so that the errors
         // stay squared distances on the scale of the model.
         double mean_area = 0;
-        if (o_.area_weighted) {
+        if (seeded()) {
+            // A run that goes on: its quadrics, the planes already summed in them.
+            for (auto v : T::vertices(m_)) {
+                const double* x = o_.start_quadrics.data() + 10 * index(v);
+                quadrics_[index(v)] = {x[0], x[1], x[2], x[3], x[4], x[5], x[6], x[7], x[8], x[9]};
+            }
+        } else if (o_.area_weighted) {
             for (auto f : T::faces(m_)) mean_area += norm(twice_area_vector(T::face_halfedge(m_, f)));
             mean_area = faces > 0 ? mean_area / double(faces) : 0;
         }
         const auto weight = [&](double twice_area) { return mean_area > 0 ? twice_area / mean_area : 1.0; };
         for (auto f : T::faces(m_)) {
+            if (seeded()) break;  // the starting quadrics hold these planes
             const H h = T::face_halfedge(m_, f);
             const V a = T::target(m_, h), b = T::target(m_, T::next(m_, h)), c = T::target(m_, T::prev(m_, h));
             const auto pa = position(a);
@@ -144,6 +151,18 @@ public:
 
     std::size_t faces() const noexcept { return faces_; }
 
+    /// The quadrics of the remaining vertices, 10 numbers per vertex index (decimate_options::start_quadrics);
+    /// zeros at indices without a vertex. O(V).
+    std::vector<double> quadric_values() const {
+        std::vector<double> out(10 * quadrics_.size(), 0.0);
+        for (auto v : T::vertices(m_)) {
+            const quadric& q = quadrics_[index(v)];
+            const double x[10] = {q.xx, q.xy, q.xz, q.yy, q.yz, q.zz, q.bx, q.by, q.bz, q.c};
+            std::copy(x, x + 10, out.begin() + std::ptrdiff_t(10 * index(v)));
+        }
+        return out;
+    }
+
 private:
     // refused_near: an edge at the vertex left the queue refused (refused_), to be retried when
     // a collapse next to the vertex changes its neighbourhood.
@@ -158,6 +177,9 @@ private:
 
     std::size_t index(V v) const { return T::vertex_index(m_, v); }
 
+    /// The quadrics start from options.start_quadrics, which hold every plane already.
+    bool seeded() const { return !o_.start_quadrics.empty(); }
+
     /// The cross product of the triangle of h's edges: twice its area, along its normal.
     vec3<double> twice_area_vector(H h) const {
         const auto p0 = position(T::target(m_, T::opposite(m_, h))), p1 = position(T::target(m_, h));
@@ -168,6 +190,7 @@ private:
     /// triangle, joins the quadrics of the edge's ends.
     template <class Weight>
     void add_edge_plane(H h, const Weight& weight) {
+        if (seeded()) return;
         const V a = T::target(m_, T::opposite(m_, h)), b = T::target(m_, h);
         const auto face_n = twice_area_vector(h);
         const auto n = cross(face_n, position(b) - position(a));
@@ -460,6 +483,15 @@ result<decimate_result> decimate(M& mesh, const decimate_options& options) {
             if (i >= live.size() || !live[i])
                 return bad("option feature_edges names edge " + std::to_string(i) + ", which does not exist");
     }
+    if (!options.start_quadrics.empty()) {
+        const std::size_t need = 10 * T::vertex_index_bound(mesh);
+        if (options.start_quadrics.size() != need)
+            return bad("option start_quadrics needs 10 numbers per vertex index (" + std::to_string(need) + "), got " +
+                       std::to_string(options.start_quadrics.size()));
+        for (std::size_t i = 0; i < need; ++i)
+            if (!std::isfinite(options.start_quadrics[i]))
+                return bad("option start_quadrics has a non-finite number at vertex " + std::to_string(i / 10));
+    }
     if (!options.locked_vertices.empty()) {
         std::vector<std::uint8_t> live(T::vertex_index_bound(mesh), 0);
         for (auto v : T::vertices(mesh)) live[T::vertex_index(mesh, v)] = 1;
@@ -511,6 +543,7 @@ result<decimate_result> decimate(M& mesh, const decimate_options& options) {
     undo.commit();
     out.faces = d.faces();
     out.vertices = T::vertex_count(mesh);
+    if (options.return_quadrics) out.quadrics = d.quadric_values();
     if (out.stopped_by == decimate_stop::constraints)
         out.note +=
             "stopped at " + std::to_string(out.faces) + " faces, above the target of " + std::to_string(target) +
