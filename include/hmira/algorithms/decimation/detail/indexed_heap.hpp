@@ -34,6 +34,19 @@ public:
     std::uint32_t top_key() const noexcept { return entries_[0].key; }
     double top_cost() const noexcept { return entries_[0].cost; }
 
+    /// Cache hints for a coming set() or erase() of the key: the key's place, then (once that has
+    /// arrived) its entry. No effect on the contents.
+    void prefetch_place([[maybe_unused]] std::uint32_t key) const noexcept {
+#if defined(__GNUC__) || defined(__clang__)
+        __builtin_prefetch(&place_[key]);
+#endif
+    }
+    void prefetch_entry([[maybe_unused]] std::uint32_t key) const noexcept {
+#if defined(__GNUC__) || defined(__clang__)
+        if (const std::uint32_t i = place_[key]; i != absent) __builtin_prefetch(&entries_[i]);
+#endif
+    }
+
     /// Inserts the key or changes its cost. O(log n).
     void set(std::uint32_t key, double cost) {
         std::uint32_t i = place_[key];
