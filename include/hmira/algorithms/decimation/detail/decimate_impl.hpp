@@ -265,6 +265,18 @@ private:
         const V a = T::target(m_, o), b = T::target(m_, h);
         const auto f0 = T::face(m_, h), f1 = T::face(m_, o);
         const bool aspect = std::isfinite(o_.max_aspect_ratio);
+        // A first walk over the two rings requests the neighbours' positions, so that their cache
+        // misses overlap with the walk instead of each stalling the arithmetic below.
+        if constexpr (std::is_lvalue_reference_v<decltype(T::position(m_, a))>) {
+            for (const V v : {a, b}) {
+                const H s = T::vertex_halfedge(m_, v);
+                H x = s;
+                do {
+                    prefetch(&T::position(m_, T::target(m_, x)));
+                    x = T::next(m_, T::opposite(m_, x));
+                } while (x != s);
+            }
+        }
         for (const V v : {a, b}) {
             const H s = T::vertex_halfedge(m_, v);
             H x = s;
