@@ -21,6 +21,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "../../../core/huge_pages.hpp"
 #include "../../../core/progress.hpp"
 #include "../../../core/rollback.hpp"
 #include "../../triangle/collapse_edge.hpp"
@@ -55,11 +56,13 @@ public:
     void start(std::size_t faces) {
         faces_ = faces;
         const std::size_t vb = T::vertex_index_bound(m_), eb = T::edge_index_bound(m_);
-        quadrics_.assign(vb, quadric{});
+        // The collapses read these arrays at random places: huge pages keep the address
+        // translations of a large mesh in the TLB.
+        filled(quadrics_, vb, quadric{});
         fixed_.assign(vb, 0);
-        edges_.assign(eb, E{});
+        filled(edges_, eb, E{});
         refused_.assign(eb, 0);
-        mark_.assign(vb, 0);
+        filled(mark_, vb, 0u);
         cos_limit_ = std::cos(o_.max_normal_angle * std::numbers::pi / 180);
         const double sin_min = std::sin(o_.min_angle * std::numbers::pi / 180);
         sin_min_sq_ = sin_min * sin_min;
@@ -441,6 +444,12 @@ private:
             x = T::next(m_, T::opposite(m_, x));
         } while (x != s);
         return true;
+    }
+
+    template <class Vector, class Value>
+    static void filled(Vector& v, std::size_t n, const Value& value) {
+        hmira::detail::reserve_huge(v, n);
+        v.assign(n, value);
     }
 
     static void prefetch([[maybe_unused]] const void* p) noexcept {
