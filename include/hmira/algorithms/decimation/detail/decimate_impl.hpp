@@ -418,6 +418,7 @@ private:
         // instead of coming one after another.
         for (const H y : ring_) {
             const V n = T::target(m_, y);
+            prefetch(&fixed_[index(n)]);
             prefetch(&quadrics_[index(n)]);
             prefetch(reinterpret_cast<const char*>(&quadrics_[index(n)]) + sizeof(quadric) - 1);
             if constexpr (std::is_lvalue_reference_v<decltype(T::position(m_, n))>) prefetch(&T::position(m_, n));
