@@ -134,7 +134,8 @@ private:
 #if defined(__GNUC__) || defined(__clang__)
             // The next level's candidates, whichever child wins: their lines arrive while
             // this level is compared.
-            for (std::size_t c = first; c < last && arity * c + 1 < n; ++c) __builtin_prefetch(&entries_[arity * c + 1]);
+            for (std::size_t c = first; c < last && arity * c + 1 < n; ++c)
+                __builtin_prefetch(&entries_[arity * c + 1]);
 #endif
             for (std::size_t c = first + 1; c < last; ++c)
                 if (before(entries_[c], entries_[child])) child = c;
