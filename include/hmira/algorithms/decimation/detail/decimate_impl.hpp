@@ -278,7 +278,9 @@ private:
                 const H s = T::vertex_halfedge(m_, v);
                 H x = s;
                 do {
-                    prefetch(&T::position(m_, T::target(m_, x)));
+                    const V n = T::target(m_, x);
+                    prefetch(&T::position(m_, n));
+                    prefetch(&quadrics_[index(n)]);  // read by the updates after the collapse
                     x = T::next(m_, T::opposite(m_, x));
                 } while (x != s);
             }
