@@ -9,6 +9,8 @@
 #include <new>
 #include <vector>
 
+#include "../../../core/huge_pages.hpp"
+
 namespace hmira::detail::decimation {
 
 /// Min-heap over keys in [0, bound). Ties are broken by the smaller key, so the order of
@@ -24,15 +26,32 @@ public:
 
     /// Room for keys in [0, bound), all absent. O(bound).
     explicit indexed_heap(std::size_t bound)
-        : place_(bound, absent),
-          storage_(static_cast<entry*>(::operator new[]((bound + pad + 1) * sizeof(entry), std::align_val_t{64}))),
-          entries_(storage_.get() + pad) {}
+        : storage_(static_cast<entry*>(::operator new[]((bound + pad + 1) * sizeof(entry), std::align_val_t{64}))),
+          entries_(storage_.get() + pad) {
+        // Both arrays are read at random places: huge pages keep their address translations in the TLB.
+        advise_huge_pages(storage_.get(), (bound + pad + 1) * sizeof(entry));
+        reserve_huge(place_, bound);
+        place_.assign(bound, absent);
+    }
 
     bool empty() const noexcept { return size_ == 0; }
     std::size_t size() const noexcept { return size_; }
     bool contains(std::uint32_t key) const noexcept { return place_[key] != absent; }
     std::uint32_t top_key() const noexcept { return entries_[0].key; }
     double top_cost() const noexcept { return entries_[0].cost; }
+
+    /// Cache hints for a coming set() or erase() of the key: the key's place, then (once that has
+    /// arrived) its entry. No effect on the contents.
+    void prefetch_place([[maybe_unused]] std::uint32_t key) const noexcept {
+#if defined(__GNUC__) || defined(__clang__)
+        __builtin_prefetch(&place_[key]);
+#endif
+    }
+    void prefetch_entry([[maybe_unused]] std::uint32_t key) const noexcept {
+#if defined(__GNUC__) || defined(__clang__)
+        if (const std::uint32_t i = place_[key]; i != absent) __builtin_prefetch(&entries_[i]);
+#endif
+    }
 
     /// Inserts the key or changes its cost. O(log n).
     void set(std::uint32_t key, double cost) {
@@ -112,6 +131,12 @@ private:
             if (first >= n) break;
             std::size_t child = first;
             const std::size_t last = first + arity < n ? first + arity : n;
+#if defined(__GNUC__) || defined(__clang__)
+            // The next level's candidates, whichever child wins: their lines arrive while
+            // this level is compared.
+            for (std::size_t c = first; c < last && arity * c + 1 < n; ++c)
+                __builtin_prefetch(&entries_[arity * c + 1]);
+#endif
             for (std::size_t c = first + 1; c < last; ++c)
                 if (before(entries_[c], entries_[child])) child = c;
             if (!before(entries_[child], e)) break;
