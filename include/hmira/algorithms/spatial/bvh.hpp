@@ -248,7 +248,17 @@ private:
     };
     friend struct detail::bvh_access;
 
+    /// Up to four children of an inner node tested together: their boxes by axis and lane (a
+    /// layout the compiler vectorises), each child an inner wide node (count 0) or a leaf's range.
+    struct wide_node {
+        std::array<std::array<float, 4>, 3> lo{}, hi{};
+        std::array<std::uint32_t, 4> index{}, count{};
+        std::uint32_t size = 0;
+        bool operator==(const wide_node&) const = default;
+    };
+
     std::vector<node> nodes_;
+    std::vector<wide_node> wide_;                         // the ray queries' four-wide form of nodes_
     std::vector<corners> corners_;                        // leaf order
     std::vector<std::array<std::uint32_t, 3>> vertices_;  // leaf order
     std::vector<std::size_t> faces_;                      // leaf order

@@ -350,6 +350,95 @@ inline double box_entry_float(const bvh::node& n, const float_ray& r, float t0, 
     return t0 <= t1 ? double(t0) : nan;
 }
 
+/// The four-wide form of a binary tree in preorder: each wide node takes an inner node's two
+/// children and keeps opening its largest inner child (by box area) until it has four children
+/// or only leaves; the leaves keep their triangle ranges, so every query finds the same
+/// triangles. Written root first, children after their parent. O(n).
+template <class WideNode>
+void collapse_wide(const std::vector<bvh::node>& nodes, std::vector<WideNode>& wide) {
+    wide.clear();
+    if (nodes.empty()) return;
+    wide.reserve(nodes.size() / 2 + 1);
+    const auto area = [&](std::uint32_t i) {
+        const auto& n = nodes[i];
+        const float dx = n.hi[0] - n.lo[0], dy = n.hi[1] - n.lo[1], dz = n.hi[2] - n.lo[2];
+        return dx * dy + dy * dz + dz * dx;
+    };
+    // pending: (binary node, wide node to fill).
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> pending{{0, 0}};
+    wide.emplace_back();
+    while (!pending.empty()) {
+        const auto [bin, at] = pending.back();
+        pending.pop_back();
+        std::array<std::uint32_t, 4> kids{};
+        std::uint32_t k = 0;
+        if (nodes[bin].count > 0) {
+            kids[k++] = bin;  // a root leaf: one child
+        } else {
+            kids[k++] = bin + 1, kids[k++] = nodes[bin].index;
+            while (k < 4) {
+                int open = -1;
+                for (std::uint32_t j = 0; j < k; ++j)
+                    if (nodes[kids[j]].count == 0 && (open < 0 || area(kids[j]) > area(kids[std::size_t(open)])))
+                        open = int(j);
+                if (open < 0) break;
+                const std::uint32_t c = kids[std::size_t(open)];
+                kids[std::size_t(open)] = c + 1, kids[k++] = nodes[c].index;
+            }
+        }
+        WideNode w;
+        w.size = k;
+        for (std::uint32_t j = 0; j < k; ++j) {
+            const auto& n = nodes[kids[j]];
+            for (std::size_t a = 0; a < 3; ++a) w.lo[a][j] = n.lo[a], w.hi[a][j] = n.hi[a];
+            if (n.count > 0) {
+                w.index[j] = n.index, w.count[j] = n.count;
+            } else {
+                w.index[j] = static_cast<std::uint32_t>(wide.size());
+                wide.emplace_back();
+                pending.push_back({kids[j], w.index[j]});
+            }
+        }
+        wide[at] = w;
+    }
+}
+
+/// box_entry_float on the four boxes of a wide node at once: entry[j] is where the ray enters
+/// box j within [t0, t1], widened as there, or NaN for a miss (lanes past `size` are garbage).
+template <class WideNode>
+inline void box_entry_float4(const WideNode& w, const float_ray& r, float t0, float t1, std::array<float, 4>& entry) {
+    std::array<float, 4> lo, hi;
+    lo.fill(t0), hi.fill(t1);
+    for (std::size_t k = 0; k < 3; ++k) {
+        for (std::size_t j = 0; j < 4; ++j) {
+            const float a = (w.lo[k][j] - r.o[k]) * r.inv[k], b = (w.hi[k][j] - r.o[k]) * r.inv[k];
+            const float near = a < b ? a : b, far = a < b ? b : a;
+            const float wn = near - (float_slack * std::abs(near) + r.err[k]);
+            const float wf = far + (float_slack * std::abs(far) + r.err[k]);
+            lo[j] = lo[j] < wn ? wn : lo[j];
+            hi[j] = hi[j] < wf ? hi[j] : wf;
+        }
+    }
+    for (std::size_t j = 0; j < 4; ++j) entry[j] = lo[j] <= hi[j] ? lo[j] : std::numeric_limits<float>::quiet_NaN();
+}
+
+/// box_entry (double slabs) on the four boxes of a wide node.
+template <class WideNode>
+inline void box_entry4(const WideNode& w, const vec3<double>& o, const vec3<double>& inv, double t0, double t1,
+                       std::array<double, 4>& entry) {
+    constexpr double slack = 4 * std::numeric_limits<double>::epsilon();
+    for (std::size_t j = 0; j < w.size; ++j) {
+        double s0 = t0, s1 = t1;
+        for (std::size_t k = 0; k < 3; ++k) {
+            double a = (double(w.lo[k][j]) - o[k]) * inv[k], b = (double(w.hi[k][j]) - o[k]) * inv[k];
+            if (a > b) std::swap(a, b);
+            if (a == a) s0 = std::max(s0, a);
+            if (b == b) s1 = std::min(s1, b + std::abs(b) * slack);
+        }
+        entry[j] = s0 <= s1 ? s0 : nan;
+    }
+}
+
 }  // namespace detail::bvh_build
 
 }  // namespace hmira
