@@ -249,11 +249,11 @@ private:
     friend struct detail::bvh_access;
 
     /// Up to four children of an inner node tested together: their boxes by axis and lane (a
-    /// layout the compiler vectorises), each child an inner wide node (count 0) or a leaf's range.
-    struct wide_node {
+    /// layout the compiler vectorises), each child an inner wide node (count 0) or a leaf's
+    /// range; an unused lane has index and count 0 (the root is no one's child). Two cache lines.
+    struct alignas(64) wide_node {
         std::array<std::array<float, 4>, 3> lo{}, hi{};
         std::array<std::uint32_t, 4> index{}, count{};
-        std::uint32_t size = 0;
         bool operator==(const wide_node&) const = default;
     };
 

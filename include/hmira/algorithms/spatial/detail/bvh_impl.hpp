@@ -240,6 +240,19 @@ struct bvh_access {
         });
     }
 
+    /// Asks for the memory a stack item will read, while the nearer items are processed.
+    template <class Item>
+    static void prefetch([[maybe_unused]] const bvh& t, [[maybe_unused]] const Item& x) {
+#if defined(__GNUC__)
+        if (x.count == 0) {
+            __builtin_prefetch(&t.wide_[x.index]);
+            __builtin_prefetch(reinterpret_cast<const char*>(&t.wide_[x.index]) + 64);
+        } else {
+            __builtin_prefetch(&t.corners_[x.index]);
+        }
+#endif
+    }
+
     /// traverse's loop, with entry(node, e) giving where the ray enters each of a wide node's
     /// boxes (NaN: it misses). A stack entry is a child: a wide node (count 0) or a leaf range.
     template <class F, class Bound, class Leaf, class Entry>
@@ -272,9 +285,10 @@ struct bvh_access {
             // The children hit, farthest first, so that the nearest is popped next.
             item hit[4];
             int n = 0;
-            for (std::uint32_t j = 0; j < w.size; ++j) {
-                if (!(e[j] <= bound())) continue;
+            for (std::uint32_t j = 0; j < 4; ++j) {
+                if (!(e[j] <= bound()) || (w.index[j] == 0 && w.count[j] == 0)) continue;
                 item x{w.index[j], w.count[j], e[j]};
+                prefetch(t, x);
                 int at = n++;
                 for (; at > 0 && hit[at - 1].t < x.t; --at) hit[at] = hit[at - 1];
                 hit[at] = x;
