@@ -151,8 +151,9 @@ template <class M, class T = default_traits<M>>
 
 /// A bounding-volume hierarchy over triangles with vertex indices into a position array, each
 /// triangle carrying a face index. Nodes are 32 bytes (a float box rounded outward, a child or
-/// first-triangle index and a count); the triangles are kept in leaf order with their corners
-/// in double, and every test runs in double. Triangles whose corners are collinear (decided
+/// first-triangle index and a count); the ray queries walk a four-wide form of the same tree
+/// (each node's four children's boxes tested together). The triangles are kept in leaf order
+/// with their corners in double, and every triangle test runs in double. Triangles whose corners are collinear (decided
 /// exactly) are degenerate: rays never hit them; the closest point may lie on them.
 /// Queries are const and may run concurrently.
 class bvh {
