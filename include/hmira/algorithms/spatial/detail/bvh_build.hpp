@@ -366,8 +366,10 @@ void collapse_wide(const std::vector<bvh::node>& nodes, std::vector<WideNode>& w
     std::vector<std::uint32_t> first(nodes.size()), end(nodes.size());
     for (std::size_t i = nodes.size(); i-- > 0;) {
         const auto& n = nodes[i];
-        if (n.count > 0) first[i] = n.index, end[i] = n.index + n.count;
-        else first[i] = first[i + 1], end[i] = end[n.index];
+        if (n.count > 0)
+            first[i] = n.index, end[i] = n.index + n.count;
+        else
+            first[i] = first[i + 1], end[i] = end[n.index];
     }
     const auto leaf = [&](std::uint32_t i) { return nodes[i].count > 0 || end[i] - first[i] <= wide_leaf; };
     const auto area = [&](std::uint32_t i) {
@@ -390,8 +392,7 @@ void collapse_wide(const std::vector<bvh::node>& nodes, std::vector<WideNode>& w
             while (k < 4) {
                 int open = -1;
                 for (std::uint32_t j = 0; j < k; ++j)
-                    if (!leaf(kids[j]) && (open < 0 || area(kids[j]) > area(kids[std::size_t(open)])))
-                        open = int(j);
+                    if (!leaf(kids[j]) && (open < 0 || area(kids[j]) > area(kids[std::size_t(open)]))) open = int(j);
                 if (open < 0) break;
                 const std::uint32_t c = kids[std::size_t(open)];
                 kids[std::size_t(open)] = c + 1, kids[k++] = nodes[c].index;
