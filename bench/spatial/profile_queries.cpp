@@ -2,6 +2,7 @@
 // armadillo.off Loop-subdivided twice, 10^6 points uniform in its box enlarged by 10%, rays
 // from them in random directions. For profiling; bench.py gives the comparison with the peers.
 // Usage: profile_queries MESH [queries] [what...] (what: build cp ray any sd; default all)
+// Build: g++ -std=c++20 -O3 -DNDEBUG -DHMIRA_HAS_TBB=1 -Iinclude bench/spatial/profile_queries.cpp -ltbb
 #include <chrono>
 #include <cmath>
 #include <cstdio>
