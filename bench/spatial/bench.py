@@ -42,6 +42,7 @@ def alternated(h, p, repeats: int):
         t0 = time.perf_counter()
         op = p()
         tp.append(time.perf_counter() - t0)
+    print(f"  hmira {np.median(th):.3f} s, peer {np.median(tp):.3f} s (load {os.getloadavg()[0]:.1f})", flush=True)
     return float(np.median(th)), oh, float(np.median(tp)), op
 
 
@@ -128,6 +129,8 @@ def main() -> None:
     try:
         import trimesh
 
+        if a.trimesh_subset <= 0:
+            raise ImportError("skipped (--trimesh-subset 0)")
         tm = trimesh.Trimesh(v, f, process=False)
         n = min(a.trimesh_subset, a.queries)
         sub = points[:n]
