@@ -22,12 +22,28 @@ import hmira
 
 
 def timed(f, repeats: int = 1):
-    best, out = np.inf, None
+    """The median wall time of `repeats` calls, and the last call's result."""
+    times, out = [], None
     for _ in range(repeats):
         t0 = time.perf_counter()
         out = f()
-        best = min(best, time.perf_counter() - t0)
-    return best, out
+        times.append(time.perf_counter() - t0)
+    return float(np.median(times)), out
+
+
+def alternated(h, p, repeats: int):
+    """hmira's call h and the peer's call p run in turns (h, p, h, p, ...), so that a change of
+    load falls on both: (median time of h, h's result, median time of p, p's result)."""
+    th, tp, oh, op = [], [], None, None
+    for _ in range(repeats):
+        t0 = time.perf_counter()
+        oh = h()
+        th.append(time.perf_counter() - t0)
+        t0 = time.perf_counter()
+        op = p()
+        tp.append(time.perf_counter() - t0)
+    print(f"  hmira {np.median(th):.3f} s, peer {np.median(tp):.3f} s (load {os.getloadavg()[0]:.1f})", flush=True)
+    return float(np.median(th)), oh, float(np.median(tp)), op
 
 
 def main() -> None:
@@ -58,15 +74,8 @@ def main() -> None:
     dirs /= np.linalg.norm(dirs, axis=1)[:, None]
 
     rows = []
-
-    t_build, bvh = timed(lambda: hmira.BVH(m), a.repeats)
-    t_cp, (cp, cf, _, cd) = timed(lambda: bvh.closest_point(points), a.repeats)
-    t_ray, (rt, rf, _, _) = timed(lambda: bvh.ray_intersect(points, dirs), a.repeats)
-    t_any, hit_any = timed(lambda: bvh.ray_intersect(points, dirs, mode="any"), a.repeats)
-    t_sd, sd = timed(lambda: hmira.signed_distance(v, f, points), a.repeats)
-    t_ray32, (rt32, _, _, _) = timed(
-        lambda: bvh.ray_intersect(points.astype(np.float32), dirs.astype(np.float32)), a.repeats)
-
+    print(f"load average before: {os.getloadavg()}")
+    bvh = hmira.BVH(m)
     try:
         import open3d as o3d
 
@@ -80,17 +89,27 @@ def main() -> None:
             scene.compute_closest_points(o3d.core.Tensor(p32[:1]))  # the lazy build happens here
             return scene
 
-        o_build, scene = timed(o3d_build, a.repeats)
-        o_cp, ocp = timed(lambda: scene.compute_closest_points(o3d.core.Tensor(p32)), a.repeats)
-        o_ray, oray = timed(lambda: scene.cast_rays(o3d.core.Tensor(rays32)), a.repeats)
-        o_any, oocc = timed(lambda: scene.test_occlusions(o3d.core.Tensor(rays32)), a.repeats)
-        o_sd, osd = timed(lambda: scene.compute_signed_distance(o3d.core.Tensor(p32)), a.repeats)
+        # Each query type: hmira and Open3D in turns, medians of a.repeats runs each.
+        t_build, bvh, o_build, scene = alternated(lambda: hmira.BVH(m), o3d_build, a.repeats)
+        t_ray, (rt, rf, _, _), o_ray, oray = alternated(
+            lambda: bvh.ray_intersect(points, dirs), lambda: scene.cast_rays(o3d.core.Tensor(rays32)), a.repeats)
+        t_ray32, _, o_ray32, _ = alternated(
+            lambda: bvh.ray_intersect(points.astype(np.float32), dirs.astype(np.float32)),
+            lambda: scene.cast_rays(o3d.core.Tensor(rays32)), a.repeats)
+        t_any, hit_any, o_any, oocc = alternated(
+            lambda: bvh.ray_intersect(points, dirs, mode="any"),
+            lambda: scene.test_occlusions(o3d.core.Tensor(rays32)), a.repeats)
+        t_cp, (cp, cf, _, cd), o_cp, ocp = alternated(
+            lambda: bvh.closest_point(points), lambda: scene.compute_closest_points(o3d.core.Tensor(p32)), a.repeats)
+        t_sd, sd, o_sd, osd = alternated(
+            lambda: hmira.signed_distance(v, f, points),
+            lambda: scene.compute_signed_distance(o3d.core.Tensor(p32)), a.repeats)
         od = np.linalg.norm(ocp["points"].numpy() - p32, axis=1)
         ot = oray["t_hit"].numpy()
         rows += [("build (add_triangles + first query)", t_build, "Open3D", o_build),
                  ("closest point", t_cp, "Open3D", o_cp),
                  ("first-hit rays", t_ray, "Open3D", o_ray),
-                 ("first-hit rays (float32 input)", t_ray32, "Open3D", o_ray),
+                 ("first-hit rays (float32 input)", t_ray32, "Open3D", o_ray32),
                  ("any-hit rays (occlusion)", t_any, "Open3D", o_any),
                  ("signed distance", t_sd, "Open3D", o_sd)]
         print(f"signed distance: the sign differs from Open3D's (ray parity) at "
@@ -105,10 +124,13 @@ def main() -> None:
               f"occlusion differs on {np.sum(oocc.numpy().astype(bool) != hit_any)}")
     except ImportError as e:
         print(f"Open3D not available: {e}")
+        t_cp, (cp, cf, _, cd) = timed(lambda: bvh.closest_point(points), a.repeats)
 
     try:
         import trimesh
 
+        if a.trimesh_subset <= 0:
+            raise ImportError("skipped (--trimesh-subset 0)")
         tm = trimesh.Trimesh(v, f, process=False)
         n = min(a.trimesh_subset, a.queries)
         sub = points[:n]
@@ -127,8 +149,8 @@ def main() -> None:
                                ("winding number", igl.SIGNED_DISTANCE_TYPE_WINDING_NUMBER, a.igl_wn_subset)]:
             n = min(n, a.queries)
             sub = np.ascontiguousarray(points[:n])
-            i_t, (isd, _, _, _) = timed(lambda: igl.signed_distance(sub, v, fi, kind), 1)
-            h_t, hsd = timed(lambda: hmira.signed_distance(v, f, sub), a.repeats)
+            h_t, hsd, i_t, (isd, _, _, _) = alternated(lambda: hmira.signed_distance(v, f, sub),
+                                                       lambda: igl.signed_distance(sub, v, fi, kind), a.repeats)
             rows.append((f"signed distance, {n} queries", h_t, f"igl {label}", i_t))
             print(f"agreement with libigl ({label}): max |distance difference| = "
                   f"{np.max(np.abs(np.abs(isd) - np.abs(hsd))):.2e}; "
@@ -139,6 +161,7 @@ def main() -> None:
     print(f"\n{'query':44s} {'hmira s':>9s} {'peer':>8s} {'peer s':>9s} {'ratio':>7s}")
     for name, h, peer, p in rows:
         print(f"{name:44s} {h:9.3f} {peer:>8s} {p:9.3f} {h / p:7.3g}x")
+    print(f"load average after: {os.getloadavg()}")
     if not a.no_signs:
         sign_table()
 

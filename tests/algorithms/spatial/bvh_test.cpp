@@ -531,11 +531,16 @@ std::vector<hmira::ray> grazing_rays(const face_list& g, std::mt19937_64& rng) {
 
 }  // namespace
 
-TEST(bvh, float_box_test_answers_exactly_as_the_double_one_and_as_brute_force) {
+// The ray queries walk the four-wide form of the tree, whose leaves merge small subtrees: leaf
+// sizes below, at and above that merge size.
+class bvh_leaf_size : public ::testing::TestWithParam<std::uint32_t> {};
+INSTANTIATE_TEST_SUITE_P(bvh, bvh_leaf_size, ::testing::Values(1u, 6u, 16u));
+
+TEST_P(bvh_leaf_size, float_box_test_answers_exactly_as_the_double_one_and_as_brute_force) {
     const face_list g = random_terrain(grid_n * 3, 4);
     std::vector<std::array<std::uint32_t, 3>> tris;
     for (const auto& f : g.faces) tris.push_back({std::uint32_t(f[0]), std::uint32_t(f[1]), std::uint32_t(f[2])});
-    auto tree = hmira::bvh::from_triangles(g.points, tris, {}, {.max_leaf_size = 1});
+    auto tree = hmira::bvh::from_triangles(g.points, tris, {}, {.max_leaf_size = GetParam()});
     ASSERT_TRUE(tree);
     std::mt19937_64 rng(11);
     const auto rays = grazing_rays(g, rng);

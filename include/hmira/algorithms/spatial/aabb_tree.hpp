@@ -17,6 +17,7 @@
 #include "../../concepts.hpp"
 #include "../../core/result.hpp"
 #include "../../core/vec3.hpp"
+#include "../conversion/detail/parallel.hpp"
 #include "ray.hpp"
 
 namespace hmira {
@@ -227,6 +228,44 @@ private:
         return t0;
     }
 
+    /// Boxes node `at` over order[begin, end) and, for an inner node, splits the range at its
+    /// median along the centres' longest axis and builds the children (in parallel when big).
+    void build_subtree(std::uint32_t at, std::uint32_t begin, std::uint32_t end, std::vector<std::uint32_t>& order,
+                       const std::vector<vec3<double>>& centre) {
+        node& nd = nodes_[at];
+        constexpr double inf = std::numeric_limits<double>::infinity();
+        nd.lo = {inf, inf, inf};
+        nd.hi = -nd.lo;
+        vec3<double> clo = nd.lo, chi = nd.hi;
+        for (std::uint32_t i = begin; i < end; ++i) {
+            for (const auto& q : corners_[order[i]])
+                for (std::size_t k = 0; k < 3; ++k) {
+                    nd.lo[k] = std::min(nd.lo[k], q[k]);
+                    nd.hi[k] = std::max(nd.hi[k], q[k]);
+                }
+            for (std::size_t k = 0; k < 3; ++k) {
+                clo[k] = std::min(clo[k], centre[order[i]][k]);
+                chi[k] = std::max(chi[k], centre[order[i]][k]);
+            }
+        }
+        if (nd.count > 0) return;
+        std::size_t axis = 0;
+        for (std::size_t k = 1; k < 3; ++k)
+            if (chi[k] - clo[k] > chi[axis] - clo[axis]) axis = k;
+        const std::uint32_t mid = begin + (end - begin) / 2;
+        // Ties broken by index keep the split (and so the tree) independent of the sort.
+        std::nth_element(order.begin() + begin, order.begin() + mid, order.begin() + end,
+                         [&](std::uint32_t a, std::uint32_t b) {
+                             return centre[a][axis] < centre[b][axis] || (centre[a][axis] == centre[b][axis] && a < b);
+                         });
+        const std::uint32_t left = nd.first;
+        if (end - begin > 8192)
+            detail::parallel_invoke([&] { build_subtree(left, begin, mid, order, centre); },
+                                    [&] { build_subtree(left + 1, mid, end, order, centre); });
+        else
+            build_subtree(left, begin, mid, order, centre), build_subtree(left + 1, mid, end, order, centre);
+    }
+
     void build() {
         nodes_.clear();
         if (corners_.empty()) return;
@@ -237,10 +276,12 @@ private:
             order[i] = std::uint32_t(i);
             centre[i] = (corners_[i][0] + corners_[i][1] + corners_[i][2]) / 3.0;
         }
+        // The shape depends on n alone (median splits): number the nodes first, depth first
+        // with the left child first; then box and split the subtrees in parallel, each range
+        // split in the order a serial build would leave it, so the tree does not depend on the
+        // schedule.
         nodes_.reserve(2 * (n / leaf_size + 1));
         nodes_.push_back({});
-        // Iterative build: (node, begin, end) ranges of `order`; depth stays O(log n) because
-        // every split is at the median.
         struct task {
             std::uint32_t node, begin, end;
         };
@@ -248,45 +289,21 @@ private:
         while (!todo.empty()) {
             const task t = todo.back();
             todo.pop_back();
-            node& nd = nodes_[t.node];
-            nd.lo = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
-                     std::numeric_limits<double>::infinity()};
-            nd.hi = -nd.lo;
-            vec3<double> clo = nd.lo, chi = nd.hi;
-            for (std::uint32_t i = t.begin; i < t.end; ++i) {
-                for (const auto& q : corners_[order[i]])
-                    for (std::size_t k = 0; k < 3; ++k) {
-                        nd.lo[k] = std::min(nd.lo[k], q[k]);
-                        nd.hi[k] = std::max(nd.hi[k], q[k]);
-                    }
-                for (std::size_t k = 0; k < 3; ++k) {
-                    clo[k] = std::min(clo[k], centre[order[i]][k]);
-                    chi[k] = std::max(chi[k], centre[order[i]][k]);
-                }
-            }
             if (t.end - t.begin <= leaf_size) {
-                nd.first = t.begin;
-                nd.count = t.end - t.begin;
+                nodes_[t.node].first = t.begin;
+                nodes_[t.node].count = t.end - t.begin;
                 continue;
             }
-            std::size_t axis = 0;
-            for (std::size_t k = 1; k < 3; ++k)
-                if (chi[k] - clo[k] > chi[axis] - clo[axis]) axis = k;
-            const std::uint32_t mid = t.begin + (t.end - t.begin) / 2;
-            // Ties broken by index keep the split (and so the tree) independent of the sort.
-            std::nth_element(order.begin() + t.begin, order.begin() + mid, order.begin() + t.end,
-                             [&](std::uint32_t a, std::uint32_t b) {
-                                 return centre[a][axis] < centre[b][axis] ||
-                                        (centre[a][axis] == centre[b][axis] && a < b);
-                             });
             const auto left = std::uint32_t(nodes_.size());
             nodes_[t.node].first = left;
             nodes_[t.node].count = 0;
             nodes_.push_back({});
             nodes_.push_back({});
+            const std::uint32_t mid = t.begin + (t.end - t.begin) / 2;
             todo.push_back({left + 1, mid, t.end});
             todo.push_back({left, t.begin, mid});
         }
+        build_subtree(0, 0, std::uint32_t(n), order, centre);
         // Store the triangles in leaf order, so a leaf's triangles are contiguous.
         std::vector<std::array<vec3<double>, 3>> corners(n);
         std::vector<std::size_t> ids(n);

@@ -151,8 +151,9 @@ template <class M, class T = default_traits<M>>
 
 /// A bounding-volume hierarchy over triangles with vertex indices into a position array, each
 /// triangle carrying a face index. Nodes are 32 bytes (a float box rounded outward, a child or
-/// first-triangle index and a count); the triangles are kept in leaf order with their corners
-/// in double, and every test runs in double. Triangles whose corners are collinear (decided
+/// first-triangle index and a count); the ray queries walk a four-wide form of the same tree
+/// (each node's four children's boxes tested together). The triangles are kept in leaf order
+/// with their corners in double, and every triangle test runs in double. Triangles whose corners are collinear (decided
 /// exactly) are degenerate: rays never hit them; the closest point may lie on them.
 /// Queries are const and may run concurrently.
 class bvh {
@@ -248,7 +249,17 @@ private:
     };
     friend struct detail::bvh_access;
 
+    /// Up to four children of an inner node tested together: their boxes by axis and lane (a
+    /// layout the compiler vectorises), each child an inner wide node (count 0) or a leaf's
+    /// range; an unused lane has index and count 0 (the root is no one's child). Two cache lines.
+    struct alignas(64) wide_node {
+        std::array<std::array<float, 4>, 3> lo{}, hi{};
+        std::array<std::uint32_t, 4> index{}, count{};
+        bool operator==(const wide_node&) const = default;
+    };
+
     std::vector<node> nodes_;
+    std::vector<wide_node> wide_;                         // the ray queries' four-wide form of nodes_
     std::vector<corners> corners_;                        // leaf order
     std::vector<std::array<std::uint32_t, 3>> vertices_;  // leaf order
     std::vector<std::size_t> faces_;                      // leaf order

@@ -30,6 +30,8 @@ inline constexpr int bins = 16;
 /// Past this depth the build splits at the median, so no path exceeds 64 + 32 nodes and the
 /// traversal stacks below cannot overflow.
 inline constexpr std::size_t sah_depth = 64, stack_size = 128;
+/// The four-wide nodes make a leaf of any subtree of at most this many triangles.
+inline constexpr std::uint32_t wide_leaf = 6;
 /// Subtrees over more triangles than this build their two children in parallel.
 inline constexpr std::uint32_t parallel_threshold = 4096;
 
@@ -191,7 +193,7 @@ struct builder {
     /// The median along the centroids' longest axis, ties broken by index.
     std::uint32_t median(std::uint32_t begin, std::uint32_t end, const box& cb) const {
         std::size_t axis = 0;
-        for (std::size_t k = 1; k < 3; ++k)
+        for (std::size_t k = 6; k < 3; ++k)
             if (cb.hi[k] - cb.lo[k] > cb.hi[axis] - cb.lo[axis]) axis = k;
         const std::uint32_t mid = begin + (end - begin) / 2;
         std::nth_element(prims.begin() + begin, prims.begin() + mid, prims.begin() + end,
@@ -348,6 +350,104 @@ inline double box_entry_float(const bvh::node& n, const float_ray& r, float t0, 
         t1 = std::min(t1, far + (float_slack * std::abs(far) + r.err[k]));
     }
     return t0 <= t1 ? double(t0) : nan;
+}
+
+/// The four-wide form of a binary tree in preorder: each wide node takes an inner node's two
+/// children and keeps opening its largest inner child (by box area) until it has four children
+/// or only leaves; the leaves keep their triangle ranges, so every query finds the same
+/// triangles. Written root first, children after their parent. O(n).
+template <class WideNode>
+void collapse_wide(const std::vector<bvh::node>& nodes, std::vector<WideNode>& wide) {
+    wide.clear();
+    if (nodes.empty()) return;
+    wide.reserve(nodes.size() / 2 + 1);
+    // A subtree's triangles are a contiguous range (preorder); one of at most wide_leaf
+    // triangles becomes one leaf: fewer, fuller nodes for the same triangles.
+    std::vector<std::uint32_t> first(nodes.size()), end(nodes.size());
+    for (std::size_t i = nodes.size(); i-- > 0;) {
+        const auto& n = nodes[i];
+        if (n.count > 0)
+            first[i] = n.index, end[i] = n.index + n.count;
+        else
+            first[i] = first[i + 1], end[i] = end[n.index];
+    }
+    const auto leaf = [&](std::uint32_t i) { return nodes[i].count > 0 || end[i] - first[i] <= wide_leaf; };
+    const auto area = [&](std::uint32_t i) {
+        const auto& n = nodes[i];
+        const float dx = n.hi[0] - n.lo[0], dy = n.hi[1] - n.lo[1], dz = n.hi[2] - n.lo[2];
+        return dx * dy + dy * dz + dz * dx;
+    };
+    // pending: (binary node, wide node to fill).
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> pending{{0, 0}};
+    wide.emplace_back();
+    while (!pending.empty()) {
+        const auto [bin, at] = pending.back();
+        pending.pop_back();
+        std::array<std::uint32_t, 4> kids{};
+        std::uint32_t k = 0;
+        if (leaf(bin)) {
+            kids[k++] = bin;  // a root leaf: one child
+        } else {
+            kids[k++] = bin + 1, kids[k++] = nodes[bin].index;
+            while (k < 4) {
+                int open = -1;
+                for (std::uint32_t j = 0; j < k; ++j)
+                    if (!leaf(kids[j]) && (open < 0 || area(kids[j]) > area(kids[std::size_t(open)]))) open = int(j);
+                if (open < 0) break;
+                const std::uint32_t c = kids[std::size_t(open)];
+                kids[std::size_t(open)] = c + 1, kids[k++] = nodes[c].index;
+            }
+        }
+        WideNode w;
+        for (std::uint32_t j = 0; j < k; ++j) {
+            const auto& n = nodes[kids[j]];
+            for (std::size_t a = 0; a < 3; ++a) w.lo[a][j] = n.lo[a], w.hi[a][j] = n.hi[a];
+            if (leaf(kids[j])) {
+                w.index[j] = first[kids[j]], w.count[j] = end[kids[j]] - first[kids[j]];
+            } else {
+                w.index[j] = static_cast<std::uint32_t>(wide.size());
+                wide.emplace_back();
+                pending.push_back({kids[j], w.index[j]});
+            }
+        }
+        wide[at] = w;
+    }
+}
+
+/// box_entry_float on the four boxes of a wide node at once: entry[j] is where the ray enters
+/// box j within [t0, t1], widened as there, or NaN for a miss (an unused lane's is meaningless).
+template <class WideNode>
+inline void box_entry_float4(const WideNode& w, const float_ray& r, float t0, float t1, std::array<float, 4>& entry) {
+    std::array<float, 4> lo, hi;
+    lo.fill(t0), hi.fill(t1);
+    for (std::size_t k = 0; k < 3; ++k) {
+        for (std::size_t j = 0; j < 4; ++j) {
+            const float a = (w.lo[k][j] - r.o[k]) * r.inv[k], b = (w.hi[k][j] - r.o[k]) * r.inv[k];
+            const float near = a < b ? a : b, far = a < b ? b : a;
+            const float wn = near - (float_slack * std::abs(near) + r.err[k]);
+            const float wf = far + (float_slack * std::abs(far) + r.err[k]);
+            lo[j] = lo[j] < wn ? wn : lo[j];
+            hi[j] = hi[j] < wf ? hi[j] : wf;
+        }
+    }
+    for (std::size_t j = 0; j < 4; ++j) entry[j] = lo[j] <= hi[j] ? lo[j] : std::numeric_limits<float>::quiet_NaN();
+}
+
+/// box_entry (double slabs) on the four boxes of a wide node.
+template <class WideNode>
+inline void box_entry4(const WideNode& w, const vec3<double>& o, const vec3<double>& inv, double t0, double t1,
+                       std::array<double, 4>& entry) {
+    constexpr double slack = 4 * std::numeric_limits<double>::epsilon();
+    for (std::size_t j = 0; j < 4; ++j) {
+        double s0 = t0, s1 = t1;
+        for (std::size_t k = 0; k < 3; ++k) {
+            double a = (double(w.lo[k][j]) - o[k]) * inv[k], b = (double(w.hi[k][j]) - o[k]) * inv[k];
+            if (a > b) std::swap(a, b);
+            if (a == a) s0 = std::max(s0, a);
+            if (b == b) s1 = std::min(s1, b + std::abs(b) * slack);
+        }
+        entry[j] = s0 <= s1 ? s0 : nan;
+    }
 }
 
 }  // namespace detail::bvh_build

@@ -69,6 +69,7 @@ struct bvh_access {
             t.nodes_.reserve(2 * n);
             t.depth_ = b.build(t.nodes_, 0, static_cast<std::uint32_t>(n), 0);
             t.reach_ = reach_of(t.nodes_[0]);
+            bb::collapse_wide(t.nodes_, t.wide_);
             t.corners_.resize(n);
             t.vertices_.resize(n);
             t.faces_.resize(n);
@@ -134,6 +135,7 @@ struct bvh_access {
             }
         }
         if (!t.nodes_.empty()) t.reach_ = reach_of(t.nodes_[0]);
+        bb::collapse_wide(t.nodes_, t.wide_);
         return {};
     }
 
@@ -214,45 +216,62 @@ struct bvh_access {
 
     /// The traversal the three ray queries share: calls leaf(i, t, u, v) on every hit of a
     /// non-degenerate triangle with t in [t_min, bound()], nearer boxes first; stops when
-    /// leaf returns false. The boxes are tested in float (box_entry_float) unless the ray
-    /// cannot be bounded in float or `boxes` asks for double; both keep every box the ray
-    /// meets, and the triangles are always tested in double, so the hits are the same.
+    /// leaf returns false. It walks the four-wide nodes, testing a node's boxes together, in
+    /// float (box_entry_float4) unless the ray cannot be bounded in float or `boxes` asks for
+    /// double; both keep every box the ray meets, and the triangles are always tested in
+    /// double, so the hits are the same.
     template <class Bound, class Leaf>
     static void traverse(const bvh& t, const ray& r, bvh_box_test boxes, const Bound& bound, const Leaf& leaf) {
         namespace bb = detail::bvh_build;
-        if (t.nodes_.empty()) return;
+        if (t.wide_.empty()) return;
         if (boxes == bvh_box_test::float32) {
             const bb::float_ray f = bb::prepare_float_ray(r.origin, r.direction, t.reach_);
             if (f.exact) {
                 const float t_min = bb::round_down(r.t_min);
-                descend(t, r, bound, leaf,
-                        [&](const node& n) { return bb::box_entry_float(n, f, t_min, bb::round_up(bound())); });
+                descend<float>(t, r, bound, leaf, [&](const bvh::wide_node& w, std::array<float, 4>& e) {
+                    bb::box_entry_float4(w, f, t_min, bb::round_up(bound()), e);
+                });
                 return;
             }
         }
         const vec3<double> inv{1.0 / r.direction.x, 1.0 / r.direction.y, 1.0 / r.direction.z};
-        descend(t, r, bound, leaf, [&](const node& n) { return bb::box_entry(n, r.origin, inv, r.t_min, bound()); });
+        descend<double>(t, r, bound, leaf, [&](const bvh::wide_node& w, std::array<double, 4>& e) {
+            bb::box_entry4(w, r.origin, inv, r.t_min, bound(), e);
+        });
     }
 
-    /// traverse's loop, with entry(node) giving where the ray enters a box (NaN: it misses).
-    template <class Bound, class Leaf, class Entry>
+    /// Asks for the memory a stack item will read, while the nearer items are processed.
+    template <class Item>
+    static void prefetch([[maybe_unused]] const bvh& t, [[maybe_unused]] const Item& x) {
+#if defined(__GNUC__)
+        if (x.count == 0) {
+            __builtin_prefetch(&t.wide_[x.index]);
+            __builtin_prefetch(reinterpret_cast<const char*>(&t.wide_[x.index]) + 64);
+        } else {
+            __builtin_prefetch(&t.corners_[x.index]);
+        }
+#endif
+    }
+
+    /// traverse's loop, with entry(node, e) giving where the ray enters each of a wide node's
+    /// boxes (NaN: it misses). A stack entry is a child: a wide node (count 0) or a leaf range.
+    template <class F, class Bound, class Leaf, class Entry>
     static void descend(const bvh& t, const ray& r, const Bound& bound, const Leaf& leaf, const Entry& entry) {
         namespace bb = detail::bvh_build;
         struct item {
-            std::uint32_t node;
-            double t;
+            std::uint32_t index, count;
+            F t;
         };
-        item stack[bb::stack_size];
+        // Each wide level pushes at most three items past the one it pops.
+        item stack[4 * bb::stack_size];
         int top = 0;
-        const double t0 = entry(t.nodes_[0]);
-        if (!(t0 <= bound())) return;
-        stack[top++] = {0, t0};
+        stack[top++] = {0, 0, F(r.t_min)};
+        std::array<F, 4> e;
         while (top > 0) {
-            const item e = stack[--top];
-            if (!(e.t <= bound())) continue;
-            const node& n = t.nodes_[e.node];
-            if (n.count > 0) {
-                for (std::uint32_t i = n.index; i < n.index + n.count; ++i) {
+            const item it = stack[--top];
+            if (!(it.t <= bound())) continue;
+            if (it.count > 0) {
+                for (std::uint32_t i = it.index; i < it.index + it.count; ++i) {
                     if (t.degenerate_[i]) continue;
                     const auto& c = t.corners_[i];
                     double u = 0, v = 0;
@@ -261,12 +280,20 @@ struct bvh_access {
                 }
                 continue;
             }
-            const std::uint32_t a = e.node + 1, b = n.index;
-            const double ta = entry(t.nodes_[a]), tb = entry(t.nodes_[b]);
-            const bool a_first = !(tb < ta);  // NaN (a miss) sorts last
-            const item near{a_first ? a : b, a_first ? ta : tb}, far{a_first ? b : a, a_first ? tb : ta};
-            if (far.t <= bound()) stack[top++] = far;
-            if (near.t <= bound()) stack[top++] = near;
+            const bvh::wide_node& w = t.wide_[it.index];
+            entry(w, e);
+            // The children hit, farthest first, so that the nearest is popped next.
+            item hit[4];
+            int n = 0;
+            for (std::uint32_t j = 0; j < 4; ++j) {
+                if (!(e[j] <= bound()) || (w.index[j] == 0 && w.count[j] == 0)) continue;
+                item x{w.index[j], w.count[j], e[j]};
+                prefetch(t, x);
+                int at = n++;
+                for (; at > 0 && hit[at - 1].t < x.t; --at) hit[at] = hit[at - 1];
+                hit[at] = x;
+            }
+            for (int j = 0; j < n; ++j) stack[top++] = hit[j];
         }
     }
 

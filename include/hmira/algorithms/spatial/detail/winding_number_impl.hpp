@@ -62,6 +62,10 @@ public:
             centroid_[i] = (s.points[t[0]] + s.points[t[1]] + s.points[t[2]]) / 3.0;
         }
         if (n == 0) return;
+        // The shape depends on n alone (median splits, leaves of at most leaf_size): number
+        // the nodes first, depth first with the left child first, then fill and split the
+        // subtrees in parallel. Each node is filled just before its own split, as a serial
+        // build would, so the sums and the tree do not depend on the schedule.
         nodes_.reserve(2 * (n / leaf_size + 1));
         nodes_.push_back({});
         struct task {
@@ -71,9 +75,10 @@ public:
         while (!todo.empty()) {
             const task t = todo.back();
             todo.pop_back();
-            fill(nodes_[t.node], t.begin, t.end);
+            nodes_[t.node].first = t.begin;
+            nodes_[t.node].count = t.end - t.begin;
             if (t.end - t.begin <= leaf_size) continue;
-            const std::uint32_t mid = split(t.begin, t.end);
+            const std::uint32_t mid = t.begin + (t.end - t.begin) / 2;
             const auto left = std::uint32_t(nodes_.size());
             nodes_[t.node].first = left;
             nodes_[t.node].count = 0;
@@ -82,6 +87,7 @@ public:
             todo.push_back({left + 1, mid, t.end});
             todo.push_back({left, t.begin, mid});
         }
+        build(0, 0, std::uint32_t(n));
     }
 
     /// The winding number at q (4 pi times it, summed), and the bound on its error.
@@ -197,6 +203,23 @@ private:
         }
         nd.radius = std::sqrt(r2);
     }
+
+    /// Fills node `at` over order_[begin, end) and, for an inner node, splits the range and
+    /// builds the children (in parallel past parallel_size triangles).
+    void build(std::uint32_t at, std::uint32_t begin, std::uint32_t end) {
+        const std::uint32_t left = nodes_[at].first;
+        const bool leaf = nodes_[at].count > 0;
+        fill(nodes_[at], begin, end);
+        if (leaf) return;
+        nodes_[at].first = left;
+        nodes_[at].count = 0;
+        const std::uint32_t mid = split(begin, end);
+        if (end - begin > parallel_size)
+            parallel_invoke([&] { build(left, begin, mid); }, [&] { build(left + 1, mid, end); });
+        else
+            build(left, begin, mid), build(left + 1, mid, end);
+    }
+    static constexpr std::uint32_t parallel_size = 8192;
 
     std::uint32_t split(std::uint32_t begin, std::uint32_t end) {
         vec3<double> lo = centroid_[order_[begin]], hi = lo;
