@@ -1,0 +1,196 @@
+// make_solid and mesh_boolean on closed inputs that intersect themselves or nest: overlapping
+// icosahedra given as one soup, three of them meeting at points no pair makes, a shell inside a
+// shell (winding number 2) and a hollow one (an inner shell turned inward). Each result is checked
+// by routes independent of the winding numbers: its volume against booleans of the separate,
+// clean parts (vol(A u B) = vol(A) + vol(B) - vol(A n B)), closedness from the connectivity, and
+// self_intersections() (empty unless the report counts pairs that rounding made intersect).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include <hmira/algorithms/boolean/make_solid.hpp>
+#include <hmira/algorithms/boolean/mesh_boolean.hpp>
+#include <hmira/algorithms/generators/platonic_solids.hpp>
+#include <hmira/algorithms/validation/self_intersections.hpp>
+#include <hmira/meshes/face_vertex_mesh.hpp>
+
+#include "algorithms/boolean/boolean_support.hpp"
+#include "support/checks.hpp"
+
+namespace {
+
+using namespace hmira;
+using M = face_vertex_mesh;
+using T = default_traits<M>;
+
+M icosahedron(vec3<double> centre, double scale = 1.0) {
+    M m;
+    EXPECT_TRUE(generate_icosahedron(m, {.scale = scale, .center = centre}));
+    return m;
+}
+
+/// The meshes as one mesh (a soup of their faces), those marked in `inward` turned inside out.
+M soup(const std::vector<M>& parts, const std::vector<bool>& inward = {}) {
+    io::polygon_soup s;
+    for (std::size_t n = 0; n < parts.size(); ++n) {
+        const std::uint32_t base = std::uint32_t(s.points.size());
+        for (auto v : T::vertices(parts[n])) {
+            const auto p = T::position(parts[n], v);
+            s.points.push_back({p.x, p.y, p.z});
+        }
+        for (auto f : T::faces(parts[n])) {
+            std::vector<std::uint32_t> loop;
+            for (auto v : T::face_vertices(parts[n], f)) loop.push_back(base + std::uint32_t(T::vertex_index(parts[n], v)));
+            if (n < inward.size() && inward[n]) std::reverse(loop.begin(), loop.end());
+            s.indices.insert(s.indices.end(), loop.begin(), loop.end());
+            s.face_offsets.push_back(s.indices.size());
+        }
+    }
+    M m;
+    EXPECT_TRUE((detail::copy::build<M, T>(m, s)));
+    return m;
+}
+
+double volume(const M& m) { return hmira_test::signed_volume(m); }
+
+M boolean(const M& a, const M& b, boolean_op op) {
+    M out;
+    auto r = mesh_boolean(out, a, b, {.op = op});
+    EXPECT_TRUE(r) << r.error().message;
+    return out;
+}
+
+/// Closed, free of self-intersections but for those the report counts, with the volume given.
+void check(const M& m, const boolean_report& report, double want) {
+    EXPECT_TRUE(hmira_test::closed(m));
+    auto si = self_intersections(m);
+    ASSERT_TRUE(si);
+    EXPECT_EQ(si->size(), report.rounding_intersections);
+    EXPECT_EQ(report.faces.size(), T::face_count(m));
+    EXPECT_NEAR(volume(m), want, 1e-9 * std::max(1.0, std::fabs(want)));
+}
+
+M solid(const M& in, boolean_report* report = nullptr) {
+    M out;
+    auto r = make_solid(out, in);
+    EXPECT_TRUE(r) << r.error().message;
+    if (r && report) *report = *r;
+    return out;
+}
+
+TEST(make_solid, two_overlapping_icosahedra_as_one_soup_give_their_union) {
+    for (const vec3<double> shift : {vec3<double>{0.6, 0.3, 0.2}, vec3<double>{0.5, 0.5, 0.5}, vec3<double>{1, 0.25, 0}}) {
+        SCOPED_TRACE(testing::Message() << shift.x << " " << shift.y << " " << shift.z);
+        const M a = icosahedron({0, 0, 0}), b = icosahedron(shift);
+        const double want = volume(a) + volume(b) - volume(boolean(a, b, boolean_op::intersection));
+        boolean_report rep;
+        const M out = solid(soup({a, b}), &rep);
+        check(out, rep, want);
+        EXPECT_NEAR(volume(out), volume(boolean(a, b, boolean_op::union_)), 1e-9 * want);
+    }
+}
+
+TEST(make_solid, three_icosahedra_meeting_at_triple_points) {
+    const M a = icosahedron({0, 0, 0}), b = icosahedron({0.7, 0.1, 0.05}), c = icosahedron({0.3, 0.6, -0.2});
+    const M ab = boolean(a, b, boolean_op::union_);
+    const double want = volume(boolean(ab, c, boolean_op::union_));
+    boolean_report rep;
+    check(solid(soup({a, b, c}), &rep), rep, want);
+    // The intersection of all three, by the volume identity on the self-intersecting soup of a and b.
+    const M abc = soup({a, b});
+    const M i = boolean(abc, c, boolean_op::intersection);
+    const M u = boolean(abc, c, boolean_op::union_);
+    EXPECT_NEAR(volume(u) + volume(i), volume(ab) + volume(c), 1e-9 * volume(u));
+    EXPECT_NEAR(volume(i), volume(boolean(ab, c, boolean_op::intersection)), 1e-9 * volume(u));
+}
+
+TEST(make_solid, a_clean_mesh_is_kept_as_it_is) {
+    const M a = icosahedron({0.25, 0, 0});
+    boolean_report rep;
+    const M out = solid(a, &rep);
+    check(out, rep, volume(a));
+    EXPECT_EQ(T::face_count(out), 20u);
+}
+
+TEST(make_solid, a_shell_inside_a_shell_keeps_the_outer_one) {
+    const M outer = icosahedron({0, 0, 0}), inner = icosahedron({0.1, 0, 0}, 0.4);
+    boolean_report rep;
+    const M out = solid(soup({outer, inner}), &rep);
+    check(out, rep, volume(outer));
+    EXPECT_EQ(T::face_count(out), 20u);
+    // Turned inward, the inner shell bounds a hole: both are kept.
+    const M hollow = solid(soup({outer, inner}, {false, true}), &rep);
+    check(hollow, rep, volume(outer) - volume(inner));
+    EXPECT_EQ(T::face_count(hollow), 40u);
+}
+
+TEST(make_solid, an_open_mesh_is_refused_and_the_output_left_alone) {
+    const M a = icosahedron({0, 0, 0});
+    io::polygon_soup s;
+    for (auto v : T::vertices(a)) {
+        const auto p = T::position(a, v);
+        s.points.push_back({p.x, p.y, p.z});
+    }
+    std::size_t n = 0;
+    for (auto f : T::faces(a)) {
+        if (n++ == 0) continue;
+        for (auto v : T::face_vertices(a, f)) s.indices.push_back(std::uint32_t(T::vertex_index(a, v)));
+        s.face_offsets.push_back(s.indices.size());
+    }
+    M open;
+    ASSERT_TRUE((detail::copy::build<M, T>(open, s)));
+    M out = icosahedron({0, 0, 0});
+    auto r = make_solid(out, open);
+    ASSERT_FALSE(r);
+    EXPECT_EQ(r.error().code, errc::unsupported);
+    EXPECT_EQ(T::face_count(out), 20u);
+}
+
+TEST(make_solid, coplanar_overlapping_triangles_are_refused) {
+    // Moved along x, faces whose planes hold the x axis overlap their copies in one plane: not
+    // supported with winding numbers yet, refused rather than guessed.
+    const M a = icosahedron({0, 0, 0}), b = icosahedron({1, 0, 0});
+    M out = icosahedron({0, 0, 0});
+    auto r = make_solid(out, soup({a, b}));
+    ASSERT_FALSE(r);
+    EXPECT_EQ(r.error().code, errc::unsupported);
+    EXPECT_EQ(T::face_count(out), 20u);
+}
+
+TEST(mesh_boolean_self_intersecting, operations_on_a_soup_of_two_overlapping_icosahedra) {
+    const M a1 = icosahedron({0, 0, 0}), a2 = icosahedron({0.6, 0.3, 0.2}), b = icosahedron({0.2, -0.7, 0.4});
+    const M a = soup({a1, a2}), clean_a = boolean(a1, a2, boolean_op::union_);
+    const double va = volume(clean_a), vb = volume(b);
+    const M u = boolean(a, b, boolean_op::union_), i = boolean(a, b, boolean_op::intersection);
+    const M d = boolean(a, b, boolean_op::difference), d2 = boolean(b, a, boolean_op::difference);
+    for (const M* m : {&u, &i, &d, &d2}) {
+        EXPECT_TRUE(hmira_test::closed(*m));
+        auto si = self_intersections(*m);
+        ASSERT_TRUE(si);
+        EXPECT_TRUE(si->empty());
+    }
+    EXPECT_NEAR(volume(u) + volume(i), va + vb, 1e-9 * (va + vb));
+    EXPECT_NEAR(volume(d), va - volume(i), 1e-9 * va);
+    EXPECT_NEAR(volume(d2), vb - volume(i), 1e-9 * va);
+    // The same as on the clean union of the soup's parts.
+    EXPECT_NEAR(volume(u), volume(boolean(clean_a, b, boolean_op::union_)), 1e-9 * va);
+    EXPECT_NEAR(volume(i), volume(boolean(clean_a, b, boolean_op::intersection)), 1e-9 * va);
+}
+
+TEST(mesh_boolean_self_intersecting, a_doubly_covered_region_counts_once) {
+    // a winds twice around its inner shell: the union keeps the outer surface only, and the
+    // intersection with a mesh that crosses both shells is that mesh's part inside the outer one.
+    const M outer = icosahedron({0, 0, 0}), inner = icosahedron({0.1, 0, 0}, 0.4);
+    const M a = soup({outer, inner}), b = icosahedron({0.9, 0.2, 0.1}, 0.8);
+    const M u = boolean(a, b, boolean_op::union_), i = boolean(a, b, boolean_op::intersection);
+    EXPECT_NEAR(volume(u), volume(boolean(outer, b, boolean_op::union_)), 1e-9);
+    EXPECT_NEAR(volume(i), volume(boolean(outer, b, boolean_op::intersection)), 1e-9);
+    EXPECT_NEAR(volume(u) + volume(i), volume(outer) + volume(b), 1e-9);
+    EXPECT_TRUE(hmira_test::closed(u));
+    EXPECT_TRUE(hmira_test::closed(i));
+    const M far = icosahedron({5, 0, 0});
+    EXPECT_EQ(T::face_count(boolean(a, far, boolean_op::union_)), 40u);
+}
+
+}  // namespace
