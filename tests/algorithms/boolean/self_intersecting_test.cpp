@@ -41,7 +41,8 @@ M soup(const std::vector<M>& parts, const std::vector<bool>& inward = {}) {
         }
         for (auto f : T::faces(parts[n])) {
             std::vector<std::uint32_t> loop;
-            for (auto v : T::face_vertices(parts[n], f)) loop.push_back(base + std::uint32_t(T::vertex_index(parts[n], v)));
+            for (auto v : T::face_vertices(parts[n], f))
+                loop.push_back(base + std::uint32_t(T::vertex_index(parts[n], v)));
             if (n < inward.size() && inward[n]) std::reverse(loop.begin(), loop.end());
             s.indices.insert(s.indices.end(), loop.begin(), loop.end());
             s.face_offsets.push_back(s.indices.size());
@@ -80,7 +81,8 @@ M solid(const M& in, boolean_report* report = nullptr) {
 }
 
 TEST(make_solid, two_overlapping_icosahedra_as_one_soup_give_their_union) {
-    for (const vec3<double> shift : {vec3<double>{0.6, 0.3, 0.2}, vec3<double>{0.5, 0.5, 0.5}, vec3<double>{1, 0.25, 0}}) {
+    for (const vec3<double> shift :
+         {vec3<double>{0.6, 0.3, 0.2}, vec3<double>{0.5, 0.5, 0.5}, vec3<double>{1, 0.25, 0}}) {
         SCOPED_TRACE(testing::Message() << shift.x << " " << shift.y << " " << shift.z);
         const M a = icosahedron({0, 0, 0}), b = icosahedron(shift);
         const double want = volume(a) + volume(b) - volume(boolean(a, b, boolean_op::intersection));

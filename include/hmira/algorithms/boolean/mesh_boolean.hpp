@@ -74,26 +74,15 @@ concept boolean_input_mesh = face_triangulable_mesh<M, T> && vertex_index_mesh<M
 ///
 /// A point is in op(a, b) by the winding numbers w_a, w_b of the inputs around it: union is
 /// w_a > 0 or w_b > 0, intersection both, difference w_a > 0 and not w_b > 0, xor exactly one.
-/// Every triangle pair of a and b that meets is intersected exactly (points where an edge meets a
-/// plane are kept as implicit points), and so is every pair of one input that meets other than
-/// along the edge or vertex it shares (self_intersections' rule); where three triangles meet,
-/// the cuts of each are split at the exact meeting point of the three planes. Every triangle is
-/// cut along its intersection segments by an exact constrained triangulation in its projection
-/// plane, and coincident points are merged exactly. The winding numbers of a and b on both sides
-/// of every piece are then found exactly (detail/cell_windings.hpp: pieces sorted around edges,
-/// numbers propagated across pieces from a seed counted along a segment from outside); a piece is
-/// kept where op differs on its two sides, oriented towards the side outside the result.
-///
-/// When triangles of a and b overlap in one plane (and neither input intersects itself), the
-/// pieces are labelled against the other mesh instead: a piece that lies in a coplanar face of it
-/// as "on" (same or opposite orientation), otherwise as in or out by the exact winding number
-/// (inside_closed) of an input vertex of its patch (pieces joined across uncut edges), or, when a
-/// patch has no input vertex off the other surface, of the rounded centroid of its largest piece;
-/// that fallback is the one decision not made exactly. Points are rounded to double once, at
-/// output; distinct points that round to the same double are merged and counted in
-/// snapped_vertices, and faces that collapse are dropped. The rounded result is checked exactly:
-/// faces whose corners became collinear and face pairs that now intersect (as self_intersections
-/// decides) are counted in the report; they are not yet repaired.
+/// Every pair of triangles that meets (of one input too, other than along the edge or vertex it
+/// shares) is intersected exactly, with implicit points where an edge meets a plane or three
+/// planes meet; every triangle is cut along its segments by an exact constrained triangulation.
+/// The winding numbers on both sides of every piece are found exactly (detail/cell_windings.hpp);
+/// a piece is kept where op differs on its two sides, oriented towards the outside. Where clean
+/// inputs overlap in one plane, pieces are labelled against the other mesh instead, with one
+/// decision not exact (detail/mesh_boolean_impl.hpp). Points are rounded once, at output: points
+/// that round alike are merged (snapped_vertices), collapsed faces dropped, and faces made
+/// collinear or intersecting by rounding counted in the report, not yet repaired.
 ///
 /// \pre a and b are closed (every edge run as often one way as the other), self-intersecting,
 ///   nested and inverted shells included; polygon faces are cut as face_triangles does.

@@ -46,7 +46,7 @@ struct arrangement {
     std::vector<int> drop;  ///< projection axis of each input triangle, -1 if it has no area
     std::size_t pairs = 0;  ///< candidate pairs of different meshes (boxes overlapping) tested exactly
     std::size_t same_mesh_pairs = 0;  ///< candidate pairs of one mesh tested
-    bool self_cut = false;  ///< some triangles of one mesh meet other than where they share corners
+    bool self_cut = false;            ///< some triangles of one mesh meet other than where they share corners
 };
 
 /// What the pair stage found for one input triangle: points and segments, by point id.
@@ -253,8 +253,7 @@ inline void share_edge_points(const arrangement& arr, const std::vector<soup_tri
     }
 }
 
-inline bool split_crossings(arrangement& arr, const std::vector<soup_triangle>& tris,
-                            std::vector<triangle_cuts>& cuts);
+inline bool split_crossings(arrangement& arr, const std::vector<soup_triangle>& tris, std::vector<triangle_cuts>& cuts);
 
 /// Builds the arrangement of `tris` over the explicit points `explicit_points` (whose exact
 /// duplicates must already be merged), cutting triangles of one mesh by each other too when

@@ -71,14 +71,18 @@ public:
         cell_value_.assign(2 * patches_ * meshes_, 0);
         known_.assign(2 * patches_, 0);
         build_seeding_data();
+        // Each segment aims at the first part not seeded yet; one that keeps meeting edges or
+        // vertices (64 segments in a row) gives up.
         std::vector<char> seeded(components_, 0);
-        for (std::uint32_t attempt = 0; attempt < 64; ++attempt) {
-            const auto first = std::find(seeded.begin(), seeded.end(), 0);
-            if (first == seeded.end()) break;
-            const winding_status s = cast(attempt, std::uint32_t(first - seeded.begin()), seeded);
+        std::size_t next = 0;
+        for (std::uint32_t attempt = 0, failures = 0;; ++attempt) {
+            while (next < components_ && seeded[next]) ++next;
+            if (next == components_) break;
+            const winding_status s = cast(attempt, std::uint32_t(next), seeded);
             if (s != winding_status::ok) return s;
+            failures = seeded[next] ? 0 : failures + 1;
+            if (failures == 64) return winding_status::no_seed;
         }
-        if (std::find(seeded.begin(), seeded.end(), 0) != seeded.end()) return winding_status::no_seed;
         out.meshes = meshes_;
         out.pos.resize(pieces_ * meshes_);
         out.neg.resize(pieces_ * meshes_);
@@ -94,9 +98,9 @@ public:
 
 private:
     struct edge_use {
-        std::uint64_t key;      ///< (smaller id, larger id)
+        std::uint64_t key;  ///< (smaller id, larger id)
         std::uint32_t piece;
-        std::uint8_t forward;   ///< the piece runs from the smaller id to the larger
+        std::uint8_t forward;  ///< the piece runs from the smaller id to the larger
     };
 
     const point3& corner(std::uint32_t t, std::size_t m) const {
@@ -117,15 +121,18 @@ private:
                 uses_.push_back({(std::uint64_t(std::min(a, b)) << 32) | std::max(a, b), n, std::uint8_t(a < b)});
             }
         }
-        std::sort(uses_.begin(), uses_.end(),
-                  [](const edge_use& x, const edge_use& y) { return x.key < y.key || (x.key == y.key && x.piece < y.piece); });
+        std::sort(uses_.begin(), uses_.end(), [](const edge_use& x, const edge_use& y) {
+            return x.key < y.key || (x.key == y.key && x.piece < y.piece);
+        });
         union_find joined(pieces_), parts(pieces_);
         for (std::size_t g = 0; g < uses_.size();) {
             std::size_t h = g + 1;
             while (h < uses_.size() && uses_[h].key == uses_[g].key) ++h;
             for (std::size_t x = g + 1; x < h; ++x) parts.unite(uses_[g].piece, uses_[x].piece);
-            if (h - g == 2 && uses_[g].forward != uses_[g + 1].forward) joined.unite(uses_[g].piece, uses_[g + 1].piece);
-            else groups_.push_back({g, h});
+            if (h - g == 2 && uses_[g].forward != uses_[g + 1].forward)
+                joined.unite(uses_[g].piece, uses_[g + 1].piece);
+            else
+                groups_.push_back({g, h});
             g = h;
         }
         patch_.assign(pieces_, 0);
@@ -205,7 +212,8 @@ private:
         }
         std::vector<point3> explicit_points;
         explicit_points.reserve(explicit_count_);
-        for (std::size_t i = 0; i < explicit_count_; ++i) explicit_points.push_back(arr_.points[i].explicit_coordinates());
+        for (std::size_t i = 0; i < explicit_count_; ++i)
+            explicit_points.push_back(arr_.points[i].explicit_coordinates());
         coordinate_span(explicit_points, &finest_);
         by_source_start_.assign(tris_.size() + 1, 0);
         for (const piece& p : arr_.pieces) ++by_source_start_[p.source + 1];

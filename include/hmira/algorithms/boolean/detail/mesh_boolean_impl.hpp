@@ -146,13 +146,15 @@ inline result<std::optional<piece_windings>> windings_of(const arrangement& arr,
                                                          const std::vector<point3>& points, std::size_t meshes,
                                                          const char* who, bool required = false) {
     const bool need = required || arr.self_cut;
-    const bool coplanar = std::any_of(arr.coplanar.begin(), arr.coplanar.end(), [](const auto& c) { return !c.empty(); });
+    const bool coplanar =
+        std::any_of(arr.coplanar.begin(), arr.coplanar.end(), [](const auto& c) { return !c.empty(); });
     const int span = coordinate_span(points);
     const std::string name(who);
     if (coplanar) {
         if (!need) return std::optional<piece_windings>{};
-        return fail(errc::unsupported, name + ": coplanar overlapping triangles are not supported yet with "
-                                              "winding numbers");
+        return fail(errc::unsupported, name +
+                                           ": coplanar overlapping triangles are not supported yet with "
+                                           "winding numbers");
     }
     if (span > (arr.self_cut ? span_with_three_plane_points : span_with_line_plane_points)) {
         if (!need) return std::optional<piece_windings>{};
@@ -274,10 +276,10 @@ result<io::polygon_soup> round_kept(const arrangement& arr, const std::vector<so
     for (std::size_t n = 0; n < soup.points.size(); ++n)
         for (double c : soup.points[n])
             if (!std::isfinite(c))
-                return fail(
-                    errc::unsupported,
-                    std::string(who) + ": output vertex " + std::to_string(n) + " rounded to a coordinate that is not finite",
-                    (long long)n);
+                return fail(errc::unsupported,
+                            std::string(who) + ": output vertex " + std::to_string(n) +
+                                " rounded to a coordinate that is not finite",
+                            (long long)n);
     std::vector<char> rounded(soup.points.size(), 0);
     for (const auto& [v, o] : out_id) rounded[o] = rounded[o] || v >= explicit_count;
     check_rounding(soup, rounded, report);
@@ -309,8 +311,7 @@ result<boolean_report> mesh_boolean(MO& out, const MA& a, const MB& b, const boo
     bd::arrangement arr;
     if (!bd::build_arrangement(points, tris, arr, &gate, true)) {
         if (gate.cancelled()) return fail(errc::cancelled, "mesh_boolean: cancelled");
-        return fail(errc::unsupported,
-                    "mesh_boolean: the cuts of one triangle could not be triangulated");
+        return fail(errc::unsupported, "mesh_boolean: the cuts of one triangle could not be triangulated");
     }
     if (!gate.advance()) return fail(errc::cancelled, "mesh_boolean: cancelled");
     boolean_report report;
@@ -318,8 +319,11 @@ result<boolean_report> mesh_boolean(MO& out, const MA& a, const MB& b, const boo
     auto windings = bd::windings_of(arr, tris, points, 2, "mesh_boolean");
     if (!windings) return windings.error();
 
-    // Without winding numbers, labels: "on" pieces first, then patches of the rest joined across
-    // uncut edges.
+    // Without winding numbers (coplanar overlaps between clean inputs), labels: a piece that lies
+    // in a coplanar face of the other mesh is "on" it (same or opposite orientation); the others,
+    // in patches joined across uncut edges, are in or out by the exact winding number
+    // (inside_closed) of an input vertex of the patch off the other surface, or, when the patch
+    // has none, of the rounded centroid of its largest piece: the one decision not made exactly.
     const std::size_t explicit_count = points.size();
     std::vector<label> labels(arr.pieces.size(), label::out);
     if (!*windings) {
