@@ -284,6 +284,7 @@ inline bool build_arrangement(const std::vector<point3>& explicit_points, const 
     for (triangle_cuts& c : cuts) {
         for (vid& p : c.points) p = map[p];
         for (auto& s : c.segments) s = {std::min(map[s[0]], map[s[1]]), std::max(map[s[0]], map[s[1]])};
+        for (auto& s : c.tagged) s = {map[s[0]], map[s[1]], s[2]};
         std::sort(c.points.begin(), c.points.end());
         c.points.erase(std::unique(c.points.begin(), c.points.end()), c.points.end());
         std::sort(c.segments.begin(), c.segments.end());

@@ -43,7 +43,7 @@ enum class winding_status : std::uint8_t {
 };
 
 /// The number of bits from the coarsest to the finest bit over all coordinates (0 for none).
-inline int coordinate_span(const std::vector<point3>& points, int* finest = nullptr) {
+inline int coordinate_span(const std::vector<point3>& points) {
     int low = 0, high = 0;
     bool any = false;
     for (const point3& p : points)
@@ -55,7 +55,6 @@ inline int coordinate_span(const std::vector<point3>& points, int* finest = null
             high = any ? std::max(high, h) : h;
             any = true;
         }
-    if (finest) *finest = low;
     return any ? high - low : 0;
 }
 
@@ -201,7 +200,7 @@ private:
         return true;
     }
 
-    /// The box of the input, its finest bit, the pieces of every input triangle and of every component.
+    /// The box of the input, the pieces of every input triangle and of every component.
     void build_seeding_data() {
         for (std::size_t i = 0; i < explicit_count_; ++i) {
             const point3& p = arr_.points[i].explicit_coordinates();
@@ -210,11 +209,6 @@ private:
                 hi_[k] = i == 0 ? p[k] : std::max(hi_[k], p[k]);
             }
         }
-        std::vector<point3> explicit_points;
-        explicit_points.reserve(explicit_count_);
-        for (std::size_t i = 0; i < explicit_count_; ++i)
-            explicit_points.push_back(arr_.points[i].explicit_coordinates());
-        coordinate_span(explicit_points, &finest_);
         by_source_start_.assign(tris_.size() + 1, 0);
         for (const piece& p : arr_.pieces) ++by_source_start_[p.source + 1];
         for (std::size_t i = 0; i < tris_.size(); ++i) by_source_start_[i + 1] += by_source_start_[i];
@@ -225,7 +219,8 @@ private:
         for (std::uint32_t n = 0; n < pieces_; ++n) component_pieces_[component_[n]].push_back(n);
     }
 
-    /// An explicit point near x on the grid of 2^g, g coarse enough to keep the predicates exact.
+    /// An explicit point near x on the grid of 2^g: 24 bits below the box's size, so the ends add
+    /// few bits to the input's span (the callers' span limits leave room for them).
     point3 on_grid(const point3& x, int g) const {
         point3 r;
         for (std::size_t k = 0; k < 3; ++k) r[k] = std::ldexp(std::nearbyint(std::ldexp(x[k], -g)), g);
@@ -255,7 +250,7 @@ private:
         for (std::size_t k = 0; k < 3; ++k) diag = std::max(diag, hi_[k] - lo_[k]);
         int e = 0;
         std::frexp(diag, &e);
-        const int g = std::max(e - 24, finest_);
+        const int g = e - 24;
         const double len = 8 * diag / std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
         const point3 s = on_grid({q.x - len * d.x, q.y - len * d.y, q.z - len * d.z}, g);
         const point3 f = on_grid({q.x + len * d.x, q.y + len * d.y, q.z + len * d.z}, g);
@@ -359,7 +354,6 @@ private:
     std::vector<std::int32_t> cell_value_;
     std::vector<char> known_;
     point3 lo_{}, hi_{};
-    int finest_ = 0;
     std::vector<std::size_t> by_source_start_, neighbours_start_;
     std::vector<std::uint32_t> by_source_, neighbours_;
     std::vector<std::vector<std::uint32_t>> component_pieces_;

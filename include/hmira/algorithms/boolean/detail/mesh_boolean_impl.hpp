@@ -136,7 +136,7 @@ inline bool in_result(boolean_op op, std::int32_t wa, std::int32_t wb) {
 /// exact: with three-plane points (triangles of one mesh cutting each other) the predicates reach
 /// degree 20, with line-plane points alone degree 17; a few bits are left for the seeds' segments.
 inline constexpr int span_with_three_plane_points = 90;
-inline constexpr int span_with_line_plane_points = 170;
+inline constexpr int span_with_line_plane_points = 160;
 
 /// The winding numbers of a and b on both sides of every piece, when they can be found exactly:
 /// no coplanar overlapping triangles and a coordinate span within the limits above. An error
@@ -168,7 +168,7 @@ inline result<std::optional<piece_windings>> windings_of(const arrangement& arr,
         case winding_status::coincident:
         case winding_status::no_seed:
             if (!need) return std::optional<piece_windings>{};
-            return fail(errc::unsupported, name + ": overlapping pieces around an edge in a self-intersecting input");
+            return fail(errc::unsupported, name + ": overlapping pieces around an edge, or no segment from outside missed every edge");
         case winding_status::not_closed: break;
     }
     if (!need) return std::optional<piece_windings>{};

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <map>
 #include <vector>
 
 #include "arrangement.hpp"
@@ -71,12 +72,13 @@ inline bool crossing_point(const arrangement& arr, const std::vector<soup_triang
 inline bool split_crossings(arrangement& arr, const std::vector<soup_triangle>& tris,
                             std::vector<triangle_cuts>& cuts) {
     const std::size_t before = arr.points.size();
-    std::vector<vid> map = merge_points(arr.points);
+    // One point per crossing of two segments' supports, whichever triangle finds it (the three
+    // triangles that meet at a point each find it): keyed by the sorted triangles of the pairs.
+    std::map<std::array<std::uint32_t, 3>, vid> made;
     for (std::uint32_t i = 0; i < tris.size(); ++i) {
         const int k = arr.drop[i];
         if (k < 0) continue;
-        std::vector<std::array<vid, 3>>& segs = cuts[i].tagged;
-        for (auto& s : segs) s = {map[s[0]], map[s[1]], s[2]};
+        const std::vector<std::array<vid, 3>>& segs = cuts[i].tagged;
         const auto& P = arr.points;
         for (std::size_t m = 0; m < segs.size(); ++m)
             for (std::size_t n = m + 1; n < segs.size(); ++n) {
@@ -88,14 +90,24 @@ inline bool split_crossings(arrangement& arr, const std::vector<soup_triangle>& 
                 const int c = predicates::orient2d(k, P[y[0]], P[y[1]], P[x[0]]),
                           d = predicates::orient2d(k, P[y[0]], P[y[1]], P[x[1]]);
                 if (c * d >= 0) continue;
+                std::array<std::uint32_t, 3> key{i, x[2], y[2]};
+                std::sort(key.begin(), key.end());
+                const bool general = !coplanar_pair(arr, i, x[2]) && !coplanar_pair(arr, i, y[2]);
+                if (general) {
+                    if (const auto it = made.find(key); it != made.end()) {
+                        cuts[i].points.push_back(it->second);
+                        continue;
+                    }
+                }
                 exact_point p;
                 if (!crossing_point(arr, tris, i, x, y, p)) return false;
                 arr.points.push_back(p);
                 cuts[i].points.push_back(vid(arr.points.size() - 1));
+                if (general) made.emplace(key, vid(arr.points.size() - 1));
             }
     }
     if (arr.points.size() == before) return true;
-    map = merge_points(arr.points);
+    const std::vector<vid> map = merge_points(arr.points);
     for (triangle_cuts& c : cuts) {
         for (vid& p : c.points) p = map[p];
         for (auto& s : c.segments) s = {std::min(map[s[0]], map[s[1]]), std::max(map[s[0]], map[s[1]])};
