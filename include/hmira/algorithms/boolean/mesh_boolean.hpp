@@ -59,7 +59,7 @@ struct boolean_face_origin {
 /// What mesh_boolean did.
 struct boolean_report {
     std::vector<boolean_face_origin> faces;  ///< per output face, in the output's face order
-    std::size_t intersecting_pairs = 0;      ///< candidate triangle pairs tested
+    std::size_t intersecting_pairs = 0;      ///< candidate pairs of a and b tested (make_solid: of its mesh)
     std::size_t cut_triangles = 0;           ///< input triangles cut by the other mesh
     std::size_t snapped_vertices = 0;        ///< distinct exact points that rounded to one double
     std::size_t degenerate_faces = 0;        ///< output faces whose rounded corners are collinear

@@ -43,8 +43,8 @@ struct arrangement {
     std::vector<piece> pieces;
     std::vector<std::array<vid, 2>> cut_edges;  ///< sorted, unique, each (smaller, larger)
     std::vector<std::vector<std::uint32_t>> coplanar;
-    std::vector<int> drop;  ///< projection axis of each input triangle, -1 if it has no area
-    std::size_t pairs = 0;  ///< candidate pairs of different meshes (boxes overlapping) tested exactly
+    std::vector<int> drop;            ///< projection axis of each input triangle, -1 if it has no area
+    std::size_t pairs = 0;            ///< candidate pairs of different meshes (boxes overlapping) tested exactly
     std::size_t same_mesh_pairs = 0;  ///< candidate pairs of one mesh tested
     bool self_cut = false;            ///< some triangles of one mesh meet other than where they share corners
 };

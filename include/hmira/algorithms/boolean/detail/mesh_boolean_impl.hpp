@@ -168,7 +168,8 @@ inline result<std::optional<piece_windings>> windings_of(const arrangement& arr,
         case winding_status::coincident:
         case winding_status::no_seed:
             if (!need) return std::optional<piece_windings>{};
-            return fail(errc::unsupported, name + ": overlapping pieces around an edge, or no segment from outside missed every edge");
+            return fail(errc::unsupported,
+                        name + ": overlapping pieces around an edge, or no segment from outside missed every edge");
         case winding_status::not_closed: break;
     }
     if (!need) return std::optional<piece_windings>{};
