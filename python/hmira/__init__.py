@@ -25,7 +25,7 @@ import numpy as np
 
 from . import _core
 from ._core import BVH, Topology, delaunay_triangulation
-from ._core import hausdorff_distance, mesh_boolean, signed_distance, winding_number
+from ._core import hausdorff_distance, mesh_boolean, repair, signed_distance, winding_number
 from ._core import (BevelResult, BooleanResult, DecimateResult, ExtrudeResult, FillHolesResult, OpenHole, RemeshResult,
                     SubdivideResult, TriangulateResult, TruncateResult)
 
@@ -56,6 +56,7 @@ __all__ = [
     "read_mesh",
     "read_volume",
     "render",
+    "repair",
     "signed_distance",
     "truncate",
     "view",

@@ -836,7 +836,7 @@ def mesh_boolean(a: object, b: object, *, op: str = 'union') -> BooleanResult:
     Parameters
     ----------
     a, b : Mesh or (vertices, faces)
-        Closed, oriented outward, free of self-intersections; polygons are cut into triangles.
+        Closed (self-intersecting, nested or overlapping shells allowed: a point is inside where the winding number is positive); polygons are cut into triangles.
     op : str, keyword-only
         'union' (default), 'intersection', 'difference' or 'xor'.
 
@@ -848,7 +848,7 @@ def mesh_boolean(a: object, b: object, *, op: str = 'union') -> BooleanResult:
     Raises
     ------
     ValueError
-        An unknown op, a non-finite coordinate, an input that intersects itself.
+        An unknown op, a non-finite coordinate, a self-intersecting input that is not closed or has triangles overlapping in one plane.
     KeyboardInterrupt
         Ctrl-C; nothing is returned.
 
@@ -860,4 +860,37 @@ def mesh_boolean(a: object, b: object, *, op: str = 'union') -> BooleanResult:
     >>> r = hmira.mesh_boolean(hmira.Mesh(V, F), hmira.Mesh(V, F), op='difference')
     >>> r.mesh.face_count, len(r.origin_face)
     (0, 0)
+    """
+
+def repair(mesh: object, *, solid: bool = True) -> BooleanResult:
+    """
+    The clean surface of the solid a closed mesh bounds (hmira::make_solid): self-intersections are cut exactly and only the boundary of the points the surface winds around (winding number > 0) is kept, so overlapping parts merge, a shell inside another disappears and an inward-turned shell stays a cavity.
+
+    Parameters
+    ----------
+    mesh : Mesh or (vertices, faces)
+        Closed (every edge used as often in one direction as in the other); polygons are cut into triangles.
+    solid : bool, keyword-only
+        True (default): make_solid. False: the mesh as the readers' repair holds it (a copy).
+
+    Returns
+    -------
+    BooleanResult
+        mesh (a new Mesh of triangles, closed and consistently oriented; empty when nothing is inside), origin_mesh (all 0), origin_face (int64 per output face: the input face it lies in), and the counts intersecting_pairs, cut_triangles, snapped_vertices, degenerate_faces, rounding_intersections.
+
+    Raises
+    ------
+    ValueError
+        A non-finite coordinate, an input that is not closed, triangles overlapping in one plane.
+    KeyboardInterrupt
+        Ctrl-C; nothing is returned.
+
+    Examples
+    --------
+    >>> import hmira
+    >>> V = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]]
+    >>> F = [[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]]
+    >>> r = hmira.repair(hmira.Mesh(V, F))
+    >>> r.mesh.face_count, r.cut_triangles
+    (4, 0)
     """

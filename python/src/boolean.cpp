@@ -1,7 +1,9 @@
 // python/src/boolean.cpp
 // hmira.mesh_boolean: union, intersection, difference or xor of two closed meshes (each a Mesh
 // or a (vertices, faces) pair) by hmira::mesh_boolean, into a new Mesh, with each output face's
-// origin as numpy arrays. The GIL is released while C++ runs; Ctrl-C cancels.
+// origin as numpy arrays; hmira.repair: the solid a closed, possibly self-intersecting mesh
+// bounds, by hmira::make_solid, with the same report. The GIL is released while C++ runs; Ctrl-C
+// cancels.
 #include <array>
 #include <cstdint>
 #include <memory>
@@ -10,7 +12,9 @@
 #include <variant>
 #include <vector>
 
+#include <hmira/algorithms/boolean/make_solid.hpp>
 #include <hmira/algorithms/boolean/mesh_boolean.hpp>
+#include <hmira/algorithms/copy/copy_mesh.hpp>
 #include <hmira/algorithms/repair/repair_polygon_soup.hpp>
 #include <hmira/meshes/face_vertex_mesh.hpp>
 
@@ -28,7 +32,7 @@ struct operand {
     std::shared_ptr<const halfedge_mesh> mesh;
     hmira::face_vertex_mesh arrays;
 
-    operand(nb::handle h, const char* which) {
+    operand(nb::handle h, const char* which, const char* who = "mesh_boolean") {
         if (nb::isinstance<py_mesh>(h)) {
             owner = &nb::cast<const py_mesh&>(h);
             owner->refuse_while_writing();
@@ -37,10 +41,10 @@ struct operand {
             return;
         }
         if (!nb::isinstance<nb::tuple>(h) || nb::len(h) != 2)
-            value_error(std::string("mesh_boolean: ") + which + " must be a Mesh or a (vertices, faces) pair");
+            value_error(std::string(who) + ": " + which + " must be a Mesh or a (vertices, faces) pair");
         const auto t = nb::cast<nb::tuple>(h);
-        const auto soup = to_soup(nb::cast<vertex_array>(t[0]), t[1], "mesh_boolean");
-        const std::string name = std::string("mesh_boolean: ") + which;
+        const auto soup = to_soup(nb::cast<vertex_array>(t[0]), t[1], who);
+        const std::string name = std::string(who) + ": " + which;
         check(hmira::io::assign_from_soup(arrays, soup, [&](std::size_t) { return name; }));
     }
     operand(const operand&) = delete;
@@ -92,25 +96,8 @@ std::string to_halfedge(const hmira::face_vertex_mesh& m, std::vector<hmira::boo
     return repaired.report.summary();
 }
 
-boolean_result mesh_boolean_free(nb::handle a, nb::handle b, const std::string& op) {
-    const auto o = enum_arg<hmira::boolean_op>(op, "mesh_boolean", "op");
-    const operand oa(a, "a"), ob(b, "b");
-    halfedge_mesh out;
-    interrupt_watch watch;
-    hmira::result<hmira::boolean_report> r = hmira::boolean_report{};
-    std::string repairs;
-    {
-        nb::gil_scoped_release release;
-        cpp_timer timer;
-        const hmira::boolean_options options{.op = o, .progress = watch.callback()};
-        hmira::face_vertex_mesh soup;
-        r = oa.visit([&](const auto& ma) {
-            return ob.visit([&](const auto& mb) { return hmira::mesh_boolean(soup, ma, mb, options); });
-        });
-        if (r) repairs = to_halfedge(soup, r->faces, out);
-    }
-    watch.rethrow();
-    auto report = take(std::move(r));
+/// The Python result of a run: the output as a new Mesh, the origins as numpy arrays, the counts.
+boolean_result to_result(hmira::boolean_report report, halfedge_mesh&& out, const std::string& repairs) {
     const std::size_t n = report.faces.size();
     std::vector<std::uint8_t> origin_mesh(n);
     std::vector<std::int64_t> origin_face(n);
@@ -131,6 +118,50 @@ boolean_result mesh_boolean_free(nb::handle a, nb::handle b, const std::string& 
             .rounding_intersections = report.rounding_intersections};
 }
 
+boolean_result repair_free(nb::handle mesh, bool solid) {
+    const operand om(mesh, "mesh", "repair");
+    halfedge_mesh out;
+    interrupt_watch watch;
+    hmira::result<hmira::boolean_report> r = hmira::boolean_report{};
+    std::string repairs;
+    {
+        nb::gil_scoped_release release;
+        cpp_timer timer;
+        hmira::face_vertex_mesh soup;
+        r = om.visit([&](const auto& m) -> hmira::result<hmira::boolean_report> {
+            if (solid) return hmira::make_solid(soup, m, {.progress = watch.callback()});
+            if (auto c = hmira::copy_mesh(m, soup); !c) return c.error();
+            hmira::boolean_report copied;
+            for (std::size_t f = 0; f < soup.face_count(); ++f) copied.faces.push_back({0, f});
+            return copied;
+        });
+        if (r) repairs = to_halfedge(soup, r->faces, out);
+    }
+    watch.rethrow();
+    return to_result(take(std::move(r)), std::move(out), repairs);
+}
+
+boolean_result mesh_boolean_free(nb::handle a, nb::handle b, const std::string& op) {
+    const auto o = enum_arg<hmira::boolean_op>(op, "mesh_boolean", "op");
+    const operand oa(a, "a"), ob(b, "b");
+    halfedge_mesh out;
+    interrupt_watch watch;
+    hmira::result<hmira::boolean_report> r = hmira::boolean_report{};
+    std::string repairs;
+    {
+        nb::gil_scoped_release release;
+        cpp_timer timer;
+        const hmira::boolean_options options{.op = o, .progress = watch.callback()};
+        hmira::face_vertex_mesh soup;
+        r = oa.visit([&](const auto& ma) {
+            return ob.visit([&](const auto& mb) { return hmira::mesh_boolean(soup, ma, mb, options); });
+        });
+        if (r) repairs = to_halfedge(soup, r->faces, out);
+    }
+    watch.rethrow();
+    return to_result(take(std::move(r)), std::move(out), repairs);
+}
+
 }  // namespace
 
 void bind_boolean(nb::module_& m) {
@@ -140,7 +171,8 @@ void bind_boolean(nb::module_& m) {
           "exactly (hmira::mesh_boolean).\n\n"
           "Parameters\n----------\n"
           "a, b : Mesh or (vertices, faces)\n"
-          "    Closed, oriented outward, free of self-intersections; polygons are cut into triangles.\n"
+          "    Closed (self-intersecting, nested or overlapping shells allowed: a point is inside where the winding "
+          "number is positive); polygons are cut into triangles.\n"
           "op : str, keyword-only\n"
           "    'union' (default), 'intersection', 'difference' or 'xor'.\n\n"
           "Returns\n-------\n"
@@ -152,7 +184,8 @@ void bind_boolean(nb::module_& m) {
           "intersecting_pairs, cut_triangles, snapped_vertices, degenerate_faces, rounding_intersections.\n\n"
           "Raises\n------\n"
           "ValueError\n"
-          "    An unknown op, a non-finite coordinate, an input that intersects itself.\n"
+          "    An unknown op, a non-finite coordinate, a self-intersecting input that is not closed or has triangles "
+          "overlapping in one plane.\n"
           "KeyboardInterrupt\n"
           "    Ctrl-C; nothing is returned.\n\n"
           "Examples\n--------\n"
@@ -162,6 +195,32 @@ void bind_boolean(nb::module_& m) {
           ">>> r = hmira.mesh_boolean(hmira.Mesh(V, F), hmira.Mesh(V, F), op='difference')\n"
           ">>> r.mesh.face_count, len(r.origin_face)\n"
           "(0, 0)");
+    m.def("repair", &repair_free, nb::arg("mesh"), nb::kw_only(), nb::arg("solid") = true,
+          "The clean surface of the solid a closed mesh bounds (hmira::make_solid): self-intersections are cut "
+          "exactly and only the boundary of the points the surface winds around (winding number > 0) is kept, so "
+          "overlapping parts merge, a shell inside another disappears and an inward-turned shell stays a cavity.\n\n"
+          "Parameters\n----------\n"
+          "mesh : Mesh or (vertices, faces)\n"
+          "    Closed (every edge used as often in one direction as in the other); polygons are cut into triangles.\n"
+          "solid : bool, keyword-only\n"
+          "    True (default): make_solid. False: the mesh as the readers' repair holds it (a copy).\n\n"
+          "Returns\n-------\n"
+          "BooleanResult\n"
+          "    mesh (a new Mesh of triangles, closed and consistently oriented; empty when nothing is inside), "
+          "origin_mesh (all 0), origin_face (int64 per output face: the input face it lies in), and the counts "
+          "intersecting_pairs, cut_triangles, snapped_vertices, degenerate_faces, rounding_intersections.\n\n"
+          "Raises\n------\n"
+          "ValueError\n"
+          "    A non-finite coordinate, an input that is not closed, triangles overlapping in one plane.\n"
+          "KeyboardInterrupt\n"
+          "    Ctrl-C; nothing is returned.\n\n"
+          "Examples\n--------\n"
+          ">>> import hmira\n"
+          ">>> V = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]]\n"
+          ">>> F = [[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]]\n"
+          ">>> r = hmira.repair(hmira.Mesh(V, F))\n"
+          ">>> r.mesh.face_count, r.cut_triangles\n"
+          "(4, 0)");
 }
 
 }  // namespace hmira_py

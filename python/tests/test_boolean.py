@@ -172,3 +172,20 @@ def test_ctrl_c_interrupts_a_long_boolean_and_leaves_the_inputs_alone(sigint_rai
     assert np.array_equal(before, a.vertices)
     again = hmira.mesh_boolean(a, b, op="union")  # the meshes are free again
     assert again.mesh.face_count == full.mesh.face_count
+
+
+def test_repair_solid_of_two_overlapping_boxes_in_one_mesh_is_their_union():
+    (va, fa), (vb, fb) = box_arrays([0, 0, 0], [2, 2, 2]), box_arrays([1, 0.5, 0.5], [3, 1.5, 3])
+    both = (np.vstack([va, vb]), np.vstack([fa, fb + 8]))
+    for mesh in (both, hmira.Mesh(*both)):
+        r = hmira.repair(mesh)
+        assert isinstance(r, hmira.BooleanResult)
+        assert r.mesh.volume() == pytest.approx(8 + 5 - 1.5, rel=1e-14)
+        assert r.mesh.topology().boundary_loops == 0 and r.mesh.validate() == []
+        assert r.cut_triangles > 0 and np.all(r.origin_mesh == 0)
+    # A self-intersecting operand of mesh_boolean counts as the solid it bounds.
+    c = box([0.5, 1, 1], [2.5, 2.5, 2.5])
+    u = hmira.mesh_boolean(both, c).mesh.volume()
+    assert u == pytest.approx(hmira.mesh_boolean(hmira.repair(both).mesh, c).mesh.volume(), rel=1e-12)
+    # Without solid=True, a copy as the readers' repair holds it: both boxes, overlapping.
+    assert hmira.repair(both, solid=False).mesh.volume() == pytest.approx(13, rel=1e-14)

@@ -1,6 +1,7 @@
 // `hmira boolean` end to end: two box files in, the output file read back by the test's own
 // OFF reader and its volume computed there (divergence theorem), against the volume known by
-// hand; the op name checked, a missing input, and an output that is an input refused.
+// hand; the op name checked, a missing input, and an output that is an input refused. Also
+// `hmira repair --solid` on both boxes in one file (a self-intersecting soup): their union.
 #include <gtest/gtest.h>
 
 #include <array>
@@ -144,6 +145,35 @@ TEST_F(cli_boolean, an_output_that_is_an_input_is_refused_and_left_alone) {
     std::ostringstream after;
     after << std::ifstream(dir.path() / "b.off").rdbuf();
     EXPECT_EQ(before.str(), after.str());
+}
+
+TEST_F(cli_boolean, repair_solid_of_two_overlapping_boxes_in_one_file_is_their_union) {
+    {
+        std::ofstream f(dir.path() / "both.off");
+        f << "OFF\n16 12 0\n";
+        for (const auto& [lo, hi] :
+             {std::pair{vec{0, 0, 0}, vec{2, 2, 2}}, std::pair{vec{1, 0.5, 0.5}, vec{3, 1.5, 3}}})
+            for (int i = 0; i < 8; ++i)
+                f << (i & 1 ? hi[0] : lo[0]) << ' ' << (i & 2 ? hi[1] : lo[1]) << ' ' << (i & 4 ? hi[2] : lo[2])
+                  << '\n';
+        for (int base : {0, 8})
+            for (const auto& q : {std::array{0, 2, 3, 1}, std::array{4, 5, 7, 6}, std::array{0, 1, 5, 4},
+                                  std::array{2, 6, 7, 3}, std::array{0, 4, 6, 2}, std::array{1, 3, 7, 5}})
+                f << "4 " << base + q[0] << ' ' << base + q[1] << ' ' << base + q[2] << ' ' << base + q[3] << '\n';
+    }
+    const auto r = hmira(dir, "repair both.off solid.off --solid");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.out.find("solid of both.off (12 faces)"), std::string::npos) << r.out;
+    const auto out = read_off(dir.path() / "solid.off");
+    EXPECT_TRUE(closed(out));
+    EXPECT_NEAR(volume(out), 8 + 5 - 1.5, 1e-12);
+    const auto j = hmira(dir, "repair both.off solid.off --solid --json");
+    ASSERT_EQ(j.code, 0) << j.err;
+    EXPECT_EQ(j.out.rfind("{\"solid\": true, \"faces_in\": 12, \"faces\": ", 0), 0u) << j.out;
+    // Without --solid the file is written as read: both boxes, overlapping.
+    const auto plain = hmira(dir, "repair both.off plain.off");
+    ASSERT_EQ(plain.code, 0) << plain.err;
+    EXPECT_NEAR(volume(read_off(dir.path() / "plain.off")), 8 + 5, 1e-12);
 }
 
 }  // namespace

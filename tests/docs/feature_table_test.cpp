@@ -37,6 +37,7 @@
 #include <hmira/algorithms/primitives/primitives.hpp>
 #include <hmira/algorithms/remeshing/isotropic_remeshing.hpp>
 #include <hmira/algorithms/smoothing/laplacian_smooth.hpp>
+#include <hmira/algorithms/boolean/make_solid.hpp>
 #include <hmira/algorithms/boolean/mesh_boolean.hpp>
 #include <hmira/algorithms/decimation/decimate.hpp>
 #include <hmira/algorithms/spatial/aabb_tree.hpp>
@@ -230,6 +231,9 @@ HMIRA_ROW(row_self_intersections, "self_intersections (exact)", "algorithms/vali
 HMIRA_ROW(row_boolean, "mesh_boolean (exact; from this model, e.g. into halfedge_mesh)",
           "algorithms/boolean/mesh_boolean.hpp", hmira::boolean_input_mesh, (const M& a, hmira::halfedge_mesh& out),
           hmira::mesh_boolean<hmira::halfedge_mesh, M, M>(out, a, a));
+HMIRA_ROW(row_make_solid, "make_solid (exact; from this model, e.g. into halfedge_mesh)",
+          "algorithms/boolean/make_solid.hpp", hmira::boolean_input_mesh, (const M& a, hmira::halfedge_mesh& out),
+          hmira::make_solid<hmira::halfedge_mesh, M>(out, a));
 HMIRA_ROW(row_measures, "surface_area, signed_volume", "algorithms/geometry/mesh_measures.hpp", hmira::face_normal_mesh,
           (const M& m), hmira::signed_volume<M, T>(m));
 HMIRA_ROW(row_marching_cubes, "marching_cubes (into the mesh)", "algorithms/conversion/marching_cubes.hpp",
@@ -256,8 +260,8 @@ using rows =
              row_split_face, row_collapse_edge, row_face_triangles, row_triangulate_faces, row_fill_hole,
              row_fill_holes, row_loop, row_sqrt3, row_catmull_clark, row_decimate, row_smooth, row_remesh,
              row_copy_from, row_copy_into, row_aabb_tree, row_surface_queries, row_bvh, row_inside_closed,
-             row_self_intersections, row_boolean, row_measures, row_marching_cubes, row_voxelize, row_delaunay,
-             row_read, row_write, row_adapt_brute, row_adapt_indexed>;
+             row_self_intersections, row_boolean, row_make_solid, row_measures, row_marching_cubes, row_voxelize,
+             row_delaunay, row_read, row_write, row_adapt_brute, row_adapt_indexed>;
 
 // ---- the capabilities of concepts.hpp: one row each -------------------------------------------
 
@@ -828,6 +832,15 @@ void run_everyday_claims() {
         }
         EXPECT_NEAR(volume[0] + volume[1], hmira::signed_volume(a) + hmira::signed_volume(b), 1e-9) << title;
         EXPECT_GT(volume[1], 0.1 * hmira::signed_volume(b)) << title;
+    }
+    if constexpr (row_make_solid::supported<M>) {
+        // This model's icosahedron is already a solid's clean surface: kept whole.
+        const auto a = icosahedron<M>();
+        hmira::halfedge_mesh out;
+        auto r = hmira::make_solid(out, a);
+        ASSERT_TRUE(r) << title << ": " << r.error().message;
+        EXPECT_EQ(out.face_count(), 20u) << title;
+        EXPECT_NEAR(hmira::signed_volume(out), hmira::signed_volume(a), 1e-9) << title;
     }
     if constexpr (row_measures::supported<M>) {
         EXPECT_GT(hmira::signed_volume(icosahedron<M>()), 0) << title;

@@ -1,12 +1,14 @@
 // hmira/algorithms/boolean/mesh_boolean.hpp
 // Union, intersection, difference and symmetric difference of two closed meshes, exactly: the
-// meshes are co-refined along their intersection with exact predicates on constructed points, each
-// piece is labelled inside or outside the other mesh, and the pieces an operation keeps are
-// written to any mutable model. Inputs may be different models.
+// meshes are co-refined along their intersections (with each other and with themselves) with
+// exact predicates on constructed points, each piece gets the winding numbers of both inputs on
+// its two sides, and the pieces an operation keeps are written to any mutable model. Inputs may
+// be different models, and may intersect themselves or nest.
 //
 // Options: boolean_options. Result: boolean_report. Requires: boolean_input_mesh for the inputs,
 // copy_target_mesh for the output. Entry point: mesh_boolean(out, a, b, options). The machinery is
-// in detail/ (cut_triangle, arrangement, mesh_boolean_impl).
+// in detail/ (cut_triangle, arrangement, segment_crossings, cell_windings,
+// mesh_boolean_impl).
 #pragma once
 
 #include <cstddef>
@@ -57,7 +59,7 @@ struct boolean_face_origin {
 /// What mesh_boolean did.
 struct boolean_report {
     std::vector<boolean_face_origin> faces;  ///< per output face, in the output's face order
-    std::size_t intersecting_pairs = 0;      ///< candidate triangle pairs tested
+    std::size_t intersecting_pairs = 0;      ///< candidate pairs of a and b tested (make_solid: of its mesh)
     std::size_t cut_triangles = 0;           ///< input triangles cut by the other mesh
     std::size_t snapped_vertices = 0;        ///< distinct exact points that rounded to one double
     std::size_t degenerate_faces = 0;        ///< output faces whose rounded corners are collinear
@@ -70,29 +72,30 @@ concept boolean_input_mesh = face_triangulable_mesh<M, T> && vertex_index_mesh<M
 
 /// Writes op(a, b) into `out`, replacing its content; each output face is a triangle.
 ///
-/// Every triangle pair of a and b that meets is intersected exactly (points where an edge meets a
-/// plane are kept as implicit points), every triangle is cut along its intersection segments by
-/// an exact constrained triangulation in its projection plane, and coincident points are merged
-/// exactly. Each piece is then labelled against the other mesh: a piece that lies in a coplanar
-/// face of it as "on" (same or opposite orientation), otherwise as in or out by the exact
-/// winding number (inside_closed) of an input vertex of its patch (pieces joined across
-/// uncut edges), or, when a patch has no input vertex off the other surface, of the rounded
-/// centroid of its largest piece; that fallback is the one decision not made exactly. Points are
-/// rounded to double once, at output; distinct points that round to the same double are merged
-/// and counted in snapped_vertices, and faces that collapse are dropped. The rounded result is
-/// checked exactly: faces whose corners became collinear and face pairs that now intersect
-/// (as self_intersections decides) are counted in the report; they are not yet repaired.
+/// A point is in op(a, b) by the winding numbers w_a, w_b of the inputs around it: union is
+/// w_a > 0 or w_b > 0, intersection both, difference w_a > 0 and not w_b > 0, xor exactly one.
+/// Every pair of triangles that meets (of one input too, other than along the edge or vertex it
+/// shares) is intersected exactly, with implicit points where an edge meets a plane or three
+/// planes meet; every triangle is cut along its segments by an exact constrained triangulation.
+/// The winding numbers on both sides of every piece are found exactly (detail/cell_windings.hpp);
+/// a piece is kept where op differs on its two sides, oriented towards the outside. Where clean
+/// inputs overlap in one plane, pieces are labelled against the other mesh instead, with one
+/// decision not exact (detail/mesh_boolean_impl.hpp). Points are rounded once, at output: points
+/// that round alike are merged (snapped_vertices), collapsed faces dropped, and faces made
+/// collinear or intersecting by rounding counted in the report, not yet repaired.
 ///
-/// \pre a and b are closed, consistently oriented outward, and each free of self-intersections
-///   (self_intersections() empty); polygon faces are cut as face_triangles does.
+/// \pre a and b are closed (every edge run as often one way as the other), self-intersecting,
+///   nested and inverted shells included; polygon faces are cut as face_triangles does.
 /// \post a and b are only read; `out` holds the result (empty for an empty result), or is
 ///   unchanged on error. A ∪ ∅ = A, A ∩ ∅ = ∅, A − ∅ = A, ∅ − B = ∅.
 /// Errors (out unchanged): errc::invalid_argument naming the mesh and vertex with a coordinate
-/// that is not finite or outside predicates::in_implicit_range; errc::unsupported when one
-/// triangle's cuts cross each other (an input that intersects itself); errc::cancelled; those
-/// of building `out`.
-/// Complexity: O(T log T + K + sum over cut triangles of n_t^3 + P F) for T triangles, K box-
-/// overlapping pairs, n_t cuts in triangle t, P patches and F faces: each pair is O(1) exact
+/// that is not finite or outside predicates::in_implicit_range; errc::unsupported when an input
+/// that intersects itself is not closed, has triangles overlapping in one plane (with its own or
+/// the other's), or spans more than 90 bits from its coarsest to its finest coordinate bit, or
+/// when one triangle's cuts cannot be triangulated; errc::cancelled; those of building `out`.
+/// Complexity: O(T log T + K + sum over cut triangles of n_t^3 + E log E + C T) for T triangles,
+/// K box-overlapping pairs (of one mesh and of both), n_t cuts in triangle t, E edges where more
+/// than two pieces meet and C connected parts of the arrangement: each pair is O(1) exact
 /// predicates, almost all settled by the floating-point filter.
 template <class MO, class MA, class MB, class TO = default_traits<MO>, class TA = default_traits<MA>,
           class TB = default_traits<MB>>

@@ -1,9 +1,11 @@
 // hmira/algorithms/boolean/detail/arrangement.hpp
 // The co-refinement of triangle soups from several meshes: every pair of triangles from different
 // meshes that meets is intersected exactly (its segment's ends as explicit or line-plane points),
-// coincident points are merged by an exact sort, and every triangle is cut along its segments
-// (cut_triangle.hpp). The result is a set of pieces over exact points, each piece inside one
-// input triangle, conforming along every cut.
+// and, on request, every pair of one mesh that meets other than along the edge or vertex it shares
+// (the rule of self_intersections); coincident points are merged by an exact sort, segments that
+// cross inside a triangle are split where they cross (segment_crossings.hpp), and every triangle is
+// cut along its segments (cut_triangle.hpp). The result is a set of pieces over exact points, each
+// piece inside one input triangle, conforming along every cut.
 #pragma once
 
 #include <algorithm>
@@ -16,6 +18,7 @@
 
 #include "../../../core/progress.hpp"
 #include "../../../predicates/intersect3d.hpp"
+#include "../../validation/detail/self_intersections_impl.hpp"
 #include "cut_triangle.hpp"
 
 namespace hmira::detail::boolean {
@@ -40,14 +43,17 @@ struct arrangement {
     std::vector<piece> pieces;
     std::vector<std::array<vid, 2>> cut_edges;  ///< sorted, unique, each (smaller, larger)
     std::vector<std::vector<std::uint32_t>> coplanar;
-    std::vector<int> drop;  ///< projection axis of each input triangle, -1 if it has no area
-    std::size_t pairs = 0;  ///< candidate pairs (boxes overlapping) tested exactly
+    std::vector<int> drop;            ///< projection axis of each input triangle, -1 if it has no area
+    std::size_t pairs = 0;            ///< candidate pairs of different meshes (boxes overlapping) tested exactly
+    std::size_t same_mesh_pairs = 0;  ///< candidate pairs of one mesh tested
+    bool self_cut = false;            ///< some triangles of one mesh meet other than where they share corners
 };
 
 /// What the pair stage found for one input triangle: points and segments, by point id.
 struct triangle_cuts {
     std::vector<vid> points;
     std::vector<std::array<vid, 2>> segments;
+    std::vector<std::array<vid, 3>> tagged;  ///< each segment with the other triangle of its pair
 };
 
 /// The coplanar crossing of segments pq and ab, given to cross properly in the plane that drops
@@ -67,9 +73,14 @@ public:
                std::vector<triangle_cuts>& cuts)
         : arr_(arr), explicit_(explicit_points), tris_(tris), cuts_(cuts) {}
 
-    /// Intersects triangles i and j (of different meshes, both with area) and records the result.
+    /// Intersects triangles i and j (both with area) and records the result; triangles of one
+    /// mesh only where they meet other than along their shared corners.
     void intersect(std::uint32_t i, std::uint32_t j) {
         const tri3 &t = tris_[i].v, &u = tris_[j].v;
+        if (tris_[i].mesh == tris_[j].mesh) {
+            if (!self_intersect::triangles_cross({t[0], t[1], t[2]}, {u[0], u[1], u[2]}, explicit_)) return;
+            arr_.self_cut = true;
+        }
         const point3 &a = pos(t[0]), &b = pos(t[1]), &c = pos(t[2]), &d = pos(u[0]), &e = pos(u[1]), &f = pos(u[2]);
         if (!predicates::triangles_intersect(a, b, c, d, e, f)) return;
         const int sd = predicates::orient3d(a, b, c, d), se = predicates::orient3d(a, b, c, e),
@@ -115,6 +126,7 @@ private:
             cuts_[k].points.push_back(lo);
             cuts_[k].points.push_back(hi);
             if (lo != hi) cuts_[k].segments.push_back({lo, hi});
+            if (lo != hi) cuts_[k].tagged.push_back({lo, hi, k == i ? j : i});
         }
     }
 
@@ -151,10 +163,11 @@ private:
     std::vector<triangle_cuts>& cuts_;
 };
 
-/// Candidate pairs: triangles of different meshes whose closed boxes overlap, by a sweep along x.
+/// Candidate pairs: triangles of different meshes (of any, with `same_mesh`) whose closed boxes
+/// overlap, by a sweep along x.
 inline std::vector<std::array<std::uint32_t, 2>> candidate_pairs(const std::vector<exact_point>& pts,
                                                                  const std::vector<soup_triangle>& tris,
-                                                                 const std::vector<int>& drop) {
+                                                                 const std::vector<int>& drop, bool same_mesh = false) {
     std::vector<std::array<point3, 2>> box(tris.size());
     for (std::size_t i = 0; i < tris.size(); ++i) {
         point3 lo = pts[tris[i].v[0]].explicit_coordinates(), hi = lo;
@@ -185,7 +198,7 @@ inline std::vector<std::array<std::uint32_t, 2>> candidate_pairs(const std::vect
         const std::uint32_t x = order[n];
         for (std::size_t m = n + 1; m < order.size() && box[order[m]][0][ax] <= box[x][1][ax]; ++m) {
             const std::uint32_t y = order[m];
-            if (tris[x].mesh == tris[y].mesh) continue;
+            if (!same_mesh && tris[x].mesh == tris[y].mesh) continue;
             bool overlap = true;
             for (std::size_t k = 0; k < 3; ++k)
                 overlap = overlap && box[x][0][k] <= box[y][1][k] && box[y][0][k] <= box[x][1][k];
@@ -240,11 +253,14 @@ inline void share_edge_points(const arrangement& arr, const std::vector<soup_tri
     }
 }
 
+inline bool split_crossings(arrangement& arr, const std::vector<soup_triangle>& tris, std::vector<triangle_cuts>& cuts);
+
 /// Builds the arrangement of `tris` over the explicit points `explicit_points` (whose exact
-/// duplicates must already be merged). False, with arr partly built, when a triangle's cuts cross
-/// each other (intersecting triangles within one mesh) or cancellation was asked.
+/// duplicates must already be merged), cutting triangles of one mesh by each other too when
+/// `same_mesh`. False, with arr partly built, when a triangle's cuts cross each other (without
+/// `same_mesh`, intersecting triangles within one mesh) or cancellation was asked.
 inline bool build_arrangement(const std::vector<point3>& explicit_points, const std::vector<soup_triangle>& tris,
-                              arrangement& arr, progress_gate* gate) {
+                              arrangement& arr, progress_gate* gate, bool same_mesh = false) {
     arr.points.assign(explicit_points.begin(), explicit_points.end());
     arr.coplanar.assign(tris.size(), {});
     arr.drop.resize(tris.size());
@@ -256,8 +272,8 @@ inline bool build_arrangement(const std::vector<point3>& explicit_points, const 
     }
     std::vector<triangle_cuts> cuts(tris.size());
     pair_stage stage(arr, explicit_points, tris, cuts);
-    const auto pairs = candidate_pairs(arr.points, tris, arr.drop);
-    arr.pairs = pairs.size();
+    const auto pairs = candidate_pairs(arr.points, tris, arr.drop, same_mesh);
+    for (const auto& p : pairs) ++(tris[p[0]].mesh != tris[p[1]].mesh ? arr.pairs : arr.same_mesh_pairs);
     for (std::size_t n = 0; n < pairs.size(); ++n) {
         if (gate && (n & 1023) == 0 && gate->cancelled()) return false;
         stage.intersect(pairs[n][0], pairs[n][1]);
@@ -268,12 +284,14 @@ inline bool build_arrangement(const std::vector<point3>& explicit_points, const 
     for (triangle_cuts& c : cuts) {
         for (vid& p : c.points) p = map[p];
         for (auto& s : c.segments) s = {std::min(map[s[0]], map[s[1]]), std::max(map[s[0]], map[s[1]])};
+        for (auto& s : c.tagged) s = {map[s[0]], map[s[1]], s[2]};
         std::sort(c.points.begin(), c.points.end());
         c.points.erase(std::unique(c.points.begin(), c.points.end()), c.points.end());
         std::sort(c.segments.begin(), c.segments.end());
         c.segments.erase(std::unique(c.segments.begin(), c.segments.end()), c.segments.end());
     }
     share_edge_points(arr, tris, cuts);
+    if (arr.self_cut && !split_crossings(arr, tris, cuts)) return false;
     for (std::size_t i = 0; i < tris.size(); ++i) {
         if (arr.drop[i] < 0) continue;
         if (gate && (i & 255) == 0 && gate->cancelled()) return false;
@@ -297,3 +315,5 @@ inline bool build_arrangement(const std::vector<point3>& explicit_points, const 
 }
 
 }  // namespace hmira::detail::boolean
+
+#include "segment_crossings.hpp"

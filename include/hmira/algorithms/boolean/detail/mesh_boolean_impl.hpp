@@ -19,16 +19,18 @@
 #include "../../triangulation/detail/indexed_triangles.hpp"
 #include "../mesh_boolean.hpp"
 #include "arrangement.hpp"
+#include "cell_windings.hpp"
 
 namespace hmira::detail::boolean {
 
 /// A piece's position with respect to the other mesh.
 enum class label : std::uint8_t { out, in, on_same, on_opposite };
 
-/// Appends one input's vertices and triangles; an error names the first vertex out of range.
+/// Appends one input's vertices and triangles; an error names the first vertex out of range (and
+/// the mesh, a or b, unless `who` names the caller of a one-mesh operation).
 template <class M, class T>
 result<void> read_input(const M& mesh, std::uint32_t which, std::vector<point3>& points,
-                        std::vector<soup_triangle>& tris) {
+                        std::vector<soup_triangle>& tris, const char* who = nullptr) {
     const std::size_t base = points.size();
     points.resize(base + T::vertex_index_bound(mesh));
     for (auto v : T::vertices(mesh)) {
@@ -38,8 +40,8 @@ result<void> read_input(const M& mesh, std::uint32_t which, std::vector<point3>&
         for (std::size_t k = 0; k < 3; ++k)
             if (!std::isfinite(p[k]) || !predicates::in_predicate_range(p[k]))
                 return fail(errc::invalid_argument,
-                            std::string("mesh_boolean: vertex ") + std::to_string(i) + " of mesh " +
-                                (which == 0 ? "a" : "b") +
+                            std::string(who ? who : "mesh_boolean") + ": vertex " + std::to_string(i) +
+                                (who ? std::string() : std::string(" of mesh ") + (which == 0 ? "a" : "b")) +
                                 " has a coordinate that is not finite or outside predicates::in_predicate_range",
                             (long long)i);
         points[base + i] = p;
@@ -118,6 +120,62 @@ inline bool keep(boolean_op op, std::uint32_t from, label l, bool& flip) {
     return false;
 }
 
+/// Whether a point with winding numbers wa, wb of a and b is in op(a, b).
+inline bool in_result(boolean_op op, std::int32_t wa, std::int32_t wb) {
+    const bool x = wa > 0, y = wb > 0;
+    switch (op) {
+        case boolean_op::union_: return x || y;
+        case boolean_op::intersection: return x && y;
+        case boolean_op::difference: return x && !y;
+        case boolean_op::xor_: return x != y;
+    }
+    return false;
+}
+
+/// Coordinate spans (bits from the coarsest to the finest) within which the winding labels stay
+/// exact: with three-plane points (triangles of one mesh cutting each other) the predicates reach
+/// degree 20, with line-plane points alone degree 17; a few bits are left for the seeds' segments.
+inline constexpr int span_with_three_plane_points = 90;
+inline constexpr int span_with_line_plane_points = 160;
+
+/// The winding numbers of a and b on both sides of every piece, when they can be found exactly:
+/// no coplanar overlapping triangles and a coordinate span within the limits above. An error
+/// when they cannot and the input needs them (triangles of one mesh cut each other); nothing
+/// (the caller labels against the other mesh) otherwise, unless `required`.
+inline result<std::optional<piece_windings>> windings_of(const arrangement& arr, const std::vector<soup_triangle>& tris,
+                                                         const std::vector<point3>& points, std::size_t meshes,
+                                                         const char* who, bool required = false) {
+    const bool need = required || arr.self_cut;
+    const bool coplanar =
+        std::any_of(arr.coplanar.begin(), arr.coplanar.end(), [](const auto& c) { return !c.empty(); });
+    const int span = coordinate_span(points);
+    const std::string name(who);
+    if (coplanar) {
+        if (!need) return std::optional<piece_windings>{};
+        return fail(errc::unsupported, name +
+                                           ": coplanar overlapping triangles are not supported yet with "
+                                           "winding numbers");
+    }
+    if (span > (arr.self_cut ? span_with_three_plane_points : span_with_line_plane_points)) {
+        if (!need) return std::optional<piece_windings>{};
+        return fail(errc::unsupported, name + ": the coordinates span " + std::to_string(span) +
+                                           " bits; exact winding numbers take " +
+                                           std::to_string(span_with_three_plane_points));
+    }
+    piece_windings w;
+    switch (cell_windings(arr, tris, points.size(), meshes).run(w)) {
+        case winding_status::ok: return std::optional<piece_windings>(std::move(w));
+        case winding_status::coincident:
+        case winding_status::no_seed:
+            if (!need) return std::optional<piece_windings>{};
+            return fail(errc::unsupported,
+                        name + ": overlapping pieces around an edge, or no segment from outside missed every edge");
+        case winding_status::not_closed: break;
+    }
+    if (!need) return std::optional<piece_windings>{};
+    return fail(errc::unsupported, name + ": an input is not closed (its winding numbers are not consistent)");
+}
+
 /// Checks the rounded output exactly: faces whose corners became collinear, and pairs of faces
 /// that rounding made intersect (the rule of self_intersections). Only faces with a rounded
 /// (constructed) corner can have moved, so only pairs holding one are tested: each such face
@@ -171,6 +229,64 @@ inline void check_rounding(const io::polygon_soup& soup, const std::vector<char>
     }
 }
 
+/// The pieces `kept(n, flip)` keeps (flipped when it says so), each point rounded once (from the
+/// frame scaled by 2^scale back to the input's); distinct points that round alike are merged and
+/// counted, faces that collapse dropped, and the rounded faces checked (check_rounding). Fills
+/// report.faces, cut_triangles, snapped_vertices and the rounding counts.
+template <class Kept>
+result<io::polygon_soup> round_kept(const arrangement& arr, const std::vector<soup_triangle>& tris, int scale,
+                                    std::size_t explicit_count, Kept kept, boolean_report& report, const char* who) {
+    // The kept pieces, rounded once; distinct points that round alike are merged.
+    io::polygon_soup soup;
+    std::map<vid, std::uint32_t> out_id;
+    std::map<std::array<double, 3>, std::uint32_t> by_position;
+    std::vector<char> cut(tris.size(), 0);
+    for (const piece& p : arr.pieces)
+        if (p.v != tris[p.source].v) cut[p.source] = 1;
+    report.cut_triangles = std::size_t(std::count(cut.begin(), cut.end(), 1));
+    for (std::size_t n = 0; n < arr.pieces.size(); ++n) {
+        const piece& p = arr.pieces[n];
+        const std::uint32_t from = tris[p.source].mesh;
+        bool flip = false;
+        if (!kept(n, flip)) continue;
+        std::array<std::uint32_t, 3> f{};
+        for (std::size_t m = 0; m < 3; ++m) {
+            const vid v = p.v[m];
+            auto it = out_id.find(v);
+            if (it == out_id.end()) {
+                const point3 x = arr.points[v].approximate();
+                const std::array<double, 3> key{std::ldexp(x.x, -scale), std::ldexp(x.y, -scale),
+                                                std::ldexp(x.z, -scale)};
+                auto [pos, fresh] = by_position.try_emplace(key, std::uint32_t(soup.points.size()));
+                if (fresh)
+                    soup.points.push_back(key);
+                else
+                    ++report.snapped_vertices;
+                it = out_id.emplace(v, pos->second).first;
+            }
+            f[m] = it->second;
+        }
+        if (f[0] == f[1] || f[1] == f[2] || f[2] == f[0]) continue;
+        if (flip) std::swap(f[1], f[2]);
+        soup.indices.insert(soup.indices.end(), f.begin(), f.end());
+        soup.face_offsets.push_back(soup.indices.size());
+        report.faces.push_back({std::uint8_t(from), tris[p.source].face});
+    }
+    // A safety net behind the exact rounding of constructed points: no result is reported with a
+    // coordinate that is not finite; the output mesh is left unchanged.
+    for (std::size_t n = 0; n < soup.points.size(); ++n)
+        for (double c : soup.points[n])
+            if (!std::isfinite(c))
+                return fail(errc::unsupported,
+                            std::string(who) + ": output vertex " + std::to_string(n) +
+                                " rounded to a coordinate that is not finite",
+                            (long long)n);
+    std::vector<char> rounded(soup.points.size(), 0);
+    for (const auto& [v, o] : out_id) rounded[o] = rounded[o] || v >= explicit_count;
+    check_rounding(soup, rounded, report);
+    return soup;
+}
+
 }  // namespace hmira::detail::boolean
 
 namespace hmira {
@@ -194,142 +310,114 @@ result<boolean_report> mesh_boolean(MO& out, const MA& a, const MB& b, const boo
     if (!gate.advance()) return fail(errc::cancelled, "mesh_boolean: cancelled");
 
     bd::arrangement arr;
-    if (!bd::build_arrangement(points, tris, arr, &gate)) {
+    if (!bd::build_arrangement(points, tris, arr, &gate, true)) {
         if (gate.cancelled()) return fail(errc::cancelled, "mesh_boolean: cancelled");
-        return fail(errc::unsupported,
-                    "mesh_boolean: the cuts of one triangle cross each other; an input intersects itself");
+        return fail(errc::unsupported, "mesh_boolean: the cuts of one triangle could not be triangulated");
     }
     if (!gate.advance()) return fail(errc::cancelled, "mesh_boolean: cancelled");
     boolean_report report;
     report.intersecting_pairs = arr.pairs;
+    auto windings = bd::windings_of(arr, tris, points, 2, "mesh_boolean");
+    if (!windings) return windings.error();
 
-    // Labels: "on" pieces first, then patches of the rest joined across uncut edges.
-    std::vector<label> labels(arr.pieces.size(), label::out);
-    std::vector<char> on(arr.pieces.size(), 0);
-    for (std::size_t n = 0; n < arr.pieces.size(); ++n)
-        for (std::uint32_t j : arr.coplanar[arr.pieces[n].source]) {
-            bool inside = false;
-            const label l = bd::coplanar_label(arr, tris, arr.pieces[n], j, inside);
-            if (inside) {
-                labels[n] = l;
-                on[n] = 1;
-                break;
-            }
-        }
-    union_find patches(arr.pieces.size());
-    {
-        std::map<std::array<vid, 2>, std::vector<std::uint32_t>> by_edge;
-        for (std::uint32_t n = 0; n < arr.pieces.size(); ++n) {
-            if (on[n]) continue;
-            const bd::tri3& t = arr.pieces[n].v;
-            for (std::size_t m = 0; m < 3; ++m) {
-                const std::array<vid, 2> e{std::min(t[m], t[(m + 1) % 3]), std::max(t[m], t[(m + 1) % 3])};
-                if (!std::binary_search(arr.cut_edges.begin(), arr.cut_edges.end(), e)) by_edge[e].push_back(n);
-            }
-        }
-        for (const auto& [e, ps] : by_edge)
-            for (std::size_t x = 1; x < ps.size(); ++x)
-                if (tris[arr.pieces[ps[x]].source].mesh == tris[arr.pieces[ps[0]].source].mesh)
-                    patches.unite(ps[0], ps[x]);
-    }
+    // Without winding numbers (coplanar overlaps between clean inputs), labels: a piece that lies
+    // in a coplanar face of the other mesh is "on" it (same or opposite orientation); the others,
+    // in patches joined across uncut edges, are in or out by the exact winding number
+    // (inside_closed) of an input vertex of the patch off the other surface, or, when the patch
+    // has none, of the rounded centroid of its largest piece: the one decision not made exactly.
     const std::size_t explicit_count = points.size();
-    auto locate = [&](std::uint32_t other, const bd::point3& p) -> result<point_location> {
-        const vec3<double> q{std::ldexp(p.x, -*scale), std::ldexp(p.y, -*scale), std::ldexp(p.z, -*scale)};
-        if (other == 0) return inside_closed<MA, TA>(a, q);
-        return inside_closed<MB, TB>(b, q);
-    };
-    std::map<std::uint32_t, std::vector<std::uint32_t>> members;
-    for (std::uint32_t n = 0; n < arr.pieces.size(); ++n)
-        if (!on[n]) members[patches.find(n)].push_back(n);
-    std::map<std::uint32_t, label> patch_label;
-    for (const auto& [root, list] : members) {
-        const std::uint32_t other = 1 - tris[arr.pieces[list[0]].source].mesh;
-        // An input vertex of the patch off the other surface decides it exactly.
-        std::optional<label> found;
-        double best_area = -1;
-        bd::point3 centroid{};
-        for (std::uint32_t m : list) {
-            for (vid v : arr.pieces[m].v) {
-                if (v >= explicit_count) continue;
-                auto where = locate(other, points[v]);
+    std::vector<label> labels(arr.pieces.size(), label::out);
+    if (!*windings) {
+        std::vector<char> on(arr.pieces.size(), 0);
+        for (std::size_t n = 0; n < arr.pieces.size(); ++n)
+            for (std::uint32_t j : arr.coplanar[arr.pieces[n].source]) {
+                bool inside = false;
+                const label l = bd::coplanar_label(arr, tris, arr.pieces[n], j, inside);
+                if (inside) {
+                    labels[n] = l;
+                    on[n] = 1;
+                    break;
+                }
+            }
+        union_find patches(arr.pieces.size());
+        {
+            std::map<std::array<vid, 2>, std::vector<std::uint32_t>> by_edge;
+            for (std::uint32_t n = 0; n < arr.pieces.size(); ++n) {
+                if (on[n]) continue;
+                const bd::tri3& t = arr.pieces[n].v;
+                for (std::size_t m = 0; m < 3; ++m) {
+                    const std::array<vid, 2> e{std::min(t[m], t[(m + 1) % 3]), std::max(t[m], t[(m + 1) % 3])};
+                    if (!std::binary_search(arr.cut_edges.begin(), arr.cut_edges.end(), e)) by_edge[e].push_back(n);
+                }
+            }
+            for (const auto& [e, ps] : by_edge)
+                for (std::size_t x = 1; x < ps.size(); ++x)
+                    if (tris[arr.pieces[ps[x]].source].mesh == tris[arr.pieces[ps[0]].source].mesh)
+                        patches.unite(ps[0], ps[x]);
+        }
+        auto locate = [&](std::uint32_t other, const bd::point3& p) -> result<point_location> {
+            const vec3<double> q{std::ldexp(p.x, -*scale), std::ldexp(p.y, -*scale), std::ldexp(p.z, -*scale)};
+            if (other == 0) return inside_closed<MA, TA>(a, q);
+            return inside_closed<MB, TB>(b, q);
+        };
+        std::map<std::uint32_t, std::vector<std::uint32_t>> members;
+        for (std::uint32_t n = 0; n < arr.pieces.size(); ++n)
+            if (!on[n]) members[patches.find(n)].push_back(n);
+        std::map<std::uint32_t, label> patch_label;
+        for (const auto& [root, list] : members) {
+            const std::uint32_t other = 1 - tris[arr.pieces[list[0]].source].mesh;
+            // An input vertex of the patch off the other surface decides it exactly.
+            std::optional<label> found;
+            double best_area = -1;
+            bd::point3 centroid{};
+            for (std::uint32_t m : list) {
+                for (vid v : arr.pieces[m].v) {
+                    if (v >= explicit_count) continue;
+                    auto where = locate(other, points[v]);
+                    if (!where) return where.error();
+                    if (*where == point_location::on_surface) continue;
+                    found = *where == point_location::inside ? label::in : label::out;
+                    break;
+                }
+                if (found) break;
+                const bd::point3 p = arr.points[arr.pieces[m].v[0]].approximate(),
+                                 q = arr.points[arr.pieces[m].v[1]].approximate(),
+                                 r = arr.points[arr.pieces[m].v[2]].approximate();
+                const bd::point3 u{q.x - p.x, q.y - p.y, q.z - p.z}, w{r.x - p.x, r.y - p.y, r.z - p.z};
+                const bd::point3 c{u.y * w.z - u.z * w.y, u.z * w.x - u.x * w.z, u.x * w.y - u.y * w.x};
+                const double area = c.x * c.x + c.y * c.y + c.z * c.z;
+                if (area > best_area) {
+                    best_area = area;
+                    centroid = {(p.x + q.x + r.x) / 3, (p.y + q.y + r.y) / 3, (p.z + q.z + r.z) / 3};
+                }
+            }
+            if (!found) {
+                auto where = locate(other, centroid);
                 if (!where) return where.error();
-                if (*where == point_location::on_surface) continue;
                 found = *where == point_location::inside ? label::in : label::out;
-                break;
             }
-            if (found) break;
-            const bd::point3 p = arr.points[arr.pieces[m].v[0]].approximate(),
-                             q = arr.points[arr.pieces[m].v[1]].approximate(),
-                             r = arr.points[arr.pieces[m].v[2]].approximate();
-            const bd::point3 u{q.x - p.x, q.y - p.y, q.z - p.z}, w{r.x - p.x, r.y - p.y, r.z - p.z};
-            const bd::point3 c{u.y * w.z - u.z * w.y, u.z * w.x - u.x * w.z, u.x * w.y - u.y * w.x};
-            const double area = c.x * c.x + c.y * c.y + c.z * c.z;
-            if (area > best_area) {
-                best_area = area;
-                centroid = {(p.x + q.x + r.x) / 3, (p.y + q.y + r.y) / 3, (p.z + q.z + r.z) / 3};
-            }
+            patch_label[root] = *found;
         }
-        if (!found) {
-            auto where = locate(other, centroid);
-            if (!where) return where.error();
-            found = *where == point_location::inside ? label::in : label::out;
-        }
-        patch_label[root] = *found;
+        for (std::uint32_t n = 0; n < arr.pieces.size(); ++n)
+            if (!on[n]) labels[n] = patch_label[patches.find(n)];
     }
-    for (std::uint32_t n = 0; n < arr.pieces.size(); ++n)
-        if (!on[n]) labels[n] = patch_label[patches.find(n)];
     if (!gate.advance()) return fail(errc::cancelled, "mesh_boolean: cancelled");
 
-    // The kept pieces, rounded once; distinct points that round alike are merged.
-    io::polygon_soup soup;
-    std::map<vid, std::uint32_t> out_id;
-    std::map<std::array<double, 3>, std::uint32_t> by_position;
-    std::vector<char> cut(tris.size(), 0);
-    for (const bd::piece& p : arr.pieces)
-        if (p.v != tris[p.source].v) cut[p.source] = 1;
-    report.cut_triangles = std::size_t(std::count(cut.begin(), cut.end(), 1));
-    for (std::size_t n = 0; n < arr.pieces.size(); ++n) {
-        const bd::piece& p = arr.pieces[n];
-        const std::uint32_t from = tris[p.source].mesh;
-        bool flip = false;
-        if (!bd::keep(options.op, from, labels[n], flip)) continue;
-        std::array<std::uint32_t, 3> f{};
-        for (std::size_t m = 0; m < 3; ++m) {
-            const vid v = p.v[m];
-            auto it = out_id.find(v);
-            if (it == out_id.end()) {
-                const bd::point3 x = arr.points[v].approximate();
-                const std::array<double, 3> key{std::ldexp(x.x, -*scale), std::ldexp(x.y, -*scale),
-                                                std::ldexp(x.z, -*scale)};
-                auto [pos, fresh] = by_position.try_emplace(key, std::uint32_t(soup.points.size()));
-                if (fresh)
-                    soup.points.push_back(key);
-                else
-                    ++report.snapped_vertices;
-                it = out_id.emplace(v, pos->second).first;
-            }
-            f[m] = it->second;
+    // The kept pieces, rounded once.
+    auto kept = [&](std::size_t n, bool& flip) {
+        if (*windings) {
+            const auto& w = **windings;
+            const bool pos = bd::in_result(options.op, w.pos[2 * n], w.pos[2 * n + 1]),
+                       neg = bd::in_result(options.op, w.neg[2 * n], w.neg[2 * n + 1]);
+            flip = pos;
+            return pos != neg;
         }
-        if (f[0] == f[1] || f[1] == f[2] || f[2] == f[0]) continue;
-        if (flip) std::swap(f[1], f[2]);
-        soup.indices.insert(soup.indices.end(), f.begin(), f.end());
-        soup.face_offsets.push_back(soup.indices.size());
-        report.faces.push_back({std::uint8_t(from), tris[p.source].face});
-    }
-    // A safety net behind the exact rounding of constructed points: no result is reported with a
-    // coordinate that is not finite; the output mesh is left unchanged.
-    for (std::size_t n = 0; n < soup.points.size(); ++n)
-        for (double c : soup.points[n])
-            if (!std::isfinite(c))
-                return fail(
-                    errc::unsupported,
-                    "mesh_boolean: output vertex " + std::to_string(n) + " rounded to a coordinate that is not finite",
-                    (long long)n);
-    std::vector<char> rounded(soup.points.size(), 0);
-    for (const auto& [v, o] : out_id) rounded[o] = rounded[o] || v >= explicit_count;
-    bd::check_rounding(soup, rounded, report);
+        return bd::keep(options.op, tris[arr.pieces[n].source].mesh, labels[n], flip);
+    };
+    auto soup = bd::round_kept(arr, tris, *scale, explicit_count, kept, report, "mesh_boolean");
+    if (!soup) return soup.error();
     if (!gate.advance()) return fail(errc::cancelled, "mesh_boolean: cancelled");
-    if (auto r = detail::copy::build<MO, TO>(out, soup); !r) return r.error();
+    if (auto r = detail::copy::build<MO, TO>(out, *soup); !r) return r.error();
     return report;
 }
 
