@@ -294,7 +294,7 @@ inline result<polygon_soup> parse_vtk_legacy(std::string_view data, const std::s
             if (auto ok = c.values(binary, "int", *n, grid_types, "CELL_TYPES"); !ok) return ok.error();
         } else if (key == "METADATA") {
             c.end_line();
-            while (!c.at_end() && !c.raw_line().empty()) {
+            while (c.left() > 0 && !c.raw_line().empty()) {  // up to the blank line that ends it
             }
         } else if (key == "POINT_DATA" || key == "CELL_DATA" || key == "FIELD") {
             break;

@@ -162,14 +162,15 @@ private:
             const std::string_view key = read_name();
             if (key.empty()) return bad("malformed attribute in <" + std::string(n.substr(0, 64)) + ">", pos_);
             skip_spaces();
-            if (pos_ >= data_.size() || data_[pos_] != '=') return bad("attribute without '='", pos_);
+            if (pos_ >= data_.size()) return bad("the document ends inside a tag", at);
+            if (data_[pos_] != '=') return bad("attribute without '='", pos_);
             ++pos_;
             skip_spaces();
             if (pos_ >= data_.size() || (data_[pos_] != '"' && data_[pos_] != '\''))
                 return bad("attribute value without quotes", pos_);
             const char quote = data_[pos_++];
             const std::size_t close = data_.find(quote, pos_);
-            if (close == std::string_view::npos) return bad("unterminated attribute value", pos_);
+            if (close == std::string_view::npos) return bad("the document ends inside an attribute value", pos_);
             attributes.push_back({local(key), data_.substr(pos_, close - pos_)});
             pos_ = close + 1;
         }

@@ -251,8 +251,9 @@ inline result<std::string> zip_read(std::string_view data, const zip_entry& entr
     return out;
 }
 
-/// A ZIP of the given (name, bytes) entries, deflated when zlib is available, else stored.
-inline std::string zip_archive(const std::vector<std::pair<std::string, std::string_view>>& files) {
+/// A ZIP of the given (name, bytes) entries, deflated when `deflate` and zlib is available, else
+/// stored. At most 4 GiB in all (no ZIP64 records are written).
+inline std::string zip_archive(const std::vector<std::pair<std::string, std::string_view>>& files, bool deflate = true) {
     std::string out, directory;
     auto u16 = [](std::string& s, std::uint32_t v) { s += char(v & 0xff), s += char((v >> 8) & 0xff); };
     auto u32 = [&](std::string& s, std::uint64_t v) {
@@ -261,10 +262,10 @@ inline std::string zip_archive(const std::vector<std::pair<std::string, std::str
     };
     for (const auto& [file, bytes] : files) {
         const std::uint32_t crc = crc32_of(bytes);
-        std::string packed = deflate_bytes(bytes, true, 1);
-        const bool deflated = !packed.empty() || bytes.empty();
+        std::string packed = deflate ? deflate_bytes(bytes, true, 1) : std::string();
+        const bool deflated = !packed.empty();
         const std::string_view body = deflated ? std::string_view(packed) : bytes;
-        const std::uint16_t method = deflated && !bytes.empty() ? 8 : 0;
+        const std::uint16_t method = deflated ? 8 : 0;
         const std::uint64_t offset = out.size();
         auto header = [&](std::string& s, bool central) {
             u32(s, central ? 0x02014b50u : 0x04034b50u);
