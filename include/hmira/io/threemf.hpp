@@ -51,7 +51,7 @@ inline result<polygon_soup> parse_3mf(std::string_view data, const std::string& 
     if (!model_entry) return fail(errc::parse_error, name + ": no model part '" + detail::printable(*part) + "' in the package");
     auto text = detail::zip_read(data, *model_entry, name, options.max_input_bytes);
     if (!text) return text.error();
-    auto model = detail::threemf_parse_model(*text, name + " (" + *part + ")");
+    auto model = detail::threemf_parse_model(*text, name + " (" + detail::printable(*part) + ")");
     if (!model) return model.error();
     polygon_soup soup;
     std::vector<std::uint64_t> path;

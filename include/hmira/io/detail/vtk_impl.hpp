@@ -103,14 +103,14 @@ public:
         std::uint64_t v = 0;
         const auto r = std::from_chars(t.data(), t.data() + t.size(), v);
         if (t.empty() || r.ec != std::errc() || r.ptr != t.data() + t.size())
-            return bad(std::string(what) + ": '" + std::string(t.substr(0, 32)) + "' is not a count");
+            return bad(std::string(what) + ": '" + printable(std::string(t.substr(0, 32))) + "' is not a count");
         return v;
     }
     /// `n` numbers of a binary element of `size` bytes (big-endian), or ASCII tokens, as T.
     template <class T>
     result<void> values(bool binary, std::string_view type, std::uint64_t n, std::vector<T>& out, const char* what) {
         const std::size_t size = type_size(type);
-        if (size == 0) return bad(std::string(what) + ": data type '" + std::string(type.substr(0, 32)) + "' is not read");
+        if (size == 0) return bad(std::string(what) + ": data type '" + printable(std::string(type.substr(0, 32))) + "' is not read");
         // Every value takes `size` bytes, or 2 characters (digit and separator) in ASCII.
         if (n > (binary ? left() / size : (left() + 1) / 2))
             return bad(std::string(what) + ": " + std::to_string(n) + " values declared, more than the " +
@@ -121,7 +121,7 @@ public:
                 const auto t = token();
                 double d = 0;
                 if (!parse_double(t, d))
-                    return bad(std::string(what) + ": '" + std::string(t.substr(0, 32)) + "' is not a number");
+                    return bad(std::string(what) + ": '" + printable(std::string(t.substr(0, 32))) + "' is not a number");
                 if constexpr (std::is_integral_v<T>) {
                     if (!(d >= 0 && d < 1.8e19) || d != std::floor(d))
                         return bad(std::string(what) + ": " + number_text(d) + " is not a non-negative integer");
@@ -252,7 +252,7 @@ inline result<polygon_soup> parse_vtk_legacy(std::string_view data, const std::s
     const auto dataset = c.token();
     const bool grid = dataset == "UNSTRUCTURED_GRID";
     if (dataset != "POLYDATA" && !grid)
-        return fail(errc::unsupported, name + ": DATASET " + std::string(dataset.substr(0, 32)) +
+        return fail(errc::unsupported, name + ": DATASET " + printable(std::string(dataset.substr(0, 32))) +
                                            " (only POLYDATA and UNSTRUCTURED_GRID are read)");
     polygon_soup soup;
     bool have_points = false;

@@ -160,7 +160,11 @@ inline result<std::string> vtp_bytes(const vtp_file& f, const vtp_array& a, cons
             std::string chunk;
             if (packed[b] > src.bound() || !src.read(static_cast<std::size_t>(packed[b]), chunk))
                 return f.bad(where + ": compressed block " + std::to_string(b) + " runs past the end of the data");
-            auto plain = inflate_exactly(chunk, b + 1 == blocks ? last : block, false,
+            const std::uint64_t plain_size = b + 1 == blocks ? last : block;
+            if (plain_size > deflate_bound(packed[b]))
+                return f.bad(where + ": compressed block " + std::to_string(b) + " declares " +
+                             std::to_string(plain_size) + " bytes, more than its data can inflate to");
+            auto plain = inflate_exactly(chunk, plain_size, false,
                                          f.name + ": " + where + " block " + std::to_string(b));
             if (!plain) return plain.error();
             out += *plain;
@@ -176,7 +180,7 @@ template <class T>
 result<void> vtp_values(const vtp_file& f, const vtp_array& a, std::uint64_t n, std::vector<T>& out,
                         const std::string& where) {
     const std::size_t size = vtp_type_size(a.type);
-    if (size == 0) return fail(errc::unsupported, f.name + ": " + where + " has type '" + a.type.substr(0, 32) + "'");
+    if (size == 0) return fail(errc::unsupported, f.name + ": " + where + " has type '" + printable(a.type.substr(0, 32)) + "'");
     if (a.format == "ascii") {
         if (n > (a.text.size() + 1) / 2) return f.bad(where + ": " + std::to_string(n) + " values declared, more than the text holds");
         out.resize(static_cast<std::size_t>(n));
@@ -196,7 +200,7 @@ result<void> vtp_values(const vtp_file& f, const vtp_array& a, std::uint64_t n, 
         return {};
     }
     if (a.format != "binary" && a.format != "appended")
-        return f.bad(where + ": format '" + a.format.substr(0, 32) + "' (ascii, binary or appended)");
+        return f.bad(where + ": format '" + printable(a.format.substr(0, 32)) + "' (ascii, binary or appended)");
     auto bytes = vtp_bytes(f, a, where);
     if (!bytes) return bytes.error();
     if (bytes->size() / size != n || bytes->size() % size)
@@ -302,6 +306,7 @@ inline result<polygon_soup> parse_vtp(std::string_view data, const std::string& 
                 f.compressed = true;
             }
         } else if (tag == "Piece") {
+            current = nullptr;  // it points into the pieces, which may move
             vtp_piece p;
             auto n = vtp_count(x, "NumberOfPoints"), polys = vtp_count(x, "NumberOfPolys"),
                  strips = vtp_count(x, "NumberOfStrips");

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "../../core/result.hpp"
+#include "json.hpp"  // printable
 
 namespace hmira::io::detail {
 
@@ -63,7 +64,7 @@ public:
         }
         for (;;) {
             if (pos_ >= data_.size()) {
-                if (!stack_.empty()) return bad("the document ends inside <" + std::string(stack_.back()) + ">");
+                if (!stack_.empty()) return bad("the document ends inside <" + printable(std::string(stack_.back().substr(0, 64))) + ">");
                 return xml_event::done;
             }
             if (data_[pos_] != '<') {
@@ -142,7 +143,7 @@ private:
         if (pos_ >= data_.size() || data_[pos_] != '>') return bad("malformed end tag", at);
         ++pos_;
         if (stack_.empty() || stack_.back() != n)
-            return bad("</" + std::string(n.substr(0, 64)) + "> does not close the open element", at);
+            return bad("</" + printable(std::string(n.substr(0, 64))) + "> does not close the open element", at);
         stack_.pop_back();
         name = local(n);
         return xml_event::end;
@@ -160,7 +161,7 @@ private:
             const char c = data_[pos_];
             if (c == '>' || c == '/') break;
             const std::string_view key = read_name();
-            if (key.empty()) return bad("malformed attribute in <" + std::string(n.substr(0, 64)) + ">", pos_);
+            if (key.empty()) return bad("malformed attribute in <" + printable(std::string(n.substr(0, 64))) + ">", pos_);
             skip_spaces();
             if (pos_ >= data_.size()) return bad("the document ends inside a tag", at);
             if (data_[pos_] != '=') return bad("attribute without '='", pos_);

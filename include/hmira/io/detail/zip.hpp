@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "../../core/result.hpp"
+#include "json.hpp"  // printable
 
 #if defined(HMIRA_HAS_ZLIB)
 #include <zlib.h>
@@ -67,6 +68,9 @@ inline std::uint32_t crc32_of(std::string_view bytes) {
     return c ^ 0xffffffffu;
 #endif
 }
+
+/// The most bytes `packed` bytes of deflate data can inflate to (1032 to 1, plus slack).
+inline std::uint64_t deflate_bound(std::uint64_t packed) { return packed * 1032 + 1024; }
 
 /// Inflates `in` (raw deflate when `raw`, else zlib-wrapped) into exactly `size` bytes: more or
 /// fewer is an error naming `where`. errc::unsupported without zlib.
@@ -221,7 +225,7 @@ inline result<std::vector<zip_entry>> zip_directory(std::string_view data, const
 /// is refused before anything is allocated.
 inline result<std::string> zip_read(std::string_view data, const zip_entry& entry, const std::string& name,
                                     std::uint64_t limit) {
-    const std::string where = name + ": entry '" + entry.name.substr(0, 200) + "'";
+    const std::string where = name + ": entry '" + printable(entry.name.substr(0, 200)) + "'";
     if (entry.flags & 1) return fail(errc::unsupported, where + " is encrypted");
     if (entry.size > limit)
         return fail(errc::parse_error, where + " declares " + std::to_string(entry.size) +
@@ -234,6 +238,10 @@ inline result<std::string> zip_read(std::string_view data, const zip_entry& entr
         return fail(errc::parse_error, where + ": " + std::to_string(entry.compressed) + " bytes from offset " +
                                            std::to_string(body) + " run past the end of the archive");
     const std::string_view packed = data.substr(static_cast<std::size_t>(body), static_cast<std::size_t>(entry.compressed));
+    // Deflate makes at most 1032 bytes of one (RFC 1951 block limits): a larger claim is a lie.
+    if (entry.method == 8 && entry.size > deflate_bound(entry.compressed))
+        return fail(errc::parse_error, where + " declares " + std::to_string(entry.size) + " bytes from " +
+                                           std::to_string(entry.compressed) + " deflated ones, more than deflate makes");
     std::string out;
     if (entry.method == 0) {
         if (entry.compressed != entry.size)
@@ -260,7 +268,9 @@ inline std::string zip_archive(const std::vector<std::pair<std::string, std::str
         const auto x = static_cast<std::uint32_t>(v);
         u16(s, x & 0xffff), u16(s, x >> 16);
     };
-    for (const auto& [file, bytes] : files) {
+    for (const auto& entry : files) {
+        const std::string& file = entry.first;
+        const std::string_view bytes = entry.second;
         const std::uint32_t crc = crc32_of(bytes);
         std::string packed = deflate ? deflate_bytes(bytes, true, 1) : std::string();
         const bool deflated = !packed.empty();
