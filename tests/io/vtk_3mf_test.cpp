@@ -102,9 +102,9 @@ TEST(vtk, legacy_strips_and_unstructured_grid_cells) {
     auto strips = io::parse_vtk(head + "POLYDATA\n" + pts + "TRIANGLE_STRIPS 1 5\n4 0 1 2 3\n", "s.vtk");
     ASSERT_TRUE(strips) << strips.error().message;
     EXPECT_EQ(strips->indices, (std::vector<std::uint32_t>{0, 1, 2, 2, 1, 3}));
-    auto grid = io::parse_vtk(head + "UNSTRUCTURED_GRID\n" + pts +
-                                  "CELLS 3 11\n3 0 1 2\n2 0 3\n3 1 3 2\nCELL_TYPES 3\n5 3 5\nPOINT_DATA 4\n",
-                              "g.vtk");
+    auto grid = io::parse_vtk(
+        head + "UNSTRUCTURED_GRID\n" + pts + "CELLS 3 11\n3 0 1 2\n2 0 3\n3 1 3 2\nCELL_TYPES 3\n5 3 5\nPOINT_DATA 4\n",
+        "g.vtk");
     ASSERT_TRUE(grid) << grid.error().message;
     EXPECT_EQ(grid->face_count(), 2u);  // the line cell (type 3) is skipped
     EXPECT_EQ(grid->indices, (std::vector<std::uint32_t>{0, 1, 2, 1, 3, 2}));
@@ -122,9 +122,8 @@ TEST(vtk, xml_ascii_big_endian_and_compressed_arrays) {
         "NumberOfComponents=\"3\" format=\"ascii\">0 0 0 1 0 0 0 1 0</DataArray></Points><Polys>"
         "<DataArray type=\"Int32\" Name=\"connectivity\" format=\"ascii\">0 1 2</DataArray>"
         "<DataArray type=\"Int32\" Name=\"offsets\" format=\"ascii\">3</DataArray></Polys></Piece>";
-    auto ascii = io::parse_vtk("<?xml version=\"1.0\"?><VTKFile type=\"PolyData\"><PolyData>" + piece +
-                                   "</PolyData></VTKFile>",
-                               "a.vtp");
+    auto ascii = io::parse_vtk(
+        "<?xml version=\"1.0\"?><VTKFile type=\"PolyData\"><PolyData>" + piece + "</PolyData></VTKFile>", "a.vtp");
     ASSERT_TRUE(ascii) << ascii.error().message;
     EXPECT_EQ(ascii->points[1], (std::array<double, 3>{1, 0, 0}));
     // Big-endian, UInt32 header, inline base64: "AAAADA==" is the header 12, then Int32 0 1 2.
@@ -174,7 +173,8 @@ TEST(vtk, hostile_inputs_give_bounded_errors_naming_what_and_where) {
         std::string bytes, expect;
     };
     const std::string head = "# vtk DataFile Version 3.0\nx\nBINARY\nDATASET POLYDATA\n";
-    std::string nan_points = "# vtk DataFile Version 3.0\nx\nASCII\nDATASET POLYDATA\nPOINTS 3 float\n0 0 0 nan 0 0 0 1 0\n";
+    std::string nan_points =
+        "# vtk DataFile Version 3.0\nx\nASCII\nDATASET POLYDATA\nPOINTS 3 float\n0 0 0 nan 0 0 0 1 0\n";
     std::string offset = vtp;
     offset.replace(offset.find("offset=\"0\""), 10, "offset=\"999999\"");
     std::string xml_count = vtp;
@@ -256,9 +256,11 @@ TEST(threemf, hostile_packages_give_bounded_errors_naming_what_and_where) {
     ASSERT_TRUE(generate_cube(cube));
     const auto good = *io::format_3mf(cube);
     const std::string head = "<model><resources>";
-    std::string bad_crc = package(head + unit_triangle_object + "</resources><build><item objectid=\"1\"/></build></model>");
+    std::string bad_crc =
+        package(head + unit_triangle_object + "</resources><build><item objectid=\"1\"/></build></model>");
     bad_crc[bad_crc.find("<vertex") + 3] ^= 1;  // a stored entry's byte, so only the CRC notices
-    std::string huge = package(head + unit_triangle_object + "</resources><build><item objectid=\"1\"/></build></model>");
+    std::string huge =
+        package(head + unit_triangle_object + "</resources><build><item objectid=\"1\"/></build></model>");
     {  // the model's declared size (central directory) made 3 GB
         const auto dir = huge.rfind(std::string("PK\1\2", 4));
         huge[dir + 24] = '\0', huge[dir + 25] = '\0', huge[dir + 26] = '\0', huge[dir + 27] = '\xb0';

@@ -40,7 +40,8 @@ namespace hmira::io {
 /// sizes past the file, CRC mismatch), a zip bomb, malformed XML, a triangle naming a vertex
 /// out of range, a non-finite coordinate or transform, a missing object, a component cycle;
 /// errc::unsupported: encryption, compression other than deflate, deflate without zlib.
-inline result<polygon_soup> parse_3mf(std::string_view data, const std::string& name, const read_options& options = {}) {
+inline result<polygon_soup> parse_3mf(std::string_view data, const std::string& name,
+                                      const read_options& options = {}) {
     auto entries = detail::zip_directory(data, name);
     if (!entries) return entries.error();
     auto part = detail::threemf_model_name(data, *entries, name, options.max_input_bytes);
@@ -48,7 +49,8 @@ inline result<polygon_soup> parse_3mf(std::string_view data, const std::string& 
     const detail::zip_entry* model_entry = nullptr;
     for (const auto& e : *entries)
         if (e.name == *part) model_entry = &e;
-    if (!model_entry) return fail(errc::parse_error, name + ": no model part '" + detail::printable(*part) + "' in the package");
+    if (!model_entry)
+        return fail(errc::parse_error, name + ": no model part '" + detail::printable(*part) + "' in the package");
     auto text = detail::zip_read(data, *model_entry, name, options.max_input_bytes);
     if (!text) return text.error();
     auto model = detail::threemf_parse_model(*text, name + " (" + detail::printable(*part) + ")");
@@ -57,7 +59,8 @@ inline result<polygon_soup> parse_3mf(std::string_view data, const std::string& 
     std::vector<std::uint64_t> path;
     const std::uint64_t max_points = std::min<std::uint64_t>(options.max_input_bytes / 24, 0xffffffffu);
     for (const auto& item : model->items)
-        if (auto ok = detail::threemf_instantiate(*model, item.object, item.transform, soup, path, max_points, name); !ok)
+        if (auto ok = detail::threemf_instantiate(*model, item.object, item.transform, soup, path, max_points, name);
+            !ok)
             return ok.error();
     return soup;
 }

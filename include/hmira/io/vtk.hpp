@@ -35,10 +35,10 @@ namespace hmira::io {
 
 /// The VTK encodings the writer chooses between.
 enum class vtk_encoding {
-    xml_appended,  ///< .vtp, arrays raw after <AppendedData> (UInt64 headers, little-endian)
-    xml_base64,    ///< .vtp, arrays inline as base64
-    legacy_binary, ///< .vtk version 3.0, BINARY (big-endian)
-    legacy_ascii,  ///< .vtk version 3.0, ASCII
+    xml_appended,   ///< .vtp, arrays raw after <AppendedData> (UInt64 headers, little-endian)
+    xml_base64,     ///< .vtp, arrays inline as base64
+    legacy_binary,  ///< .vtk version 3.0, BINARY (big-endian)
+    legacy_ascii,   ///< .vtk version 3.0, ASCII
 };
 
 /// Parses .vtp XML or legacy .vtk (told apart by their first bytes) into a soup: each piece's
@@ -51,7 +51,8 @@ enum class vtk_encoding {
 /// declared count or size larger than the bytes left, an offset out of range, a cell naming a
 /// point out of range or of fewer than 3 points, a non-finite point; errc::unsupported: other
 /// dataset types, compressors other than zlib (or zlib data in a build without it), 2^32 points.
-inline result<polygon_soup> parse_vtk(std::string_view data, const std::string& name, const read_options& options = {}) {
+inline result<polygon_soup> parse_vtk(std::string_view data, const std::string& name,
+                                      const read_options& options = {}) {
     std::size_t at = 0;
     while (at < data.size() && detail::xml_reader::is_space(data[at])) ++at;
     if (data.substr(at).starts_with("<")) return detail::parse_vtp(data, name, options.max_input_bytes);
@@ -179,8 +180,9 @@ std::string vtp_packed(const std::vector<V>& values, bool narrow) {
 inline std::string vtp_document(const vtk_arrays& a, bool as_float, bool base64) {
     const bool narrow = a.corners.size() < 0x7fffffffu && a.xyz.size() / 3 < 0x7fffffffu;
     const char* int_type = narrow ? "type=\"Int32\"" : "type=\"Int64\"";
-    std::string xml = "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"1.0\" "
-                      "byte_order=\"LittleEndian\" header_type=\"UInt64\">\n  <PolyData>\n";
+    std::string xml =
+        "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"1.0\" "
+        "byte_order=\"LittleEndian\" header_type=\"UInt64\">\n  <PolyData>\n";
     xml += "    <Piece NumberOfPoints=\"" + std::to_string(a.xyz.size() / 3) +
            "\" NumberOfVerts=\"0\" NumberOfLines=\"0\" NumberOfStrips=\"0\" NumberOfPolys=\"" +
            std::to_string(a.ends.size()) + "\">\n      <Points>\n";
@@ -212,8 +214,10 @@ inline result<std::string> vtk_legacy_document(const vtk_arrays& a, bool as_floa
     out += binary ? "BINARY\n" : "ASCII\n";
     out += "DATASET POLYDATA\nPOINTS " + std::to_string(a.xyz.size() / 3) + (as_float ? " float\n" : " double\n");
     for (std::size_t i = 0; i < a.xyz.size(); ++i) {
-        if (binary && as_float) append_big_endian(out, static_cast<float>(a.xyz[i]));
-        else if (binary) append_big_endian(out, a.xyz[i]);
+        if (binary && as_float)
+            append_big_endian(out, static_cast<float>(a.xyz[i]));
+        else if (binary)
+            append_big_endian(out, a.xyz[i]);
         else {
             as_float ? append_number(out, static_cast<float>(a.xyz[i])) : append_number(out, a.xyz[i]);
             out += i % 3 == 2 ? '\n' : ' ';
@@ -223,8 +227,10 @@ inline result<std::string> vtk_legacy_document(const vtk_arrays& a, bool as_floa
     std::uint64_t begin = 0;
     for (const auto end : a.ends) {
         auto put = [&](std::uint64_t v, char sep) {
-            if (binary) append_big_endian(out, static_cast<std::int32_t>(v));
-            else append_number(out, v), out += sep;
+            if (binary)
+                append_big_endian(out, static_cast<std::int32_t>(v));
+            else
+                append_number(out, v), out += sep;
         };
         put(end - begin, ' ');
         for (auto k = begin; k < end; ++k) put(a.corners[k], k + 1 == end ? '\n' : ' ');

@@ -146,7 +146,8 @@ inline result<threemf_model> threemf_parse_model(std::string_view text, const st
                 if (k < 0) continue;
                 if (!threemf_number(a.value, p[static_cast<std::size_t>(k)]))
                     return x.bad("object " + std::to_string(object_id) + ": vertex " +
-                                 std::to_string(object->vertices.size()) + " has a coordinate that is not a finite number");
+                                 std::to_string(object->vertices.size()) +
+                                 " has a coordinate that is not a finite number");
                 seen |= 1 << k;
             }
             if (seen != 7)
@@ -210,8 +211,8 @@ inline result<void> threemf_instantiate(const threemf_model& model, std::uint64_
                                         const std::string& name) {
     const auto it = model.by_id.find(id);
     if (it == model.by_id.end())
-        return fail(errc::parse_error, name + ": a build item or component names object " + std::to_string(id) +
-                                           ", which does not exist");
+        return fail(errc::parse_error,
+                    name + ": a build item or component names object " + std::to_string(id) + ", which does not exist");
     for (auto p : path)
         if (p == id) return fail(errc::parse_error, name + ": object " + std::to_string(id) + " contains itself");
     if (path.size() >= 32) return fail(errc::parse_error, name + ": components nested deeper than 32");
@@ -224,10 +225,12 @@ inline result<void> threemf_instantiate(const threemf_model& model, std::uint64_
     for (const auto& p : o.vertices) {
         std::array<double, 3> q;
         for (int c = 0; c < 3; ++c)
-            q[static_cast<std::size_t>(c)] = p[0] * m[static_cast<std::size_t>(c)] + p[1] * m[3 + static_cast<std::size_t>(c)] +
-                                             p[2] * m[6 + static_cast<std::size_t>(c)] + m[9 + static_cast<std::size_t>(c)];
+            q[static_cast<std::size_t>(c)] =
+                p[0] * m[static_cast<std::size_t>(c)] + p[1] * m[3 + static_cast<std::size_t>(c)] +
+                p[2] * m[6 + static_cast<std::size_t>(c)] + m[9 + static_cast<std::size_t>(c)];
         if (!std::isfinite(q[0]) || !std::isfinite(q[1]) || !std::isfinite(q[2]))
-            return fail(errc::parse_error, name + ": object " + std::to_string(id) + " transformed overflows to infinity");
+            return fail(errc::parse_error,
+                        name + ": object " + std::to_string(id) + " transformed overflows to infinity");
         soup.points.push_back(q);
     }
     soup.indices.reserve(soup.indices.size() + 3 * o.triangles.size());
@@ -296,7 +299,9 @@ std::string threemf_model_text(const M& mesh, const stl_triangles<M, T>& plan) {
             }
         }
     }
-    out += "    </triangles>\n   </mesh>\n  </object>\n </resources>\n <build>\n  <item objectid=\"1\"/>\n </build>\n</model>\n";
+    out +=
+        "    </triangles>\n   </mesh>\n  </object>\n </resources>\n <build>\n  <item objectid=\"1\"/>\n "
+        "</build>\n</model>\n";
     return out;
 }
 

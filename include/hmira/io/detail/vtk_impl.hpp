@@ -36,7 +36,8 @@ inline result<void> add_vtk_cells(polygon_soup& soup, const vtk_cells& cells, bo
     for (std::size_t c = 0; c < cells.count(); ++c) {
         const std::uint64_t b = cells.offsets[c], e = cells.offsets[c + 1];
         if (b > e || e > cells.connectivity.size())
-            return fail(errc::parse_error, where + ": cell " + std::to_string(c) + " has offsets out of order or range");
+            return fail(errc::parse_error,
+                        where + ": cell " + std::to_string(c) + " has offsets out of order or range");
         if (e - b < 3)
             return fail(errc::parse_error, where + ": cell " + std::to_string(c) + " has " + std::to_string(e - b) +
                                                " points (a polygon or strip needs 3 or more)");
@@ -110,7 +111,9 @@ public:
     template <class T>
     result<void> values(bool binary, std::string_view type, std::uint64_t n, std::vector<T>& out, const char* what) {
         const std::size_t size = type_size(type);
-        if (size == 0) return bad(std::string(what) + ": data type '" + printable(std::string(type.substr(0, 32))) + "' is not read");
+        if (size == 0)
+            return bad(std::string(what) + ": data type '" + printable(std::string(type.substr(0, 32))) +
+                       "' is not read");
         // Every value takes `size` bytes, or 2 characters (digit and separator) in ASCII.
         if (n > (binary ? left() / size : (left() + 1) / 2))
             return bad(std::string(what) + ": " + std::to_string(n) + " values declared, more than the " +
@@ -121,7 +124,8 @@ public:
                 const auto t = token();
                 double d = 0;
                 if (!parse_double(t, d))
-                    return bad(std::string(what) + ": '" + printable(std::string(t.substr(0, 32))) + "' is not a number");
+                    return bad(std::string(what) + ": '" + printable(std::string(t.substr(0, 32))) +
+                               "' is not a number");
                 if constexpr (std::is_integral_v<T>) {
                     if (!(d >= 0 && d < 1.8e19) || d != std::floor(d))
                         return bad(std::string(what) + ": " + number_text(d) + " is not a non-negative integer");
@@ -132,7 +136,8 @@ public:
         }
         end_line();
         if (n > left() / size) return bad(std::string(what) + ": binary data runs past the end of the file");
-        const bool is_float = type == "float" || type == "double" || type == "vtktypefloat32" || type == "vtktypefloat64";
+        const bool is_float =
+            type == "float" || type == "double" || type == "vtktypefloat32" || type == "vtktypefloat64";
         const bool is_signed = !is_float && !type.starts_with("unsigned") && !type.starts_with("vtktypeuint");
         const char* p = data_.data() + pos_;
         for (std::size_t i = 0; i < out.size(); ++i, p += size) {
@@ -219,8 +224,8 @@ inline result<vtk_cells> read_legacy_cells(vtk_legacy_cursor& c, bool binary, bo
     std::size_t at = 0;
     for (std::uint64_t i = 0; i < *n; ++i) {
         if (at >= flat.size() || flat[at] > flat.size() - at - 1)
-            return c.bad(std::string(what) + ": cell " + std::to_string(i) + " runs past the " +
-                         std::to_string(*size) + " values declared");
+            return c.bad(std::string(what) + ": cell " + std::to_string(i) + " runs past the " + std::to_string(*size) +
+                         " values declared");
         const auto k = static_cast<std::size_t>(flat[at]);
         cells.connectivity.insert(cells.connectivity.end(), flat.begin() + static_cast<std::ptrdiff_t>(at + 1),
                                   flat.begin() + static_cast<std::ptrdiff_t>(at + 1 + k));
@@ -241,8 +246,7 @@ inline result<polygon_soup> parse_vtk_legacy(std::string_view data, const std::s
     {
         const auto v = first.substr(22);
         const auto digits = v.find_first_not_of(' ');
-        if (digits != std::string_view::npos)
-            std::from_chars(v.data() + digits, v.data() + v.size(), major);
+        if (digits != std::string_view::npos) std::from_chars(v.data() + digits, v.data() + v.size(), major);
     }
     (void)c.raw_line();  // title
     const auto encoding = c.token();
@@ -309,10 +313,10 @@ inline result<polygon_soup> parse_vtk_legacy(std::string_view data, const std::s
             const auto t = grid_types[i];
             if (t != 5 && t != 6 && t != 7 && t != 9) continue;  // triangle, strip, polygon, quad
             auto& into = t == 6 ? strips : polygons;
-            into.connectivity.insert(into.connectivity.end(),
-                                     grid_cells.connectivity.begin() + static_cast<std::ptrdiff_t>(grid_cells.offsets[i]),
-                                     grid_cells.connectivity.begin() +
-                                         static_cast<std::ptrdiff_t>(grid_cells.offsets[i + 1]));
+            into.connectivity.insert(
+                into.connectivity.end(),
+                grid_cells.connectivity.begin() + static_cast<std::ptrdiff_t>(grid_cells.offsets[i]),
+                grid_cells.connectivity.begin() + static_cast<std::ptrdiff_t>(grid_cells.offsets[i + 1]));
             into.offsets.push_back(into.connectivity.size());
         }
         if (auto ok = add_vtk_cells(soup, polygons, false, name + ": CELLS"); !ok) return ok.error();

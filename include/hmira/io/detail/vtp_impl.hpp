@@ -62,7 +62,9 @@ class vtp_source {
 public:
     vtp_source(std::string_view data, bool base64) : data_(data), base64_(base64) {}
     /// An upper bound on the bytes still available.
-    std::uint64_t bound() const { return base64_ ? (data_.size() - pos_) / 4 * 3 + buffered_.size() : data_.size() - pos_; }
+    std::uint64_t bound() const {
+        return base64_ ? (data_.size() - pos_) / 4 * 3 + buffered_.size() : data_.size() - pos_;
+    }
     bool read(std::size_t n, std::string& out) {
         if (!base64_) {
             if (n > data_.size() - pos_) return false;
@@ -88,8 +90,8 @@ public:
                     return false;
                 }
             }
-            const std::uint32_t x = std::uint32_t(v[0]) << 18 | std::uint32_t(v[1]) << 12 | std::uint32_t(v[2]) << 6 |
-                                    std::uint32_t(v[3]);
+            const std::uint32_t x =
+                std::uint32_t(v[0]) << 18 | std::uint32_t(v[1]) << 12 | std::uint32_t(v[2]) << 6 | std::uint32_t(v[3]);
             buffered_ += static_cast<char>(x >> 16);
             if (pad < 2) buffered_ += static_cast<char>((x >> 8) & 0xff);
             if (pad < 1) buffered_ += static_cast<char>(x & 0xff);
@@ -117,7 +119,8 @@ private:
 /// Reverses each `size`-byte element in place (big-endian files).
 inline void swap_elements(std::string& bytes, std::size_t size) {
     if (size < 2) return;
-    for (std::size_t i = 0; i + size <= bytes.size(); i += size) std::reverse(bytes.begin() + i, bytes.begin() + i + size);
+    for (std::size_t i = 0; i + size <= bytes.size(); i += size)
+        std::reverse(bytes.begin() + i, bytes.begin() + i + size);
 }
 
 /// The array's element bytes in native (little-endian) order, however the file stores them.
@@ -150,7 +153,8 @@ inline result<std::string> vtp_bytes(const vtp_file& f, const vtp_array& a, cons
         std::vector<std::uint64_t> packed;
         if (!header(static_cast<std::size_t>(std::min<std::uint64_t>(blocks, src.bound())), packed) ||
             packed.size() != blocks)
-            return f.bad(where + ": " + std::to_string(blocks) + " compressed blocks declared, more than the file holds");
+            return f.bad(where + ": " + std::to_string(blocks) +
+                         " compressed blocks declared, more than the file holds");
         const std::uint64_t total = blocks ? (blocks - 1) * block + last : 0;
         if (block > f.limit || (blocks && (blocks - 1) > f.limit / std::max<std::uint64_t>(block, 1)) ||
             total > f.limit)
@@ -164,8 +168,8 @@ inline result<std::string> vtp_bytes(const vtp_file& f, const vtp_array& a, cons
             if (plain_size > deflate_bound(packed[b]))
                 return f.bad(where + ": compressed block " + std::to_string(b) + " declares " +
                              std::to_string(plain_size) + " bytes, more than its data can inflate to");
-            auto plain = inflate_exactly(chunk, plain_size, false,
-                                         f.name + ": " + where + " block " + std::to_string(b));
+            auto plain =
+                inflate_exactly(chunk, plain_size, false, f.name + ": " + where + " block " + std::to_string(b));
             if (!plain) return plain.error();
             out += *plain;
         }
@@ -180,9 +184,11 @@ template <class T>
 result<void> vtp_values(const vtp_file& f, const vtp_array& a, std::uint64_t n, std::vector<T>& out,
                         const std::string& where) {
     const std::size_t size = vtp_type_size(a.type);
-    if (size == 0) return fail(errc::unsupported, f.name + ": " + where + " has type '" + printable(a.type.substr(0, 32)) + "'");
+    if (size == 0)
+        return fail(errc::unsupported, f.name + ": " + where + " has type '" + printable(a.type.substr(0, 32)) + "'");
     if (a.format == "ascii") {
-        if (n > (a.text.size() + 1) / 2) return f.bad(where + ": " + std::to_string(n) + " values declared, more than the text holds");
+        if (n > (a.text.size() + 1) / 2)
+            return f.bad(where + ": " + std::to_string(n) + " values declared, more than the text holds");
         out.resize(static_cast<std::size_t>(n));
         std::size_t pos = 0, i = 0;
         for (; i < out.size(); ++i) {
@@ -256,8 +262,10 @@ inline result<vtk_cells> vtp_cells(const vtp_file& f, const vtp_array& connectiv
     if (auto ok = vtp_values(f, offsets, n, ends, where + " offsets"); !ok) return ok.error();
     const std::uint64_t total = ends.back();
     for (std::size_t i = 0; i < ends.size(); ++i)
-        if (ends[i] < (i ? ends[i - 1] : 0)) return f.bad(where + " offsets: cell " + std::to_string(i) + " ends before it starts");
-    if (auto ok = vtp_values(f, connectivity, total, cells.connectivity, where + " connectivity"); !ok) return ok.error();
+        if (ends[i] < (i ? ends[i - 1] : 0))
+            return f.bad(where + " offsets: cell " + std::to_string(i) + " ends before it starts");
+    if (auto ok = vtp_values(f, connectivity, total, cells.connectivity, where + " connectivity"); !ok)
+        return ok.error();
     cells.offsets.reserve(ends.size() + 1);
     cells.offsets.insert(cells.offsets.end(), ends.begin(), ends.end());
     return cells;
@@ -301,8 +309,8 @@ inline result<polygon_soup> parse_vtp(std::string_view data, const std::string& 
             }
             if (const auto* c = x.find("compressor"); c && !c->empty()) {
                 if (*c != "vtkZLibDataCompressor")
-                    return fail(errc::unsupported,
-                                name + ": compressor " + printable(std::string(c->substr(0, 40))) + " (only zlib is read)");
+                    return fail(errc::unsupported, name + ": compressor " + printable(std::string(c->substr(0, 40))) +
+                                                       " (only zlib is read)");
                 f.compressed = true;
             }
         } else if (tag == "Piece") {
@@ -356,7 +364,8 @@ inline result<polygon_soup> parse_vtp(std::string_view data, const std::string& 
         const auto& p = pieces[k];
         const std::string where = "Piece " + std::to_string(k);
         const std::size_t base = soup.points.size();
-        if (p.points > std::uint64_t{0xffffffffu} - base) return fail(errc::unsupported, name + ": 2^32 or more points");
+        if (p.points > std::uint64_t{0xffffffffu} - base)
+            return fail(errc::unsupported, name + ": 2^32 or more points");
         if (p.points) {
             if (!p.positions.present) return f.bad(where + " has no Points array");
             if (p.positions.components != 3) return f.bad(where + " Points do not have 3 components");

@@ -35,10 +35,10 @@ public:
     xml_reader(std::string_view data, std::string name, std::size_t max_depth = 256)
         : data_(data), name_(std::move(name)), max_depth_(max_depth) {}
 
-    std::string_view name;                   ///< tag name, namespace prefix removed
-    std::string_view text;                   ///< raw text of a text event
-    std::vector<xml_attribute> attributes;   ///< of the last start tag
-    bool self_closing = false;               ///< the last start tag ended with "/>"
+    std::string_view name;                  ///< tag name, namespace prefix removed
+    std::string_view text;                  ///< raw text of a text event
+    std::vector<xml_attribute> attributes;  ///< of the last start tag
+    bool self_closing = false;              ///< the last start tag ended with "/>"
     std::size_t depth() const { return stack_.size(); }
     std::size_t offset() const { return pos_; }  ///< byte offset just past the last event
 
@@ -64,7 +64,9 @@ public:
         }
         for (;;) {
             if (pos_ >= data_.size()) {
-                if (!stack_.empty()) return bad("the document ends inside <" + printable(std::string(stack_.back().substr(0, 64))) + ">");
+                if (!stack_.empty())
+                    return bad("the document ends inside <" + printable(std::string(stack_.back().substr(0, 64))) +
+                               ">");
                 return xml_event::done;
             }
             if (data_[pos_] != '<') {
@@ -161,7 +163,8 @@ private:
             const char c = data_[pos_];
             if (c == '>' || c == '/') break;
             const std::string_view key = read_name();
-            if (key.empty()) return bad("malformed attribute in <" + printable(std::string(n.substr(0, 64))) + ">", pos_);
+            if (key.empty())
+                return bad("malformed attribute in <" + printable(std::string(n.substr(0, 64))) + ">", pos_);
             skip_spaces();
             if (pos_ >= data_.size()) return bad("the document ends inside a tag", at);
             if (data_[pos_] != '=') return bad("attribute without '='", pos_);
@@ -214,16 +217,21 @@ inline std::string xml_decode(std::string_view s) {
         }
         const std::string_view e = s.substr(i + 1, semi - i - 1);
         char c = 0;
-        if (e == "lt") c = '<';
-        else if (e == "gt") c = '>';
-        else if (e == "amp") c = '&';
-        else if (e == "quot") c = '"';
-        else if (e == "apos") c = '\'';
+        if (e == "lt")
+            c = '<';
+        else if (e == "gt")
+            c = '>';
+        else if (e == "amp")
+            c = '&';
+        else if (e == "quot")
+            c = '"';
+        else if (e == "apos")
+            c = '\'';
         else if (e.size() > 1 && e[0] == '#') {
             unsigned v = 0;
             const bool hex = e[1] == 'x';
             for (char d : e.substr(hex ? 2 : 1)) {
-                const int digit = d >= '0' && d <= '9' ? d - '0'
+                const int digit = d >= '0' && d <= '9'          ? d - '0'
                                   : hex && d >= 'a' && d <= 'f' ? d - 'a' + 10
                                   : hex && d >= 'A' && d <= 'F' ? d - 'A' + 10
                                                                 : -1;

@@ -74,7 +74,8 @@ inline std::uint64_t deflate_bound(std::uint64_t packed) { return packed * 1032 
 
 /// Inflates `in` (raw deflate when `raw`, else zlib-wrapped) into exactly `size` bytes: more or
 /// fewer is an error naming `where`. errc::unsupported without zlib.
-inline result<std::string> inflate_exactly(std::string_view in, std::uint64_t size, bool raw, const std::string& where) {
+inline result<std::string> inflate_exactly(std::string_view in, std::uint64_t size, bool raw,
+                                           const std::string& where) {
 #if defined(HMIRA_HAS_ZLIB)
     std::string out(static_cast<std::size_t>(size), '\0');
     z_stream z{};
@@ -99,8 +100,8 @@ inline result<std::string> inflate_exactly(std::string_view in, std::uint64_t si
         const std::size_t produced = before - z.avail_out;
         if (n == 0 && produced) {
             inflateEnd(&z);
-            return fail(errc::parse_error, where + ": inflates to more than the " + std::to_string(size) +
-                                               " bytes it declares (refused)");
+            return fail(errc::parse_error,
+                        where + ": inflates to more than the " + std::to_string(size) + " bytes it declares (refused)");
         }
         out_at += produced;
         if (rc == Z_BUF_ERROR && z.avail_in == 0 && in_at == in.size()) break;
@@ -109,8 +110,8 @@ inline result<std::string> inflate_exactly(std::string_view in, std::uint64_t si
     const std::string msg = z.msg ? z.msg : "";
     inflateEnd(&z);
     if (rc != Z_STREAM_END)
-        return fail(errc::parse_error,
-                    where + ": corrupt or truncated compressed data" + (msg.empty() ? std::string() : " (" + msg + ")"));
+        return fail(errc::parse_error, where + ": corrupt or truncated compressed data" +
+                                           (msg.empty() ? std::string() : " (" + msg + ")"));
     if (out_at != size)
         return fail(errc::parse_error, where + ": inflates to " + std::to_string(out_at) + " bytes, not the " +
                                            std::to_string(size) + " it declares");
@@ -237,15 +238,16 @@ inline result<std::string> zip_read(std::string_view data, const zip_entry& entr
     if (body > data.size() || entry.compressed > data.size() - body)
         return fail(errc::parse_error, where + ": " + std::to_string(entry.compressed) + " bytes from offset " +
                                            std::to_string(body) + " run past the end of the archive");
-    const std::string_view packed = data.substr(static_cast<std::size_t>(body), static_cast<std::size_t>(entry.compressed));
+    const std::string_view packed =
+        data.substr(static_cast<std::size_t>(body), static_cast<std::size_t>(entry.compressed));
     // Deflate makes at most 1032 bytes of one (RFC 1951 block limits): a larger claim is a lie.
     if (entry.method == 8 && entry.size > deflate_bound(entry.compressed))
         return fail(errc::parse_error, where + " declares " + std::to_string(entry.size) + " bytes from " +
-                                           std::to_string(entry.compressed) + " deflated ones, more than deflate makes");
+                                           std::to_string(entry.compressed) +
+                                           " deflated ones, more than deflate makes");
     std::string out;
     if (entry.method == 0) {
-        if (entry.compressed != entry.size)
-            return fail(errc::parse_error, where + ": stored entry whose sizes differ");
+        if (entry.compressed != entry.size) return fail(errc::parse_error, where + ": stored entry whose sizes differ");
         out.assign(packed);
     } else if (entry.method == 8) {
         auto inflated = inflate_exactly(packed, entry.size, true, where);
@@ -261,7 +263,8 @@ inline result<std::string> zip_read(std::string_view data, const zip_entry& entr
 
 /// A ZIP of the given (name, bytes) entries, deflated when `deflate` and zlib is available, else
 /// stored. At most 4 GiB in all (no ZIP64 records are written).
-inline std::string zip_archive(const std::vector<std::pair<std::string, std::string_view>>& files, bool deflate = true) {
+inline std::string zip_archive(const std::vector<std::pair<std::string, std::string_view>>& files,
+                               bool deflate = true) {
     std::string out, directory;
     auto u16 = [](std::string& s, std::uint32_t v) { s += char(v & 0xff), s += char((v >> 8) & 0xff); };
     auto u32 = [&](std::string& s, std::uint64_t v) {
