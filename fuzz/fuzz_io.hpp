@@ -64,6 +64,9 @@ mesh_outcome build_and_round_trip(const hmira::io::polygon_soup& soup, hmira::io
         case io::file_format::stl: again = io::format_stl(mesh); break;
         case io::file_format::glb:
         case io::file_format::gltf: again = io::format_gltf(mesh); break;
+        case io::file_format::vtp: again = io::format_vtk(mesh, io::vtk_encoding::xml_base64); break;
+        case io::file_format::vtk: again = io::format_vtk(mesh, io::vtk_encoding::legacy_binary); break;
+        case io::file_format::threemf: again = io::format_3mf(mesh); break;
     }
     // What a reader accepted (finite coordinates, one loop per face) the writer must write.
     if (!again) return {true, kind + ": the writer refused what the reader read: " + again.error().message};

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
-# Builds the parser fuzz targets (OBJ, OFF, PLY, STL, glTF, INR plain and gzip, binvox, .xyz/.csv
+# Builds the parser fuzz targets (OBJ, OFF, PLY, STL, glTF, VTK, 3MF, INR plain and gzip, binvox, .xyz/.csv
 # points) with clang 14's libFuzzer (+ ASan/UBSan) and runs each for a bounded time with its
 # dictionary on a copy of its committed corpus, so CI stays deterministic in what it keeps.
-# 9 targets x 18 s (scripts/test.sh) keeps the CI run near 3 minutes; fuzz/run-long.sh runs
+# 11 targets x 18 s (scripts/test.sh) keeps the CI run near 3.5 minutes; fuzz/run-long.sh runs
 # them for long.
 # First checks that every public header under include/hmira/io and include/hmira/meshes
 # compiles on its own with clang 14 (-Wall -Wextra -Werror).
@@ -51,14 +51,14 @@ echo "fuzz: header check: $((headers - failed)) of $headers headers compile with
 # Every target: the mesh parsers (fuzz_io.hpp) and the volume and point readers
 # (fuzz_volume.hpp), each with its keyword dictionary (dict/<target>.dict) and a copy of its
 # committed corpus (corpus/<target>/), which holds the reproducers of known hostile inputs.
-targets="obj off ply stl gltf inr inr_gz binvox points"
+targets="obj off ply stl gltf inr inr_gz binvox points vtk 3mf"
 build_target() {  # build_target NAME: (re)builds $out/fuzz_NAME when a source is newer
   local bin="$out/fuzz_$1"
   if [ ! -x "$bin" ] || [ "$here/fuzz_$1.cpp" -nt "$bin" ] || \
      [ -n "$(find "$root/include/hmira" "$here/fuzz_io.hpp" "$here/fuzz_volume.hpp" -newer "$bin" -print -quit)" ]; then
     echo "fuzz: building $bin"
     "$cxx" -std=c++20 -O1 -g -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined \
-      -I"$root/include" "$here/fuzz_$1.cpp" -o "$bin" -lz
+      -DHMIRA_HAS_ZLIB=1 -I"$root/include" "$here/fuzz_$1.cpp" -o "$bin" -lz
   fi
 }
 # Build all targets first, $jobs at a time (each is one clang process).

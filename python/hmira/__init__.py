@@ -651,7 +651,8 @@ def as_mesh(mesh: Any) -> Mesh:
 
 
 def read_mesh(path: Any, *, weld_stl: bool = True, repair: bool = True) -> Mesh:
-    """Read an OBJ, OFF, PLY, STL or glTF (.glb, .gltf) file (chosen by extension) into a :class:`Mesh`.
+    """Read an OBJ, OFF, PLY, STL, glTF (.glb, .gltf), VTK (.vtp, .vtk) or 3MF file (chosen by extension)
+    into a :class:`Mesh`.
 
     A file a half-edge mesh cannot hold as it is (non-manifold edges or vertices, faces wound
     against each other, degenerate faces) is repaired, as the CLI's editing commands do, and
@@ -760,8 +761,8 @@ def read_volume(path: Any, *, dims: Optional[Sequence[int]] = None, dtype: Optio
 def write_mesh(path: Any, mesh: Any, *, ascii: bool = False, big_endian: bool = False, float32: bool = False,
                attributes: bool = True) -> None:
     """Write a :class:`Mesh`, a ``(vertices, faces)`` pair or any object with ``.vertices`` and
-    ``.faces`` to an OBJ, OFF, PLY, STL or glTF (.glb, .gltf) file, atomically (a failure never leaves a partial
-    file). Options as ``hmira convert``: ``ascii`` (PLY/STL text), ``big_endian`` (PLY),
+    ``.faces`` to an OBJ, OFF, PLY, STL, glTF (.glb, .gltf), VTK (.vtp, .vtk) or 3MF file, atomically
+    (a failure never leaves a partial file). Options as ``hmira convert``: ``ascii`` (PLY/STL text), ``big_endian`` (PLY),
     ``float32`` (PLY coordinates), ``attributes`` (normals/colours read from a file).
 
     Examples

@@ -49,6 +49,8 @@ TEST(fuzz_corpus, every_off_input_is_handled) { replay("off", hmira::io::file_fo
 TEST(fuzz_corpus, every_ply_input_is_handled) { replay("ply", hmira::io::file_format::ply); }
 TEST(fuzz_corpus, every_stl_input_is_handled) { replay("stl", hmira::io::file_format::stl); }
 TEST(fuzz_corpus, every_gltf_input_is_handled) { replay("gltf", hmira::io::file_format::glb); }
+TEST(fuzz_corpus, every_vtk_input_is_handled) { replay("vtk", hmira::io::file_format::vtp); }
+TEST(fuzz_corpus, every_3mf_input_is_handled) { replay("3mf", hmira::io::file_format::threemf); }
 
 #if defined(HMIRA_FUZZ_VOLUMES)
 TEST(fuzz_corpus, every_inr_input_is_handled) {

@@ -1,6 +1,6 @@
 // hmira/io/mesh_io.hpp
-// One entry point for every format: read_mesh / write_mesh pick OBJ, OFF, PLY, STL or glTF
-// (.glb, .gltf) from the file's extension (case-insensitive), and read_soup gives a file's content as indexed arrays
+// One entry point for every format: read_mesh / write_mesh pick OBJ, OFF, PLY, STL, glTF
+// (.glb, .gltf), VTK (.vtp, .vtk) or 3MF from the file's extension (case-insensitive), and read_soup gives a file's content as indexed arrays
 // without building a mesh.
 #pragma once
 
@@ -20,6 +20,8 @@
 #include "off.hpp"
 #include "ply.hpp"
 #include "stl.hpp"
+#include "threemf.hpp"
+#include "vtk.hpp"
 
 namespace hmira::io {
 
@@ -31,6 +33,9 @@ enum class file_format {
     stl,   ///< STereoLithography
     glb,   ///< glTF 2.0, binary container
     gltf,  ///< glTF 2.0, JSON (buffers inline or beside the file)
+    vtp,   ///< VTK XML PolyData
+    vtk,   ///< legacy VTK
+    threemf,  ///< 3D Manufacturing Format (.3mf)
 };
 
 /// The format's usual extension without the dot.
@@ -42,6 +47,9 @@ inline const char* to_string(file_format f) {
         case file_format::stl: return "stl";
         case file_format::glb: return "glb";
         case file_format::gltf: return "gltf";
+        case file_format::vtp: return "vtp";
+        case file_format::vtk: return "vtk";
+        case file_format::threemf: return "3mf";
     }
     return "?";
 }
@@ -57,6 +65,9 @@ inline std::optional<file_format> format_from_extension(const std::filesystem::p
     if (ext == ".stl") return file_format::stl;
     if (ext == ".glb") return file_format::glb;
     if (ext == ".gltf") return file_format::gltf;
+    if (ext == ".vtp") return file_format::vtp;
+    if (ext == ".vtk") return file_format::vtk;
+    if (ext == ".3mf") return file_format::threemf;
     return std::nullopt;
 }
 
@@ -67,7 +78,7 @@ inline hmira::error unknown_extension(const std::filesystem::path& path) {
     if (std::filesystem::is_directory(path, ec))
         return fail(errc::io_error, path.string() + ": is a directory, not a mesh file");
     return fail(errc::unknown_format, path.string() + ": unknown mesh format '" + path.extension().string() +
-                                          "' (use .obj, .off, .ply, .stl, .glb or .gltf)");
+                                          "' (use .obj, .off, .ply, .stl, .glb, .gltf, .vtp, .vtk or .3mf)");
 }
 }  // namespace detail
 
@@ -85,6 +96,9 @@ inline result<polygon_soup> parse_any(std::string_view data, file_format format,
         }
         case file_format::glb:
         case file_format::gltf: return parse_gltf(data, name, options);
+        case file_format::vtp:
+        case file_format::vtk: return parse_vtk(data, name, options);
+        case file_format::threemf: return parse_3mf(data, name, options);
     }
     return fail(errc::unknown_format, name + ": unknown format");
 }
@@ -140,6 +154,9 @@ result<read_report> read_mesh(M& mesh, const std::filesystem::path& path, const 
         case file_format::stl: return read_stl<M, T>(mesh, path, options);
         case file_format::glb:
         case file_format::gltf: return read_gltf<M, T>(mesh, path, options);
+        case file_format::vtp:
+        case file_format::vtk: return read_vtk<M, T>(mesh, path, options);
+        case file_format::threemf: return read_3mf<M, T>(mesh, path, options);
     }
     return detail::unknown_extension(path);
 }
@@ -159,6 +176,9 @@ result<void> write_mesh(const M& mesh, const std::filesystem::path& path, const 
         case file_format::stl: return write_stl<M, T>(mesh, path, options);
         case file_format::glb:
         case file_format::gltf: return write_gltf<M, T>(mesh, path, options);
+        case file_format::vtp:
+        case file_format::vtk: return write_vtk<M, T>(mesh, path, options);
+        case file_format::threemf: return write_3mf<M, T>(mesh, path, options);
     }
     return detail::unknown_extension(path);
 }
