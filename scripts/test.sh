@@ -64,7 +64,7 @@ cmake --build build/asan -j"$jobs"
    ctest --output-on-failure -j"$jobs" --timeout 900 -LE compile_fail)
 echo "sanitizer pass finished after $(( $(date +%s) - start )) s"
 
-echo "== fuzz the mesh, volume and point parsers (libFuzzer, clang 14, 8 targets x 18 s, fixed seed)"
+echo "== fuzz the mesh, volume and point parsers (libFuzzer, clang 14, 11 targets x 18 s, fixed seed)"
 bash fuzz/run.sh 18 build/fuzz
 
 echo "== install and consume with find_package(hmira CONFIG)"
