@@ -38,7 +38,7 @@ struct mc_args {
     bool normals = hmira::marching_cubes_options{}.normals;
     // .raw volumes only
     std::string dims, type = "float32", spacing, origin, endian = "little";
-    std::size_t slab_slices = 0;  // 0: as many as fit in slab_bytes
+    std::size_t slab_slices = 0;           // 0: as many as fit in slab_bytes
     std::optional<double> decimate_ratio;  // decimate_options::target_ratio, the library's other defaults
 };
 
@@ -300,8 +300,9 @@ int run_mc(const mc_args& a, const common_options& o) {
     if (a.decimate_ratio && !(*a.decimate_ratio >= 0 && *a.decimate_ratio <= 1))
         return report(usage, "--decimate-ratio must be in [0, 1], got " + std::to_string(*a.decimate_ratio));
     if (a.decimate_ratio && a.normals)
-        return report(usage, "--normals (the field's gradient at the marching-cubes vertices) cannot go with "
-                             "--decimate-ratio");
+        return report(usage,
+                      "--normals (the field's gradient at the marching-cubes vertices) cannot go with "
+                      "--decimate-ratio");
     if (a.slab_slices && !raw && !ends_with_lower(a.source, ".inr"))
         return report(usage, "--slab-slices applies to .raw and .inr volumes only; " + a.source + " is not one");
     hmira::result<any_grid> grid = hmira::fail(hmira::errc::invalid_argument, "");

@@ -105,10 +105,9 @@ nb::tuple decimate_block(const positions_in& positions, const triangles_in& tria
         for (auto& c : out_triangles) c = row[std::size_t(c)];
     }
     const std::size_t k = kept.size(), n = out_triangles.size() / 3;
-    return nb::make_tuple(adopt<double>(std::move(out_positions), {k, 3}),
-                          adopt<std::int32_t>(std::move(out_triangles), {n, 3}),
-                          adopt<std::int64_t>(std::move(kept), {k}), error,
-                          adopt<double>(std::move(out_quadrics), {k, 10}));
+    return nb::make_tuple(
+        adopt<double>(std::move(out_positions), {k, 3}), adopt<std::int32_t>(std::move(out_triangles), {n, 3}),
+        adopt<std::int64_t>(std::move(kept), {k}), error, adopt<double>(std::move(out_quadrics), {k, 10}));
 }
 
 }  // namespace

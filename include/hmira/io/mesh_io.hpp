@@ -27,14 +27,14 @@ namespace hmira::io {
 
 /// The mesh file formats hmira reads and writes.
 enum class file_format {
-    obj,   ///< Wavefront OBJ
-    off,   ///< Object File Format
-    ply,   ///< Stanford PLY
-    stl,   ///< STereoLithography
-    glb,   ///< glTF 2.0, binary container
-    gltf,  ///< glTF 2.0, JSON (buffers inline or beside the file)
-    vtp,   ///< VTK XML PolyData
-    vtk,   ///< legacy VTK
+    obj,      ///< Wavefront OBJ
+    off,      ///< Object File Format
+    ply,      ///< Stanford PLY
+    stl,      ///< STereoLithography
+    glb,      ///< glTF 2.0, binary container
+    gltf,     ///< glTF 2.0, JSON (buffers inline or beside the file)
+    vtp,      ///< VTK XML PolyData
+    vtk,      ///< legacy VTK
     threemf,  ///< 3D Manufacturing Format (.3mf)
 };
 

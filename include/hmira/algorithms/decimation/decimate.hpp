@@ -69,8 +69,8 @@ struct decimate_result {
     std::size_t collapses = 0;                               ///< edges collapsed
     bool triangulated = false;                               ///< polygon input was triangulated first
     decimate_stop stopped_by = decimate_stop::target_faces;  ///< which condition ended it
-    double error = 0;  ///< the largest error (a distance, see max_error) of a collapse made
-    std::string note;  ///< in words: the triangulation, and why a face target was missed
+    double error = 0;                   ///< the largest error (a distance, see max_error) of a collapse made
+    std::string note;                   ///< in words: the triangulation, and why a face target was missed
     std::vector<double> quadrics = {};  ///< return_quadrics: each vertex index's, as start_quadrics (0 if removed)
 };
 /// A mesh decimate can run on: triangle operators, dense vertex and edge indices (polygons: Euler operators).
