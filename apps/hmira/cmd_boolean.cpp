@@ -6,6 +6,7 @@
 
 #include <hmira/algorithms/boolean/mesh_boolean.hpp>
 
+#include "boolean_summary.hpp"
 #include "cli.hpp"
 
 namespace {
@@ -39,22 +40,13 @@ int run_boolean(const boolean_args& a, const common_options& o) {
     if (!r) return report(input_exit_code(r.error()), a.a + ", " + a.b + ": " + r.error().message);
     if (int c = save(out, a.output, {}, o); c != ok) return c;
     if (a.json) {
-        std::printf(
-            "{\"op\": \"%s\", \"faces_a\": %zu, \"faces_b\": %zu, \"faces\": %zu, \"vertices\": %zu, "
-            "\"intersecting_pairs\": %zu, \"cut_triangles\": %zu, \"snapped_vertices\": %zu, "
-            "\"degenerate_faces\": %zu, \"rounding_intersections\": %zu}\n",
-            a.op.c_str(), la->mesh.face_count(), lb->mesh.face_count(), out.face_count(), out.vertex_count(),
-            r->intersecting_pairs, r->cut_triangles, r->snapped_vertices, r->degenerate_faces,
-            r->rounding_intersections);
+        std::printf("{\"op\": \"%s\", \"faces_a\": %zu, \"faces_b\": %zu, %s}\n", a.op.c_str(), la->mesh.face_count(),
+                    lb->mesh.face_count(), boolean_report_json(*r, out.face_count(), out.vertex_count()).c_str());
         return ok;
     }
-    std::string line = a.op + " of " + a.a + " (" + count_of(la->mesh.face_count(), "face", "faces") + ") and " + a.b +
-                       " (" + count_of(lb->mesh.face_count(), "face", "faces") +
-                       "): " + count_of(out.face_count(), "triangle", "triangles") + "; " +
-                       count_of(r->cut_triangles, "cut triangle", "cut triangles") + ", " +
-                       count_of(r->snapped_vertices, "snapped vertex", "snapped vertices") + ", " +
-                       count_of(r->rounding_intersections, "rounding intersection", "rounding intersections");
-    if (r->degenerate_faces > 0) line += ", " + count_of(r->degenerate_faces, "degenerate face", "degenerate faces");
+    const std::string line = a.op + " of " + a.a + " (" + count_of(la->mesh.face_count(), "face", "faces") + ") and " +
+                             a.b + " (" + count_of(lb->mesh.face_count(), "face", "faces") +
+                             "): " + boolean_report_words(*r, out.face_count());
     say(o, line + " (" + a.output + ")");
     return ok;
 }
@@ -63,8 +55,9 @@ const bool registered = register_command(
     {"boolean", "Union, intersection, difference or xor of two closed meshes, computed exactly",
      "hmira boolean part.stl hole.stl drilled.stl --op difference", 124, [](CLI::App& sub) {
          auto a = std::make_shared<boolean_args>();
-         sub.add_option("a", a->a,
-                        "first mesh (.obj .off .ply .stl; closed, oriented outward, free of self-intersections)")
+         sub.add_option(
+                "a", a->a,
+                "first mesh (any format hmira reads; closed and oriented outward; self-intersections are resolved)")
              ->required();
          sub.add_option("b", a->b, "second mesh (same requirements)")->required();
          sub.add_option("output", a->output, "mesh file to write (triangles)")->required();

@@ -7,6 +7,7 @@
 
 #include <hmira/algorithms/boolean/make_solid.hpp>
 
+#include "boolean_summary.hpp"
 #include "cli.hpp"
 
 namespace {
@@ -49,20 +50,12 @@ int run_repair(const repair_args& a, const common_options& o) {
     if (!r) return report(input_exit_code(r.error()), a.input + ": " + r.error().message);
     if (int c = save(out, a.output, {}, o); c != ok) return c;
     if (a.json) {
-        std::printf(
-            "{\"solid\": true, \"faces_in\": %zu, \"faces\": %zu, \"vertices\": %zu, \"intersecting_pairs\": %zu, "
-            "\"cut_triangles\": %zu, \"snapped_vertices\": %zu, \"degenerate_faces\": %zu, "
-            "\"rounding_intersections\": %zu}\n",
-            in->mesh.face_count(), out.face_count(), out.vertex_count(), r->intersecting_pairs, r->cut_triangles,
-            r->snapped_vertices, r->degenerate_faces, r->rounding_intersections);
+        std::printf("{\"solid\": true, \"faces_in\": %zu, %s}\n", in->mesh.face_count(),
+                    boolean_report_json(*r, out.face_count(), out.vertex_count()).c_str());
         return ok;
     }
-    std::string line = "solid of " + a.input + " (" + count_of(in->mesh.face_count(), "face", "faces") +
-                       "): " + count_of(out.face_count(), "triangle", "triangles") + "; " +
-                       count_of(r->cut_triangles, "cut triangle", "cut triangles") + ", " +
-                       count_of(r->snapped_vertices, "snapped vertex", "snapped vertices") + ", " +
-                       count_of(r->rounding_intersections, "rounding intersection", "rounding intersections");
-    if (r->degenerate_faces > 0) line += ", " + count_of(r->degenerate_faces, "degenerate face", "degenerate faces");
+    const std::string line = "solid of " + a.input + " (" + count_of(in->mesh.face_count(), "face", "faces") +
+                             "): " + boolean_report_words(*r, out.face_count());
     say(o, line + " (" + a.output + ")");
     return ok;
 }
@@ -71,7 +64,7 @@ const bool registered = register_command(
     {"repair", "Write a mesh as the reader repairs it, or (--solid) the clean surface of the solid it bounds",
      "hmira repair overlapping.stl printable.stl --solid", 125, [](CLI::App& sub) {
          auto a = std::make_shared<repair_args>();
-         sub.add_option("input", a->input, "mesh file (.obj .off .ply .stl; closed for --solid)")->required();
+         sub.add_option("input", a->input, "mesh file (any format hmira reads; closed for --solid)")->required();
          sub.add_option("output", a->output, "mesh file to write (triangles with --solid)")->required();
          sub.add_flag("--solid", a->solid,
                       "resolve self-intersections exactly and keep the boundary of the points the surface winds "
