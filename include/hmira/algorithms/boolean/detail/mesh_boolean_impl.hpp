@@ -10,6 +10,7 @@
 #include <numeric>
 #include <optional>
 #include <tuple>
+#include <unordered_map>
 #include <string>
 #include <vector>
 
@@ -85,6 +86,15 @@ inline void merge_explicit(std::vector<point3>& points, std::vector<soup_triangl
     for (soup_triangle& t : tris)
         for (vid& v : t.v) v = map[v];
 }
+
+/// A hash of rounded positions under which equal doubles (0.0 and -0.0 too) hash alike.
+struct position_hash {
+    std::size_t operator()(const std::array<double, 3>& p) const noexcept {
+        std::size_t h = 0;
+        for (double c : p) h = h * 0x9E3779B97F4A7C15ull + std::hash<double>{}(c == 0.0 ? 0.0 : c);
+        return h;
+    }
+};
 
 /// Whether the piece lies in input triangle j (coplanar with its source), and how it is turned.
 inline label coplanar_label(const arrangement& arr, const std::vector<soup_triangle>& tris, const piece& p,
@@ -218,19 +228,22 @@ result<boolean_report> mesh_boolean(MO& out, const MA& a, const MB& b, const boo
         }
     union_find patches(arr.pieces.size());
     {
-        std::map<std::array<vid, 2>, std::vector<std::uint32_t>> by_edge;
+        // Pieces joined across every uncut edge: (edge, piece) records sorted, then each run of one edge.
+        std::vector<std::array<vid, 3>> by_edge;
         for (std::uint32_t n = 0; n < arr.pieces.size(); ++n) {
             if (on[n]) continue;
             const bd::tri3& t = arr.pieces[n].v;
             for (std::size_t m = 0; m < 3; ++m) {
                 const std::array<vid, 2> e{std::min(t[m], t[(m + 1) % 3]), std::max(t[m], t[(m + 1) % 3])};
-                if (!std::binary_search(arr.cut_edges.begin(), arr.cut_edges.end(), e)) by_edge[e].push_back(n);
+                if (!std::binary_search(arr.cut_edges.begin(), arr.cut_edges.end(), e)) by_edge.push_back({e[0], e[1], n});
             }
         }
-        for (const auto& [e, ps] : by_edge)
-            for (std::size_t x = 1; x < ps.size(); ++x)
-                if (tris[arr.pieces[ps[x]].source].mesh == tris[arr.pieces[ps[0]].source].mesh)
-                    patches.unite(ps[0], ps[x]);
+        std::sort(by_edge.begin(), by_edge.end());
+        for (std::size_t x = 0, first = 0; x < by_edge.size(); ++x) {
+            if (by_edge[x][0] != by_edge[first][0] || by_edge[x][1] != by_edge[first][1]) first = x;
+            if (x != first && tris[arr.pieces[by_edge[x][2]].source].mesh == tris[arr.pieces[by_edge[first][2]].source].mesh)
+                patches.unite(by_edge[first][2], by_edge[x][2]);
+        }
     }
     const std::size_t explicit_count = points.size();
     auto locate = [&](std::uint32_t other, const bd::point3& p) -> result<point_location> {
@@ -238,10 +251,16 @@ result<boolean_report> mesh_boolean(MO& out, const MA& a, const MB& b, const boo
         if (other == 0) return inside_closed<MA, TA>(a, q);
         return inside_closed<MB, TB>(b, q);
     };
-    std::map<std::uint32_t, std::vector<std::uint32_t>> members;
+    // Each patch's pieces in order, the patches by root: (root, piece) pairs sorted.
+    std::vector<std::array<std::uint32_t, 2>> by_root;
     for (std::uint32_t n = 0; n < arr.pieces.size(); ++n)
-        if (!on[n]) members[patches.find(n)].push_back(n);
-    std::map<std::uint32_t, label> patch_label;
+        if (!on[n]) by_root.push_back({patches.find(n), n});
+    std::sort(by_root.begin(), by_root.end());
+    std::vector<std::pair<std::uint32_t, std::vector<std::uint32_t>>> members;
+    for (std::size_t x = 0; x < by_root.size(); ++x) {
+        if (x == 0 || by_root[x][0] != by_root[x - 1][0]) members.push_back({by_root[x][0], {}});
+        members.back().second.push_back(by_root[x][1]);
+    }
     for (const auto& [root, list] : members) {
         const std::uint32_t other = 1 - tris[arr.pieces[list[0]].source].mesh;
         // An input vertex of the patch off the other surface decides it exactly.
@@ -274,16 +293,15 @@ result<boolean_report> mesh_boolean(MO& out, const MA& a, const MB& b, const boo
             if (!where) return where.error();
             found = *where == point_location::inside ? label::in : label::out;
         }
-        patch_label[root] = *found;
+        for (std::uint32_t m : list) labels[m] = *found;
     }
-    for (std::uint32_t n = 0; n < arr.pieces.size(); ++n)
-        if (!on[n]) labels[n] = patch_label[patches.find(n)];
     if (!gate.advance()) return fail(errc::cancelled, "mesh_boolean: cancelled");
 
     // The kept pieces, rounded once; distinct points that round alike are merged.
     io::polygon_soup soup;
-    std::map<vid, std::uint32_t> out_id;
-    std::map<std::array<double, 3>, std::uint32_t> by_position;
+    constexpr std::uint32_t unset = std::uint32_t(-1);
+    std::vector<std::uint32_t> out_id(arr.points.size(), unset);
+    std::unordered_map<std::array<double, 3>, std::uint32_t, bd::position_hash> by_position;
     std::vector<char> cut(tris.size(), 0);
     for (const bd::piece& p : arr.pieces)
         if (p.v != tris[p.source].v) cut[p.source] = 1;
@@ -296,8 +314,7 @@ result<boolean_report> mesh_boolean(MO& out, const MA& a, const MB& b, const boo
         std::array<std::uint32_t, 3> f{};
         for (std::size_t m = 0; m < 3; ++m) {
             const vid v = p.v[m];
-            auto it = out_id.find(v);
-            if (it == out_id.end()) {
+            if (out_id[v] == unset) {
                 const bd::point3 x = arr.points[v].approximate();
                 const std::array<double, 3> key{std::ldexp(x.x, -*scale), std::ldexp(x.y, -*scale),
                                                 std::ldexp(x.z, -*scale)};
@@ -306,9 +323,9 @@ result<boolean_report> mesh_boolean(MO& out, const MA& a, const MB& b, const boo
                     soup.points.push_back(key);
                 else
                     ++report.snapped_vertices;
-                it = out_id.emplace(v, pos->second).first;
+                out_id[v] = pos->second;
             }
-            f[m] = it->second;
+            f[m] = out_id[v];
         }
         if (f[0] == f[1] || f[1] == f[2] || f[2] == f[0]) continue;
         if (flip) std::swap(f[1], f[2]);
@@ -326,7 +343,8 @@ result<boolean_report> mesh_boolean(MO& out, const MA& a, const MB& b, const boo
                     "mesh_boolean: output vertex " + std::to_string(n) + " rounded to a coordinate that is not finite",
                     (long long)n);
     std::vector<char> rounded(soup.points.size(), 0);
-    for (const auto& [v, o] : out_id) rounded[o] = rounded[o] || v >= explicit_count;
+    for (std::size_t v = explicit_count; v < out_id.size(); ++v)
+        if (out_id[v] != unset) rounded[out_id[v]] = 1;
     bd::check_rounding(soup, rounded, report);
     if (!gate.advance()) return fail(errc::cancelled, "mesh_boolean: cancelled");
     if (auto r = detail::copy::build<MO, TO>(out, soup); !r) return r.error();
