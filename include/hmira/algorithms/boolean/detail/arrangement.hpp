@@ -262,7 +262,7 @@ inline std::vector<std::array<std::uint32_t, 2>> candidate_pairs(const std::vect
     for (std::uint32_t i = 0; i < tris.size(); ++i)
         if (drop[i] >= 0 && tris[i].mesh <= 1 && boxes_overlap(box[i], region)) ids[tris[i].mesh].push_back(i);
     const box_grid grid(region, box, ids[1]);
-    const std::size_t grain = 4096, chunks = (ids[0].size() + grain - 1) / grain;
+    const std::size_t grain = 256, chunks = (ids[0].size() + grain - 1) / grain;
     std::vector<std::vector<std::array<std::uint32_t, 2>>> found(chunks);
     parallel_chunks(chunks, 1, [&](std::size_t from, std::size_t to) {
         for (std::size_t c = from; c < to; ++c)
