@@ -204,7 +204,8 @@ int main(int argc, char** argv) {
             files.push_back(argv[i]);
     }
     if (files.size() != 2 || (op != "union" && op != "intersection" && op != "difference")) {
-        std::fprintf(stderr, "usage: boolean_bench --op union|intersection|difference --reps N [--threads N] A.off B.off\n");
+        std::fprintf(stderr,
+                     "usage: boolean_bench --op union|intersection|difference --reps N [--threads N] A.off B.off\n");
         return 2;
     }
     const arrays a = read_arrays(files[0]), b = read_arrays(files[1]);

@@ -153,7 +153,8 @@ def main():
             print(f"{name:12} {tool:8} {t_alone:9.4f} {t_whole:9.4f} {len(t):9d} {str(closed(t)):>6} {volume(v, t):14.9g}")
         if a.cgal:
             # boolean_bench prints one line per tool (cgal, then hmira): "<tool> key=value ...".
-            lines = subprocess.run([a.cgal, "--op", a.op, "--reps", str(a.reps), "--threads", str(a.threads), str(pa), str(pb)],
+            lines = subprocess.run([a.cgal, "--op", a.op, "--reps", str(a.reps), "--threads", str(a.threads),
+                                    str(pa), str(pb)],
                                    capture_output=True, text=True).stdout.strip().splitlines()
             for line in lines:
                 tool, *pairs = line.split()

@@ -15,4 +15,5 @@ cmake --build "$build" --target boolean_bench -j2 >/dev/null
 echo "== all threads ($(nproc) cores)"
 "$py" "$root/bench/boolean/peers.py" --out "$out" --cgal "$build/bench/boolean/boolean_bench" "$@"
 echo "== one core (taskset -c 0)"
-taskset -c 0 "$py" "$root/bench/boolean/peers.py" --out "$out" --cgal "$build/bench/boolean/boolean_bench" --threads 1 "$@"
+taskset -c 0 "$py" "$root/bench/boolean/peers.py" --out "$out" --cgal "$build/bench/boolean/boolean_bench" \
+    --threads 1 "$@"

@@ -256,8 +256,10 @@ inline std::vector<std::array<std::uint32_t, 2>> candidate_pairs(const std::vect
     std::vector<std::array<std::uint32_t, 2>> out;
     if (!any[0] || !any[1] || !boxes_overlap(whole[0], whole[1])) return out;
     box3 region{};
-    for (std::size_t k = 0; k < 3; ++k)
-        region[0][k] = std::max(whole[0][0][k], whole[1][0][k]), region[1][k] = std::min(whole[0][1][k], whole[1][1][k]);
+    for (std::size_t k = 0; k < 3; ++k) {
+        region[0][k] = std::max(whole[0][0][k], whole[1][0][k]);
+        region[1][k] = std::min(whole[0][1][k], whole[1][1][k]);
+    }
     std::array<std::vector<std::uint32_t>, 2> ids;
     for (std::uint32_t i = 0; i < tris.size(); ++i)
         if (drop[i] >= 0 && tris[i].mesh <= 1 && boxes_overlap(box[i], region)) ids[tris[i].mesh].push_back(i);

@@ -154,8 +154,10 @@ inline void check_rounding(const io::polygon_soup& soup, const std::vector<char>
             }
         }
         if (is_moved) {
-            for (std::size_t k = 0; k < 3 && !moved.empty(); ++k)
-                region[0][k] = std::min(region[0][k], box[f][0][k]), region[1][k] = std::max(region[1][k], box[f][1][k]);
+            for (std::size_t k = 0; k < 3 && !moved.empty(); ++k) {
+                region[0][k] = std::min(region[0][k], box[f][0][k]);
+                region[1][k] = std::max(region[1][k], box[f][1][k]);
+            }
             if (moved.empty()) region = box[f];
             moved.push_back(std::uint32_t(f));
         }
@@ -253,7 +255,8 @@ result<boolean_report> run(MO& out, const MA& a, const MB& b, const boolean_opti
         std::vector<std::size_t> fill(start.begin(), start.end() - 1);
         each_edge([&](const std::array<vid, 2>& e, std::uint32_t n) { by_edge[fill[e[0]]++] = {e[1], n}; });
         for (std::size_t v = 0; v + 1 < start.size(); ++v) {
-            const auto first = by_edge.begin() + std::ptrdiff_t(start[v]), last = by_edge.begin() + std::ptrdiff_t(start[v + 1]);
+            const auto first = by_edge.begin() + std::ptrdiff_t(start[v]);
+            const auto last = by_edge.begin() + std::ptrdiff_t(start[v + 1]);
             std::sort(first, last);
             for (auto x = first, run = first; x != last; ++x) {
                 if ((*x)[0] != (*run)[0]) run = x;
