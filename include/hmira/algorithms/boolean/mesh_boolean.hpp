@@ -48,6 +48,8 @@ struct boolean_options {
     boolean_op op = boolean_op::union_;
     /// Called between phases and blocks of triangles; returning false cancels (errc::cancelled).
     progress_function progress = {};
+    /// Worker threads for the parallel stages (0: all cores). The result does not depend on it.
+    unsigned threads = 0;
 };
 
 /// Where an output face came from.
