@@ -331,9 +331,8 @@ inline std::vector<vid> merge_points(const std::vector<exact_point>& pts, std::s
     for (std::size_t n = 0; n < order.size();) {
         std::size_t m = n + 1;
         while (m < order.size() && predicates::compare_xyz(pts[order[n]], pts[order[m]]) == 0) ++m;
-        const auto at = std::lower_bound(given.begin(), given.end(), order[n], [&](vid g, vid x) {
-            return predicates::compare_xyz(pts[g], pts[x]) < 0;
-        });
+        const auto at = std::lower_bound(given.begin(), given.end(), order[n],
+                                         [&](vid g, vid x) { return predicates::compare_xyz(pts[g], pts[x]) < 0; });
         const vid to = at != given.end() && predicates::compare_xyz(pts[*at], pts[order[n]]) == 0 ? *at : order[n];
         for (std::size_t r = n; r < m; ++r) map[order[r]] = to;
         n = m;

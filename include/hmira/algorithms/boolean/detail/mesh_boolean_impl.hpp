@@ -380,8 +380,7 @@ result<boolean_report> run(MO& out, const MA& a, const MB& b, const boolean_opti
                 std::sort(first, last);
                 for (auto x = first, run = first; x != last; ++x) {
                     if ((*x)[0] != (*run)[0]) run = x;
-                    if (x != run &&
-                        tris[arr.pieces[(*x)[1]].source].mesh == tris[arr.pieces[(*run)[1]].source].mesh)
+                    if (x != run && tris[arr.pieces[(*x)[1]].source].mesh == tris[arr.pieces[(*run)[1]].source].mesh)
                         patches.unite((*run)[1], (*x)[1]);
                 }
             }

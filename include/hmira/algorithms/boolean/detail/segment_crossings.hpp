@@ -66,8 +66,9 @@ inline bool crossing_point(const arrangement& arr, const std::vector<soup_triang
 }
 
 /// Adds to every triangle the points where its segments cross each other, merges them with the
-/// points already there (the first `explicit_count` being explicit), and renames every triangle's lists. False when a crossing cannot be
-/// constructed (a segment of a coplanar pair off every edge; not produced by the pair stage).
+/// points already there (the first `explicit_count` of them explicit), and renames every
+/// triangle's lists. False when a crossing cannot be constructed (a segment of a coplanar pair off
+/// every edge; not produced by the pair stage).
 /// Complexity: O(s^2) exact orientations per triangle with s segments, and a sort of all points.
 inline bool split_crossings(arrangement& arr, const std::vector<soup_triangle>& tris, std::vector<triangle_cuts>& cuts,
                             std::size_t explicit_count) {
