@@ -9,7 +9,8 @@
 // reported, not fatal. Each output is checked with CGAL's own is_valid_polygon_mesh, is_closed
 // and does_self_intersect (hmira's output copied into a Surface_mesh for that), and its volume
 // printed for the volume identity.
-// Usage: boolean_bench --op union|intersection|difference --reps N A.off B.off
+// Usage: boolean_bench --op union|intersection|difference --reps N [--threads N] A.off B.off
+// (--threads: hmira's boolean_options::threads, 0 for all cores; CGAL runs on one thread)
 // Prints two lines: "cgal op=<op> alone=<s> arrays=<s> faces=<n> volume=<v> valid=<0|1> closed=<0|1>
 // self_intersecting=<0|1> refused=<0|1>", then "hmira" with the same keys and surface_mesh=<s>,
 // openmesh=<s> (-1 where not compiled in), cut=<n> snapped=<n> rounding=<n> from the report.
@@ -177,10 +178,10 @@ arrays model_arrays(const M& m) {
 
 /// Seconds of hmira::mesh_boolean alone on inputs of model M (built outside the timed region).
 template <class M>
-double hmira_alone_on(const M& ma, const M& mb, const std::string& op) {
+double hmira_alone_on(const M& ma, const M& mb, const std::string& op, unsigned threads) {
     hmira::halfedge_mesh out;
     const auto t0 = clock_type::now();
-    auto r = hmira::mesh_boolean(out, ma, mb, {.op = hmira_op(op)});
+    auto r = hmira::mesh_boolean(out, ma, mb, {.op = hmira_op(op), .threads = threads});
     const double s = std::chrono::duration<double>(clock_type::now() - t0).count();
     return r ? s : -1.0;
 }
@@ -190,17 +191,21 @@ double hmira_alone_on(const M& ma, const M& mb, const std::string& op) {
 int main(int argc, char** argv) {
     std::string op = "difference";
     int reps = 3;
+    unsigned threads = 0;
     std::vector<const char*> files;
     for (int i = 1; i < argc; ++i) {
         if (!std::strcmp(argv[i], "--op") && i + 1 < argc)
             op = argv[++i];
         else if (!std::strcmp(argv[i], "--reps") && i + 1 < argc)
             reps = std::max(1, std::atoi(argv[++i]));
+        else if (!std::strcmp(argv[i], "--threads") && i + 1 < argc)
+            threads = unsigned(std::max(0, std::atoi(argv[++i])));
         else
             files.push_back(argv[i]);
     }
     if (files.size() != 2 || (op != "union" && op != "intersection" && op != "difference")) {
-        std::fprintf(stderr, "usage: boolean_bench --op union|intersection|difference --reps N A.off B.off\n");
+        std::fprintf(stderr,
+                     "usage: boolean_bench --op union|intersection|difference --reps N [--threads N] A.off B.off\n");
         return 2;
     }
     const arrays a = read_arrays(files[0]), b = read_arrays(files[1]);
@@ -248,7 +253,7 @@ int main(int argc, char** argv) {
     for (int r = 0; r < reps && !ours.refused; ++r) {
         hmira::halfedge_mesh out;
         const auto t0 = clock_type::now();
-        auto done = hmira::mesh_boolean(out, ha, hb, {.op = hmira_op(op)});
+        auto done = hmira::mesh_boolean(out, ha, hb, {.op = hmira_op(op), .threads = threads});
         ours.alone.push_back(std::chrono::duration<double>(clock_type::now() - t0).count());
         if (!done) {
             std::fprintf(stderr, "hmira refused: %s\n", done.error().message.c_str());
@@ -259,13 +264,13 @@ int main(int argc, char** argv) {
         const auto t1 = clock_type::now();
         const auto fa = to_model<hmira::face_vertex_mesh>(a), fb = to_model<hmira::face_vertex_mesh>(b);
         hmira::face_vertex_mesh fout;
-        const bool whole_ok = bool(hmira::mesh_boolean(fout, fa, fb, {.op = hmira_op(op)}));
+        const bool whole_ok = bool(hmira::mesh_boolean(fout, fa, fb, {.op = hmira_op(op), .threads = threads}));
         const arrays back = model_arrays(fout);
         ours.whole.push_back(std::chrono::duration<double>(clock_type::now() - t1).count());
         if (!whole_ok || back.tri.size() != out.face_count()) ours.refused = true;
-        on_surface.push_back(hmira_alone_on(sa, sb, op));
+        on_surface.push_back(hmira_alone_on(sa, sb, op, threads));
 #ifdef HMIRA_BENCH_WITH_OPENMESH
-        on_openmesh.push_back(hmira_alone_on(oa, ob, op));
+        on_openmesh.push_back(hmira_alone_on(oa, ob, op, threads));
 #endif
         if (r + 1 == reps) ours.result = to_surface(model_arrays(out));
     }

@@ -13,7 +13,7 @@ Each tool is timed two ways, the median of --reps runs: the operation alone, and
 arrays out (Manifold's construction from Mesh64 and its to_mesh64 included). A tool that raises or
 returns an empty or invalid result for non-empty input is reported as refused. The output is checked
 for closedness (every edge used twice, by the arrays) and its volume is printed.
-Usage: peers.py --out DIR [--reps N] [--quick] [--cgal PATH/boolean_bench] [--cases a,b]"""
+Usage: peers.py --out DIR [--reps N] [--quick] [--cgal PATH/boolean_bench] [--cases a,b] [--threads N]"""
 import argparse
 import statistics
 import subprocess
@@ -120,6 +120,7 @@ def main():
     ap.add_argument("--cgal", default="")
     ap.add_argument("--cases", default="")
     ap.add_argument("--op", default="difference")
+    ap.add_argument("--threads", type=int, default=0, help="hmira's thread count (0: all cores)")
     a = ap.parse_args()
     out = Path(a.out)
     out.mkdir(parents=True, exist_ok=True)
@@ -152,7 +153,8 @@ def main():
             print(f"{name:12} {tool:8} {t_alone:9.4f} {t_whole:9.4f} {len(t):9d} {str(closed(t)):>6} {volume(v, t):14.9g}")
         if a.cgal:
             # boolean_bench prints one line per tool (cgal, then hmira): "<tool> key=value ...".
-            lines = subprocess.run([a.cgal, "--op", a.op, "--reps", str(a.reps), str(pa), str(pb)],
+            lines = subprocess.run([a.cgal, "--op", a.op, "--reps", str(a.reps), "--threads", str(a.threads),
+                                    str(pa), str(pb)],
                                    capture_output=True, text=True).stdout.strip().splitlines()
             for line in lines:
                 tool, *pairs = line.split()

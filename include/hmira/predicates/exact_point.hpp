@@ -149,9 +149,11 @@ private:
     static std::array<detail::interval, 4> tpi_filter(const three_plane_point& t);
 
     kind kind_;
-    point3 p_{};
-    line_plane_point l_{};
-    three_plane_point t_{};
+    union {  // the definition, by kind_ (arrangements hold one of these per input vertex)
+        point3 p_;
+        line_plane_point l_;
+        three_plane_point t_;
+    };
     std::array<detail::interval, 4> filter_{};
 };
 

@@ -6,9 +6,8 @@
 // be different models, and may intersect themselves or nest.
 //
 // Options: boolean_options. Result: boolean_report. Requires: boolean_input_mesh for the inputs,
-// copy_target_mesh for the output. Entry point: mesh_boolean(out, a, b, options). The machinery is
-// in detail/ (cut_triangle, arrangement, segment_crossings, cell_windings,
-// mesh_boolean_impl).
+// copy_target_mesh for the output. Entry point: mesh_boolean(out, a, b, options). Machinery in
+// detail/ (cut_triangle, arrangement, segment_crossings, cell_windings, mesh_boolean_impl).
 #pragma once
 
 #include <cstddef>
@@ -48,6 +47,7 @@ struct boolean_options {
     boolean_op op = boolean_op::union_;
     /// Called between phases and blocks of triangles; returning false cancels (errc::cancelled).
     progress_function progress = {};
+    unsigned threads = 0;  ///< worker threads of the parallel stages (0: all cores); the result does not depend on it
 };
 
 /// Where an output face came from.

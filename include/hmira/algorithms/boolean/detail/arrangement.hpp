@@ -18,6 +18,7 @@
 
 #include "../../../core/progress.hpp"
 #include "../../../predicates/intersect3d.hpp"
+#include "../../conversion/detail/parallel.hpp"
 #include "../../validation/detail/self_intersections_impl.hpp"
 #include "cut_triangle.hpp"
 
@@ -163,12 +164,95 @@ private:
     std::vector<triangle_cuts>& cuts_;
 };
 
+using box3 = std::array<point3, 2>;
+
+inline bool boxes_overlap(const box3& x, const box3& y) {
+    return x[0].x <= y[1].x && y[0].x <= x[1].x && x[0].y <= y[1].y && y[0].y <= x[1].y && x[0].z <= y[1].z &&
+           y[0].z <= x[1].z;
+}
+
+/// A uniform grid over a box, its cells about the size of the boxes it holds; a box is listed in
+/// every cell it overlaps (compressed rows). Cell coordinates are a monotone function of a
+/// coordinate, so two overlapping boxes share the cell holding the low corner of their overlap,
+/// which reports each pair once.
+class box_grid {
+public:
+    box_grid(const box3& region, const std::vector<box3>& box, const std::vector<std::uint32_t>& ids) : lo_(region[0]) {
+        // Cells of the mean box size, at most about 2 cells per box in all (1024 per axis).
+        point3 mean{};
+        for (std::uint32_t i : ids)
+            for (std::size_t k = 0; k < 3; ++k) mean[k] += box[i][1][k] - box[i][0][k];
+        const double budget = 2.0 * double(ids.size()) + 64;
+        double cell = std::max({mean.x, mean.y, mean.z}) / double(std::max<std::size_t>(ids.size(), 1));
+        const point3 e{region[1].x - region[0].x, region[1].y - region[0].y, region[1].z - region[0].z};
+        if (!(cell > 0)) cell = std::max({e.x, e.y, e.z}) / std::cbrt(budget);
+        for (int round = 0; round < 2; ++round) {
+            double cells = 1;
+            for (std::size_t k = 0; k < 3; ++k) {
+                n_[k] = cell > 0 ? std::size_t(std::clamp(std::ceil(e[k] / cell), 1.0, 1024.0)) : 1;
+                cells *= double(n_[k]);
+            }
+            if (cells <= budget) break;
+            cell *= std::cbrt(cells / budget);
+        }
+        for (std::size_t k = 0; k < 3; ++k) inv_[k] = e[k] > 0 ? double(n_[k]) / e[k] : 0.0;
+        start_.assign(n_[0] * n_[1] * n_[2] + 1, 0);
+        for (std::uint32_t i : ids) each_cell(box[i], [&](std::size_t c) { ++start_[c + 1]; });
+        for (std::size_t c = 1; c < start_.size(); ++c) start_[c] += start_[c - 1];
+        items_.resize(start_.back());
+        std::vector<std::size_t> fill(start_.begin(), start_.end() - 1);
+        for (std::uint32_t i : ids) each_cell(box[i], [&](std::size_t c) { items_[fill[c]++] = i; });
+    }
+
+    /// The cell coordinate of x along axis k, clamped to the grid.
+    std::size_t coord(std::size_t k, double x) const {
+        const double t = std::floor((x - lo_[k]) * inv_[k]);
+        return t <= 0 ? 0 : std::min(n_[k] - 1, std::size_t(t));
+    }
+
+    template <class F>
+    void each_cell(const box3& b, const F& f) const {
+        std::array<std::size_t, 3> from{}, to{};
+        for (std::size_t k = 0; k < 3; ++k) from[k] = coord(k, b[0][k]), to[k] = coord(k, b[1][k]);
+        for (std::size_t z = from[2]; z <= to[2]; ++z)
+            for (std::size_t y = from[1]; y <= to[1]; ++y)
+                for (std::size_t x = from[0]; x <= to[0]; ++x) f((z * n_[1] + y) * n_[0] + x);
+    }
+
+    /// Calls f(j) once for every listed box j overlapping b (j == i included if listed).
+    template <class F>
+    void query(const std::vector<box3>& box, const box3& b, const F& f) const {
+        each_cell(b, [&](std::size_t c) {
+            for (std::size_t n = start_[c]; n < start_[c + 1]; ++n) {
+                const box3& o = box[items_[n]];
+                if (!boxes_overlap(b, o)) continue;
+                std::size_t owner = 0;  // the cell of the overlap's low corner
+                for (std::size_t k = 3; k-- > 0;) owner = owner * n_[k] + coord(k, std::max(b[0][k], o[0][k]));
+                if (owner == c) f(items_[n]);
+            }
+        });
+    }
+
+private:
+    point3 lo_;
+    std::array<std::size_t, 3> n_{};
+    point3 inv_{};
+    std::vector<std::size_t> start_;
+    std::vector<std::uint32_t> items_;
+};
+
 /// Candidate pairs: triangles of different meshes (of any, with `same_mesh`) whose closed boxes
-/// overlap, by a sweep along x.
+/// overlap, (smaller, larger), sorted. Without `same_mesh`, the triangles of mesh 1 that reach the
+/// overlap of the two meshes' boxes go into a uniform grid and each triangle of mesh 0 asks it;
+/// with it, every triangle goes into the grid and asks it, keeping the pairs (i, j) with i < j.
+/// The queries run in parallel chunks whose lists are joined in order: the pairs do not depend on
+/// the thread count.
 inline std::vector<std::array<std::uint32_t, 2>> candidate_pairs(const std::vector<exact_point>& pts,
                                                                  const std::vector<soup_triangle>& tris,
                                                                  const std::vector<int>& drop, bool same_mesh = false) {
-    std::vector<std::array<point3, 2>> box(tris.size());
+    std::vector<box3> box(tris.size());
+    std::array<box3, 3> whole{};  // mesh 0, mesh 1, all meshes
+    std::array<bool, 3> any{};
     for (std::size_t i = 0; i < tris.size(); ++i) {
         point3 lo = pts[tris[i].v[0]].explicit_coordinates(), hi = lo;
         for (vid v : tris[i].v)
@@ -177,50 +261,80 @@ inline std::vector<std::array<std::uint32_t, 2>> candidate_pairs(const std::vect
                 hi[k] = std::max(hi[k], pts[v].explicit_coordinates()[k]);
             }
         box[i] = {lo, hi};
+        if (drop[i] < 0) continue;
+        const auto grow = [&](std::size_t m) {
+            box3& w = whole[m];
+            for (std::size_t k = 0; k < 3 && any[m]; ++k)
+                w[0][k] = std::min(w[0][k], lo[k]), w[1][k] = std::max(w[1][k], hi[k]);
+            if (!any[m]) w = box[i], any[m] = true;
+        };
+        if (tris[i].mesh <= 1) grow(tris[i].mesh);
+        grow(2);
     }
-    // The sweep runs along the axis of the largest extent, where boxes overlap least.
-    point3 lo{}, hi{};
-    for (std::size_t i = 0; i < box.size(); ++i)
-        for (std::size_t k = 0; k < 3; ++k) {
-            lo[k] = i == 0 ? box[i][0][k] : std::min(lo[k], box[i][0][k]);
-            hi[k] = i == 0 ? box[i][1][k] : std::max(hi[k], box[i][1][k]);
-        }
-    const point3 ext{hi.x - lo.x, hi.y - lo.y, hi.z - lo.z};
-    const std::size_t ax = ext.x >= ext.y && ext.x >= ext.z ? 0 : (ext.y >= ext.z ? 1 : 2);
-    std::vector<std::uint32_t> order;
-    for (std::uint32_t i = 0; i < tris.size(); ++i)
-        if (drop[i] >= 0) order.push_back(i);
-    std::sort(order.begin(), order.end(), [&](std::uint32_t x, std::uint32_t y) {
-        return box[x][0][ax] < box[y][0][ax] || (box[x][0][ax] == box[y][0][ax] && x < y);
-    });
     std::vector<std::array<std::uint32_t, 2>> out;
-    for (std::size_t n = 0; n < order.size(); ++n) {
-        const std::uint32_t x = order[n];
-        for (std::size_t m = n + 1; m < order.size() && box[order[m]][0][ax] <= box[x][1][ax]; ++m) {
-            const std::uint32_t y = order[m];
-            if (!same_mesh && tris[x].mesh == tris[y].mesh) continue;
-            bool overlap = true;
-            for (std::size_t k = 0; k < 3; ++k)
-                overlap = overlap && box[x][0][k] <= box[y][1][k] && box[y][0][k] <= box[x][1][k];
-            if (overlap) out.push_back({std::min(x, y), std::max(x, y)});
+    std::array<std::vector<std::uint32_t>, 2> ids;  // ids[1] go into the grid, ids[0] ask it
+    box3 region{};
+    if (same_mesh) {
+        if (!any[2]) return out;
+        region = whole[2];
+        for (std::uint32_t i = 0; i < tris.size(); ++i)
+            if (drop[i] >= 0) ids[1].push_back(i);
+        ids[0] = ids[1];
+    } else {
+        if (!any[0] || !any[1] || !boxes_overlap(whole[0], whole[1])) return out;
+        for (std::size_t k = 0; k < 3; ++k) {
+            region[0][k] = std::max(whole[0][0][k], whole[1][0][k]);
+            region[1][k] = std::min(whole[0][1][k], whole[1][1][k]);
         }
+        for (std::uint32_t i = 0; i < tris.size(); ++i)
+            if (drop[i] >= 0 && tris[i].mesh <= 1 && boxes_overlap(box[i], region)) ids[tris[i].mesh].push_back(i);
     }
+    const box_grid grid(region, box, ids[1]);
+    const std::size_t grain = 256, chunks = (ids[0].size() + grain - 1) / grain;
+    std::vector<std::vector<std::array<std::uint32_t, 2>>> found(chunks);
+    parallel_chunks(chunks, 1, [&](std::size_t from, std::size_t to) {
+        for (std::size_t c = from; c < to; ++c)
+            for (std::size_t n = c * grain; n < std::min(ids[0].size(), (c + 1) * grain); ++n) {
+                const std::uint32_t x = ids[0][n];
+                grid.query(box, box[x], [&](std::uint32_t y) {
+                    if (!same_mesh || x < y) found[c].push_back({std::min(x, y), std::max(x, y)});
+                });
+            }
+    });
+    for (const auto& f : found) out.insert(out.end(), f.begin(), f.end());
     std::sort(out.begin(), out.end());
     return out;
 }
 
-/// Merges coincident points exactly: every id is mapped to the smallest id of its point.
-inline std::vector<vid> merge_points(const std::vector<exact_point>& pts) {
-    std::vector<vid> order(pts.size()), map(pts.size());
-    std::iota(order.begin(), order.end(), vid(0));
+/// Merges coincident points exactly: every id is mapped to the smallest id of its point. The
+/// first `distinct` points are explicit: they are sorted by their coordinates (ties by id) and
+/// merged by plain comparison; the constructed points after them are sorted exactly, and each run
+/// of equal ones is looked up among the explicit points.
+inline std::vector<vid> merge_points(const std::vector<exact_point>& pts, std::size_t explicit_count) {
+    std::vector<vid> map(pts.size());
+    std::iota(map.begin(), map.end(), vid(0));
+    std::vector<vid> order(pts.size() - explicit_count);
+    std::iota(order.begin(), order.end(), vid(explicit_count));
     std::sort(order.begin(), order.end(), [&](vid x, vid y) {
         const int s = predicates::compare_xyz(pts[x], pts[y]);
         return s < 0 || (s == 0 && x < y);
     });
+    std::vector<vid> given(explicit_count);
+    std::iota(given.begin(), given.end(), vid(0));
+    std::sort(given.begin(), given.end(), [&](vid x, vid y) {
+        const point3 &p = pts[x].explicit_coordinates(), &q = pts[y].explicit_coordinates();
+        return p.x < q.x || (p.x == q.x && (p.y < q.y || (p.y == q.y && (p.z < q.z || (p.z == q.z && x < y)))));
+    });
+    for (std::size_t n = 1; n < given.size(); ++n)
+        if (pts[given[n]].explicit_coordinates() == pts[given[n - 1]].explicit_coordinates())
+            map[given[n]] = map[given[n - 1]];
     for (std::size_t n = 0; n < order.size();) {
         std::size_t m = n + 1;
         while (m < order.size() && predicates::compare_xyz(pts[order[n]], pts[order[m]]) == 0) ++m;
-        for (std::size_t r = n; r < m; ++r) map[order[r]] = order[n];
+        const auto at = std::lower_bound(given.begin(), given.end(), order[n],
+                                         [&](vid g, vid x) { return predicates::compare_xyz(pts[g], pts[x]) < 0; });
+        const vid to = at != given.end() && predicates::compare_xyz(pts[*at], pts[order[n]]) == 0 ? *at : order[n];
+        for (std::size_t r = n; r < m; ++r) map[order[r]] = to;
         n = m;
     }
     return map;
@@ -253,7 +367,8 @@ inline void share_edge_points(const arrangement& arr, const std::vector<soup_tri
     }
 }
 
-inline bool split_crossings(arrangement& arr, const std::vector<soup_triangle>& tris, std::vector<triangle_cuts>& cuts);
+inline bool split_crossings(arrangement& arr, const std::vector<soup_triangle>& tris, std::vector<triangle_cuts>& cuts,
+                            std::size_t explicit_count);
 
 /// Builds the arrangement of `tris` over the explicit points `explicit_points` (whose exact
 /// duplicates must already be merged), cutting triangles of one mesh by each other too when
@@ -280,7 +395,7 @@ inline bool build_arrangement(const std::vector<point3>& explicit_points, const 
     }
     if (gate && gate->cancelled()) return false;
     // Coincident points become one id; each triangle's lists are renamed and deduplicated.
-    const std::vector<vid> map = merge_points(arr.points);
+    const std::vector<vid> map = merge_points(arr.points, explicit_points.size());
     for (triangle_cuts& c : cuts) {
         for (vid& p : c.points) p = map[p];
         for (auto& s : c.segments) s = {std::min(map[s[0]], map[s[1]]), std::max(map[s[0]], map[s[1]])};
@@ -291,7 +406,7 @@ inline bool build_arrangement(const std::vector<point3>& explicit_points, const 
         c.segments.erase(std::unique(c.segments.begin(), c.segments.end()), c.segments.end());
     }
     share_edge_points(arr, tris, cuts);
-    if (arr.self_cut && !split_crossings(arr, tris, cuts)) return false;
+    if (arr.self_cut && !split_crossings(arr, tris, cuts, explicit_points.size())) return false;
     for (std::size_t i = 0; i < tris.size(); ++i) {
         if (arr.drop[i] < 0) continue;
         if (gate && (i & 255) == 0 && gate->cancelled()) return false;

@@ -10,6 +10,7 @@
 #include <numeric>
 #include <optional>
 #include <tuple>
+#include <unordered_map>
 #include <string>
 #include <vector>
 
@@ -87,6 +88,15 @@ inline void merge_explicit(std::vector<point3>& points, std::vector<soup_triangl
     for (soup_triangle& t : tris)
         for (vid& v : t.v) v = map[v];
 }
+
+/// A hash of rounded positions under which equal doubles (0.0 and -0.0 too) hash alike.
+struct position_hash {
+    std::size_t operator()(const std::array<double, 3>& p) const noexcept {
+        std::size_t h = 0;
+        for (double c : p) h = h * 0x9E3779B97F4A7C15ull + std::hash<double>{}(c == 0.0 ? 0.0 : c);
+        return h;
+    }
+};
 
 /// Whether the piece lies in input triangle j (coplanar with its source), and how it is turned.
 inline label coplanar_label(const arrangement& arr, const std::vector<soup_triangle>& tris, const piece& p,
@@ -178,54 +188,62 @@ inline result<std::optional<piece_windings>> windings_of(const arrangement& arr,
 
 /// Checks the rounded output exactly: faces whose corners became collinear, and pairs of faces
 /// that rounding made intersect (the rule of self_intersections). Only faces with a rounded
-/// (constructed) corner can have moved, so only pairs holding one are tested: each such face
-/// against every face whose box overlaps its own, by a sorted sweep along the longest axis.
+/// (constructed) corner can have moved, so only pairs holding one are tested: the faces whose
+/// boxes reach the box of the moved ones go into a uniform grid, and each moved face asks it, in
+/// parallel chunks whose counts are summed.
 inline void check_rounding(const io::polygon_soup& soup, const std::vector<char>& rounded, boolean_report& report) {
-    std::vector<point3> pos;
-    for (const auto& p : soup.points) pos.push_back({p[0], p[1], p[2]});
+    std::vector<point3> pos(soup.points.size());
+    for (std::size_t v = 0; v < pos.size(); ++v) pos[v] = {soup.points[v][0], soup.points[v][1], soup.points[v][2]};
     const std::size_t n = soup.face_offsets.size() - 1;
     std::vector<std::array<std::size_t, 3>> tris(n);
-    std::vector<std::array<point3, 2>> box(n);
-    std::vector<char> moved(n, 0);
-    point3 lo_all{}, hi_all{};
+    std::vector<box3> box(n);
+    std::vector<std::uint32_t> moved;
+    box3 region{};
     for (std::size_t f = 0; f < n; ++f) {
         const std::size_t o = soup.face_offsets[f];
         tris[f] = {soup.indices[o], soup.indices[o + 1], soup.indices[o + 2]};
         box[f] = {pos[tris[f][0]], pos[tris[f][0]]};
+        bool is_moved = false;
         for (std::size_t v : tris[f]) {
-            moved[f] = moved[f] || rounded[v];
+            is_moved = is_moved || rounded[v];
             for (std::size_t k = 0; k < 3; ++k) {
                 box[f][0][k] = std::min(box[f][0][k], pos[v][k]);
                 box[f][1][k] = std::max(box[f][1][k], pos[v][k]);
-                lo_all[k] = f == 0 ? box[f][0][k] : std::min(lo_all[k], box[f][0][k]);
-                hi_all[k] = f == 0 ? box[f][1][k] : std::max(hi_all[k], box[f][1][k]);
             }
         }
-        report.degenerate_faces += predicates::collinear(pos[tris[f][0]], pos[tris[f][1]], pos[tris[f][2]]);
-    }
-    if (n == 0) return;
-    const point3 ext{hi_all.x - lo_all.x, hi_all.y - lo_all.y, hi_all.z - lo_all.z};
-    const std::size_t axis = ext.x >= ext.y && ext.x >= ext.z ? 0 : (ext.y >= ext.z ? 1 : 2);
-    std::vector<std::size_t> order(n);
-    std::iota(order.begin(), order.end(), std::size_t(0));
-    std::sort(order.begin(), order.end(),
-              [&](std::size_t x, std::size_t y) { return box[x][0][axis] < box[y][0][axis]; });
-    double longest = 0;
-    for (const auto& b : box) longest = std::max(longest, b[1][axis] - b[0][axis]);
-    std::vector<double> starts(n);
-    for (std::size_t m = 0; m < n; ++m) starts[m] = box[order[m]][0][axis];
-    std::vector<std::array<std::size_t, 2>> pairs;
-    for (std::size_t f = 0; f < n; ++f) {
-        if (!moved[f]) continue;
-        const auto first = std::lower_bound(starts.begin(), starts.end(), box[f][0][axis] - longest);
-        for (auto it = first; it != starts.end() && *it <= box[f][1][axis]; ++it) {
-            const std::size_t g = order[std::size_t(it - starts.begin())];
-            if (g == f || (moved[g] && g < f)) continue;  // a pair of moved faces once
-            bool overlap = true;
-            for (std::size_t k = 0; k < 3; ++k)
-                overlap = overlap && box[f][0][k] <= box[g][1][k] && box[g][0][k] <= box[f][1][k];
-            if (overlap && self_intersect::triangles_cross(tris[f], tris[g], pos)) ++report.rounding_intersections;
+        if (is_moved) {
+            for (std::size_t k = 0; k < 3 && !moved.empty(); ++k) {
+                region[0][k] = std::min(region[0][k], box[f][0][k]);
+                region[1][k] = std::max(region[1][k], box[f][1][k]);
+            }
+            if (moved.empty()) region = box[f];
+            moved.push_back(std::uint32_t(f));
         }
+    }
+    std::vector<char> is_moved(n, 0);
+    for (std::uint32_t f : moved) is_moved[f] = 1;
+    std::vector<std::uint32_t> near;
+    for (std::uint32_t f = 0; f < n; ++f)
+        if (boxes_overlap(box[f], region)) near.push_back(f);
+    const box_grid grid(region, box, near);
+    const std::size_t grain = 256, chunks = (std::max(n, moved.size()) + grain - 1) / grain;
+    std::vector<std::size_t> degenerate(chunks, 0), crossing(chunks, 0);
+    parallel_chunks(chunks, 1, [&](std::size_t from, std::size_t to) {
+        for (std::size_t c = from; c < to; ++c) {
+            for (std::size_t f = c * grain; f < std::min(n, (c + 1) * grain); ++f)
+                degenerate[c] += predicates::collinear(pos[tris[f][0]], pos[tris[f][1]], pos[tris[f][2]]);
+            for (std::size_t m = c * grain; m < std::min(moved.size(), (c + 1) * grain); ++m) {
+                const std::uint32_t f = moved[m];
+                grid.query(box, box[f], [&](std::uint32_t g) {
+                    if (g == f || (is_moved[g] && g < f)) return;  // a pair of moved faces once
+                    crossing[c] += self_intersect::triangles_cross(tris[f], tris[g], pos);
+                });
+            }
+        }
+    });
+    for (std::size_t c = 0; c < chunks; ++c) {
+        report.degenerate_faces += degenerate[c];
+        report.rounding_intersections += crossing[c];
     }
 }
 
@@ -238,8 +256,9 @@ result<io::polygon_soup> round_kept(const arrangement& arr, const std::vector<so
                                     std::size_t explicit_count, Kept kept, boolean_report& report, const char* who) {
     // The kept pieces, rounded once; distinct points that round alike are merged.
     io::polygon_soup soup;
-    std::map<vid, std::uint32_t> out_id;
-    std::map<std::array<double, 3>, std::uint32_t> by_position;
+    constexpr std::uint32_t unset = std::uint32_t(-1);
+    std::vector<std::uint32_t> out_id(arr.points.size(), unset);
+    std::unordered_map<std::array<double, 3>, std::uint32_t, position_hash> by_position;
     std::vector<char> cut(tris.size(), 0);
     for (const piece& p : arr.pieces)
         if (p.v != tris[p.source].v) cut[p.source] = 1;
@@ -252,8 +271,7 @@ result<io::polygon_soup> round_kept(const arrangement& arr, const std::vector<so
         std::array<std::uint32_t, 3> f{};
         for (std::size_t m = 0; m < 3; ++m) {
             const vid v = p.v[m];
-            auto it = out_id.find(v);
-            if (it == out_id.end()) {
+            if (out_id[v] == unset) {
                 const point3 x = arr.points[v].approximate();
                 const std::array<double, 3> key{std::ldexp(x.x, -scale), std::ldexp(x.y, -scale),
                                                 std::ldexp(x.z, -scale)};
@@ -262,9 +280,9 @@ result<io::polygon_soup> round_kept(const arrangement& arr, const std::vector<so
                     soup.points.push_back(key);
                 else
                     ++report.snapped_vertices;
-                it = out_id.emplace(v, pos->second).first;
+                out_id[v] = pos->second;
             }
-            f[m] = it->second;
+            f[m] = out_id[v];
         }
         if (f[0] == f[1] || f[1] == f[2] || f[2] == f[0]) continue;
         if (flip) std::swap(f[1], f[2]);
@@ -282,18 +300,15 @@ result<io::polygon_soup> round_kept(const arrangement& arr, const std::vector<so
                                 " rounded to a coordinate that is not finite",
                             (long long)n);
     std::vector<char> rounded(soup.points.size(), 0);
-    for (const auto& [v, o] : out_id) rounded[o] = rounded[o] || v >= explicit_count;
+    for (std::size_t v = explicit_count; v < out_id.size(); ++v)
+        if (out_id[v] != unset) rounded[out_id[v]] = 1;
     check_rounding(soup, rounded, report);
     return soup;
 }
 
-}  // namespace hmira::detail::boolean
-
-namespace hmira {
-
+/// mesh_boolean's body, run inside its thread arena.
 template <class MO, class MA, class MB, class TO, class TA, class TB>
-    requires copy_target_mesh<MO, TO> && boolean_input_mesh<MA, TA> && boolean_input_mesh<MB, TB>
-result<boolean_report> mesh_boolean(MO& out, const MA& a, const MB& b, const boolean_options& options) {
+result<boolean_report> run(MO& out, const MA& a, const MB& b, const boolean_options& options) {
     namespace bd = detail::boolean;
     using bd::label;
     using bd::vid;
@@ -341,29 +356,50 @@ result<boolean_report> mesh_boolean(MO& out, const MA& a, const MB& b, const boo
             }
         union_find patches(arr.pieces.size());
         {
-            std::map<std::array<vid, 2>, std::vector<std::uint32_t>> by_edge;
-            for (std::uint32_t n = 0; n < arr.pieces.size(); ++n) {
-                if (on[n]) continue;
-                const bd::tri3& t = arr.pieces[n].v;
-                for (std::size_t m = 0; m < 3; ++m) {
-                    const std::array<vid, 2> e{std::min(t[m], t[(m + 1) % 3]), std::max(t[m], t[(m + 1) % 3])};
-                    if (!std::binary_search(arr.cut_edges.begin(), arr.cut_edges.end(), e)) by_edge[e].push_back(n);
+            // Pieces joined across every uncut edge: (edge, piece) records bucketed by the edge's
+            // smaller end, each bucket sorted, then each run of one edge.
+            std::vector<std::size_t> start(arr.points.size() + 1, 0);
+            auto each_edge = [&](const auto& f) {
+                for (std::uint32_t n = 0; n < arr.pieces.size(); ++n) {
+                    if (on[n]) continue;
+                    const bd::tri3& t = arr.pieces[n].v;
+                    for (std::size_t m = 0; m < 3; ++m) {
+                        const std::array<vid, 2> e{std::min(t[m], t[(m + 1) % 3]), std::max(t[m], t[(m + 1) % 3])};
+                        if (!std::binary_search(arr.cut_edges.begin(), arr.cut_edges.end(), e)) f(e, n);
+                    }
+                }
+            };
+            each_edge([&](const std::array<vid, 2>& e, std::uint32_t) { ++start[e[0] + 1]; });
+            for (std::size_t v = 1; v < start.size(); ++v) start[v] += start[v - 1];
+            std::vector<std::array<vid, 2>> by_edge(start.back());  // (larger end, piece)
+            std::vector<std::size_t> fill(start.begin(), start.end() - 1);
+            each_edge([&](const std::array<vid, 2>& e, std::uint32_t n) { by_edge[fill[e[0]]++] = {e[1], n}; });
+            for (std::size_t v = 0; v + 1 < start.size(); ++v) {
+                const auto first = by_edge.begin() + std::ptrdiff_t(start[v]);
+                const auto last = by_edge.begin() + std::ptrdiff_t(start[v + 1]);
+                std::sort(first, last);
+                for (auto x = first, run = first; x != last; ++x) {
+                    if ((*x)[0] != (*run)[0]) run = x;
+                    if (x != run && tris[arr.pieces[(*x)[1]].source].mesh == tris[arr.pieces[(*run)[1]].source].mesh)
+                        patches.unite((*run)[1], (*x)[1]);
                 }
             }
-            for (const auto& [e, ps] : by_edge)
-                for (std::size_t x = 1; x < ps.size(); ++x)
-                    if (tris[arr.pieces[ps[x]].source].mesh == tris[arr.pieces[ps[0]].source].mesh)
-                        patches.unite(ps[0], ps[x]);
         }
         auto locate = [&](std::uint32_t other, const bd::point3& p) -> result<point_location> {
             const vec3<double> q{std::ldexp(p.x, -*scale), std::ldexp(p.y, -*scale), std::ldexp(p.z, -*scale)};
             if (other == 0) return inside_closed<MA, TA>(a, q);
             return inside_closed<MB, TB>(b, q);
         };
-        std::map<std::uint32_t, std::vector<std::uint32_t>> members;
+        // Each patch's pieces in order, the patches by root: (root, piece) pairs sorted.
+        std::vector<std::array<std::uint32_t, 2>> by_root;
         for (std::uint32_t n = 0; n < arr.pieces.size(); ++n)
-            if (!on[n]) members[patches.find(n)].push_back(n);
-        std::map<std::uint32_t, label> patch_label;
+            if (!on[n]) by_root.push_back({patches.find(n), n});
+        std::sort(by_root.begin(), by_root.end());
+        std::vector<std::pair<std::uint32_t, std::vector<std::uint32_t>>> members;
+        for (std::size_t x = 0; x < by_root.size(); ++x) {
+            if (x == 0 || by_root[x][0] != by_root[x - 1][0]) members.push_back({by_root[x][0], {}});
+            members.back().second.push_back(by_root[x][1]);
+        }
         for (const auto& [root, list] : members) {
             const std::uint32_t other = 1 - tris[arr.pieces[list[0]].source].mesh;
             // An input vertex of the patch off the other surface decides it exactly.
@@ -396,10 +432,8 @@ result<boolean_report> mesh_boolean(MO& out, const MA& a, const MB& b, const boo
                 if (!where) return where.error();
                 found = *where == point_location::inside ? label::in : label::out;
             }
-            patch_label[root] = *found;
+            for (std::uint32_t m : list) labels[m] = *found;
         }
-        for (std::uint32_t n = 0; n < arr.pieces.size(); ++n)
-            if (!on[n]) labels[n] = patch_label[patches.find(n)];
     }
     if (!gate.advance()) return fail(errc::cancelled, "mesh_boolean: cancelled");
 
@@ -419,6 +453,19 @@ result<boolean_report> mesh_boolean(MO& out, const MA& a, const MB& b, const boo
     if (!gate.advance()) return fail(errc::cancelled, "mesh_boolean: cancelled");
     if (auto r = detail::copy::build<MO, TO>(out, *soup); !r) return r.error();
     return report;
+}
+
+}  // namespace hmira::detail::boolean
+
+namespace hmira {
+
+template <class MO, class MA, class MB, class TO, class TA, class TB>
+    requires copy_target_mesh<MO, TO> && boolean_input_mesh<MA, TA> && boolean_input_mesh<MB, TB>
+result<boolean_report> mesh_boolean(MO& out, const MA& a, const MB& b, const boolean_options& options) {
+    std::optional<result<boolean_report>> r;
+    detail::with_thread_count(options.threads,
+                              [&] { r.emplace(detail::boolean::run<MO, MA, MB, TO, TA, TB>(out, a, b, options)); });
+    return std::move(*r);
 }
 
 }  // namespace hmira

@@ -66,11 +66,12 @@ inline bool crossing_point(const arrangement& arr, const std::vector<soup_triang
 }
 
 /// Adds to every triangle the points where its segments cross each other, merges them with the
-/// points already there, and renames every triangle's lists. False when a crossing cannot be
-/// constructed (a segment of a coplanar pair off every edge; not produced by the pair stage).
+/// points already there (the first `explicit_count` of them explicit), and renames every
+/// triangle's lists. False when a crossing cannot be constructed (a segment of a coplanar pair off
+/// every edge; not produced by the pair stage).
 /// Complexity: O(s^2) exact orientations per triangle with s segments, and a sort of all points.
-inline bool split_crossings(arrangement& arr, const std::vector<soup_triangle>& tris,
-                            std::vector<triangle_cuts>& cuts) {
+inline bool split_crossings(arrangement& arr, const std::vector<soup_triangle>& tris, std::vector<triangle_cuts>& cuts,
+                            std::size_t explicit_count) {
     const std::size_t before = arr.points.size();
     // One point per crossing of two segments' supports, whichever triangle finds it (the three
     // triangles that meet at a point each find it): keyed by the sorted triangles of the pairs.
@@ -107,7 +108,7 @@ inline bool split_crossings(arrangement& arr, const std::vector<soup_triangle>& 
             }
     }
     if (arr.points.size() == before) return true;
-    const std::vector<vid> map = merge_points(arr.points);
+    const std::vector<vid> map = merge_points(arr.points, explicit_count);
     for (triangle_cuts& c : cuts) {
         for (vid& p : c.points) p = map[p];
         for (auto& s : c.segments) s = {std::min(map[s[0]], map[s[1]]), std::max(map[s[0]], map[s[1]])};
