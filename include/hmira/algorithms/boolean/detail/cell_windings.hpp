@@ -42,20 +42,31 @@ enum class winding_status : std::uint8_t {
     no_seed,     ///< no segment missed every edge and vertex (not met in practice)
 };
 
-/// The number of bits from the coarsest to the finest bit over all coordinates (0 for none).
-inline int coordinate_span(const std::vector<point3>& points) {
+/// The coarsest and finest bits over all nonzero coordinates; `any` is false when there are none.
+struct coordinate_bits {
     int low = 0, high = 0;
     bool any = false;
+};
+
+/// The bits of `points`, as above.
+inline coordinate_bits bits_of(const std::vector<point3>& points) {
+    coordinate_bits b;
     for (const point3& p : points)
         for (std::size_t k = 0; k < 3; ++k) {
             if (p[k] == 0.0) continue;
             int l = 0, h = 0;
             predicates::bit_span(p[k], l, h);
-            low = any ? std::min(low, l) : l;
-            high = any ? std::max(high, h) : h;
-            any = true;
+            b.low = b.any ? std::min(b.low, l) : l;
+            b.high = b.any ? std::max(b.high, h) : h;
+            b.any = true;
         }
-    return any ? high - low : 0;
+    return b;
+}
+
+/// The number of bits from the coarsest to the finest bit over all coordinates (0 for none).
+inline int coordinate_span(const std::vector<point3>& points) {
+    const coordinate_bits b = bits_of(points);
+    return b.any ? b.high - b.low : 0;
 }
 
 class cell_windings {

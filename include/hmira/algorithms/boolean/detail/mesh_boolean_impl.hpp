@@ -54,17 +54,7 @@ result<void> read_input(const M& mesh, std::uint32_t which, std::vector<point3>&
 /// The power of two that brings every coordinate into predicates::in_implicit_range, or an
 /// error when the coordinates span too many bits for any one scale.
 inline result<int> implicit_scale(const std::vector<point3>& points) {
-    int low = 0, high = 0;
-    bool any = false;
-    for (const point3& p : points)
-        for (std::size_t k = 0; k < 3; ++k) {
-            if (p[k] == 0.0) continue;
-            int l = 0, h = 0;
-            predicates::bit_span(p[k], l, h);
-            low = any ? std::min(low, l) : l;
-            high = any ? std::max(high, h) : h;
-            any = true;
-        }
+    const auto [low, high, any] = bits_of(points);
     if (!any) return 0;
     if (high - low > 177)
         return fail(errc::invalid_argument, "mesh_boolean: the coordinates span " + std::to_string(high - low) +
