@@ -172,7 +172,7 @@ inline result<std::vector<zip_entry>> zip_directory(std::string_view data, const
     std::uint64_t dir_size = le_u32(data.data() + eocd + 12), dir_offset = le_u32(data.data() + eocd + 16);
     if (eocd >= 20 && le_u32(data.data() + eocd - 20) == 0x07064b50u) {  // ZIP64 locator
         const std::uint64_t at = le_u64(data.data() + eocd - 20 + 8);
-        if (at > data.size() - 56 || le_u32(data.data() + at) != 0x06064b50u)
+        if (data.size() < 56 || at > data.size() - 56 || le_u32(data.data() + at) != 0x06064b50u)
             return bad(eocd - 20, "ZIP64 end of central directory record out of bounds");
         count = le_u64(data.data() + at + 32);
         dir_size = le_u64(data.data() + at + 40);
